@@ -1,0 +1,48 @@
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app/point_command.hpp"
+#include "app/usage_error.hpp"
+#include "app/version.hpp"
+
+namespace {
+
+constexpr const char* kTopHelp =
+    "punchsweep: when does a two-level textured surface make full contact with a\n"
+    "viscoelastic half-space? (Goryacheva & Yakovenko's localization method)\n\n"
+    "usage: punchsweep <command> [options]\n\n"
+    "commands:\n"
+    "  point      evaluate one parameter point: regime, t*, contact state over time\n\n"
+    "options:\n"
+    "  --help     this text; 'punchsweep <command> --help' explains a command\n"
+    "  --version  print the version and git revision\n\n"
+    "Exit codes: 0 success, 2 bad input (one line on stderr naming the option), 1 failure.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using punchsweep::app::UsageError;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+      std::cout << kTopHelp;
+      return args.empty() ? punchsweep::app::kUsageExitCode : 0;
+    }
+    if (args[0] == "--version") {
+      std::cout << "punchsweep " << punchsweep::app::kVersion << " (git "
+                << punchsweep::app::kGitRevision << ")\n";
+      return 0;
+    }
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (args[0] == "point") return punchsweep::app::run_point_command(rest, std::cout);
+    throw UsageError("unknown command '" + args[0] + "' (commands: point; see punchsweep --help)");
+  } catch (const UsageError& e) {
+    std::cerr << "punchsweep: " << e.what() << "\n";
+    return punchsweep::app::kUsageExitCode;
+  } catch (const std::exception& e) {
+    std::cerr << "punchsweep: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

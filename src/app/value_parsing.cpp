@@ -1,0 +1,51 @@
+#include "app/value_parsing.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "app/usage_error.hpp"
+
+namespace punchsweep::app {
+
+double parse_real(const std::string& text, const std::string& option) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(begin, &end);
+  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value)) {
+    throw UsageError(option + " = '" + text + "' is not a finite number");
+  }
+  return value;
+}
+
+int parse_integer(const std::string& text, const std::string& option) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(begin, &end, 10);
+  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE ||
+      value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
+    throw UsageError(option + " = '" + text + "' is not an integer");
+  }
+  return static_cast<int>(value);
+}
+
+std::vector<double> parse_real_list(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  std::string item;
+  auto flush = [&] {
+    if (!item.empty()) values.push_back(parse_real(item, option));
+    item.clear();
+  };
+  for (const char c : text) {
+    if (c == ',' || c == ' ' || c == '\t') flush();
+    else item.push_back(c);
+  }
+  flush();
+  if (values.empty()) throw UsageError(option + " = '" + text + "' holds no number");
+  return values;
+}
+
+}  // namespace punchsweep::app

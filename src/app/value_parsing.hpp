@@ -1,0 +1,17 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace punchsweep::app {
+
+/// Parses a whole string as a finite double; throws UsageError naming `option` otherwise.
+double parse_real(const std::string& text, const std::string& option);
+
+/// Parses a whole string as an integer (no fraction, no exponent); throws UsageError.
+int parse_integer(const std::string& text, const std::string& option);
+
+/// Parses "0, 0.5, 1" (commas and/or spaces) into finite doubles; throws UsageError.
+std::vector<double> parse_real_list(const std::string& text, const std::string& option);
+
+}  // namespace punchsweep::app

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+
+#include "model/shape.hpp"
+
+namespace punchsweep::model {
+
+/// One parameter point of the two-level punch system, without the material
+/// (units: units.hpp). The creep law is passed beside it.
+struct ContactProblem {
+  double l = 0.75;      ///< lattice pitch, in R; l > 0
+  double dh = 0.05;     ///< height difference of the two levels, in R; dh >= 0
+  double pbar0 = 0.06;  ///< constant nominal pressure, in E0*; pbar0 > 0
+  Shape shape{};
+};
+
+/// Empty when every field is in range, else one sentence naming the first bad field,
+/// its value and its valid range.
+std::string problem_error(const ContactProblem& problem);
+
+}  // namespace punchsweep::model

@@ -1,0 +1,126 @@
+#include "model/load_history.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/gauss_legendre.hpp"
+
+namespace punchsweep::model {
+namespace {
+
+constexpr int kKernelNodes = 16;
+// Sub-intervals of the kernel quadrature span at most this many relaxation time scales
+// (16 Gauss points integrate exp(-x) over 2 units to machine precision).
+constexpr double kKernelSpan = 2.0;
+// ... and at most this much time (the creep function varies on the scale T_eps = 1).
+constexpr double kMaxSpan = 1.0;
+
+}  // namespace
+
+LoadHistory::LoadHistory(const CreepLaw& creep, double level1_load, double t0, double t_end,
+                         const HistoryQuadrature& quadrature, const Sampler& sample)
+    : creep_(creep), level1_load_(level1_load), t0_(t0), n_(quadrature.nodes_per_panel) {
+  const GaussLegendreRule& rule = gauss_legendre(n_);
+  nodes_ = rule.nodes;
+  bary_.resize(n_);
+  for (int j = 0; j < n_; ++j) {
+    double w = 1.0;
+    for (int k = 0; k < n_; ++k) {
+      if (k != j) w /= nodes_[j] - nodes_[k];
+    }
+    bary_[j] = w;
+  }
+  const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
+  panels_ = std::max(1, static_cast<int>(std::ceil(v_end / quadrature.panel_width)));
+  panel_width_ = std::max(v_end, 1e-300) / panels_;
+  Q1_.resize(static_cast<std::size_t>(panels_) * n_);
+  Q2_.resize(Q1_.size());
+  for (int p = 0; p < panels_ && ok_; ++p) {
+    for (int j = 0; j < n_ && ok_; ++j) {
+      const double v = (p + 0.5 * (nodes_[j] + 1.0)) * panel_width_;
+      const std::size_t i = static_cast<std::size_t>(p) * n_ + j;
+      ok_ = sample(t0 + v * v, &Q1_[i], &Q2_[i]);
+    }
+  }
+}
+
+void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const {
+  const double xi = 2.0 * (v / panel_width_ - panel) - 1.0;
+  const std::size_t base = static_cast<std::size_t>(panel) * n_;
+  double num1 = 0.0;
+  double num2 = 0.0;
+  double den = 0.0;
+  for (int j = 0; j < n_; ++j) {
+    const double d = xi - nodes_[j];
+    if (d == 0.0) {
+      *Q1 = Q1_[base + j];
+      *Q2 = Q2_[base + j];
+      return;
+    }
+    const double c = bary_[j] / d;
+    num1 += c * Q1_[base + j];
+    num2 += c * Q2_[base + j];
+    den += c;
+  }
+  *Q1 = num1 / den;
+  *Q2 = num2 / den;
+}
+
+void LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2) const {
+  const GaussLegendreRule& rule = gauss_legendre(kKernelNodes);
+  const double theta = creep_.relaxation_time_scale();
+  const double sub_span = std::min(kKernelSpan * theta, kMaxSpan);
+  const double tau_min = std::max(0.0, t - creep_.relaxation_memory());
+  const double E0 = creep_.relaxation(0.0);
+  double sum1 = E0 * Q1_at_t;
+  double sum2 = E0 * Q2_at_t;
+
+  // Single-level phase [0, t0): Q1 = L J(tau), Q2 = 0; smooth in tau.
+  if (tau_min < t0_) {
+    const double end = std::min(t0_, t);
+    const int pieces = std::max(1, static_cast<int>(std::ceil((end - tau_min) / sub_span)));
+    const double width = (end - tau_min) / pieces;
+    double acc = 0.0;
+    for (int k = 0; k < pieces; ++k) {
+      const double mid = tau_min + (k + 0.5) * width;
+      for (int g = 0; g < kKernelNodes; ++g) {
+        const double tau = mid + 0.5 * width * rule.nodes[g];
+        acc += rule.weights[g] * creep_.relaxation_rate(t - tau) * creep_.creep(tau);
+      }
+    }
+    sum1 += level1_load_ * 0.5 * width * acc;
+  }
+
+  // Two-level phase [t0, t]: in v = sqrt(tau - t0), dtau = 2 v dv.
+  const double v_hi = std::sqrt(std::max(t - t0_, 0.0));
+  const double v_lo = std::sqrt(std::max(tau_min - t0_, 0.0));
+  const int first_panel = std::min(static_cast<int>(v_lo / panel_width_), panels_ - 1);
+  for (int panel = first_panel; panel < panels_; ++panel) {
+    const double v = std::max(v_lo, panel * panel_width_);
+    const double v_next = panel + 1 == panels_ ? v_hi : std::min(v_hi, (panel + 1) * panel_width_);
+    if (!(v_next > v)) break;
+    const double tau_span = v_next * v_next - v * v;
+    const int pieces = std::max(1, static_cast<int>(std::ceil(tau_span / sub_span)));
+    const double width = (v_next - v) / pieces;
+    double acc1 = 0.0;
+    double acc2 = 0.0;
+    for (int k = 0; k < pieces; ++k) {
+      const double mid = v + (k + 0.5) * width;
+      for (int g = 0; g < kKernelNodes; ++g) {
+        const double u = mid + 0.5 * width * rule.nodes[g];
+        double q1;
+        double q2;
+        interpolate(panel, u, &q1, &q2);
+        const double kernel = rule.weights[g] * creep_.relaxation_rate(t - t0_ - u * u) * 2.0 * u;
+        acc1 += kernel * q1;
+        acc2 += kernel * q2;
+      }
+    }
+    sum1 += 0.5 * width * acc1;
+    sum2 += 0.5 * width * acc2;
+  }
+  *P1 = sum1;
+  *P2 = sum2;
+}
+
+}  // namespace punchsweep::model

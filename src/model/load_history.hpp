@@ -1,0 +1,62 @@
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "model/creep_law.hpp"
+
+namespace punchsweep::model {
+
+/// Numerical choices of the load-history integral (see LoadHistory).
+struct HistoryQuadrature {
+  /// Interpolation nodes per panel, n: the error falls as h^n with the panel width h.
+  int nodes_per_panel = 8;
+  /// Panel width h in v = sqrt(t - t0), in sqrt(T_eps).
+  double panel_width = 0.25;
+};
+
+/// The loads P_i(t) = int_0-^t E(t - tau) dQ_i(tau) (model notes, section 5), written as
+///   P_i(t) = E(0) Q_i(t) + int_0^t E'(t - tau) Q_i(tau) dtau,
+/// which needs Q and not its derivative (Q jumps at t = 0 and has a root singularity at t*).
+///
+/// Before t0 (the delayed contact time; 0 if level 2 touches at once) only level 1 carries
+/// load and Q1 = L J(tau), Q2 = 0 exactly (L = pbar0 l^2). On [t0, t_end] Q is sampled at
+/// Gauss-Legendre nodes of panels uniform in v = sqrt(tau - t0): in v the two-level
+/// solution is analytic, although a2 ~ sqrt(tau - t0) after touchdown. The kernel integral
+/// then uses the piecewise interpolant (product integration): a 16-point Gauss rule on
+/// sub-intervals no longer than 2 relaxation time scales, so the kernel is resolved at no
+/// extra solves. Only the interpolation error remains: order n in h.
+class LoadHistory {
+ public:
+  /// Writes Q1, Q2 at tau (called with increasing tau); returns false if it failed.
+  using Sampler = std::function<bool(double tau, double* Q1, double* Q2)>;
+
+  LoadHistory(const CreepLaw& creep, double level1_load, double t0, double t_end,
+              const HistoryQuadrature& quadrature, const Sampler& sample);
+
+  /// False if any sample failed; then load() is meaningless.
+  bool ok() const { return ok_; }
+
+  /// P_i(t) for t in [t0, t_end], given the exact Q_i(t) at that time.
+  void load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2) const;
+
+  /// Number of Q samples taken (the solves the history cost).
+  int samples() const { return static_cast<int>(Q1_.size()); }
+
+ private:
+  /// Interpolated Q at v on panel `panel`.
+  void interpolate(int panel, double v, double* Q1, double* Q2) const;
+
+  const CreepLaw& creep_;
+  double level1_load_;
+  double t0_;
+  double panel_width_ = 0.0;
+  int panels_ = 0;
+  int n_ = 0;
+  bool ok_ = true;
+  std::vector<double> nodes_;       ///< reference nodes on [-1, 1]
+  std::vector<double> bary_;        ///< barycentric weights of the nodes
+  std::vector<double> Q1_, Q2_;     ///< samples, panel-major
+};
+
+}  // namespace punchsweep::model

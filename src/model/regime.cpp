@@ -1,0 +1,37 @@
+#include "model/regime.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "model/single_level.hpp"
+
+namespace punchsweep::model {
+
+std::string_view regime_name(Regime regime) {
+  switch (regime) {
+    case Regime::immediate: return "immediate";
+    case Regime::delayed: return "delayed";
+    case Regime::never: return "never";
+  }
+  return "unknown";
+}
+
+Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
+  const SingleLevel single(problem.l, problem.shape);
+  Classification out;
+  out.a1_star = single.contact_radius_at_gap(problem.dh);
+  out.J_star = out.a1_star > 0.0 ? single.creep_scaled_pressure(out.a1_star) / problem.pbar0 : 0.0;
+  if (out.J_star <= creep.creep_initial()) {
+    out.regime = Regime::immediate;
+    out.t_star = 0.0;
+  } else {
+    // J* = J(inf) exactly would mean touching only as t -> infinity: that is "never".
+    out.t_star = out.J_star < creep.creep_final() ? std::max(0.0, creep.time_at_creep(out.J_star))
+                                                  : std::numeric_limits<double>::infinity();
+    out.regime = std::isfinite(out.t_star) ? Regime::delayed : Regime::never;
+  }
+  return out;
+}
+
+}  // namespace punchsweep::model

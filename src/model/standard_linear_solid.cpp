@@ -1,0 +1,44 @@
+#include "model/standard_linear_solid.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace punchsweep::model {
+
+std::string creep_ratio_error(double creep_ratio) {
+  if (std::isfinite(creep_ratio) && creep_ratio >= StandardLinearSolid::kMinCreepRatio) {
+    return {};
+  }
+  std::ostringstream out;
+  out << "creep ratio T = " << creep_ratio << " is outside its range: T = T_eps/T_sigma >= 1";
+  return out.str();
+}
+
+StandardLinearSolid::StandardLinearSolid(double creep_ratio) : T_(creep_ratio) {}
+
+double StandardLinearSolid::creep(double t) const { return T_ - (T_ - 1.0) * std::exp(-t); }
+
+double StandardLinearSolid::relaxation(double t) const {
+  return 1.0 / T_ + (1.0 - 1.0 / T_) * std::exp(-T_ * t);
+}
+
+double StandardLinearSolid::relaxation_rate(double t) const {
+  return -(T_ - 1.0) * std::exp(-T_ * t);
+}
+
+double StandardLinearSolid::time_at_creep(double J) const {
+  if (J <= 1.0) return 0.0;
+  if (J >= T_) return std::numeric_limits<double>::infinity();
+  // J = T - (T-1) e^{-t}  =>  t = -log((T - J)/(T - 1)); log1p keeps digits for J near 1.
+  return -std::log1p((1.0 - J) / (T_ - 1.0));
+}
+
+std::string StandardLinearSolid::describe() const {
+  std::ostringstream out;
+  out.precision(17);
+  out << "standard linear solid, T = " << T_;
+  return out.str();
+}
+
+}  // namespace punchsweep::model

@@ -1,0 +1,267 @@
+#include "model/two_level.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "model/lattice.hpp"
+#include "model/ring_loads.hpp"
+#include "model/single_level.hpp"
+
+namespace punchsweep::model {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Keeps every square root of the system real while Newton explores.
+constexpr double kDomainMargin = 1.0 - 1e-12;
+
+// d(a^p)/dz for a = z^(1/zp): 0.5 p a^(p-2) when z = a^2, p a^(p-1) when z = a.
+double power_rate(double a, int p, int zp) {
+  return zp == 2 ? 0.5 * p * std::pow(a, p - 2) : p * std::pow(a, p - 1);
+}
+
+}  // namespace
+
+TwoLevelSystem::TwoLevelSystem(const ContactProblem& problem, NominalRadii radii)
+    : problem_(problem),
+      radii_(radii),
+      K_P_(load_coefficient(problem.shape)),
+      K_d_(depth_coefficient(problem.shape)),
+      z_power_(problem.shape.s == 1 ? 1 : 2) {}
+
+void TwoLevelSystem::loads(double a1, double a2, double X, double* Q1, double* Q2) const {
+  double r[2];
+  double Q[2];
+  residuals(a1, a2, X, r, nullptr, Q);
+  *Q1 = Q[0];
+  *Q2 = Q[1];
+}
+
+// Eq (9.16) for Q (linear once a is fixed), then eqs (9.19) and (9.17) as residuals.
+void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], double J[4],
+                               double Q[2]) const {
+  const double l = problem_.l;
+  const double l2 = l / std::numbers::sqrt2;
+  const int s = problem_.shape.s;
+  const double A1 = radii_.A1;
+  const double A2 = radii_.A2;
+
+  const double M00 = 1.0 - 4.0 * ring_load_share(a1, l);
+  const double M01 = -4.0 * ring_load_share(a1, l2);
+  const double M10 = -4.0 * ring_load_share(a2, l2);
+  const double M11 = 1.0 - 4.0 * ring_load_share(a2, l);
+  const double a1s = std::pow(a1, s);
+  const double a2s = std::pow(a2, s);
+  const double b0 = K_P_ * a1s * a1 + 2.0 * X * nominal_load_term(a1, A1);
+  const double b1 = K_P_ * a2s * a2 + 2.0 * X * nominal_load_term(a2, A2);
+  const double det = M00 * M11 - M01 * M10;
+  const double Q1 = (b0 * M11 - M01 * b1) / det;
+  const double Q2 = (M00 * b1 - M10 * b0) / det;
+  Q[0] = Q1;
+  Q[1] = Q2;
+
+  const double S1 = std::sqrt(A1 * A1 - a1 * a1);
+  const double S2 = std::sqrt(A2 * A2 - a2 * a2);
+  const double rho11 = ring_depth(a1, l);
+  const double rho12 = ring_depth(a1, l2);
+  const double rho21 = ring_depth(a2, l2);
+  const double rho22 = ring_depth(a2, l);
+  const double load_scale = l * l * X;
+  r[0] = (Q1 + Q2) / load_scale - 1.0;
+  r[1] = (K_d_ * (a1s - a2s) + 4.0 / kPi * (Q2 * rho12 + Q1 * rho11 - Q1 * rho21 - Q2 * rho22) -
+          2.0 * X * (S1 - S2) - problem_.dh) /
+         l;
+  if (J == nullptr) return;
+
+  // d/d(a1) and d/dz: each building block's derivative is a * (its "rate over a"), and
+  // a * da/dvar is chi: a1 for a1, 1/2 for z = a2^2, a2 for z = a2.
+  const double chi1 = a1;
+  const double chi2 = z_power_ == 2 ? 0.5 : a2;
+  const double v0 = (s + 1) * K_P_ * a1s + 2.0 * X * chi1 * nominal_load_term_rate_over_a(a1, A1) +
+                    4.0 * chi1 * (ring_load_share_rate_over_a(a1, l) * Q1 +
+                                  ring_load_share_rate_over_a(a1, l2) * Q2);
+  const double v1 = K_P_ * power_rate(a2, s + 1, z_power_) +
+                    2.0 * X * chi2 * nominal_load_term_rate_over_a(a2, A2) +
+                    4.0 * chi2 * (ring_load_share_rate_over_a(a2, l) * Q2 +
+                                  ring_load_share_rate_over_a(a2, l2) * Q1);
+  const double dQ1_da1 = M11 * v0 / det;
+  const double dQ2_da1 = -M10 * v0 / det;
+  const double dQ1_dz = -M01 * v1 / det;
+  const double dQ2_dz = M00 * v1 / det;
+  auto ring_depth_sum = [&](double dQ1, double dQ2) {
+    return dQ2 * rho12 + dQ1 * rho11 - dQ1 * rho21 - dQ2 * rho22;
+  };
+  J[0] = (dQ1_da1 + dQ2_da1) / load_scale;
+  J[1] = (dQ1_dz + dQ2_dz) / load_scale;
+  J[2] = (K_d_ * s * a1s / a1 +
+          4.0 / kPi *
+              (ring_depth_sum(dQ1_da1, dQ2_da1) +
+               chi1 * (Q2 * ring_depth_rate_over_a(a1, l2) + Q1 * ring_depth_rate_over_a(a1, l))) +
+          2.0 * X * chi1 / S1) /
+         l;
+  J[3] = (-K_d_ * power_rate(a2, s, z_power_) +
+          4.0 / kPi *
+              (ring_depth_sum(dQ1_dz, dQ2_dz) -
+               chi2 * (Q1 * ring_depth_rate_over_a(a2, l2) + Q2 * ring_depth_rate_over_a(a2, l))) -
+          2.0 * X * chi2 / S2) /
+         l;
+}
+
+TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess) const {
+  const double l = problem_.l;
+  const double l2 = l / std::numbers::sqrt2;
+  const double a1_max = std::min(l2, radii_.A1) * kDomainMargin;
+  const double a2_max = std::min(l2, radii_.A2) * kDomainMargin;
+  const double z_scale = z_power_ == 2 ? l * l : l;
+  auto to_a2 = [&](double z) { return z_power_ == 2 ? std::sqrt(z) : z; };
+
+  double a1 = std::clamp(guess.a1, 1e-300, a1_max);
+  double z = z_power_ == 2 ? guess.a2 * guess.a2 : guess.a2;
+  z = std::clamp(z, 0.0, z_power_ == 2 ? a2_max * a2_max : a2_max);
+  double r[2];
+  double J[4];
+  double Q[2];
+  residuals(a1, to_a2(z), X, r, J, Q);
+  double norm = std::max(std::abs(r[0]), std::abs(r[1]));
+
+  TwoLevelSolve out;
+  for (int it = 0; it < kMaxIterations; ++it) {
+    const double det = J[0] * J[3] - J[1] * J[2];
+    const double d1 = (-r[0] * J[3] + J[1] * r[1]) / det;
+    const double d2 = (-J[0] * r[1] + J[2] * r[0]) / det;
+    if (!std::isfinite(d1) || !std::isfinite(d2)) break;
+
+    // Damped step: stay in the domain and do not let the residual grow. The trial point
+    // is evaluated with its Jacobian, so an accepted step costs one evaluation.
+    double lambda = 1.0;
+    double a1_new = a1;
+    double z_new = z;
+    double r_new[2];
+    double J_new[4];
+    double Q_new[2];
+    bool accepted = false;
+    for (int halving = 0; halving < 40; ++halving, lambda *= 0.5) {
+      a1_new = a1 + lambda * d1;
+      z_new = std::max(z + lambda * d2, 0.0);
+      if (!(a1_new > 0.0 && a1_new < a1_max && to_a2(z_new) < a2_max)) continue;
+      residuals(a1_new, to_a2(z_new), X, r_new, J_new, Q_new);
+      const double norm_new = std::max(std::abs(r_new[0]), std::abs(r_new[1]));
+      if (std::isfinite(norm_new) && (norm_new < norm || norm_new <= kResidualTolerance * 1e-3)) {
+        accepted = true;
+        norm = norm_new;
+        break;
+      }
+    }
+    if (!accepted) break;
+    const double step = std::max(std::abs(a1_new - a1) / l, std::abs(z_new - z) / z_scale);
+    a1 = a1_new;
+    z = z_new;
+    std::copy(r_new, r_new + 2, r);
+    std::copy(J_new, J_new + 4, J);
+    std::copy(Q_new, Q_new + 2, Q);
+    if (step < kStepTolerance) break;
+  }
+  out.state = TwoLevelState{a1, to_a2(z), Q[0], Q[1]};
+  out.converged = norm < kResidualTolerance;
+  return out;
+}
+
+TwoLevelSolve TwoLevelSystem::continue_to(const TwoLevelState& from, double X_from,
+                                          double X_to) const {
+  TwoLevelSolve current{from, true};
+  double X = X_from;
+  double step = X_to - X_from;
+  const double min_step = std::abs(step) * 0x1p-20;
+  while (X != X_to) {
+    const bool last = std::abs(X_to - X) <= std::abs(step);
+    const double X_next = last ? X_to : X + step;
+    const TwoLevelSolve trial = solve(X_next, current.state);
+    if (trial.converged) {
+      current = trial;
+      X = X_next;
+      step *= 2.0;
+    } else {
+      step *= 0.5;
+      if (std::abs(step) < min_step) {
+        current.converged = false;
+        return current;
+      }
+    }
+  }
+  return current;
+}
+
+TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {
+  const SingleLevel single(problem_.l, problem_.shape);
+  const double a1_touch = single.contact_radius_at_gap(problem_.dh);
+  const double X_touch = a1_touch > 0.0 ? single.creep_scaled_pressure(a1_touch) : 0.0;
+  // Below this share of the target load the touchdown point is too close to a = 0 for
+  // Newton; start instead from the isolated-punch limit (interactions negligible).
+  constexpr double kSmallLoadShare = 1e-6;
+  if (X_touch >= kSmallLoadShare * X) {
+    const double l = problem_.l;
+    return continue_to(TwoLevelState{a1_touch, 0.0, l * l * X_touch, 0.0}, X_touch, X);
+  }
+  const double X_start = kSmallLoadShare * X;
+  const double load = problem_.l * problem_.l * X_start;
+  const int s = problem_.shape.s;
+  // Isolated punches: Q_i = K_P a_i^(s+1), K_d (a1^s - a2^s) = dh; bisect on a2.
+  auto a1_of = [&](double a2) { return std::pow(std::pow(a2, s) + problem_.dh / K_d_, 1.0 / s); };
+  auto excess = [&](double a2) {
+    const double a1 = a1_of(a2);
+    return K_P_ * (std::pow(a1, s + 1) + std::pow(a2, s + 1)) - load;
+  };
+  double lo = 0.0;
+  double hi = std::pow(load / K_P_, 1.0 / (s + 1));
+  for (int i = 0; i < 200 && hi - lo > 1e-16 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (excess(mid) > 0.0 ? hi : lo) = mid;
+  }
+  const double a2 = 0.5 * (lo + hi);
+  const double a1 = a1_of(a2);
+  const TwoLevelSolve start = solve(X_start, TwoLevelState{a1, a2, 0.0, 0.0});
+  if (!start.converged) return start;
+  return continue_to(start.state, X_start, X);
+}
+
+ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E) {
+  const double X = problem.pbar0 / E;
+  const Lattice lattice{problem.l};
+  const NominalRadii touchdown_radii{lattice.A1_single(), lattice.A_single()};
+  ElasticTwoLevel out;
+  out.radii = touchdown_radii;
+
+  const SingleLevel single(problem.l, problem.shape);
+  const double a1_single = single.contact_radius(X);
+  if (single.displacement_difference(a1_single, X) < problem.dh) {
+    // Level 2 does not touch: the single-level solution, with its own radii (eq 9.3).
+    out.state = TwoLevelState{a1_single, 0.0, problem.l * problem.l * X, 0.0};
+    out.converged = true;
+    return out;
+  }
+  out.level2_touches = true;
+  // At touchdown eq 9.13 gives exactly the single-level radii, so start there.
+  TwoLevelSolve current = TwoLevelSystem(problem, touchdown_radii).solve_from_touchdown(X);
+  NominalRadii radii = touchdown_radii;
+  constexpr int kMaxSweeps = 200;
+  for (int sweep = 0; sweep < kMaxSweeps && current.converged; ++sweep) {
+    // Eq (9.13): pi A_i^2 pbar = 5 P_i + 4 P_j, with P/E = Q and pbar/E = X.
+    const NominalRadii next{std::sqrt((5.0 * current.state.Q1 + 4.0 * current.state.Q2) / (kPi * X)),
+                            std::sqrt((5.0 * current.state.Q2 + 4.0 * current.state.Q1) / (kPi * X))};
+    const double change = std::max(std::abs(next.A1 - radii.A1), std::abs(next.A2 - radii.A2));
+    radii = next;
+    current = TwoLevelSystem(problem, radii).solve(X, current.state);
+    if (change < 1e-13 * problem.l) {
+      out.state = current.state;
+      out.radii = radii;
+      out.converged = current.converged;
+      return out;
+    }
+  }
+  out.state = current.state;
+  out.radii = radii;
+  out.converged = false;
+  return out;
+}
+
+}  // namespace punchsweep::model

@@ -1,0 +1,85 @@
+#pragma once
+
+#include "model/contact_problem.hpp"
+
+namespace punchsweep::model {
+
+/// State of the two-level phase at one creep-scaled pressure X = pbar0 J(t):
+/// contact radii a_i (in R) and creep-scaled loads Q_i = int J dP_i (in R^2).
+struct TwoLevelState {
+  double a1 = 0.0;
+  double a2 = 0.0;
+  double Q1 = 0.0;
+  double Q2 = 0.0;
+};
+
+/// Radii outside which the nominal pressure acts around a level-1 / level-2 punch.
+struct NominalRadii {
+  double A1 = 0.0;
+  double A2 = 0.0;
+};
+
+/// A two-level solve: the state, and whether Newton met its tolerance.
+struct TwoLevelSolve {
+  TwoLevelState state;
+  bool converged = false;
+};
+
+/// The algebraic two-level system at fixed nominal radii, eqs (9.16), (9.17), (9.19):
+/// unknowns a1, a2, Q1, Q2 at a given X. For fixed (a1, a2) the load equations are linear
+/// in Q (a 2x2 solve), leaving two residuals: load balance Q1 + Q2 = l^2 X, and the
+/// height condition. Those are solved by damped Newton with an analytic Jacobian in
+/// (a1, z), z = a2^2 for s >= 2 (z = a2 for s = 1): near a2 = 0 the residuals are smooth
+/// in z but not in a2, so Newton stays quadratic right from the moment level 2 touches.
+class TwoLevelSystem {
+ public:
+  /// Newton stops when the step is below this, relative to l (or l^2 for z).
+  static constexpr double kStepTolerance = 1e-14;
+  /// ... and accepts the root only if both scaled residuals are below this.
+  static constexpr double kResidualTolerance = 1e-11;
+  static constexpr int kMaxIterations = 60;
+
+  TwoLevelSystem(const ContactProblem& problem, NominalRadii radii);
+
+  /// Q1, Q2 for given radii (the linear part of eq 9.16).
+  void loads(double a1, double a2, double X, double* Q1, double* Q2) const;
+
+  /// Newton from `guess` at creep-scaled pressure X.
+  TwoLevelSolve solve(double X, const TwoLevelState& guess) const;
+
+  /// Follows the solution branch from a known solution `from` at X_from to X_to,
+  /// halving the step in X where Newton fails (at most 2^20 steps).
+  TwoLevelSolve continue_to(const TwoLevelState& from, double X_from, double X_to) const;
+
+  /// The branch at X >= X*, started from the moment level 2 touches. With the delayed-phase
+  /// radii (A1 = sqrt(5/pi) l, A2 = 2l/sqrt(pi)) the single-level solution at h = dh is an
+  /// exact start; otherwise (or for dh -> 0) the isolated-punch small-load limit is.
+  TwoLevelSolve solve_from_touchdown(double X) const;
+
+  const NominalRadii& radii() const { return radii_; }
+
+ private:
+  /// Scaled residuals r (dimensionless) and, if J != nullptr, dr/d(a1, z) row-major.
+  void residuals(double a1, double a2, double X, double r[2], double J[4], double Q[2]) const;
+
+  ContactProblem problem_;
+  NominalRadii radii_;
+  double K_P_;
+  double K_d_;
+  int z_power_;  ///< a2 = z^(1/z_power_)
+};
+
+/// Result of the elastic two-level problem, eqs (9.12)-(9.15), where A_i are unknowns too.
+struct ElasticTwoLevel {
+  TwoLevelState state;  ///< Q_i = P_i / E here
+  NominalRadii radii;
+  bool converged = false;
+  bool level2_touches = false;  ///< false when pbar/E is too low for level 2 to touch
+};
+
+/// Elastic two-level contact for modulus E (in E0*), eqs (9.12)-(9.15): the radii A_i
+/// follow pi A_i^2 pbar = 5 P_i + 4 P_j (eq 9.13), found by fixed-point iteration around
+/// the Newton solve (|dA| < 1e-13 l, at most 200 sweeps; A depends weakly on a).
+ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E);
+
+}  // namespace punchsweep::model
