@@ -3,19 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Core>
+
 #include "model/gauss_legendre.hpp"
+#include "model/relaxation_integral.hpp"
 
 namespace punchsweep::model {
-namespace {
-
-constexpr int kKernelNodes = 16;
-// Sub-intervals of the kernel quadrature span at most this many relaxation time scales
-// (16 Gauss points integrate exp(-x) over 2 units to machine precision).
-constexpr double kKernelSpan = 2.0;
-// ... and at most this much time (the creep function varies on the scale T_eps = 1).
-constexpr double kMaxSpan = 1.0;
-
-}  // namespace
 
 LoadHistory::LoadHistory(const CreepLaw& creep, double level1_load, double t0, double t_end,
                          const HistoryQuadrature& quadrature, const Sampler& sample)
@@ -67,60 +60,34 @@ void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const
 }
 
 void LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2) const {
-  const GaussLegendreRule& rule = gauss_legendre(kKernelNodes);
-  const double theta = creep_.relaxation_time_scale();
-  const double sub_span = std::min(kKernelSpan * theta, kMaxSpan);
   const double tau_min = std::max(0.0, t - creep_.relaxation_memory());
   const double E0 = creep_.relaxation(0.0);
-  double sum1 = E0 * Q1_at_t;
-  double sum2 = E0 * Q2_at_t;
+  Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
-  // Single-level phase [0, t0): Q1 = L J(tau), Q2 = 0; smooth in tau.
-  if (tau_min < t0_) {
-    const double end = std::min(t0_, t);
-    const int pieces = std::max(1, static_cast<int>(std::ceil((end - tau_min) / sub_span)));
-    const double width = (end - tau_min) / pieces;
-    double acc = 0.0;
-    for (int k = 0; k < pieces; ++k) {
-      const double mid = tau_min + (k + 0.5) * width;
-      for (int g = 0; g < kKernelNodes; ++g) {
-        const double tau = mid + 0.5 * width * rule.nodes[g];
-        acc += rule.weights[g] * creep_.relaxation_rate(t - tau) * creep_.creep(tau);
-      }
-    }
-    sum1 += level1_load_ * 0.5 * width * acc;
-  }
+  // Single-level phase [0, t0): Q1 = L J(tau), Q2 = 0, smooth in tau.
+  sum[0] += level1_load_ * relaxation_integral(
+                               creep_, t, tau_min, std::min(t0_, t),
+                               [&](double tau) { return creep_.creep(tau); }, 0.0);
 
-  // Two-level phase [t0, t]: in v = sqrt(tau - t0), dtau = 2 v dv.
+  // Two-level phase [t0, t], panel by panel in v = sqrt(tau - t0).
   const double v_hi = std::sqrt(std::max(t - t0_, 0.0));
   const double v_lo = std::sqrt(std::max(tau_min - t0_, 0.0));
   const int first_panel = std::min(static_cast<int>(v_lo / panel_width_), panels_ - 1);
   for (int panel = first_panel; panel < panels_; ++panel) {
-    const double v = std::max(v_lo, panel * panel_width_);
-    const double v_next = panel + 1 == panels_ ? v_hi : std::min(v_hi, (panel + 1) * panel_width_);
-    if (!(v_next > v)) break;
-    const double tau_span = v_next * v_next - v * v;
-    const int pieces = std::max(1, static_cast<int>(std::ceil(tau_span / sub_span)));
-    const double width = (v_next - v) / pieces;
-    double acc1 = 0.0;
-    double acc2 = 0.0;
-    for (int k = 0; k < pieces; ++k) {
-      const double mid = v + (k + 0.5) * width;
-      for (int g = 0; g < kKernelNodes; ++g) {
-        const double u = mid + 0.5 * width * rule.nodes[g];
-        double q1;
-        double q2;
-        interpolate(panel, u, &q1, &q2);
-        const double kernel = rule.weights[g] * creep_.relaxation_rate(t - t0_ - u * u) * 2.0 * u;
-        acc1 += kernel * q1;
-        acc2 += kernel * q2;
-      }
-    }
-    sum1 += 0.5 * width * acc1;
-    sum2 += 0.5 * width * acc2;
+    const double v_a = std::max(v_lo, panel * panel_width_);
+    const double v_b = panel + 1 == panels_ ? v_hi : std::min(v_hi, (panel + 1) * panel_width_);
+    if (!(v_b > v_a)) break;
+    sum += relaxation_integral_sqrt(
+        creep_, t, t0_, v_a, v_b,
+        [&](double v) {
+          Eigen::Vector2d q;
+          interpolate(panel, v, &q[0], &q[1]);
+          return q;
+        },
+        Eigen::Vector2d::Zero().eval());
   }
-  *P1 = sum1;
-  *P2 = sum2;
+  *P1 = sum[0];
+  *P2 = sum[1];
 }
 
 }  // namespace punchsweep::model

@@ -1,0 +1,139 @@
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "model/point_evaluation.hpp"
+#include "model/standard_linear_solid.hpp"
+
+namespace {
+
+struct CliRun {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Runs the real binary the way a user would.
+CliRun run_cli(const std::string& args) {
+  // One file pair per test: ctest runs tests in parallel processes.
+  const std::string stem = ::testing::TempDir() + "/punchsweep_cli_" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string out = stem + ".out";
+  const std::string err = stem + ".err";
+  const std::string command = std::string(PUNCHSWEEP_BINARY) + " " + args + " >" + out + " 2>" + err;
+  const int status = std::system(command.c_str());
+  return CliRun{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+const std::string kGood = "--l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 2";
+
+// Bad input: exit 2, nothing on stdout, one stderr line naming the option and its range.
+void expect_refused(const std::string& args, const std::string& option, const std::string& range) {
+  const CliRun r = run_cli("point " + args);
+  EXPECT_EQ(r.exit_code, 2) << args;
+  EXPECT_EQ(r.out, "") << args;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(range), std::string::npos) << r.err;
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  EXPECT_NE(at, std::string::npos) << key;
+  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+}  // namespace
+
+TEST(Cli, negative_pitch_is_refused) { expect_refused("--l -0.5 --dh 0.075 --T 2.5 --pbar 0.06 --s 2", "--l", "l > 0"); }
+TEST(Cli, zero_pitch_is_refused) { expect_refused("--l 0 --dh 0.075 --T 2.5 --pbar 0.06 --s 2", "--l", "l > 0"); }
+TEST(Cli, creep_ratio_below_one_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 0.9 --pbar 0.06 --s 2", "--T", ">= 1"); }
+TEST(Cli, shape_exponent_zero_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 0", "--s", "integer in [1, 32]"); }
+TEST(Cli, fractional_shape_exponent_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 2.5", "--s", "integer in [1, 32]"); }
+TEST(Cli, negative_height_difference_is_refused) { expect_refused("--l 0.75 --dh -0.01 --T 2.5 --pbar 0.06 --s 2", "--dh", "dh >= 0"); }
+TEST(Cli, zero_pressure_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 2.5 --pbar 0 --s 2", "--pbar", "pbar > 0"); }
+TEST(Cli, negative_pressure_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 2.5 --pbar -0.01 --s 2", "--pbar", "pbar > 0"); }
+TEST(Cli, non_numeric_value_is_refused) { expect_refused("--l abc --dh 0.075 --T 2.5 --pbar 0.06 --s 2", "--l", "l > 0"); }
+TEST(Cli, negative_time_is_refused) { expect_refused(kGood + " --times 0,-1", "--times", "t >= 0"); }
+TEST(Cli, missing_option_is_refused) { expect_refused("--l 0.75 --dh 0.075 --pbar 0.06 --s 2", "--T", ">= 1"); }
+TEST(Cli, unknown_format_is_refused) { expect_refused(kGood + " --format xml", "--format", "table, json, csv"); }
+
+TEST(Cli, unknown_option_is_refused) {
+  const CliRun r = run_cli("point " + kGood + " --bogus 3");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("unknown option --bogus"), std::string::npos) << r.err;
+}
+
+TEST(Cli, unknown_command_is_refused) {
+  const CliRun r = run_cli("sweeep");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown command"), std::string::npos);
+}
+
+TEST(Cli, help_names_every_option_with_its_unit_and_range) {
+  const CliRun r = run_cli("point --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* text : {"--l", "in R", "l > 0", "--dh", "dh >= 0", "--T", "T >= 1", "--pbar",
+                           "pbar > 0", "--s", "[1, 32]", "--C", "C > 0", "--times", "in T_eps",
+                           "--format", "table, json or csv"}) {
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+  }
+}
+
+TEST(Cli, json_output_has_the_contract_keys_and_the_model_numbers) {
+  const CliRun r = run_cli("point " + kGood + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* key : {"\"regime\": \"delayed\"", "\"t_star\": ", "\"h_0\": ", "\"h_inf\": ",
+                          "\"valid\": true", "\"reason\": \"\"", "\"a1_inf\": ", "\"a2_inf\": ",
+                          "\"area_fraction_inf\": ", "\"series\": {", "\"t\": [0, 0.5, 1, 2, 5]",
+                          "\"a1\": [", "\"a2\": [", "\"P1\": [", "\"P2\": [", "\"area_fraction\": ["}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key;
+  }
+  EXPECT_NEAR(json_number(r.out, "t_star"), 1.027595, 1e-6);  // model notes, section 9
+  EXPECT_NEAR(json_number(r.out, "h_0"), 0.0537767, 1e-7);
+  EXPECT_NEAR(json_number(r.out, "h_inf"), 0.0842487, 1e-7);
+  // Printed with round-trip precision: equal to the library's own value.
+  using namespace punchsweep::model;
+  const PointResult direct = evaluate_point(ContactProblem{0.75, 0.075, 0.06, Shape{2, 0.5}},
+                                            StandardLinearSolid(2.5));
+  EXPECT_EQ(json_number(r.out, "a1_inf"), direct.a1_inf);
+}
+
+TEST(Cli, never_regime_prints_null_t_star) {
+  const CliRun r = run_cli("point --l 0.75 --dh 0.1 --T 2.5 --pbar 0.06 --s 2 --format json");
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("\"regime\": \"never\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"t_star\": null"), std::string::npos);
+}
+
+TEST(Cli, flagged_point_reports_reason) {
+  const CliRun r = run_cli("point --l 0.3 --dh 0.2 --T 5 --pbar 0.3 --s 2 --format json");
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("\"valid\": false"), std::string::npos);
+  EXPECT_NE(r.out.find("spots of one level merge"), std::string::npos);
+}
+
+TEST(Cli, csv_and_table_show_the_series) {
+  const CliRun csv = run_cli("point " + kGood + " --format csv --times 0,5");
+  ASSERT_EQ(csv.exit_code, 0);
+  EXPECT_NE(csv.out.find("t,a1,a2,P1,P2,area_fraction\n0,"), std::string::npos) << csv.out;
+  EXPECT_NE(csv.out.find("# regime = delayed"), std::string::npos);
+  const CliRun table = run_cli("point " + kGood);
+  ASSERT_EQ(table.exit_code, 0);
+  EXPECT_NE(table.out.find("regime              delayed"), std::string::npos);
+  EXPECT_NE(table.out.find("t [T_eps]"), std::string::npos);
+}
