@@ -12,9 +12,9 @@ struct HistoryQuadrature {
   /// Gauss nodes per panel, n. The error falls as h^(2n) with the panel width h once the
   /// panels resolve the kernel (as composite Gauss-Legendre; tested for n = 2, 3), and
   /// never slower than the interpolation error h^n.
-  int nodes_per_panel = 8;
+  int nodes_per_panel = 12;
   /// Panel width h in v = sqrt(t - t0), in sqrt(T_eps).
-  double panel_width = 0.25;
+  double panel_width = 0.5;
 };
 
 /// The loads P_i(t) = int_0-^t E(t - tau) dQ_i(tau) (model notes, section 5), written as

@@ -124,13 +124,28 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
 
   std::optional<LoadHistory> history;
   if (two_level && start_ok && t_max >= t_start) {
+    // Along the history path, a secant predictor in (X, a1, a2^2) from the last two samples
+    // halves the Newton work; a2^2 rather than a2 because a2 ~ sqrt(X - X*) at touchdown.
     TwoLevelState current = start;
+    TwoLevelState previous = start;
     double X_current = X_start;
+    double X_previous = X_start;
     history.emplace(creep, level1_load, t_start, t_max, options.quadrature,
                     [&](double tau, double* Q1, double* Q2) {
                       const double X = pbar0 * creep.creep(tau);
-                      const TwoLevelSolve r = system.continue_to(current, X_current, X);
+                      TwoLevelSolve r{current, false};
+                      if (X_current > X_previous) {
+                        const double w = (X - X_current) / (X_current - X_previous);
+                        const double z = current.a2 * current.a2 +
+                                         w * (current.a2 * current.a2 - previous.a2 * previous.a2);
+                        const TwoLevelState guess{current.a1 + w * (current.a1 - previous.a1),
+                                                  std::sqrt(std::max(z, 0.0)), 0.0, 0.0};
+                        r = system.solve(X, guess);
+                      }
+                      if (!r.converged) r = system.continue_to(current, X_current, X);
                       if (!r.converged) return false;
+                      previous = current;
+                      X_previous = X_current;
                       current = r.state;
                       X_current = X;
                       *Q1 = current.Q1;

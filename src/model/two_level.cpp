@@ -159,7 +159,7 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess) const 
     std::copy(r_new, r_new + 2, r);
     std::copy(J_new, J_new + 4, J);
     std::copy(Q_new, Q_new + 2, Q);
-    if (step < kStepTolerance) break;
+    if (step < kStepTolerance || norm < kConvergedResidual) break;
   }
   out.state = TwoLevelState{a1, to_a2(z), Q[0], Q[1]};
   out.converged = norm < kResidualTolerance;

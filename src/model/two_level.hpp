@@ -35,6 +35,9 @@ class TwoLevelSystem {
  public:
   /// Newton stops when the step is below this, relative to l (or l^2 for z).
   static constexpr double kStepTolerance = 1e-14;
+  /// ... or when both scaled residuals are below this (quadratic convergence makes one
+  /// more step pointless) ...
+  static constexpr double kConvergedResidual = 1e-14;
   /// ... and accepts the root only if both scaled residuals are below this.
   static constexpr double kResidualTolerance = 1e-11;
   static constexpr int kMaxIterations = 60;
