@@ -17,23 +17,37 @@ inline double kernel_piece_span(const CreepLaw& creep) {
   return std::min(2.0 * creep.relaxation_time_scale(), 1.0);
 }
 
-/// int_{tau_a}^{tau_b} E'(t - tau) f(tau) dtau for an f smooth on [tau_a, tau_b].
-/// `zero` is the additive identity of f's result type (double, Eigen vector, ...).
-template <class F, class R>
-R relaxation_integral(const CreepLaw& creep, double t, double tau_a, double tau_b, F&& f, R zero) {
-  if (!(tau_b > tau_a)) return zero;
+/// int E'(t - tau(u)) f(u) tau'(u) du over [u_a, u_b] by 16-point Gauss pieces, as many as
+/// make each piece span at most kernel_piece_span in time (`tau_span` is the whole span).
+/// `map(u, &dtau_du)` returns tau(u). `zero` is the additive identity of f's result type.
+template <class Map, class F, class R>
+R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double u_b,
+                             double tau_span, Map&& map, F&& f, R zero) {
+  if (!(u_b > u_a)) return zero;
   const GaussLegendreRule& rule = gauss_legendre(kKernelNodes);
-  const int pieces = std::max(1, static_cast<int>(std::ceil((tau_b - tau_a) / kernel_piece_span(creep))));
-  const double width = (tau_b - tau_a) / pieces;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(tau_span / kernel_piece_span(creep))));
+  const double width = (u_b - u_a) / pieces;
   R sum = zero;
   for (int k = 0; k < pieces; ++k) {
-    const double mid = tau_a + (k + 0.5) * width;
+    const double mid = u_a + (k + 0.5) * width;
     for (int g = 0; g < kKernelNodes; ++g) {
-      const double tau = mid + 0.5 * width * rule.nodes[g];
-      sum += (0.5 * width * rule.weights[g] * creep.relaxation_rate(t - tau)) * f(tau);
+      const double u = mid + 0.5 * width * rule.nodes[g];
+      double dtau_du = 0.0;
+      const double tau = map(u, &dtau_du);
+      sum += (0.5 * width * rule.weights[g] * dtau_du * creep.relaxation_rate(t - tau)) * f(u);
     }
   }
   return sum;
+}
+
+/// int_{tau_a}^{tau_b} E'(t - tau) f(tau) dtau for an f smooth on [tau_a, tau_b].
+template <class F, class R>
+R relaxation_integral(const CreepLaw& creep, double t, double tau_a, double tau_b, F&& f, R zero) {
+  const auto identity = [](double tau, double* dtau) {
+    *dtau = 1.0;
+    return tau;
+  };
+  return relaxation_integral_mapped(creep, t, tau_a, tau_b, tau_b - tau_a, identity, f, zero);
 }
 
 /// int E'(t - tau) f dtau over tau in [tau0 + v_a^2, tau0 + v_b^2], in the variable
@@ -42,20 +56,11 @@ R relaxation_integral(const CreepLaw& creep, double t, double tau_a, double tau_
 template <class F, class R>
 R relaxation_integral_sqrt(const CreepLaw& creep, double t, double tau0, double v_a, double v_b,
                            F&& f, R zero) {
-  if (!(v_b > v_a)) return zero;
-  const GaussLegendreRule& rule = gauss_legendre(kKernelNodes);
-  const double tau_span = v_b * v_b - v_a * v_a;
-  const int pieces = std::max(1, static_cast<int>(std::ceil(tau_span / kernel_piece_span(creep))));
-  const double width = (v_b - v_a) / pieces;
-  R sum = zero;
-  for (int k = 0; k < pieces; ++k) {
-    const double mid = v_a + (k + 0.5) * width;
-    for (int g = 0; g < kKernelNodes; ++g) {
-      const double v = mid + 0.5 * width * rule.nodes[g];
-      sum += (width * rule.weights[g] * v * creep.relaxation_rate(t - tau0 - v * v)) * f(v);
-    }
-  }
-  return sum;
+  const auto square = [tau0](double v, double* dtau) {
+    *dtau = 2.0 * v;
+    return tau0 + v * v;
+  };
+  return relaxation_integral_mapped(creep, t, v_a, v_b, v_b * v_b - v_a * v_a, square, f, zero);
 }
 
 }  // namespace punchsweep::model
