@@ -80,7 +80,10 @@ void write_table(std::ostream& out, const model::ContactProblem& p,
       << "  t_star              " << (r.t_star ? number(*r.t_star) + " T_eps" : "none (never)") << "\n"
       << "  h_0                 " << number(r.h_0) << " R\n"
       << "  h_inf               " << number(r.h_inf) << " R\n"
-      << "  valid               " << (r.valid() ? "yes" : "no: " + r.reason()) << "\n"
+      << "  valid               "
+      << (r.valid() ? std::string("yes")
+                    : "no (" + std::string(model::validity_name(r.validity)) + "): " + r.reason())
+      << "\n"
       << "  A1, A2 (frozen)     " << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n"
       << "  a1_inf              " << number(r.a1_inf) << " R\n"
       << "  a2_inf              " << number(r.a2_inf) << " R\n"

@@ -54,9 +54,11 @@ std::string PointResult::reason() const {
   if (validity == Validity::valid) return {};
   std::ostringstream out;
   out.precision(6);
-  const std::string when = std::isinf(invalid_at)
-                               ? std::string("in the long-term state (t -> infinity)")
-                               : "at t = " + std::to_string(invalid_at) + " T_eps";
+  std::ostringstream time;
+  time.precision(6);
+  time << invalid_at;
+  const std::string when = std::isinf(invalid_at) ? std::string("in the long-term state (t -> infinity)")
+                                                  : "at t = " + time.str() + " T_eps";
   switch (validity) {
     case Validity::same_level_overlap:
       out << "spots of one level merge " << when << ": 2 a_i = " << violation_value

@@ -29,14 +29,6 @@ TwoLevelSystem::TwoLevelSystem(const ContactProblem& problem, NominalRadii radii
       K_d_(depth_coefficient(problem.shape)),
       z_power_(problem.shape.s == 1 ? 1 : 2) {}
 
-void TwoLevelSystem::loads(double a1, double a2, double X, double* Q1, double* Q2) const {
-  double r[2];
-  double Q[2];
-  residuals(a1, a2, X, r, nullptr, Q);
-  *Q1 = Q[0];
-  *Q2 = Q[1];
-}
-
 // Eq (9.16) for Q (linear once a is fixed), then eqs (9.19) and (9.17) as residuals.
 void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], double J[4],
                                double Q[2]) const {

@@ -44,9 +44,6 @@ class TwoLevelSystem {
 
   TwoLevelSystem(const ContactProblem& problem, NominalRadii radii);
 
-  /// Q1, Q2 for given radii (the linear part of eq 9.16).
-  void loads(double a1, double a2, double X, double* Q1, double* Q2) const;
-
   /// Newton from `guess` at creep-scaled pressure X.
   TwoLevelSolve solve(double X, const TwoLevelState& guess) const;
 

@@ -189,3 +189,17 @@ TEST(PointEvaluation, odd_inputs_give_no_silent_nan) {
   }
   EXPECT_GT(flagged, 0);
 }
+
+TEST(Validity, codes_and_names_are_the_file_contract) {
+  // Regime maps store these integers; README documents them. Never renumber.
+  EXPECT_EQ(static_cast<int>(Validity::valid), 0);
+  EXPECT_EQ(static_cast<int>(Validity::same_level_overlap), 1);
+  EXPECT_EQ(static_cast<int>(Validity::cross_level_overlap), 2);
+  EXPECT_EQ(static_cast<int>(Validity::no_solution), 3);
+  EXPECT_EQ(validity_name(Validity::same_level_overlap), "same_level_overlap");
+  EXPECT_EQ(validity_name(Validity::cross_level_overlap), "cross_level_overlap");
+  EXPECT_EQ(static_cast<int>(Regime::immediate), 0);
+  EXPECT_EQ(static_cast<int>(Regime::delayed), 1);
+  EXPECT_EQ(static_cast<int>(Regime::never), 2);
+  EXPECT_EQ(regime_name(Regime::delayed), "delayed");
+}

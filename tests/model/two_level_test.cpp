@@ -102,7 +102,7 @@ TEST(TwoLevelSystem, joins_the_single_level_solution_continuously_at_touchdown) 
 }
 
 TEST(TwoLevelSystem, residuals_vanish_at_the_solution) {
-  // Re-evaluate eq 9.16/9.17 from the returned radii (loads() solves 9.16 for Q).
+  // Re-evaluate eq 9.17 and 9.19, written out here, at the returned state.
   const ElasticTwoLevel e = solve_elastic_two_level(kTableProblem, 1.0);
   const TwoLevelSystem system(kTableProblem, e.radii);
   const double X = 0.06 * 2.0;
