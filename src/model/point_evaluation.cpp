@@ -58,7 +58,7 @@ std::string PointResult::reason() const {
   time.precision(6);
   time << invalid_at;
   const std::string when = std::isinf(invalid_at) ? std::string("in the long-term state (t -> infinity)")
-                                                  : "at t = " + time.str() + " T_eps";
+                                                  : "by t = " + time.str() + " T_eps";
   switch (validity) {
     case Validity::same_level_overlap:
       out << "spots of one level merge " << when << ": 2 a_i = " << violation_value

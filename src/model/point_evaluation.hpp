@@ -36,7 +36,7 @@ struct PointResult {
   double h_0 = 0.0;              ///< h at t = 0 (single-level phase), in R
   double h_inf = 0.0;            ///< h as t -> infinity (single-level phase), in R
   Validity validity = Validity::valid;
-  double invalid_at = 0.0;       ///< time of the first violation, in T_eps (inf = long term)
+  double invalid_at = 0.0;       ///< first computed time violating it, in T_eps (inf = long term)
   double violation_value = 0.0;  ///< the offending 2 a_i or a1 + a2, in R
   double violation_limit = 0.0;  ///< l or l/sqrt(2), in R
   NominalRadii radii;            ///< A1, A2 of the two-level phase (frozen, eq 9.18)
