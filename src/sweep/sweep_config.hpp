@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sweep/grid.hpp"
+
+namespace punchsweep::sweep {
+
+/// What the map stores: the 5-D regime variables only, or also the time series.
+enum class Quantities { regime, full };
+
+/// A fully resolved, validated `punchsweep sweep` configuration (defaults, INI file and
+/// command-line overrides merged; the command line wins).
+struct SweepConfig {
+  Grid grid;                          ///< [grid] l, dh, T, pbar, s
+  double C = 0.5;                     ///< [model] C: shape constant, > 0
+  std::string creep_law = "standard_linear_solid";  ///< [model] creep_law (only this one now)
+  std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps
+  std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
+  Quantities quantities = Quantities::full;  ///< [output] quantities
+  std::size_t chunk = 4096;           ///< [run] chunk: target points per tile / HDF5 chunk
+  bool resume = false;                ///< [run] resume
+  bool overwrite = false;             ///< [run] overwrite
+  bool dry_run = false;               ///< --dry-run (command line only)
+  bool quiet = false;                 ///< [run] quiet
+  std::string config_path;            ///< the --config file, "" for the embedded default
+  /// The resolved configuration as INI text, every key with its final value and a comment
+  /// line naming its source; stored in the map and compared on --resume.
+  std::string resolved_text;
+  /// The keys that define the map's content (grid, model, time, quantities, chunk) as
+  /// "section.key = value" lines; --resume refuses any difference in these.
+  std::vector<std::string> identity;
+};
+
+}  // namespace punchsweep::sweep
