@@ -17,32 +17,29 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// Keeps the earliest reason a point cannot be trusted (model notes, section 7).
-class ValidityTracker {
- public:
-  ValidityTracker(PointResult& out, double l) : out_(out), l_(l) {}
-
-  void check_state(double t, double a1, double a2) {
-    const double widest = 2.0 * std::max(a1, a2);
-    if (widest >= l_) {
-      flag(Validity::same_level_overlap, t, widest, l_);
-    } else if (a1 + a2 >= l_ / std::numbers::sqrt2) {
-      flag(Validity::cross_level_overlap, t, a1 + a2, l_ / std::numbers::sqrt2);
-    }
-  }
-  void no_solution(double t) { flag(Validity::no_solution, t, kNaN, kNaN); }
-
- private:
-  void flag(Validity v, double t, double value, double limit) {
-    if (out_.validity != Validity::valid) return;
-    out_.validity = v;
-    out_.invalid_at = t;
-    out_.violation_value = value;
-    out_.violation_limit = limit;
-  }
-  PointResult& out_;
-  double l_;
+/// Which rule of model notes section 7 a state breaks, if any.
+struct Violation {
+  Validity code = Validity::valid;
+  double value = 0.0;
+  double limit = 0.0;
 };
+
+Violation check_state(double a1, double a2, double l) {
+  const double widest = 2.0 * std::max(a1, a2);
+  if (widest >= l) return {Validity::same_level_overlap, widest, l};
+  if (a1 + a2 >= l / std::numbers::sqrt2) {
+    return {Validity::cross_level_overlap, a1 + a2, l / std::numbers::sqrt2};
+  }
+  return {};
+}
+
+void flag(PointSummary& out, const Violation& v, double t) {
+  out.validity = v.code;
+  out.violation_value = v.value;
+  out.violation_limit = v.limit;
+  out.invalid_at = t;
+  out.first_seen = t;
+}
 
 double area_fraction(double a1, double a2, double l) {
   return std::numbers::pi * (a1 * a1 + a2 * a2) / (l * l);
@@ -50,73 +47,122 @@ double area_fraction(double a1, double a2, double l) {
 
 }  // namespace
 
-std::string PointResult::reason() const {
+std::string PointSummary::reason() const {
   if (validity == Validity::valid) return {};
   std::ostringstream out;
   out.precision(6);
-  std::ostringstream time;
-  time.precision(6);
-  time << invalid_at;
-  const std::string when = std::isinf(invalid_at) ? std::string("in the long-term state (t -> infinity)")
-                                                  : "by t = " + time.str() + " T_eps";
+  const auto when = [](double t) {
+    std::ostringstream text;
+    text.precision(6);
+    if (std::isinf(t)) text << "in the long-term state (t -> infinity)";
+    else text << "at t = " << t << " T_eps";
+    return text.str();
+  };
   switch (validity) {
     case Validity::same_level_overlap:
-      out << "spots of one level merge " << when << ": 2 a_i = " << violation_value
+      out << "spots of one level merge " << when(invalid_at) << ": 2 a_i = " << violation_value
           << " R >= l = " << violation_limit << " R (localization needs separate spots)";
       break;
     case Validity::cross_level_overlap:
-      out << "level-1 and level-2 spots merge " << when << ": a1 + a2 = " << violation_value
+      out << "level-1 and level-2 spots merge " << when(invalid_at) << ": a1 + a2 = " << violation_value
           << " R >= l/sqrt(2) = " << violation_limit << " R (localization needs separate spots)";
       break;
     case Validity::no_solution:
-      out << "the two-level equations have no admissible solution " << when;
+      out << "the two-level equations have no admissible solution " << when(invalid_at);
       break;
     case Validity::valid: break;
   }
+  if (first_seen < invalid_at) out << "; already broken " << when(first_seen);
   return out.str();
+}
+
+void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
+                       double* h_inf, double* a1_inf_single) {
+  const SingleLevel single(problem.l, problem.shape);
+  const double X0 = problem.pbar0 * creep.creep_initial();
+  const double X_inf = problem.pbar0 * creep.creep_final();
+  *h_0 = single.displacement_difference(single.contact_radius(X0), X0);
+  *a1_inf_single = single.contact_radius(X_inf);
+  *h_inf = std::isfinite(X_inf) ? single.displacement_difference(*a1_inf_single, X_inf) : kInf;
+}
+
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
+                             const SummaryParts& parts) {
+  PointSummary out;
+  const Classification& c = parts.classification;
+  out.regime = c.regime;
+  if (c.regime != Regime::never) out.t_star = c.t_star;
+  out.h_0 = parts.h_0;
+  out.h_inf = parts.h_inf;
+  const double l = problem.l;
+  const double X_inf = problem.pbar0 * creep.creep_final();
+
+  // The two-level phase starts from a known state, with frozen radii (eq 9.18).
+  const Lattice lattice{l};
+  out.radii = NominalRadii{lattice.A1_single(), lattice.A_single()};
+  out.X_start = problem.pbar0 * creep.creep_initial();
+  if (c.regime == Regime::never) {
+    out.a1_inf = parts.a1_inf_single;
+    out.a2_inf = 0.0;
+    out.start = TwoLevelState{0.0, 0.0, 0.0, 0.0};
+    const Violation v = check_state(out.a1_inf, 0.0, l);
+    if (v.code != Validity::valid) flag(out, v, kInf);
+  } else {
+    if (c.regime == Regime::immediate) {
+      out.radii = parts.elastic->radii;
+      out.start = parts.elastic->state;
+      out.start_ok = parts.elastic->converged;
+    } else {
+      out.t_start = c.t_star;
+      out.X_start = c.X_star;
+      out.start = TwoLevelState{c.a1_star, 0.0, l * l * c.X_star, 0.0};
+    }
+    // Straight from the start to J(inf), whatever times a caller samples: the long-term
+    // state is the same function of the point in a regime map and in `punchsweep point`.
+    TwoLevelSolve r{out.start, false};
+    if (out.start_ok && std::isfinite(X_inf)) {
+      r = TwoLevelSystem(problem, out.radii).continue_to(out.start, out.X_start, X_inf);
+    }
+    out.a1_inf = r.converged ? r.state.a1 : kNaN;
+    out.a2_inf = r.converged ? r.state.a2 : kNaN;
+    const Violation at_start = check_state(out.start.a1, out.start.a2, l);
+    if (!out.start_ok) {
+      flag(out, {Validity::no_solution, kNaN, kNaN}, out.t_start);
+    } else if (at_start.code != Validity::valid) {
+      flag(out, at_start, out.t_start);
+    } else if (!r.converged) {
+      flag(out, {Validity::no_solution, kNaN, kNaN}, kInf);
+    } else {
+      const Violation v = check_state(out.a1_inf, out.a2_inf, l);
+      if (v.code != Validity::valid) flag(out, v, kInf);
+    }
+  }
+  out.area_fraction_inf = area_fraction(out.a1_inf, out.a2_inf, l);
+  return out;
+}
+
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
+  SummaryParts parts;
+  parts.classification = classify(problem, creep);
+  single_level_ends(problem, creep, &parts.h_0, &parts.h_inf, &parts.a1_inf_single);
+  std::optional<ElasticTwoLevel> elastic;
+  if (parts.classification.regime == Regime::immediate) {
+    elastic = solve_elastic_two_level(problem, 1.0 / creep.creep_initial());
+    parts.elastic = &*elastic;
+  }
+  return summarize_point(problem, creep, parts);
 }
 
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options) {
   PointResult out;
-  ValidityTracker tracker(out, problem.l);
+  static_cast<PointSummary&>(out) = summarize_point(problem, creep);
   const SingleLevel single(problem.l, problem.shape);
   const double pbar0 = problem.pbar0;
   const double level1_load = pbar0 * problem.l * problem.l;  // P1 while only level 1 touches
-
-  const double X0 = pbar0 * creep.creep_initial();
-  const double X_inf = pbar0 * creep.creep_final();
-  out.h_0 = single.displacement_difference(single.contact_radius(X0), X0);
-  const double a1_inf_single = single.contact_radius(X_inf);
-  out.h_inf = std::isfinite(X_inf) ? single.displacement_difference(a1_inf_single, X_inf) : kInf;
-
-  const Classification c = classify(problem, creep);
-  out.regime = c.regime;
-  if (c.regime != Regime::never) out.t_star = c.t_star;
-
-  // The two-level phase starts at t_start from a known state, with frozen radii (eq 9.18).
-  const Lattice lattice{problem.l};
-  out.radii = NominalRadii{lattice.A1_single(), lattice.A_single()};
-  const bool two_level = c.regime != Regime::never;
-  double t_start = 0.0;
-  double X_start = X0;
-  TwoLevelState start;
-  bool start_ok = true;
-  if (c.regime == Regime::immediate) {
-    const ElasticTwoLevel elastic = solve_elastic_two_level(problem, 1.0 / creep.creep_initial());
-    out.radii = elastic.radii;
-    start = elastic.state;
-    start_ok = elastic.converged;
-  } else if (c.regime == Regime::delayed) {
-    t_start = c.t_star;
-    X_start = pbar0 * c.J_star;
-    start = TwoLevelState{c.a1_star, 0.0, problem.l * problem.l * X_start, 0.0};
-  }
+  const bool two_level = out.regime != Regime::never;
+  const double t_start = out.t_start;
   const TwoLevelSystem system(problem, out.radii);
-  if (two_level) {
-    if (start_ok) tracker.check_state(t_start, start.a1, start.a2);
-    else tracker.no_solution(t_start);
-  }
 
   std::vector<std::size_t> order(options.times.size());
   std::iota(order.begin(), order.end(), 0);
@@ -125,13 +171,13 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   const double t_max = options.times.empty() ? 0.0 : options.times[order.back()];
 
   std::optional<LoadHistory> history;
-  if (two_level && start_ok && t_max >= t_start) {
+  if (two_level && out.start_ok && t_max >= t_start) {
     // Along the history path, a secant predictor in (X, a1, a2^2) from the last two samples
     // halves the Newton work; a2^2 rather than a2 because a2 ~ sqrt(X - X*) at touchdown.
-    TwoLevelState current = start;
-    TwoLevelState previous = start;
-    double X_current = X_start;
-    double X_previous = X_start;
+    TwoLevelState current = out.start;
+    TwoLevelState previous = out.start;
+    double X_current = out.X_start;
+    double X_previous = out.X_start;
     history.emplace(creep, level1_load, t_start, t_max, options.quadrature,
                     [&](double tau, double* Q1, double* Q2) {
                       const double X = pbar0 * creep.creep(tau);
@@ -158,9 +204,9 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   }
 
   out.series.resize(options.times.size());
-  TwoLevelState current = start;
-  double X_current = X_start;
-  bool current_ok = start_ok;
+  TwoLevelState current = out.start;
+  double X_current = out.X_start;
+  bool current_ok = out.start_ok;
   for (const std::size_t i : order) {
     Snapshot& snap = out.series[i];
     snap.t = options.times[i];
@@ -181,30 +227,17 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
         history->load(snap.t, current.Q1, current.Q2, &snap.P1, &snap.P2);
       } else {
         current_ok = false;
-        tracker.no_solution(snap.t);
+        if (out.valid()) flag(out, {Validity::no_solution, kNaN, kNaN}, snap.t);
         snap.a1 = snap.a2 = snap.P1 = snap.P2 = kNaN;
       }
     }
     snap.area_fraction = area_fraction(snap.a1, snap.a2, problem.l);
-    if (std::isfinite(snap.a1)) tracker.check_state(snap.t, snap.a1, snap.a2);
-  }
-
-  if (!two_level) {
-    out.a1_inf = a1_inf_single;
-    out.a2_inf = 0.0;
-  } else {
-    TwoLevelSolve r{current, false};
-    if (current_ok && std::isfinite(X_inf)) r = system.continue_to(current, X_current, X_inf);
-    if (r.converged) {
-      out.a1_inf = r.state.a1;
-      out.a2_inf = r.state.a2;
-    } else {
-      out.a1_inf = out.a2_inf = kNaN;
-      tracker.no_solution(kInf);
+    // The summary decided validity; a snapshot only tells how early a break is visible.
+    if (!out.valid() && snap.t < out.first_seen && std::isfinite(snap.a1) &&
+        check_state(snap.a1, snap.a2, problem.l).code != Validity::valid) {
+      out.first_seen = snap.t;
     }
   }
-  out.area_fraction_inf = area_fraction(out.a1_inf, out.a2_inf, problem.l);
-  if (std::isfinite(out.a1_inf)) tracker.check_state(kInf, out.a1_inf, out.a2_inf);
   return out;
 }
 

@@ -29,32 +29,67 @@ struct EvaluationOptions {
   HistoryQuadrature quadrature{};
 };
 
-/// Everything the paper computes for one parameter point.
-struct PointResult {
+/// Everything about a point that does not depend on the snapshot times (what a regime
+/// map stores). Each field is a pure function of the point: no warm start from another
+/// point enters, so a sweep gives bit-identical numbers however it is cut into tiles.
+struct PointSummary {
   Regime regime = Regime::never;
   std::optional<double> t_star;  ///< in T_eps; empty for never
   double h_0 = 0.0;              ///< h at t = 0 (single-level phase), in R
   double h_inf = 0.0;            ///< h as t -> infinity (single-level phase), in R
+  /// Decided from the two-level start state and the long-term state: radii only grow
+  /// (Sect. 9.4.2), so no state in between can break a rule those two keep.
   Validity validity = Validity::valid;
-  double invalid_at = 0.0;       ///< first computed time violating it, in T_eps (inf = long term)
-  double violation_value = 0.0;  ///< the offending 2 a_i or a1 + a2, in R
+  double invalid_at = 0.0;       ///< time of the state that breaks it, in T_eps (inf = long term)
+  double violation_value = 0.0;  ///< the offending 2 a_i or a1 + a2 there, in R
   double violation_limit = 0.0;  ///< l or l/sqrt(2), in R
+  double first_seen = 0.0;       ///< earliest computed time that shows a break, in T_eps
   NominalRadii radii;            ///< A1, A2 of the two-level phase (frozen, eq 9.18)
   double a1_inf = 0.0;           ///< long-term radii and area fraction (J = J(inf))
   double a2_inf = 0.0;
   double area_fraction_inf = 0.0;
-  std::vector<Snapshot> series;  ///< one per requested time, in the order requested
-  int history_samples = 0;       ///< two-level solves spent on the load history
+
+  /// Start of the two-level phase (t_start = t*, or 0 when immediate).
+  double t_start = 0.0;
+  double X_start = 0.0;          ///< pbar0 J(t_start), in E0*
+  TwoLevelState start;
+  bool start_ok = true;
 
   bool valid() const { return validity == Validity::valid; }
   /// One sentence telling why the result is flagged, with the numbers; "" when valid.
   std::string reason() const;
 };
 
-/// Evaluates one point: regime and t*, h(0), h(inf), the frozen radii, the state at every
-/// requested time, the long-term state, and validity. Never throws for a problem that
-/// passes problem_error(); a point whose equations have no admissible solution comes back
-/// flagged no_solution with NaN only in the quantities that could not be computed.
+/// A point's summary plus its state at the requested times.
+struct PointResult : PointSummary {
+  std::vector<Snapshot> series;  ///< one per requested time, in the order requested
+  int history_samples = 0;       ///< two-level solves spent on the load history
+};
+
+/// The ingredients of a summary that depend on fewer coordinates than the point; a sweep
+/// computes each once per distinct subset and passes them in.
+struct SummaryParts {
+  Classification classification;  ///< via touchdown(): per (l, s, C, dh), then cheap
+  double h_0 = 0.0;                ///< per (l, s, C, pbar)
+  double h_inf = 0.0;              ///< per (l, s, C, pbar, creep)
+  double a1_inf_single = 0.0;      ///< single-level radius at J(inf): the same subset
+  const ElasticTwoLevel* elastic = nullptr;  ///< at E0, per (l, s, C, dh, pbar); immediate only
+};
+
+/// h(0), h(inf) and the single-level radius at J(inf) (eq 9.5, 9.10).
+void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
+                       double* h_inf, double* a1_inf_single);
+
+/// The summary from its parts (`elastic` must be set when the regime is immediate).
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
+                             const SummaryParts& parts);
+
+/// The summary, computing every part.
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep);
+
+/// Evaluates one point: its summary and the state at every requested time. Never throws
+/// for a problem that passes problem_error(); a point whose equations have no admissible
+/// solution comes back flagged no_solution with NaN only in what could not be computed.
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options = {});
 

@@ -17,11 +17,18 @@ std::string_view regime_name(Regime regime) {
   return "unknown";
 }
 
-Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
-  const SingleLevel single(problem.l, problem.shape);
+Touchdown touchdown(const SingleLevel& single, double dh) {
+  Touchdown t;
+  t.a1_star = single.contact_radius_at_gap(dh);
+  t.X_star = t.a1_star > 0.0 ? single.creep_scaled_pressure(t.a1_star) : 0.0;
+  return t;
+}
+
+Classification classify(const Touchdown& touch, double pbar0, const CreepLaw& creep) {
   Classification out;
-  out.a1_star = single.contact_radius_at_gap(problem.dh);
-  out.J_star = out.a1_star > 0.0 ? single.creep_scaled_pressure(out.a1_star) / problem.pbar0 : 0.0;
+  out.a1_star = touch.a1_star;
+  out.X_star = touch.X_star;
+  out.J_star = touch.X_star / pbar0;
   if (out.J_star <= creep.creep_initial()) {
     out.regime = Regime::immediate;
     out.t_star = 0.0;
@@ -32,6 +39,11 @@ Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
     out.regime = std::isfinite(out.t_star) ? Regime::delayed : Regime::never;
   }
   return out;
+}
+
+Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
+  const SingleLevel single(problem.l, problem.shape);
+  return classify(touchdown(single, problem.dh), problem.pbar0, creep);
 }
 
 }  // namespace punchsweep::model

@@ -26,7 +26,23 @@ struct Classification {
   double t_star = 0.0;  ///< in T_eps; 0 for immediate, +infinity for never
   double a1_star = 0.0; ///< level-1 radius at touchdown, in R (0 when dh = 0)
   double J_star = 0.0;  ///< creep at touchdown, in 1/E0*
+  double X_star = 0.0;  ///< creep-scaled pressure at touchdown, pbar0 J*, in E0*
 };
+
+/// Where level 2 touches along the single-level solution: the level-1 radius a1* with
+/// h(a1*) = dh and the creep-scaled pressure X* = pbar0 J* there. Depends on (l, s, C, dh)
+/// only, so a sweep computes it once per dh.
+struct Touchdown {
+  double a1_star = 0.0;  ///< in R (0 when dh = 0)
+  double X_star = 0.0;   ///< in E0*
+};
+
+class SingleLevel;
+/// The touchdown point of `single` (its l and shape) for height difference dh.
+Touchdown touchdown(const SingleLevel& single, double dh);
+
+/// Classifies from a touchdown point: cheap (no root).
+Classification classify(const Touchdown& touch, double pbar0, const CreepLaw& creep);
 
 /// Classifies one point (the problem must satisfy problem_error() == "").
 Classification classify(const ContactProblem& problem, const CreepLaw& creep);

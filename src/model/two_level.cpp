@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "model/lattice.hpp"
+#include "model/regime.hpp"
 #include "model/ring_loads.hpp"
 #include "model/single_level.hpp"
 
@@ -184,9 +185,9 @@ TwoLevelSolve TwoLevelSystem::continue_to(const TwoLevelState& from, double X_fr
 }
 
 TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {
-  const SingleLevel single(problem_.l, problem_.shape);
-  const double a1_touch = single.contact_radius_at_gap(problem_.dh);
-  const double X_touch = a1_touch > 0.0 ? single.creep_scaled_pressure(a1_touch) : 0.0;
+  const Touchdown touch = touchdown(SingleLevel(problem_.l, problem_.shape), problem_.dh);
+  const double a1_touch = touch.a1_star;
+  const double X_touch = touch.X_star;
   // Below this share of the target load the touchdown point is too close to a = 0 for
   // Newton; start instead from the isolated-punch limit (interactions negligible).
   constexpr double kSmallLoadShare = 1e-6;
