@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/point_command.hpp"
+#include "app/sweep_command.hpp"
 #include "app/usage_error.hpp"
 #include "app/version.hpp"
 
@@ -14,11 +15,14 @@ constexpr const char* kTopHelp =
     "viscoelastic half-space? (Goryacheva & Yakovenko's localization method)\n\n"
     "usage: punchsweep <command> [options]\n\n"
     "commands:\n"
-    "  point      evaluate one parameter point: regime, t*, contact state over time\n\n"
+    "  point      evaluate one parameter point: regime, t*, contact state over time\n"
+    "  sweep      evaluate a 5-D grid over (l, dh, T, pbar, s) on MPI ranks into an HDF5\n"
+    "             regime map (mpirun -np N punchsweep sweep --config F.ini)\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
-    "Exit codes: 0 success, 2 bad input (one line on stderr naming the option), 1 failure.\n";
+    "Exit codes: 0 success, 2 bad input (one line on stderr per problem, naming the option),\n"
+    "3 sweep stopped by a signal (resume it with --resume), 1 failure.\n";
 
 }  // namespace
 
@@ -37,7 +41,8 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "point") return punchsweep::app::run_point_command(rest, std::cout);
-    throw UsageError("unknown command '" + args[0] + "' (commands: point; see punchsweep --help)");
+    if (args[0] == "sweep") return punchsweep::app::run_sweep_command(rest);
+    throw UsageError("unknown command '" + args[0] + "' (commands: point, sweep; see punchsweep --help)");
   } catch (const UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::app::kUsageExitCode;

@@ -155,8 +155,13 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options) {
+  return evaluate_point(problem, creep, options, summarize_point(problem, creep));
+}
+
+PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
+                           const EvaluationOptions& options, const PointSummary& summary) {
   PointResult out;
-  static_cast<PointSummary&>(out) = summarize_point(problem, creep);
+  static_cast<PointSummary&>(out) = summary;
   const SingleLevel single(problem.l, problem.shape);
   const double pbar0 = problem.pbar0;
   const double level1_load = pbar0 * problem.l * problem.l;  // P1 while only level 1 touches

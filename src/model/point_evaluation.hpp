@@ -93,4 +93,8 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options = {});
 
+/// The same, from a summary already computed by summarize_point() for this point.
+PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
+                           const EvaluationOptions& options, const PointSummary& summary);
+
 }  // namespace punchsweep::model

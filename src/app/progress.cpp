@@ -1,0 +1,75 @@
+#include "app/progress.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+namespace punchsweep::app {
+namespace {
+
+std::string duration(double seconds) {
+  char buf[64];
+  if (!std::isfinite(seconds)) return "?";
+  if (seconds < 90) std::snprintf(buf, sizeof buf, "%.0f s", seconds);
+  else if (seconds < 5400) std::snprintf(buf, sizeof buf, "%.0f min %02.0f s", std::floor(seconds / 60), std::fmod(seconds, 60));
+  else std::snprintf(buf, sizeof buf, "%.0f h %02.0f min", std::floor(seconds / 3600), std::fmod(seconds / 60, 60));
+  return buf;
+}
+
+}  // namespace
+
+Progress::Progress(std::ostream& out, std::size_t total_points, bool quiet)
+    : out_(out), total_(total_points), quiet_(quiet), start_(std::chrono::steady_clock::now()),
+      last_print_(start_) {}
+
+void Progress::count(const io::TileData& data) {
+  for (const std::int8_t r : data.regime) {
+    if (r >= 0 && r < 3) ++regimes_[static_cast<std::size_t>(r)];
+  }
+  for (const std::int8_t v : data.valid) {
+    if (v >= 0 && v < 4) ++validity_[static_cast<std::size_t>(v)];
+  }
+}
+
+void Progress::restored(const io::TileData& data) {
+  count(data);
+  restored_points_ += data.regime.size();
+}
+
+void Progress::computed(const io::TileData& data) {
+  count(data);
+  computed_points_ += data.regime.size();
+  const auto now = std::chrono::steady_clock::now();
+  if (quiet_ || now - last_print_ < std::chrono::seconds(1)) return;
+  last_print_ = now;
+  const double done = static_cast<double>(points_done());
+  const double left = static_cast<double>(total_) - done;
+  char line[200];
+  std::snprintf(line, sizeof line, "punchsweep sweep: %zu / %zu points (%.1f%%), %.3g points/s, ETA %s\n",
+                points_done(), total_, 100.0 * done / static_cast<double>(total_), rate(),
+                duration(left / rate()).c_str());
+  out_ << line << std::flush;
+}
+
+double Progress::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+double Progress::rate() const { return static_cast<double>(computed_points_) / std::max(seconds(), 1e-9); }
+
+void Progress::print_summary(int ranks) const {
+  if (quiet_) return;
+  const std::size_t invalid = validity_[1] + validity_[2] + validity_[3];
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "punchsweep sweep: %zu points (%zu computed now in %s, %.3g points/s on %d rank%s)\n"
+                "  regimes: immediate %zu, delayed %zu, never %zu\n"
+                "  invalid: %zu (same_level_overlap %zu, cross_level_overlap %zu, no_solution %zu)\n",
+                points_done(), computed_points_, duration(seconds()).c_str(), rate(), ranks,
+                ranks == 1 ? "" : "s", regimes_[0], regimes_[1], regimes_[2], invalid, validity_[1],
+                validity_[2], validity_[3]);
+  out_ << line << std::flush;
+}
+
+}  // namespace punchsweep::app

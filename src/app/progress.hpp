@@ -1,0 +1,45 @@
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <iosfwd>
+
+#include "io/tile_data.hpp"
+
+namespace punchsweep::app {
+
+/// Progress and end-of-run summary of a sweep, printed by rank 0 to a stream (stderr):
+/// at most one line a second with points done / total, percent, points/s and ETA.
+class Progress {
+ public:
+  Progress(std::ostream& out, std::size_t total_points, bool quiet);
+
+  /// Counts a tile restored from the journal (not computed by this run).
+  void restored(const io::TileData& data);
+  /// Counts a tile computed by this run and prints a line if a second has passed.
+  void computed(const io::TileData& data);
+
+  std::size_t points_done() const { return restored_points_ + computed_points_; }
+  std::size_t points_computed() const { return computed_points_; }
+  double seconds() const;
+  /// Points computed per second of this run.
+  double rate() const;
+  /// Counts per regime (immediate, delayed, never), invalid points and per validity code.
+  void print_summary(int ranks) const;
+
+ private:
+  void count(const io::TileData& data);
+
+  std::ostream& out_;
+  std::size_t total_;
+  bool quiet_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_print_;
+  std::size_t restored_points_ = 0;
+  std::size_t computed_points_ = 0;
+  std::array<std::size_t, 3> regimes_{};
+  std::array<std::size_t, 4> validity_{};
+};
+
+}  // namespace punchsweep::app

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/file_descriptor.hpp"
+#include "io/tile_data.hpp"
+
+namespace punchsweep::io {
+
+/// Append-only journal of finished tiles, from which an interrupted sweep resumes. It
+/// survives `kill -9` of the writer at any moment: each record goes out in one write()
+/// and carries a CRC-32, so a record cut short (or damaged) is detected and ignored,
+/// never misread. No fsync: a killed process does not lose the page cache, and a machine
+/// crash at worst costs tiles that are then computed again.
+///
+/// File layout (native endianness):
+///   header: 8-byte magic "PSJRNL\r\n", u32 format version, u64 text length, the header
+///           text (the caller's configuration identity), u32 CRC-32 of all of the above;
+///   record: u32 magic "PSRC", u64 payload length, payload (a pack_tile buffer),
+///           u32 CRC-32 of the length field and the payload.
+///
+/// Replay stops at the first record that is incomplete, has a wrong magic or a wrong CRC:
+/// what follows a damaged record cannot be framed reliably, so it is ignored as well, and
+/// open_for_append cuts the file there (those tiles are computed again).
+class TileJournal {
+ public:
+  /// Creates (or truncates) the journal at `path` and writes its header.
+  /// Throws std::runtime_error naming the path and the system error on failure.
+  static TileJournal create(const std::string& path, const std::string& header_text);
+
+  /// The header text of the journal at `path`. Throws std::runtime_error saying whether
+  /// the file cannot be read, is not a tile journal, has another format version, or has a
+  /// torn or damaged header.
+  static std::string read_header(const std::string& path);
+
+  /// Calls `on_tile` for every complete, CRC-valid record in file order, holding one record
+  /// in memory at a time, and returns the byte offset just past the last good record.
+  /// Throws like read_header for a bad header, and std::runtime_error for a record whose
+  /// CRC is right but whose payload does not decode (a journal of another program version).
+  static std::size_t replay(const std::string& path,
+                            const std::function<void(std::uint64_t tile_index, const TileData&)>& on_tile);
+
+  /// Opens an existing journal for appending after `good_end` (what replay returned),
+  /// cutting off any torn or damaged tail first. Throws std::runtime_error if the header is
+  /// bad or `good_end` lies outside [end of header, end of file].
+  static TileJournal open_for_append(const std::string& path, std::size_t good_end);
+
+  /// Appends one record. On a write error the file is cut back to its previous end (so no
+  /// half record stays in front of later ones) and std::runtime_error is thrown.
+  void append(std::uint64_t tile_index, const TileData& data);
+
+  const std::string& path() const { return path_; }
+  /// Bytes in the journal after the last appended record.
+  std::size_t size() const { return end_; }
+
+ private:
+  TileJournal(FileDescriptor fd, std::string path, std::size_t end);
+
+  FileDescriptor fd_;
+  std::string path_;
+  std::size_t end_ = 0;
+  std::vector<std::byte> record_;  ///< reused record buffer
+};
+
+}  // namespace punchsweep::io

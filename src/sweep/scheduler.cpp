@@ -1,0 +1,186 @@
+#include "sweep/scheduler.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <stdexcept>
+
+#include "io/tile_codec.hpp"
+
+namespace punchsweep::sweep {
+namespace {
+
+enum Tag : int { kTagWork = 1, kTagStop = 2, kTagResult = 3, kTagDone = 4 };
+constexpr int kBatchesInFlight = 2;
+
+void check(int status, const char* what) {
+  if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+/// Worker side: computes the tiles it is sent, one result message per tile, until told to stop.
+void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator) {
+  std::deque<std::uint64_t> pending;
+  bool stop = false;
+  io::TileData data;
+  std::vector<std::byte> sending;  // the result in transit; one Isend at a time
+  MPI_Request send_request = MPI_REQUEST_NULL;
+  while (!stop) {
+    // Block only when there is nothing to compute.
+    int flag = 0;
+    MPI_Status status;
+    if (pending.empty()) {
+      check(MPI_Probe(0, MPI_ANY_TAG, comm, &status), "probe");
+      flag = 1;
+    } else {
+      check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
+    }
+    while (flag) {
+      int count = 0;
+      MPI_Get_count(&status, MPI_UINT64_T, &count);
+      std::vector<std::uint64_t> message(static_cast<std::size_t>(count));
+      check(MPI_Recv(message.data(), count, MPI_UINT64_T, 0, status.MPI_TAG, comm, MPI_STATUS_IGNORE), "recv work");
+      if (status.MPI_TAG == kTagStop) stop = true;
+      else pending.insert(pending.end(), message.begin(), message.end());
+      check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
+    }
+    if (stop || pending.empty()) continue;
+    const std::uint64_t tile = pending.front();
+    pending.pop_front();
+    evaluator.evaluate(tiling.box(tile), &data);
+    check(MPI_Wait(&send_request, MPI_STATUS_IGNORE), "wait send");
+    sending = io::pack_tile(tile, data);
+    check(MPI_Isend(sending.data(), static_cast<int>(sending.size()), MPI_BYTE, 0, kTagResult, comm, &send_request),
+          "send result");
+  }
+  check(MPI_Wait(&send_request, MPI_STATUS_IGNORE), "wait send");
+  check(MPI_Send(nullptr, 0, MPI_BYTE, 0, kTagDone, comm), "send done");
+}
+
+class Manager {
+ public:
+  Manager(MPI_Comm comm, int ranks, const Tiling& tiling, const TileEvaluator& evaluator,
+          const std::vector<std::size_t>& pending, const TileSink& sink)
+      : comm_(comm), ranks_(ranks), tiling_(tiling), evaluator_(evaluator), sink_(sink),
+        queue_(pending.begin(), pending.end()), outstanding_(static_cast<std::size_t>(ranks), 0),
+        to_do_(pending.size()) {}
+
+  ScheduleResult run(const volatile std::sig_atomic_t* stop) {
+    for (int w = 1; w < ranks_; ++w) {
+      for (int b = 0; b < kBatchesInFlight; ++b) send_batch(w);
+    }
+    while (true) {
+      if (*stop && !stopping_) begin_stop();
+      drain_results(false);
+      if (!stopping_ && !queue_.empty()) {
+        compute_one();
+        continue;
+      }
+      if (!stopping_ && total_outstanding() == 0) begin_stop();  // every tile is done: release workers
+      if (stopping_ && done_ == ranks_ - 1) break;
+      drain_results(true);
+    }
+    result_.interrupted = result_.tiles_done < to_do_;
+    return result_;
+  }
+
+ private:
+  std::size_t total_outstanding() const {
+    std::size_t n = 0;
+    for (const std::size_t o : outstanding_) n += o;
+    return n;
+  }
+
+  // Guided size: large batches early, single tiles at the end.
+  std::size_t guided_size() const {
+    return std::clamp<std::size_t>(queue_.size() / (4 * static_cast<std::size_t>(ranks_)), 1,
+                                   std::max<std::size_t>(queue_.size(), 1));
+  }
+
+  void send_batch(int worker) {
+    if (queue_.empty() || stopping_) return;
+    const std::size_t size = guided_size();
+    std::vector<std::uint64_t> batch(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(size));
+    queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(size));
+    check(MPI_Send(batch.data(), static_cast<int>(batch.size()), MPI_UINT64_T, worker, kTagWork, comm_), "send work");
+    outstanding_[static_cast<std::size_t>(worker)] += size;
+  }
+
+  void begin_stop() {
+    stopping_ = true;
+    for (int w = 1; w < ranks_; ++w) {
+      check(MPI_Send(nullptr, 0, MPI_UINT64_T, w, kTagStop, comm_), "send stop");
+    }
+  }
+
+  void compute_one() {
+    const std::size_t tile = queue_.front();
+    queue_.pop_front();
+    evaluator_.evaluate(tiling_.box(tile), &data_);
+    sink_(tile, data_);
+    ++result_.tiles_done;
+  }
+
+  // Receives results (blocking for one message if `wait`), refilling each worker's batches.
+  void drain_results(bool wait) {
+    while (true) {
+      int flag = 0;
+      MPI_Status status;
+      if (wait) {
+        check(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm_, &status), "probe");
+        flag = 1;
+        wait = false;
+      } else {
+        check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm_, &flag, &status), "iprobe");
+      }
+      if (!flag) return;
+      const int worker = status.MPI_SOURCE;
+      int count = 0;
+      MPI_Get_count(&status, MPI_BYTE, &count);
+      buffer_.resize(static_cast<std::size_t>(count));
+      check(MPI_Recv(buffer_.data(), count, MPI_BYTE, worker, status.MPI_TAG, comm_, MPI_STATUS_IGNORE), "recv result");
+      if (status.MPI_TAG == kTagDone) {
+        ++done_;
+        continue;
+      }
+      const std::uint64_t tile = io::unpack_tile(buffer_.data(), buffer_.size(), &data_);
+      sink_(static_cast<std::size_t>(tile), data_);
+      ++result_.tiles_done;
+      // Keep about two batches of work queued at the worker, so it never waits for us.
+      auto& out = outstanding_[static_cast<std::size_t>(worker)];
+      --out;
+      while (!stopping_ && !queue_.empty() && out < kBatchesInFlight * guided_size()) send_batch(worker);
+    }
+  }
+
+  MPI_Comm comm_;
+  int ranks_;
+  const Tiling& tiling_;
+  const TileEvaluator& evaluator_;
+  const TileSink& sink_;
+  std::deque<std::size_t> queue_;
+  std::vector<std::size_t> outstanding_;
+  std::size_t to_do_;
+  bool stopping_ = false;
+  int done_ = 0;
+  io::TileData data_;
+  std::vector<std::byte> buffer_;
+  ScheduleResult result_;
+};
+
+}  // namespace
+
+ScheduleResult run_schedule(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator,
+                            const std::vector<std::size_t>& pending, const TileSink& sink,
+                            const volatile std::sig_atomic_t* stop) {
+  int rank = 0;
+  int ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  if (rank != 0) {
+    work(comm, tiling, evaluator);
+    return {};
+  }
+  return Manager(comm, ranks, tiling, evaluator, pending, sink).run(stop);
+}
+
+}  // namespace punchsweep::sweep

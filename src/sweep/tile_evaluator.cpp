@@ -1,0 +1,114 @@
+#include "sweep/tile_evaluator.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "model/point_evaluation.hpp"
+#include "model/single_level.hpp"
+#include "model/standard_linear_solid.hpp"
+
+namespace punchsweep::sweep {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The single-level ends of eq 9.5/9.10 at one (pbar, T).
+struct Ends {
+  double h_0 = 0.0;
+  double h_inf = 0.0;
+  double a1_inf_single = 0.0;
+};
+
+}  // namespace
+
+TileEvaluator::TileEvaluator(const Grid& grid, double C, std::vector<double> times,
+                             Quantities quantities)
+    : grid_(grid), C_(C), times_(std::move(times)), quantities_(quantities) {}
+
+void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
+  const bool full = quantities_ == Quantities::full;
+  const std::size_t nt = times_.size();
+  out->resize(box.points(), nt, full);
+  const auto& c = box.count;
+  const auto value = [&](std::size_t axis, std::size_t i) {
+    return grid_.axes[axis].values[box.start[axis] + i];
+  };
+
+  std::vector<model::StandardLinearSolid> creep;
+  creep.reserve(c[kAxisT]);
+  for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) creep.emplace_back(value(kAxisT, iT));
+  const model::EvaluationOptions options{times_, {}};
+
+  std::vector<model::Touchdown> touch(c[kAxisDh]);
+  std::vector<Ends> ends(c[kAxisT] * c[kAxisPbar]);
+  std::vector<std::optional<model::ElasticTwoLevel>> elastic(c[kAxisDh] * c[kAxisPbar]);
+
+  for (std::size_t il = 0; il < c[kAxisL]; ++il) {
+    for (std::size_t is = 0; is < c[kAxisS]; ++is) {
+      model::ContactProblem problem;
+      problem.l = value(kAxisL, il);
+      problem.shape = model::Shape{static_cast<int>(value(kAxisS, is)), C_};
+      const model::SingleLevel single(problem.l, problem.shape);
+      for (std::size_t idh = 0; idh < c[kAxisDh]; ++idh) {
+        touch[idh] = model::touchdown(single, value(kAxisDh, idh));
+      }
+      for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {
+        for (std::size_t ip = 0; ip < c[kAxisPbar]; ++ip) {
+          problem.pbar0 = value(kAxisPbar, ip);
+          Ends& e = ends[iT * c[kAxisPbar] + ip];
+          model::single_level_ends(problem, creep[iT], &e.h_0, &e.h_inf, &e.a1_inf_single);
+        }
+      }
+      for (auto& e : elastic) e.reset();
+
+      for (std::size_t idh = 0; idh < c[kAxisDh]; ++idh) {
+        problem.dh = value(kAxisDh, idh);
+        for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {
+          for (std::size_t ip = 0; ip < c[kAxisPbar]; ++ip) {
+            problem.pbar0 = value(kAxisPbar, ip);
+            const Ends& e = ends[iT * c[kAxisPbar] + ip];
+            model::SummaryParts parts;
+            parts.classification = model::classify(touch[idh], problem.pbar0, creep[iT]);
+            parts.h_0 = e.h_0;
+            parts.h_inf = e.h_inf;
+            parts.a1_inf_single = e.a1_inf_single;
+            if (parts.classification.regime == model::Regime::immediate) {
+              auto& cached = elastic[idh * c[kAxisPbar] + ip];
+              if (!cached) {
+                cached = model::solve_elastic_two_level(problem, 1.0 / creep[iT].creep_initial());
+              }
+              parts.elastic = &*cached;
+            }
+            const model::PointSummary summary = model::summarize_point(problem, creep[iT], parts);
+
+            const std::size_t i =
+                (((il * c[kAxisDh] + idh) * c[kAxisT] + iT) * c[kAxisPbar] + ip) * c[kAxisS] + is;
+            out->regime[i] = static_cast<std::int8_t>(summary.regime);
+            out->valid[i] = static_cast<std::int8_t>(summary.validity);
+            out->t_star[i] = summary.t_star.value_or(kNaN);
+            out->h_0[i] = summary.h_0;
+            out->h_inf[i] = summary.h_inf;
+            out->a1_inf[i] = summary.a1_inf;
+            out->a2_inf[i] = summary.a2_inf;
+            out->area_fraction_inf[i] = summary.area_fraction_inf;
+            if (full) {
+              const model::PointResult r = model::evaluate_point(problem, creep[iT], options, summary);
+              out->valid[i] = static_cast<std::int8_t>(r.validity);  // a series solve may fail
+              for (std::size_t it = 0; it < nt; ++it) {
+                const model::Snapshot& snap = r.series[it];
+                out->a1[i * nt + it] = snap.a1;
+                out->a2[i * nt + it] = snap.a2;
+                out->P1[i * nt + it] = snap.P1;
+                out->P2[i * nt + it] = snap.P2;
+                out->area_fraction[i * nt + it] = snap.area_fraction;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace punchsweep::sweep

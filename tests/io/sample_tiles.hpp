@@ -1,0 +1,63 @@
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "io/tile_data.hpp"
+
+namespace punchsweep::io::testing {
+
+/// A NaN with a chosen payload, so a round trip that canonicalises NaNs is caught.
+inline double nan_with_payload(std::uint64_t payload) {
+  std::uint64_t bits = 0x7FF8000000000000ULL | (payload & 0x0007FFFFFFFFFFFFULL);
+  double value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+/// Deterministic tile contents that differ from seed to seed and from array to array,
+/// with NaNs (several payloads), -0.0, infinities and every regime/valid code mixed in.
+inline TileData sample_tile(std::uint64_t seed, std::size_t points, std::size_t times, bool full) {
+  TileData data;
+  data.resize(points, times, full);
+  const std::vector<double> specials{nan_with_payload(seed + 1),
+                                     -0.0,
+                                     std::numeric_limits<double>::infinity(),
+                                     nan_with_payload(0x5A5A5),
+                                     -std::numeric_limits<double>::infinity(),
+                                     std::numeric_limits<double>::denorm_min()};
+  auto value = [&](std::size_t array, std::size_t i) {
+    const std::uint64_t k = seed * 1000003 + array * 7919 + i;
+    if (k % 11 == 3) return specials[k % specials.size()];
+    return static_cast<double>(k) * 1.000000119 + 1.0 / static_cast<double>(k + 3);
+  };
+  for (std::size_t i = 0; i < points; ++i) {
+    data.regime[i] = static_cast<std::int8_t>(static_cast<int>((seed + i) % 4) - 1);
+    data.valid[i] = static_cast<std::int8_t>(static_cast<int>((seed + 3 * i) % 5) - 1);
+  }
+  std::size_t array = 0;
+  for (auto* v : {&data.t_star, &data.h_0, &data.h_inf, &data.a1_inf, &data.a2_inf, &data.area_fraction_inf,
+                  &data.a1, &data.a2, &data.P1, &data.P2, &data.area_fraction}) {
+    for (std::size_t i = 0; i < v->size(); ++i) (*v)[i] = value(array, i);
+    ++array;
+  }
+  return data;
+}
+
+template <typename T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+/// Whether every array of the two tiles holds the same bits (NaN payloads included).
+inline bool same_bits(const TileData& a, const TileData& b) {
+  return same_bits(a.regime, b.regime) && same_bits(a.valid, b.valid) && same_bits(a.t_star, b.t_star) &&
+         same_bits(a.h_0, b.h_0) && same_bits(a.h_inf, b.h_inf) && same_bits(a.a1_inf, b.a1_inf) &&
+         same_bits(a.a2_inf, b.a2_inf) && same_bits(a.area_fraction_inf, b.area_fraction_inf) &&
+         same_bits(a.a1, b.a1) && same_bits(a.a2, b.a2) && same_bits(a.P1, b.P1) && same_bits(a.P2, b.P2) &&
+         same_bits(a.area_fraction, b.area_fraction);
+}
+
+}  // namespace punchsweep::io::testing

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Every class of bad input: exit code 2, a message naming the key, value and range, and
+# no output file created.
+source "$(dirname "$0")/common.sh"
+small=(--grid.l 0.75 --grid.dh 0.05 --grid.T 2.5 --grid.pbar 0.06 --grid.s 2 --quiet)
+refused() {  # refused PATTERN ARGS...: exit 2, PATTERN on stderr, no file created or changed
+  local pattern=$1; shift
+  local before; before=$(ls -l --time-style=+%s.%N ./*.h5* 2>/dev/null || true)
+  set +e; "$@" > out.txt 2> err.txt; local code=$?; set -e
+  if [ "$code" != 2 ]; then echo "FAIL ($*): exit $code, expected 2"; cat err.txt; exit 1; fi
+  grep -qF -- "$pattern" err.txt || { echo "FAIL ($*): stderr lacks '$pattern'"; cat err.txt; exit 1; }
+  local after; after=$(ls -l --time-style=+%s.%N ./*.h5* 2>/dev/null || true)
+  if [ "$before" != "$after" ]; then echo "FAIL ($*): files changed: $after"; exit 1; fi
+}
+refused "grid.l" "$PUNCHSWEEP" sweep "${small[@]}" --grid.l -0.5 --output x.h5
+refused "grid.T" "$PUNCHSWEEP" sweep "${small[@]}" --grid.T 0.5 --output x.h5
+refused "grid.s" "$PUNCHSWEEP" sweep "${small[@]}" --grid.s 2.5 --output x.h5
+refused "grid.dh" "$PUNCHSWEEP" sweep "${small[@]}" --grid.dh -0.1 --output x.h5
+refused "grid.pbar" "$PUNCHSWEEP" sweep "${small[@]}" --grid.pbar 0 --output x.h5
+refused "model.C" "$PUNCHSWEEP" sweep "${small[@]}" --model.C 0 --output x.h5
+refused "time.times" "$PUNCHSWEEP" sweep "${small[@]}" --time.times 0,-1 --output x.h5
+refused "output.quantities" "$PUNCHSWEEP" sweep "${small[@]}" --quantities lots --output x.h5
+refused "grid.bogus" "$PUNCHSWEEP" sweep "${small[@]}" --grid.bogus 3 --output x.h5
+printf '[grid]\nl = 0.75\nwidth = 3\n' > bad.ini
+refused "width" "$PUNCHSWEEP" sweep --config bad.ini --output x.h5
+refused "nothere.ini" "$PUNCHSWEEP" sweep --config nothere.ini --output x.h5
+refused "not writable" "$PUNCHSWEEP" sweep "${small[@]}" --output /proc/x.h5
+refused "does not exist" "$PUNCHSWEEP" sweep "${small[@]}" --output no/such/dir/x.h5
+# Under mpirun too: one message (from rank 0), exit 2.
+refused "grid.T" mpirun --oversubscribe -np 2 "$PUNCHSWEEP" sweep "${small[@]}" --grid.T 0.5 --output x.h5
+test "$(grep -c 'grid.T' err.txt)" = 1 || { echo "FAIL: message printed by more than one rank"; exit 1; }
+# Existing output without --resume/--overwrite, and --resume of another grid.
+"$PUNCHSWEEP" sweep "${small[@]}" --output done.h5
+mkdir keep && mv done.h5 keep/
+refused "exists" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5
+"$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --overwrite
+"$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume  # complete: nothing to do
+printf '[run]\nchunk = 1\n' > slow.ini
+"$PUNCHSWEEP" sweep --config slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,5 --quiet --output keep/part.h5 & pid=$!
+while [ ! -s keep/part.h5.partial.journal ]; do sleep 0.02; done
+kill -9 "$pid"; wait "$pid" 2>/dev/null || true
+cd keep
+refused "grid.T" "$PUNCHSWEEP" sweep --config ../slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,6 --output part.h5 --resume
+refused "pass --resume" "$PUNCHSWEEP" sweep --config ../slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,5 --output part.h5
+echo "PASS: bad input refused with exit 2 and nothing written"
