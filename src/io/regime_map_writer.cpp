@@ -2,8 +2,10 @@
 
 #include <H5DSpublic.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -97,6 +99,30 @@ void write_double_attribute(hid_t object, const char* name, double value, const 
   write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value, 0, where);
 }
 
+/// Copies a tile at the grid's edge into a whole chunk (row-major over `chunk`, `inner`
+/// values per point), with `fill` in the part that lies outside the grid.
+void pad_to_chunk(const std::byte* tile, std::size_t element, const void* fill, std::size_t inner,
+                  const std::array<std::size_t, sweep::kAxes>& count,
+                  const std::array<std::size_t, sweep::kAxes>& chunk, std::vector<std::byte>* out) {
+  std::size_t values = inner;
+  for (const std::size_t c : chunk) values *= c;
+  out->resize(values * element);
+  for (std::size_t i = 0; i < values; ++i) std::memcpy(out->data() + i * element, fill, element);
+  const std::size_t run = count[4] * inner * element;  // the fastest axis is contiguous in both
+  const std::byte* from = tile;
+  for (std::size_t i0 = 0; i0 < count[0]; ++i0) {
+    for (std::size_t i1 = 0; i1 < count[1]; ++i1) {
+      for (std::size_t i2 = 0; i2 < count[2]; ++i2) {
+        for (std::size_t i3 = 0; i3 < count[3]; ++i3) {
+          const std::size_t to = (((i0 * chunk[1] + i1) * chunk[2] + i2) * chunk[3] + i3) * chunk[4];
+          std::memcpy(out->data() + to * inner * element, from, run);
+          from += run;
+        }
+      }
+    }
+  }
+}
+
 /// How an axis is spaced, for plots: see the class comment in the header.
 const char* axis_spacing(const sweep::Axis& axis) {
   if (axis.log_spaced) return "log";
@@ -118,7 +144,8 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
       shape_(layout.grid.shape()),
       chunk_(layout.chunk),
       times_(layout.times.size()),
-      full_(layout.quantities == sweep::Quantities::full) {
+      full_(layout.quantities == sweep::Quantities::full),
+      compressor_(static_cast<int>(kDeflateLevel)) {
   for (std::size_t a = 0; a < sweep::kAxes; ++a) {
     if (shape_[a] == 0)
       throw std::invalid_argument(std::string("regime map: axis ") + sweep::kAxisNames[a] + " is empty");
@@ -240,8 +267,7 @@ Handle RegimeMapWriter::create_variable(const std::string& name, bool codes, boo
   check(codes ? H5Pset_fill_value(dcpl, H5T_NATIVE_INT8, &kNotComputed)
               : H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &nan),
         "set fill value of " + where);
-  // The default chunk cache (1 MiB per dataset) is kept on purpose: measured, it writes
-  // chunk-sized tiles 5-30 % faster than bypassing the cache.
+  // Tiles that are not one chunk go through the default chunk cache (1 MiB per dataset).
   const hid_t type = codes ? H5T_STD_I8LE : H5T_IEEE_F64LE;
   return Handle(
       H5Dcreate2(file_, name.c_str(), type, series ? space6_ : space5_, H5P_DEFAULT, dcpl, H5P_DEFAULT),
@@ -255,8 +281,6 @@ void RegimeMapWriter::require_open(const char* operation) const {
 
 void RegimeMapWriter::write_tile(const sweep::TileBox& box, const TileData& data) {
   require_open("write_tile");
-  std::array<hsize_t, sweep::kAxes + 1> start{};
-  std::array<hsize_t, sweep::kAxes + 1> count{};
   for (std::size_t a = 0; a < sweep::kAxes; ++a) {
     if (box.count[a] == 0 || box.start[a] + box.count[a] > shape_[a]) {
       throw std::invalid_argument(std::string("regime map: tile range [") + std::to_string(box.start[a]) +
@@ -264,10 +288,7 @@ void RegimeMapWriter::write_tile(const sweep::TileBox& box, const TileData& data
                                   sweep::kAxisNames[a] + " is empty or outside [0, " +
                                   std::to_string(shape_[a]) + ")");
     }
-    start[a] = box.start[a];
-    count[a] = box.count[a];
   }
-  count[sweep::kAxes] = times_;
   const std::size_t points = box.points();
   const std::size_t series = full_ ? points * times_ : 0;
   for (const VariableSpec& spec : kVariables) {
@@ -280,6 +301,60 @@ void RegimeMapWriter::write_tile(const sweep::TileBox& box, const TileData& data
     }
   }
 
+  if (is_one_chunk(box)) {
+    write_chunk(box, data);
+  } else {
+    write_hyperslab(box, data);
+  }
+}
+
+bool RegimeMapWriter::is_one_chunk(const sweep::TileBox& box) const {
+  // Encoded chunks hold the file's little-endian bytes, which only a little-endian host has.
+  if constexpr (std::endian::native != std::endian::little) return false;
+  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+    if (box.start[a] % chunk_[a] != 0) return false;
+    const bool whole = box.count[a] == chunk_[a];
+    const bool rest_of_grid = box.count[a] < chunk_[a] && box.start[a] + box.count[a] == shape_[a];
+    if (!whole && !rest_of_grid) return false;
+  }
+  return true;
+}
+
+void RegimeMapWriter::write_chunk(const sweep::TileBox& box, const TileData& data) {
+  std::array<hsize_t, sweep::kAxes + 1> offset{};
+  for (std::size_t a = 0; a < sweep::kAxes; ++a) offset[a] = box.start[a];
+  const bool edge = box.count != chunk_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::size_t v = 0;
+  for (const VariableSpec& spec : kVariables) {
+    if (spec.series && !full_) continue;
+    const bool codes = spec.codes != nullptr;
+    const std::size_t element = codes ? sizeof(std::int8_t) : sizeof(double);
+    const std::size_t inner = spec.series ? times_ : 1;
+    const auto* tile = codes ? reinterpret_cast<const std::byte*>((data.*spec.codes).data())
+                             : reinterpret_cast<const std::byte*>((data.*spec.values).data());
+    std::span<const std::byte> encoded;
+    if (edge) {
+      const void* fill = codes ? static_cast<const void*>(&kNotComputed) : static_cast<const void*>(&nan);
+      pad_to_chunk(tile, element, fill, inner, box.count, chunk_, &padded_);
+      encoded = compressor_.compress(padded_.data(), padded_.size(), element);
+    } else {
+      encoded = compressor_.compress(tile, box.points() * inner * element, element);
+    }
+    check(H5Dwrite_chunk(variables_[v], H5P_DEFAULT, 0, offset.data(), encoded.size(), encoded.data()),
+          std::string("write a chunk of variable '") + spec.name + "' to " + path_);
+    ++v;
+  }
+}
+
+void RegimeMapWriter::write_hyperslab(const sweep::TileBox& box, const TileData& data) {
+  std::array<hsize_t, sweep::kAxes + 1> start{};
+  std::array<hsize_t, sweep::kAxes + 1> count{};
+  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+    start[a] = box.start[a];
+    count[a] = box.count[a];
+  }
+  count[sweep::kAxes] = times_;
   const std::string in = " to " + path_;
   check(H5Sselect_hyperslab(space5_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
         "select tile" + in);

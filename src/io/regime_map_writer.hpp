@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/chunk_compressor.hpp"
 #include "io/hdf5_handle.hpp"
 #include "io/tile_data.hpp"
 #include "sweep/grid.hpp"
@@ -36,13 +37,14 @@ struct MapAttributes {
 /// netCDF4, xarray (engine="h5netcdf") and the postprocess scripts read. The layout is a
 /// contract:
 ///
-/// - Link and attribute creation order are tracked and indexed (netCDF-4 needs both).
+/// - Link and attribute creation order are tracked and indexed, as in netCDF-4 files.
 /// - Coordinates `l`, `dh`, `T`, `pbar`, `s`, `time`: 1-D float64 dimension scales with
 ///   `units` and `long_name`. `s` is float64 too (its values are whole numbers), so every
 ///   coordinate has one type and a non-integer s could never be truncated silently. The
 ///   five grid axes also carry `axis_spec` (the text the axis was given as) and `spacing`:
 ///   "log" for logspace() axes, "linear" for evenly spaced values (one or two values
-///   included), "list" for anything else.
+///   included), "list" for anything else. `time` is written for regime-only maps too, as a
+///   record of the configured times (no variable uses it there).
 /// - Over (l, dh, T, pbar, s): `regime` and `valid` (int8 flag variables with
 ///   flag_values/flag_meanings; HDF5 fill value -1 = not_computed; no _FillValue attribute,
 ///   so readers do not turn the codes into floats), `t_star`, `h_0`, `h_inf`, `a1_inf`,
@@ -50,7 +52,9 @@ struct MapAttributes {
 /// - With Quantities::full, over (l, dh, T, pbar, s, time): `a1`, `a2`, `P1`, `P2`,
 ///   `area_fraction` (float64, fill NaN).
 /// - Every variable is chunked by MapLayout::chunk (times whole for the 6-D ones) and
-///   compressed with shuffle + deflate level 1.
+///   compressed with shuffle + deflate level 1. A tile that is exactly one chunk (or the
+///   part of one inside the grid) is encoded here and stored with H5Dwrite_chunk; any other
+///   box goes through HDF5's filter pipeline. Readers see no difference.
 /// - Global attributes: Conventions "CF-1.8", title, source, history, config, creep_law,
 ///   C, completed (int8, 0 until finish() sets 1), and from finish(): ranks,
 ///   wall_seconds, points_per_second.
@@ -89,6 +93,10 @@ class RegimeMapWriter {
                          const char* long_name);
   /// An int8 flag variable when `codes`, else float64; over the time axis too when `series`.
   Handle create_variable(const std::string& name, bool codes, bool series);
+  /// Whether `box` is one whole chunk, or the part of one that lies inside the grid.
+  bool is_one_chunk(const sweep::TileBox& box) const;
+  void write_chunk(const sweep::TileBox& box, const TileData& data);
+  void write_hyperslab(const sweep::TileBox& box, const TileData& data);
   void require_open(const char* operation) const;
 
   std::string path_;
@@ -101,6 +109,8 @@ class RegimeMapWriter {
   std::vector<Handle> variables_;    ///< in the order of the variable table in the .cpp
   Handle space5_;                    ///< file dataspace of the 5-D variables (selection reused)
   Handle space6_;                    ///< file dataspace of the 6-D variables
+  ChunkCompressor compressor_;
+  std::vector<std::byte> padded_;  ///< an edge tile grown to a whole chunk
 };
 
 }  // namespace punchsweep::io

@@ -38,7 +38,8 @@ class TileJournal {
   static std::string read_header(const std::string& path);
 
   /// Calls `on_tile` for every complete, CRC-valid record in file order, holding one record
-  /// in memory at a time, and returns the byte offset just past the last good record.
+  /// in memory at a time, and returns the byte offset just past the last good record. The
+  /// TileData passed to `on_tile` is reused for the next record: copy what must outlive the call.
   /// Throws like read_header for a bad header, and std::runtime_error for a record whose
   /// CRC is right but whose payload does not decode (a journal of another program version).
   static std::size_t replay(const std::string& path,

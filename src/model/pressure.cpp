@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/integer_power.hpp"
+
 #include "model/gauss_legendre.hpp"
 #include "model/lattice.hpp"
 #include "model/relaxation_integral.hpp"
@@ -28,9 +30,9 @@ double punch_pressure_shape(int s, double r, double a) {
     double c = 1.0;
     for (int i = 1; i <= k; ++i) {
       if (i > 1) c *= (2.0 * i - 2.0) / (2.0 * i - 1.0);
-      sum += c * std::pow(a, 2 * i) * std::pow(r, 2 * (k - i));
+      sum += c * ipow(a, 2 * i) * ipow(r, 2 * (k - i));
     }
-    const double log_part = k == 0 ? std::acosh(a / r) : std::pow(r, 2 * k) * std::acosh(a / r);
+    const double log_part = k == 0 ? std::acosh(a / r) : ipow(r, 2 * k) * std::acosh(a / r);
     // Misprint in eq (9.1): for odd s the printed p_(k) integrates to 2/pi of the load
     // K_P a^(s+1) for every k; the factor pi/2 restores it (s = 1: Sneddon's cone,
     // p = (C/2) arccosh(a/r)). Even s needs no correction.
@@ -43,9 +45,9 @@ double punch_pressure_shape(int s, double r, double a) {
   double d = 1.0;  // (2i-3)!!/(2i-2)!!
   for (int i = 1; i <= m; ++i) {
     if (i > 1) d *= (2.0 * i - 3.0) / (2.0 * i - 2.0);
-    sum += d * std::pow(r / a, 2 * (m - i));
+    sum += d * ipow(r / a, 2 * (m - i));
   }
-  return ratio * ratio * std::pow(a, 2 * m - 1) * root * sum;
+  return ratio * ratio * ipow(a, 2 * m - 1) * root * sum;
 }
 
 Level1Pressure::Level1Pressure(const ContactProblem& problem, const CreepLaw& creep)

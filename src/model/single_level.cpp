@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/integer_power.hpp"
+
 #include "model/root_finding.hpp"
 
 namespace punchsweep::model {
@@ -21,7 +23,7 @@ SingleLevel::SingleLevel(double l, Shape shape)
       shape_(shape),
       K_P_(load_coefficient(shape)),
       K_d_(depth_coefficient(shape)),
-      kappa_per_X_(std::pow(l, 1 - shape.s) / (kPi * K_P_)) {}
+      kappa_per_X_(ipow(l, 1 - shape.s) / (kPi * K_P_)) {}
 
 double SingleLevel::D(double x) {
   return 10.0 * (std::acos(x / kAlpha) + x / kAlpha2 * std::sqrt(kAlpha2 - x * x)) -
@@ -63,12 +65,12 @@ double SingleLevel::contact_radius(double X) const {
 
 double SingleLevel::creep_scaled_pressure(double a1) const {
   const double x = a1 / l_;
-  return std::pow(x, shape_.s + 1) / D(x) / kappa_per_X_;
+  return ipow(x, shape_.s + 1) / D(x) / kappa_per_X_;
 }
 
 double SingleLevel::displacement_difference(double a1, double X) const {
   const double x = a1 / l_;
-  return K_d_ * std::pow(a1, shape_.s) - 2.0 * l_ * X * G(x);
+  return K_d_ * ipow(a1, shape_.s) - 2.0 * l_ * X * G(x);
 }
 
 double SingleLevel::displacement_difference(double a1) const {
@@ -79,7 +81,7 @@ double SingleLevel::eta(double x, double* rate) const {
   const int s = shape_.s;
   const double kd = K_d_ / shape_.C;
   const double kp = K_P_ / shape_.C;
-  const double xs = std::pow(x, s);
+  const double xs = ipow(x, s);
   const double d = D(x);
   const double g = G(x);
   const double ratio = x * g / d;  // x G / D
@@ -90,7 +92,7 @@ double SingleLevel::eta(double x, double* rate) const {
 
 double SingleLevel::contact_radius_at_gap(double dh) const {
   if (!(dh > 0.0)) return 0.0;
-  const double target = dh / (shape_.C * std::pow(l_, shape_.s));
+  const double target = dh / (shape_.C * ipow(l_, shape_.s));
   auto f = [&](double x, double* rate) { return eta(x, rate) - target; };
   // Small-contact guess: eta ~ K_d' x^s.
   const double guess = std::pow(target * shape_.C / K_d_, 1.0 / shape_.s);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/integer_power.hpp"
+
 #include "model/lattice.hpp"
 #include "model/regime.hpp"
 #include "model/ring_loads.hpp"
@@ -18,7 +20,7 @@ constexpr double kDomainMargin = 1.0 - 1e-12;
 
 // d(a^p)/dz for a = z^(1/zp): 0.5 p a^(p-2) when z = a^2, p a^(p-1) when z = a.
 double power_rate(double a, int p, int zp) {
-  return zp == 2 ? 0.5 * p * std::pow(a, p - 2) : p * std::pow(a, p - 1);
+  return zp == 2 ? 0.5 * p * ipow(a, p - 2) : p * ipow(a, p - 1);
 }
 
 }  // namespace
@@ -43,8 +45,8 @@ void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], doub
   const double M01 = -4.0 * ring_load_share(a1, l2);
   const double M10 = -4.0 * ring_load_share(a2, l2);
   const double M11 = 1.0 - 4.0 * ring_load_share(a2, l);
-  const double a1s = std::pow(a1, s);
-  const double a2s = std::pow(a2, s);
+  const double a1s = ipow(a1, s);
+  const double a2s = ipow(a2, s);
   const double b0 = K_P_ * a1s * a1 + 2.0 * X * nominal_load_term(a1, A1);
   const double b1 = K_P_ * a2s * a2 + 2.0 * X * nominal_load_term(a2, A2);
   const double det = M00 * M11 - M01 * M10;
@@ -199,10 +201,10 @@ TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {
   const double load = problem_.l * problem_.l * X_start;
   const int s = problem_.shape.s;
   // Isolated punches: Q_i = K_P a_i^(s+1), K_d (a1^s - a2^s) = dh; bisect on a2.
-  auto a1_of = [&](double a2) { return std::pow(std::pow(a2, s) + problem_.dh / K_d_, 1.0 / s); };
+  auto a1_of = [&](double a2) { return std::pow(ipow(a2, s) + problem_.dh / K_d_, 1.0 / s); };
   auto excess = [&](double a2) {
     const double a1 = a1_of(a2);
-    return K_P_ * (std::pow(a1, s + 1) + std::pow(a2, s + 1)) - load;
+    return K_P_ * (ipow(a1, s + 1) + ipow(a2, s + 1)) - load;
   };
   double lo = 0.0;
   double hi = std::pow(load / K_P_, 1.0 / (s + 1));

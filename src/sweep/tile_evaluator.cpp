@@ -13,18 +13,23 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The single-level ends of eq 9.5/9.10 at one (pbar, T).
-struct Ends {
-  double h_0 = 0.0;
-  double h_inf = 0.0;
-  double a1_inf_single = 0.0;
-};
+// Above this many entries the run-wide caches would cost more memory than they save.
+constexpr std::size_t kMaxCacheEntries = std::size_t{1} << 24;
 
 }  // namespace
 
 TileEvaluator::TileEvaluator(const Grid& grid, double C, std::vector<double> times,
                              Quantities quantities)
-    : grid_(grid), C_(C), times_(std::move(times)), quantities_(quantities) {}
+    : grid_(grid), C_(C), times_(std::move(times)), quantities_(quantities) {
+  const auto n = grid.shape();
+  const std::size_t ends = n[kAxisL] * n[kAxisS] * n[kAxisT] * n[kAxisPbar];
+  const std::size_t touch = n[kAxisL] * n[kAxisS] * n[kAxisDh];
+  cache_ = ends <= kMaxCacheEntries && touch <= kMaxCacheEntries;
+  if (cache_) {
+    ends_.resize(ends);
+    touch_.resize(touch);
+  }
+}
 
 void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
   const bool full = quantities_ == Quantities::full;
@@ -40,6 +45,7 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
   for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) creep.emplace_back(value(kAxisT, iT));
   const model::EvaluationOptions options{times_, {}};
 
+  const auto n = grid_.shape();
   std::vector<model::Touchdown> touch(c[kAxisDh]);
   std::vector<Ends> ends(c[kAxisT] * c[kAxisPbar]);
   std::vector<std::optional<model::ElasticTwoLevel>> elastic(c[kAxisDh] * c[kAxisPbar]);
@@ -50,14 +56,30 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
       problem.l = value(kAxisL, il);
       problem.shape = model::Shape{static_cast<int>(value(kAxisS, is)), C_};
       const model::SingleLevel single(problem.l, problem.shape);
+      const std::size_t gl = box.start[kAxisL] + il;
+      const std::size_t gs = box.start[kAxisS] + is;
       for (std::size_t idh = 0; idh < c[kAxisDh]; ++idh) {
-        touch[idh] = model::touchdown(single, value(kAxisDh, idh));
+        Touch scratch;
+        Touch& t = cache_ ? touch_[(gl * n[kAxisS] + gs) * n[kAxisDh] + box.start[kAxisDh] + idh] : scratch;
+        if (!t.ready) {
+          const model::Touchdown computed = model::touchdown(single, value(kAxisDh, idh));
+          t = Touch{computed.a1_star, computed.X_star, true};
+        }
+        touch[idh] = model::Touchdown{t.a1_star, t.X_star};
       }
       for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {
         for (std::size_t ip = 0; ip < c[kAxisPbar]; ++ip) {
-          problem.pbar0 = value(kAxisPbar, ip);
           Ends& e = ends[iT * c[kAxisPbar] + ip];
+          const std::size_t g =
+              ((gl * n[kAxisS] + gs) * n[kAxisT] + box.start[kAxisT] + iT) * n[kAxisPbar] + box.start[kAxisPbar] + ip;
+          if (cache_ && ends_[g].ready) {
+            e = ends_[g];
+            continue;
+          }
+          problem.pbar0 = value(kAxisPbar, ip);
           model::single_level_ends(problem, creep[iT], &e.h_0, &e.h_inf, &e.a1_inf_single);
+          e.ready = true;
+          if (cache_) ends_[g] = e;
         }
       }
       for (auto& e : elastic) e.reset();

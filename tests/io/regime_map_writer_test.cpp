@@ -3,6 +3,7 @@
 #include <H5DSpublic.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -75,41 +76,59 @@ std::int8_t valid_code(std::size_t g) { return static_cast<std::int8_t>(g % 4); 
 /// Tiles left unwritten, so fill values can be checked.
 bool skipped(std::size_t tile) { return tile % 5 == 1; }
 
-/// Writes the sample map; returns which grid points were written.
-std::vector<bool> write_sample_map(RegimeMapWriter* writer, const MapLayout& layout) {
+/// The sample map's values for every point of `box`.
+TileData tile_for(const sweep::TileBox& box, const MapLayout& layout) {
   const auto shape = layout.grid.shape();
   const std::size_t times = layout.times.size();
   const bool full = layout.quantities == sweep::Quantities::full;
-  const sweep::Tiling tiling(shape, 7);
+  TileData data;
+  data.resize(box.points(), times, full);
+  std::size_t i = 0;
+  std::array<std::size_t, sweep::kAxes> at{};
+  for (at[0] = box.start[0]; at[0] < box.start[0] + box.count[0]; ++at[0])
+    for (at[1] = box.start[1]; at[1] < box.start[1] + box.count[1]; ++at[1])
+      for (at[2] = box.start[2]; at[2] < box.start[2] + box.count[2]; ++at[2])
+        for (at[3] = box.start[3]; at[3] < box.start[3] + box.count[3]; ++at[3])
+          for (at[4] = box.start[4]; at[4] < box.start[4] + box.count[4]; ++at[4], ++i) {
+            const std::size_t g = flat_index(shape, at);
+            data.regime[i] = regime_code(g);
+            data.valid[i] = valid_code(g);
+            std::size_t var = 0;
+            for (auto* v : {&data.t_star, &data.h_0, &data.h_inf, &data.a1_inf, &data.a2_inf,
+                            &data.area_fraction_inf}) {
+              (*v)[i] = cell_value(var++, g, 0);
+            }
+            if (!full) continue;
+            for (auto* v : {&data.a1, &data.a2, &data.P1, &data.P2, &data.area_fraction}) {
+              for (std::size_t t = 0; t < times; ++t) (*v)[i * times + t] = cell_value(var, g, t);
+              ++var;
+            }
+          }
+  return data;
+}
+
+/// Marks the points of `box` in `written` (row-major over the grid).
+void mark(const sweep::TileBox& box, const std::array<std::size_t, sweep::kAxes>& shape,
+          std::vector<bool>* written) {
+  std::array<std::size_t, sweep::kAxes> at{};
+  for (at[0] = box.start[0]; at[0] < box.start[0] + box.count[0]; ++at[0])
+    for (at[1] = box.start[1]; at[1] < box.start[1] + box.count[1]; ++at[1])
+      for (at[2] = box.start[2]; at[2] < box.start[2] + box.count[2]; ++at[2])
+        for (at[3] = box.start[3]; at[3] < box.start[3] + box.count[3]; ++at[3])
+          for (at[4] = box.start[4]; at[4] < box.start[4] + box.count[4]; ++at[4])
+            (*written)[flat_index(shape, at)] = true;
+}
+
+/// Writes the sample map tile by tile (one chunk each), skipping some tiles; returns which
+/// grid points were written.
+std::vector<bool> write_sample_map(RegimeMapWriter* writer, const MapLayout& layout) {
+  const sweep::Tiling tiling(layout.grid.shape(), 7);
   std::vector<bool> written(layout.grid.points(), false);
   for (std::size_t tile = 0; tile < tiling.tiles(); ++tile) {
     if (skipped(tile)) continue;
     const sweep::TileBox box = tiling.box(tile);
-    TileData data;
-    data.resize(box.points(), times, full);
-    std::size_t i = 0;
-    std::array<std::size_t, sweep::kAxes> at{};
-    for (at[0] = box.start[0]; at[0] < box.start[0] + box.count[0]; ++at[0])
-      for (at[1] = box.start[1]; at[1] < box.start[1] + box.count[1]; ++at[1])
-        for (at[2] = box.start[2]; at[2] < box.start[2] + box.count[2]; ++at[2])
-          for (at[3] = box.start[3]; at[3] < box.start[3] + box.count[3]; ++at[3])
-            for (at[4] = box.start[4]; at[4] < box.start[4] + box.count[4]; ++at[4], ++i) {
-              const std::size_t g = flat_index(shape, at);
-              written[g] = true;
-              data.regime[i] = regime_code(g);
-              data.valid[i] = valid_code(g);
-              std::size_t var = 0;
-              for (auto* v : {&data.t_star, &data.h_0, &data.h_inf, &data.a1_inf, &data.a2_inf,
-                              &data.area_fraction_inf}) {
-                (*v)[i] = cell_value(var++, g, 0);
-              }
-              if (!full) continue;
-              for (auto* v : {&data.a1, &data.a2, &data.P1, &data.P2, &data.area_fraction}) {
-                for (std::size_t t = 0; t < times; ++t) (*v)[i * times + t] = cell_value(var, g, t);
-                ++var;
-              }
-            }
-    writer->write_tile(box, data);
+    writer->write_tile(box, tile_for(box, layout));
+    mark(box, layout.grid.shape(), &written);
   }
   return written;
 }
@@ -311,33 +330,108 @@ TEST_F(RegimeMapWriterTest, unwritten_cells_read_as_not_computed) {
   }
 }
 
-TEST_F(RegimeMapWriterTest, written_tiles_read_back_bit_exactly) {
-  make_map(sweep::Quantities::full);
-  const Handle file = open_file(path_);
+/// Checks that every point marked in `written` holds the sample map's values, bit for bit.
+void expect_sample_values(const std::string& path, const MapLayout& layout,
+                          const std::vector<bool>& written) {
+  const Handle file = open_file(path);
   const std::vector<std::int8_t> regime =
       read_dataset<std::int8_t>(open_dataset(file, "regime"), H5T_NATIVE_INT8);
   const std::vector<std::int8_t> valid =
       read_dataset<std::int8_t>(open_dataset(file, "valid"), H5T_NATIVE_INT8);
   std::size_t checked = 0;
-  for (std::size_t g = 0; g < written_.size(); ++g) {
-    if (!written_[g]) continue;
+  for (std::size_t g = 0; g < written.size(); ++g) {
+    if (!written[g]) continue;
     ASSERT_EQ(regime[g], regime_code(g)) << g;
     ASSERT_EQ(valid[g], valid_code(g)) << g;
     ++checked;
   }
   EXPECT_GT(checked, 0U);
-  const std::size_t times = layout_.times.size();
-  for (std::size_t var = 0; var < kFloatVariables.size(); ++var) {
+  const std::size_t times = layout.times.size();
+  const std::size_t variables = layout.quantities == sweep::Quantities::full ? kFloatVariables.size() : 6;
+  for (std::size_t var = 0; var < variables; ++var) {
     const std::vector<double> values =
         read_dataset<double>(open_dataset(file, kFloatVariables[var]), H5T_NATIVE_DOUBLE);
     const bool series = var >= 6;
-    for (std::size_t g = 0; g < written_.size(); ++g) {
-      if (!written_[g]) continue;
+    for (std::size_t g = 0; g < written.size(); ++g) {
+      if (!written[g]) continue;
       for (std::size_t t = 0; t < (series ? times : 1); ++t) {
         const double got = values[series ? g * times + t : g];
         ASSERT_TRUE(same_bits(got, cell_value(var, g, t)))
             << kFloatVariables[var] << " at " << g << ", " << t;
       }
+    }
+  }
+}
+
+TEST_F(RegimeMapWriterTest, written_tiles_read_back_bit_exactly) {
+  make_map(sweep::Quantities::full);
+  expect_sample_values(path_, layout_, written_);
+}
+
+TEST_F(RegimeMapWriterTest, tiles_that_are_not_one_chunk_read_back_bit_exactly) {
+  layout_ = small_layout(sweep::Quantities::full);  // chunk (1, 1, 1, 3, 2)
+  const auto shape = layout_.grid.shape();
+  std::vector<bool> written(layout_.grid.points(), false);
+  {
+    RegimeMapWriter writer(path_, layout_, small_attributes());
+    // One whole chunk first, then boxes that straddle chunks (one of them overlapping it),
+    // then a whole chunk over one that the pipeline left half written in its cache: encoded
+    // chunks and the filter pipeline meet in the same chunks in both orders.
+    std::vector<sweep::TileBox> boxes(5);
+    boxes[0].start = {0, 0, 0, 0, 0};
+    boxes[0].count = {1, 1, 1, 3, 2};
+    boxes[1].start = {0, 0, 0, 2, 0};
+    boxes[1].count = {2, 2, 2, 3, 1};
+    boxes[2].start = {1, 2, 0, 1, 0};
+    boxes[2].count = {2, 2, 2, 4, 2};
+    boxes[3].start = {0, 3, 1, 0, 1};
+    boxes[3].count = {3, 1, 1, 5, 1};
+    boxes[4].start = {1, 2, 0, 0, 0};  // boxes[2] wrote only pbar 1, 2 of this chunk
+    boxes[4].count = {1, 1, 1, 3, 2};
+    for (const sweep::TileBox& box : boxes) {
+      writer.write_tile(box, tile_for(box, layout_));
+      mark(box, shape, &written);
+    }
+    writer.finish(1, 1.0, 1.0);
+  }
+  expect_sample_values(path_, layout_, written);
+  const Handle file = open_file(path_);
+  const std::vector<std::int8_t> regime =
+      read_dataset<std::int8_t>(open_dataset(file, "regime"), H5T_NATIVE_INT8);
+  for (std::size_t g = 0; g < written.size(); ++g) {
+    if (!written[g]) {
+      ASSERT_EQ(regime[g], -1) << g;
+    }
+  }
+}
+
+TEST_F(RegimeMapWriterTest, edge_tiles_spanning_several_rows_read_back_bit_exactly) {
+  layout_ = small_layout(sweep::Quantities::full);
+  layout_.chunk = {2, 3, 2, 3, 2};  // edges on l, dh and pbar, with whole rows around them
+  const auto shape = layout_.grid.shape();
+  std::vector<bool> written(layout_.grid.points(), false);
+  {
+    RegimeMapWriter writer(path_, layout_, small_attributes());
+    sweep::TileBox box;
+    for (box.start[0] = 0; box.start[0] < shape[0]; box.start[0] += layout_.chunk[0])
+      for (box.start[1] = 0; box.start[1] < shape[1]; box.start[1] += layout_.chunk[1])
+        for (box.start[2] = 0; box.start[2] < shape[2]; box.start[2] += layout_.chunk[2])
+          for (box.start[3] = 0; box.start[3] < shape[3]; box.start[3] += layout_.chunk[3]) {
+            for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+              box.count[a] = std::min(layout_.chunk[a], shape[a] - box.start[a]);
+            }
+            if (box.start[0] == 0 && box.start[1] == 0 && box.start[3] == 0) continue;  // stays unwritten
+            writer.write_tile(box, tile_for(box, layout_));
+            mark(box, shape, &written);
+          }
+    writer.finish(1, 1.0, 1.0);
+  }
+  expect_sample_values(path_, layout_, written);
+  const Handle file = open_file(path_);
+  const std::vector<double> a2 = read_dataset<double>(open_dataset(file, "a2"), H5T_NATIVE_DOUBLE);
+  for (std::size_t i = 0; i < a2.size(); ++i) {
+    if (!written[i / layout_.times.size()]) {
+      ASSERT_TRUE(std::isnan(a2[i])) << i;
     }
   }
 }
