@@ -110,3 +110,12 @@ def test_regime_quantities_map_has_no_time_series(tmp_path):
                    check=True)
     with xr.open_dataset(path, engine="h5netcdf") as ds:
         assert "a1" not in ds and "regime" in ds and "a1_inf" in ds
+
+
+def test_sweeps_default_ini_is_the_embedded_default():
+    def dry(*extra):
+        done = subprocess.run([BINARY, "sweep", "--dry-run", *extra], capture_output=True, text=True,
+                              check=True)
+        return [line for line in done.stdout.splitlines() if "calibration" not in line and "estimated" not in line]
+    assert dry("--config", str(REPO / "sweeps" / "default.ini")) == dry()
+    assert any("104328 in" in line for line in dry())
