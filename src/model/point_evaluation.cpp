@@ -117,11 +117,14 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
       out.X_start = c.X_star;
       out.start = TwoLevelState{c.a1_star, 0.0, l * l * c.X_star, 0.0};
     }
-    // Straight from the start to J(inf), whatever times a caller samples: the long-term
-    // state is the same function of the point in a regime map and in `punchsweep point`.
+    // Newton from the guide's guess (else by continuation from the start), whatever times a
+    // caller samples: the long-term state is the same function of the point in a regime map
+    // and in `punchsweep point`.
     TwoLevelSolve r{out.start, false};
     if (out.start_ok && std::isfinite(X_inf)) {
-      r = TwoLevelSystem(problem, out.radii).continue_to(out.start, out.X_start, X_inf);
+      const TwoLevelSystem system(problem, out.radii);
+      if (const std::optional<TwoLevelState> guess = parts.guide->guess(X_inf)) r = system.solve(X_inf, *guess);
+      if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
     }
     out.a1_inf = r.converged ? r.state.a1 : kNaN;
     out.a2_inf = r.converged ? r.state.a2 : kNaN;
@@ -142,12 +145,14 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 }
 
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
+  const LongTermGuide guide(problem);
   SummaryParts parts;
+  parts.guide = &guide;
   parts.classification = classify(problem, creep);
   single_level_ends(problem, creep, &parts.h_0, &parts.h_inf, &parts.a1_inf_single);
   std::optional<ElasticTwoLevel> elastic;
   if (parts.classification.regime == Regime::immediate) {
-    elastic = solve_elastic_two_level(problem, 1.0 / creep.creep_initial());
+    elastic = solve_elastic_two_level(problem, 1.0 / creep.creep_initial(), &guide);
     parts.elastic = &*elastic;
   }
   return summarize_point(problem, creep, parts);

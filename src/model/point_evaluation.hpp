@@ -7,6 +7,7 @@
 #include "model/contact_problem.hpp"
 #include "model/creep_law.hpp"
 #include "model/load_history.hpp"
+#include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
 #include "model/two_level.hpp"
 #include "model/validity.hpp"
@@ -74,6 +75,7 @@ struct SummaryParts {
   double h_inf = 0.0;              ///< per (l, s, C, pbar, creep)
   double a1_inf_single = 0.0;      ///< single-level radius at J(inf): the same subset
   const ElasticTwoLevel* elastic = nullptr;  ///< at E0, per (l, s, C, dh, pbar); immediate only
+  const LongTermGuide* guide = nullptr;      ///< per (l, s, C, dh); required
 };
 
 /// h(0), h(inf) and the single-level radius at J(inf) (eq 9.5, 9.10).

@@ -7,6 +7,7 @@
 #include "model/integer_power.hpp"
 
 #include "model/lattice.hpp"
+#include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
 #include "model/ring_loads.hpp"
 #include "model/single_level.hpp"
@@ -102,7 +103,7 @@ void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], doub
          l;
 }
 
-TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess) const {
+TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int max_iterations) const {
   const double l = problem_.l;
   const double l2 = l / std::numbers::sqrt2;
   const double a1_max = std::min(l2, radii_.A1) * kDomainMargin;
@@ -120,7 +121,7 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess) const 
   double norm = std::max(std::abs(r[0]), std::abs(r[1]));
 
   TwoLevelSolve out;
-  for (int it = 0; it < kMaxIterations; ++it) {
+  for (int it = 0; it < max_iterations; ++it) {
     const double det = J[0] * J[3] - J[1] * J[2];
     const double d1 = (-r[0] * J[3] + J[1] * r[1]) / det;
     const double d2 = (-J[0] * r[1] + J[2] * r[0]) / det;
@@ -219,7 +220,8 @@ TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {
   return continue_to(start.state, X_start, X);
 }
 
-ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E) {
+ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
+                                        const LongTermGuide* guide) {
   const double X = problem.pbar0 / E;
   const Lattice lattice{problem.l};
   const NominalRadii touchdown_radii{lattice.A1_single(), lattice.A_single()};
@@ -236,8 +238,15 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E)
   }
   out.level2_touches = true;
   // At touchdown eq 9.13 gives exactly the single-level radii, so start there.
-  TwoLevelSolve current = TwoLevelSystem(problem, touchdown_radii).solve_from_touchdown(X);
+  const TwoLevelSystem touchdown_system(problem, touchdown_radii);
+  TwoLevelSolve current{TwoLevelState{}, false};
+  if (guide != nullptr) {
+    if (const std::optional<TwoLevelState> start = guide->guess(X)) current = touchdown_system.solve(X, *start);
+  }
+  if (!current.converged) current = touchdown_system.solve_from_touchdown(X);
   NominalRadii radii = touchdown_radii;
+  // One Newton step per update of A (both converge together: Newton quadratically, the
+  // A iteration at its small contraction rate), then a full solve at the final radii.
   constexpr int kMaxSweeps = 200;
   for (int sweep = 0; sweep < kMaxSweeps && current.converged; ++sweep) {
     // Eq (9.13): pi A_i^2 pbar = 5 P_i + 4 P_j, with P/E = Q and pbar/E = X.
@@ -245,13 +254,17 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E)
                             std::sqrt((5.0 * current.state.Q2 + 4.0 * current.state.Q1) / (kPi * X))};
     const double change = std::max(std::abs(next.A1 - radii.A1), std::abs(next.A2 - radii.A2));
     radii = next;
-    current = TwoLevelSystem(problem, radii).solve(X, current.state);
+    const TwoLevelSystem system(problem, radii);
     if (change < 1e-13 * problem.l) {
+      current = system.solve(X, current.state);
       out.state = current.state;
       out.radii = radii;
       out.converged = current.converged;
       return out;
     }
+    const TwoLevelSolve step = system.solve(X, current.state, 1);
+    current.state = step.state;
+    current.converged = std::isfinite(step.state.Q1) && std::isfinite(step.state.a1);
   }
   out.state = current.state;
   out.radii = radii;

@@ -44,8 +44,9 @@ class TwoLevelSystem {
 
   TwoLevelSystem(const ContactProblem& problem, NominalRadii radii);
 
-  /// Newton from `guess` at creep-scaled pressure X.
-  TwoLevelSolve solve(double X, const TwoLevelState& guess) const;
+  /// Newton from `guess` at creep-scaled pressure X, at most `max_iterations` steps
+  /// (converged reports whether the residual tolerance is met when it stops).
+  TwoLevelSolve solve(double X, const TwoLevelState& guess, int max_iterations = kMaxIterations) const;
 
   /// Follows the solution branch from a known solution `from` at X_from to X_to,
   /// halving the step in X where Newton fails (at most 2^20 steps).
@@ -77,9 +78,14 @@ struct ElasticTwoLevel {
   bool level2_touches = false;  ///< false when pbar/E is too low for level 2 to touch
 };
 
+class LongTermGuide;
+
 /// Elastic two-level contact for modulus E (in E0*), eqs (9.12)-(9.15): the radii A_i
 /// follow pi A_i^2 pbar = 5 P_i + 4 P_j (eq 9.13), found by fixed-point iteration around
-/// the Newton solve (|dA| < 1e-13 l, at most 200 sweeps; A depends weakly on a).
-ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E);
+/// the Newton solve (|dA| < 1e-13 l, at most 200 sweeps; A depends weakly on a). The first
+/// solve, at the touchdown radii, starts from `guide` when one is given (it is exact
+/// there), else follows the branch from touchdown.
+ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
+                                        const LongTermGuide* guide = nullptr);
 
 }  // namespace punchsweep::model

@@ -47,6 +47,7 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
 
   const auto n = grid_.shape();
   std::vector<model::Touchdown> touch(c[kAxisDh]);
+  std::vector<std::shared_ptr<const model::LongTermGuide>> guide(c[kAxisDh]);
   std::vector<Ends> ends(c[kAxisT] * c[kAxisPbar]);
   std::vector<std::optional<model::ElasticTwoLevel>> elastic(c[kAxisDh] * c[kAxisPbar]);
 
@@ -63,9 +64,12 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
         Touch& t = cache_ ? touch_[(gl * n[kAxisS] + gs) * n[kAxisDh] + box.start[kAxisDh] + idh] : scratch;
         if (!t.ready) {
           const model::Touchdown computed = model::touchdown(single, value(kAxisDh, idh));
-          t = Touch{computed.a1_star, computed.X_star, true};
+          model::ContactProblem at_dh = problem;
+          at_dh.dh = value(kAxisDh, idh);
+          t = Touch{computed.a1_star, computed.X_star, std::make_shared<const model::LongTermGuide>(at_dh), true};
         }
         touch[idh] = model::Touchdown{t.a1_star, t.X_star};
+        guide[idh] = t.guide;
       }
       for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {
         for (std::size_t ip = 0; ip < c[kAxisPbar]; ++ip) {
@@ -95,10 +99,11 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
             parts.h_0 = e.h_0;
             parts.h_inf = e.h_inf;
             parts.a1_inf_single = e.a1_inf_single;
+            parts.guide = guide[idh].get();
             if (parts.classification.regime == model::Regime::immediate) {
               auto& cached = elastic[idh * c[kAxisPbar] + ip];
               if (!cached) {
-                cached = model::solve_elastic_two_level(problem, 1.0 / creep[iT].creep_initial());
+                cached = model::solve_elastic_two_level(problem, 1.0 / creep[iT].creep_initial(), guide[idh].get());
               }
               parts.elastic = &*cached;
             }

@@ -2,7 +2,10 @@
 
 #include <vector>
 
+#include <memory>
+
 #include "io/tile_data.hpp"
+#include "model/long_term_guide.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/sweep_config.hpp"
 
@@ -10,7 +13,7 @@ namespace punchsweep::sweep {
 
 /// Evaluates every point of a tile with the model (the same functions as
 /// `punchsweep point`). Sub-results that depend on fewer coordinates are computed once:
-/// the touchdown per (l, s, dh) and the single-level ends per (l, s, pbar, T) for the whole
+/// the touchdown and long-term guide per (l, s, dh) and the single-level ends per (l, s, pbar, T) for the whole
 /// run of this process, the elastic start per (l, s, dh, pbar) per tile. Each is a pure
 /// function of its coordinates, so no value depends on the tiling or the rank count.
 /// Not thread-safe (one evaluator per rank).
@@ -32,6 +35,7 @@ class TileEvaluator {
   struct Touch {
     double a1_star = 0.0;
     double X_star = 0.0;
+    std::shared_ptr<const model::LongTermGuide> guide;  ///< built with the touchdown
     bool ready = false;
   };
 

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "model/contact_problem.hpp"
+#include "model/two_level.hpp"
+
+namespace punchsweep::model {
+
+/// Starting guesses for the two-level state at any creep-scaled pressure X beyond
+/// touchdown, for one (l, s, C, dh).
+///
+/// With the delayed-phase radii (A1 = sqrt(5/pi) l, A2 = 2 l/sqrt(pi)) the two-level
+/// solution is a curve X -> (a1, z) that every (pbar, T) of a sweep shares; a Newton
+/// solve started on it needs about two residual evaluations instead of five or six. The
+/// guide interpolates the curve piecewise: segment j covers X in [X* 2^j, X* 2^(j+1)]
+/// (segment 0 from X* itself), 8 Chebyshev nodes in v = sqrt(X - X*), in which the curve
+/// is analytic although a2 ~ sqrt(X - X*). Segments are built on first use, each from
+/// the end of the one before, so every guess is a pure function of (l, s, C, dh, X): a
+/// sweep and `punchsweep point` get the same guess, hence the same converged bits.
+/// Also a good start for immediate points, whose radii differ by ~0.1% (Table 9.1).
+class LongTermGuide {
+ public:
+  explicit LongTermGuide(const ContactProblem& problem);
+
+  /// A guess at X (a1 and a2; Q left 0), or empty where no guide exists (dh = 0, X below
+  /// touchdown or beyond the last segment that could be built).
+  std::optional<TwoLevelState> guess(double X) const;
+
+ private:
+  static constexpr int kNodes = 8;
+  static constexpr int kMaxSegments = 40;
+  struct Segment {
+    double v_lo = 0.0;
+    double v_hi = 0.0;
+    double a1[kNodes] = {};
+    double z[kNodes] = {};
+  };
+  bool build_next() const;  ///< appends segment segments_.size(); false if it failed
+
+  ContactProblem problem_;
+  TwoLevelSystem system_;
+  double X_star_ = 0.0;
+  TwoLevelState touch_state_;
+  bool usable_ = false;
+  int z_power_ = 2;
+  mutable std::vector<Segment> segments_;
+  mutable bool exhausted_ = false;
+  mutable TwoLevelState last_state_;  ///< solution at the end of the last built segment
+  mutable double last_X_ = 0.0;
+};
+
+}  // namespace punchsweep::model
