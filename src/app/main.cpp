@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "app/curve_commands.hpp"
 #include "app/point_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/usage_error.hpp"
@@ -17,7 +18,9 @@ constexpr const char* kTopHelp =
     "commands:\n"
     "  point      evaluate one parameter point: regime, t*, contact state over time\n"
     "  sweep      evaluate a 5-D grid over (l, dh, T, pbar, s) on MPI ranks into an HDF5\n"
-    "             regime map (mpirun -np N punchsweep sweep --config F.ini)\n\n"
+    "             regime map (mpirun -np N punchsweep sweep --config F.ini)\n"
+    "  single-level  h(a1), a1(t), h(t) of the single-level phase (Figs. 9.2, 9.3)\n"
+    "  elastic    the elastic two-level problem with free radii A_i (Table 9.1)\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -42,7 +45,10 @@ int main(int argc, char** argv) {
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "point") return punchsweep::app::run_point_command(rest, std::cout);
     if (args[0] == "sweep") return punchsweep::app::run_sweep_command(rest);
-    throw UsageError("unknown command '" + args[0] + "' (commands: point, sweep; see punchsweep --help)");
+    if (args[0] == "single-level") return punchsweep::app::run_single_level_command(rest, std::cout);
+    if (args[0] == "elastic") return punchsweep::app::run_elastic_command(rest, std::cout);
+    throw UsageError("unknown command '" + args[0] +
+                     "' (commands: point, sweep, single-level, elastic; see punchsweep --help)");
   } catch (const UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::app::kUsageExitCode;

@@ -3,11 +3,10 @@
 #include <boost/program_options.hpp>
 
 #include <ostream>
-#include <sstream>
 
+#include "app/command_options.hpp"
 #include "app/point_output.hpp"
 #include "app/usage_error.hpp"
-#include "app/value_parsing.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/standard_linear_solid.hpp"
 
@@ -52,20 +51,7 @@ po::options_description point_options() {
 
 int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
   const po::options_description opts = point_options();
-  po::variables_map vm;
-  const po::positional_options_description no_positionals;
-  try {
-    // Long options only, so that "--l -0.5" reads -0.5 as a value, not as an option.
-    const auto style = po::command_line_style::unix_style ^ po::command_line_style::allow_short;
-    po::store(po::command_line_parser(args).options(opts).style(style).positional(no_positionals).run(), vm);
-    po::notify(vm);
-  } catch (const po::unknown_option& e) {
-    throw UsageError("unknown option " + e.get_option_name() + " (see punchsweep point --help)");
-  } catch (const po::too_many_positional_options_error&) {
-    throw UsageError("unexpected argument (every input is an --option; see punchsweep point --help)");
-  } catch (const po::error& e) {
-    throw UsageError(std::string(e.what()) + " (see punchsweep point --help)");
-  }
+  const po::variables_map vm = parse_command(args, opts, "point");
   if (vm.count("help")) {
     out << kUsage << "\n\n" << opts << "\n"
         << "Example: punchsweep point --l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 2 --format json\n"
@@ -73,59 +59,20 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
   }
 
-  // Each numeric option: its valid range (as printed) and the test of it.
-  const auto real = [&](const char* name, const char* meaning, const char* range, auto in_range) {
-    const std::string option = std::string("--") + name;
-    if (!vm.count(name)) {
-      throw UsageError("missing required option " + option + " (" + meaning + "; " + range + ")");
-    }
-    const std::string text = vm[name].as<std::string>();
-    double value = 0.0;
-    try {
-      value = parse_real(text, option);
-    } catch (const UsageError& e) {
-      throw UsageError(std::string(e.what()) + "; valid range: " + range);
-    }
-    if (!in_range(value)) {
-      throw UsageError(option + " = " + text + " is outside its range: " + range);
-    }
-    return value;
-  };
   model::ContactProblem problem;
-  problem.l = real("l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
-  problem.dh = real("dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
-  const double T = real("T", "creep ratio", "T = T_eps/T_sigma >= 1",
-                        [](double v) { return model::creep_ratio_error(v).empty(); });
-  problem.pbar0 = real("pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
-  const char* s_range = "an integer in [1, 32]";
-  if (!vm.count("s")) throw UsageError(std::string("missing required option --s (shape exponent; ") + s_range + ")");
-  const std::string s_text = vm["s"].as<std::string>();
-  try {
-    problem.shape.s = parse_integer(s_text, "--s");
-  } catch (const UsageError&) {
-    throw UsageError("--s = " + s_text + " is outside its range: " + s_range);
-  }
-  if (problem.shape.s < model::Shape::kMinExponent || problem.shape.s > model::Shape::kMaxExponent) {
-    throw UsageError("--s = " + s_text + " is outside its range: " + s_range);
-  }
-  problem.shape.C = real("C", "shape constant", "C > 0", [](double v) { return v > 0.0; });
+  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
+  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
+  const double T = read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
+                             [](double v) { return model::creep_ratio_error(v).empty(); });
+  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
+  problem.shape = read_shape(vm);
 
   model::EvaluationOptions options;
-  options.times = parse_real_list(vm["times"].as<std::string>(), "--times");
-  for (const double t : options.times) {
-    if (t < 0.0) {
-      std::ostringstream msg;
-      msg << "--times: time " << t << " is outside its range: t >= 0 (in T_eps)";
-      throw UsageError(msg.str());
-    }
-  }
-
-  const std::string format_text = vm["format"].as<std::string>();
-  OutputFormat format;
-  if (format_text == "table") format = OutputFormat::table;
-  else if (format_text == "json") format = OutputFormat::json;
-  else if (format_text == "csv") format = OutputFormat::csv;
-  else throw UsageError("--format = '" + format_text + "' is not one of: table, json, csv");
+  options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+  const std::string format_text = read_choice(vm, "format", {"table", "json", "csv"});
+  const OutputFormat format = format_text == "json"  ? OutputFormat::json
+                              : format_text == "csv" ? OutputFormat::csv
+                                                     : OutputFormat::table;
 
   const model::StandardLinearSolid creep(T);
   const model::PointResult result = model::evaluate_point(problem, creep, options);

@@ -6,19 +6,12 @@
 #include <ostream>
 #include <string>
 
+#include "app/command_options.hpp"
+
 namespace punchsweep::app {
 namespace {
 
-// Shortest text that reads back to the same double; "null" for NaN / infinity (JSON).
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
-}
+std::string number(double v) { return json_number(v); }
 
 std::string json_string(const std::string& text) {
   std::string quoted = "\"";

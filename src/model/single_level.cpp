@@ -77,6 +77,13 @@ double SingleLevel::displacement_difference(double a1) const {
   return displacement_difference(a1, creep_scaled_pressure(a1));
 }
 
+double SingleLevel::displacement_difference_rate(double a1) const {
+  // h = C l^s eta(x) with x = a1 / l.
+  double rate = 0.0;
+  eta(a1 / l_, &rate);
+  return shape_.C * ipow(l_, shape_.s - 1) * rate;
+}
+
 double SingleLevel::eta(double x, double* rate) const {
   const int s = shape_.s;
   const double kd = K_d_ / shape_.C;

@@ -39,6 +39,9 @@ class SingleLevel {
   /// h along the solution curve, h(a1) of section 9.3.3 (X eliminated with eq 9.5).
   double displacement_difference(double a1) const;
 
+  /// dh/da1 along the solution curve (Fig. 9.2b).
+  double displacement_difference_rate(double a1) const;
+
   /// The contact radius a1 at which h(a1) = dh (h increases from 0 to +infinity on
   /// (0, kScaledRadiusLimit l): Fig. 9.2). Returns 0 for dh <= 0.
   double contact_radius_at_gap(double dh) const;

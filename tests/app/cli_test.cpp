@@ -41,13 +41,17 @@ CliRun run_cli(const std::string& args) {
 const std::string kGood = "--l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 2";
 
 // Bad input: exit 2, nothing on stdout, one stderr line naming the option and its range.
-void expect_refused(const std::string& args, const std::string& option, const std::string& range) {
-  const CliRun r = run_cli("point " + args);
+void expect_refused_command(const std::string& args, const std::string& option, const std::string& range) {
+  const CliRun r = run_cli(args);
   EXPECT_EQ(r.exit_code, 2) << args;
   EXPECT_EQ(r.out, "") << args;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(range), std::string::npos) << r.err;
+}
+
+void expect_refused(const std::string& args, const std::string& option, const std::string& range) {
+  expect_refused_command("point " + args, option, range);
 }
 
 double json_number(const std::string& json, const std::string& key) {
@@ -136,4 +140,69 @@ TEST(Cli, csv_and_table_show_the_series) {
   ASSERT_EQ(table.exit_code, 0);
   EXPECT_NE(table.out.find("regime              delayed"), std::string::npos);
   EXPECT_NE(table.out.find("t [T_eps]"), std::string::npos);
+}
+
+namespace {
+
+std::vector<double> json_array_of(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": [");
+  EXPECT_NE(at, std::string::npos) << key;
+  std::vector<double> values;
+  const char* p = json.c_str() + at + key.size() + 5;
+  while (*p != ']') {
+    char* end = nullptr;
+    values.push_back(std::strtod(p, &end));
+    p = end;
+    while (*p == ',' || *p == ' ') ++p;
+  }
+  return values;
+}
+
+}  // namespace
+
+TEST(Cli, elastic_command_reproduces_table_9_1) {
+  const CliRun r = run_cli("elastic --l 0.75 --dh 0.05 --pbar 0.06 --s 2 --E 1,0.8,0.5,0.4");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Table 9.1, +-1 in the last printed digit.
+  const std::vector<double> P1{0.0335, 0.0327, 0.0308, 0.0300}, a2{0.0567, 0.0926, 0.1455, 0.1662},
+      A1{0.9454, 0.9432, 0.9379, 0.9355};
+  const auto p1 = json_array_of(r.out, "P1"), got_a2 = json_array_of(r.out, "a2"), got_A1 = json_array_of(r.out, "A1");
+  ASSERT_EQ(p1.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(p1[i], P1[i], 1e-4);
+    EXPECT_NEAR(got_a2[i], a2[i], 1e-4);
+    EXPECT_NEAR(got_A1[i], A1[i], 1e-4);
+  }
+  const CliRun md = run_cli("elastic --l 0.75 --dh 0.05 --pbar 0.06 --s 2 --E 0.8 --format markdown");
+  EXPECT_NE(md.out.find("| 0.8 | 0.0327 | 0.0011 | 0.2976 | 0.0926 |"), std::string::npos) << md.out;
+}
+
+TEST(Cli, single_level_command_gives_fig_9_2_and_9_3_curves) {
+  const CliRun r = run_cli("single-level --l 0.5 --s 3 --C 1 --a1-points 201");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a1 = json_array_of(r.out, "a1"), h = json_array_of(r.out, "h"), rate = json_array_of(r.out, "dh_da1");
+  ASSERT_EQ(a1.size(), 201u);
+  EXPECT_DOUBLE_EQ(a1.back(), 0.25);
+  const double step = a1[1] - a1[0];
+  for (std::size_t i = 1; i + 1 < a1.size(); ++i) {
+    EXPECT_GT(h[i + 1], h[i]);  // Fig. 9.2a: increasing
+    EXPECT_GT(rate[i], 0.0);    // Fig. 9.2b: positive slope
+    if (i < 2 || i + 2 >= a1.size()) continue;
+    // The slope is the derivative of the curve (five-point difference, fourth order).
+    const double fd = (-h[i + 2] + 8 * h[i + 1] - 8 * h[i - 1] + h[i - 2]) / (12 * step);
+    EXPECT_NEAR(rate[i], fd, 1e-6 * rate[i] + 1e-9) << "a1 = " << a1[i];
+  }
+  const CliRun t = run_cli("single-level --l 0.75 --s 2 --pbar 0.01 --T 5 --times 0,0.908824,50");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const auto ht = json_array_of(t.out.substr(t.out.find("\"series\"")), "h");
+  EXPECT_NEAR(ht[0], 0.0203224, 5e-8);  // h(0), model notes section 9
+  EXPECT_NEAR(ht[1], 0.04, 1e-6);       // h(t*) = dh = 0.04 at t* = 0.908824
+  EXPECT_NEAR(ht[2], 0.0490070, 5e-8);  // h(inf)
+  EXPECT_NEAR(json_number(t.out, "h_inf"), 0.0490070, 5e-8);
+}
+
+TEST(Cli, new_commands_refuse_bad_input) {
+  expect_refused_command("elastic --l 0.75 --dh 0.05 --pbar 0.06 --s 2 --E 1,-1", "--E", "E > 0");
+  expect_refused_command("single-level --l 0.75 --s 0", "--s", "[1, 32]");
+  expect_refused_command("single-level --l 0.75 --s 2 --pbar 0.01 --T 0.5", "--T", ">= 1");
 }

@@ -1,0 +1,193 @@
+#include "app/curve_commands.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <cstdio>
+#include <optional>
+#include <ostream>
+
+#include "app/command_options.hpp"
+#include "app/usage_error.hpp"
+#include "model/single_level.hpp"
+#include "model/standard_linear_solid.hpp"
+#include "model/two_level.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+constexpr const char* kUnits =
+    "Units: lengths in R (punch size), pressures and moduli in E0* = E0/(1-nu^2), loads in\n"
+    "R^2 E0*, time in T_eps (creep time).\n\nOptions";
+
+void add_shape_options(po::options_description& opts) {
+  opts.add_options()
+      ("s", po::value<std::string>()->value_name("S"),
+       "shape exponent s of f(r) = C r^s / R^(s-1); required; an integer in [1, 32]")
+      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"), "shape constant C; C > 0");
+}
+
+std::string json_array(const std::vector<double>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + json_number(values[i]);
+  return text + "]";
+}
+
+bool positive(double v) { return v > 0.0; }
+
+}  // namespace
+
+int run_single_level_command(const std::vector<std::string>& args, std::ostream& out) {
+  po::options_description opts(std::string(
+      "punchsweep single-level: the single-level phase on its own (only level-1 punches\n"
+      "touch; level 2 ignored): h(a1) along the solution curve and its slope (Fig. 9.2),\n"
+      "and with --pbar and --T the radius a1(t) and h(t) (Fig. 9.3). h is the displacement\n"
+      "difference between a level-1 punch tip and the square centre (eq 9.10).\n\n") + kUnits);
+  opts.add_options()
+      ("help", "print this help and exit")
+      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0");
+  add_shape_options(opts);
+  opts.add_options()
+      ("pbar", po::value<std::string>()->value_name("P"), "nominal pressure, in E0*; pbar > 0 (with --T: time series)")
+      ("T", po::value<std::string>()->value_name("T"), "creep ratio T_eps/T_sigma; T >= 1 (with --pbar: time series)")
+      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
+       "times of the series, comma-separated, in T_eps; each >= 0")
+      ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
+       "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
+      ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or csv");
+  const po::variables_map vm = parse_command(args, opts, "single-level");
+  if (vm.count("help")) {
+    out << "usage: punchsweep single-level --l L --s S [--C C] [--pbar P --T T] [options]\n\n" << opts << "\n";
+    return 0;
+  }
+  const double l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", positive);
+  const model::Shape shape = read_shape(vm);
+  const double n_real = read_real(vm, "a1-points", "points of h(a1)", "an integer in [2, 100000]",
+                                  [](double v) { return v >= 2 && v <= 100000 && v == std::floor(v); });
+  const std::size_t n = static_cast<std::size_t>(n_real);
+  const bool series = vm.count("pbar") || vm.count("T");
+  const std::string format = read_choice(vm, "format", {"json", "csv"});
+  const model::SingleLevel single(l, shape);
+
+  // h(a1) up to 2 a1 = l (beyond, level-1 spots merge: the model's validity ends there).
+  std::vector<double> a1_curve;
+  std::vector<double> h_curve;
+  std::vector<double> rate_curve;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a1 = 0.5 * l * static_cast<double>(i) / static_cast<double>(n - 1);
+    a1_curve.push_back(a1);
+    h_curve.push_back(i == 0 ? 0.0 : single.displacement_difference(a1));
+    rate_curve.push_back(i == 0 ? 0.0 : single.displacement_difference_rate(a1));
+  }
+  std::vector<double> times;
+  std::vector<double> a1_t;
+  std::vector<double> h_t;
+  std::optional<model::StandardLinearSolid> creep;
+  double pbar = 0.0;
+  if (series) {
+    pbar = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", positive);
+    creep.emplace(read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
+                            [](double v) { return model::creep_ratio_error(v).empty(); }));
+    times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+    for (const double t : times) {
+      const double X = pbar * creep->creep(t);
+      a1_t.push_back(single.contact_radius(X));
+      h_t.push_back(single.displacement_difference(a1_t.back(), X));
+    }
+  }
+
+  if (format == "csv") {
+    out << "# punchsweep single-level: l = " << json_number(l) << " R, s = " << shape.s << ", C = " << json_number(shape.C)
+        << "\n# h(a1) along the solution curve; units: a1 and h in R, dh_da1 dimensionless\na1,h,dh_da1\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      out << json_number(a1_curve[i]) << ',' << json_number(h_curve[i]) << ',' << json_number(rate_curve[i]) << "\n";
+    }
+    if (series) {
+      out << "\n# time series at pbar0 = " << json_number(pbar) << " E0*, T = " << json_number(creep->creep_ratio())
+          << "; units: t in T_eps, a1 and h in R\nt,a1,h\n";
+      for (std::size_t i = 0; i < times.size(); ++i) {
+        out << json_number(times[i]) << ',' << json_number(a1_t[i]) << ',' << json_number(h_t[i]) << "\n";
+      }
+    }
+    return 0;
+  }
+  out << "{\n  \"h_of_a1\": {\n    \"a1\": " << json_array(a1_curve) << ",\n    \"h\": " << json_array(h_curve)
+      << ",\n    \"dh_da1\": " << json_array(rate_curve) << "\n  }";
+  if (series) {
+    const double X_inf = pbar * creep->creep_final();
+    const double a1_inf = single.contact_radius(X_inf);
+    out << ",\n  \"h_inf\": " << json_number(single.displacement_difference(a1_inf, X_inf))
+        << ",\n  \"series\": {\n    \"t\": " << json_array(times) << ",\n    \"a1\": " << json_array(a1_t)
+        << ",\n    \"h\": " << json_array(h_t) << "\n  }";
+  }
+  out << "\n}\n";
+  return 0;
+}
+
+int run_elastic_command(const std::vector<std::string>& args, std::ostream& out) {
+  po::options_description opts(std::string(
+      "punchsweep elastic: the elastic two-level problem, eqs (9.12)-(9.15), with the\n"
+      "nominal-pressure radii A1, A2 solved for (Table 9.1), for each modulus E.\n\n") + kUnits);
+  opts.add_options()
+      ("help", "print this help and exit")
+      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0")
+      ("dh", po::value<std::string>()->value_name("DH"), "height difference, in R; required; dh >= 0")
+      ("pbar", po::value<std::string>()->value_name("P"), "nominal pressure, in E0*; required; pbar > 0");
+  add_shape_options(opts);
+  opts.add_options()
+      ("E", po::value<std::string>()->value_name("LIST")->default_value("1"),
+       "moduli E, comma-separated, in E0* (1 instantaneous, 1/T long-term); each > 0")
+      ("format", po::value<std::string>()->value_name("FMT")->default_value("json"),
+       "output format: json or markdown (a table like Table 9.1)");
+  const po::variables_map vm = parse_command(args, opts, "elastic");
+  if (vm.count("help")) {
+    out << "usage: punchsweep elastic --l L --dh DH --pbar P --s S [--C C] [--E LIST] [--format FMT]\n\n" << opts << "\n";
+    return 0;
+  }
+  model::ContactProblem problem;
+  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", positive);
+  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
+  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", positive);
+  problem.shape = read_shape(vm);
+  const std::vector<double> moduli = read_real_list(vm, "E", "E > 0 (in E0*)", positive);
+  const std::string format = read_choice(vm, "format", {"json", "markdown"});
+
+  std::vector<double> P1, P2, a1, a2, A1, A2, touches, converged;
+  for (const double E : moduli) {
+    const model::ElasticTwoLevel r = model::solve_elastic_two_level(problem, E);
+    P1.push_back(E * r.state.Q1);  // P = E Q
+    P2.push_back(E * r.state.Q2);
+    a1.push_back(r.state.a1);
+    a2.push_back(r.state.a2);
+    A1.push_back(r.radii.A1);
+    A2.push_back(r.radii.A2);
+    touches.push_back(r.level2_touches);
+    converged.push_back(r.converged);
+  }
+  if (format == "markdown") {
+    out << "| E/E0 | P1 | P2 | a1 | a2 | A1 | A2 |\n|---|---|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < moduli.size(); ++i) {
+      char row[256];
+      std::snprintf(row, sizeof row, "| %g | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", moduli[i], P1[i], P2[i],
+                    a1[i], a2[i], A1[i], A2[i]);
+      out << row;
+    }
+    out << "\n(pbar0 = " << json_number(problem.pbar0) << " E0*, l = " << json_number(problem.l)
+        << " R, dh = " << json_number(problem.dh) << " R, s = " << problem.shape.s << ", C = "
+        << json_number(problem.shape.C) << "; loads in R^2 E0*, lengths in R)\n";
+    return 0;
+  }
+  const auto flags = [](const std::vector<double>& v) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) text += std::string(i ? ", " : "") + (v[i] != 0.0 ? "true" : "false");
+    return text + "]";
+  };
+  out << "{\n  \"E\": " << json_array(moduli) << ",\n  \"P1\": " << json_array(P1) << ",\n  \"P2\": " << json_array(P2)
+      << ",\n  \"a1\": " << json_array(a1) << ",\n  \"a2\": " << json_array(a2) << ",\n  \"A1\": " << json_array(A1)
+      << ",\n  \"A2\": " << json_array(A2) << ",\n  \"level2_touches\": " << flags(touches)
+      << ",\n  \"converged\": " << flags(converged) << "\n}\n";
+  return 0;
+}
+
+}  // namespace punchsweep::app
