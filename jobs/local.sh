@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The main job on one machine: installs what is missing, builds, runs the sweep on every
+# core, then draws the regime maps into the run folder.
+#   bash jobs/local.sh [CONFIG.ini] [RUN_FOLDER]
+# Defaults: sweeps/default.ini, runs/<config name>-<UTC date and time>. Re-running with the
+# same RUN_FOLDER resumes an interrupted sweep (or does nothing if the map is complete).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+config=$(realpath "${1:-$root/sweeps/default.ini}")
+name=$(basename "$config" .ini)
+run=${2:-"$root/runs/$name-$(date -u +%Y%m%d-%H%M%S)"}
+cores=$(getconf _NPROCESSORS_ONLN)  # not nproc: it honours OMP_NUM_THREADS
+python=/usr/bin/python3
+
+bash "$root/cmake/install-deps.sh"
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$root/build" -j "$cores" --target punchsweep > /dev/null
+binary="$root/build/src/app/punchsweep"
+
+mkdir -p "$run"
+run=$(realpath "$run")
+cp "$config" "$run/config.ini"
+{
+  echo "punchsweep run: $name"
+  echo "started: $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(hostname), $cores cores"
+  echo "engine: $("$binary" --version)"
+  echo "config: $config (copied to config.ini)"
+} >> "$run/provenance.txt"
+
+# Root may launch MPI jobs only when it says so (containers, CI machines).
+if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
+mpirun -np "$cores" "$binary" sweep --config "$run/config.ini" --output "$run/map.h5" --resume
+
+# Pictures and the summary, from the map alone.
+"$python" "$root/postprocess/summary.py" "$run/map.h5" > "$run/summary.txt"
+"$python" "$root/postprocess/regime_map.py" "$run/map.h5" --x pbar --y dh --at l=0.75 T=5 --facet s \
+  -o "$run/regime_map.png" > /dev/null
+"$python" "$root/postprocess/critical_dh.py" "$run/map.h5" --against pbar --at l=0.75 -o "$run/critical_dh.png" > /dev/null
+echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
+
+echo "punchsweep: map $run/map.h5"
+echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; summary $run/summary.txt"

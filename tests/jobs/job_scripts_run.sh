@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The cluster job scripts: syntax, a dry run under stub Slurm/PBS commands, and the Slurm
+# script's time-limit path for real (USR1 -> clean stop, exit 3, requeue, resumed run
+# finishes the same map).
+source "$(dirname "$0")/../sweep/common.sh"
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+for script in local.sh slurm.sbatch pbs.sh paper-points.sh; do bash -n "$root/jobs/$script"; done
+
+# Stubs: srun runs the step with mpirun; scontrol and qrerun record what they were asked.
+mkdir -p stubs
+cat > stubs/srun <<'STUB'
+#!/bin/bash
+args=(); for a in "$@"; do case "$a" in --cpu-bind=*) ;; *) args+=("$a") ;; esac; done
+echo "srun $*" >> "$STUB_LOG"
+exec mpirun --oversubscribe -np "$SLURM_NTASKS" "${args[@]}"
+STUB
+printf '#!/bin/bash\necho "scontrol $*" >> "$STUB_LOG"\n' > stubs/scontrol
+printf '#!/bin/bash\necho "qrerun $*" >> "$STUB_LOG"\n' > stubs/qrerun
+chmod +x stubs/*
+export PATH="$PWD/stubs:$PATH" STUB_LOG="$PWD/stub.log" PUNCHSWEEP
+small=$PWD/small.ini
+printf '[grid]\nl = 0.75\ndh = 0.05, 0.1\nT = 2.5\npbar = 0.06\ns = 2\n' > "$small"
+
+# 1) Slurm, dry run: the run folder, provenance and the srun launch.
+SLURM_JOB_ID=4242 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/slurm-dry" \
+  PUNCHSWEEP_EXTRA_ARGS=--dry-run bash "$root/jobs/slurm.sbatch" "$small" > slurm-dry.log 2>&1
+grep -q "points: 2 in" slurm-dry.log && grep -q "job 4242" slurm-dry/provenance.txt && grep -q "srun --cpu-bind=cores" stub.log
+test -f slurm-dry/config.ini
+
+# 2) PBS, dry run with a node file of two slots.
+printf 'localhost\nlocalhost\n' > nodes
+PBS_JOBID=77.server PBS_O_WORKDIR="$root" PBS_NODEFILE="$PWD/nodes" CONFIG="$small" PUNCHSWEEP_RUN="$PWD/pbs-dry" \
+  PUNCHSWEEP_EXTRA_ARGS=--dry-run bash "$root/jobs/pbs.sh" > pbs-dry.log 2>&1
+grep -q "points: 2 in" pbs-dry.log && grep -q "ranks 2" pbs-dry/provenance.txt
+
+# 3) Outside Slurm, a real small map with mpirun.
+PUNCHSWEEP_RUN="$PWD/local" bash "$root/jobs/slurm.sbatch" "$small" > local.log 2>&1
+test -f local/map.h5 && grep -q "status 0" local/provenance.txt
+
+# 4) The time limit under "Slurm": USR1 to the batch script stops the sweep (exit 3), the
+#    job requeues itself, and the requeued job completes the same map as a clean run.
+cfg=$PWD/longer.ini
+printf '[grid]\nl = linspace(0.5, 1.25, 40)\nT = 2, 5, 10\n[run]\nchunk = 1000\n' > "$cfg"
+SLURM_JOB_ID=5151 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/limit" \
+  bash "$root/jobs/slurm.sbatch" "$cfg" > limit1.log 2>&1 & job=$!
+while ! grep -q "points/s, ETA" limit1.log; do
+  kill -0 "$job" 2>/dev/null || { echo "FAIL: the job ended before the time limit"; cat limit1.log; exit 1; }
+  sleep 0.05
+done
+kill -USR1 "$job"
+status=0; wait "$job" || status=$?
+[ "$status" = 3 ] || { echo "FAIL: expected exit 3 after USR1, got $status"; cat limit1.log; exit 1; }
+grep -q "scontrol requeue 5151" stub.log || { echo "FAIL: no requeue"; cat stub.log; exit 1; }
+test -f limit/map.h5.partial.journal
+SLURM_JOB_ID=5151 SLURM_NTASKS=2 SLURM_RESTART_COUNT=1 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/limit" \
+  bash "$root/jobs/slurm.sbatch" "$cfg" > limit2.log 2>&1
+grep -q "already done" limit2.log
+run_ranks 1 sweep --config "$cfg" --quiet --output clean.h5
+same_maps clean.h5 limit/map.h5
+echo "PASS: job scripts parse, dry-run under stub Slurm/PBS, and survive a time limit"
