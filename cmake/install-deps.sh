@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libopenmpi-dev openmpi-bin
-  libeigen3-dev libgsl-dev
+  libeigen3-dev libgsl-dev libfftw3-dev
   libhdf5-dev hdf5-tools zlib1g-dev
   libboost-program-options-dev
   libgtest-dev libgmock-dev libbenchmark-dev
