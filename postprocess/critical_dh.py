@@ -1,0 +1,174 @@
+#!/usr/bin/python3
+"""Design chart from a punchsweep regime map: the critical height differences against the
+lattice pitch l or the nominal pressure pbar0.
+
+  dh <= h_0:          level 2 touches immediately (h_0 is the tip-to-centre displacement
+                      difference at t = 0; it does not depend on T);
+  h_0 < dh < h_inf:   level 2 touches after a delay t*;
+  dh >= h_inf:        level 2 never touches (h_inf: the same difference as t -> infinity).
+
+One panel per shape exponent s. In each, h_0 is drawn once (blue, the immediate region
+below it shaded) and h_inf once per creep ratio T (one colour per T). The values come
+from the map's h_0 and h_inf variables, which do not depend on dh; the script checks that
+they agree across the dh axis (and h_0 across T) and says so on stderr if they do not.
+
+Units: dh, h_0, h_inf and l in R (the punch size); pbar in E0/(1-nu^2) (drawn on a log
+axis when the map's pbar axis is log-spaced); T and s dimensionless.
+
+Example:
+  postprocess/critical_dh.py map.h5 --against pbar --at l=0.75 -o chart.png
+  postprocess/critical_dh.py map.h5 --against l --at pbar=0.04 T=2.5 -o chart.pdf
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import punchsweep_maps as pm  # noqa: E402
+
+FIG_DPI = 150
+PANEL_SIZE = (4.6, 3.6)  # inches per panel
+LEGEND_WIDTH = 2.2  # inches
+RELATIVE_TOLERANCE = 1e-12  # for "does not depend on dh / T"
+
+
+def parse_args(argv: list[str]) -> argparse.Namespace:
+    p = pm.Parser(prog="critical_dh.py", description=__doc__,
+                  formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("map", metavar="MAP.h5", help="regime map written by `punchsweep sweep`")
+    p.add_argument("--against", default="pbar", metavar="AXIS",
+                   help="horizontal axis: pbar (nominal pressure, E0/(1-nu^2); the default) "
+                        "or l (lattice pitch, R)")
+    p.add_argument("--at", nargs="+", action="extend", default=[], metavar="AXIS=VALUE",
+                   help="fix the other of l / pbar (l in R, pbar in E0/(1-nu^2)); optionally "
+                        "also T and/or s (dimensionless) to draw only those curves. The nearest "
+                        "grid value is used (in log space for a log-spaced axis) and reported; a "
+                        "value more than half a grid step outside the axis is an error. An axis "
+                        "with a single value may be left out. dh cannot be fixed: it is the "
+                        "chart's vertical axis.")
+    p.add_argument("-o", "--output", required=True,
+                   help="picture to write; the format follows the suffix: .png or .pdf")
+    return p.parse_args(argv)
+
+
+def along_dh(values: np.ndarray, name: str, dh_axis: int) -> np.ndarray:
+    """Collapses the dh axis of h_0 or h_inf, warning on stderr if the values differ."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # all-NaN columns stay NaN
+        mid = np.nanmedian(values, axis=dh_axis)
+        spread = np.nanmax(np.abs(values - np.expand_dims(mid, dh_axis)))
+        scale = np.nanmax(np.abs(mid)) if np.isfinite(mid).any() else 1.0
+    if np.isfinite(spread) and spread > RELATIVE_TOLERANCE * max(scale, 1e-300):
+        print(f"critical_dh.py: warning: {name} varies along dh by up to {spread:.3g} R; "
+              f"drawing its median over dh", file=sys.stderr)
+    return mid
+
+
+def critical_curves(ds, against: str, fixed: dict[str, pm.Fixed]):
+    """h_0 as (s, x) and h_inf as (T, s, x), with the T, s and x grid values drawn."""
+    sel = {name: f.index for name, f in fixed.items()}
+    for name in ("T", "s"):
+        if name in sel:  # keep the axis, one value long
+            sel[name] = [sel[name]]
+    order = ("dh", "T", "s", against)
+    h0 = ds["h_0"].isel(sel).transpose(*order).values
+    hinf = ds["h_inf"].isel(sel).transpose(*order).values
+    h0, hinf = along_dh(h0, "h_0", 0), along_dh(hinf, "h_inf", 0)  # (T, s, x)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        h0_s = np.nanmedian(h0, axis=0)
+        spread = np.nanmax(np.abs(h0 - h0_s[None]))
+    if np.isfinite(spread) and spread > RELATIVE_TOLERANCE * max(np.nanmax(np.abs(h0_s)), 1e-300):
+        print(f"critical_dh.py: warning: h_0 varies with T by up to {spread:.3g} R; drawing its "
+              f"median over T", file=sys.stderr)
+    T = ds["T"].isel(T=sel.get("T", slice(None))).values.astype(float)
+    s = ds["s"].isel(s=sel.get("s", slice(None))).values.astype(float)
+    x = ds[against].values.astype(float)
+    return x, T, s, h0_s, hinf
+
+
+def render(ds, against: str, fixed: dict[str, pm.Fixed]):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    x, T, s, h0, hinf = critical_curves(ds, against, fixed)
+    n = len(s)
+    ncols = min(n, 3)
+    nrows = math.ceil(n / ncols)
+    fig = plt.figure(figsize=(PANEL_SIZE[0] * ncols + LEGEND_WIDTH, PANEL_SIZE[1] * nrows + 0.5),
+                     dpi=FIG_DPI, constrained_layout=True)
+    grid = fig.add_gridspec(nrows, ncols + 1, width_ratios=[PANEL_SIZE[0]] * ncols + [LEGEND_WIDTH])
+    cmap = plt.get_cmap("viridis")
+    t_colours = [cmap(0.85 * k / max(len(T) - 1, 1)) for k in range(len(T))]
+    immediate = pm.REGIME_COLOURS[0]
+    for k in range(n):
+        row, col = divmod(k, ncols)
+        ax = fig.add_subplot(grid[row, col], sharex=fig.axes[0] if k else None)
+        ax.fill_between(x, 0, h0[k], color=immediate, alpha=0.15, lw=0)
+        ax.plot(x, h0[k], color=immediate, lw=2.2, marker="o", ms=3)
+        for j in range(len(T)):
+            ax.plot(x, hinf[j, k], color=t_colours[j], lw=1.4, marker="o", ms=2.5)
+        top = np.nanmax(hinf[:, k]) if np.isfinite(hinf[:, k]).any() else 1.0
+        ax.set_ylim(0, 1.05 * top)
+        if len(x) > 1:
+            ax.set_xlim(x[0], x[-1])
+        if pm.is_log(ds, against):
+            ax.set_xscale("log")
+            pm.style_log_axis(ax.xaxis)
+        ax.grid(alpha=0.3)
+        ax.set_title(pm.format_value(ds, "s", float(s[k]), tex=True), fontsize=10)
+        if row == nrows - 1 or k + ncols >= n:
+            ax.set_xlabel(pm.axis_label(ds, against))
+        if col == 0:
+            ax.set_ylabel("critical height difference $\\Delta h$ [$R$]")
+
+    handles = [Line2D([], [], color=immediate, lw=2.2, marker="o", ms=3,
+                      label="$h_0$: below it, level 2\ntouches immediately"),
+               Patch(facecolor=immediate, alpha=0.15, label="immediate region")]
+    handles += [Line2D([], [], color=c, lw=1.4, marker="o", ms=2.5,
+                       label=f"$h_\\infty$, {pm.format_value(ds, 'T', float(t), tex=True)}")
+                for t, c in zip(T, t_colours)]
+    legend_ax = fig.add_subplot(grid[:, ncols])
+    legend_ax.axis("off")
+    legend_ax.legend(handles=handles, loc="upper left", frameon=False, fontsize=9, borderaxespad=0,
+                     title="between $h_0$ and $h_\\infty$:\ndelayed; above $h_\\infty$: never",
+                     title_fontsize=9)
+    fixed_text = ", ".join(pm.format_value(ds, name, f.value, tex=True) for name, f in fixed.items())
+    incomplete = "" if pm.is_completed(ds) else " (incomplete map)"
+    fig.suptitle("Critical height differences" + (f" at {fixed_text}" if fixed_text else "")
+                 + incomplete, fontsize=11)
+    return fig
+
+
+def main(argv: list[str]) -> int:
+    args = parse_args(argv)
+    if args.against not in ("l", "pbar"):
+        raise pm.MapError(f"--against '{args.against}' is not a valid choice; use l or pbar")
+    out = pm.check_output(args.output)
+    at = pm.parse_at(args.at)
+    with pm.open_map(args.map) as ds:
+        missing = [n for n in ("h_0", "h_inf") if n not in ds.variables]
+        if missing:
+            raise pm.MapError(f"'{args.map}' has no {' or '.join(missing)} variable")
+        reserved = {args.against: "the horizontal axis",
+                    "dh": "the chart's vertical axis (h_0 and h_inf do not depend on dh)"}
+        fixed = pm.resolve_at(ds, at, free=["T", "s"], optional=("T", "s"), reserved=reserved)
+        for f in fixed.values():
+            print(f.message)
+        fig = render(ds, args.against, fixed)
+        pm.save_figure(fig, out, dpi=FIG_DPI)
+    print(f"critical_dh.py: wrote {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(pm.run_cli(main, "critical_dh.py"))
