@@ -4,6 +4,7 @@
 #   bash jobs/local.sh [CONFIG.ini] [RUN_FOLDER]
 # Defaults: sweeps/default.ini, runs/<config name>-<UTC date and time>. Re-running with the
 # same RUN_FOLDER resumes an interrupted sweep (or does nothing if the map is complete).
+# PUNCHSWEEP=/path/to/punchsweep skips the install and build steps.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 config=$(realpath "${1:-$root/sweeps/default.ini}")
@@ -12,10 +13,13 @@ run=${2:-"$root/runs/$name-$(date -u +%Y%m%d-%H%M%S)"}
 cores=$(getconf _NPROCESSORS_ONLN)  # not nproc: it honours OMP_NUM_THREADS
 python=/usr/bin/python3
 
-bash "$root/cmake/install-deps.sh"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$root/build" -j "$cores" --target punchsweep > /dev/null
-binary="$root/build/src/app/punchsweep"
+binary=${PUNCHSWEEP:-}  # an engine already built elsewhere (the tests use this)
+if [ -z "$binary" ]; then
+  bash "$root/cmake/install-deps.sh"
+  cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$root/build" -j "$cores" --target punchsweep > /dev/null
+  binary="$root/build/src/app/punchsweep"
+fi
 
 mkdir -p "$run"
 run=$(realpath "$run")

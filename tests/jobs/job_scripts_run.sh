@@ -37,7 +37,16 @@ grep -q "points: 2 in" pbs-dry.log && grep -q "ranks 2" pbs-dry/provenance.txt
 PUNCHSWEEP_RUN="$PWD/local" bash "$root/jobs/slurm.sbatch" "$small" > local.log 2>&1
 test -f local/map.h5 && grep -q "status 0" local/provenance.txt
 
-# 4) The time limit under "Slurm": USR1 to the batch script stops the sweep (exit 3), the
+# 4) The local main job: map, pictures, summary and provenance in the run folder.
+printf '[grid]\nl = 0.5, 0.75, 1\ndh = linspace(0.02, 0.12, 6)\nT = 2, 5\npbar = logspace(0.005, 0.08, 5)\ns = 1, 2\n' > local.ini
+bash "$root/jobs/local.sh" local.ini "$PWD/main-job" > main-job.log 2>&1 || { cat main-job.log; exit 1; }
+for f in map.h5 regime_map.png critical_dh.png summary.txt provenance.txt config.ini; do
+  test -s "main-job/$f" || { echo "FAIL: jobs/local.sh left no $f"; cat main-job.log; exit 1; }
+done
+grep -q "punchsweep: map $PWD/main-job/map.h5" main-job.log
+grep -q "completed: yes" main-job/summary.txt
+
+# 5) The time limit under "Slurm": USR1 to the batch script stops the sweep (exit 3), the
 #    job requeues itself, and the requeued job completes the same map as a clean run.
 cfg=$PWD/longer.ini
 printf '[grid]\nl = linspace(0.5, 1.25, 40)\nT = 2, 5, 10\n[run]\nchunk = 1000\n' > "$cfg"
