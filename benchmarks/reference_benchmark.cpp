@@ -1,0 +1,86 @@
+// Speed of the periodic boundary-element reference solver (issue targets: one elastic
+// solve at 256 x 256 under 0.1 s on one core; a full viscoelastic point to t = 5 T_eps
+// under 10 s). FFTW plans are made before timing (once per grid size, as in a sweep).
+// Run: build/benchmarks/reference_benchmark [--benchmark_repetitions=5]
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+#include "model/contact_problem.hpp"
+#include "model/standard_linear_solid.hpp"
+#include "reference/contact_solver.hpp"
+#include "reference/fft_influence.hpp"
+#include "reference/periodic_grid.hpp"
+#include "reference/reference_point.hpp"
+
+using namespace punchsweep;
+using namespace punchsweep::reference;
+
+namespace {
+
+// The paper's point (l = 0.75, pbar0 = 0.06, s = 2, C = 1/2, T = 2.5).
+model::ContactProblem paper_point(double dh) { return {0.75, dh, 0.06, {2, 0.5}}; }
+
+void BM_InfluenceApply(benchmark::State& state) {
+  const PeriodicGrid g = PeriodicGrid::square(static_cast<int>(state.range(0)), 1.0);
+  PeriodicInfluence K(g);
+  std::vector<double> p(g.size(), 1.0), u(g.size());
+  p[0] = 2.0;
+  for (auto _ : state) {
+    K.apply(p, u);
+    benchmark::DoNotOptimize(u.data());
+  }
+}
+BENCHMARK(BM_InfluenceApply)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
+
+/// One elastic contact solve from the uniform first guess to the default tolerance (1e-10).
+void elastic_solve(benchmark::State& state, const PeriodicGrid& g, const std::vector<double>& f,
+                   double pbar) {
+  ContactSolver solver(g);
+  ContactStatus status;
+  for (auto _ : state) {
+    const ContactSolution s = solver.solve(f, pbar);
+    status = s.status;
+    benchmark::DoNotOptimize(s.pressure.data());
+  }
+  state.counters["cg_iterations"] = status.iterations;
+  state.counters["residual"] = status.residual;
+}
+
+// The two-level cell of the paper's point at t = 0 (both levels touch, dh = 0.05).
+void BM_ElasticSolve_TwoLevel(benchmark::State& state) {
+  const TwoLevelCell cell =
+      make_two_level_cell(paper_point(0.05), static_cast<int>(state.range(0)));
+  elastic_solve(state, cell.grid, cell.profile, 0.06);
+}
+BENCHMARK(BM_ElasticSolve_TwoLevel)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
+
+// A Hertz spot (a = L/8) in an L = 2 cell.
+void BM_ElasticSolve_Hertz(benchmark::State& state) {
+  const PeriodicGrid g = PeriodicGrid::square(static_cast<int>(state.range(0)), 2.0);
+  const double load = 4.0 / 3.0 * 0.25 * 0.25 * 0.25;
+  elastic_solve(state, g, punch_profile(g, {2, 0.5}, 0.0, 0.0), load / 4.0);
+}
+BENCHMARK(BM_ElasticSolve_Hertz)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
+
+// A full point: delayed regime (dh = 0.075, t* = 0.874 refined to 1e-3), snapshots at
+// 0, 0.5, 1, 2, 5, default steps.
+void BM_ViscoelasticPoint(benchmark::State& state) {
+  const model::StandardLinearSolid sls(2.5);
+  ReferenceOptions options;
+  options.n = static_cast<int>(state.range(0));
+  ReferenceResult r;
+  for (auto _ : state) {
+    r = evaluate_reference_point(paper_point(0.075), sls, options);
+    benchmark::DoNotOptimize(r.series.data());
+  }
+  state.counters["steps"] = r.steps;
+  state.counters["solves"] = r.solves;
+  state.counters["cg_iterations"] = static_cast<double>(r.cg_iterations);
+  state.counters["t_star"] = r.t_star.value_or(-1.0);
+}
+BENCHMARK(BM_ViscoelasticPoint)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,232 @@
+#include "reference/reference_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "reference/viscoelastic_stepper.hpp"
+
+namespace punchsweep::reference {
+
+namespace {
+
+/// Gap at the level-2 tip, dh + u(M) - delta: where level 2 touches first (there both the
+/// profile and, in the single-level phase, the displacement are least).
+double tip2_gap(const TwoLevelCell& cell, const ViscoelasticStepper& stepper) {
+  return cell.profile[cell.tip2] + stepper.displacement()[cell.tip2] - stepper.approach();
+}
+
+/// Bookkeeping of the solves of one point.
+struct SolveLog {
+  ReferenceResult* result;
+  void operator()(const ContactStatus& status) const {
+    ++result->solves;
+    result->cg_iterations += status.iterations;
+    result->max_residual = std::max(result->max_residual, status.residual);
+    result->converged = result->converged && status.converged;
+  }
+};
+
+}  // namespace
+
+std::string options_error(const ReferenceOptions& options) {
+  std::ostringstream out;
+  if (const std::string e = two_level_grid_error(options.n); !e.empty()) return e;
+  for (const double t : options.times) {
+    if (!(std::isfinite(t) && t >= 0.0)) {
+      out << "snapshot time " << t << " is outside its range: finite and >= 0";
+      return out.str();
+    }
+  }
+  const StepControl& s = options.steps;
+  if (!(std::isfinite(s.first_step) && s.first_step > 0.0 && std::isfinite(s.growth) &&
+        s.growth >= 1.0 && std::isfinite(s.max_step) && s.max_step >= s.first_step)) {
+    out << "steps (first " << s.first_step << ", growth " << s.growth << ", max " << s.max_step
+        << ") are outside their range: first > 0, growth >= 1, max >= first";
+    return out.str();
+  }
+  if (!(options.t_star_resolution > 0.0)) {
+    out << "t_star_resolution = " << options.t_star_resolution << " is outside its range: > 0";
+    return out.str();
+  }
+  if (!(options.solver.tolerance > 0.0) || options.solver.max_iterations < 1) {
+    out << "solver tolerance " << options.solver.tolerance << " / max_iterations "
+        << options.solver.max_iterations << " are outside their range: > 0 / >= 1";
+    return out.str();
+  }
+  return {};
+}
+
+ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double> p,
+                                std::span<const double> u, double t) {
+  const double cell_area = cell.grid.cell_area();
+  ReferenceSnapshot s;
+  s.t = t;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double w2 = cell.level2_weight[i];
+    s.P1 += (1.0 - w2) * p[i];
+    s.P2 += w2 * p[i];
+    if (p[i] > 0.0) {
+      s.area1 += 1.0 - w2;
+      s.area2 += w2;
+    }
+  }
+  s.P1 *= cell_area;
+  s.P2 *= cell_area;
+  s.area1 *= cell_area;
+  s.area2 *= cell_area;
+  s.a1 = std::sqrt(s.area1 / std::numbers::pi);
+  s.a2 = std::sqrt(s.area2 / std::numbers::pi);
+  s.area_fraction = (s.area1 + s.area2) / (cell.grid.Lx * cell.grid.Ly);
+  s.h = u[cell.tip1] - u[cell.tip2];
+  return s;
+}
+
+bool level2_loaded(const TwoLevelCell& cell, std::span<const double> p) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (cell.level2_weight[i] > 0.0 && p[i] > 0.0) return true;
+  }
+  return false;
+}
+
+ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
+                                         const model::CreepLaw& creep,
+                                         const ReferenceOptions& options) {
+  if (const std::string e = model::problem_error(problem); !e.empty())
+    throw std::invalid_argument(e);
+  if (const std::string e = options_error(options); !e.empty()) throw std::invalid_argument(e);
+
+  const TwoLevelCell cell = make_two_level_cell(problem, options.n);
+  ReferenceResult result;
+  result.spacing = cell.grid.hx();
+  const SolveLog log{&result};
+
+  std::vector<double> targets = options.times;
+  std::sort(targets.begin(), targets.end());
+  targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  std::vector<ReferenceSnapshot> at_target;
+  at_target.reserve(targets.size());
+
+  ViscoelasticStepper stepper(cell.grid, cell.profile, problem.pbar0, creep, options.solver);
+  log(stepper.start());
+  bool touched = level2_loaded(cell, stepper.pressure());
+  if (touched) {
+    result.regime = model::Regime::immediate;
+    result.t_star = 0.0;
+    result.t_star_upper = 0.0;
+  }
+  // The last two states with level 2 free, (t, tip gap), for extrapolating t*.
+  double t_a = 0.0, g_a = 0.0;
+  double t_b = 0.0, g_b = tip2_gap(cell, stepper);
+  bool have_a = false;
+  auto remember_free_state = [&]() {
+    t_a = t_b;
+    g_a = g_b;
+    have_a = true;
+    t_b = stepper.time();
+    g_b = tip2_gap(cell, stepper);
+  };
+
+  double dt = options.steps.first_step;
+  for (const double target : targets) {
+    while (stepper.time() < target) {
+      const double t_next = std::min(stepper.time() + dt, target);
+      if (touched) {
+        log(stepper.advance(t_next));
+        ++result.steps;
+      } else {
+        ViscoelasticStepper::Checkpoint free_state = stepper.checkpoint();
+        log(stepper.advance(t_next));
+        ++result.steps;
+        if (level2_loaded(cell, stepper.pressure())) {
+          // Bisect the step that first loads level 2, keeping the states with level 2 free.
+          double lo = free_state.t;
+          double hi = t_next;
+          while (hi - lo > options.t_star_resolution) {
+            const double mid = 0.5 * (lo + hi);
+            if (stepper.time() != lo) stepper.rewind(free_state);
+            log(stepper.advance(mid));
+            if (level2_loaded(cell, stepper.pressure())) {
+              hi = mid;
+            } else {
+              lo = mid;
+              ++result.steps;
+              remember_free_state();
+              free_state = stepper.checkpoint();
+            }
+          }
+          // A state at hi was reached from the latest free state in one step: keep it. Only
+          // when the last trial left level 2 free is the step to hi taken again.
+          if (stepper.time() == lo) log(stepper.advance(hi));
+          touched = level2_loaded(cell, stepper.pressure());
+          if (touched) {
+            result.regime = model::Regime::delayed;
+            result.t_star_lower = lo;
+            result.t_star_upper = hi;
+            double t_star = 0.5 * (lo + hi);
+            if (have_a && g_a > g_b && t_b > t_a) {
+              t_star = t_b + g_b * (t_b - t_a) / (g_a - g_b);  // secant on the tip gap
+            }
+            result.t_star = std::clamp(t_star, lo, hi);
+          } else {
+            remember_free_state();
+          }
+        } else {
+          remember_free_state();
+        }
+      }
+      dt = std::min(dt * options.steps.growth, options.steps.max_step);
+    }
+    at_target.push_back(measure_state(cell, stepper.pressure(), stepper.displacement(), target));
+  }
+
+  if (!touched) {
+    result.t_star_lower = stepper.time();
+    // Beyond the horizon: the long-term contact set is the elastic one at J(inf).
+    const double J_inf = creep.creep_final();
+    if (std::isfinite(J_inf)) {
+      ContactSolver solver(cell.grid, options.solver);
+      std::vector<double> p(stepper.pressure().begin(), stepper.pressure().end());
+      std::vector<double> u(p.size());
+      log(solver.solve(cell.profile, problem.pbar0, J_inf, p, u));
+      result.regime = level2_loaded(cell, p) ? model::Regime::delayed : model::Regime::never;
+    } else {
+      result.regime = model::Regime::delayed;
+    }
+  }
+
+  result.series.reserve(options.times.size());
+  for (const double t : options.times) {
+    const auto it = std::lower_bound(targets.begin(), targets.end(), t);
+    result.series.push_back(at_target[static_cast<std::size_t>(it - targets.begin())]);
+  }
+  return result;
+}
+
+double elastic_touchdown_compliance(const model::ContactProblem& problem, int n, double J_lo,
+                                    double J_hi, double width,
+                                    const ContactSolverOptions& options) {
+  const TwoLevelCell cell = make_two_level_cell(problem, n);
+  ContactSolver solver(cell.grid, options);
+  std::vector<double> p(cell.grid.size(), problem.pbar0);
+  std::vector<double> u(cell.grid.size());
+  auto loaded_at = [&](double J) {
+    std::fill(p.begin(), p.end(), problem.pbar0);
+    solver.solve(cell.profile, problem.pbar0, J, p, u);
+    return level2_loaded(cell, p);
+  };
+  if (loaded_at(J_lo)) return J_lo;
+  if (!loaded_at(J_hi)) return std::numeric_limits<double>::infinity();
+  while (J_hi - J_lo > width) {
+    const double mid = 0.5 * (J_lo + J_hi);
+    if (loaded_at(mid))
+      J_hi = mid;
+    else
+      J_lo = mid;
+  }
+  return 0.5 * (J_lo + J_hi);
+}
+
+}  // namespace punchsweep::reference

@@ -1,0 +1,161 @@
+#include "reference/viscoelastic_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "model/gauss_legendre.hpp"
+#include "model/standard_linear_solid.hpp"
+
+namespace punchsweep::reference {
+
+namespace {
+
+/// Points of the Gauss-Legendre rule for the step weights: exact for polynomials of degree
+/// 15, so to round-off for the exponential J of the standard linear solid over steps <= 1.
+constexpr int kWeightQuadraturePoints = 8;
+
+CreepHistoryForm natural_form(const model::CreepLaw& creep) {
+  return dynamic_cast<const model::StandardLinearSolid*>(&creep) != nullptr
+             ? CreepHistoryForm::exponential
+             : CreepHistoryForm::convolution;
+}
+
+}  // namespace
+
+ViscoelasticStepper::ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile,
+                                         double mean_pressure, const model::CreepLaw& creep,
+                                         ContactSolverOptions options)
+    : ViscoelasticStepper(grid, std::move(profile), mean_pressure, creep, options,
+                          natural_form(creep)) {}
+
+ViscoelasticStepper::ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile,
+                                         double mean_pressure, const model::CreepLaw& creep,
+                                         ContactSolverOptions options, CreepHistoryForm form)
+    : solver_(grid, options),
+      profile_(std::move(profile)),
+      pbar0_(mean_pressure),
+      creep_(creep),
+      form_(form),
+      p_(grid.size(), mean_pressure),
+      w_(grid.size()),
+      u_(grid.size()),
+      w_hist_(grid.size()),
+      shifted_profile_(grid.size()),
+      u_hist_(grid.size()) {
+  if (profile_.size() != grid.size()) {
+    throw std::invalid_argument("ViscoelasticStepper: profile size differs from the grid");
+  }
+  if (!(mean_pressure > 0.0)) throw std::invalid_argument("ViscoelasticStepper: pbar0 must be > 0");
+  if (form_ == CreepHistoryForm::exponential) {
+    const auto* sls = dynamic_cast<const model::StandardLinearSolid*>(&creep);
+    if (sls == nullptr) {
+      throw std::invalid_argument(
+          "ViscoelasticStepper: the exponential form needs a standard linear solid");
+    }
+    T_ = sls->creep_ratio();
+  }
+}
+
+double ViscoelasticStepper::mean_creep(double t_end, double a, double b) const {
+  const model::GaussLegendreRule& rule = model::gauss_legendre(kWeightQuadraturePoints);
+  const double mid = 0.5 * (a + b);
+  const double half = 0.5 * (b - a);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < rule.nodes.size(); ++k) {
+    sum += rule.weights[k] * creep_.creep(t_end - (mid + half * rule.nodes[k]));
+  }
+  return 0.5 * sum;
+}
+
+double ViscoelasticStepper::step_compliance(double dt) const {
+  if (form_ == CreepHistoryForm::exponential) {
+    const double b = -std::expm1(-dt) / dt;
+    return T_ - (T_ - 1.0) * b;
+  }
+  return mean_creep(t_ + dt, t_, t_ + dt);
+}
+
+ContactStatus ViscoelasticStepper::start() {
+  const double J0 = creep_.creep(0.0);
+  std::fill(p_.begin(), p_.end(), pbar0_);
+  const ContactStatus status = solver_.solve(profile_, pbar0_, J0, p_, u_);
+  t_ = 0.0;
+  approach_ = status.approach;
+  for (std::size_t i = 0; i < p_.size(); ++i) w_[i] = J0 * p_[i];
+  if (form_ == CreepHistoryForm::exponential) {
+    q_ = p_;  // q(0+) = p(0): the load is applied as a step at t = 0
+  } else {
+    times_.assign(1, 0.0);
+    history_.assign(1, p_);
+  }
+  started_ = true;
+  return status;
+}
+
+ContactStatus ViscoelasticStepper::advance(double t_next) {
+  if (!started_) throw std::logic_error("ViscoelasticStepper::advance before start");
+  const double dt = t_next - t_;
+  if (!(dt > 0.0)) throw std::invalid_argument("ViscoelasticStepper::advance: t_next <= time()");
+  const std::size_t n = p_.size();
+  const double J_step = step_compliance(dt);
+
+  // History part of w(t_next): everything but J_step p(t_next).
+  double decay = 0.0;
+  double ramp = 0.0;
+  if (form_ == CreepHistoryForm::exponential) {
+    decay = std::exp(-dt);
+    ramp = -std::expm1(-dt) / dt;
+    for (std::size_t i = 0; i < n; ++i) w_hist_[i] = (T_ - 1.0) * (ramp * p_[i] - decay * q_[i]);
+  } else {
+    const double J_jump = creep_.creep(t_next);  // the step load p(t_0) at t_0 = 0
+    const std::vector<double>& p0 = history_.front();
+    for (std::size_t i = 0; i < n; ++i) w_hist_[i] = J_jump * p0[i] - J_step * p_[i];
+    for (std::size_t k = 0; k + 1 < times_.size(); ++k) {
+      const double c = mean_creep(t_next, times_[k], times_[k + 1]);
+      const std::vector<double>& pa = history_[k];
+      const std::vector<double>& pb = history_[k + 1];
+      for (std::size_t i = 0; i < n; ++i) w_hist_[i] += c * (pb[i] - pa[i]);
+    }
+  }
+  solver_.influence().apply(w_hist_, u_hist_);
+  for (std::size_t i = 0; i < n; ++i) shifted_profile_[i] = profile_[i] + u_hist_[i];
+
+  std::vector<double> p_next = p_;  // warm start from the present pressure
+  const ContactStatus status = solver_.solve(shifted_profile_, pbar0_, J_step, p_next, u_);
+  for (std::size_t i = 0; i < n; ++i) {
+    u_[i] += u_hist_[i];
+    w_[i] = J_step * p_next[i] + w_hist_[i];
+  }
+  if (form_ == CreepHistoryForm::exponential) {
+    for (std::size_t i = 0; i < n; ++i) q_[i] = decay * q_[i] + ramp * (p_next[i] - p_[i]);
+  } else {
+    times_.push_back(t_next);
+    history_.push_back(p_next);
+  }
+  p_ = std::move(p_next);
+  t_ = t_next;
+  approach_ = status.approach;
+  return status;
+}
+
+ViscoelasticStepper::Checkpoint ViscoelasticStepper::checkpoint() const {
+  return Checkpoint{t_, p_, w_, u_, q_, approach_, times_.size()};
+}
+
+void ViscoelasticStepper::rewind(const Checkpoint& saved) {
+  if (saved.history_length > times_.size() || saved.p.size() != p_.size()) {
+    throw std::invalid_argument("ViscoelasticStepper::rewind: not a checkpoint of this history");
+  }
+  t_ = saved.t;
+  p_ = saved.p;
+  w_ = saved.w;
+  u_ = saved.u;
+  q_ = saved.q;
+  approach_ = saved.approach;
+  times_.resize(saved.history_length);
+  history_.resize(saved.history_length);
+}
+
+}  // namespace punchsweep::reference
