@@ -5,6 +5,7 @@
 
 #include "app/curve_commands.hpp"
 #include "app/point_command.hpp"
+#include "app/reference_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/usage_error.hpp"
 #include "app/version.hpp"
@@ -20,7 +21,8 @@ constexpr const char* kTopHelp =
     "  sweep      evaluate a 5-D grid over (l, dh, T, pbar, s) on MPI ranks into an HDF5\n"
     "             regime map (mpirun -np N punchsweep sweep --config F.ini)\n"
     "  single-level  h(a1), a1(t), h(t) of the single-level phase (Figs. 9.2, 9.3)\n"
-    "  elastic    the elastic two-level problem with free radii A_i (Table 9.1)\n\n"
+    "  elastic    the elastic two-level problem with free radii A_i (Table 9.1)\n"
+    "  reference  one point by the periodic boundary-element solver (the model's check)\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -47,8 +49,9 @@ int main(int argc, char** argv) {
     if (args[0] == "sweep") return punchsweep::app::run_sweep_command(rest);
     if (args[0] == "single-level") return punchsweep::app::run_single_level_command(rest, std::cout);
     if (args[0] == "elastic") return punchsweep::app::run_elastic_command(rest, std::cout);
+    if (args[0] == "reference") return punchsweep::app::run_reference_command(rest, std::cout);
     throw UsageError("unknown command '" + args[0] +
-                     "' (commands: point, sweep, single-level, elastic; see punchsweep --help)");
+                     "' (commands: point, sweep, single-level, elastic, reference; see punchsweep --help)");
   } catch (const UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::app::kUsageExitCode;

@@ -206,3 +206,15 @@ TEST(Cli, new_commands_refuse_bad_input) {
   expect_refused_command("single-level --l 0.75 --s 0", "--s", "[1, 32]");
   expect_refused_command("single-level --l 0.75 --s 2 --pbar 0.01 --T 0.5", "--T", ">= 1");
 }
+
+TEST(Cli, reference_command_solves_a_point_on_a_grid) {
+  // The paper's Fig. 9.5b points on a coarse grid: the regimes of the full solution.
+  for (const auto& [dh, regime] : {std::pair{"0.05", "immediate"}, {"0.075", "delayed"}, {"0.1", "never"}}) {
+    const CliRun r = run_cli(std::string("reference --l 0.75 --dh ") + dh + " --T 2.5 --pbar 0.06 --s 2 --bem-grid 48");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(std::string("\"regime\": \"") + regime + "\""), std::string::npos) << dh;
+    const auto P1 = json_array_of(r.out, "P1"), P2 = json_array_of(r.out, "P2");
+    for (std::size_t i = 0; i < P1.size(); ++i) EXPECT_NEAR(P1[i] + P2[i], 0.06 * 0.75 * 0.75, 1e-12);
+  }
+  expect_refused_command("reference --l 0.75 --dh 0.05 --T 2.5 --pbar 0.06 --s 2 --bem-grid 33", "--bem-grid", "even");
+}

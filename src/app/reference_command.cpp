@@ -1,0 +1,106 @@
+#include "app/reference_command.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "app/command_options.hpp"
+#include "app/usage_error.hpp"
+#include "model/standard_linear_solid.hpp"
+#include "reference/reference_point.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+template <class Field>
+std::string series_array(const reference::ReferenceResult& r, Field field) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < r.series.size(); ++i) text += (i ? ", " : "") + json_number(field(r.series[i]));
+  return text + "]";
+}
+
+}  // namespace
+
+int run_reference_command(const std::vector<std::string>& args, std::ostream& out) {
+  po::options_description opts(
+      "punchsweep reference: one parameter point solved by the periodic boundary-element\n"
+      "reference solver (the full two-level contact problem on an N x N grid of the l x l\n"
+      "cell, FFT influence, constrained conjugate gradient, viscoelastic creep stepping),\n"
+      "with the inputs and series of `punchsweep point`, to hold the localization model to.\n\n"
+      "Units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps.\n\n"
+      "Options");
+  opts.add_options()
+      ("help", "print this help and exit")
+      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0")
+      ("dh", po::value<std::string>()->value_name("DH"), "height difference, in R; required; dh >= 0")
+      ("T", po::value<std::string>()->value_name("T"), "creep ratio T_eps/T_sigma; required; T >= 1")
+      ("pbar", po::value<std::string>()->value_name("P"), "nominal pressure, in E0*; required; pbar > 0")
+      ("s", po::value<std::string>()->value_name("S"), "shape exponent; required; an integer in [1, 32]")
+      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"), "shape constant C; C > 0")
+      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
+       "snapshot times, comma-separated, in T_eps; each >= 0")
+      ("bem-grid", po::value<std::string>()->value_name("N")->default_value("128"),
+       "grid nodes per side N (the cell spacing is l/N); an even integer in [16, 2048]")
+      ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or table");
+  const po::variables_map vm = parse_command(args, opts, "reference");
+  if (vm.count("help")) {
+    out << "usage: punchsweep reference --l L --dh DH --T T --pbar P --s S [--bem-grid N] [options]\n\n" << opts
+        << "\nRadii are equivalent radii sqrt(area / pi) of the nodes in contact: their error is of\n"
+           "order one grid spacing (about 1% needs a/h >= 15).\n";
+    return 0;
+  }
+  model::ContactProblem problem;
+  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
+  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
+  const double T = read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
+                             [](double v) { return model::creep_ratio_error(v).empty(); });
+  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
+  problem.shape = read_shape(vm);
+  reference::ReferenceOptions options;
+  options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+  options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
+                                         [](double v) { return v >= 16 && v <= 2048 && std::fmod(v, 2.0) == 0.0; }));
+  const std::string format = read_choice(vm, "format", {"json", "table"});
+
+  const model::StandardLinearSolid creep(T);
+  const auto start = std::chrono::steady_clock::now();
+  const reference::ReferenceResult r = reference::evaluate_reference_point(problem, creep, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string regime(model::regime_name(r.regime));
+  if (format == "table") {
+    char line[200];
+    out << "punchsweep reference: l = " << json_number(problem.l) << " R, dh = " << json_number(problem.dh)
+        << " R, T = " << json_number(T) << ", pbar0 = " << json_number(problem.pbar0) << " E0*, s = " << problem.shape.s
+        << ", C = " << json_number(problem.shape.C) << "; grid " << options.n << " x " << options.n << " (h = "
+        << json_number(r.spacing) << " R)\n  regime " << regime << ", t_star "
+        << (r.t_star ? json_number(*r.t_star) + " T_eps" : "none") << ", converged " << (r.converged ? "yes" : "no")
+        << ", " << r.steps << " steps, " << r.solves << " solves, " << json_number(seconds) << " s\n"
+        << "   t [T_eps]      a1 [R]      a2 [R]   P1 [R^2 E0*]   P2 [R^2 E0*]  area_fraction\n";
+    for (const auto& s : r.series) {
+      std::snprintf(line, sizeof line, "%12.4f%12.7f%12.7f%15.9f%15.9f%15.7f\n", s.t, s.a1, s.a2, s.P1, s.P2,
+                    s.area_fraction);
+      out << line;
+    }
+    return 0;
+  }
+  out << "{\n  \"regime\": \"" << regime << "\",\n  \"t_star\": " << (r.t_star ? json_number(*r.t_star) : "null")
+      << ",\n  \"t_star_lower\": " << json_number(r.t_star_lower) << ",\n  \"t_star_upper\": "
+      << json_number(r.t_star_upper) << ",\n  \"converged\": " << (r.converged ? "true" : "false")
+      << ",\n  \"bem_grid\": " << options.n << ",\n  \"spacing\": " << json_number(r.spacing)
+      << ",\n  \"steps\": " << r.steps << ",\n  \"solves\": " << r.solves << ",\n  \"seconds\": " << json_number(seconds)
+      << ",\n  \"series\": {\n    \"t\": " << series_array(r, [](const auto& s) { return s.t; })
+      << ",\n    \"a1\": " << series_array(r, [](const auto& s) { return s.a1; })
+      << ",\n    \"a2\": " << series_array(r, [](const auto& s) { return s.a2; })
+      << ",\n    \"P1\": " << series_array(r, [](const auto& s) { return s.P1; })
+      << ",\n    \"P2\": " << series_array(r, [](const auto& s) { return s.P2; })
+      << ",\n    \"area_fraction\": " << series_array(r, [](const auto& s) { return s.area_fraction; })
+      << ",\n    \"h\": " << series_array(r, [](const auto& s) { return s.h; }) << "\n  }\n}\n";
+  return 0;
+}
+
+}  // namespace punchsweep::app
