@@ -23,23 +23,19 @@ Progress::Progress(std::ostream& out, std::size_t total_points, bool quiet)
     : out_(out), total_(total_points), quiet_(quiet), start_(std::chrono::steady_clock::now()),
       last_print_(start_) {}
 
-void Progress::count(const io::TileData& data) {
-  for (const std::int8_t r : data.regime) {
-    if (r >= 0 && r < 3) ++regimes_[static_cast<std::size_t>(r)];
-  }
-  for (const std::int8_t v : data.valid) {
-    if (v >= 0 && v < 4) ++validity_[static_cast<std::size_t>(v)];
-  }
+void Progress::count(const io::TileSummary& summary) {
+  for (std::size_t r = 0; r < regimes_.size(); ++r) regimes_[r] += summary.regimes[r];
+  for (std::size_t v = 0; v < validity_.size(); ++v) validity_[v] += summary.validity[v];
 }
 
-void Progress::restored(const io::TileData& data) {
-  count(data);
-  restored_points_ += data.regime.size();
+void Progress::restored(const io::EncodedTile& tile) {
+  count(tile.summary);
+  restored_points_ += tile.summary.points;
 }
 
-void Progress::computed(const io::TileData& data) {
-  count(data);
-  computed_points_ += data.regime.size();
+void Progress::computed(const io::EncodedTile& tile) {
+  count(tile.summary);
+  computed_points_ += tile.summary.points;
   const auto now = std::chrono::steady_clock::now();
   if (quiet_ || now - last_print_ < std::chrono::seconds(1)) return;
   last_print_ = now;

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <iosfwd>
 
-#include "io/tile_data.hpp"
+#include "io/encoded_tile.hpp"
 
 namespace punchsweep::app {
 
@@ -15,10 +15,11 @@ class Progress {
  public:
   Progress(std::ostream& out, std::size_t total_points, bool quiet);
 
-  /// Counts a tile restored from the journal (not computed by this run).
-  void restored(const io::TileData& data);
-  /// Counts a tile computed by this run and prints a line if a second has passed.
-  void computed(const io::TileData& data);
+  /// Counts a tile restored from the journal (not computed by this run), from its summary.
+  void restored(const io::EncodedTile& tile);
+  /// Counts a tile computed by this run, from its summary, and prints a line if a second
+  /// has passed.
+  void computed(const io::EncodedTile& tile);
 
   std::size_t points_done() const { return restored_points_ + computed_points_; }
   std::size_t points_computed() const { return computed_points_; }
@@ -29,7 +30,7 @@ class Progress {
   void print_summary(int ranks) const;
 
  private:
-  void count(const io::TileData& data);
+  void count(const io::TileSummary& summary);
 
   std::ostream& out_;
   std::size_t total_;

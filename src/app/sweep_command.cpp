@@ -26,6 +26,7 @@
 #include "app/version.hpp"
 #include "io/map_size.hpp"
 #include "io/regime_map_writer.hpp"
+#include "io/tile_encoder.hpp"
 #include "io/tile_journal.hpp"
 #include "sweep/scheduler.hpp"
 #include "sweep/tile_evaluator.hpp"
@@ -219,9 +220,9 @@ void print_dry_run(const sweep::SweepConfig& config, const sweep::Tiling& tiling
 
 /// Rank 0's part of the run: files, journal replay, sink, finish. Returns the exit code.
 int manage(const sweep::SweepConfig& config, const std::vector<std::string>& args, Start start,
-           const sweep::Tiling& tiling, const sweep::TileEvaluator& evaluator, int ranks) {
+           const sweep::Tiling& tiling, const sweep::TileEvaluator& evaluator, io::TileEncoder& encoder,
+           int ranks) {
   const OutputPaths paths(config.output);
-  io::MapLayout layout{config.grid, config.times, config.quantities, tiling.chunk()};
   io::MapAttributes attributes;
   attributes.title = "punchsweep regime map: two-level punch system on a viscoelastic half-space";
   attributes.source = std::string("punchsweep ") + kVersion + " (git " + kGitRevision + ")";
@@ -231,16 +232,16 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   attributes.C = config.C;
 
   // The HDF5 file is always rebuilt: after kill -9 it may be damaged, the journal not.
-  io::RegimeMapWriter writer(paths.partial, layout, attributes);
+  io::RegimeMapWriter writer(paths.partial, encoder.layout(), attributes);
   Progress progress(std::cerr, config.grid.points(), config.quiet);
   std::vector<bool> done(tiling.tiles(), false);
   std::optional<io::TileJournal> journal;
   if (start == Start::resume) {
-    const std::size_t good_end = io::TileJournal::replay(paths.journal, [&](std::uint64_t tile, const io::TileData& data) {
-      if (tile >= done.size() || done[tile]) return;
-      writer.write_tile(tiling.box(tile), data);
-      done[tile] = true;
-      progress.restored(data);
+    const std::size_t good_end = io::TileJournal::replay(paths.journal, [&](const io::EncodedTile& tile) {
+      if (tile.tile >= done.size() || done[tile.tile]) return;
+      writer.write_encoded(tiling.box(tile.tile), tile);
+      done[tile.tile] = true;
+      progress.restored(tile);
     });
     journal = io::TileJournal::open_for_append(paths.journal, good_end);
     if (!config.quiet) {
@@ -256,10 +257,10 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   }
 
   auto last_flush = std::chrono::steady_clock::now();
-  const sweep::TileSink sink = [&](std::size_t tile, const io::TileData& data) {
-    journal->append(tile, data);
-    writer.write_tile(tiling.box(tile), data);
-    progress.computed(data);
+  const sweep::TileSink sink = [&](const io::EncodedTile& tile) {
+    journal->append(tile);
+    writer.write_encoded(tiling.box(tile.tile), tile);
+    progress.computed(tile);
     const auto now = std::chrono::steady_clock::now();
     if (now - last_flush > std::chrono::seconds(30)) {
       writer.flush();  // lets a user peek at the .partial file; the journal is what resume trusts
@@ -267,7 +268,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
     }
   };
   const sweep::ScheduleResult result =
-      sweep::run_schedule(MPI_COMM_WORLD, tiling, evaluator, pending, sink, &g_stop_signal);
+      sweep::run_schedule(MPI_COMM_WORLD, tiling, evaluator, encoder, pending, sink, &g_stop_signal);
 
   if (result.interrupted) {
     writer.flush();
@@ -336,10 +337,12 @@ int run_sweep_command(const std::vector<std::string>& args) {
   for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_stop_signal);
   int code = 0;
   try {
+    // Every rank encodes the tiles it computes into the map's chunks.
+    io::TileEncoder encoder(io::MapLayout{config.grid, config.times, config.quantities, tiling.chunk()});
     if (root) {
-      code = manage(config, args, start, tiling, evaluator, mpi.size());
+      code = manage(config, args, start, tiling, evaluator, encoder, mpi.size());
     } else {
-      sweep::run_schedule(MPI_COMM_WORLD, tiling, evaluator, {}, {}, &g_stop_signal);
+      sweep::run_schedule(MPI_COMM_WORLD, tiling, evaluator, encoder, {}, {}, &g_stop_signal);
     }
   } catch (const std::exception& e) {
     std::cerr << "punchsweep sweep: rank " << mpi.rank() << ": " << e.what() << "\n";

@@ -2,49 +2,18 @@
 
 #include <H5DSpublic.h>
 
-#include <bit>
+#include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <string>
+
+#include "io/map_variables.hpp"
 
 namespace punchsweep::io {
 
 namespace {
-
-/// One data variable of the map and the TileData array it comes from.
-struct VariableSpec {
-  const char* name;
-  bool series;        ///< over (l, dh, T, pbar, s, time) rather than the 5 axes
-  const char* units;  ///< nullptr for the flag variables, which have none
-  const char* long_name;
-  const char* comment;                        ///< nullptr when there is none
-  std::vector<std::int8_t> TileData::*codes;  ///< int8 source, or nullptr
-  std::vector<double> TileData::*values;      ///< float64 source, or nullptr
-};
-
-constexpr std::array<VariableSpec, 13> kVariables{{
-    {"regime", false, nullptr, "contact regime of the level-2 punches", nullptr, &TileData::regime, nullptr},
-    {"valid", false, nullptr, "validity of the localization method", nullptr, &TileData::valid, nullptr},
-    {"t_star", false, "T_eps", "time at which the level-2 punches touch",
-     "0 for the immediate regime, NaN for never", nullptr, &TileData::t_star},
-    {"h_0", false, "R", "displacement difference between punch tip and square centre at t = 0", nullptr,
-     nullptr, &TileData::h_0},
-    {"h_inf", false, "R", "displacement difference between punch tip and square centre as t -> infinity",
-     nullptr, nullptr, &TileData::h_inf},
-    {"a1_inf", false, "R", "long-term contact radius of a level-1 punch", nullptr, nullptr,
-     &TileData::a1_inf},
-    {"a2_inf", false, "R", "long-term contact radius of a level-2 punch", nullptr, nullptr,
-     &TileData::a2_inf},
-    {"area_fraction_inf", false, "1", "long-term contact area fraction", nullptr, nullptr,
-     &TileData::area_fraction_inf},
-    {"a1", true, "R", "contact radius of a level-1 punch", nullptr, nullptr, &TileData::a1},
-    {"a2", true, "R", "contact radius of a level-2 punch", nullptr, nullptr, &TileData::a2},
-    {"P1", true, "R^2 E0/(1-nu^2)", "load on one level-1 punch", nullptr, nullptr, &TileData::P1},
-    {"P2", true, "R^2 E0/(1-nu^2)", "load on one level-2 punch", nullptr, nullptr, &TileData::P2},
-    {"area_fraction", true, "1", "contact area fraction", nullptr, nullptr, &TileData::area_fraction},
-}};
 
 // The codes are a file-format contract (README, "Validity"); never renumber them.
 constexpr std::array<std::int8_t, 4> kRegimeFlags{0, 1, 2, -1};
@@ -52,9 +21,6 @@ constexpr const char* kRegimeMeanings = "immediate delayed never not_computed";
 constexpr std::array<std::int8_t, 5> kValidFlags{0, 1, 2, 3, -1};
 constexpr const char* kValidMeanings =
     "valid same_level_overlap cross_level_overlap no_solution not_computed";
-
-constexpr std::int8_t kNotComputed = -1;
-constexpr unsigned kDeflateLevel = 1;  // level 1: the sweep must write > 2e6 points/s
 
 struct CoordinateSpec {
   const char* units;
@@ -99,30 +65,6 @@ void write_double_attribute(hid_t object, const char* name, double value, const 
   write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value, 0, where);
 }
 
-/// Copies a tile at the grid's edge into a whole chunk (row-major over `chunk`, `inner`
-/// values per point), with `fill` in the part that lies outside the grid.
-void pad_to_chunk(const std::byte* tile, std::size_t element, const void* fill, std::size_t inner,
-                  const std::array<std::size_t, sweep::kAxes>& count,
-                  const std::array<std::size_t, sweep::kAxes>& chunk, std::vector<std::byte>* out) {
-  std::size_t values = inner;
-  for (const std::size_t c : chunk) values *= c;
-  out->resize(values * element);
-  for (std::size_t i = 0; i < values; ++i) std::memcpy(out->data() + i * element, fill, element);
-  const std::size_t run = count[4] * inner * element;  // the fastest axis is contiguous in both
-  const std::byte* from = tile;
-  for (std::size_t i0 = 0; i0 < count[0]; ++i0) {
-    for (std::size_t i1 = 0; i1 < count[1]; ++i1) {
-      for (std::size_t i2 = 0; i2 < count[2]; ++i2) {
-        for (std::size_t i3 = 0; i3 < count[3]; ++i3) {
-          const std::size_t to = (((i0 * chunk[1] + i1) * chunk[2] + i2) * chunk[3] + i3) * chunk[4];
-          std::memcpy(out->data() + to * inner * element, from, run);
-          from += run;
-        }
-      }
-    }
-  }
-}
-
 /// How an axis is spaced, for plots: see the class comment in the header.
 const char* axis_spacing(const sweep::Axis& axis) {
   if (axis.log_spaced) return "log";
@@ -140,24 +82,7 @@ const char* axis_spacing(const sweep::Axis& axis) {
 
 RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layout,
                                  const MapAttributes& attributes)
-    : path_(path),
-      shape_(layout.grid.shape()),
-      chunk_(layout.chunk),
-      times_(layout.times.size()),
-      full_(layout.quantities == sweep::Quantities::full),
-      compressor_(static_cast<int>(kDeflateLevel)) {
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    if (shape_[a] == 0)
-      throw std::invalid_argument(std::string("regime map: axis ") + sweep::kAxisNames[a] + " is empty");
-    if (layout.chunk[a] < 1 || layout.chunk[a] > shape_[a]) {
-      throw std::invalid_argument(std::string("regime map: chunk length ") + std::to_string(layout.chunk[a]) +
-                                  " on axis " + sweep::kAxisNames[a] + " is outside [1, " +
-                                  std::to_string(shape_[a]) + "]");
-    }
-  }
-  if (full_ && times_ == 0)
-    throw std::invalid_argument("regime map: the full quantities need at least one time");
-
+    : path_(path), encoder_(layout) {  // the encoder checks the layout before any file exists
   // Our exceptions name the file and the operation; HDF5's own stack dump would only
   // bury them (this is process-wide, and nothing in punchsweep wants the dump).
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -193,16 +118,17 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   }
   create_coordinate("time", layout.times, "T_eps", "snapshot time");
 
+  const auto shape = layout.grid.shape();
   std::array<hsize_t, sweep::kAxes + 1> dims{};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) dims[a] = shape_[a];
-  dims[sweep::kAxes] = times_;
+  for (std::size_t a = 0; a < sweep::kAxes; ++a) dims[a] = shape[a];
+  dims[sweep::kAxes] = layout.times.size();
   space5_ =
       Handle(H5Screate_simple(sweep::kAxes, dims.data(), nullptr), H5Sclose, "make 5-D dataspace " + in);
   space6_ =
       Handle(H5Screate_simple(sweep::kAxes + 1, dims.data(), nullptr), H5Sclose, "make 6-D dataspace " + in);
 
   for (const VariableSpec& spec : kVariables) {
-    if (spec.series && !full_) continue;
+    if (!is_stored(spec, layout)) continue;
     Handle dataset = create_variable(spec.name, spec.codes != nullptr, spec.series);
     const std::string where = std::string("on '") + spec.name + "' " + in;
     const std::size_t rank = spec.series ? sweep::kAxes + 1 : sweep::kAxes;
@@ -255,9 +181,10 @@ Handle RegimeMapWriter::create_variable(const std::string& name, bool codes, boo
   const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
   check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
         "set attribute order of " + where);
+  const MapLayout& layout = encoder_.layout();
   std::array<hsize_t, sweep::kAxes + 1> chunk{};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) chunk[a] = chunk_[a];
-  chunk[sweep::kAxes] = times_;
+  for (std::size_t a = 0; a < sweep::kAxes; ++a) chunk[a] = layout.chunk[a];
+  chunk[sweep::kAxes] = layout.times.size();
   const int rank = series ? sweep::kAxes + 1 : sweep::kAxes;
   check(H5Pset_chunk(dcpl, rank, chunk.data()), "set chunk shape of " + where);
   check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
@@ -281,69 +208,32 @@ void RegimeMapWriter::require_open(const char* operation) const {
 
 void RegimeMapWriter::write_tile(const sweep::TileBox& box, const TileData& data) {
   require_open("write_tile");
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    if (box.count[a] == 0 || box.start[a] + box.count[a] > shape_[a]) {
-      throw std::invalid_argument(std::string("regime map: tile range [") + std::to_string(box.start[a]) +
-                                  ", " + std::to_string(box.start[a] + box.count[a]) + ") on axis " +
-                                  sweep::kAxisNames[a] + " is empty or outside [0, " +
-                                  std::to_string(shape_[a]) + ")");
-    }
-  }
-  const std::size_t points = box.points();
-  const std::size_t series = full_ ? points * times_ : 0;
-  for (const VariableSpec& spec : kVariables) {
-    const std::size_t expected = spec.series ? series : points;
-    const std::size_t size = spec.codes != nullptr ? (data.*spec.codes).size() : (data.*spec.values).size();
-    if (size != expected) {
-      throw std::invalid_argument(std::string("regime map: tile array ") + spec.name + " has " +
-                                  std::to_string(size) + " values, the tile needs " +
-                                  std::to_string(expected));
-    }
-  }
-
-  if (is_one_chunk(box)) {
-    write_chunk(box, data);
+  const MapLayout& layout = encoder_.layout();
+  require_inside_grid(layout, box);
+  require_tile_arrays(layout, box.points(), data);
+  if (is_one_chunk(layout, box)) {
+    write_encoded(box, encoder_.encode(0, box, data));  // the tile index is not stored in the map
   } else {
     write_hyperslab(box, data);
   }
 }
 
-bool RegimeMapWriter::is_one_chunk(const sweep::TileBox& box) const {
-  // Encoded chunks hold the file's little-endian bytes, which only a little-endian host has.
-  if constexpr (std::endian::native != std::endian::little) return false;
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    if (box.start[a] % chunk_[a] != 0) return false;
-    const bool whole = box.count[a] == chunk_[a];
-    const bool rest_of_grid = box.count[a] < chunk_[a] && box.start[a] + box.count[a] == shape_[a];
-    if (!whole && !rest_of_grid) return false;
+void RegimeMapWriter::write_encoded(const sweep::TileBox& box, const EncodedTile& tile) {
+  require_open("write_encoded");
+  require_one_chunk(encoder_.layout(), box);
+  if (tile.chunks.size() != variables_.size() || tile.summary.points != box.points()) {
+    throw std::invalid_argument("regime map: encoded tile " + std::to_string(tile.tile) + " has " +
+                                std::to_string(tile.chunks.size()) + " chunks and " +
+                                std::to_string(tile.summary.points) + " points, the map needs " +
+                                std::to_string(variables_.size()) + " chunks and the box has " +
+                                std::to_string(box.points()) + " points");
   }
-  return true;
-}
-
-void RegimeMapWriter::write_chunk(const sweep::TileBox& box, const TileData& data) {
   std::array<hsize_t, sweep::kAxes + 1> offset{};
   for (std::size_t a = 0; a < sweep::kAxes; ++a) offset[a] = box.start[a];
-  const bool edge = box.count != chunk_;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::size_t v = 0;
-  for (const VariableSpec& spec : kVariables) {
-    if (spec.series && !full_) continue;
-    const bool codes = spec.codes != nullptr;
-    const std::size_t element = codes ? sizeof(std::int8_t) : sizeof(double);
-    const std::size_t inner = spec.series ? times_ : 1;
-    const auto* tile = codes ? reinterpret_cast<const std::byte*>((data.*spec.codes).data())
-                             : reinterpret_cast<const std::byte*>((data.*spec.values).data());
-    std::span<const std::byte> encoded;
-    if (edge) {
-      const void* fill = codes ? static_cast<const void*>(&kNotComputed) : static_cast<const void*>(&nan);
-      pad_to_chunk(tile, element, fill, inner, box.count, chunk_, &padded_);
-      encoded = compressor_.compress(padded_.data(), padded_.size(), element);
-    } else {
-      encoded = compressor_.compress(tile, box.points() * inner * element, element);
-    }
-    check(H5Dwrite_chunk(variables_[v], H5P_DEFAULT, 0, offset.data(), encoded.size(), encoded.data()),
-          std::string("write a chunk of variable '") + spec.name + "' to " + path_);
-    ++v;
+  for (std::size_t v = 0; v < variables_.size(); ++v) {  // variables_[v] is kVariables[v]
+    check(H5Dwrite_chunk(variables_[v], H5P_DEFAULT, 0, offset.data(), tile.chunks[v].size(),
+                         tile.chunks[v].data()),
+          std::string("write a chunk of variable '") + kVariables[v].name + "' to " + path_);
   }
 }
 
@@ -354,14 +244,15 @@ void RegimeMapWriter::write_hyperslab(const sweep::TileBox& box, const TileData&
     start[a] = box.start[a];
     count[a] = box.count[a];
   }
-  count[sweep::kAxes] = times_;
+  const MapLayout& layout = encoder_.layout();
+  count[sweep::kAxes] = layout.times.size();
   const std::string in = " to " + path_;
   check(H5Sselect_hyperslab(space5_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
         "select tile" + in);
   const Handle memory5(H5Screate_simple(sweep::kAxes, count.data(), nullptr), H5Sclose,
                        "make tile dataspace" + in);
   Handle memory6;
-  if (full_) {
+  if (layout.full()) {
     check(H5Sselect_hyperslab(space6_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
           "select tile series" + in);
     memory6 = Handle(H5Screate_simple(sweep::kAxes + 1, count.data(), nullptr), H5Sclose,
@@ -369,7 +260,7 @@ void RegimeMapWriter::write_hyperslab(const sweep::TileBox& box, const TileData&
   }
   std::size_t v = 0;
   for (const VariableSpec& spec : kVariables) {
-    if (spec.series && !full_) continue;
+    if (!is_stored(spec, layout)) continue;
     const hid_t memory = spec.series ? memory6.get() : memory5.get();
     const hid_t file = spec.series ? space6_.get() : space5_.get();
     const herr_t status = spec.codes != nullptr ? H5Dwrite(variables_[v], H5T_NATIVE_INT8, memory, file,

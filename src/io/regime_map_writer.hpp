@@ -2,26 +2,17 @@
 
 #include <hdf5.h>
 
-#include <array>
-#include <cstddef>
 #include <string>
 #include <vector>
 
-#include "io/chunk_compressor.hpp"
+#include "io/encoded_tile.hpp"
 #include "io/hdf5_handle.hpp"
+#include "io/map_layout.hpp"
 #include "io/tile_data.hpp"
+#include "io/tile_encoder.hpp"
 #include "sweep/grid.hpp"
-#include "sweep/sweep_config.hpp"
 
 namespace punchsweep::io {
-
-/// What a regime map holds: its grid, snapshot times, quantities and chunk shape.
-struct MapLayout {
-  sweep::Grid grid;
-  std::vector<double> times;  ///< T_eps; the `time` coordinate (used by the full quantities)
-  sweep::Quantities quantities = sweep::Quantities::regime;
-  std::array<std::size_t, sweep::kAxes> chunk{};  ///< 5-D chunk shape, each in [1, axis length]
-};
 
 /// Provenance stored as global attributes of a regime map.
 struct MapAttributes {
@@ -53,8 +44,8 @@ struct MapAttributes {
 ///   `area_fraction` (float64, fill NaN).
 /// - Every variable is chunked by MapLayout::chunk (times whole for the 6-D ones) and
 ///   compressed with shuffle + deflate level 1. A tile that is exactly one chunk (or the
-///   part of one inside the grid) is encoded here and stored with H5Dwrite_chunk; any other
-///   box goes through HDF5's filter pipeline. Readers see no difference.
+///   part of one inside the grid) is stored encoded (TileEncoder) with H5Dwrite_chunk; any
+///   other box goes through HDF5's filter pipeline. Readers see no difference.
 /// - Global attributes: Conventions "CF-1.8", title, source, history, config, creep_law,
 ///   C, completed (int8, 0 until finish() sets 1), and from finish(): ranks,
 ///   wall_seconds, points_per_second.
@@ -75,9 +66,15 @@ class RegimeMapWriter {
   RegimeMapWriter& operator=(const RegimeMapWriter&) = delete;
 
   /// Writes one tile into every variable. `data` is row-major over `box` (time last for
-  /// the series). Throws std::invalid_argument if the box leaves the grid or an array has
-  /// the wrong length (series arrays must be empty for Quantities::regime).
+  /// the series); `box` may be any box of the grid. Throws std::invalid_argument if the box
+  /// leaves the grid or an array has the wrong length (series arrays must be empty for
+  /// Quantities::regime).
   void write_tile(const sweep::TileBox& box, const TileData& data);
+
+  /// Stores a tile that a TileEncoder of this map's layout encoded, one H5Dwrite_chunk per
+  /// variable (no compression here). Throws std::invalid_argument if `box` is not one chunk
+  /// (or the part of one inside the grid), or `tile` has another number of chunks or points.
+  void write_encoded(const sweep::TileBox& box, const EncodedTile& tile);
 
   /// Hands everything written so far to the operating system.
   void flush();
@@ -93,24 +90,16 @@ class RegimeMapWriter {
                          const char* long_name);
   /// An int8 flag variable when `codes`, else float64; over the time axis too when `series`.
   Handle create_variable(const std::string& name, bool codes, bool series);
-  /// Whether `box` is one whole chunk, or the part of one that lies inside the grid.
-  bool is_one_chunk(const sweep::TileBox& box) const;
-  void write_chunk(const sweep::TileBox& box, const TileData& data);
   void write_hyperslab(const sweep::TileBox& box, const TileData& data);
   void require_open(const char* operation) const;
 
   std::string path_;
-  std::array<std::size_t, sweep::kAxes> shape_{};
-  std::array<std::size_t, sweep::kAxes> chunk_{};
-  std::size_t times_ = 0;
-  bool full_ = false;
+  TileEncoder encoder_;  ///< holds the layout; encodes write_tile's whole-chunk tiles
   Handle file_;
   std::vector<Handle> coordinates_;  ///< l, dh, T, pbar, s, time
-  std::vector<Handle> variables_;    ///< in the order of the variable table in the .cpp
+  std::vector<Handle> variables_;    ///< the stored ones of kVariables, in its order
   Handle space5_;                    ///< file dataspace of the 5-D variables (selection reused)
   Handle space6_;                    ///< file dataspace of the 6-D variables
-  ChunkCompressor compressor_;
-  std::vector<std::byte> padded_;  ///< an edge tile grown to a whole chunk
 };
 
 }  // namespace punchsweep::io

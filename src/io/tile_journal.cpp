@@ -12,14 +12,13 @@
 #include <utility>
 
 #include "io/crc32.hpp"
-#include "io/tile_codec.hpp"
 
 namespace punchsweep::io {
 
 namespace {
 
 constexpr std::array<char, 8> kFileMagic{'P', 'S', 'J', 'R', 'N', 'L', '\r', '\n'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;         // 2: records hold encoded tiles
 constexpr std::uint32_t kRecordMagic = 0x43525350;  // "PSRC" read as little-endian bytes
 constexpr std::size_t kHeaderFixed = kFileMagic.size() + sizeof(std::uint32_t) + sizeof(std::uint64_t);
 constexpr std::size_t kRecordHead = sizeof(std::uint32_t) + sizeof(std::uint64_t);
@@ -177,12 +176,11 @@ std::string TileJournal::read_header(const std::string& path) {
 }
 
 std::size_t TileJournal::replay(const std::string& path,
-                                const std::function<void(std::uint64_t, const TileData&)>& on_tile) {
+                                const std::function<void(const EncodedTile&)>& on_tile) {
   const FileDescriptor fd = open_file(path, O_RDONLY);
   std::uint64_t at = parse_header(fd.get(), path).end;
   const std::uint64_t size = file_size(fd.get(), path);
   std::vector<std::byte> buffer;  // length field + payload + CRC of the current record
-  TileData tile;
   while (size - at >= kRecordHead + kCrcSize) {
     std::array<std::byte, kRecordHead> head{};
     if (!read_at(fd.get(), head.data(), head.size(), at, path)) break;
@@ -199,15 +197,14 @@ std::size_t TileJournal::replay(const std::string& path,
     if (!read_at(fd.get(), buffer.data(), buffer.size(), length_at, path)) break;
     const std::size_t checked = buffer.size() - kCrcSize;
     if (crc32(buffer.data(), checked) != load<std::uint32_t>(buffer.data() + checked)) break;
-    std::uint64_t tile_index = 0;
+    EncodedTile tile;
     try {
-      tile_index =
-          unpack_tile(buffer.data() + sizeof(std::uint64_t), static_cast<std::size_t>(length), &tile);
+      tile = unpack_encoded_tile(buffer.data() + sizeof(std::uint64_t), static_cast<std::size_t>(length));
     } catch (const std::runtime_error& e) {
       throw std::runtime_error("tile journal " + path + ": record at byte " + std::to_string(at) +
                                " passes its CRC but does not decode (" + e.what() + ")");
     }
-    on_tile(tile_index, tile);
+    on_tile(tile);
     at += kRecordHead + length + kCrcSize;
   }
   return static_cast<std::size_t>(at);
@@ -227,9 +224,9 @@ TileJournal TileJournal::open_for_append(const std::string& path, std::size_t go
   return TileJournal(std::move(fd), path, good_end);
 }
 
-void TileJournal::append(std::uint64_t tile_index, const TileData& data) {
+void TileJournal::append(const EncodedTile& tile) {
   if (!fd_.is_open()) throw std::logic_error("tile journal " + path_ + " is not open");
-  const std::vector<std::byte> payload = pack_tile(tile_index, data);
+  const std::vector<std::byte> payload = pack_encoded_tile(tile);
   record_.clear();
   record_.reserve(kRecordHead + payload.size() + kCrcSize);
   append_bytes(&record_, kRecordMagic);

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "io/encoded_tile.hpp"
 #include "io/file_descriptor.hpp"
-#include "io/tile_data.hpp"
 
 namespace punchsweep::io {
 
@@ -17,11 +17,12 @@ namespace punchsweep::io {
 /// never misread. No fsync: a killed process does not lose the page cache, and a machine
 /// crash at worst costs tiles that are then computed again.
 ///
-/// File layout (native endianness):
+/// File layout (native endianness), format version 2:
 ///   header: 8-byte magic "PSJRNL\r\n", u32 format version, u64 text length, the header
 ///           text (the caller's configuration identity), u32 CRC-32 of all of the above;
-///   record: u32 magic "PSRC", u64 payload length, payload (a pack_tile buffer),
-///           u32 CRC-32 of the length field and the payload.
+///   record: u32 magic "PSRC", u64 payload length, payload (a pack_encoded_tile buffer:
+///           the tile as the map stores it), u32 CRC-32 of the length field and the payload.
+/// (Version 1 records held uncompressed tiles; read_header refuses such journals.)
 ///
 /// Replay stops at the first record that is incomplete, has a wrong magic or a wrong CRC:
 /// what follows a damaged record cannot be framed reliably, so it is ignored as well, and
@@ -38,12 +39,10 @@ class TileJournal {
   static std::string read_header(const std::string& path);
 
   /// Calls `on_tile` for every complete, CRC-valid record in file order, holding one record
-  /// in memory at a time, and returns the byte offset just past the last good record. The
-  /// TileData passed to `on_tile` is reused for the next record: copy what must outlive the call.
+  /// in memory at a time, and returns the byte offset just past the last good record.
   /// Throws like read_header for a bad header, and std::runtime_error for a record whose
   /// CRC is right but whose payload does not decode (a journal of another program version).
-  static std::size_t replay(const std::string& path,
-                            const std::function<void(std::uint64_t tile_index, const TileData&)>& on_tile);
+  static std::size_t replay(const std::string& path, const std::function<void(const EncodedTile&)>& on_tile);
 
   /// Opens an existing journal for appending after `good_end` (what replay returned),
   /// cutting off any torn or damaged tail first. Throws std::runtime_error if the header is
@@ -52,7 +51,7 @@ class TileJournal {
 
   /// Appends one record. On a write error the file is cut back to its previous end (so no
   /// half record stays in front of later ones) and std::runtime_error is thrown.
-  void append(std::uint64_t tile_index, const TileData& data);
+  void append(const EncodedTile& tile);
 
   const std::string& path() const { return path_; }
   /// Bytes in the journal after the last appended record.

@@ -4,8 +4,9 @@
 #include <cstdint>
 #include <deque>
 #include <stdexcept>
+#include <utility>
 
-#include "io/tile_codec.hpp"
+#include "io/encoded_tile.hpp"
 
 namespace punchsweep::sweep {
 namespace {
@@ -17,13 +18,47 @@ void check(int status, const char* what) {
   if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
 }
 
-/// Worker side: computes the tiles it is sent, one result message per tile, until told to stop.
-void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator) {
+/// A worker's results in transit to the manager, oldest first. The manager takes results
+/// only between tiles of its own, so a worker that waited for each send to finish before
+/// the next tile would idle for up to a tile's time per tile; instead every tile gets its
+/// own buffer. There are never more than the tiles handed to the worker (two batches).
+class Outbox {
+ public:
+  void send(std::vector<std::byte> bytes, MPI_Comm comm) {
+    sends_.push_back({std::move(bytes), MPI_REQUEST_NULL});
+    Send& s = sends_.back();
+    check(MPI_Isend(s.bytes.data(), static_cast<int>(s.bytes.size()), MPI_BYTE, 0, kTagResult, comm, &s.request),
+          "send result");
+  }
+  /// Frees the buffers of the sends that have finished (and lets MPI progress the others).
+  void release_finished() {
+    while (!sends_.empty()) {
+      int finished = 0;
+      check(MPI_Test(&sends_.front().request, &finished, MPI_STATUS_IGNORE), "test send");
+      if (!finished) return;
+      sends_.pop_front();
+    }
+  }
+  void wait_all() {
+    for (Send& s : sends_) check(MPI_Wait(&s.request, MPI_STATUS_IGNORE), "wait send");
+    sends_.clear();
+  }
+
+ private:
+  struct Send {
+    std::vector<std::byte> bytes;
+    MPI_Request request;
+  };
+  std::deque<Send> sends_;
+};
+
+/// Worker side: computes and encodes the tiles it is sent, one result message per tile,
+/// until told to stop.
+void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator, io::TileEncoder& encoder) {
   std::deque<std::uint64_t> pending;
   bool stop = false;
   io::TileData data;
-  std::vector<std::byte> sending;  // the result in transit; one Isend at a time
-  MPI_Request send_request = MPI_REQUEST_NULL;
+  Outbox outbox;
   while (!stop) {
     // Block only when there is nothing to compute.
     int flag = 0;
@@ -46,21 +81,20 @@ void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator) {
     if (stop || pending.empty()) continue;
     const std::uint64_t tile = pending.front();
     pending.pop_front();
-    evaluator.evaluate(tiling.box(tile), &data);
-    check(MPI_Wait(&send_request, MPI_STATUS_IGNORE), "wait send");
-    sending = io::pack_tile(tile, data);
-    check(MPI_Isend(sending.data(), static_cast<int>(sending.size()), MPI_BYTE, 0, kTagResult, comm, &send_request),
-          "send result");
+    const TileBox box = tiling.box(tile);
+    evaluator.evaluate(box, &data);
+    outbox.send(io::pack_encoded_tile(encoder.encode(tile, box, data)), comm);
+    outbox.release_finished();
   }
-  check(MPI_Wait(&send_request, MPI_STATUS_IGNORE), "wait send");
+  outbox.wait_all();
   check(MPI_Send(nullptr, 0, MPI_BYTE, 0, kTagDone, comm), "send done");
 }
 
 class Manager {
  public:
   Manager(MPI_Comm comm, int ranks, const Tiling& tiling, const TileEvaluator& evaluator,
-          const std::vector<std::size_t>& pending, const TileSink& sink)
-      : comm_(comm), ranks_(ranks), tiling_(tiling), evaluator_(evaluator), sink_(sink),
+          io::TileEncoder& encoder, const std::vector<std::size_t>& pending, const TileSink& sink)
+      : comm_(comm), ranks_(ranks), tiling_(tiling), evaluator_(evaluator), encoder_(encoder), sink_(sink),
         queue_(pending.begin(), pending.end()), outstanding_(static_cast<std::size_t>(ranks), 0),
         to_do_(pending.size()) {}
 
@@ -115,8 +149,9 @@ class Manager {
   void compute_one() {
     const std::size_t tile = queue_.front();
     queue_.pop_front();
-    evaluator_.evaluate(tiling_.box(tile), &data_);
-    sink_(tile, data_);
+    const TileBox box = tiling_.box(tile);
+    evaluator_.evaluate(box, &data_);
+    sink_(encoder_.encode(tile, box, data_));
     ++result_.tiles_done;
   }
 
@@ -142,8 +177,7 @@ class Manager {
         ++done_;
         continue;
       }
-      const std::uint64_t tile = io::unpack_tile(buffer_.data(), buffer_.size(), &data_);
-      sink_(static_cast<std::size_t>(tile), data_);
+      sink_(io::unpack_encoded_tile(buffer_.data(), buffer_.size()));
       ++result_.tiles_done;
       // Keep about two batches of work queued at the worker, so it never waits for us.
       auto& out = outstanding_[static_cast<std::size_t>(worker)];
@@ -156,6 +190,7 @@ class Manager {
   int ranks_;
   const Tiling& tiling_;
   const TileEvaluator& evaluator_;
+  io::TileEncoder& encoder_;
   const TileSink& sink_;
   std::deque<std::size_t> queue_;
   std::vector<std::size_t> outstanding_;
@@ -170,17 +205,17 @@ class Manager {
 }  // namespace
 
 ScheduleResult run_schedule(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator,
-                            const std::vector<std::size_t>& pending, const TileSink& sink,
-                            const volatile std::sig_atomic_t* stop) {
+                            io::TileEncoder& encoder, const std::vector<std::size_t>& pending,
+                            const TileSink& sink, const volatile std::sig_atomic_t* stop) {
   int rank = 0;
   int ranks = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &ranks);
   if (rank != 0) {
-    work(comm, tiling, evaluator);
+    work(comm, tiling, evaluator, encoder);
     return {};
   }
-  return Manager(comm, ranks, tiling, evaluator, pending, sink).run(stop);
+  return Manager(comm, ranks, tiling, evaluator, encoder, pending, sink).run(stop);
 }
 
 }  // namespace punchsweep::sweep

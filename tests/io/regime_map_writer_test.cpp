@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "io/hdf5_handle.hpp"
+#include "io/tile_encoder.hpp"
 #include "sample_tiles.hpp"
 #include "scratch_dir.hpp"
 #include "sweep/tiling.hpp"
@@ -607,6 +608,121 @@ TEST_F(RegimeMapWriterTest, map_stores_a_configuration_text_larger_than_64_kib) 
   }
   const Handle file = open_file(path_);
   EXPECT_EQ(read_string_attribute(file, "config"), attributes.config_text);
+}
+
+/// Every chunk of every variable of the map at `path`, as stored (still encoded), in
+/// variable order and then chunk order; an unwritten chunk is an empty entry.
+std::vector<std::vector<std::byte>> stored_chunks(const std::string& path, const MapLayout& layout) {
+  const Handle file = open_file(path);
+  std::vector<std::vector<std::byte>> chunks;
+  std::vector<std::string> variables = kAxisVariables;
+  if (layout.quantities == sweep::Quantities::full)
+    variables.insert(variables.end(), kSeriesVariables.begin(), kSeriesVariables.end());
+  const sweep::Tiling tiling(layout.grid.shape(), 7);
+  for (const std::string& name : variables) {
+    const Handle dataset = open_dataset(file, name);
+    for (std::size_t tile = 0; tile < tiling.tiles(); ++tile) {
+      std::array<hsize_t, sweep::kAxes + 1> offset{};
+      for (std::size_t a = 0; a < sweep::kAxes; ++a) offset[a] = tiling.box(tile).start[a];
+      hsize_t size = 0;
+      chunks.emplace_back();
+      if (H5Dget_chunk_storage_size(dataset, offset.data(), &size) < 0 || size == 0) continue;
+      chunks.back().resize(size);
+      std::uint32_t filters = 0;
+      check(H5Dread_chunk(dataset, H5P_DEFAULT, offset.data(), &filters, chunks.back().data()),
+            "read a chunk of " + name);
+    }
+  }
+  return chunks;
+}
+
+/// Every variable of the map at `path`, read through HDF5's filters as raw bytes.
+std::vector<std::vector<std::byte>> variable_bytes(const std::string& path, const MapLayout& layout) {
+  const Handle file = open_file(path);
+  std::vector<std::vector<std::byte>> out;
+  for (const std::string& name : kAxisVariables) {
+    const Handle dataset = open_dataset(file, name);
+    if (name == "regime" || name == "valid") {
+      const auto codes = read_dataset<std::int8_t>(dataset, H5T_NATIVE_INT8);
+      const auto* p = reinterpret_cast<const std::byte*>(codes.data());
+      out.emplace_back(p, p + codes.size());
+    } else {
+      const auto values = read_dataset<double>(dataset, H5T_NATIVE_DOUBLE);
+      const auto* p = reinterpret_cast<const std::byte*>(values.data());
+      out.emplace_back(p, p + values.size() * sizeof(double));
+    }
+  }
+  if (layout.quantities == sweep::Quantities::full) {
+    for (const std::string& name : kSeriesVariables) {
+      const auto values = read_dataset<double>(open_dataset(file, name), H5T_NATIVE_DOUBLE);
+      const auto* p = reinterpret_cast<const std::byte*>(values.data());
+      out.emplace_back(p, p + values.size() * sizeof(double));
+    }
+  }
+  return out;
+}
+
+TEST_F(RegimeMapWriterTest, write_encoded_and_write_tile_store_identical_data) {
+  for (const auto quantities : {sweep::Quantities::regime, sweep::Quantities::full}) {
+    layout_ = small_layout(quantities);
+    const std::string by_tile = dir_.file("by_tile.h5");
+    const std::string encoded = dir_.file("encoded.h5");
+    std::vector<bool> written;
+    {
+      RegimeMapWriter writer(by_tile, layout_, small_attributes());
+      written = write_sample_map(&writer, layout_);
+      writer.finish(1, 1.0, 1.0);
+    }
+    {
+      // As in the sweep: the tiles are encoded by another object than the writer, in
+      // another order, and some of them twice (a tile written again after a resume).
+      RegimeMapWriter writer(encoded, layout_, small_attributes());
+      TileEncoder encoder(layout_);
+      const sweep::Tiling tiling(layout_.grid.shape(), 7);
+      for (std::size_t tile = tiling.tiles(); tile-- > 0;) {
+        if (skipped(tile)) continue;
+        const sweep::TileBox box = tiling.box(tile);
+        const EncodedTile encoded_tile = encoder.encode(tile, box, tile_for(box, layout_));
+        writer.write_encoded(box, encoded_tile);
+        if (tile % 4 == 0) writer.write_encoded(box, encoded_tile);
+      }
+      writer.finish(1, 1.0, 1.0);
+    }
+    expect_sample_values(encoded, layout_, written);
+    EXPECT_EQ(variable_bytes(encoded, layout_), variable_bytes(by_tile, layout_));
+    const auto chunks = stored_chunks(encoded, layout_);
+    EXPECT_EQ(chunks, stored_chunks(by_tile, layout_));
+    EXPECT_GT(std::count_if(chunks.begin(), chunks.end(), [](const auto& c) { return c.empty(); }), 0)
+        << "some chunks must stay unwritten for this test to mean anything";
+  }
+}
+
+TEST_F(RegimeMapWriterTest, write_encoded_refuses_a_tile_that_does_not_fit) {
+  layout_ = small_layout(sweep::Quantities::full);  // chunk (1, 1, 1, 3, 2)
+  RegimeMapWriter writer(path_, layout_, small_attributes());
+  TileEncoder full(layout_);
+  TileEncoder regime_only(small_layout(sweep::Quantities::regime));
+  sweep::TileBox box;
+  box.start = {0, 0, 0, 3, 0};
+  box.count = {1, 1, 1, 2, 2};  // the edge of pbar
+  const EncodedTile tile = full.encode(7, box, tile_for(box, layout_));
+  EXPECT_NO_THROW(writer.write_encoded(box, tile));
+  sweep::TileBox other = box;
+  other.count[sweep::kAxisPbar] = 1;  // not the whole part of the chunk inside the grid
+  EXPECT_THROW(writer.write_encoded(other, tile), std::invalid_argument);
+  other = box;
+  other.start[sweep::kAxisL] = 3;  // outside the grid
+  EXPECT_THROW(writer.write_encoded(other, tile), std::invalid_argument);
+  other = box;
+  other.start[sweep::kAxisPbar] = 0;
+  other.count[sweep::kAxisPbar] = 3;  // a whole chunk: more points than the tile has
+  EXPECT_THROW(writer.write_encoded(other, tile), std::invalid_argument);
+  // A tile encoded for a regime-only map lacks the series chunks.
+  EXPECT_THROW(writer.write_encoded(
+                   box, regime_only.encode(7, box, tile_for(box, small_layout(sweep::Quantities::regime)))),
+               std::invalid_argument);
+  writer.finish(1, 0.0, 0.0);
+  EXPECT_THROW(writer.write_encoded(box, tile), std::logic_error);
 }
 
 }  // namespace

@@ -3,8 +3,10 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
+#include "io/encoded_tile.hpp"
 #include "io/tile_data.hpp"
 
 namespace punchsweep::io::testing {
@@ -58,6 +60,27 @@ inline bool same_bits(const TileData& a, const TileData& b) {
          same_bits(a.a2_inf, b.a2_inf) && same_bits(a.area_fraction_inf, b.area_fraction_inf) &&
          same_bits(a.a1, b.a1) && same_bits(a.a2, b.a2) && same_bits(a.P1, b.P1) && same_bits(a.P2, b.P2) &&
          same_bits(a.area_fraction, b.area_fraction);
+}
+
+/// An EncodedTile as the codec and the journal see it: tile index `seed`, `chunks` runs of
+/// deterministic bytes whose lengths vary around `bytes` (and from seed to seed), and
+/// summary counts that fit its points.
+inline EncodedTile sample_encoded_tile(std::uint64_t seed, std::size_t chunks, std::size_t bytes) {
+  EncodedTile tile;
+  tile.tile = seed;
+  tile.summary.points = 4096 + seed % 13;
+  tile.summary.regimes = {seed % 100, 2000, 7};
+  tile.summary.validity = {3000, 0, seed % 50, 1};
+  std::uint32_t x = static_cast<std::uint32_t>(seed) * 2654435761U + 1;
+  for (std::size_t c = 0; c < chunks; ++c) {
+    std::vector<std::byte> chunk(bytes + (seed * 31 + c * 17) % (bytes / 2 + 1));
+    for (std::byte& b : chunk) {
+      x = x * 1664525U + 1013904223U;
+      b = static_cast<std::byte>(x >> 24);
+    }
+    tile.chunks.push_back(std::move(chunk));
+  }
+  return tile;
 }
 
 }  // namespace punchsweep::io::testing

@@ -6,48 +6,44 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 #include <thread>
-#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "io/crc32.hpp"
 #include "sample_tiles.hpp"
 #include "scratch_dir.hpp"
 
 namespace punchsweep::io {
 namespace {
 
-using testing::same_bits;
-using testing::sample_tile;
+using testing::sample_encoded_tile;
 using testing::ScratchDir;
 
-constexpr std::size_t kPoints = 9;
-constexpr std::size_t kTimes = 3;
+/// Tile `i` of the test journals: index 1000 + i, 13 chunks of a few hundred bytes each
+/// (as a small full-quantities tile), all of it depending on i.
+EncodedTile tile(std::size_t i) { return sample_encoded_tile(1000 + i, 13, 300); }
 
-/// Tile `i` of the test journals: its index is 1000 + i, its contents come from seed i.
-TileData tile(std::size_t i) { return sample_tile(i, kPoints, kTimes, true); }
-
-std::vector<std::pair<std::uint64_t, TileData>> replay_all(const std::string& path,
-                                                           std::size_t* good_end = nullptr) {
-  std::vector<std::pair<std::uint64_t, TileData>> records;
-  const std::size_t end = TileJournal::replay(
-      path, [&](std::uint64_t index, const TileData& data) { records.emplace_back(index, data); });
+std::vector<EncodedTile> replay_all(const std::string& path, std::size_t* good_end = nullptr) {
+  std::vector<EncodedTile> records;
+  const std::size_t end = TileJournal::replay(path, [&](const EncodedTile& t) { records.push_back(t); });
   if (good_end != nullptr) *good_end = end;
   return records;
 }
 
-/// Whether `records` are exactly tiles 0 .. n-1, in order, bit for bit.
-void expect_first_tiles(const std::vector<std::pair<std::uint64_t, TileData>>& records, std::size_t n) {
+/// Whether `records` are exactly tiles 0 .. n-1, in order, byte for byte.
+void expect_first_tiles(const std::vector<EncodedTile>& records, std::size_t n) {
   ASSERT_EQ(records.size(), n);
   for (std::size_t i = 0; i < n; ++i) {
-    EXPECT_EQ(records[i].first, 1000 + i);
-    EXPECT_TRUE(same_bits(records[i].second, tile(i))) << "record " << i;
+    EXPECT_EQ(records[i].tile, 1000 + i);
+    EXPECT_TRUE(records[i] == tile(i)) << "record " << i;
   }
 }
 
@@ -76,7 +72,7 @@ std::vector<std::size_t> write_journal(const std::string& path, const std::strin
   TileJournal journal = TileJournal::create(path, header);
   std::vector<std::size_t> offsets{journal.size()};
   for (std::size_t i = 0; i < n; ++i) {
-    journal.append(1000 + i, tile(i));
+    journal.append(tile(i));
     offsets.push_back(journal.size());
   }
   return offsets;
@@ -126,7 +122,7 @@ TEST(TileJournal, journal_ignores_a_torn_last_record) {
     ASSERT_EQ(good_end, offsets[3]) << "cut at " << cut;
     if (cut % 37 == 0 || cut + 1 == offsets[4]) {  // resuming from a sample of the cuts
       TileJournal journal = TileJournal::open_for_append(torn, good_end);
-      journal.append(1003, tile(3));
+      journal.append(tile(3));
       expect_first_tiles(replay_all(torn), 4);
       ASSERT_EQ(read_bytes(torn), bytes) << "cut at " << cut;
     }
@@ -150,15 +146,15 @@ TEST(TileJournal, journal_ignores_a_damaged_record_and_everything_after_it) {
   }
   TileJournal journal = TileJournal::open_for_append(path, offsets[2]);
   EXPECT_EQ(std::filesystem::file_size(path), offsets[2]);
-  for (std::size_t i = 2; i < 5; ++i) journal.append(1000 + i, tile(i));
+  for (std::size_t i = 2; i < 5; ++i) journal.append(tile(i));
   expect_first_tiles(replay_all(path), 5);
 }
 
 TEST(TileJournal, journal_survives_kill_9_of_the_writer) {
   const ScratchDir dir;
   const std::string path = dir.file("j");
-  // Records of about 2 MB, so that kills land inside write() calls as well as between them.
-  const auto big = [](std::size_t i) { return sample_tile(i, 8000, 5, true); };
+  // Records of about 2.5 MB, so that kills land inside write() calls as well as between them.
+  const auto big = [](std::size_t i) { return sample_encoded_tile(i, 8, 256 * 1024); };
   for (int attempt = 0; attempt < 6; ++attempt) {
     const std::size_t header_end = TileJournal::create(path, "h").size();
     const pid_t child = ::fork();
@@ -167,7 +163,7 @@ TEST(TileJournal, journal_survives_kill_9_of_the_writer) {
       // The child only appends until it is killed; it must never return into the test runner.
       try {
         TileJournal journal = TileJournal::open_for_append(path, header_end);
-        for (std::size_t i = 0; i < 100000; ++i) journal.append(i, big(i));
+        for (std::size_t i = 0; i < 100000; ++i) journal.append(big(i));
       } catch (...) {
         ::_exit(1);
       }
@@ -180,16 +176,16 @@ TEST(TileJournal, journal_survives_kill_9_of_the_writer) {
     ASSERT_TRUE(WIFSIGNALED(status)) << "the writer ended before it was killed";
 
     std::size_t count = 0;
-    const std::size_t good_end = TileJournal::replay(path, [&](std::uint64_t index, const TileData& data) {
-      EXPECT_EQ(index, count);
-      EXPECT_TRUE(same_bits(data, big(count))) << "record " << count;
+    const std::size_t good_end = TileJournal::replay(path, [&](const EncodedTile& t) {
+      EXPECT_EQ(t.tile, count);
+      EXPECT_TRUE(t == big(count)) << "record " << count;
       ++count;
     });
     EXPECT_LE(good_end, std::filesystem::file_size(path));
     TileJournal journal = TileJournal::open_for_append(path, good_end);
-    journal.append(count, big(count));
+    journal.append(big(count));
     std::size_t after = 0;
-    TileJournal::replay(path, [&](std::uint64_t index, const TileData&) { EXPECT_EQ(index, after++); });
+    TileJournal::replay(path, [&](const EncodedTile& t) { EXPECT_EQ(t.tile, after++); });
     EXPECT_EQ(after, count + 1);
   }
 }
@@ -200,7 +196,7 @@ TEST(TileJournal, journal_rejects_a_file_that_is_not_a_journal) {
   write_bytes(path, std::vector<char>(100, 'x'), 100);
   EXPECT_NE(error_of([&] { TileJournal::read_header(path); }).find("is not a punchsweep tile journal"),
             std::string::npos);
-  EXPECT_THROW(TileJournal::replay(path, [](std::uint64_t, const TileData&) {}), std::runtime_error);
+  EXPECT_THROW(TileJournal::replay(path, [](const EncodedTile&) {}), std::runtime_error);
   EXPECT_THROW(TileJournal::open_for_append(path, 100), std::runtime_error);
   write_bytes(path, {}, 0);
   EXPECT_NE(error_of([&] { TileJournal::read_header(path); }).find("is empty"), std::string::npos);
@@ -247,6 +243,47 @@ TEST(TileJournal, journal_create_truncates_an_old_journal) {
   write_journal(path, "new", 1);
   EXPECT_EQ(TileJournal::read_header(path), "new");
   expect_first_tiles(replay_all(path), 1);
+}
+
+TEST(TileJournal, journal_of_format_version_1_is_refused) {
+  // Version 1 records held uncompressed tiles; such a journal must not be misread as version 2.
+  const ScratchDir dir;
+  const std::string path = dir.file("j");
+  write_journal(path, "h", 1);
+  std::vector<char> bytes = read_bytes(path);
+  const std::uint32_t version = 1;
+  std::memcpy(bytes.data() + 8, &version, sizeof version);
+  write_bytes(path, bytes, bytes.size());
+  EXPECT_NE(error_of([&] {
+              TileJournal::read_header(path);
+            }).find("format version 1, this program reads version 2"),
+            std::string::npos);
+}
+
+TEST(TileJournal, journal_reports_a_record_that_passes_its_crc_but_does_not_decode) {
+  const ScratchDir dir;
+  const std::string path = dir.file("j");
+  const std::vector<std::size_t> offsets = write_journal(path, "h", 2);
+  // A well-framed record whose payload is not an encoded tile (as another program would write).
+  std::vector<char> bytes = read_bytes(path);
+  const std::vector<char> payload(100, 'x');
+  const auto put = [&](const void* p, std::size_t n) {
+    bytes.insert(bytes.end(), static_cast<const char*>(p), static_cast<const char*>(p) + n);
+  };
+  const std::uint32_t magic = 0x43525350;  // "PSRC"
+  const std::uint64_t length = payload.size();
+  put(&magic, sizeof magic);
+  const std::size_t framed_from = bytes.size();
+  put(&length, sizeof length);
+  put(payload.data(), payload.size());
+  const std::uint32_t crc = crc32(bytes.data() + framed_from, bytes.size() - framed_from);
+  put(&crc, sizeof crc);
+  write_bytes(path, bytes, bytes.size());
+  const std::string message = error_of([&] { replay_all(path); });
+  EXPECT_NE(
+      message.find("record at byte " + std::to_string(offsets[2]) + " passes its CRC but does not decode"),
+      std::string::npos)
+      << message;
 }
 
 }  // namespace

@@ -1,0 +1,93 @@
+#include "io/tile_encoder.hpp"
+
+#include <array>
+#include <bit>
+#include <cstring>
+#include <limits>
+#include <span>
+
+#include "io/map_variables.hpp"
+
+namespace punchsweep::io {
+
+// H5Dwrite_chunk stores the bytes it is given as they are, and the map's types are
+// little-endian (H5T_STD_I8LE, H5T_IEEE_F64LE): on a big-endian host the encoder would
+// have to swap every value first, which no supported platform needs.
+static_assert(std::endian::native == std::endian::little,
+              "TileEncoder writes raw chunk bytes, which must be little-endian like the map's types");
+
+namespace {
+
+/// Copies a tile at the grid's edge into a whole chunk (row-major over `chunk`, `inner`
+/// values per point), with `fill` in the part that lies outside the grid.
+void pad_to_chunk(const std::byte* tile, std::size_t element, const void* fill, std::size_t inner,
+                  const std::array<std::size_t, sweep::kAxes>& count,
+                  const std::array<std::size_t, sweep::kAxes>& chunk, std::vector<std::byte>* out) {
+  std::size_t values = inner;
+  for (const std::size_t c : chunk) values *= c;
+  out->resize(values * element);
+  for (std::size_t i = 0; i < values; ++i) std::memcpy(out->data() + i * element, fill, element);
+  const std::size_t run = count[4] * inner * element;  // the fastest axis is contiguous in both
+  const std::byte* from = tile;
+  for (std::size_t i0 = 0; i0 < count[0]; ++i0) {
+    for (std::size_t i1 = 0; i1 < count[1]; ++i1) {
+      for (std::size_t i2 = 0; i2 < count[2]; ++i2) {
+        for (std::size_t i3 = 0; i3 < count[3]; ++i3) {
+          const std::size_t to = (((i0 * chunk[1] + i1) * chunk[2] + i2) * chunk[3] + i3) * chunk[4];
+          std::memcpy(out->data() + to * inner * element, from, run);
+          from += run;
+        }
+      }
+    }
+  }
+}
+
+/// Counts the points per code 0 .. N-1 (not_computed is counted nowhere).
+template <std::size_t N>
+void count_codes(const std::vector<std::int8_t>& codes, std::array<std::uint64_t, N>* counts) {
+  for (const std::int8_t c : codes) {
+    if (c >= 0 && static_cast<std::size_t>(c) < N) ++(*counts)[static_cast<std::size_t>(c)];
+  }
+}
+
+}  // namespace
+
+TileEncoder::TileEncoder(const MapLayout& layout)
+    : layout_(layout), compressor_(static_cast<int>(kDeflateLevel)) {
+  require_valid(layout_);
+}
+
+EncodedTile TileEncoder::encode(std::uint64_t tile, const sweep::TileBox& box, const TileData& data) {
+  require_one_chunk(layout_, box);
+  const std::size_t points = box.points();
+  require_tile_arrays(layout_, points, data);
+
+  EncodedTile encoded;
+  encoded.tile = tile;
+  encoded.summary.points = points;
+  count_codes(data.regime, &encoded.summary.regimes);
+  count_codes(data.valid, &encoded.summary.validity);
+
+  const bool edge = box.count != layout_.chunk;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const VariableSpec& spec : kVariables) {
+    if (!is_stored(spec, layout_)) continue;
+    const bool codes = spec.codes != nullptr;
+    const std::size_t element = codes ? sizeof(std::int8_t) : sizeof(double);
+    const std::size_t inner = spec.series ? layout_.times.size() : 1;
+    const auto* values = codes ? reinterpret_cast<const std::byte*>((data.*spec.codes).data())
+                               : reinterpret_cast<const std::byte*>((data.*spec.values).data());
+    std::span<const std::byte> bytes;
+    if (edge) {
+      const void* fill = codes ? static_cast<const void*>(&kNotComputed) : static_cast<const void*>(&nan);
+      pad_to_chunk(values, element, fill, inner, box.count, layout_.chunk, &padded_);
+      bytes = compressor_.compress(padded_.data(), padded_.size(), element);
+    } else {
+      bytes = compressor_.compress(values, points * inner * element, element);
+    }
+    encoded.chunks.emplace_back(bytes.begin(), bytes.end());
+  }
+  return encoded;
+}
+
+}  // namespace punchsweep::io

@@ -1,0 +1,206 @@
+#include "io/tile_encoder.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/map_variables.hpp"
+#include "sample_tiles.hpp"
+
+namespace punchsweep::io {
+namespace {
+
+using testing::sample_tile;
+
+/// A 2 x 3 x 2 x 5 x 2 grid in chunks of 1 x 2 x 1 x 3 x 2: edge tiles on dh and pbar.
+MapLayout test_layout(sweep::Quantities quantities) {
+  MapLayout layout;
+  layout.grid.axes[sweep::kAxisL] = {{0.5, 1.0}, "0.5, 1", false};
+  layout.grid.axes[sweep::kAxisDh] = {{0.0, 0.05, 0.1}, "0, 0.05, 0.1", false};
+  layout.grid.axes[sweep::kAxisT] = {{2.0, 5.0}, "2, 5", false};
+  layout.grid.axes[sweep::kAxisPbar] = {{0.01, 0.02, 0.03, 0.04, 0.05}, "linspace(0.01, 0.05, 5)", false};
+  layout.grid.axes[sweep::kAxisS] = {{1.0, 2.0}, "1, 2", false};
+  layout.times = {0.0, 1.0, 5.0};
+  layout.quantities = quantities;
+  layout.chunk = {1, 2, 1, 3, 2};
+  return layout;
+}
+
+/// Every tile of the layout's chunk grid (edge tiles cut to the grid).
+std::vector<sweep::TileBox> chunk_boxes(const MapLayout& layout) {
+  const auto shape = layout.grid.shape();
+  std::vector<sweep::TileBox> boxes;
+  sweep::TileBox box;
+  for (box.start[0] = 0; box.start[0] < shape[0]; box.start[0] += layout.chunk[0])
+    for (box.start[1] = 0; box.start[1] < shape[1]; box.start[1] += layout.chunk[1])
+      for (box.start[2] = 0; box.start[2] < shape[2]; box.start[2] += layout.chunk[2])
+        for (box.start[3] = 0; box.start[3] < shape[3]; box.start[3] += layout.chunk[3])
+          for (box.start[4] = 0; box.start[4] < shape[4]; box.start[4] += layout.chunk[4]) {
+            for (std::size_t a = 0; a < sweep::kAxes; ++a)
+              box.count[a] = std::min(layout.chunk[a], shape[a] - box.start[a]);
+            boxes.push_back(box);
+          }
+  return boxes;
+}
+
+/// Inflates a zlib stream and undoes HDF5's byte shuffle: the chunk as HDF5 reads it.
+std::vector<std::byte> decode_chunk(const std::vector<std::byte>& encoded, std::size_t size,
+                                    std::size_t element) {
+  std::vector<std::byte> shuffled(size);
+  uLongf out_size = static_cast<uLongf>(size);
+  EXPECT_EQ(uncompress(reinterpret_cast<Bytef*>(shuffled.data()), &out_size,
+                       reinterpret_cast<const Bytef*>(encoded.data()), static_cast<uLong>(encoded.size())),
+            Z_OK);
+  EXPECT_EQ(out_size, size);
+  std::vector<std::byte> out(size);
+  const std::size_t elements = size / element;
+  for (std::size_t i = 0; i < elements; ++i) {
+    for (std::size_t b = 0; b < element; ++b) out[i * element + b] = shuffled[b * elements + i];
+  }
+  return out;
+}
+
+/// The whole chunk that `box` (row-major values `values`, `inner` per point) fills: its
+/// values where the box lies, `fill` elsewhere.
+std::vector<std::byte> expected_chunk(const MapLayout& layout, const sweep::TileBox& box,
+                                      const std::byte* values, std::size_t element, std::size_t inner,
+                                      const void* fill) {
+  const auto& chunk = layout.chunk;
+  std::size_t cells = inner;
+  for (const std::size_t c : chunk) cells *= c;
+  std::vector<std::byte> out(cells * element);
+  std::array<std::size_t, sweep::kAxes> at{};
+  std::size_t cell = 0;
+  for (at[0] = 0; at[0] < chunk[0]; ++at[0])
+    for (at[1] = 0; at[1] < chunk[1]; ++at[1])
+      for (at[2] = 0; at[2] < chunk[2]; ++at[2])
+        for (at[3] = 0; at[3] < chunk[3]; ++at[3])
+          for (at[4] = 0; at[4] < chunk[4]; ++at[4]) {
+            bool inside = true;
+            std::size_t point = 0;
+            for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+              inside = inside && at[a] < box.count[a];
+              point = point * box.count[a] + at[a];
+            }
+            for (std::size_t t = 0; t < inner; ++t, ++cell) {
+              const void* from = inside ? values + (point * inner + t) * element : fill;
+              std::memcpy(out.data() + cell * element, from, element);
+            }
+          }
+  return out;
+}
+
+TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
+  for (const auto quantities : {sweep::Quantities::regime, sweep::Quantities::full}) {
+    const MapLayout layout = test_layout(quantities);
+    TileEncoder encoder(layout);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::size_t edges = 0;
+    std::uint64_t seed = 0;
+    for (const sweep::TileBox& box : chunk_boxes(layout)) {
+      edges += box.count != layout.chunk ? 1 : 0;
+      const TileData data = sample_tile(++seed, box.points(), layout.times.size(), layout.full());
+      const EncodedTile encoded = encoder.encode(seed, box, data);
+      EXPECT_EQ(encoded.tile, seed);
+      ASSERT_EQ(encoded.chunks.size(), layout.full() ? 13U : 8U);
+      for (std::size_t v = 0; v < encoded.chunks.size(); ++v) {
+        const VariableSpec& spec = kVariables[v];
+        const bool codes = spec.codes != nullptr;
+        const std::size_t element = codes ? 1 : sizeof(double);
+        const std::size_t inner = spec.series ? layout.times.size() : 1;
+        const auto* values = codes ? reinterpret_cast<const std::byte*>((data.*spec.codes).data())
+                                   : reinterpret_cast<const std::byte*>((data.*spec.values).data());
+        const void* fill = codes ? static_cast<const void*>(&kNotComputed) : static_cast<const void*>(&nan);
+        const std::vector<std::byte> expected = expected_chunk(layout, box, values, element, inner, fill);
+        EXPECT_EQ(decode_chunk(encoded.chunks[v], expected.size(), element), expected)
+            << spec.name << " of tile " << seed;
+      }
+    }
+    EXPECT_GT(edges, 0U) << "the layout must have edge tiles for this test to mean anything";
+  }
+}
+
+TEST(TileEncoder, encoded_tile_summary_counts_points_per_code) {
+  const MapLayout layout = test_layout(sweep::Quantities::regime);
+  TileEncoder encoder(layout);
+  for (const sweep::TileBox& box : chunk_boxes(layout)) {
+    const TileData data = sample_tile(box.start[1] + 7 * box.start[3], box.points(), 0, false);
+    const TileSummary summary = encoder.encode(0, box, data).summary;
+    EXPECT_EQ(summary.points, box.points());
+    TileSummary expected;
+    for (const std::int8_t r : data.regime) {
+      if (r >= 0) ++expected.regimes[static_cast<std::size_t>(r)];
+    }
+    for (const std::int8_t v : data.valid) {
+      if (v >= 0) ++expected.validity[static_cast<std::size_t>(v)];
+    }
+    EXPECT_EQ(summary.regimes, expected.regimes);  // not_computed (-1) counts nowhere
+    EXPECT_EQ(summary.validity, expected.validity);
+  }
+}
+
+TEST(TileEncoder, encoded_bytes_depend_only_on_the_tile) {
+  // Any rank may encode any tile: the bytes must not depend on what the encoder did before.
+  const MapLayout layout = test_layout(sweep::Quantities::full);
+  const std::vector<sweep::TileBox> boxes = chunk_boxes(layout);
+  TileEncoder busy(layout);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    busy.encode(i, boxes[i], sample_tile(100 + i, boxes[i].points(), 3, true));
+  }
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const TileData data = sample_tile(i, boxes[i].points(), 3, true);
+    TileEncoder fresh(layout);
+    EXPECT_TRUE(fresh.encode(i, boxes[i], data) == busy.encode(i, boxes[i], data)) << "tile " << i;
+  }
+}
+
+TEST(TileEncoder, encoder_refuses_boxes_that_are_not_one_chunk) {
+  const MapLayout layout = test_layout(sweep::Quantities::regime);
+  TileEncoder encoder(layout);
+  const auto refused = [&](std::array<std::size_t, 5> start, std::array<std::size_t, 5> count) {
+    sweep::TileBox box;
+    box.start = start;
+    box.count = count;
+    const TileData data = sample_tile(1, box.points(), 0, false);
+    EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
+  };
+  refused({0, 1, 0, 0, 0}, {1, 2, 1, 3, 2});  // not chunk-aligned
+  refused({0, 0, 0, 0, 0}, {1, 1, 1, 3, 2});  // part of a chunk, not at the grid's edge
+  refused({0, 0, 0, 0, 0}, {1, 2, 1, 3, 1});  // s is whole in the chunk, the box has half of it
+  refused({0, 0, 0, 3, 0}, {1, 2, 1, 3, 2});  // runs past the last pbar
+  refused({0, 0, 0, 0, 0}, {1, 2, 1, 0, 2});  // empty
+  refused({0, 0, 0, 0, 0}, {2, 2, 1, 3, 2});  // two chunks
+}
+
+TEST(TileEncoder, encoder_refuses_arrays_of_the_wrong_length_and_bad_layouts) {
+  const MapLayout layout = test_layout(sweep::Quantities::full);
+  TileEncoder encoder(layout);
+  sweep::TileBox box;
+  box.count = layout.chunk;
+  TileData data = sample_tile(1, box.points(), 3, true);
+  EXPECT_NO_THROW(encoder.encode(0, box, data));
+  data.P2.pop_back();
+  EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
+  data = sample_tile(1, box.points(), 3, false);  // series missing from a full map
+  EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
+  data = sample_tile(1, box.points() - 1, 3, true);
+  EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
+
+  MapLayout bad = layout;
+  bad.chunk[sweep::kAxisPbar] = 6;
+  EXPECT_THROW(TileEncoder{bad}, std::invalid_argument);
+  bad = layout;
+  bad.times.clear();
+  EXPECT_THROW(TileEncoder{bad}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace punchsweep::io
