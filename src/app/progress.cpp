@@ -1,5 +1,6 @@
 #include "app/progress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -17,15 +18,19 @@ std::string duration(double seconds) {
   return buf;
 }
 
+std::size_t sum(const std::array<std::size_t, 3>& counts) { return counts[0] + counts[1] + counts[2]; }
+
 }  // namespace
 
-Progress::Progress(std::ostream& out, std::size_t total_points, bool quiet)
-    : out_(out), total_(total_points), quiet_(quiet), start_(std::chrono::steady_clock::now()),
-      last_print_(start_) {}
+Progress::Progress(std::ostream& out, std::size_t total_points, std::size_t total_bem, bool quiet)
+    : out_(out), total_(total_points), total_bem_(total_bem), quiet_(quiet),
+      start_(std::chrono::steady_clock::now()), last_print_(start_) {}
 
 void Progress::count(const io::TileSummary& summary) {
   for (std::size_t r = 0; r < regimes_.size(); ++r) regimes_[r] += summary.regimes[r];
   for (std::size_t v = 0; v < validity_.size(); ++v) validity_[v] += summary.validity[v];
+  for (std::size_t r = 0; r < bem_regimes_.size(); ++r) bem_regimes_[r] += summary.bem_regimes[r];
+  bem_agreeing_ += summary.bem_agreeing;
 }
 
 void Progress::restored(const io::EncodedTile& tile) {
@@ -41,9 +46,11 @@ void Progress::computed(const io::EncodedTile& tile) {
   last_print_ = now;
   const double done = static_cast<double>(points_done());
   const double left = static_cast<double>(total_) - done;
-  char line[200];
-  std::snprintf(line, sizeof line, "punchsweep sweep: %zu / %zu points (%.1f%%), %.3g points/s, ETA %s\n",
-                points_done(), total_, 100.0 * done / static_cast<double>(total_), rate(),
+  char bem[64] = "";
+  if (total_bem_ > 0) std::snprintf(bem, sizeof bem, ", bem %zu / %zu", sum(bem_regimes_), total_bem_);
+  char line[256];
+  std::snprintf(line, sizeof line, "punchsweep sweep: %zu / %zu points (%.1f%%)%s, %.3g points/s, ETA %s\n",
+                points_done(), total_, 100.0 * done / static_cast<double>(total_), bem, rate(),
                 duration(left / rate()).c_str());
   out_ << line << std::flush;
 }
@@ -65,7 +72,17 @@ void Progress::print_summary(int ranks) const {
                 points_done(), computed_points_, duration(seconds()).c_str(), rate(), ranks,
                 ranks == 1 ? "" : "s", regimes_[0], regimes_[1], regimes_[2], invalid, validity_[1],
                 validity_[2], validity_[3]);
-  out_ << line << std::flush;
+  out_ << line;
+  if (total_bem_ > 0) {
+    const std::size_t bem = sum(bem_regimes_);
+    std::snprintf(line, sizeof line,
+                  "  bem: %zu points (immediate %zu, delayed %zu, never %zu; regime agreement with the model "
+                  "%.1f%%)\n",
+                  bem, bem_regimes_[0], bem_regimes_[1], bem_regimes_[2],
+                  100.0 * static_cast<double>(bem_agreeing_) / static_cast<double>(std::max<std::size_t>(bem, 1)));
+    out_ << line;
+  }
+  out_ << std::flush;
 }
 
 }  // namespace punchsweep::app

@@ -10,10 +10,16 @@
 namespace punchsweep::app {
 
 /// Progress and end-of-run summary of a sweep, printed by rank 0 to a stream (stderr):
-/// at most one line a second with points done / total, percent, points/s and ETA.
+/// at most one line a second with points done / total, percent, points/s and ETA, and with
+/// a BEM reference the reference points done / total.
+///
+/// The ETA counts grid points, although a BEM point costs a thousand model points or more:
+/// the reference sample is uniform over the grid, so the BEM work comes in proportion to
+/// the points done, and the points' rate already includes it.
 class Progress {
  public:
-  Progress(std::ostream& out, std::size_t total_points, bool quiet);
+  /// `total_bem`: the number of reference points of the sweep (0 without a reference).
+  Progress(std::ostream& out, std::size_t total_points, std::size_t total_bem, bool quiet);
 
   /// Counts a tile restored from the journal (not computed by this run), from its summary.
   void restored(const io::EncodedTile& tile);
@@ -26,7 +32,8 @@ class Progress {
   double seconds() const;
   /// Points computed per second of this run.
   double rate() const;
-  /// Counts per regime (immediate, delayed, never), invalid points and per validity code.
+  /// Counts per regime (immediate, delayed, never), invalid points and per validity code,
+  /// and with a reference its points per regime and their agreement with the model.
   void print_summary(int ranks) const;
 
  private:
@@ -34,6 +41,7 @@ class Progress {
 
   std::ostream& out_;
   std::size_t total_;
+  std::size_t total_bem_;
   bool quiet_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
@@ -41,6 +49,8 @@ class Progress {
   std::size_t computed_points_ = 0;
   std::array<std::size_t, 3> regimes_{};
   std::array<std::size_t, 4> validity_{};
+  std::array<std::size_t, 3> bem_regimes_{};
+  std::size_t bem_agreeing_ = 0;
 };
 
 }  // namespace punchsweep::app

@@ -3,7 +3,6 @@
 #include <boost/program_options.hpp>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <ostream>
 
@@ -11,6 +10,8 @@
 #include "app/usage_error.hpp"
 #include "model/standard_linear_solid.hpp"
 #include "reference/reference_point.hpp"
+#include "sweep/reproducible_fft.hpp"
+#include "sweep/sweep_config.hpp"
 
 namespace po = boost::program_options;
 
@@ -64,10 +65,12 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
   reference::ReferenceOptions options;
   options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
   options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
-                                         [](double v) { return v >= 16 && v <= 2048 && std::fmod(v, 2.0) == 0.0; }));
+                                         [](double v) { return sweep::is_bem_grid(v); }));
   const std::string format = read_choice(vm, "format", {"json", "table"});
 
   const model::StandardLinearSolid creep(T);
+  // As in `punchsweep sweep --reference bem`, so that a point gives the same bits in both.
+  sweep::use_reproducible_fft_plans();
   const auto start = std::chrono::steady_clock::now();
   const reference::ReferenceResult r = reference::evaluate_reference_point(problem, creep, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -8,7 +8,9 @@
 #include <sys/prctl.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <csignal>
 #include <cstdio>
@@ -24,7 +26,7 @@
 #include "app/sweep_options.hpp"
 #include "app/usage_error.hpp"
 #include "app/version.hpp"
-#include "io/map_size.hpp"
+#include "io/map_variables.hpp"
 #include "io/regime_map_writer.hpp"
 #include "io/tile_encoder.hpp"
 #include "io/tile_journal.hpp"
@@ -180,10 +182,55 @@ std::string utc_now() {
   return buf;
 }
 
-void print_dry_run(const sweep::SweepConfig& config, const sweep::Tiling& tiling,
-                   const sweep::TileEvaluator& evaluator, int ranks) {
+/// The map's layout: grid, times, quantities, the tiling's chunks, and the reference that
+/// `evaluator` computes (its grid, solver tolerance and sample).
+io::MapLayout map_layout(const sweep::SweepConfig& config, const sweep::Tiling& tiling,
+                         const sweep::TileEvaluator& evaluator) {
+  io::MapLayout layout{config.grid, config.times, config.quantities, tiling.chunk(), std::nullopt};
+  if (const auto& sample = evaluator.reference_sample()) {
+    const reference::ReferenceOptions& options = evaluator.reference_options();
+    layout.bem = io::BemSetup{options.n, options.solver.tolerance, static_cast<std::int64_t>(sample->size()),
+                              static_cast<std::int64_t>(config.reference.seed),
+                              "periodic BEM, FFT influence, Polonsky-Keer CG, SLS creep stepping"};
+  }
+  return layout;
+}
+
+/// Seconds per reference point at the configured BEM grid, measured on sampled points
+/// spread over the sample: at least one, more while the measurement is under a second.
+double calibrate_reference(const sweep::SweepConfig& config, const sweep::TileEvaluator& evaluator,
+                           std::size_t* measured) {
+  const sweep::ReferenceSample& sample = *evaluator.reference_sample();
+  const auto shape = config.grid.shape();
+  io::TileData data;
+  const auto start = std::chrono::steady_clock::now();
+  double elapsed = 0.0;
+  constexpr std::uint64_t kMaxPoints = 5;
+  const std::uint64_t tries = std::min<std::uint64_t>(kMaxPoints, sample.size());
+  *measured = 0;
+  for (std::uint64_t k = 0; k < tries && (k == 0 || elapsed < 1.0); ++k) {
+    std::uint64_t rest = sample.at(sample.size() / tries * k);
+    sweep::TileBox box;  // the one point, as a tile
+    for (std::size_t a = sweep::kAxes; a-- > 0; rest /= shape[a]) {
+      box.start[a] = static_cast<std::size_t>(rest % shape[a]);
+      box.count[a] = 1;
+    }
+    evaluator.evaluate(box, &data);  // the model's share of it is microseconds
+    ++*measured;
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return elapsed / static_cast<double>(*measured);
+}
+
+void print_dry_run(const sweep::SweepConfig& config, const sweep::Tiling& tiling, int ranks) {
   const std::size_t points = config.grid.points();
   const bool full = config.quantities == sweep::Quantities::full;
+  // The model is calibrated without the reference, which would swamp it; the reference is
+  // calibrated on its own.
+  const sweep::TileEvaluator evaluator(config.grid, config.C, config.times, config.quantities);
+  const sweep::TileEvaluator with_reference(config.grid, config.C, config.times, config.quantities,
+                                            config.reference);
+  const io::MapLayout layout = map_layout(config, tiling, with_reference);
   std::printf("punchsweep sweep --dry-run\n");
   for (std::size_t a = 0; a < sweep::kAxes; ++a) {
     const auto& axis = config.grid.axes[a];
@@ -195,8 +242,12 @@ void print_dry_run(const sweep::SweepConfig& config, const sweep::Tiling& tiling
               chunk[0], chunk[1], chunk[2], chunk[3], chunk[4]);
   std::printf("  quantities: %s", full ? "full" : "regime");
   if (full) std::printf(" (%zu snapshot times)", config.times.size());
-  const double bytes = static_cast<double>(points) *
-                       static_cast<double>(io::uncompressed_bytes_per_point(full, config.times.size()));
+  if (layout.bem) {
+    std::printf("\n  reference: periodic BEM on a %d x %d grid at %lld of %zu points (sample %s, seed %lld)",
+                layout.bem->grid, layout.bem->grid, static_cast<long long>(layout.bem->sample), points,
+                config.reference.sample ? "random" : "all", static_cast<long long>(layout.bem->seed));
+  }
+  const double bytes = static_cast<double>(points) * static_cast<double>(io::uncompressed_bytes_per_point(layout));
   std::printf("\n  output: %s, %.3g MiB uncompressed (shuffle + deflate shrink it, typically 3-10x)\n",
               config.output.c_str(), bytes / (1024.0 * 1024.0));
   // Calibration: whole tiles (so the per-tile reuse is measured too), picked at random.
@@ -213,9 +264,25 @@ void print_dry_run(const sweep::SweepConfig& config, const sweep::Tiling& tiling
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   const double per_point = elapsed / static_cast<double>(sampled);
-  const double estimate = per_point * static_cast<double>(points) / ranks;
+  // A tile is computed by one rank: with fewer tiles than ranks the others stay idle.
+  const double busy = static_cast<double>(std::min<std::size_t>(static_cast<std::size_t>(ranks), tiling.tiles()));
+  double estimate = per_point * static_cast<double>(points) / busy;
   std::printf("  calibration: %zu points in %.2f s (%.3g points/s per rank)\n", sampled, elapsed, 1.0 / per_point);
+  if (layout.bem) {
+    std::size_t measured = 0;
+    const double per_bem = calibrate_reference(config, with_reference, &measured);
+    const double bem_estimate = per_bem * static_cast<double>(layout.bem->sample) / busy;
+    std::printf("  reference calibration: %zu point%s, %.3g s per point at grid %d (%.3g s for the sample on %d "
+                "rank%s)\n",
+                measured, measured == 1 ? "" : "s", per_bem, layout.bem->grid, bem_estimate, ranks,
+                ranks == 1 ? "" : "s");
+    estimate += bem_estimate;
+  }
   std::printf("  estimated time: %.3g s on %d rank%s (compute only)\n", estimate, ranks, ranks == 1 ? "" : "s");
+  if (busy < ranks) {
+    std::printf("  only %zu tile%s for %d ranks: a smaller --chunk lets every rank work\n", tiling.tiles(),
+                tiling.tiles() == 1 ? "" : "s", ranks);
+  }
 }
 
 /// Rank 0's part of the run: files, journal replay, sink, finish. Returns the exit code.
@@ -233,7 +300,8 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
 
   // The HDF5 file is always rebuilt: after kill -9 it may be damaged, the journal not.
   io::RegimeMapWriter writer(paths.partial, encoder.layout(), attributes);
-  Progress progress(std::cerr, config.grid.points(), config.quiet);
+  const std::size_t bem_points = encoder.layout().bem ? static_cast<std::size_t>(encoder.layout().bem->sample) : 0;
+  Progress progress(std::cerr, config.grid.points(), bem_points, config.quiet);
   std::vector<bool> done(tiling.tiles(), false);
   std::optional<io::TileJournal> journal;
   if (start == Start::resume) {
@@ -308,9 +376,8 @@ int run_sweep_command(const std::vector<std::string>& args) {
   if (help) return 0;
 
   const sweep::Tiling tiling(config.grid.shape(), config.chunk);
-  const sweep::TileEvaluator evaluator(config.grid, config.C, config.times, config.quantities);
   if (config.dry_run) {
-    if (root) print_dry_run(config, tiling, evaluator, mpi.size());
+    if (root) print_dry_run(config, tiling, mpi.size());
     return 0;
   }
 
@@ -337,8 +404,9 @@ int run_sweep_command(const std::vector<std::string>& args) {
   for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_stop_signal);
   int code = 0;
   try {
+    const sweep::TileEvaluator evaluator(config.grid, config.C, config.times, config.quantities, config.reference);
     // Every rank encodes the tiles it computes into the map's chunks.
-    io::TileEncoder encoder(io::MapLayout{config.grid, config.times, config.quantities, tiling.chunk()});
+    io::TileEncoder encoder(map_layout(config, tiling, evaluator));
     if (root) {
       code = manage(config, args, start, tiling, evaluator, encoder, mpi.size());
     } else {

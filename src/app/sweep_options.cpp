@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,13 +29,14 @@ namespace {
 constexpr const char* kWhitespace = " \t\r\n\f\v";
 constexpr const char* kSeeHelp = " (see punchsweep sweep --help)";
 constexpr const char* kBoolRange = "true, false, 1, 0, yes or no";
-constexpr std::array<const char*, 5> kSections{"grid", "model", "time", "output", "run"};
+constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output", "run", "reference"};
 
 // Every config key; the order is that of the help text and of resolved_text.
 enum Key : std::size_t {
   kGridL, kGridDh, kGridT, kGridPbar, kGridS,
   kModelC, kModelCreepLaw, kTimeTimes, kOutputFile, kOutputQuantities,
-  kRunChunk, kRunQuiet, kRunResume, kRunOverwrite, kKeyCount
+  kRunChunk, kRunQuiet, kRunResume, kRunOverwrite,
+  kReferenceMethod, kReferenceGrid, kReferenceSample, kReferenceSeed, kKeyCount
 };
 
 struct KeySpec {
@@ -70,9 +74,24 @@ constexpr std::array<KeySpec, kKeyCount> kKeys{{
      "an integer >= 1"},
     {"run", "quiet", "BOOL", "false", "no progress output", kBoolRange},
     {"run", "resume", "BOOL", "false",
-     "continue an interrupted sweep into the existing partial map; refused if its grid or model differ",
+     "continue an interrupted sweep into the existing partial map; refused if its grid, model or reference "
+     "differ",
      kBoolRange},
     {"run", "overwrite", "BOOL", "false", "replace an existing map at output.file", kBoolRange},
+    {"reference", "method", "METHOD", "none",
+     "reference solver evaluated beside the model: none, or bem (the periodic boundary-element solver of "
+     "`punchsweep reference`; adds the bem_* variables)",
+     "none or bem"},
+    {"reference", "grid", "N", "128",
+     "BEM nodes per side N of the l x l cell (spacing l/N; the cost of a point grows faster than N^2, "
+     "--dry-run measures it)",
+     "an even integer in [16, 2048]"},
+    {"reference", "sample", "K", "all",
+     "the grid points that get the reference: all, or K distinct points drawn uniformly at random (a pure "
+     "function of the grid's shape, K and reference.seed); the others read not_computed",
+     "all, or an integer in [1, the grid's point count]"},
+    {"reference", "seed", "SEED", "1", "seed of the random sample of reference.sample = K",
+     "an integer in [0, 9223372036854775807]"},
 }};
 
 // The [grid] keys come first, in the order of the grid's axes.
@@ -87,13 +106,15 @@ struct Shortcut {
   bool takes_value;  // false: a flag that sets the key to true
 };
 
-constexpr std::array<Shortcut, 6> kShortcuts{{
+constexpr std::array<Shortcut, 8> kShortcuts{{
     {"output", kOutputFile, true},
     {"quantities", kOutputQuantities, true},
     {"chunk", kRunChunk, true},
     {"resume", kRunResume, false},
     {"overwrite", kRunOverwrite, false},
     {"quiet", kRunQuiet, false},
+    {"reference", kReferenceMethod, true},
+    {"bem-grid", kReferenceGrid, true},
 }};
 
 std::string dotted(Key key) { return std::string(kKeys[key].section) + "." + kKeys[key].name; }
@@ -156,14 +177,21 @@ po::options_description command_line_options() {
        "read settings from this INI file (format below); keys it leaves out keep their defaults")
       ("output", po::value<std::string>()->value_name("FILE.h5"),
        "same as --output.file: the HDF5 regime map to write; default regime_map.h5")
-      ("resume", "same as --run.resume true: continue an interrupted sweep; refused if its grid or model differ")
+      ("resume",
+       "same as --run.resume true: continue an interrupted sweep; refused if its grid, model or reference differ")
       ("overwrite", "same as --run.overwrite true: replace an existing map at the output file")
       ("dry-run", "resolve and check the configuration, report the grid and the work, compute nothing")
       ("quiet", "same as --run.quiet true: no progress output")
       ("quantities", po::value<std::string>()->value_name("WHAT"),
        "same as --output.quantities: regime or full; default full")
       ("chunk", po::value<std::string>()->value_name("N"),
-       "same as --run.chunk: target grid points per tile and HDF5 chunk; an integer >= 1; default 4096");
+       "same as --run.chunk: target grid points per tile and HDF5 chunk; an integer >= 1; default 4096")
+      ("reference", po::value<std::string>()->value_name("METHOD"),
+       "same as --reference.method: bem evaluates the periodic BEM reference at every grid point (or at "
+       "--reference.sample K random ones) into the bem_* variables; none or bem; default none")
+      ("bem-grid", po::value<std::string>()->value_name("N"),
+       "same as --reference.grid: BEM nodes per side of the l x l cell; an even integer in [16, 2048]; "
+       "default 128");
   opts.add(key_options("Config keys, each also an option --SECTION.KEY VALUE (it overrides the config file)"));
   return opts;
 }
@@ -354,6 +382,45 @@ std::string check_chunk(const std::string& text, std::size_t& chunk) {
   return {};
 }
 
+// A whole non-negative decimal integer up to `max`; empty, or why `text` is not one.
+std::string check_whole(const std::string& text, std::uint64_t max, std::uint64_t& value) {
+  const char* end = text.data() + text.size();
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits) return "'" + text + "' is not a whole number";
+  std::uint64_t parsed = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), end, parsed);
+  if (ec != std::errc() || ptr != end || parsed > max) {
+    return "value " + text + " is too large (at most " + std::to_string(max) + ")";
+  }
+  value = parsed;
+  return {};
+}
+
+std::string check_bem_grid(const std::string& text, int& grid) {
+  std::uint64_t value = 0;
+  if (std::string problem = check_whole(text, std::numeric_limits<int>::max(), value); !problem.empty()) {
+    return problem;
+  }
+  if (!sweep::is_bem_grid(static_cast<double>(value))) return "value " + text + " is outside its range";
+  grid = static_cast<int>(value);
+  return {};
+}
+
+std::string check_sample(const std::string& text, std::optional<std::uint64_t>& sample) {
+  if (text == "all") {
+    sample.reset();
+    return {};
+  }
+  std::uint64_t value = 0;
+  if (std::string problem = check_whole(text, std::numeric_limits<std::uint64_t>::max(), value);
+      !problem.empty()) {
+    return problem;
+  }
+  if (value < 1) return "value " + text + " is outside its range";
+  sample = value;  // not above the grid's point count: checked once the grid is known
+  return {};
+}
+
 // Fills `config` from the settings; returns one line per bad value.
 std::vector<std::string> apply_settings(const std::array<Setting, kKeyCount>& settings, sweep::SweepConfig& config) {
   std::vector<std::string> problems;
@@ -431,6 +498,25 @@ std::vector<std::string> apply_settings(const std::array<Setting, kKeyCount>& se
         case kRunOverwrite:
           problem = check_bool(text, config.overwrite);
           break;
+        case kReferenceMethod:
+          if (text == "none") {
+            config.reference.method = sweep::ReferenceMethod::none;
+          } else if (text == "bem") {
+            config.reference.method = sweep::ReferenceMethod::bem;
+          } else {
+            problem = "'" + text + "' is not one of none, bem";
+          }
+          break;
+        case kReferenceGrid:
+          problem = check_bem_grid(text, config.reference.grid);
+          break;
+        case kReferenceSample:
+          problem = check_sample(text, config.reference.sample);
+          break;
+        case kReferenceSeed:
+          // The map stores the seed as an int64 attribute.
+          problem = check_whole(text, std::numeric_limits<std::int64_t>::max(), config.reference.seed);
+          break;
         case kKeyCount:
           break;
       }
@@ -460,6 +546,29 @@ std::string grid_size_problem(const sweep::Grid& grid) {
          std::to_string(kMax) + " points";
 }
 
+// The canonical text of a [reference] key, as resolved_text and identity write it.
+std::string reference_value(Key key, const sweep::ReferenceConfig& reference) {
+  switch (key) {
+    case kReferenceMethod:
+      return reference.on() ? "bem" : "none";
+    case kReferenceGrid:
+      return std::to_string(reference.grid);
+    case kReferenceSample:
+      return reference.sample ? std::to_string(*reference.sample) : "all";
+    default:
+      return std::to_string(reference.seed);
+  }
+}
+
+// The sample must fit the grid: empty, or the problem line.
+std::string sample_size_problem(const sweep::SweepConfig& config, const std::string& text) {
+  const std::size_t points = config.grid.points();
+  if (!config.reference.sample || *config.reference.sample <= points) return {};
+  return dotted(kReferenceSample) + " = " + text + ": value " + text + " is more than the grid's " +
+         std::to_string(points) + (points == 1 ? " point" : " points") + "; valid range: all, or an integer in [1, " +
+         std::to_string(points) + "] (the grid's point count)";
+}
+
 // The final value of each key as it goes into resolved_text: axes keep their given form
 // (linspace stays readable), the rest are canonical.
 std::string resolved_value(Key key, const std::string& text, const sweep::SweepConfig& config) {
@@ -476,6 +585,11 @@ std::string resolved_value(Key key, const std::string& text, const sweep::SweepC
       return config.resume ? "true" : "false";
     case kRunOverwrite:
       return config.overwrite ? "true" : "false";
+    case kReferenceMethod:
+    case kReferenceGrid:
+    case kReferenceSample:
+    case kReferenceSeed:
+      return reference_value(key, config.reference);
     default:
       return text;
   }
@@ -520,12 +634,16 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
   lines.push_back(std::string("output.quantities = ") +
                   (config.quantities == sweep::Quantities::full ? "full" : "regime"));
   lines.push_back("run.chunk = " + std::to_string(config.chunk));
+  for (const Key key : {kReferenceMethod, kReferenceGrid, kReferenceSample, kReferenceSeed}) {
+    lines.push_back(dotted(key) + " = " + reference_value(key, config.reference));
+  }
   return lines;
 }
 
 void write_help(std::ostream& out, const po::options_description& opts) {
   out << "usage: punchsweep sweep [--config FILE.ini] [--output FILE.h5] [--resume] [--overwrite]\n"
          "                        [--dry-run] [--quiet] [--quantities regime|full] [--chunk N]\n"
+         "                        [--reference none|bem] [--bem-grid N]\n"
          "                        [--SECTION.KEY VALUE ...]\n\n"
          "punchsweep sweep: the regime map (immediate, delayed, never), t* and the contact state\n"
          "at every point of a 5-D grid over (l, dh, T, pbar, s), written to one HDF5 file.\n\n"
@@ -536,6 +654,19 @@ void write_help(std::ostream& out, const po::options_description& opts) {
          "over the embedded defaults. Keys the file leaves out keep their defaults, [grid] axes\n"
          "included, so a file may set only the axes it changes. A shortcut and its key (e.g.\n"
          "--output and --output.file) may not both be given.\n\n"
+         "The periodic BEM reference (--reference bem, or [reference] method = bem): beside the\n"
+         "model, every grid point, or reference.sample = K points drawn at random, is solved by the\n"
+         "boundary-element solver of `punchsweep reference` on an N x N grid (--bem-grid N) at the\n"
+         "time.times snapshots, into bem_regime, bem_t_star, bem_a1, bem_a2, bem_P1, bem_P2 and\n"
+         "bem_area_fraction (also with --quantities regime); points outside the sample read\n"
+         "not_computed (-1) or NaN. A BEM point costs milliseconds to seconds where a model point\n"
+         "costs microseconds: check --dry-run's estimate, and keep tiles short with --chunk (a\n"
+         "tile is the unit of scheduling, of resuming and of finishing after a stop signal).\n"
+         "  [reference]\n"
+         "  method = bem\n"
+         "  grid = 64\n"
+         "  sample = 500\n"
+         "  seed = 1\n\n"
          "Config file (INI: [section] headers, key = value lines, '#' starts a comment;\n"
          "unknown sections and keys are errors):\n"
          "  # my_sweep.ini\n"
@@ -584,7 +715,8 @@ void write_help(std::ostream& out, const po::options_description& opts) {
       << "Examples:\n"
          "  punchsweep sweep --dry-run\n"
          "  punchsweep sweep --config my_sweep.ini --output my_map.h5\n"
-         "  punchsweep sweep --config my_sweep.ini --grid.T 2,5,10 --model.C 0.7 --quiet\n\n"
+         "  punchsweep sweep --config my_sweep.ini --grid.T 2,5,10 --model.C 0.7 --quiet\n"
+         "  punchsweep sweep --reference bem --bem-grid 64 --reference.sample 500 --chunk 256\n\n"
          "Exit codes: 0 success, 2 bad input (one line per problem:\n"
          "KEY = VALUE: PROBLEM; valid range: RANGE), 3 stopped by SIGTERM, SIGUSR1 or\n"
          "SIGINT (finished tiles kept; finish with --resume), 1 failure.\n";
@@ -610,6 +742,11 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   std::vector<std::string> problems = apply_settings(settings, config);
   if (problems.empty()) {
     if (std::string problem = grid_size_problem(config.grid); !problem.empty()) problems.push_back(problem);
+  }
+  if (problems.empty()) {
+    if (std::string problem = sample_size_problem(config, settings[kReferenceSample].text); !problem.empty()) {
+      problems.push_back(problem);
+    }
   }
   if (!problems.empty()) throw UsageError(join(problems, "\n"));
 

@@ -1,6 +1,7 @@
 #include "io/encoded_tile.hpp"
 
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -9,8 +10,8 @@ namespace punchsweep::io {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x54455350;  // "PSET" read as little-endian bytes
-constexpr std::uint32_t kVersion = 1;
-constexpr std::size_t kHeaderSize = 2 * sizeof(std::uint32_t) + (2 + 3 + 4 + 1) * sizeof(std::uint64_t);
+constexpr std::uint32_t kVersion = 2;  // 2: BEM reference counts in the header
+constexpr std::size_t kHeaderSize = 2 * sizeof(std::uint32_t) + (2 + 3 + 4 + 3 + 1 + 1) * sizeof(std::uint64_t);
 
 /// Appends raw bytes at a moving cursor; memcpy keeps the buffer free of alignment demands.
 class Writer {
@@ -64,6 +65,8 @@ std::vector<std::byte> pack_encoded_tile(const EncodedTile& tile) {
   w.put(tile.summary.points);
   for (const std::uint64_t n : tile.summary.regimes) w.put(n);
   for (const std::uint64_t n : tile.summary.validity) w.put(n);
+  for (const std::uint64_t n : tile.summary.bem_regimes) w.put(n);
+  w.put(tile.summary.bem_agreeing);
   w.put(static_cast<std::uint64_t>(tile.chunks.size()));
   for (const std::vector<std::byte>& chunk : tile.chunks) w.put(static_cast<std::uint64_t>(chunk.size()));
   for (const std::vector<std::byte>& chunk : tile.chunks) w.put(chunk);
@@ -89,17 +92,27 @@ EncodedTile unpack_encoded_tile(const std::byte* bytes, std::size_t size) {
   tile.summary.points = r.get<std::uint64_t>();
   for (std::uint64_t& n : tile.summary.regimes) n = r.get<std::uint64_t>();
   for (std::uint64_t& n : tile.summary.validity) n = r.get<std::uint64_t>();
-  const auto at_most_points = [&](const auto& counts) {
-    std::uint64_t left = tile.summary.points;  // subtracting cannot overflow, unlike summing
+  for (std::uint64_t& n : tile.summary.bem_regimes) n = r.get<std::uint64_t>();
+  tile.summary.bem_agreeing = r.get<std::uint64_t>();
+  // What is left of `total` after the counts, or nothing when they exceed it (subtracting
+  // cannot overflow, unlike summing).
+  const auto left_after = [](std::uint64_t total, const auto& counts) -> std::optional<std::uint64_t> {
     for (const std::uint64_t n : counts) {
-      if (n > left) return false;
-      left -= n;
+      if (n > total) return std::nullopt;
+      total -= n;
     }
-    return true;
+    return total;
   };
-  if (!at_most_points(tile.summary.regimes) || !at_most_points(tile.summary.validity)) {
-    throw std::runtime_error("unpack_encoded_tile: the regime or validity counts exceed the tile's " +
-                             std::to_string(tile.summary.points) + " points");
+  const std::uint64_t points = tile.summary.points;
+  const std::optional<std::uint64_t> not_bem = left_after(points, tile.summary.bem_regimes);
+  if (!left_after(points, tile.summary.regimes) || !left_after(points, tile.summary.validity) || !not_bem) {
+    throw std::runtime_error("unpack_encoded_tile: the regime, validity or BEM counts exceed the tile's " +
+                             std::to_string(points) + " points");
+  }
+  if (tile.summary.bem_agreeing > points - *not_bem) {
+    throw std::runtime_error("unpack_encoded_tile: " + std::to_string(tile.summary.bem_agreeing) +
+                             " BEM points agree with the model, but the tile has only " +
+                             std::to_string(points - *not_bem));
   }
   const auto chunks = r.get<std::uint64_t>();
   std::size_t left = size - kHeaderSize;

@@ -16,8 +16,8 @@ void require_valid(const MapLayout& layout) {
                                   std::to_string(shape[a]) + "]");
     }
   }
-  if (layout.full() && layout.times.empty())
-    throw std::invalid_argument("regime map: the full quantities need at least one time");
+  if (layout.has_series() && layout.times.empty())
+    throw std::invalid_argument("regime map: the full quantities and the BEM reference need at least one time");
 }
 
 void require_inside_grid(const MapLayout& layout, const sweep::TileBox& box) {

@@ -2,6 +2,9 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "sweep/grid.hpp"
@@ -9,19 +12,33 @@
 
 namespace punchsweep::io {
 
-/// What a regime map holds: its grid, snapshot times, quantities and chunk shape.
+/// The periodic BEM reference a map holds: its bem_* variables are stored, and these
+/// numbers become the global attributes bem_grid, bem_tolerance, bem_sample, bem_seed and
+/// bem_method.
+struct BemSetup {
+  int grid = 0;              ///< BEM nodes per side of the l x l cell
+  double tolerance = 0.0;    ///< the contact solver's conjugate-gradient tolerance
+  std::int64_t sample = 0;   ///< number of grid points evaluated
+  std::int64_t seed = 0;     ///< seed of the random sample
+  std::string method;        ///< one line naming the method
+};
+
+/// What a regime map holds: its grid, snapshot times, quantities, chunk shape and reference.
 struct MapLayout {
   sweep::Grid grid;
-  std::vector<double> times;  ///< T_eps; the `time` coordinate (used by the full quantities)
+  std::vector<double> times;  ///< T_eps; the `time` coordinate (of the full quantities and bem_* series)
   sweep::Quantities quantities = sweep::Quantities::regime;
   std::array<std::size_t, sweep::kAxes> chunk{};  ///< 5-D chunk shape, each in [1, axis length]
+  std::optional<BemSetup> bem;                    ///< set: the bem_* variables are stored
 
-  /// Whether the time series are stored too.
+  /// Whether the model's time series are stored too.
   bool full() const { return quantities == sweep::Quantities::full; }
+  /// Whether any variable runs over the time axis.
+  bool has_series() const { return full() || bem.has_value(); }
 };
 
 /// Throws std::invalid_argument for an empty axis, a chunk length outside [1, axis length],
-/// or full quantities without times.
+/// or time series (full quantities or a BEM reference) without times.
 void require_valid(const MapLayout& layout);
 
 /// Throws std::invalid_argument, naming the axis, unless `box` is non-empty and inside the grid.

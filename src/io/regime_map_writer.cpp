@@ -105,6 +105,15 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   write_string_attribute(file_, "config", attributes.config_text, in);
   write_string_attribute(file_, "creep_law", attributes.creep_law, in);
   write_double_attribute(file_, "C", attributes.C, in);
+  if (layout.bem) {
+    const BemSetup& bem = *layout.bem;
+    const std::int32_t grid = bem.grid;
+    write_attribute(file_, "bem_grid", H5T_STD_I32LE, H5T_NATIVE_INT32, &grid, 0, in);
+    write_double_attribute(file_, "bem_tolerance", bem.tolerance, in);
+    write_attribute(file_, "bem_sample", H5T_STD_I64LE, H5T_NATIVE_INT64, &bem.sample, 0, in);
+    write_attribute(file_, "bem_seed", H5T_STD_I64LE, H5T_NATIVE_INT64, &bem.seed, 0, in);
+    write_string_attribute(file_, "bem_method", bem.method, in);
+  }
   const std::int8_t incomplete = 0;
   write_attribute(file_, "completed", H5T_STD_I8LE, H5T_NATIVE_INT8, &incomplete, 0, in);
 
@@ -127,8 +136,9 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   space6_ =
       Handle(H5Screate_simple(sweep::kAxes + 1, dims.data(), nullptr), H5Sclose, "make 6-D dataspace " + in);
 
-  for (const VariableSpec& spec : kVariables) {
-    if (!is_stored(spec, layout)) continue;
+  stored_ = stored_variables(layout);
+  for (const VariableSpec* stored : stored_) {
+    const VariableSpec& spec = *stored;
     Handle dataset = create_variable(spec.name, spec.codes != nullptr, spec.series);
     const std::string where = std::string("on '") + spec.name + "' " + in;
     const std::size_t rank = spec.series ? sweep::kAxes + 1 : sweep::kAxes;
@@ -140,7 +150,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
     if (spec.units != nullptr) write_string_attribute(dataset, "units", spec.units, where);
     write_string_attribute(dataset, "long_name", spec.long_name, where);
     if (spec.comment != nullptr) write_string_attribute(dataset, "comment", spec.comment, where);
-    if (spec.codes == &TileData::regime) {
+    if (spec.codes == &TileData::regime || spec.codes == &TileData::bem_regime) {
       write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, kRegimeFlags.data(),
                       kRegimeFlags.size(), where);
       write_string_attribute(dataset, "flag_meanings", kRegimeMeanings, where);
@@ -230,10 +240,10 @@ void RegimeMapWriter::write_encoded(const sweep::TileBox& box, const EncodedTile
   }
   std::array<hsize_t, sweep::kAxes + 1> offset{};
   for (std::size_t a = 0; a < sweep::kAxes; ++a) offset[a] = box.start[a];
-  for (std::size_t v = 0; v < variables_.size(); ++v) {  // variables_[v] is kVariables[v]
+  for (std::size_t v = 0; v < variables_.size(); ++v) {
     check(H5Dwrite_chunk(variables_[v], H5P_DEFAULT, 0, offset.data(), tile.chunks[v].size(),
                          tile.chunks[v].data()),
-          std::string("write a chunk of variable '") + kVariables[v].name + "' to " + path_);
+          std::string("write a chunk of variable '") + stored_[v]->name + "' to " + path_);
   }
 }
 
@@ -252,15 +262,14 @@ void RegimeMapWriter::write_hyperslab(const sweep::TileBox& box, const TileData&
   const Handle memory5(H5Screate_simple(sweep::kAxes, count.data(), nullptr), H5Sclose,
                        "make tile dataspace" + in);
   Handle memory6;
-  if (layout.full()) {
+  if (layout.has_series()) {
     check(H5Sselect_hyperslab(space6_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
           "select tile series" + in);
     memory6 = Handle(H5Screate_simple(sweep::kAxes + 1, count.data(), nullptr), H5Sclose,
                      "make series dataspace" + in);
   }
-  std::size_t v = 0;
-  for (const VariableSpec& spec : kVariables) {
-    if (!is_stored(spec, layout)) continue;
+  for (std::size_t v = 0; v < variables_.size(); ++v) {
+    const VariableSpec& spec = *stored_[v];
     const hid_t memory = spec.series ? memory6.get() : memory5.get();
     const hid_t file = spec.series ? space6_.get() : space5_.get();
     const herr_t status = spec.codes != nullptr ? H5Dwrite(variables_[v], H5T_NATIVE_INT8, memory, file,
@@ -268,7 +277,6 @@ void RegimeMapWriter::write_hyperslab(const sweep::TileBox& box, const TileData&
                                                 : H5Dwrite(variables_[v], H5T_NATIVE_DOUBLE, memory, file,
                                                            H5P_DEFAULT, (data.*spec.values).data());
     check(status, std::string("write variable '") + spec.name + "'" + in);
-    ++v;
   }
 }
 
@@ -294,6 +302,7 @@ void RegimeMapWriter::finish(int ranks, double wall_seconds, double points_per_s
   space6_.reset();
   space5_.reset();
   variables_.clear();
+  stored_.clear();
   coordinates_.clear();
   file_.reset();
 }

@@ -8,6 +8,7 @@
 #include "io/encoded_tile.hpp"
 #include "io/hdf5_handle.hpp"
 #include "io/map_layout.hpp"
+#include "io/map_variables.hpp"
 #include "io/tile_data.hpp"
 #include "io/tile_encoder.hpp"
 #include "sweep/grid.hpp"
@@ -35,20 +36,25 @@ struct MapAttributes {
 ///   five grid axes also carry `axis_spec` (the text the axis was given as) and `spacing`:
 ///   "log" for logspace() axes, "linear" for evenly spaced values (one or two values
 ///   included), "list" for anything else. `time` is written for regime-only maps too, as a
-///   record of the configured times (no variable uses it there).
+///   record of the configured times (only the bem_* series use it there).
 /// - Over (l, dh, T, pbar, s): `regime` and `valid` (int8 flag variables with
 ///   flag_values/flag_meanings; HDF5 fill value -1 = not_computed; no _FillValue attribute,
 ///   so readers do not turn the codes into floats), `t_star`, `h_0`, `h_inf`, `a1_inf`,
 ///   `a2_inf`, `area_fraction_inf` (float64, `_FillValue` and HDF5 fill NaN).
 /// - With Quantities::full, over (l, dh, T, pbar, s, time): `a1`, `a2`, `P1`, `P2`,
 ///   `area_fraction` (float64, fill NaN).
+/// - With a BEM reference (MapLayout::bem), whatever the quantities: `bem_regime` (int8,
+///   the flags of `regime`, no _FillValue) and `bem_t_star` over the five axes, and
+///   `bem_a1`, `bem_a2`, `bem_P1`, `bem_P2`, `bem_area_fraction` over the time axis too
+///   (float64, fill NaN); cells outside the reference sample read -1 or NaN.
 /// - Every variable is chunked by MapLayout::chunk (times whole for the 6-D ones) and
 ///   compressed with shuffle + deflate level 1. A tile that is exactly one chunk (or the
 ///   part of one inside the grid) is stored encoded (TileEncoder) with H5Dwrite_chunk; any
 ///   other box goes through HDF5's filter pipeline. Readers see no difference.
 /// - Global attributes: Conventions "CF-1.8", title, source, history, config, creep_law,
-///   C, completed (int8, 0 until finish() sets 1), and from finish(): ranks,
-///   wall_seconds, points_per_second.
+///   C, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
+///   bem_seed (int64), bem_method (string), then completed (int8, 0 until finish() sets 1),
+///   and from finish(): ranks, wall_seconds, points_per_second.
 ///
 /// All strings are scalar variable-length UTF-8 attributes (one-character fixed-length
 /// strings such as units "1" would come back from h5netcdf as bytes).
@@ -57,7 +63,7 @@ class RegimeMapWriter {
  public:
   /// Creates (or truncates) `path` with every coordinate, variable and attribute.
   /// Throws std::invalid_argument for an empty axis, a chunk outside [1, axis length],
-  /// or full quantities without times.
+  /// or time series without times.
   RegimeMapWriter(const std::string& path, const MapLayout& layout, const MapAttributes& attributes);
   ~RegimeMapWriter() = default;
   RegimeMapWriter(RegimeMapWriter&&) noexcept = default;
@@ -67,8 +73,8 @@ class RegimeMapWriter {
 
   /// Writes one tile into every variable. `data` is row-major over `box` (time last for
   /// the series); `box` may be any box of the grid. Throws std::invalid_argument if the box
-  /// leaves the grid or an array has the wrong length (series arrays must be empty for
-  /// Quantities::regime).
+  /// leaves the grid or an array has the wrong length (the arrays of variables the map does
+  /// not store must be empty).
   void write_tile(const sweep::TileBox& box, const TileData& data);
 
   /// Stores a tile that a TileEncoder of this map's layout encoded, one H5Dwrite_chunk per
@@ -97,7 +103,8 @@ class RegimeMapWriter {
   TileEncoder encoder_;  ///< holds the layout; encodes write_tile's whole-chunk tiles
   Handle file_;
   std::vector<Handle> coordinates_;  ///< l, dh, T, pbar, s, time
-  std::vector<Handle> variables_;    ///< the stored ones of kVariables, in its order
+  std::vector<const VariableSpec*> stored_;  ///< the kVariables entries the map stores, in order
+  std::vector<Handle> variables_;            ///< their datasets, one per entry of stored_
   Handle space5_;                    ///< file dataspace of the 5-D variables (selection reused)
   Handle space6_;                    ///< file dataspace of the 6-D variables
 };

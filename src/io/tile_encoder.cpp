@@ -67,11 +67,17 @@ EncodedTile TileEncoder::encode(std::uint64_t tile, const sweep::TileBox& box, c
   encoded.summary.points = points;
   count_codes(data.regime, &encoded.summary.regimes);
   count_codes(data.valid, &encoded.summary.validity);
+  count_codes(data.bem_regime, &encoded.summary.bem_regimes);
+  for (std::size_t i = 0; i < data.bem_regime.size(); ++i) {
+    const std::int8_t bem = data.bem_regime[i];  // counted as agreeing only where counted above
+    const bool counted = bem >= 0 && static_cast<std::size_t>(bem) < encoded.summary.bem_regimes.size();
+    if (counted && bem == data.regime[i]) ++encoded.summary.bem_agreeing;
+  }
 
   const bool edge = box.count != layout_.chunk;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const VariableSpec& spec : kVariables) {
-    if (!is_stored(spec, layout_)) continue;
+  for (const VariableSpec* stored : stored_variables(layout_)) {
+    const VariableSpec& spec = *stored;
     const bool codes = spec.codes != nullptr;
     const std::size_t element = codes ? sizeof(std::int8_t) : sizeof(double);
     const std::size_t inner = spec.series ? layout_.times.size() : 1;

@@ -24,7 +24,7 @@ namespace punchsweep::io {
 class TileEncoder {
  public:
   /// Throws std::invalid_argument for an empty axis, a chunk length outside
-  /// [1, axis length], or full quantities without times.
+  /// [1, axis length], or time series without times.
   explicit TileEncoder(const MapLayout& layout);
 
   /// Encodes `data` (row-major over `box`, time last for the series) into one chunk per

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +13,32 @@ namespace punchsweep::sweep {
 
 /// What the map stores: the 5-D regime variables only, or also the time series.
 enum class Quantities { regime, full };
+
+/// The reference solver a sweep evaluates beside the model: none, or the periodic
+/// boundary-element solver (src/reference), whose results go to the map's bem_* variables.
+enum class ReferenceMethod { none, bem };
+
+/// The BEM grid sizes (nodes per side of the l x l cell) that `punchsweep sweep` and
+/// `punchsweep reference` accept.
+inline constexpr int kMinBemGrid = 16;
+inline constexpr int kMaxBemGrid = 2048;
+
+/// Whether `n` is an accepted BEM grid size: an even integer in [kMinBemGrid, kMaxBemGrid].
+inline bool is_bem_grid(double n) {
+  return n >= kMinBemGrid && n <= kMaxBemGrid && std::fmod(n, 2.0) == 0.0;
+}
+
+/// [reference]: where and how the sweep evaluates the reference solver.
+struct ReferenceConfig {
+  ReferenceMethod method = ReferenceMethod::none;  ///< method
+  int grid = 128;                                  ///< grid: BEM nodes per side, is_bem_grid
+  /// sample: the number K of grid points drawn at random for the reference; empty for all.
+  std::optional<std::uint64_t> sample;
+  std::uint64_t seed = 1;  ///< seed: of the random sample, at most INT64_MAX
+
+  /// Whether the map gets the bem_* variables.
+  bool on() const { return method == ReferenceMethod::bem; }
+};
 
 /// A fully resolved, validated `punchsweep sweep` configuration (defaults, INI file and
 /// command-line overrides merged; the command line wins).
@@ -21,6 +50,7 @@ struct SweepConfig {
   std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
   Quantities quantities = Quantities::full;  ///< [output] quantities
   std::size_t chunk = 4096;           ///< [run] chunk: target points per tile / HDF5 chunk
+  ReferenceConfig reference;          ///< [reference] method, grid, sample, seed
   bool resume = false;                ///< [run] resume
   bool overwrite = false;             ///< [run] overwrite
   bool dry_run = false;               ///< --dry-run (command line only)
@@ -29,8 +59,8 @@ struct SweepConfig {
   /// The resolved configuration as INI text, every key with its final value and a comment
   /// line naming its source; stored in the map and compared on --resume.
   std::string resolved_text;
-  /// The keys that define the map's content (grid, model, time, quantities, chunk) as
-  /// "section.key = value" lines; --resume refuses any difference in these.
+  /// The keys that define the map's content (grid, model, time, quantities, chunk,
+  /// reference) as "section.key = value" lines; --resume refuses any difference in these.
   std::vector<std::string> identity;
 };
 

@@ -1,12 +1,15 @@
 #include "sweep/tile_evaluator.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
 #include "model/point_evaluation.hpp"
 #include "model/single_level.hpp"
 #include "model/standard_linear_solid.hpp"
+#include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::sweep {
 namespace {
@@ -19,8 +22,14 @@ constexpr std::size_t kMaxCacheEntries = std::size_t{1} << 24;
 }  // namespace
 
 TileEvaluator::TileEvaluator(const Grid& grid, double C, std::vector<double> times,
-                             Quantities quantities)
+                             Quantities quantities, const ReferenceConfig& reference)
     : grid_(grid), C_(C), times_(std::move(times)), quantities_(quantities) {
+  if (reference.on()) {
+    sample_.emplace(grid.points(), reference.sample, reference.seed);
+    reference_options_.n = reference.grid;
+    reference_options_.times = times_;
+    use_reproducible_fft_plans();
+  }
   const auto n = grid.shape();
   const std::size_t ends = n[kAxisL] * n[kAxisS] * n[kAxisT] * n[kAxisPbar];
   const std::size_t touch = n[kAxisL] * n[kAxisS] * n[kAxisDh];
@@ -34,7 +43,7 @@ TileEvaluator::TileEvaluator(const Grid& grid, double C, std::vector<double> tim
 void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
   const bool full = quantities_ == Quantities::full;
   const std::size_t nt = times_.size();
-  out->resize(box.points(), nt, full);
+  out->resize(box.points(), nt, full, sample_.has_value());
   const auto& c = box.count;
   const auto value = [&](std::size_t axis, std::size_t i) {
     return grid_.axes[axis].values[box.start[axis] + i];
@@ -134,6 +143,38 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
           }
         }
       }
+    }
+  }
+  if (sample_) evaluate_reference(box, out);
+}
+
+void TileEvaluator::evaluate_reference(const TileBox& box, io::TileData* out) const {
+  const auto n = grid_.shape();
+  const std::size_t nt = times_.size();
+  for (std::size_t i = 0; i < box.points(); ++i) {
+    // The tile's i-th point (row-major over the box) and its flat index in the grid.
+    std::array<std::size_t, kAxes> at{};
+    for (std::size_t a = kAxes, rest = i; a-- > 0; rest /= box.count[a]) at[a] = box.start[a] + rest % box.count[a];
+    std::uint64_t g = 0;
+    for (std::size_t a = 0; a < kAxes; ++a) g = g * n[a] + at[a];
+    if (!sample_->contains(g)) continue;
+
+    model::ContactProblem problem;
+    problem.l = grid_.axes[kAxisL].values[at[kAxisL]];
+    problem.dh = grid_.axes[kAxisDh].values[at[kAxisDh]];
+    problem.pbar0 = grid_.axes[kAxisPbar].values[at[kAxisPbar]];
+    problem.shape = model::Shape{static_cast<int>(grid_.axes[kAxisS].values[at[kAxisS]]), C_};
+    const model::StandardLinearSolid creep(grid_.axes[kAxisT].values[at[kAxisT]]);
+    const reference::ReferenceResult r = reference::evaluate_reference_point(problem, creep, reference_options_);
+    out->bem_regime[i] = static_cast<std::int8_t>(r.regime);
+    out->bem_t_star[i] = r.t_star.value_or(kNaN);
+    for (std::size_t it = 0; it < nt; ++it) {
+      const reference::ReferenceSnapshot& snap = r.series[it];
+      out->bem_a1[i * nt + it] = snap.a1;
+      out->bem_a2[i * nt + it] = snap.a2;
+      out->bem_P1[i * nt + it] = snap.P1;
+      out->bem_P2[i * nt + it] = snap.P2;
+      out->bem_area_fraction[i * nt + it] = snap.area_fraction;
     }
   }
 }

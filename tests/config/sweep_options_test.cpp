@@ -16,6 +16,7 @@ using punchsweep::app::identity_differences;
 using punchsweep::app::parse_sweep_options;
 using punchsweep::app::UsageError;
 using punchsweep::sweep::Quantities;
+using punchsweep::sweep::ReferenceMethod;
 using punchsweep::sweep::SweepConfig;
 
 SweepConfig parse(const std::vector<std::string>& args) {
@@ -88,6 +89,11 @@ TEST(SweepOptions, defaults_give_the_documented_grid) {
   EXPECT_FALSE(c.overwrite);
   EXPECT_FALSE(c.dry_run);
   EXPECT_EQ(c.config_path, "");
+  EXPECT_EQ(c.reference.method, ReferenceMethod::none);
+  EXPECT_FALSE(c.reference.on());
+  EXPECT_EQ(c.reference.grid, 128);
+  EXPECT_FALSE(c.reference.sample.has_value());  // all points
+  EXPECT_EQ(c.reference.seed, 1u);
 }
 
 TEST(SweepOptions, help_explains_options_ranges_syntax_and_default_grid) {
@@ -101,7 +107,10 @@ TEST(SweepOptions, help_explains_options_ranges_syntax_and_default_grid) {
                            "--grid.l AXIS", "--grid.pbar AXIS", "--model.creep_law", "--time.times",
                            "--run.overwrite", "in E0* = E0/(1-nu^2)", "integers in [1, 32]",
                            "logspace(a, b, n)", "[grid]", "[run]", "pbar = logspace(0.005, 0.08, 32)",
-                           "7 x 23 x 9 x 24 x 3 = 104328 points", "Keys the file leaves out keep their defaults"}) {
+                           "7 x 23 x 9 x 24 x 3 = 104328 points", "Keys the file leaves out keep their defaults",
+                           "--reference METHOD", "--bem-grid N", "--reference.method METHOD", "--reference.grid N",
+                           "--reference.sample K", "--reference.seed SEED", "an even integer in [16, 2048]",
+                           "[reference]", "bem_regime", "not_computed"}) {
     EXPECT_TRUE(contains(help, part)) << part;
   }
   EXPECT_EQ(c.grid.points(), 0u);  // a default SweepConfig: nothing was resolved
@@ -167,7 +176,8 @@ TEST(SweepOptions, every_key_is_also_a_command_line_option) {
                                "0.01 0.02", "--grid.s", "4", "--model.C", "1.5", "--model.creep_law", "sls",
                                "--time.times", "0, 7", "--output.file", "y.h5", "--output.quantities", "regime",
                                "--run.chunk", "2048", "--run.quiet", "true", "--run.resume", "yes",
-                               "--run.overwrite", "0"});
+                               "--run.overwrite", "0", "--reference.method", "bem", "--reference.grid", "32",
+                               "--reference.sample", "3", "--reference.seed", "0"});
   EXPECT_EQ(c.grid.axes[0].values, std::vector<double>{1});
   EXPECT_EQ(c.grid.axes[1].values, std::vector<double>{0});
   EXPECT_EQ(c.grid.axes[2].values, (std::vector<double>{1, 1.5, 2}));
@@ -182,6 +192,48 @@ TEST(SweepOptions, every_key_is_also_a_command_line_option) {
   EXPECT_TRUE(c.quiet);
   EXPECT_TRUE(c.resume);
   EXPECT_FALSE(c.overwrite);
+  EXPECT_TRUE(c.reference.on());
+  EXPECT_EQ(c.reference.grid, 32);
+  EXPECT_EQ(c.reference.sample, 3u);
+  EXPECT_EQ(c.reference.seed, 0u);
+}
+
+TEST(SweepOptions, reference_keys_come_from_the_file_and_the_shortcuts) {
+  const std::string path = write_ini("[reference]\nmethod = bem\ngrid = 64\nsample = 500\nseed = 42\n");
+  const SweepConfig from_file = parse({"--config", path});
+  EXPECT_EQ(from_file.reference.method, ReferenceMethod::bem);
+  EXPECT_EQ(from_file.reference.grid, 64);
+  EXPECT_EQ(from_file.reference.sample, 500u);
+  EXPECT_EQ(from_file.reference.seed, 42u);
+  const SweepConfig shortcuts = parse({"--config", path, "--reference", "none", "--bem-grid", "2048",
+                                       "--reference.sample", "all"});
+  EXPECT_FALSE(shortcuts.reference.on());
+  EXPECT_EQ(shortcuts.reference.grid, 2048);
+  EXPECT_FALSE(shortcuts.reference.sample.has_value());
+  EXPECT_EQ(shortcuts.reference.seed, 42u);
+  EXPECT_EQ(parse({"--reference", "bem", "--bem-grid", "16"}).reference.grid, 16);
+  const std::string both = refusal({"--reference", "bem", "--reference.method", "none", "--bem-grid", "32",
+                                    "--reference.grid", "64"});
+  EXPECT_TRUE(contains(both, "--reference and --reference.method")) << both;
+  EXPECT_TRUE(contains(both, "--bem-grid and --reference.grid")) << both;
+  const std::string unknown = refusal({"--reference.bogus", "1"});
+  EXPECT_TRUE(contains(unknown, "method, grid, sample, seed")) << unknown;
+}
+
+TEST(SweepOptions, reference_sample_may_not_exceed_the_grid) {
+  const std::vector<std::string> grid{"--grid.l", "0.5,1", "--grid.dh", "0.05", "--grid.T", "2,5",
+                                      "--grid.pbar", "0.01,0.02,0.03", "--grid.s", "2"};  // 12 points
+  std::vector<std::string> args = grid;
+  args.insert(args.end(), {"--reference", "bem", "--reference.sample", "12"});
+  EXPECT_EQ(parse(args).reference.sample, 12u);  // every point, drawn at random
+  args.back() = "13";
+  EXPECT_EQ(refusal(args),
+            "reference.sample = 13: value 13 is more than the grid's 12 points; valid range: all, or an integer "
+            "in [1, 12] (the grid's point count)");
+  // Checked whether or not the reference is on, like every other key.
+  args = grid;
+  args.insert(args.end(), {"--reference.sample", "100"});
+  EXPECT_TRUE(contains(refusal(args), "reference.sample = 100: value 100 is more than the grid's 12 points"));
 }
 
 TEST(SweepOptions, shortcut_and_its_key_together_are_an_error_naming_both) {
@@ -273,6 +325,23 @@ TEST(SweepOptions, each_bad_value_gives_one_line_with_key_value_and_range) {
       {{"--chunk", "0"}, "run.chunk = 0: ", "an integer >= 1"},
       {{"--chunk", "1.5"}, "run.chunk = 1.5: '1.5' is not an integer", "an integer >= 1"},
       {{"--run.resume", "maybe"}, "run.resume = maybe: ", "true, false, 1, 0, yes or no"},
+      {{"--reference", "fem"}, "reference.method = fem: 'fem' is not one of none, bem", "none or bem"},
+      {{"--bem-grid", "33"}, "reference.grid = 33: value 33 is outside its range", "an even integer in [16, 2048]"},
+      {{"--bem-grid", "8"}, "reference.grid = 8: value 8 is outside its range", "an even integer in [16, 2048]"},
+      {{"--reference.grid", "4096"}, "reference.grid = 4096: ", "an even integer in [16, 2048]"},
+      {{"--reference.grid", "64.5"}, "reference.grid = 64.5: '64.5' is not a whole number",
+       "an even integer in [16, 2048]"},
+      {{"--reference.grid", "99999999999"}, "reference.grid = 99999999999: value 99999999999 is too large",
+       "an even integer in [16, 2048]"},
+      {{"--reference.sample", "0"}, "reference.sample = 0: value 0 is outside its range",
+       "all, or an integer in [1, the grid's point count]"},
+      {{"--reference.sample", "some"}, "reference.sample = some: 'some' is not a whole number",
+       "all, or an integer in [1, the grid's point count]"},
+      {{"--reference.sample", "-5"}, "reference.sample = -5: ", "all, or an integer in [1,"},
+      {{"--reference.seed", "-1"}, "reference.seed = -1: '-1' is not a whole number",
+       "an integer in [0, 9223372036854775807]"},
+      {{"--reference.seed", "9223372036854775808"}, "reference.seed = 9223372036854775808: value "
+       "9223372036854775808 is too large (at most 9223372036854775807)", "an integer in [0, 9223372036854775807]"},
   };
   for (const BadValue& bad : cases) {
     const std::vector<std::string> lines = lines_of(refusal(bad.args));
@@ -313,7 +382,7 @@ TEST(SweepOptions, resolved_text_has_every_key_with_its_source) {
   const std::string path = write_ini("[grid]\nT = 2, 5, 10\n[model]\nC = 0.70\n");
   const SweepConfig c = parse({"--config", path, "--grid.s", "2", "--resume"});
   const std::string& text = c.resolved_text;
-  for (const char* section : {"[grid]", "[model]", "[time]", "[output]", "[run]"}) {
+  for (const char* section : {"[grid]", "[model]", "[time]", "[output]", "[run]", "[reference]"}) {
     EXPECT_TRUE(contains(text, std::string("\n") + section + "\n")) << section;
   }
   EXPECT_TRUE(contains(text, "# default\nl = linspace(0.5, 1.25, 7)\n")) << text;
@@ -323,7 +392,8 @@ TEST(SweepOptions, resolved_text_has_every_key_with_its_source) {
   EXPECT_TRUE(contains(text, "# from the command line\nresume = true\n")) << text;
   for (const char* key : {"\nl = ", "\ndh = ", "\nT = ", "\npbar = ", "\ns = ", "\nC = ", "\ncreep_law = ",
                           "\ntimes = ", "\nfile = ", "\nquantities = ", "\nchunk = ", "\nquiet = ",
-                          "\nresume = ", "\noverwrite = "}) {
+                          "\nresume = ", "\noverwrite = ", "\nmethod = none\n", "\ngrid = 128\n",
+                          "\nsample = all\n", "\nseed = 1\n"}) {
     EXPECT_TRUE(contains(text, key)) << key;
   }
 }
@@ -332,7 +402,8 @@ TEST(SweepOptions, resolved_text_reads_back_to_the_same_config) {
   const std::string path = write_ini("[grid]\nT = 2, 5, 10\ns = 2\n[time]\ntimes = 0 1 5\n[run]\nquiet = yes\n");
   const SweepConfig first = parse({"--config", path, "--grid.l", "linspace(0.6, 0.9, 4)", "--model.C", "0.25",
                                    "--output", "round.h5", "--quantities", "regime", "--chunk", "100",
-                                   "--overwrite"});
+                                   "--overwrite", "--reference", "bem", "--bem-grid", "048",
+                                   "--reference.sample", "7", "--reference.seed", "00012"});
   const SweepConfig again = parse({"--config", write_ini(first.resolved_text, "_resolved")});
   for (std::size_t a = 0; a < first.grid.axes.size(); ++a) {
     EXPECT_EQ(again.grid.axes[a].values, first.grid.axes[a].values) << a;
@@ -348,12 +419,16 @@ TEST(SweepOptions, resolved_text_reads_back_to_the_same_config) {
   EXPECT_EQ(again.quiet, first.quiet);
   EXPECT_EQ(again.resume, first.resume);
   EXPECT_EQ(again.overwrite, first.overwrite);
+  EXPECT_EQ(again.reference.method, first.reference.method);
+  EXPECT_EQ(again.reference.grid, 48);
+  EXPECT_EQ(again.reference.sample, 7u);
+  EXPECT_EQ(again.reference.seed, 12u);
   EXPECT_EQ(again.identity, first.identity);
 }
 
 TEST(SweepOptions, identity_lists_the_content_keys_in_shortest_decimals) {
   const SweepConfig c = parse({"--output", "elsewhere.h5", "--quiet"});
-  ASSERT_EQ(c.identity.size(), 10u);
+  ASSERT_EQ(c.identity.size(), 14u);
   EXPECT_EQ(c.identity[0], "grid.l = 0.5, 0.625, 0.75, 0.875, 1, 1.125, 1.25");
   EXPECT_EQ(c.identity[2], "grid.T = 2, 3, 4, 5, 6, 7, 8, 9, 10");
   EXPECT_EQ(c.identity[3].rfind("grid.pbar = 0.005, ", 0), 0u) << c.identity[3];
@@ -363,6 +438,10 @@ TEST(SweepOptions, identity_lists_the_content_keys_in_shortest_decimals) {
   EXPECT_EQ(c.identity[7], "time.times = 0, 0.5, 1, 2, 5");
   EXPECT_EQ(c.identity[8], "output.quantities = full");
   EXPECT_EQ(c.identity[9], "run.chunk = 4096");
+  EXPECT_EQ(c.identity[10], "reference.method = none");
+  EXPECT_EQ(c.identity[11], "reference.grid = 128");
+  EXPECT_EQ(c.identity[12], "reference.sample = all");
+  EXPECT_EQ(c.identity[13], "reference.seed = 1");
   EXPECT_EQ(c.identity, parse({}).identity);  // where the map goes does not change what it holds
 }
 
@@ -385,6 +464,22 @@ TEST(SweepOptions, identity_differences_name_each_differing_key) {
   ASSERT_EQ(differences.size(), 2u);
   EXPECT_EQ(differences[0], "grid.T: the existing map has 2, 5, 10; this run asks for 2, 5");
   EXPECT_EQ(differences[1], "run.chunk: the existing map has 4096; this run asks for 100");
+}
+
+TEST(SweepOptions, identity_differences_name_each_differing_reference_key) {
+  const std::vector<std::string> existing =
+      parse({"--reference", "bem", "--bem-grid", "32", "--reference.sample", "5"}).identity;
+  EXPECT_TRUE(identity_differences(existing, parse({"--reference.method", "bem", "--reference.grid", "032",
+                                                    "--reference.sample", "5", "--reference.seed", "1"})
+                                                 .identity)
+                  .empty());
+  const std::vector<std::string> differences = identity_differences(
+      existing, parse({"--bem-grid", "64", "--reference.sample", "all", "--reference.seed", "2"}).identity);
+  ASSERT_EQ(differences.size(), 4u);
+  EXPECT_EQ(differences[0], "reference.method: the existing map has bem; this run asks for none");
+  EXPECT_EQ(differences[1], "reference.grid: the existing map has 32; this run asks for 64");
+  EXPECT_EQ(differences[2], "reference.sample: the existing map has 5; this run asks for all");
+  EXPECT_EQ(differences[3], "reference.seed: the existing map has 1; this run asks for 2");
 }
 
 TEST(SweepOptions, identity_differences_report_keys_only_one_side_has) {

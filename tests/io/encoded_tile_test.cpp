@@ -15,7 +15,7 @@ namespace {
 
 using testing::sample_encoded_tile;
 
-constexpr std::size_t kHeaderSize = 88;
+constexpr std::size_t kHeaderSize = 120;
 
 /// The message of the runtime_error `f` throws ("" if it throws none).
 template <typename F>
@@ -118,6 +118,24 @@ TEST(EncodedTile, encoded_tile_rejects_summary_counts_beyond_its_points) {
   // Each count alone fits, their sum does not (nor would it in 64 bits).
   for (std::size_t c = 0; c < 4; ++c) set_u64(&bytes, kValidityAt + 8 * c, tile.summary.points);
   EXPECT_THROW(unpack_encoded_tile(bytes.data(), bytes.size()), std::runtime_error);
+}
+
+TEST(EncodedTile, encoded_tile_keeps_its_bem_counts_and_rejects_impossible_ones) {
+  EncodedTile tile = sample_encoded_tile(5, 3, 20);
+  tile.summary.bem_regimes = {4, 5, 6};
+  tile.summary.bem_agreeing = 15;  // all of them
+  const std::vector<std::byte> good = pack_encoded_tile(tile);
+  EXPECT_EQ(unpack_encoded_tile(good.data(), good.size()).summary, tile.summary);
+  constexpr std::size_t kBemRegimesAt = 80;
+  constexpr std::size_t kBemAgreeingAt = 104;
+  std::vector<std::byte> bytes = good;
+  set_u64(&bytes, kBemRegimesAt, tile.summary.points);  // with the others, more than the points
+  EXPECT_NE(error_of([&] { unpack_encoded_tile(bytes.data(), bytes.size()); }).find("BEM counts exceed"),
+            std::string::npos);
+  bytes = good;
+  set_u64(&bytes, kBemAgreeingAt, 16);  // more agreeing points than BEM points
+  EXPECT_NE(error_of([&] { unpack_encoded_tile(bytes.data(), bytes.size()); }).find("agree with the model"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -10,11 +10,13 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "io/hdf5_handle.hpp"
+#include "io/map_variables.hpp"
 #include "io/tile_encoder.hpp"
 #include "sample_tiles.hpp"
 #include "scratch_dir.hpp"
@@ -34,7 +36,10 @@ const std::vector<std::string> kFloatVariables{
     "t_star", "h_0", "h_inf", "a1_inf", "a2_inf",       "area_fraction_inf",
     "a1",     "a2",  "P1",    "P2",     "area_fraction"};
 
-MapLayout small_layout(sweep::Quantities quantities) {
+/// A reference setup as the sweep records it.
+BemSetup small_bem() { return {32, 1e-10, 40, 7, "periodic BEM test method"}; }
+
+MapLayout small_layout(sweep::Quantities quantities, bool bem = false) {
   MapLayout layout;
   layout.grid.axes[sweep::kAxisL] = {{0.5, 0.75, 1.0}, "linspace(0.5, 1, 3)", false};
   layout.grid.axes[sweep::kAxisDh] = {{0.0, 0.01, 0.05, 0.1}, "0, 0.01, 0.05, 0.1", false};
@@ -44,6 +49,7 @@ MapLayout small_layout(sweep::Quantities quantities) {
   layout.times = {0.0, 0.5, 2.0};
   layout.quantities = quantities;
   layout.chunk = sweep::Tiling(layout.grid.shape(), 7).chunk();  // (1, 1, 1, 3, 2): pbar has edge tiles
+  if (bem) layout.bem = small_bem();
   return layout;
 }
 
@@ -76,14 +82,22 @@ std::int8_t regime_code(std::size_t g) { return static_cast<std::int8_t>(g % 3);
 std::int8_t valid_code(std::size_t g) { return static_cast<std::int8_t>(g % 4); }
 /// Tiles left unwritten, so fill values can be checked.
 bool skipped(std::size_t tile) { return tile % 5 == 1; }
+/// Grid points in the sample map's reference sample (the others stay not computed).
+bool bem_sampled(std::size_t g) { return g % 3 == 0; }
+std::int8_t bem_regime_code(std::size_t g) { return static_cast<std::int8_t>((g / 3) % 3); }
+/// The bem_* float variables, and the index of the first in cell_value's numbering.
+const std::vector<std::string> kBemFloatVariables{"bem_t_star", "bem_a1", "bem_a2", "bem_P1", "bem_P2",
+                                                  "bem_area_fraction"};
+constexpr std::size_t kFirstBemVar = 20;
 
 /// The sample map's values for every point of `box`.
 TileData tile_for(const sweep::TileBox& box, const MapLayout& layout) {
   const auto shape = layout.grid.shape();
   const std::size_t times = layout.times.size();
   const bool full = layout.quantities == sweep::Quantities::full;
+  const bool bem = layout.bem.has_value();
   TileData data;
-  data.resize(box.points(), times, full);
+  data.resize(box.points(), times, full, bem);
   std::size_t i = 0;
   std::array<std::size_t, sweep::kAxes> at{};
   for (at[0] = box.start[0]; at[0] < box.start[0] + box.count[0]; ++at[0])
@@ -98,6 +112,15 @@ TileData tile_for(const sweep::TileBox& box, const MapLayout& layout) {
             for (auto* v : {&data.t_star, &data.h_0, &data.h_inf, &data.a1_inf, &data.a2_inf,
                             &data.area_fraction_inf}) {
               (*v)[i] = cell_value(var++, g, 0);
+            }
+            if (bem && bem_sampled(g)) {
+              data.bem_regime[i] = bem_regime_code(g);
+              data.bem_t_star[i] = cell_value(kFirstBemVar, g, 0);
+              std::size_t bem_var = kFirstBemVar + 1;
+              for (auto* v : {&data.bem_a1, &data.bem_a2, &data.bem_P1, &data.bem_P2, &data.bem_area_fraction}) {
+                for (std::size_t t = 0; t < times; ++t) (*v)[i * times + t] = cell_value(bem_var, g, t);
+                ++bem_var;
+              }
             }
             if (!full) continue;
             for (auto* v : {&data.a1, &data.a2, &data.P1, &data.P2, &data.area_fraction}) {
@@ -181,8 +204,8 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 class RegimeMapWriterTest : public ::testing::Test {
  protected:
   /// Writes the sample map at `path_` and finishes it (unless `finish` is false).
-  void make_map(sweep::Quantities quantities, bool finish = true) {
-    layout_ = small_layout(quantities);
+  void make_map(sweep::Quantities quantities, bool finish = true, bool bem = false) {
+    layout_ = small_layout(quantities, bem);
     RegimeMapWriter writer(path_, layout_, small_attributes());
     written_ = write_sample_map(&writer, layout_);
     writer.flush();
@@ -572,17 +595,19 @@ TEST_F(RegimeMapWriterTest, writer_rejects_tiles_that_do_not_fit) {
   box.start = {2, 3, 1, 3, 0};
   box.count = {1, 1, 1, 2, 2};
   TileData data;
-  data.resize(box.points(), layout.times.size(), true);
+  data.resize(box.points(), layout.times.size(), true, false);
   EXPECT_NO_THROW(writer.write_tile(box, data));
   box.count[sweep::kAxisPbar] = 3;  // runs past the last pbar
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
   box.count[sweep::kAxisPbar] = 2;
   data.P1.pop_back();
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
-  data.resize(box.points(), layout.times.size(), false);  // series missing from a full map
+  data.resize(box.points(), layout.times.size(), false, false);  // series missing from a full map
+  EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
+  data.resize(box.points(), layout.times.size(), true, true);  // bem_* arrays in a map without them
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
   writer.finish(1, 0.0, 0.0);
-  data.resize(box.points(), layout.times.size(), true);
+  data.resize(box.points(), layout.times.size(), true, false);
   EXPECT_THROW(writer.write_tile(box, data), std::logic_error);
   EXPECT_THROW(writer.finish(1, 0.0, 0.0), std::logic_error);
 }
@@ -615,11 +640,9 @@ TEST_F(RegimeMapWriterTest, map_stores_a_configuration_text_larger_than_64_kib) 
 std::vector<std::vector<std::byte>> stored_chunks(const std::string& path, const MapLayout& layout) {
   const Handle file = open_file(path);
   std::vector<std::vector<std::byte>> chunks;
-  std::vector<std::string> variables = kAxisVariables;
-  if (layout.quantities == sweep::Quantities::full)
-    variables.insert(variables.end(), kSeriesVariables.begin(), kSeriesVariables.end());
   const sweep::Tiling tiling(layout.grid.shape(), 7);
-  for (const std::string& name : variables) {
+  for (const VariableSpec* spec : stored_variables(layout)) {
+    const std::string name = spec->name;
     const Handle dataset = open_dataset(file, name);
     for (std::size_t tile = 0; tile < tiling.tiles(); ++tile) {
       std::array<hsize_t, sweep::kAxes + 1> offset{};
@@ -640,9 +663,9 @@ std::vector<std::vector<std::byte>> stored_chunks(const std::string& path, const
 std::vector<std::vector<std::byte>> variable_bytes(const std::string& path, const MapLayout& layout) {
   const Handle file = open_file(path);
   std::vector<std::vector<std::byte>> out;
-  for (const std::string& name : kAxisVariables) {
-    const Handle dataset = open_dataset(file, name);
-    if (name == "regime" || name == "valid") {
+  for (const VariableSpec* spec : stored_variables(layout)) {
+    const Handle dataset = open_dataset(file, spec->name);
+    if (spec->codes != nullptr) {
       const auto codes = read_dataset<std::int8_t>(dataset, H5T_NATIVE_INT8);
       const auto* p = reinterpret_cast<const std::byte*>(codes.data());
       out.emplace_back(p, p + codes.size());
@@ -652,19 +675,14 @@ std::vector<std::vector<std::byte>> variable_bytes(const std::string& path, cons
       out.emplace_back(p, p + values.size() * sizeof(double));
     }
   }
-  if (layout.quantities == sweep::Quantities::full) {
-    for (const std::string& name : kSeriesVariables) {
-      const auto values = read_dataset<double>(open_dataset(file, name), H5T_NATIVE_DOUBLE);
-      const auto* p = reinterpret_cast<const std::byte*>(values.data());
-      out.emplace_back(p, p + values.size() * sizeof(double));
-    }
-  }
   return out;
 }
 
 TEST_F(RegimeMapWriterTest, write_encoded_and_write_tile_store_identical_data) {
-  for (const auto quantities : {sweep::Quantities::regime, sweep::Quantities::full}) {
-    layout_ = small_layout(quantities);
+  for (const auto& [quantities, bem] : {std::pair{sweep::Quantities::regime, false},
+                                        std::pair{sweep::Quantities::full, false},
+                                        std::pair{sweep::Quantities::regime, true}}) {
+    layout_ = small_layout(quantities, bem);
     const std::string by_tile = dir_.file("by_tile.h5");
     const std::string encoded = dir_.file("encoded.h5");
     std::vector<bool> written;
@@ -723,6 +741,129 @@ TEST_F(RegimeMapWriterTest, write_encoded_refuses_a_tile_that_does_not_fit) {
                std::invalid_argument);
   writer.finish(1, 0.0, 0.0);
   EXPECT_THROW(writer.write_encoded(box, tile), std::logic_error);
+}
+
+
+const std::vector<std::string> kBemVariables{"bem_regime", "bem_t_star", "bem_a1",           "bem_a2",
+                                             "bem_P1",     "bem_P2",     "bem_area_fraction"};
+
+TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
+  make_map(sweep::Quantities::full);
+  {
+    const Handle file = open_file(path_);
+    for (const std::string& name : kBemVariables) EXPECT_EQ(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
+    for (const char* name : {"bem_grid", "bem_tolerance", "bem_sample", "bem_seed", "bem_method"})
+      EXPECT_EQ(H5Aexists(file, name), 0) << name;
+  }
+  // With the regime quantities the reference keeps its series (over the time coordinate).
+  make_map(sweep::Quantities::regime, /*finish=*/true, /*bem=*/true);
+  const Handle file = open_file(path_);
+  for (const std::string& name : kBemVariables) EXPECT_GT(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
+  for (const std::string& name : kSeriesVariables) EXPECT_EQ(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
+  std::vector<std::string> names;
+  ASSERT_GE(H5Literate(file, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect_link, &names), 0);
+  std::vector<std::string> expected = kCoordinates;
+  expected.insert(expected.end(), kAxisVariables.begin(), kAxisVariables.end());
+  expected.insert(expected.end(), kBemVariables.begin(), kBemVariables.end());
+  EXPECT_EQ(names, expected);
+}
+
+TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_values) {
+  make_map(sweep::Quantities::full, /*finish=*/true, /*bem=*/true);
+  const Handle file = open_file(path_);
+  std::vector<Handle> coordinates;
+  for (const std::string& name : kCoordinates) coordinates.push_back(open_dataset(file, name));
+  const std::vector<std::string> units{"", "T_eps", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", "1"};
+  for (std::size_t v = 0; v < kBemVariables.size(); ++v) {
+    const std::string& name = kBemVariables[v];
+    const Handle dataset = open_dataset(file, name);
+    const Handle space(H5Dget_space(dataset), H5Sclose, "get space");
+    const int rank = H5Sget_simple_extent_ndims(space);
+    EXPECT_EQ(rank, v < 2 ? 5 : 6) << name;
+    for (int d = 0; d < rank; ++d) {
+      EXPECT_GT(H5DSis_attached(dataset, coordinates[static_cast<std::size_t>(d)], static_cast<unsigned>(d)), 0)
+          << name << " dim " << d;
+    }
+    EXPECT_EQ(read_string_attribute(dataset, "long_name").rfind("periodic BEM reference: ", 0), 0U) << name;
+    EXPECT_NE(read_string_attribute(dataset, "comment").find("outside the reference sample"), std::string::npos)
+        << name;
+    if (units[v].empty()) {
+      EXPECT_EQ(H5Aexists(dataset, "units"), 0) << name;
+    } else {
+      EXPECT_EQ(read_string_attribute(dataset, "units"), units[v]) << name;
+    }
+  }
+  const Handle regime = open_dataset(file, "bem_regime");
+  const Handle type(H5Dget_type(regime), H5Tclose, "get type");
+  EXPECT_GT(H5Tequal(type, H5T_STD_I8LE), 0);
+  EXPECT_EQ(read_attribute<std::int8_t>(regime, "flag_values", H5T_NATIVE_INT8),
+            (std::vector<std::int8_t>{0, 1, 2, -1}));
+  EXPECT_EQ(read_string_attribute(regime, "flag_meanings"), "immediate delayed never not_computed");
+  EXPECT_EQ(H5Aexists(regime, "_FillValue"), 0);
+  const Handle regime_dcpl(H5Dget_create_plist(regime), H5Pclose, "get dcpl");
+  std::int8_t code_fill = 0;
+  ASSERT_GE(H5Pget_fill_value(regime_dcpl, H5T_NATIVE_INT8, &code_fill), 0);
+  EXPECT_EQ(code_fill, -1);
+  EXPECT_NE(read_string_attribute(open_dataset(file, "bem_t_star"), "comment")
+                .find("NaN for never, for delayed beyond the last snapshot time"),
+            std::string::npos);
+  for (const std::string& name : kBemFloatVariables) {
+    const Handle dataset = open_dataset(file, name);
+    const std::vector<double> fill = read_attribute<double>(dataset, "_FillValue", H5T_NATIVE_DOUBLE);
+    ASSERT_EQ(fill.size(), 1U);
+    EXPECT_TRUE(std::isnan(fill[0])) << name;
+    const Handle dcpl(H5Dget_create_plist(dataset), H5Pclose, "get dcpl");
+    double hdf5_fill = 0.0;
+    ASSERT_GE(H5Pget_fill_value(dcpl, H5T_NATIVE_DOUBLE, &hdf5_fill), 0);
+    EXPECT_TRUE(std::isnan(hdf5_fill)) << name;
+  }
+}
+
+TEST_F(RegimeMapWriterTest, map_with_a_reference_records_its_grid_tolerance_sample_and_seed) {
+  make_map(sweep::Quantities::regime, /*finish=*/true, /*bem=*/true);
+  const Handle file = open_file(path_);
+  const BemSetup bem = small_bem();
+  EXPECT_TRUE(attribute_type_is(file, "bem_grid", H5T_STD_I32LE));
+  EXPECT_EQ(read_attribute<std::int32_t>(file, "bem_grid", H5T_NATIVE_INT32), std::vector<std::int32_t>{bem.grid});
+  EXPECT_TRUE(attribute_type_is(file, "bem_tolerance", H5T_IEEE_F64LE));
+  EXPECT_EQ(read_attribute<double>(file, "bem_tolerance", H5T_NATIVE_DOUBLE), std::vector<double>{bem.tolerance});
+  EXPECT_TRUE(attribute_type_is(file, "bem_sample", H5T_STD_I64LE));
+  EXPECT_EQ(read_attribute<std::int64_t>(file, "bem_sample", H5T_NATIVE_INT64),
+            std::vector<std::int64_t>{bem.sample});
+  EXPECT_TRUE(attribute_type_is(file, "bem_seed", H5T_STD_I64LE));
+  EXPECT_EQ(read_attribute<std::int64_t>(file, "bem_seed", H5T_NATIVE_INT64), std::vector<std::int64_t>{bem.seed});
+  EXPECT_EQ(read_string_attribute(file, "bem_method"), bem.method);
+}
+
+TEST_F(RegimeMapWriterTest, bem_values_read_back_bit_exactly_and_unsampled_cells_as_not_computed) {
+  make_map(sweep::Quantities::regime, /*finish=*/true, /*bem=*/true);
+  const Handle file = open_file(path_);
+  const std::vector<std::int8_t> codes =
+      read_dataset<std::int8_t>(open_dataset(file, "bem_regime"), H5T_NATIVE_INT8);
+  std::size_t sampled = 0;
+  for (std::size_t g = 0; g < written_.size(); ++g) {
+    const bool computed = written_[g] && bem_sampled(g);
+    ASSERT_EQ(codes[g], computed ? bem_regime_code(g) : -1) << g;
+    sampled += computed ? 1 : 0;
+  }
+  EXPECT_GT(sampled, 0U);
+  const std::size_t times = layout_.times.size();
+  for (std::size_t v = 0; v < kBemFloatVariables.size(); ++v) {
+    const std::vector<double> values =
+        read_dataset<double>(open_dataset(file, kBemFloatVariables[v]), H5T_NATIVE_DOUBLE);
+    const std::size_t per_point = v == 0 ? 1 : times;
+    ASSERT_EQ(values.size(), written_.size() * per_point);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const std::size_t g = i / per_point;
+      if (written_[g] && bem_sampled(g)) {
+        ASSERT_TRUE(same_bits(values[i], cell_value(kFirstBemVar + v, g, i % per_point)))
+            << kBemFloatVariables[v] << " at " << i;
+      } else {
+        ASSERT_TRUE(std::isnan(values[i])) << kBemFloatVariables[v] << " at " << i;
+      }
+    }
+  }
+  expect_sample_values(path_, layout_, written_);  // the model's variables are untouched
 }
 
 }  // namespace

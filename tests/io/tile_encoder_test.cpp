@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -21,7 +22,7 @@ namespace {
 using testing::sample_tile;
 
 /// A 2 x 3 x 2 x 5 x 2 grid in chunks of 1 x 2 x 1 x 3 x 2: edge tiles on dh and pbar.
-MapLayout test_layout(sweep::Quantities quantities) {
+MapLayout test_layout(sweep::Quantities quantities, bool bem = false) {
   MapLayout layout;
   layout.grid.axes[sweep::kAxisL] = {{0.5, 1.0}, "0.5, 1", false};
   layout.grid.axes[sweep::kAxisDh] = {{0.0, 0.05, 0.1}, "0, 0.05, 0.1", false};
@@ -31,6 +32,7 @@ MapLayout test_layout(sweep::Quantities quantities) {
   layout.times = {0.0, 1.0, 5.0};
   layout.quantities = quantities;
   layout.chunk = {1, 2, 1, 3, 2};
+  if (bem) layout.bem = BemSetup{32, 1e-10, 12, 1, "test"};
   return layout;
 }
 
@@ -99,20 +101,27 @@ std::vector<std::byte> expected_chunk(const MapLayout& layout, const sweep::Tile
 }
 
 TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
-  for (const auto quantities : {sweep::Quantities::regime, sweep::Quantities::full}) {
-    const MapLayout layout = test_layout(quantities);
+  // (quantities, BEM reference, chunks per tile): the model's 8 + 5 series, the reference's 2 + 5.
+  for (const auto& [quantities, bem, chunks] : {std::tuple{sweep::Quantities::regime, false, 8U},
+                                                std::tuple{sweep::Quantities::full, false, 13U},
+                                                std::tuple{sweep::Quantities::regime, true, 15U},
+                                                std::tuple{sweep::Quantities::full, true, 20U}}) {
+    const MapLayout layout = test_layout(quantities, bem);
     TileEncoder encoder(layout);
     const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<const VariableSpec*> stored = stored_variables(layout);
     std::size_t edges = 0;
     std::uint64_t seed = 0;
     for (const sweep::TileBox& box : chunk_boxes(layout)) {
       edges += box.count != layout.chunk ? 1 : 0;
-      const TileData data = sample_tile(++seed, box.points(), layout.times.size(), layout.full());
+      const TileData data = sample_tile(++seed, box.points(), layout.times.size(), layout.full(), bem);
       const EncodedTile encoded = encoder.encode(seed, box, data);
       EXPECT_EQ(encoded.tile, seed);
-      ASSERT_EQ(encoded.chunks.size(), layout.full() ? 13U : 8U);
+      ASSERT_EQ(encoded.chunks.size(), chunks);
+      ASSERT_EQ(stored.size(), chunks);
       for (std::size_t v = 0; v < encoded.chunks.size(); ++v) {
-        const VariableSpec& spec = kVariables[v];
+        const VariableSpec& spec = *stored[v];
+        EXPECT_EQ(spec.bem, v >= (layout.full() ? 13U : 8U)) << spec.name;
         const bool codes = spec.codes != nullptr;
         const std::size_t element = codes ? 1 : sizeof(double);
         const std::size_t inner = spec.series ? layout.times.size() : 1;
@@ -144,7 +153,30 @@ TEST(TileEncoder, encoded_tile_summary_counts_points_per_code) {
     }
     EXPECT_EQ(summary.regimes, expected.regimes);  // not_computed (-1) counts nowhere
     EXPECT_EQ(summary.validity, expected.validity);
+    EXPECT_EQ(summary.bem_regimes, expected.bem_regimes);  // no reference: nothing
+    EXPECT_EQ(summary.bem_agreeing, 0U);
   }
+}
+
+TEST(TileEncoder, encoded_tile_summary_counts_reference_points_and_their_agreement) {
+  const MapLayout layout = test_layout(sweep::Quantities::regime, /*bem=*/true);
+  TileEncoder encoder(layout);
+  std::uint64_t agreeing = 0;
+  for (const sweep::TileBox& box : chunk_boxes(layout)) {
+    const TileData data = sample_tile(box.start[1] + 7 * box.start[3], box.points(), 3, false, true);
+    const TileSummary summary = encoder.encode(0, box, data).summary;
+    TileSummary expected;
+    for (std::size_t i = 0; i < data.bem_regime.size(); ++i) {
+      const std::int8_t r = data.bem_regime[i];
+      if (r < 0) continue;  // outside the sample
+      ++expected.bem_regimes[static_cast<std::size_t>(r)];
+      expected.bem_agreeing += r == data.regime[i] ? 1 : 0;
+    }
+    EXPECT_EQ(summary.bem_regimes, expected.bem_regimes);
+    EXPECT_EQ(summary.bem_agreeing, expected.bem_agreeing);
+    agreeing += summary.bem_agreeing;
+  }
+  EXPECT_GT(agreeing, 0U);
 }
 
 TEST(TileEncoder, encoded_bytes_depend_only_on_the_tile) {
@@ -193,6 +225,12 @@ TEST(TileEncoder, encoder_refuses_arrays_of_the_wrong_length_and_bad_layouts) {
   EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
   data = sample_tile(1, box.points() - 1, 3, true);
   EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
+  data = sample_tile(1, box.points(), 3, true, true);  // bem_* arrays for a map without them
+  EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
+  TileEncoder with_reference(test_layout(sweep::Quantities::full, /*bem=*/true));
+  EXPECT_NO_THROW(with_reference.encode(0, box, data));
+  data = sample_tile(1, box.points(), 3, true, false);  // bem_* arrays missing
+  EXPECT_THROW(with_reference.encode(0, box, data), std::invalid_argument);
 
   MapLayout bad = layout;
   bad.chunk[sweep::kAxisPbar] = 6;

@@ -245,19 +245,21 @@ TEST(TileJournal, journal_create_truncates_an_old_journal) {
   expect_first_tiles(replay_all(path), 1);
 }
 
-TEST(TileJournal, journal_of_format_version_1_is_refused) {
-  // Version 1 records held uncompressed tiles; such a journal must not be misread as version 2.
-  const ScratchDir dir;
-  const std::string path = dir.file("j");
-  write_journal(path, "h", 1);
-  std::vector<char> bytes = read_bytes(path);
-  const std::uint32_t version = 1;
-  std::memcpy(bytes.data() + 8, &version, sizeof version);
-  write_bytes(path, bytes, bytes.size());
-  EXPECT_NE(error_of([&] {
-              TileJournal::read_header(path);
-            }).find("format version 1, this program reads version 2"),
-            std::string::npos);
+TEST(TileJournal, journal_of_an_older_format_version_is_refused) {
+  // Version 1 records held uncompressed tiles, version 2 tiles without the BEM counts;
+  // neither must be misread as version 3.
+  for (const std::uint32_t version : {1U, 2U}) {
+    const ScratchDir dir;
+    const std::string path = dir.file("j");
+    write_journal(path, "h", 1);
+    std::vector<char> bytes = read_bytes(path);
+    std::memcpy(bytes.data() + 8, &version, sizeof version);
+    write_bytes(path, bytes, bytes.size());
+    EXPECT_NE(error_of([&] {
+                TileJournal::read_header(path);
+              }).find("format version " + std::to_string(version) + ", this program reads version 3"),
+              std::string::npos);
+  }
 }
 
 TEST(TileJournal, journal_reports_a_record_that_passes_its_crc_but_does_not_decode) {

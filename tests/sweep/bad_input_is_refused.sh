@@ -21,6 +21,8 @@ refused "model.C" "$PUNCHSWEEP" sweep "${small[@]}" --model.C 0 --output x.h5
 refused "time.times" "$PUNCHSWEEP" sweep "${small[@]}" --time.times 0,-1 --output x.h5
 refused "output.quantities" "$PUNCHSWEEP" sweep "${small[@]}" --quantities lots --output x.h5
 refused "grid.bogus" "$PUNCHSWEEP" sweep "${small[@]}" --grid.bogus 3 --output x.h5
+refused "reference.grid = 33" "$PUNCHSWEEP" sweep "${small[@]}" --reference bem --bem-grid 33 --output x.h5
+refused "reference.sample = 2: value 2 is more than the grid's 1 point;" "$PUNCHSWEEP" sweep "${small[@]}" --reference.sample 2 --output x.h5
 printf '[grid]\nl = 0.75\nwidth = 3\n' > bad.ini
 refused "width" "$PUNCHSWEEP" sweep --config bad.ini --output x.h5
 refused "nothere.ini" "$PUNCHSWEEP" sweep --config nothere.ini --output x.h5
