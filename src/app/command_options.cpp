@@ -7,6 +7,7 @@
 
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
+#include "model/standard_linear_solid.hpp"
 
 namespace po = boost::program_options;
 
@@ -63,6 +64,40 @@ model::Shape read_shape(const po::variables_map& vm) {
   }
   shape.C = read_real(vm, "C", "shape constant", "C > 0", [](double v) { return v > 0.0; });
   return shape;
+}
+
+void add_point_options(po::options_description& opts) {
+  opts.add_options()
+      ("help", "print this help and exit")
+      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0")
+      ("dh", po::value<std::string>()->value_name("DH"),
+       "height difference of the two punch levels, in R; required; dh >= 0")
+      ("T", po::value<std::string>()->value_name("T"),
+       "creep ratio T = T_eps/T_sigma of the standard linear solid (J(inf) = T/E0*); "
+       "required; T >= 1 (T = 1: elastic)")
+      ("pbar", po::value<std::string>()->value_name("P"),
+       "constant nominal pressure pbar0, in E0*; required; pbar > 0")
+      ("s", po::value<std::string>()->value_name("S"),
+       "shape exponent s of f(r) = C r^s / R^(s-1); required; an integer in [1, 32] "
+       "(1 cone, 2 paraboloid)")
+      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"),
+       "shape constant C; C > 0 (sphere: s = 2, C = 0.5)")
+      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
+       "snapshot times, comma-separated, in T_eps; each finite and >= 0");
+}
+
+model::ContactProblem read_problem(const po::variables_map& vm) {
+  model::ContactProblem problem;
+  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
+  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
+  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
+  problem.shape = read_shape(vm);
+  return problem;
+}
+
+double read_creep_ratio(const po::variables_map& vm) {
+  return read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
+                   [](double v) { return model::creep_ratio_error(v).empty(); });
 }
 
 std::vector<double> read_real_list(const po::variables_map& vm, const char* name, const char* range,

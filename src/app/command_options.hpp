@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "model/contact_problem.hpp"
 #include "model/shape.hpp"
 
 namespace punchsweep::app {
@@ -23,6 +24,16 @@ double read_real(const boost::program_options::variables_map& vm, const char* na
 
 /// --s (an integer in [1, 32], required) and --C (> 0) as a Shape.
 model::Shape read_shape(const boost::program_options::variables_map& vm);
+
+/// Declares the options of one parameter point: --help, --l, --dh, --T, --pbar, --s, --C
+/// and --times, each with its unit and range.
+void add_point_options(boost::program_options::options_description& opts);
+
+/// --l, --dh, --pbar, --s and --C as a ContactProblem, each range-checked.
+model::ContactProblem read_problem(const boost::program_options::variables_map& vm);
+
+/// --T, the creep ratio of the standard linear solid (>= 1).
+double read_creep_ratio(const boost::program_options::variables_map& vm);
 
 /// A list option whose values must each satisfy `in_range` (described by `range`).
 std::vector<double> read_real_list(const boost::program_options::variables_map& vm, const char* name,

@@ -24,24 +24,8 @@ po::options_description point_options() {
       "nominal pressure into a standard linear solid).\n\n"
       "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), loads in R^2 E0*,\n"
       "time in T_eps (creep time).\n\nOptions");
+  add_point_options(opts);
   opts.add_options()
-      ("help", "print this help and exit")
-      ("l", po::value<std::string>()->value_name("L"),
-       "lattice pitch l, in R; required; l > 0")
-      ("dh", po::value<std::string>()->value_name("DH"),
-       "height difference of the two punch levels, in R; required; dh >= 0")
-      ("T", po::value<std::string>()->value_name("T"),
-       "creep ratio T = T_eps/T_sigma of the standard linear solid (J(inf) = T/E0*); "
-       "required; T >= 1 (T = 1: elastic)")
-      ("pbar", po::value<std::string>()->value_name("P"),
-       "constant nominal pressure pbar0, in E0*; required; pbar > 0")
-      ("s", po::value<std::string>()->value_name("S"),
-       "shape exponent s of f(r) = C r^s / R^(s-1); required; an integer in [1, 32] "
-       "(1 cone, 2 paraboloid)")
-      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"),
-       "shape constant C; C > 0 (sphere: s = 2, C = 0.5)")
-      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
-       "snapshot times, comma-separated, in T_eps; each finite and >= 0")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
   return opts;
@@ -59,13 +43,8 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
   }
 
-  model::ContactProblem problem;
-  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
-  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
-  const double T = read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
-                             [](double v) { return model::creep_ratio_error(v).empty(); });
-  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
-  problem.shape = read_shape(vm);
+  const model::ContactProblem problem = read_problem(vm);
+  const double T = read_creep_ratio(vm);
 
   model::EvaluationOptions options;
   options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });

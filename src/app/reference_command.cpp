@@ -35,16 +35,8 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
       "with the inputs and series of `punchsweep point`, to hold the localization model to.\n\n"
       "Units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps.\n\n"
       "Options");
+  add_point_options(opts);
   opts.add_options()
-      ("help", "print this help and exit")
-      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0")
-      ("dh", po::value<std::string>()->value_name("DH"), "height difference, in R; required; dh >= 0")
-      ("T", po::value<std::string>()->value_name("T"), "creep ratio T_eps/T_sigma; required; T >= 1")
-      ("pbar", po::value<std::string>()->value_name("P"), "nominal pressure, in E0*; required; pbar > 0")
-      ("s", po::value<std::string>()->value_name("S"), "shape exponent; required; an integer in [1, 32]")
-      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"), "shape constant C; C > 0")
-      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
-       "snapshot times, comma-separated, in T_eps; each >= 0")
       ("bem-grid", po::value<std::string>()->value_name("N")->default_value("128"),
        "grid nodes per side N (the cell spacing is l/N); an even integer in [16, 2048]")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or table");
@@ -55,13 +47,8 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
            "order one grid spacing (about 1% needs a/h >= 15).\n";
     return 0;
   }
-  model::ContactProblem problem;
-  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
-  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
-  const double T = read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
-                             [](double v) { return model::creep_ratio_error(v).empty(); });
-  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
-  problem.shape = read_shape(vm);
+  const model::ContactProblem problem = read_problem(vm);
+  const double T = read_creep_ratio(vm);
   reference::ReferenceOptions options;
   options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
   options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
