@@ -16,6 +16,18 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Copies a series of snapshots (the model's or the reference's: each has a1, a2, P1, P2 and
+// area_fraction) into the tile's arrays a1, a2, P1, P2, area_fraction at point i.
+template <class Snapshots>
+void store_series(const Snapshots& series, std::size_t i, const std::array<std::vector<double>*, 5>& arrays) {
+  const std::size_t nt = series.size();
+  for (std::size_t it = 0; it < nt; ++it) {
+    const auto& snap = series[it];
+    const double values[5] = {snap.a1, snap.a2, snap.P1, snap.P2, snap.area_fraction};
+    for (std::size_t v = 0; v < 5; ++v) (*arrays[v])[i * nt + it] = values[v];
+  }
+}
+
 // Above this many entries the run-wide caches would cost more memory than they save.
 constexpr std::size_t kMaxCacheEntries = std::size_t{1} << 24;
 
@@ -131,14 +143,7 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
             if (full) {
               const model::PointResult r = model::evaluate_point(problem, creep[iT], options, summary);
               out->valid[i] = static_cast<std::int8_t>(r.validity);  // a series solve may fail
-              for (std::size_t it = 0; it < nt; ++it) {
-                const model::Snapshot& snap = r.series[it];
-                out->a1[i * nt + it] = snap.a1;
-                out->a2[i * nt + it] = snap.a2;
-                out->P1[i * nt + it] = snap.P1;
-                out->P2[i * nt + it] = snap.P2;
-                out->area_fraction[i * nt + it] = snap.area_fraction;
-              }
+              store_series(r.series, i, {&out->a1, &out->a2, &out->P1, &out->P2, &out->area_fraction});
             }
           }
         }
@@ -150,7 +155,6 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
 
 void TileEvaluator::evaluate_reference(const TileBox& box, io::TileData* out) const {
   const auto n = grid_.shape();
-  const std::size_t nt = times_.size();
   for (std::size_t i = 0; i < box.points(); ++i) {
     // The tile's i-th point (row-major over the box) and its flat index in the grid.
     std::array<std::size_t, kAxes> at{};
@@ -168,14 +172,7 @@ void TileEvaluator::evaluate_reference(const TileBox& box, io::TileData* out) co
     const reference::ReferenceResult r = reference::evaluate_reference_point(problem, creep, reference_options_);
     out->bem_regime[i] = static_cast<std::int8_t>(r.regime);
     out->bem_t_star[i] = r.t_star.value_or(kNaN);
-    for (std::size_t it = 0; it < nt; ++it) {
-      const reference::ReferenceSnapshot& snap = r.series[it];
-      out->bem_a1[i * nt + it] = snap.a1;
-      out->bem_a2[i * nt + it] = snap.a2;
-      out->bem_P1[i * nt + it] = snap.P1;
-      out->bem_P2[i * nt + it] = snap.P2;
-      out->bem_area_fraction[i * nt + it] = snap.area_fraction;
-    }
+    store_series(r.series, i, {&out->bem_a1, &out->bem_a2, &out->bem_P1, &out->bem_P2, &out->bem_area_fraction});
   }
 }
 

@@ -17,16 +17,7 @@ using testing::sample_encoded_tile;
 
 constexpr std::size_t kHeaderSize = 120;
 
-/// The message of the runtime_error `f` throws ("" if it throws none).
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::error_of;
 
 void set_u64(std::vector<std::byte>* bytes, std::size_t at, std::uint64_t value) {
   std::memcpy(bytes->data() + at, &value, sizeof value);

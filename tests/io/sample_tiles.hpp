@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -10,6 +12,17 @@
 #include "io/tile_data.hpp"
 
 namespace punchsweep::io::testing {
+
+/// The message of the std::runtime_error `f` throws ("" if it throws none).
+template <typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
 
 /// A NaN with a chosen payload, so a round trip that canonicalises NaNs is caught.
 inline double nan_with_payload(std::uint64_t payload) {

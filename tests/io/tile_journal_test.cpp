@@ -57,15 +57,7 @@ void write_bytes(const std::string& path, const std::vector<char>& bytes, std::s
   out.write(bytes.data(), static_cast<std::streamsize>(n));
 }
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::error_of;
 
 /// Writes tiles 0 .. n-1 and returns the offsets where each record starts (and the end).
 std::vector<std::size_t> write_journal(const std::string& path, const std::string& header, std::size_t n) {
