@@ -91,24 +91,30 @@ def fig9_3(binary, out, plt, xr):
     save(out, "fig9_3", fig, data)
 
 
-def fig9_4_and_5(binary, out, plt, xr):
-    with xr.open_dataset(sweep(binary, "fig9_4_fig9_5.ini", out), engine="h5netcdf") as ds:
-        def series(l, dh, pbar, name):
-            return [float(v) for v in ds[name].sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).values]
+def map_reader(ds):
+    """Series and regime of the map at (l, dh, pbar), T = 2.5, s = 2."""
+    def series(l, dh, pbar, name):
+        return [float(v) for v in ds[name].sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).values]
 
-        def t_star(l, dh, pbar):
-            r = int(ds.regime.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
-            value = float(ds.t_star.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
-            return ["immediate", "delayed", "never"][r], (None if r == 2 else value)
+    def t_star(l, dh, pbar):
+        r = int(ds.regime.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
+        value = float(ds.t_star.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
+        return ["immediate", "delayed", "never"][r], (None if r == 2 else value)
 
+    return series, t_star
+
+
+def fig9_4(binary, out, plt, xr):
+    """Radii for pbar0 = 0.06 (a) and 0.025 (b), l = 0.75, dh = 0.05, T = 2.5."""
+    with xr.open_dataset(sweep(binary, "fig9_4.ini", out), engine="h5netcdf") as ds:
+        series, t_star = map_reader(ds)
         t = [float(v) for v in ds.time.values]
-        # Fig. 9.4: radii for pbar0 = 0.06 (a) and 0.025 (b), l = 0.75, dh = 0.05.
-        data4 = {"t": t}
+        data = {"t": t}
         fig, ax = plt.subplots(1, 2, figsize=(10, 3.8), constrained_layout=True)
         for a, (key, pbar) in zip(ax, (("a", 0.06), ("b", 0.025))):
             a1, a2 = series(0.75, 0.05, pbar, "a1"), series(0.75, 0.05, pbar, "a2")
             regime, ts = t_star(0.75, 0.05, pbar)
-            data4[key] = {"pbar": pbar, "a1": a1, "a2": a2, "regime": regime, "t_star": ts}
+            data[key] = {"pbar": pbar, "a1": a1, "a2": a2, "regime": regime, "t_star": ts}
             a.plot(t, a1, color="tab:blue", label="a$_1$")
             a.plot(t, a2, color="tab:red", label="a$_2$")
             a.set_title(f"({key}) pbar$_0$ = {pbar} E$_0$/(1-$\\nu^2$): {regime}", loc="left", fontsize=10)
@@ -117,20 +123,26 @@ def fig9_4_and_5(binary, out, plt, xr):
             a.legend()
             a.grid(alpha=0.3)
         fig.suptitle("Fig. 9.4: l = 0.75 R, T = 2.5, dh = 0.05 R")
-        save(out, "fig9_4", fig, data4)
-        # Fig. 9.5: area fraction; (a) dh = 0.05, pbar0 = 0.025, l varies; (b) l = 0.75, pbar0 = 0.06, dh varies.
-        data5 = {"t": t, "a": [], "b": []}
+        save(out, "fig9_4", fig, data)
+
+
+def fig9_5(binary, out, plt, xr):
+    """Area fraction; (a) dh = 0.05, pbar0 = 0.025, l varies; (b) l = 0.75, pbar0 = 0.06, dh varies."""
+    with xr.open_dataset(sweep(binary, "fig9_5.ini", out), engine="h5netcdf") as ds:
+        series, t_star = map_reader(ds)
+        t = [float(v) for v in ds.time.values]
+        data = {"t": t, "a": [], "b": []}
         fig, ax = plt.subplots(1, 2, figsize=(10, 3.8), constrained_layout=True)
         colours = ("tab:red", "tab:blue", "tab:green")
         for l, colour in zip((0.75, 1.0, 1.25), colours):
             lam = series(l, 0.05, 0.025, "area_fraction")
             regime, ts = t_star(l, 0.05, 0.025)
-            data5["a"].append({"l": l, "area_fraction": lam, "regime": regime, "t_star": ts})
+            data["a"].append({"l": l, "area_fraction": lam, "regime": regime, "t_star": ts})
             ax[0].plot(t, lam, color=colour, label=f"l = {l:g} R ({regime})")
         for dh, colour in zip((0.05, 0.075, 0.1), colours):
             lam = series(0.75, dh, 0.06, "area_fraction")
             regime, ts = t_star(0.75, dh, 0.06)
-            data5["b"].append({"dh": dh, "area_fraction": lam, "regime": regime, "t_star": ts})
+            data["b"].append({"dh": dh, "area_fraction": lam, "regime": regime, "t_star": ts})
             label = f"dh = {dh:g} R ({regime}" + (f", t* = {ts:.3g}" if regime == "delayed" else "") + ")"
             ax[1].plot(t, lam, color=colour, label=label)
         ax[0].set_title("(a) dh = 0.05 R, pbar$_0$ = 0.025", loc="left", fontsize=10)
@@ -141,7 +153,7 @@ def fig9_4_and_5(binary, out, plt, xr):
             a.legend(fontsize=8)
             a.grid(alpha=0.3)
         fig.suptitle("Fig. 9.5: T = 2.5")
-        save(out, "fig9_5", fig, data5)
+        save(out, "fig9_5", fig, data)
 
 
 def table9_1(binary, out, xr):
@@ -170,7 +182,8 @@ def main(argv: list[str]) -> int:
         out.mkdir(parents=True, exist_ok=True)
         fig9_2(binary, out, plt)
         fig9_3(binary, out, plt, xr)
-        fig9_4_and_5(binary, out, plt, xr)
+        fig9_4(binary, out, plt, xr)
+        fig9_5(binary, out, plt, xr)
         table9_1(binary, out, xr)
     except (FileNotFoundError, RuntimeError, OSError) as e:
         print(f"paper_figures.py: {e}", file=sys.stderr)
