@@ -87,9 +87,9 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
           const model::Touchdown computed = model::touchdown(single, value(kAxisDh, idh));
           model::ContactProblem at_dh = problem;
           at_dh.dh = value(kAxisDh, idh);
-          t = Touch{computed.a1_star, computed.X_star, std::make_shared<const model::LongTermGuide>(at_dh), true};
+          t = Touch{computed, std::make_shared<const model::LongTermGuide>(at_dh), true};
         }
-        touch[idh] = model::Touchdown{t.a1_star, t.X_star};
+        touch[idh] = t.touchdown;
         guide[idh] = t.guide;
       }
       for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {

@@ -6,6 +6,7 @@
 
 #include "io/tile_data.hpp"
 #include "model/long_term_guide.hpp"
+#include "model/regime.hpp"
 #include "reference/reference_point.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/reference_sample.hpp"
@@ -51,8 +52,7 @@ class TileEvaluator {
     bool ready = false;
   };
   struct Touch {
-    double a1_star = 0.0;
-    double X_star = 0.0;
+    model::Touchdown touchdown;
     std::shared_ptr<const model::LongTermGuide> guide;  ///< built with the touchdown
     bool ready = false;
   };

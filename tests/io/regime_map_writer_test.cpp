@@ -201,6 +201,21 @@ std::vector<T> read_dataset(hid_t dataset, hid_t memory_type) {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+/// A float variable's `_FillValue` attribute (one float64) and HDF5 fill value are NaN.
+void expect_nan_fill(hid_t file, const std::string& name) {
+  SCOPED_TRACE(name);
+  const Handle dataset = open_dataset(file, name);
+  ASSERT_GT(H5Aexists(dataset, "_FillValue"), 0);
+  EXPECT_TRUE(attribute_type_is(dataset, "_FillValue", H5T_IEEE_F64LE));
+  const std::vector<double> fill = read_attribute<double>(dataset, "_FillValue", H5T_NATIVE_DOUBLE);
+  ASSERT_EQ(fill.size(), 1U);
+  EXPECT_TRUE(std::isnan(fill[0]));
+  const Handle dcpl(H5Dget_create_plist(dataset), H5Pclose, "get dcpl");
+  double hdf5_fill = 0.0;
+  ASSERT_GE(H5Pget_fill_value(dcpl, H5T_NATIVE_DOUBLE, &hdf5_fill), 0);
+  EXPECT_TRUE(std::isnan(hdf5_fill));
+}
+
 class RegimeMapWriterTest : public ::testing::Test {
  protected:
   /// Writes the sample map at `path_` and finishes it (unless `finish` is false).
@@ -302,18 +317,7 @@ TEST_F(RegimeMapWriterTest, flag_variables_carry_flag_values_and_meanings) {
 TEST_F(RegimeMapWriterTest, float_variables_have_a_nan_fill_value_and_flag_variables_have_none) {
   make_map(sweep::Quantities::full);
   const Handle file = open_file(path_);
-  for (const std::string& name : kFloatVariables) {
-    const Handle dataset = open_dataset(file, name);
-    ASSERT_GT(H5Aexists(dataset, "_FillValue"), 0) << name;
-    EXPECT_TRUE(attribute_type_is(dataset, "_FillValue", H5T_IEEE_F64LE)) << name;
-    const std::vector<double> fill = read_attribute<double>(dataset, "_FillValue", H5T_NATIVE_DOUBLE);
-    ASSERT_EQ(fill.size(), 1U);
-    EXPECT_TRUE(std::isnan(fill[0])) << name;
-    const Handle dcpl(H5Dget_create_plist(dataset), H5Pclose, "get dcpl");
-    double hdf5_fill = 0.0;
-    ASSERT_GE(H5Pget_fill_value(dcpl, H5T_NATIVE_DOUBLE, &hdf5_fill), 0);
-    EXPECT_TRUE(std::isnan(hdf5_fill)) << name;
-  }
+  for (const std::string& name : kFloatVariables) expect_nan_fill(file, name);
   for (const char* name : {"regime", "valid"}) {
     const Handle dataset = open_dataset(file, name);
     EXPECT_EQ(H5Aexists(dataset, "_FillValue"), 0) << name;
@@ -807,16 +811,7 @@ TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_
   EXPECT_NE(read_string_attribute(open_dataset(file, "bem_t_star"), "comment")
                 .find("NaN for never, for delayed beyond the last snapshot time"),
             std::string::npos);
-  for (const std::string& name : kBemFloatVariables) {
-    const Handle dataset = open_dataset(file, name);
-    const std::vector<double> fill = read_attribute<double>(dataset, "_FillValue", H5T_NATIVE_DOUBLE);
-    ASSERT_EQ(fill.size(), 1U);
-    EXPECT_TRUE(std::isnan(fill[0])) << name;
-    const Handle dcpl(H5Dget_create_plist(dataset), H5Pclose, "get dcpl");
-    double hdf5_fill = 0.0;
-    ASSERT_GE(H5Pget_fill_value(dcpl, H5T_NATIVE_DOUBLE, &hdf5_fill), 0);
-    EXPECT_TRUE(std::isnan(hdf5_fill)) << name;
-  }
+  for (const std::string& name : kBemFloatVariables) expect_nan_fill(file, name);
 }
 
 TEST_F(RegimeMapWriterTest, map_with_a_reference_records_its_grid_tolerance_sample_and_seed) {
