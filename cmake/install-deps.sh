@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config
   libopenmpi-dev openmpi-bin
   libeigen3-dev libgsl-dev libfftw3-dev
-  libhdf5-dev hdf5-tools zlib1g-dev
+  libhdf5-dev hdf5-tools zlib1g-dev libdeflate-dev
   libboost-program-options-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib python3-xarray python3-h5netcdf
