@@ -30,6 +30,22 @@ inline double ring_depth_rate_over_a(double a, double rho) {
   return 1.0 / (q * std::sqrt(q));
 }
 
+/// Every ring quantity of one punch radius a against one ring radius rho > a, sharing one
+/// square root (the Newton residuals need all four).
+struct Ring {
+  double share = 0.0;       ///< ring_load_share(a, rho)
+  double share_rate = 0.0;  ///< ring_load_share_rate_over_a(a, rho)
+  double depth = 0.0;       ///< ring_depth(a, rho)
+  double depth_rate = 0.0;  ///< ring_depth_rate_over_a(a, rho)
+};
+
+inline Ring ring(double a, double rho) {
+  const double depth = 1.0 / std::sqrt(rho * rho - a * a);
+  const double depth_rate = depth * depth * depth;
+  return Ring{2.0 / std::numbers::pi * (a * depth - std::asin(a / rho)), 2.0 / std::numbers::pi * a * depth_rate,
+              depth, depth_rate};
+}
+
 /// A^2 arcsin(a/A) - a sqrt(A^2 - a^2): the nominal pressure outside radius A adds
 /// 2 p times this to the punch load.
 inline double nominal_load_term(double a, double A) {

@@ -42,63 +42,60 @@ void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], doub
   const double A1 = radii_.A1;
   const double A2 = radii_.A2;
 
-  const double M00 = 1.0 - 4.0 * ring_load_share(a1, l);
-  const double M01 = -4.0 * ring_load_share(a1, l2);
-  const double M10 = -4.0 * ring_load_share(a2, l2);
-  const double M11 = 1.0 - 4.0 * ring_load_share(a2, l);
+  // Ring quantities of a_i against the ring at l (same level) and at l2 (other level).
+  const Ring R11 = ring(a1, l);
+  const Ring R12 = ring(a1, l2);
+  const Ring R21 = ring(a2, l2);
+  const Ring R22 = ring(a2, l);
+  const double S1 = std::sqrt(A1 * A1 - a1 * a1);
+  const double S2 = std::sqrt(A2 * A2 - a2 * a2);
+
+  const double M00 = 1.0 - 4.0 * R11.share;
+  const double M01 = -4.0 * R12.share;
+  const double M10 = -4.0 * R21.share;
+  const double M11 = 1.0 - 4.0 * R22.share;
   const double a1s = ipow(a1, s);
   const double a2s = ipow(a2, s);
-  const double b0 = K_P_ * a1s * a1 + 2.0 * X * nominal_load_term(a1, A1);
-  const double b1 = K_P_ * a2s * a2 + 2.0 * X * nominal_load_term(a2, A2);
+  // nominal_load_term(a_i, A_i), with the square roots above.
+  const double b0 = K_P_ * a1s * a1 + 2.0 * X * (A1 * A1 * std::asin(a1 / A1) - a1 * S1);
+  const double b1 = K_P_ * a2s * a2 + 2.0 * X * (A2 * A2 * std::asin(a2 / A2) - a2 * S2);
   const double det = M00 * M11 - M01 * M10;
   const double Q1 = (b0 * M11 - M01 * b1) / det;
   const double Q2 = (M00 * b1 - M10 * b0) / det;
   Q[0] = Q1;
   Q[1] = Q2;
 
-  const double S1 = std::sqrt(A1 * A1 - a1 * a1);
-  const double S2 = std::sqrt(A2 * A2 - a2 * a2);
-  const double rho11 = ring_depth(a1, l);
-  const double rho12 = ring_depth(a1, l2);
-  const double rho21 = ring_depth(a2, l2);
-  const double rho22 = ring_depth(a2, l);
   const double load_scale = l * l * X;
   r[0] = (Q1 + Q2) / load_scale - 1.0;
-  r[1] = (K_d_ * (a1s - a2s) + 4.0 / kPi * (Q2 * rho12 + Q1 * rho11 - Q1 * rho21 - Q2 * rho22) -
+  r[1] = (K_d_ * (a1s - a2s) + 4.0 / kPi * (Q2 * R12.depth + Q1 * R11.depth - Q1 * R21.depth - Q2 * R22.depth) -
           2.0 * X * (S1 - S2) - problem_.dh) /
          l;
   if (J == nullptr) return;
 
   // d/d(a1) and d/dz: each building block's derivative is a * (its "rate over a"), and
   // a * da/dvar is chi: a1 for a1, 1/2 for z = a2^2, a2 for z = a2.
+  // nominal_load_term_rate_over_a(a_i, A_i) = 2 a_i / S_i.
   const double chi1 = a1;
   const double chi2 = z_power_ == 2 ? 0.5 : a2;
-  const double v0 = (s + 1) * K_P_ * a1s + 2.0 * X * chi1 * nominal_load_term_rate_over_a(a1, A1) +
-                    4.0 * chi1 * (ring_load_share_rate_over_a(a1, l) * Q1 +
-                                  ring_load_share_rate_over_a(a1, l2) * Q2);
-  const double v1 = K_P_ * power_rate(a2, s + 1, z_power_) +
-                    2.0 * X * chi2 * nominal_load_term_rate_over_a(a2, A2) +
-                    4.0 * chi2 * (ring_load_share_rate_over_a(a2, l) * Q2 +
-                                  ring_load_share_rate_over_a(a2, l2) * Q1);
+  const double v0 = (s + 1) * K_P_ * a1s + 2.0 * X * chi1 * (2.0 * a1 / S1) +
+                    4.0 * chi1 * (R11.share_rate * Q1 + R12.share_rate * Q2);
+  const double v1 = K_P_ * power_rate(a2, s + 1, z_power_) + 2.0 * X * chi2 * (2.0 * a2 / S2) +
+                    4.0 * chi2 * (R22.share_rate * Q2 + R21.share_rate * Q1);
   const double dQ1_da1 = M11 * v0 / det;
   const double dQ2_da1 = -M10 * v0 / det;
   const double dQ1_dz = -M01 * v1 / det;
   const double dQ2_dz = M00 * v1 / det;
   auto ring_depth_sum = [&](double dQ1, double dQ2) {
-    return dQ2 * rho12 + dQ1 * rho11 - dQ1 * rho21 - dQ2 * rho22;
+    return dQ2 * R12.depth + dQ1 * R11.depth - dQ1 * R21.depth - dQ2 * R22.depth;
   };
   J[0] = (dQ1_da1 + dQ2_da1) / load_scale;
   J[1] = (dQ1_dz + dQ2_dz) / load_scale;
   J[2] = (K_d_ * s * a1s / a1 +
-          4.0 / kPi *
-              (ring_depth_sum(dQ1_da1, dQ2_da1) +
-               chi1 * (Q2 * ring_depth_rate_over_a(a1, l2) + Q1 * ring_depth_rate_over_a(a1, l))) +
+          4.0 / kPi * (ring_depth_sum(dQ1_da1, dQ2_da1) + chi1 * (Q2 * R12.depth_rate + Q1 * R11.depth_rate)) +
           2.0 * X * chi1 / S1) /
          l;
   J[3] = (-K_d_ * power_rate(a2, s, z_power_) +
-          4.0 / kPi *
-              (ring_depth_sum(dQ1_dz, dQ2_dz) -
-               chi2 * (Q1 * ring_depth_rate_over_a(a2, l2) + Q2 * ring_depth_rate_over_a(a2, l))) -
+          4.0 / kPi * (ring_depth_sum(dQ1_dz, dQ2_dz) - chi2 * (Q1 * R21.depth_rate + Q2 * R22.depth_rate)) -
           2.0 * X * chi2 / S2) /
          l;
 }
