@@ -34,8 +34,11 @@ TwoLevelSystem::TwoLevelSystem(const ContactProblem& problem, NominalRadii radii
       z_power_(problem.shape.s == 1 ? 1 : 2) {}
 
 // Eq (9.16) for Q (linear once a is fixed), then eqs (9.19) and (9.17) as residuals.
-void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], double J[4],
-                               double Q[2]) const {
+TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double X) const {
+  Evaluation e;
+  double* r = e.r;
+  double* J = e.J;
+  double* Q = e.Q;
   const double l = problem_.l;
   const double l2 = l / std::numbers::sqrt2;
   const int s = problem_.shape.s;
@@ -70,7 +73,6 @@ void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], doub
   r[1] = (K_d_ * (a1s - a2s) + 4.0 / kPi * (Q2 * R12.depth + Q1 * R11.depth - Q1 * R21.depth - Q2 * R22.depth) -
           2.0 * X * (S1 - S2) - problem_.dh) /
          l;
-  if (J == nullptr) return;
 
   // d/d(a1) and d/dz: each building block's derivative is a * (its "rate over a"), and
   // a * da/dvar is chi: a1 for a1, 1/2 for z = a2^2, a2 for z = a2.
@@ -85,6 +87,10 @@ void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], doub
   const double dQ2_da1 = -M10 * v0 / det;
   const double dQ1_dz = -M01 * v1 / det;
   const double dQ2_dz = M00 * v1 / det;
+  e.dQ[0] = dQ1_da1;
+  e.dQ[1] = dQ1_dz;
+  e.dQ[2] = dQ2_da1;
+  e.dQ[3] = dQ2_dz;
   auto ring_depth_sum = [&](double dQ1, double dQ2) {
     return dQ2 * R12.depth + dQ1 * R11.depth - dQ1 * R21.depth - dQ2 * R22.depth;
   };
@@ -98,6 +104,7 @@ void TwoLevelSystem::residuals(double a1, double a2, double X, double r[2], doub
           4.0 / kPi * (ring_depth_sum(dQ1_dz, dQ2_dz) - chi2 * (Q1 * R21.depth_rate + Q2 * R22.depth_rate)) -
           2.0 * X * chi2 / S2) /
          l;
+  return e;
 }
 
 TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int max_iterations) const {
@@ -111,34 +118,44 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
   double a1 = std::clamp(guess.a1, 1e-300, a1_max);
   double z = z_power_ == 2 ? guess.a2 * guess.a2 : guess.a2;
   z = std::clamp(z, 0.0, z_power_ == 2 ? a2_max * a2_max : a2_max);
-  double r[2];
-  double J[4];
-  double Q[2];
-  residuals(a1, to_a2(z), X, r, J, Q);
-  double norm = std::max(std::abs(r[0]), std::abs(r[1]));
+  Evaluation e = evaluate(a1, to_a2(z), X);
+  auto norm_of = [](const Evaluation& v) { return std::max(std::abs(v.r[0]), std::abs(v.r[1])); };
+  double norm = norm_of(e);
+  bool final_step = false;
 
   TwoLevelSolve out;
   for (int it = 0; it < max_iterations; ++it) {
+    const double* r = e.r;
+    const double* J = e.J;
     const double det = J[0] * J[3] - J[1] * J[2];
     const double d1 = (-r[0] * J[3] + J[1] * r[1]) / det;
     const double d2 = (-J[0] * r[1] + J[2] * r[0]) / det;
     if (!std::isfinite(d1) || !std::isfinite(d2)) break;
+
+    // Close enough for the step to be the last (kFinalStep): take it unevaluated.
+    if (std::max(std::abs(d1) / l, std::abs(d2) / z_scale) < kFinalStep && norm < kResidualTolerance * 1e3 &&
+        a1 + d1 > 0.0 && a1 + d1 < a1_max && z + d2 >= 0.0 && to_a2(z + d2) < a2_max) {
+      a1 += d1;
+      z += d2;
+      e.Q[0] += e.dQ[0] * d1 + e.dQ[1] * d2;
+      e.Q[1] += e.dQ[2] * d1 + e.dQ[3] * d2;
+      final_step = true;
+      break;
+    }
 
     // Damped step: stay in the domain and do not let the residual grow. The trial point
     // is evaluated with its Jacobian, so an accepted step costs one evaluation.
     double lambda = 1.0;
     double a1_new = a1;
     double z_new = z;
-    double r_new[2];
-    double J_new[4];
-    double Q_new[2];
+    Evaluation trial{};
     bool accepted = false;
     for (int halving = 0; halving < 40; ++halving, lambda *= 0.5) {
       a1_new = a1 + lambda * d1;
       z_new = std::max(z + lambda * d2, 0.0);
       if (!(a1_new > 0.0 && a1_new < a1_max && to_a2(z_new) < a2_max)) continue;
-      residuals(a1_new, to_a2(z_new), X, r_new, J_new, Q_new);
-      const double norm_new = std::max(std::abs(r_new[0]), std::abs(r_new[1]));
+      trial = evaluate(a1_new, to_a2(z_new), X);
+      const double norm_new = norm_of(trial);
       if (std::isfinite(norm_new) && (norm_new < norm || norm_new <= kResidualTolerance * 1e-3)) {
         accepted = true;
         norm = norm_new;
@@ -149,13 +166,11 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
     const double step = std::max(std::abs(a1_new - a1) / l, std::abs(z_new - z) / z_scale);
     a1 = a1_new;
     z = z_new;
-    std::copy(r_new, r_new + 2, r);
-    std::copy(J_new, J_new + 4, J);
-    std::copy(Q_new, Q_new + 2, Q);
+    e = trial;
     if (step < kStepTolerance || norm < kConvergedResidual) break;
   }
-  out.state = TwoLevelState{a1, to_a2(z), Q[0], Q[1]};
-  out.converged = norm < kResidualTolerance;
+  out.state = TwoLevelState{a1, to_a2(z), e.Q[0], e.Q[1]};
+  out.converged = final_step || norm < kResidualTolerance;
   return out;
 }
 

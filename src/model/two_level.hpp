@@ -35,6 +35,11 @@ class TwoLevelSystem {
  public:
   /// Newton stops when the step is below this, relative to l (or l^2 for z).
   static constexpr double kStepTolerance = 1e-14;
+  /// A Newton step below this (relative, as above) from a point whose residuals are below
+  /// kResidualTolerance * 1e3 is taken as the last: quadratic convergence leaves an error
+  /// of order (1e-9)^2 after it, below rounding, so the root is not evaluated again (its
+  /// loads Q come from the linearisation, to the same order).
+  static constexpr double kFinalStep = 1e-9;
   /// ... or when both scaled residuals are below this (quadratic convergence makes one
   /// more step pointless) ...
   static constexpr double kConvergedResidual = 1e-14;
@@ -60,8 +65,15 @@ class TwoLevelSystem {
   const NominalRadii& radii() const { return radii_; }
 
  private:
-  /// Scaled residuals r (dimensionless) and, if J != nullptr, dr/d(a1, z) row-major.
-  void residuals(double a1, double a2, double X, double r[2], double J[4], double Q[2]) const;
+  /// The system at one (a1, a2): scaled residuals r (dimensionless), their Jacobian
+  /// J = dr/d(a1, z) row-major, the loads Q of eq (9.16) and dQ = dQ/d(a1, z) row-major.
+  struct Evaluation {
+    double r[2];
+    double J[4];
+    double Q[2];
+    double dQ[4];
+  };
+  Evaluation evaluate(double a1, double a2, double X) const;
 
   ContactProblem problem_;
   NominalRadii radii_;
