@@ -71,5 +71,52 @@ TEST(ChunkCompressor, chunk_compressor_shrinks_smooth_float_data) {
   EXPECT_EQ(inflate_all(encoded, size), shuffle(raw, sizeof(double)));
 }
 
+// Doubles whose low mantissa bytes are noise (as a1_inf's): those planes go into stored
+// blocks, more than 65535 bytes of them here, so several blocks; the stream must still
+// inflate to the shuffled input and cost no more than the raw bytes plus framing.
+TEST(ChunkCompressor, noise_planes_are_stored_and_the_stream_still_inflates) {
+  const std::size_t n = 20000;
+  std::vector<double> values(n);
+  std::uint64_t x = 12345;
+  for (auto& v : values) {
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    v = 0.25 + 0.25 * static_cast<double>(x >> 11) * 0x1p-53;  // in [0.25, 0.5): one exponent
+  }
+  ChunkCompressor compressor(1);
+  const std::size_t size = n * sizeof(double);
+  const std::span<const std::byte> encoded = compressor.compress(values.data(), size, sizeof(double));
+  std::vector<std::byte> raw(size);
+  std::memcpy(raw.data(), values.data(), size);
+  EXPECT_EQ(inflate_all(encoded, size), shuffle(raw, sizeof(double)));
+  // The first block after the 2-byte zlib header is stored (header byte 0) and full (LEN 65535).
+  ASSERT_GT(encoded.size(), 7U);
+  EXPECT_EQ(encoded[2], std::byte{0});
+  EXPECT_EQ(encoded[3], std::byte{0xFF});
+  EXPECT_EQ(encoded[4], std::byte{0xFF});
+  // 6.5 noise planes of 8, stored; the exponent planes compress: well under the raw size.
+  EXPECT_LT(encoded.size(), size * 7 / 8 + 64);
+  EXPECT_GT(encoded.size(), size * 6 / 8);
+}
+
+// Noise that repeats (a variable that does not depend on one axis of the chunk, as h_0 on
+// T) is not stored: deflate's matches find the repeats.
+TEST(ChunkCompressor, repeated_noise_still_compresses) {
+  const std::size_t distinct = 1000;
+  const std::size_t repeats = 4;
+  std::vector<double> values(distinct * repeats);
+  std::uint64_t x = 777;
+  for (std::size_t i = 0; i < distinct; ++i) {
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    for (std::size_t r = 0; r < repeats; ++r) values[r * distinct + i] = 1.0 + static_cast<double>(x >> 11) * 0x1p-53;
+  }
+  ChunkCompressor compressor(1);
+  const std::size_t size = values.size() * sizeof(double);
+  const std::span<const std::byte> encoded = compressor.compress(values.data(), size, sizeof(double));
+  std::vector<std::byte> raw(size);
+  std::memcpy(raw.data(), values.data(), size);
+  EXPECT_EQ(inflate_all(encoded, size), shuffle(raw, sizeof(double)));
+  EXPECT_LT(encoded.size(), size / repeats + size / 10);
+}
+
 }  // namespace
 }  // namespace punchsweep::io
