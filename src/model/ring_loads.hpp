@@ -30,8 +30,9 @@ inline double ring_depth_rate_over_a(double a, double rho) {
   return 1.0 / (q * std::sqrt(q));
 }
 
-/// Every ring quantity of one punch radius a against one ring radius rho > a, sharing one
-/// square root (the Newton residuals need all four).
+/// Every ring quantity of one punch radius a against one ring radius rho > a (inv_rho =
+/// 1 / rho, precomputed by the caller), sharing one square root (the Newton residuals
+/// need all four).
 struct Ring {
   double share = 0.0;       ///< ring_load_share(a, rho)
   double share_rate = 0.0;  ///< ring_load_share_rate_over_a(a, rho)
@@ -39,10 +40,10 @@ struct Ring {
   double depth_rate = 0.0;  ///< ring_depth_rate_over_a(a, rho)
 };
 
-inline Ring ring(double a, double rho) {
+inline Ring ring(double a, double rho, double inv_rho) {
   const double depth = 1.0 / std::sqrt(rho * rho - a * a);
   const double depth_rate = depth * depth * depth;
-  return Ring{2.0 / std::numbers::pi * (a * depth - std::asin(a / rho)), 2.0 / std::numbers::pi * a * depth_rate,
+  return Ring{2.0 / std::numbers::pi * (a * depth - std::asin(a * inv_rho)), 2.0 / std::numbers::pi * a * depth_rate,
               depth, depth_rate};
 }
 

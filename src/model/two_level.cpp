@@ -31,62 +31,71 @@ TwoLevelSystem::TwoLevelSystem(const ContactProblem& problem, NominalRadii radii
       radii_(radii),
       K_P_(load_coefficient(problem.shape)),
       K_d_(depth_coefficient(problem.shape)),
-      z_power_(problem.shape.s == 1 ? 1 : 2) {}
+      z_power_(problem.shape.s == 1 ? 1 : 2),
+      l2_(problem.l / std::numbers::sqrt2),
+      inv_l_(1.0 / problem.l),
+      inv_l2_(std::numbers::sqrt2 / problem.l),
+      inv_A1_(1.0 / radii.A1),
+      inv_A2_(1.0 / radii.A2) {}
 
 // Eq (9.16) for Q (linear once a is fixed), then eqs (9.19) and (9.17) as residuals.
+// Written for few divisions (reciprocals computed once, here or in the constructor): the
+// Newton solves of a regime map spend most of their time in this function.
 TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double X) const {
   Evaluation e;
   double* r = e.r;
   double* J = e.J;
-  double* Q = e.Q;
   const double l = problem_.l;
-  const double l2 = l / std::numbers::sqrt2;
   const int s = problem_.shape.s;
   const double A1 = radii_.A1;
   const double A2 = radii_.A2;
 
   // Ring quantities of a_i against the ring at l (same level) and at l2 (other level).
-  const Ring R11 = ring(a1, l);
-  const Ring R12 = ring(a1, l2);
-  const Ring R21 = ring(a2, l2);
-  const Ring R22 = ring(a2, l);
+  const Ring R11 = ring(a1, l, inv_l_);
+  const Ring R12 = ring(a1, l2_, inv_l2_);
+  const Ring R21 = ring(a2, l2_, inv_l2_);
+  const Ring R22 = ring(a2, l, inv_l_);
   const double S1 = std::sqrt(A1 * A1 - a1 * a1);
   const double S2 = std::sqrt(A2 * A2 - a2 * a2);
+  const double inv_S1 = 1.0 / S1;
+  const double inv_S2 = 1.0 / S2;
 
   const double M00 = 1.0 - 4.0 * R11.share;
   const double M01 = -4.0 * R12.share;
   const double M10 = -4.0 * R21.share;
   const double M11 = 1.0 - 4.0 * R22.share;
-  const double a1s = ipow(a1, s);
+  const double a1s1 = ipow(a1, s - 1);  // a1^(s-1): s >= 1
+  const double a1s = a1s1 * a1;
   const double a2s = ipow(a2, s);
   // nominal_load_term(a_i, A_i), with the square roots above.
-  const double b0 = K_P_ * a1s * a1 + 2.0 * X * (A1 * A1 * std::asin(a1 / A1) - a1 * S1);
-  const double b1 = K_P_ * a2s * a2 + 2.0 * X * (A2 * A2 * std::asin(a2 / A2) - a2 * S2);
-  const double det = M00 * M11 - M01 * M10;
-  const double Q1 = (b0 * M11 - M01 * b1) / det;
-  const double Q2 = (M00 * b1 - M10 * b0) / det;
-  Q[0] = Q1;
-  Q[1] = Q2;
+  const double b0 = K_P_ * a1s * a1 + 2.0 * X * (A1 * A1 * std::asin(a1 * inv_A1_) - a1 * S1);
+  const double b1 = K_P_ * a2s * a2 + 2.0 * X * (A2 * A2 * std::asin(a2 * inv_A2_) - a2 * S2);
+  const double inv_det = 1.0 / (M00 * M11 - M01 * M10);
+  const double Q1 = (b0 * M11 - M01 * b1) * inv_det;
+  const double Q2 = (M00 * b1 - M10 * b0) * inv_det;
+  e.Q[0] = Q1;
+  e.Q[1] = Q2;
 
-  const double load_scale = l * l * X;
-  r[0] = (Q1 + Q2) / load_scale - 1.0;
-  r[1] = (K_d_ * (a1s - a2s) + 4.0 / kPi * (Q2 * R12.depth + Q1 * R11.depth - Q1 * R21.depth - Q2 * R22.depth) -
-          2.0 * X * (S1 - S2) - problem_.dh) /
-         l;
+  const double inv_load = 1.0 / (l * l * X);
+  constexpr double k4_pi = 4.0 / kPi;
+  r[0] = (Q1 + Q2) * inv_load - 1.0;
+  r[1] = (K_d_ * (a1s - a2s) + k4_pi * (Q2 * R12.depth + Q1 * R11.depth - Q1 * R21.depth - Q2 * R22.depth) -
+          2.0 * X * (S1 - S2) - problem_.dh) *
+         inv_l_;
 
   // d/d(a1) and d/dz: each building block's derivative is a * (its "rate over a"), and
   // a * da/dvar is chi: a1 for a1, 1/2 for z = a2^2, a2 for z = a2.
   // nominal_load_term_rate_over_a(a_i, A_i) = 2 a_i / S_i.
   const double chi1 = a1;
   const double chi2 = z_power_ == 2 ? 0.5 : a2;
-  const double v0 = (s + 1) * K_P_ * a1s + 2.0 * X * chi1 * (2.0 * a1 / S1) +
+  const double v0 = (s + 1) * K_P_ * a1s + 2.0 * X * chi1 * (2.0 * a1 * inv_S1) +
                     4.0 * chi1 * (R11.share_rate * Q1 + R12.share_rate * Q2);
-  const double v1 = K_P_ * power_rate(a2, s + 1, z_power_) + 2.0 * X * chi2 * (2.0 * a2 / S2) +
+  const double v1 = K_P_ * power_rate(a2, s + 1, z_power_) + 2.0 * X * chi2 * (2.0 * a2 * inv_S2) +
                     4.0 * chi2 * (R22.share_rate * Q2 + R21.share_rate * Q1);
-  const double dQ1_da1 = M11 * v0 / det;
-  const double dQ2_da1 = -M10 * v0 / det;
-  const double dQ1_dz = -M01 * v1 / det;
-  const double dQ2_dz = M00 * v1 / det;
+  const double dQ1_da1 = M11 * v0 * inv_det;
+  const double dQ2_da1 = -M10 * v0 * inv_det;
+  const double dQ1_dz = -M01 * v1 * inv_det;
+  const double dQ2_dz = M00 * v1 * inv_det;
   e.dQ[0] = dQ1_da1;
   e.dQ[1] = dQ1_dz;
   e.dQ[2] = dQ2_da1;
@@ -94,16 +103,16 @@ TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double
   auto ring_depth_sum = [&](double dQ1, double dQ2) {
     return dQ2 * R12.depth + dQ1 * R11.depth - dQ1 * R21.depth - dQ2 * R22.depth;
   };
-  J[0] = (dQ1_da1 + dQ2_da1) / load_scale;
-  J[1] = (dQ1_dz + dQ2_dz) / load_scale;
-  J[2] = (K_d_ * s * a1s / a1 +
-          4.0 / kPi * (ring_depth_sum(dQ1_da1, dQ2_da1) + chi1 * (Q2 * R12.depth_rate + Q1 * R11.depth_rate)) +
-          2.0 * X * chi1 / S1) /
-         l;
+  J[0] = (dQ1_da1 + dQ2_da1) * inv_load;
+  J[1] = (dQ1_dz + dQ2_dz) * inv_load;
+  J[2] = (K_d_ * s * a1s1 +
+          k4_pi * (ring_depth_sum(dQ1_da1, dQ2_da1) + chi1 * (Q2 * R12.depth_rate + Q1 * R11.depth_rate)) +
+          2.0 * X * chi1 * inv_S1) *
+         inv_l_;
   J[3] = (-K_d_ * power_rate(a2, s, z_power_) +
-          4.0 / kPi * (ring_depth_sum(dQ1_dz, dQ2_dz) - chi2 * (Q1 * R21.depth_rate + Q2 * R22.depth_rate)) -
-          2.0 * X * chi2 / S2) /
-         l;
+          k4_pi * (ring_depth_sum(dQ1_dz, dQ2_dz) - chi2 * (Q1 * R21.depth_rate + Q2 * R22.depth_rate)) -
+          2.0 * X * chi2 * inv_S2) *
+         inv_l_;
   return e;
 }
 

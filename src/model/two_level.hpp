@@ -80,6 +80,11 @@ class TwoLevelSystem {
   double K_P_;
   double K_d_;
   int z_power_;  ///< a2 = z^(1/z_power_)
+  double l2_;     ///< l / sqrt(2), the distance to the nearest punch of the other level
+  double inv_l_;
+  double inv_l2_;
+  double inv_A1_;
+  double inv_A2_;
 };
 
 /// Result of the elastic two-level problem, eqs (9.12)-(9.15), where A_i are unknowns too.
