@@ -16,20 +16,44 @@ NominalRadii touchdown_radii(double l) {
   return NominalRadii{lattice.A1_single(), lattice.A_single()};
 }
 
-// Chebyshev points of the first kind on [-1, 1], cos((2k+1) pi / (2n)), and their
-// barycentric weights (-1)^k sin((2k+1) pi / (2n)); computed once.
+// Chebyshev points of the first kind on [-1, 1], node[k] = cos((2k+1) pi / (2n)), and the
+// matrix that turns values at them into Chebyshev coefficients (the first one halved, so
+// that f = sum_j c_j T_j); computed once.
 template <int N>
 struct ChebyshevTable {
   double node[N];
-  double weight[N];
+  double to_coefficient[N][N];
   ChebyshevTable() {
-    for (int k = 0; k < N; ++k) {
-      const double angle = (2.0 * k + 1.0) * std::numbers::pi / (2.0 * N);
-      node[k] = std::cos(angle);
-      weight[k] = ((k % 2) ? -1.0 : 1.0) * std::sin(angle);
+    for (int k = 0; k < N; ++k) node[k] = std::cos((2.0 * k + 1.0) * std::numbers::pi / (2.0 * N));
+    for (int j = 0; j < N; ++j) {
+      for (int k = 0; k < N; ++k) {
+        to_coefficient[j][k] = (j == 0 ? 1.0 : 2.0) / N * std::cos(j * (2.0 * k + 1.0) * std::numbers::pi / (2.0 * N));
+      }
     }
   }
+  // Node values -> coefficients, in place.
+  void transform(double* f) const {
+    double c[N] = {};
+    for (int j = 0; j < N; ++j) {
+      for (int k = 0; k < N; ++k) c[j] += to_coefficient[j][k] * f[k];
+    }
+    std::copy(c, c + N, f);
+  }
 };
+
+// sum_j c_j T_j(t) by Clenshaw's recurrence (no divisions: the guess is made at every point
+// of a regime map).
+template <int N>
+double clenshaw(const double* c, double t) {
+  double b1 = 0.0;
+  double b2 = 0.0;
+  for (int j = N - 1; j >= 1; --j) {
+    const double b0 = c[j] + 2.0 * t * b1 - b2;
+    b2 = b1;
+    b1 = b0;
+  }
+  return c[0] + t * b1 - b2;
+}
 
 }  // namespace
 
@@ -39,6 +63,7 @@ LongTermGuide::LongTermGuide(const ContactProblem& problem)
       z_power_(problem.shape.s == 1 ? 1 : 2) {
   const Touchdown touch = touchdown(SingleLevel(problem.l, problem.shape), problem.dh);
   X_star_ = touch.X_star;
+  inv_X_star_ = 1.0 / X_star_;
   usable_ = X_star_ > 0.0 && std::isfinite(X_star_);
   touch_state_ = TwoLevelState{touch.a1_star, 0.0, problem.l * problem.l * X_star_, 0.0};
   last_state_ = touch_state_;
@@ -53,6 +78,7 @@ bool LongTermGuide::build_next() const {
   Segment seg;
   seg.v_lo = std::sqrt(X_lo - X_star_);
   seg.v_hi = std::sqrt(X_hi - X_star_);
+  seg.inv_width = 1.0 / (seg.v_hi - seg.v_lo);
   // Nodes in increasing X, each solved by continuation from the previous solution.
   TwoLevelState state = last_state_;
   double X = last_X_;
@@ -67,6 +93,8 @@ bool LongTermGuide::build_next() const {
     seg.a1[i] = state.a1;
     seg.z[i] = z_power_ == 2 ? state.a2 * state.a2 : state.a2;
   }
+  cheb.transform(seg.a1);
+  cheb.transform(seg.z);
   const TwoLevelSolve end = system_.continue_to(state, X, X_hi);
   if (!end.converged) return false;
   last_state_ = end.state;
@@ -78,7 +106,7 @@ bool LongTermGuide::build_next() const {
 std::optional<TwoLevelState> LongTermGuide::guess(double X) const {
   if (!usable_ || !(X > X_star_) || !std::isfinite(X)) return std::nullopt;
   int exponent = 0;
-  std::frexp(X / X_star_, &exponent);  // X / X* = m 2^exponent, m in [0.5, 1): segment exponent - 1
+  std::frexp(X * inv_X_star_, &exponent);  // X / X* = m 2^exponent, m in [0.5, 1): segment exponent - 1
   const int j = std::max(0, exponent - 1);
   if (j >= kMaxSegments) return std::nullopt;
   while (static_cast<int>(segments_.size()) <= j) {
@@ -87,24 +115,11 @@ std::optional<TwoLevelState> LongTermGuide::guess(double X) const {
       return std::nullopt;
     }
   }
-  static const ChebyshevTable<kNodes> cheb;
   const Segment& seg = segments_[static_cast<std::size_t>(j)];
   const double v = std::sqrt(X - X_star_);
-  const double t = std::clamp((2.0 * v - seg.v_lo - seg.v_hi) / (seg.v_hi - seg.v_lo), -1.0, 1.0);
-  // Chebyshev interpolation through the node values (barycentric form, first kind).
-  double num_a1 = 0.0;
-  double num_z = 0.0;
-  double den = 0.0;
-  for (int k = 0; k < kNodes; ++k) {
-    const double d = t - cheb.node[k];
-    if (d == 0.0) return TwoLevelState{seg.a1[k], z_power_ == 2 ? std::sqrt(std::max(seg.z[k], 0.0)) : seg.z[k], 0, 0};
-    const double w = cheb.weight[k] / d;
-    num_a1 += w * seg.a1[k];
-    num_z += w * seg.z[k];
-    den += w;
-  }
-  const double z = std::max(num_z / den, 0.0);
-  return TwoLevelState{num_a1 / den, z_power_ == 2 ? std::sqrt(z) : z, 0.0, 0.0};
+  const double t = std::clamp((2.0 * v - seg.v_lo - seg.v_hi) * seg.inv_width, -1.0, 1.0);
+  const double z = std::max(clenshaw<kNodes>(seg.z, t), 0.0);
+  return TwoLevelState{clenshaw<kNodes>(seg.a1, t), z_power_ == 2 ? std::sqrt(z) : z, 0.0, 0.0};
 }
 
 }  // namespace punchsweep::model

@@ -34,7 +34,8 @@ class LongTermGuide {
   struct Segment {
     double v_lo = 0.0;
     double v_hi = 0.0;
-    double a1[kNodes] = {};
+    double inv_width = 0.0;  ///< 1 / (v_hi - v_lo)
+    double a1[kNodes] = {};  ///< Chebyshev coefficients in t (v mapped onto [-1, 1])
     double z[kNodes] = {};
   };
   bool build_next() const;  ///< appends segment segments_.size(); false if it failed
@@ -42,6 +43,7 @@ class LongTermGuide {
   ContactProblem problem_;
   TwoLevelSystem system_;
   double X_star_ = 0.0;
+  double inv_X_star_ = 0.0;
   TwoLevelState touch_state_;
   bool usable_ = false;
   int z_power_ = 2;

@@ -121,7 +121,7 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
   const double l2 = l / std::numbers::sqrt2;
   const double a1_max = std::min(l2, radii_.A1) * kDomainMargin;
   const double a2_max = std::min(l2, radii_.A2) * kDomainMargin;
-  const double z_scale = z_power_ == 2 ? l * l : l;
+  const double inv_z_scale = z_power_ == 2 ? inv_l_ * inv_l_ : inv_l_;
   auto to_a2 = [&](double z) { return z_power_ == 2 ? std::sqrt(z) : z; };
 
   double a1 = std::clamp(guess.a1, 1e-300, a1_max);
@@ -136,13 +136,13 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
   for (int it = 0; it < max_iterations; ++it) {
     const double* r = e.r;
     const double* J = e.J;
-    const double det = J[0] * J[3] - J[1] * J[2];
-    const double d1 = (-r[0] * J[3] + J[1] * r[1]) / det;
-    const double d2 = (-J[0] * r[1] + J[2] * r[0]) / det;
+    const double inv_det = 1.0 / (J[0] * J[3] - J[1] * J[2]);
+    const double d1 = (-r[0] * J[3] + J[1] * r[1]) * inv_det;
+    const double d2 = (-J[0] * r[1] + J[2] * r[0]) * inv_det;
     if (!std::isfinite(d1) || !std::isfinite(d2)) break;
 
     // Close enough for the step to be the last (kFinalStep): take it unevaluated.
-    if (std::max(std::abs(d1) / l, std::abs(d2) / z_scale) < kFinalStep && norm < kResidualTolerance * 1e3 &&
+    if (std::max(std::abs(d1) * inv_l_, std::abs(d2) * inv_z_scale) < kFinalStep && norm < kResidualTolerance * 1e3 &&
         a1 + d1 > 0.0 && a1 + d1 < a1_max && z + d2 >= 0.0 && to_a2(z + d2) < a2_max) {
       a1 += d1;
       z += d2;
@@ -172,7 +172,7 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
       }
     }
     if (!accepted) break;
-    const double step = std::max(std::abs(a1_new - a1) / l, std::abs(z_new - z) / z_scale);
+    const double step = std::max(std::abs(a1_new - a1) * inv_l_, std::abs(z_new - z) * inv_z_scale);
     a1 = a1_new;
     z = z_new;
     e = trial;
