@@ -1,6 +1,7 @@
 #include "model/long_term_guide.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -92,9 +93,12 @@ bool LongTermGuide::build_next() const {
     X = X_node;
     seg.a1[i] = state.a1;
     seg.z[i] = z_power_ == 2 ? state.a2 * state.a2 : state.a2;
+    const std::array<double, 4> rate = system_.root_radii_rates(state.a1, state.a2, X_node);
+    for (int k = 0; k < 4; ++k) seg.rate[k][i] = rate[static_cast<std::size_t>(k)];
   }
   cheb.transform(seg.a1);
   cheb.transform(seg.z);
+  for (auto& rate : seg.rate) cheb.transform(rate);
   const TwoLevelSolve end = system_.continue_to(state, X, X_hi);
   if (!end.converged) return false;
   last_state_ = end.state;
@@ -103,7 +107,9 @@ bool LongTermGuide::build_next() const {
   return true;
 }
 
-std::optional<TwoLevelState> LongTermGuide::guess(double X) const {
+std::optional<TwoLevelState> LongTermGuide::guess(double X) const { return guess(X, system_.radii()); }
+
+std::optional<TwoLevelState> LongTermGuide::guess(double X, const NominalRadii& radii) const {
   if (!usable_ || !(X > X_star_) || !std::isfinite(X)) return std::nullopt;
   int exponent = 0;
   std::frexp(X * inv_X_star_, &exponent);  // X / X* = m 2^exponent, m in [0.5, 1): segment exponent - 1
@@ -118,8 +124,16 @@ std::optional<TwoLevelState> LongTermGuide::guess(double X) const {
   const Segment& seg = segments_[static_cast<std::size_t>(j)];
   const double v = std::sqrt(X - X_star_);
   const double t = std::clamp((2.0 * v - seg.v_lo - seg.v_hi) * seg.inv_width, -1.0, 1.0);
-  const double z = std::max(clenshaw<kNodes>(seg.z, t), 0.0);
-  return TwoLevelState{clenshaw<kNodes>(seg.a1, t), z_power_ == 2 ? std::sqrt(z) : z, 0.0, 0.0};
+  double a1 = clenshaw<kNodes>(seg.a1, t);
+  double z = clenshaw<kNodes>(seg.z, t);
+  const double dA1 = radii.A1 - system_.radii().A1;
+  const double dA2 = radii.A2 - system_.radii().A2;
+  if (dA1 != 0.0 || dA2 != 0.0) {
+    a1 += clenshaw<kNodes>(seg.rate[0], t) * dA1 + clenshaw<kNodes>(seg.rate[1], t) * dA2;
+    z += clenshaw<kNodes>(seg.rate[2], t) * dA1 + clenshaw<kNodes>(seg.rate[3], t) * dA2;
+  }
+  z = std::max(z, 0.0);
+  return TwoLevelState{a1, z_power_ == 2 ? std::sqrt(z) : z, 0.0, 0.0};
 }
 
 }  // namespace punchsweep::model

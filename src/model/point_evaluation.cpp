@@ -123,7 +123,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
     TwoLevelSolve r{out.start, false};
     if (out.start_ok && std::isfinite(X_inf)) {
       const TwoLevelSystem system(problem, out.radii);
-      if (const std::optional<TwoLevelState> guess = parts.guide->guess(X_inf)) r = system.solve(X_inf, *guess);
+      if (const std::optional<TwoLevelState> guess = parts.guide->guess(X_inf, out.radii)) r = system.solve(X_inf, *guess);
       if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
     }
     out.a1_inf = r.converged ? r.state.a1 : kNaN;

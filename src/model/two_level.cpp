@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+
+#include <Eigen/Dense>
 
 #include "model/integer_power.hpp"
 
@@ -114,6 +117,57 @@ TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double
           2.0 * X * chi2 * inv_S2) *
          inv_l_;
   return e;
+}
+
+TwoLevelSystem::Linearization TwoLevelSystem::linearize(double a1, double a2, double X) const {
+  const Evaluation e = evaluate(a1, a2, X);
+  Linearization out{};
+  std::copy(e.r, e.r + 2, out.r);
+  std::copy(e.Q, e.Q + 2, out.Q);
+  std::copy(e.J, e.J + 4, out.r_a);
+  std::copy(e.dQ, e.dQ + 4, out.Q_a);
+
+  // The radii enter b_i through nominal_load_term(a_i, A_i), whose A-derivative is
+  // 2A arcsin(a/A) - 2aA/S, and the height condition through S_i = sqrt(A_i^2 - a_i^2).
+  const double l = problem_.l;
+  const double A1 = radii_.A1;
+  const double A2 = radii_.A2;
+  const Ring R11 = ring(a1, l, inv_l_);
+  const Ring R12 = ring(a1, l2_, inv_l2_);
+  const Ring R21 = ring(a2, l2_, inv_l2_);
+  const Ring R22 = ring(a2, l, inv_l_);
+  const double S1 = std::sqrt(A1 * A1 - a1 * a1);
+  const double S2 = std::sqrt(A2 * A2 - a2 * a2);
+  const double M00 = 1.0 - 4.0 * R11.share;
+  const double M01 = -4.0 * R12.share;
+  const double M10 = -4.0 * R21.share;
+  const double M11 = 1.0 - 4.0 * R22.share;
+  const double det = M00 * M11 - M01 * M10;
+  const double db0 = 2.0 * X * (2.0 * A1 * std::asin(a1 / A1) - 2.0 * a1 * A1 / S1);  // d b0 / d A1
+  const double db1 = 2.0 * X * (2.0 * A2 * std::asin(a2 / A2) - 2.0 * a2 * A2 / S2);  // d b1 / d A2
+  out.Q_A[0] = M11 * db0 / det;   // dQ1/dA1
+  out.Q_A[1] = -M01 * db1 / det;  // dQ1/dA2
+  out.Q_A[2] = -M10 * db0 / det;  // dQ2/dA1
+  out.Q_A[3] = M00 * db1 / det;   // dQ2/dA2
+  auto ring_depth_sum = [&](double dQ1, double dQ2) {
+    return dQ2 * R12.depth + dQ1 * R11.depth - dQ1 * R21.depth - dQ2 * R22.depth;
+  };
+  const double load_scale = l * l * X;
+  out.r_A[0] = (out.Q_A[0] + out.Q_A[2]) / load_scale;
+  out.r_A[1] = (out.Q_A[1] + out.Q_A[3]) / load_scale;
+  out.r_A[2] = (4.0 / kPi * ring_depth_sum(out.Q_A[0], out.Q_A[2]) - 2.0 * X * A1 / S1) / l;
+  out.r_A[3] = (4.0 / kPi * ring_depth_sum(out.Q_A[1], out.Q_A[3]) + 2.0 * X * A2 / S2) / l;
+  return out;
+}
+
+std::array<double, 4> TwoLevelSystem::root_radii_rates(double a1, double a2, double X) const {
+  const Linearization lin = linearize(a1, a2, X);
+  const double* J = lin.r_a;
+  const double* B = lin.r_A;
+  const double det = J[0] * J[3] - J[1] * J[2];
+  // -J^-1 B, J^-1 = [J3 -J1; -J2 J0] / det.
+  return {-(J[3] * B[0] - J[1] * B[2]) / det, -(J[3] * B[1] - J[1] * B[3]) / det,
+          -(-J[2] * B[0] + J[0] * B[2]) / det, -(-J[2] * B[1] + J[0] * B[3]) / det};
 }
 
 TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int max_iterations) const {
@@ -241,6 +295,83 @@ TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {
   return continue_to(start.state, X_start, X);
 }
 
+std::optional<ElasticTwoLevel> solve_elastic_jointly(const ContactProblem& problem, double X,
+                                                     const TwoLevelState& start, NominalRadii radii) {
+  const double l = problem.l;
+  const double l2 = l / std::numbers::sqrt2;
+  const int z_power = problem.shape.s == 1 ? 1 : 2;
+  const double z_scale = z_power == 2 ? l * l : l;
+  const double scale = 1.0 / (l * l * X);
+  auto to_a2 = [&](double z) { return z_power == 2 ? std::sqrt(z) : z; };
+
+  struct Point {
+    Eigen::Vector4d u;  // a1, z, A1, A2
+    Eigen::Vector4d F;
+    Eigen::Matrix4d DF;
+    Eigen::Matrix<double, 2, 4> dQ;
+    double Q[2];
+    double norm;
+  };
+  auto at = [&](const Eigen::Vector4d& u) -> std::optional<Point> {
+    const double a1 = u[0];
+    const double a2 = to_a2(std::max(u[1], 0.0));
+    if (!(a1 > 0.0 && u[1] >= 0.0 && a1 < std::min(l2, u[2]) * kDomainMargin &&
+          a2 < std::min(l2, u[3]) * kDomainMargin)) {
+      return std::nullopt;
+    }
+    const TwoLevelSystem system(problem, NominalRadii{u[2], u[3]});
+    const TwoLevelSystem::Linearization lin = system.linearize(a1, a2, X);
+    Point p;
+    p.u = u;
+    p.Q[0] = lin.Q[0];
+    p.Q[1] = lin.Q[1];
+    p.dQ << lin.Q_a[0], lin.Q_a[1], lin.Q_A[0], lin.Q_A[1], lin.Q_a[2], lin.Q_a[3], lin.Q_A[2], lin.Q_A[3];
+    p.F << lin.r[0], lin.r[1], (kPi * X * u[2] * u[2] - 5.0 * lin.Q[0] - 4.0 * lin.Q[1]) * scale,
+        (kPi * X * u[3] * u[3] - 5.0 * lin.Q[1] - 4.0 * lin.Q[0]) * scale;
+    p.DF.row(0) << lin.r_a[0], lin.r_a[1], lin.r_A[0], lin.r_A[1];
+    p.DF.row(1) << lin.r_a[2], lin.r_a[3], lin.r_A[2], lin.r_A[3];
+    p.DF.row(2) = -(5.0 * p.dQ.row(0) + 4.0 * p.dQ.row(1)) * scale;
+    p.DF.row(3) = -(5.0 * p.dQ.row(1) + 4.0 * p.dQ.row(0)) * scale;
+    p.DF(2, 2) += 2.0 * kPi * u[2] / (l * l);
+    p.DF(3, 3) += 2.0 * kPi * u[3] / (l * l);
+    p.norm = p.F.cwiseAbs().maxCoeff();
+    if (!std::isfinite(p.norm)) return std::nullopt;
+    return p;
+  };
+
+  std::optional<Point> current =
+      at(Eigen::Vector4d(start.a1, z_power == 2 ? start.a2 * start.a2 : start.a2, radii.A1, radii.A2));
+  if (!current) return std::nullopt;
+  const Eigen::Vector4d relative(1.0 / l, 1.0 / z_scale, 1.0 / l, 1.0 / l);
+  for (int it = 0; it < TwoLevelSystem::kMaxIterations; ++it) {
+    const Eigen::Vector4d d = -current->DF.partialPivLu().solve(current->F);
+    if (!d.allFinite()) return std::nullopt;
+    const double size = d.cwiseProduct(relative).cwiseAbs().maxCoeff();
+    if (size < TwoLevelSystem::kFinalStep && current->norm < TwoLevelSystem::kResidualTolerance * 1e3) {
+      // The last step, taken unevaluated (as in TwoLevelSystem::solve).
+      const Eigen::Vector4d u = current->u + d;
+      const Eigen::Vector2d Q = Eigen::Vector2d(current->Q[0], current->Q[1]) + current->dQ * d;
+      if (!(u[0] > 0.0 && u[1] >= 0.0)) return std::nullopt;
+      return ElasticTwoLevel{TwoLevelState{u[0], to_a2(u[1]), Q[0], Q[1]}, NominalRadii{u[2], u[3]}, true, true};
+    }
+    std::optional<Point> next;
+    double lambda = 1.0;
+    for (int halving = 0; halving < 40 && !next; ++halving, lambda *= 0.5) {
+      next = at(current->u + lambda * d);
+      if (next && !(next->norm < current->norm || next->norm <= TwoLevelSystem::kResidualTolerance * 1e-3)) {
+        next.reset();
+      }
+    }
+    if (!next) return std::nullopt;
+    current = next;
+    if (lambda * size < TwoLevelSystem::kStepTolerance || current->norm < TwoLevelSystem::kConvergedResidual) break;
+  }
+  if (!(current->norm < TwoLevelSystem::kResidualTolerance)) return std::nullopt;
+  const Eigen::Vector4d& u = current->u;
+  return ElasticTwoLevel{TwoLevelState{u[0], to_a2(u[1]), current->Q[0], current->Q[1]}, NominalRadii{u[2], u[3]},
+                         true, true};
+}
+
 ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
                                         const LongTermGuide* guide) {
   const double X = problem.pbar0 / E;
@@ -262,7 +393,10 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
   const TwoLevelSystem touchdown_system(problem, touchdown_radii);
   TwoLevelSolve current{TwoLevelState{}, false};
   if (guide != nullptr) {
-    if (const std::optional<TwoLevelState> start = guide->guess(X)) current = touchdown_system.solve(X, *start);
+    if (const std::optional<TwoLevelState> start = guide->guess(X)) {
+      if (std::optional<ElasticTwoLevel> joint = solve_elastic_jointly(problem, X, *start, touchdown_radii)) return *joint;
+      current = touchdown_system.solve(X, *start);
+    }
   }
   if (!current.converged) current = touchdown_system.solve_from_touchdown(X);
   NominalRadii radii = touchdown_radii;

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <array>
+#include <optional>
+
 #include "model/contact_problem.hpp"
 
 namespace punchsweep::model {
@@ -62,6 +65,24 @@ class TwoLevelSystem {
   /// exact start; otherwise (or for dh -> 0) the isolated-punch small-load limit is.
   TwoLevelSolve solve_from_touchdown(double X) const;
 
+  /// How a root (a1, a2) at X moves with the nominal radii: d(a1, z)/d(A1, A2) row-major,
+  /// -J^-1 dr/dA by the implicit function theorem. The long-term guide keeps it to correct
+  /// its guesses for the radii of immediate points.
+  std::array<double, 4> root_radii_rates(double a1, double a2, double X) const;
+
+  /// The system linearised at one (a1, a2), in (a1, z) and in the radii (A1, A2): scaled
+  /// residuals r (dimensionless) and loads Q of eq (9.16), with their rates, each 2x2
+  /// row-major (rows r0, r1 or Q1, Q2).
+  struct Linearization {
+    double r[2];
+    double Q[2];
+    double r_a[4];  ///< dr/d(a1, z)
+    double Q_a[4];  ///< dQ/d(a1, z)
+    double r_A[4];  ///< dr/d(A1, A2)
+    double Q_A[4];  ///< dQ/d(A1, A2)
+  };
+  Linearization linearize(double a1, double a2, double X) const;
+
   const NominalRadii& radii() const { return radii_; }
 
  private:
@@ -97,11 +118,20 @@ struct ElasticTwoLevel {
 
 class LongTermGuide;
 
+/// Newton on (a1, z, A1, A2) at once for the elastic problem at X = pbar/E (level 2
+/// touching): the two-level residuals at radii A, and eq (9.13) as
+/// (pi X A_i^2 - 5 Q_i - 4 Q_j) / (l^2 X) = 0. Started from the guide's state at the
+/// touchdown radii (which lie a few percent of l off), it converges quadratically in about
+/// four linearisations, where iterating eq (9.13) around Newton took about eight
+/// evaluations. Empty if Newton fails.
+std::optional<ElasticTwoLevel> solve_elastic_jointly(const ContactProblem& problem, double X,
+                                                     const TwoLevelState& start, NominalRadii radii);
+
 /// Elastic two-level contact for modulus E (in E0*), eqs (9.12)-(9.15): the radii A_i
-/// follow pi A_i^2 pbar = 5 P_i + 4 P_j (eq 9.13), found by fixed-point iteration around
-/// the Newton solve (|dA| < 1e-13 l, at most 200 sweeps; A depends weakly on a). The first
-/// solve, at the touchdown radii, starts from `guide` when one is given (it is exact
-/// there), else follows the branch from touchdown.
+/// follow pi A_i^2 pbar = 5 P_i + 4 P_j (eq 9.13). With a `guide`, solve_elastic_jointly
+/// from its state; without one, or if that fails, by fixed-point iteration of eq 9.13
+/// around the Newton solve (|dA| < 1e-13 l, at most 200 sweeps; A depends weakly on a),
+/// started from the guide's state or else by following the branch from touchdown.
 ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
                                         const LongTermGuide* guide = nullptr);
 

@@ -1,9 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "model/lattice.hpp"
+#include "model/long_term_guide.hpp"
 #include "model/single_level.hpp"
 #include "model/two_level.hpp"
 
@@ -119,4 +123,98 @@ TEST(TwoLevelSystem, residuals_vanish_at_the_solution) {
                     2.0 * X * (std::sqrt(A.A1 * A.A1 - st.a1 * st.a1) - std::sqrt(A.A2 * A.A2 - st.a2 * st.a2));
   EXPECT_NEAR(dh, kTableProblem.dh, 1e-12);
   EXPECT_NEAR(st.Q1 + st.Q2, l * l * X, 1e-14);
+}
+
+TEST(ElasticTwoLevel, joint_newton_from_the_guide_agrees_with_the_radius_iteration) {
+  // With a guide the radii are solved together with (a1, z) by Newton; without one, eq 9.13
+  // is iterated around Newton. Both must find the same root.
+  for (const int s : {1, 2, 3}) {
+    ContactProblem problem = kTableProblem;
+    problem.shape = Shape{s, 0.5};
+    const LongTermGuide guide(problem);
+    for (const double E : {1.0, 0.8, 0.5, 0.4, 0.3}) {
+      SCOPED_TRACE("s = " + std::to_string(s) + ", E/E0 = " + std::to_string(E));
+      const ElasticTwoLevel iterated = solve_elastic_two_level(problem, E);
+      const ElasticTwoLevel joint = solve_elastic_two_level(problem, E, &guide);
+      ASSERT_EQ(joint.level2_touches, iterated.level2_touches);
+      if (!iterated.level2_touches) continue;  // single level: no radii to solve for
+      // Which took the joint Newton itself, not its fallback (the iteration).
+      const Lattice lattice{problem.l};
+      const auto start = guide.guess(problem.pbar0 / E);
+      ASSERT_TRUE(start);
+      const std::optional<ElasticTwoLevel> direct = solve_elastic_jointly(
+          problem, problem.pbar0 / E, *start, NominalRadii{lattice.A1_single(), lattice.A_single()});
+      ASSERT_TRUE(direct);
+      EXPECT_EQ(direct->state.a1, joint.state.a1);
+      EXPECT_EQ(direct->radii.A2, joint.radii.A2);
+      ASSERT_TRUE(iterated.converged);
+      ASSERT_TRUE(joint.converged);
+      EXPECT_NEAR(joint.state.a1, iterated.state.a1, 1e-12);
+      EXPECT_NEAR(joint.state.a2, iterated.state.a2, 1e-10);  // a2 = sqrt(z) near touchdown
+      EXPECT_NEAR(joint.state.Q1, iterated.state.Q1, 1e-13);
+      EXPECT_NEAR(joint.state.Q2, iterated.state.Q2, 1e-13);
+      EXPECT_NEAR(joint.radii.A1, iterated.radii.A1, 1e-12);
+      EXPECT_NEAR(joint.radii.A2, iterated.radii.A2, 1e-12);
+    }
+  }
+}
+
+TEST(TwoLevelSystem, linearization_matches_central_differences) {
+  // Away from any root: a1 = 0.3, a2 = 0.1 at X = 0.15, radii off the touchdown ones.
+  const NominalRadii radii{0.95, 0.86};
+  const double X = 0.15;
+  const double a1 = 0.3;
+  const double z = 0.01;  // s = 2: z = a2^2
+  const TwoLevelSystem system(kTableProblem, radii);
+  const TwoLevelSystem::Linearization lin = system.linearize(a1, std::sqrt(z), X);
+  const double h = 1e-6;
+  // Central difference of (r0, r1, Q1, Q2) along one of (a1, z, A1, A2).
+  auto difference = [&](int k) {
+    double u[4] = {a1, z, radii.A1, radii.A2};
+    double v[4] = {a1, z, radii.A1, radii.A2};
+    u[k] += h;
+    v[k] -= h;
+    const auto plus = TwoLevelSystem(kTableProblem, {u[2], u[3]}).linearize(u[0], std::sqrt(u[1]), X);
+    const auto minus = TwoLevelSystem(kTableProblem, {v[2], v[3]}).linearize(v[0], std::sqrt(v[1]), X);
+    return std::array<double, 4>{(plus.r[0] - minus.r[0]) / (2 * h), (plus.r[1] - minus.r[1]) / (2 * h),
+                                 (plus.Q[0] - minus.Q[0]) / (2 * h), (plus.Q[1] - minus.Q[1]) / (2 * h)};
+  };
+  for (int k = 0; k < 4; ++k) {
+    SCOPED_TRACE("variable " + std::to_string(k));
+    const std::array<double, 4> fd = difference(k);
+    const double* rates_r = k < 2 ? lin.r_a : lin.r_A;
+    const double* rates_Q = k < 2 ? lin.Q_a : lin.Q_A;
+    const int c = k % 2;
+    for (int i = 0; i < 2; ++i) {
+      EXPECT_NEAR(rates_r[2 * i + c], fd[i], 1e-7 * (1.0 + std::abs(fd[i])));
+      EXPECT_NEAR(rates_Q[2 * i + c], fd[2 + i], 1e-7 * (1.0 + std::abs(fd[2 + i])));
+    }
+  }
+}
+
+TEST(LongTermGuide, radii_correction_brings_the_guess_close_to_an_immediate_root) {
+  // An immediate point's long-term state uses the radii of the elastic solution at t = 0
+  // (Table 9.1's first row: A = 0.9454, 0.8472, against 0.9462, 0.8463 at touchdown).
+  const LongTermGuide guide(kTableProblem);
+  const ElasticTwoLevel start = solve_elastic_two_level(kTableProblem, 1.0);
+  const TwoLevelSystem system(kTableProblem, start.radii);
+  for (const double T : {2.0, 5.0, 10.0}) {
+    SCOPED_TRACE("T = " + std::to_string(T));
+    const double X = kTableProblem.pbar0 * T;
+    const TwoLevelSolve root = system.continue_to(start.state, kTableProblem.pbar0, X);
+    ASSERT_TRUE(root.converged);
+    const auto plain = guide.guess(X);
+    const auto corrected = guide.guess(X, start.radii);
+    ASSERT_TRUE(plain && corrected);
+    auto error = [&](const TwoLevelState& g) {
+      return std::max(std::abs(g.a1 - root.state.a1), std::abs(g.a2 * g.a2 - root.state.a2 * root.state.a2) / 0.75);
+    };
+    EXPECT_LT(error(*corrected), 0.1 * error(*plain));
+    // At the touchdown radii the two guesses are the same.
+    const Lattice lattice{kTableProblem.l};
+    const auto same = guide.guess(X, NominalRadii{lattice.A1_single(), lattice.A_single()});
+    ASSERT_TRUE(same);
+    EXPECT_EQ(same->a1, plain->a1);
+    EXPECT_EQ(same->a2, plain->a2);
+  }
 }
