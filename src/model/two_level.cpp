@@ -44,7 +44,7 @@ TwoLevelSystem::TwoLevelSystem(const ContactProblem& problem, NominalRadii radii
 // Eq (9.16) for Q (linear once a is fixed), then eqs (9.19) and (9.17) as residuals.
 // Written for few divisions (reciprocals computed once, here or in the constructor): the
 // Newton solves of a regime map spend most of their time in this function.
-TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double X) const {
+TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double X, RadiiRates* radii_rates) const {
   Evaluation e;
   double* r = e.r;
   double* J = e.J;
@@ -71,8 +71,10 @@ TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double
   const double a1s = a1s1 * a1;
   const double a2s = ipow(a2, s);
   // nominal_load_term(a_i, A_i), with the square roots above.
-  const double b0 = K_P_ * a1s * a1 + 2.0 * X * (A1 * A1 * std::asin(a1 * inv_A1_) - a1 * S1);
-  const double b1 = K_P_ * a2s * a2 + 2.0 * X * (A2 * A2 * std::asin(a2 * inv_A2_) - a2 * S2);
+  const double asin1 = std::asin(a1 * inv_A1_);
+  const double asin2 = std::asin(a2 * inv_A2_);
+  const double b0 = K_P_ * a1s * a1 + 2.0 * X * (A1 * A1 * asin1 - a1 * S1);
+  const double b1 = K_P_ * a2s * a2 + 2.0 * X * (A2 * A2 * asin2 - a2 * S2);
   const double inv_det = 1.0 / (M00 * M11 - M01 * M10);
   const double Q1 = (b0 * M11 - M01 * b1) * inv_det;
   const double Q2 = (M00 * b1 - M10 * b0) * inv_det;
@@ -116,47 +118,35 @@ TwoLevelSystem::Evaluation TwoLevelSystem::evaluate(double a1, double a2, double
           k4_pi * (ring_depth_sum(dQ1_dz, dQ2_dz) - chi2 * (Q1 * R21.depth_rate + Q2 * R22.depth_rate)) -
           2.0 * X * chi2 * inv_S2) *
          inv_l_;
+  if (radii_rates == nullptr) return e;
+
+  // The radii enter b_i through nominal_load_term(a_i, A_i), whose A-derivative is
+  // 2A arcsin(a/A) - 2aA/S, and the height condition through S_i = sqrt(A_i^2 - a_i^2).
+  double* Q_A = radii_rates->Q_A;
+  double* r_A = radii_rates->r_A;
+  const double db0 = 2.0 * X * (2.0 * A1 * asin1 - 2.0 * a1 * A1 * inv_S1);  // d b0 / d A1
+  const double db1 = 2.0 * X * (2.0 * A2 * asin2 - 2.0 * a2 * A2 * inv_S2);  // d b1 / d A2
+  Q_A[0] = M11 * db0 * inv_det;   // dQ1/dA1
+  Q_A[1] = -M01 * db1 * inv_det;  // dQ1/dA2
+  Q_A[2] = -M10 * db0 * inv_det;  // dQ2/dA1
+  Q_A[3] = M00 * db1 * inv_det;   // dQ2/dA2
+  r_A[0] = (Q_A[0] + Q_A[2]) * inv_load;
+  r_A[1] = (Q_A[1] + Q_A[3]) * inv_load;
+  r_A[2] = (k4_pi * ring_depth_sum(Q_A[0], Q_A[2]) - 2.0 * X * A1 * inv_S1) * inv_l_;
+  r_A[3] = (k4_pi * ring_depth_sum(Q_A[1], Q_A[3]) + 2.0 * X * A2 * inv_S2) * inv_l_;
   return e;
 }
 
 TwoLevelSystem::Linearization TwoLevelSystem::linearize(double a1, double a2, double X) const {
-  const Evaluation e = evaluate(a1, a2, X);
   Linearization out{};
+  RadiiRates rates{};
+  const Evaluation e = evaluate(a1, a2, X, &rates);
   std::copy(e.r, e.r + 2, out.r);
   std::copy(e.Q, e.Q + 2, out.Q);
   std::copy(e.J, e.J + 4, out.r_a);
   std::copy(e.dQ, e.dQ + 4, out.Q_a);
-
-  // The radii enter b_i through nominal_load_term(a_i, A_i), whose A-derivative is
-  // 2A arcsin(a/A) - 2aA/S, and the height condition through S_i = sqrt(A_i^2 - a_i^2).
-  const double l = problem_.l;
-  const double A1 = radii_.A1;
-  const double A2 = radii_.A2;
-  const Ring R11 = ring(a1, l, inv_l_);
-  const Ring R12 = ring(a1, l2_, inv_l2_);
-  const Ring R21 = ring(a2, l2_, inv_l2_);
-  const Ring R22 = ring(a2, l, inv_l_);
-  const double S1 = std::sqrt(A1 * A1 - a1 * a1);
-  const double S2 = std::sqrt(A2 * A2 - a2 * a2);
-  const double M00 = 1.0 - 4.0 * R11.share;
-  const double M01 = -4.0 * R12.share;
-  const double M10 = -4.0 * R21.share;
-  const double M11 = 1.0 - 4.0 * R22.share;
-  const double det = M00 * M11 - M01 * M10;
-  const double db0 = 2.0 * X * (2.0 * A1 * std::asin(a1 / A1) - 2.0 * a1 * A1 / S1);  // d b0 / d A1
-  const double db1 = 2.0 * X * (2.0 * A2 * std::asin(a2 / A2) - 2.0 * a2 * A2 / S2);  // d b1 / d A2
-  out.Q_A[0] = M11 * db0 / det;   // dQ1/dA1
-  out.Q_A[1] = -M01 * db1 / det;  // dQ1/dA2
-  out.Q_A[2] = -M10 * db0 / det;  // dQ2/dA1
-  out.Q_A[3] = M00 * db1 / det;   // dQ2/dA2
-  auto ring_depth_sum = [&](double dQ1, double dQ2) {
-    return dQ2 * R12.depth + dQ1 * R11.depth - dQ1 * R21.depth - dQ2 * R22.depth;
-  };
-  const double load_scale = l * l * X;
-  out.r_A[0] = (out.Q_A[0] + out.Q_A[2]) / load_scale;
-  out.r_A[1] = (out.Q_A[1] + out.Q_A[3]) / load_scale;
-  out.r_A[2] = (4.0 / kPi * ring_depth_sum(out.Q_A[0], out.Q_A[2]) - 2.0 * X * A1 / S1) / l;
-  out.r_A[3] = (4.0 / kPi * ring_depth_sum(out.Q_A[1], out.Q_A[3]) + 2.0 * X * A2 / S2) / l;
+  std::copy(rates.r_A, rates.r_A + 4, out.r_A);
+  std::copy(rates.Q_A, rates.Q_A + 4, out.Q_A);
   return out;
 }
 

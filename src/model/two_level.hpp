@@ -94,7 +94,12 @@ class TwoLevelSystem {
     double Q[2];
     double dQ[4];
   };
-  Evaluation evaluate(double a1, double a2, double X) const;
+  /// dr/d(A1, A2) and dQ/d(A1, A2), row-major; only linearize asks for them.
+  struct RadiiRates {
+    double r_A[4];
+    double Q_A[4];
+  };
+  Evaluation evaluate(double a1, double a2, double X, RadiiRates* radii_rates = nullptr) const;
 
   ContactProblem problem_;
   NominalRadii radii_;
