@@ -5,6 +5,7 @@
 #include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
 #include "model/standard_linear_solid.hpp"
+#include "model/elastic_two_level.hpp"
 #include "model/two_level.hpp"
 
 using namespace punchsweep::model;

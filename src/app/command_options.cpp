@@ -1,5 +1,6 @@
 #include "app/command_options.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -7,7 +8,6 @@
 
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
-#include "model/standard_linear_solid.hpp"
 
 namespace po = boost::program_options;
 
@@ -49,55 +49,99 @@ double read_real(const po::variables_map& vm, const char* name, const char* mean
   return value;
 }
 
-model::Shape read_shape(const po::variables_map& vm) {
-  const char* range = "an integer in [1, 32]";
-  if (!vm.count("s")) throw UsageError(std::string("missing required option --s (shape exponent; ") + range + ")");
-  const std::string text = vm["s"].as<std::string>();
-  model::Shape shape;
+void add_parameter_option(po::options_description& opts, const model::Parameter& parameter,
+                          const std::string& requirement) {
+  const std::string name(parameter.name);
+  std::string upper;
+  for (const char c : name) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string needed = !requirement.empty()               ? requirement
+                             : parameter.point_default.empty() ? std::string("required")
+                                                               : "default " + std::string(parameter.point_default);
+  const std::string help = std::string(parameter.meaning) + "; " + needed + "; " + std::string(parameter.range);
+  auto* value = po::value<std::string>()->value_name(upper);
+  if (!parameter.point_default.empty()) value->default_value(std::string(parameter.point_default));
+  opts.add_options()(name.c_str(), value, help.c_str());
+}
+
+double read_parameter(const po::variables_map& vm, const model::Parameter& parameter) {
+  const std::string name(parameter.name);
+  const std::string option = "--" + name;
+  const std::string range(parameter.range);
+  if (!vm.count(name)) {
+    throw UsageError("missing required option " + option + " (" + std::string(parameter.long_name) + "; " + range + ")");
+  }
+  const std::string text = vm[name].as<std::string>();
+  double value = 0.0;
   try {
-    shape.s = parse_integer(text, "--s");
-  } catch (const UsageError&) {
-    throw UsageError("--s = " + text + " is outside its range: " + range);
+    value = parameter.integer ? parse_integer(text, option) : parse_real(text, option);
+  } catch (const UsageError& e) {
+    if (parameter.integer) throw UsageError(option + " = " + text + " is outside its range: " + range);
+    throw UsageError(std::string(e.what()) + "; valid range: " + range);
   }
-  if (shape.s < model::Shape::kMinExponent || shape.s > model::Shape::kMaxExponent) {
-    throw UsageError("--s = " + text + " is outside its range: " + range);
-  }
-  shape.C = read_real(vm, "C", "shape constant", "C > 0", [](double v) { return v > 0.0; });
+  if (!parameter.admits(value)) throw UsageError(option + " = " + text + " is outside its range: " + range);
+  return value;
+}
+
+model::Shape read_shape(const po::variables_map& vm) {
+  model::Shape shape;
+  shape.s = static_cast<int>(read_parameter(vm, *model::find_parameter(model::kExponent)));
+  shape.C = read_parameter(vm, *model::find_parameter(model::kShapeConstant));
   return shape;
 }
 
-void add_point_options(po::options_description& opts) {
-  opts.add_options()
-      ("help", "print this help and exit")
-      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0")
-      ("dh", po::value<std::string>()->value_name("DH"),
-       "height difference of the two punch levels, in R; required; dh >= 0")
-      ("T", po::value<std::string>()->value_name("T"),
-       "creep ratio T = T_eps/T_sigma of the standard linear solid (J(inf) = T/E0*); "
-       "required; T >= 1 (T = 1: elastic)")
-      ("pbar", po::value<std::string>()->value_name("P"),
-       "constant nominal pressure pbar0, in E0*; required; pbar > 0")
-      ("s", po::value<std::string>()->value_name("S"),
-       "shape exponent s of f(r) = C r^s / R^(s-1); required; an integer in [1, 32] "
-       "(1 cone, 2 paraboloid)")
-      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"),
-       "shape constant C; C > 0 (sphere: s = 2, C = 0.5)")
-      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
-       "snapshot times, comma-separated, in T_eps; each finite and >= 0");
+void add_point_options(po::options_description& opts, const model::CreepLawSpec& law) {
+  opts.add_options()("help", "print this help and exit");
+  for (const model::Parameter* p : model::sweep_axes(law.parameters)) add_parameter_option(opts, *p);
+  add_parameter_option(opts, *model::find_parameter(model::kShapeConstant));
+  opts.add_options()("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
+                     "snapshot times, comma-separated, in T_eps; each finite and >= 0");
 }
 
 model::ContactProblem read_problem(const po::variables_map& vm) {
   model::ContactProblem problem;
-  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", [](double v) { return v > 0.0; });
-  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
-  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", [](double v) { return v > 0.0; });
+  problem.l = read_parameter(vm, *model::find_parameter(model::kPitch));
+  problem.dh = read_parameter(vm, *model::find_parameter(model::kHeightDifference));
+  problem.pbar0 = read_parameter(vm, *model::find_parameter(model::kPressure));
   problem.shape = read_shape(vm);
   return problem;
 }
 
-double read_creep_ratio(const po::variables_map& vm) {
-  return read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
-                   [](double v) { return model::creep_ratio_error(v).empty(); });
+PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law) {
+  PointInputs inputs;
+  // In the order of the options, so that the first bad one is reported.
+  for (const model::Parameter* p : model::sweep_axes(law.parameters)) read_parameter(vm, *p);
+  inputs.problem = read_problem(vm);
+  inputs.law = &law;
+  for (const model::Parameter& p : law.parameters) inputs.law_values.push_back(read_parameter(vm, p));
+  inputs.creep = model::make_creep_law(law, inputs.law_values);
+  return inputs;
+}
+
+std::string PointInputs::describe() const {
+  std::string text;
+  const auto add = [&](const model::Parameter& p, double value) {
+    if (!text.empty()) text += ", ";
+    text.append(p.name);
+    text += " = ";
+    text += json_number(value);
+    if (p.units != "1") {
+      text += ' ';
+      text.append(p.units);
+    }
+  };
+  for (const model::Parameter* p : model::sweep_axes(law->parameters)) {
+    if (p->name == model::kPitch) add(*p, problem.l);
+    else if (p->name == model::kHeightDifference) add(*p, problem.dh);
+    else if (p->name == model::kPressure) add(*p, problem.pbar0);
+    else if (p->name == model::kExponent) add(*p, problem.shape.s);
+    else {
+      for (std::size_t k = 0; k < law->parameters.size(); ++k) {
+        if (&law->parameters[k] == p) add(*p, law_values[k]);
+      }
+    }
+  }
+  add(*model::find_parameter(model::kShapeConstant), problem.shape.C);
+  return text;
 }
 
 std::vector<double> read_real_list(const po::variables_map& vm, const char* name, const char* range,

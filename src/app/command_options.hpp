@@ -3,10 +3,13 @@
 #include <boost/program_options.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "model/contact_problem.hpp"
+#include "model/creep_laws.hpp"
+#include "model/parameters.hpp"
 #include "model/shape.hpp"
 
 namespace punchsweep::app {
@@ -22,18 +25,44 @@ boost::program_options::variables_map parse_command(const std::vector<std::strin
 double read_real(const boost::program_options::variables_map& vm, const char* name, const char* meaning,
                  const char* range, const std::function<bool(double)>& in_range);
 
-/// --s (an integer in [1, 32], required) and --C (> 0) as a Shape.
+/// Declares --NAME for `parameter` with its meaning, unit, range and default (or
+/// "required"), as model/parameters.hpp declares them.
+/// `requirement` replaces "required" / "default X" in the help when given.
+void add_parameter_option(boost::program_options::options_description& opts, const model::Parameter& parameter,
+                          const std::string& requirement = {});
+
+/// The value of --NAME for `parameter`. Throws UsageError naming the option, its value
+/// and its valid range (or "missing required option") when it is not admissible.
+double read_parameter(const boost::program_options::variables_map& vm, const model::Parameter& parameter);
+
+/// --s and --C as a Shape.
 model::Shape read_shape(const boost::program_options::variables_map& vm);
 
-/// Declares the options of one parameter point: --help, --l, --dh, --T, --pbar, --s, --C
-/// and --times, each with its unit and range.
-void add_point_options(boost::program_options::options_description& opts);
+/// The options of one parameter point of `law` (the default creep law unless said): --help,
+/// one per model::sweep_axes parameter (for the standard linear solid --l, --dh, --T,
+/// --pbar, --s), --C and --times.
+void add_point_options(boost::program_options::options_description& opts,
+                       const model::CreepLawSpec& law = model::creep_laws().front());
 
 /// --l, --dh, --pbar, --s and --C as a ContactProblem, each range-checked.
 model::ContactProblem read_problem(const boost::program_options::variables_map& vm);
 
-/// --T, the creep ratio of the standard linear solid (>= 1).
-double read_creep_ratio(const boost::program_options::variables_map& vm);
+/// The inputs of one parameter point: the contact problem and the creep law with its
+/// parameter values.
+struct PointInputs {
+  model::ContactProblem problem;
+  const model::CreepLawSpec* law = nullptr;
+  std::vector<double> law_values;  ///< in law->parameters order
+  std::unique_ptr<model::CreepLaw> creep;
+
+  /// "l = 0.75 R, dh = 0.075 R, T = 2.5, pbar = 0.06 E0/(1-nu^2), s = 2, C = 0.5": every
+  /// parameter in add_point_options' order, with its unit.
+  std::string describe() const;
+};
+
+/// The point's options (add_point_options) read and range-checked, for creep law `law`.
+PointInputs read_point_inputs(const boost::program_options::variables_map& vm,
+                              const model::CreepLawSpec& law = model::creep_laws().front());
 
 /// A list option whose values must each satisfy `in_range` (described by `range`).
 std::vector<double> read_real_list(const boost::program_options::variables_map& vm, const char* name,

@@ -8,8 +8,10 @@
 
 #include "app/command_options.hpp"
 #include "app/usage_error.hpp"
+#include "model/creep_laws.hpp"
+#include "model/creep_weighted_load.hpp"
 #include "model/single_level.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/elastic_two_level.hpp"
 #include "model/two_level.hpp"
 
 namespace po = boost::program_options;
@@ -21,11 +23,11 @@ constexpr const char* kUnits =
     "Units: lengths in R (punch size), pressures and moduli in E0* = E0/(1-nu^2), loads in\n"
     "R^2 E0*, time in T_eps (creep time).\n\nOptions";
 
+const model::Parameter& parameter(std::string_view name) { return *model::find_parameter(name); }
+
 void add_shape_options(po::options_description& opts) {
-  opts.add_options()
-      ("s", po::value<std::string>()->value_name("S"),
-       "shape exponent s of f(r) = C r^s / R^(s-1); required; an integer in [1, 32]")
-      ("C", po::value<std::string>()->value_name("C")->default_value("0.5"), "shape constant C; C > 0");
+  add_parameter_option(opts, parameter(model::kExponent));
+  add_parameter_option(opts, parameter(model::kShapeConstant));
 }
 
 std::string json_array(const std::vector<double>& values) {
@@ -44,13 +46,13 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       "touch; level 2 ignored): h(a1) along the solution curve and its slope (Fig. 9.2),\n"
       "and with --pbar and --T the radius a1(t) and h(t) (Fig. 9.3). h is the displacement\n"
       "difference between a level-1 punch tip and the square centre (eq 9.10).\n\n") + kUnits);
-  opts.add_options()
-      ("help", "print this help and exit")
-      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0");
+  const model::CreepLawSpec& law = model::creep_laws().front();
+  opts.add_options()("help", "print this help and exit");
+  add_parameter_option(opts, parameter(model::kPitch));
   add_shape_options(opts);
+  add_parameter_option(opts, parameter(model::kPressure), "with the creep law's parameters: time series");
+  for (const model::Parameter& p : law.parameters) add_parameter_option(opts, p, "with --pbar: time series");
   opts.add_options()
-      ("pbar", po::value<std::string>()->value_name("P"), "nominal pressure, in E0*; pbar > 0 (with --T: time series)")
-      ("T", po::value<std::string>()->value_name("T"), "creep ratio T_eps/T_sigma; T >= 1 (with --pbar: time series)")
       ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
        "times of the series, comma-separated, in T_eps; each >= 0")
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
@@ -61,12 +63,13 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
     out << "usage: punchsweep single-level --l L --s S [--C C] [--pbar P --T T] [options]\n\n" << opts << "\n";
     return 0;
   }
-  const double l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", positive);
+  const double l = read_parameter(vm, parameter(model::kPitch));
   const model::Shape shape = read_shape(vm);
   const double n_real = read_real(vm, "a1-points", "points of h(a1)", "an integer in [2, 100000]",
                                   [](double v) { return v >= 2 && v <= 100000 && v == std::floor(v); });
   const std::size_t n = static_cast<std::size_t>(n_real);
-  const bool series = vm.count("pbar") || vm.count("T");
+  bool series = vm.count("pbar") > 0;
+  for (const model::Parameter& p : law.parameters) series = series || vm.count(std::string(p.name)) > 0;
   const std::string format = read_choice(vm, "format", {"json", "csv"});
   const model::SingleLevel single(l, shape);
 
@@ -83,15 +86,21 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   std::vector<double> times;
   std::vector<double> a1_t;
   std::vector<double> h_t;
-  std::optional<model::StandardLinearSolid> creep;
+  std::unique_ptr<model::CreepLaw> creep;
+  std::string material;  // "T = 2.5": the law's parameters as given
   double pbar = 0.0;
   if (series) {
-    pbar = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", positive);
-    creep.emplace(read_real(vm, "T", "creep ratio", "T = T_eps/T_sigma >= 1",
-                            [](double v) { return model::creep_ratio_error(v).empty(); }));
+    pbar = read_parameter(vm, parameter(model::kPressure));
+    std::vector<double> values;
+    for (const model::Parameter& p : law.parameters) {
+      values.push_back(read_parameter(vm, p));
+      material += (material.empty() ? "" : ", ") + std::string(p.name) + " = " + json_number(values.back());
+    }
+    creep = model::make_creep_law(law, values);
     times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+    const model::CreepWeightedLoad load(*creep, pbar);
     for (const double t : times) {
-      const double X = pbar * creep->creep(t);
+      const double X = load(t);
       a1_t.push_back(single.contact_radius(X));
       h_t.push_back(single.displacement_difference(a1_t.back(), X));
     }
@@ -104,7 +113,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       out << json_number(a1_curve[i]) << ',' << json_number(h_curve[i]) << ',' << json_number(rate_curve[i]) << "\n";
     }
     if (series) {
-      out << "\n# time series at pbar0 = " << json_number(pbar) << " E0*, T = " << json_number(creep->creep_ratio())
+      out << "\n# time series at pbar0 = " << json_number(pbar) << " E0*, " << material
           << "; units: t in T_eps, a1 and h in R\nt,a1,h\n";
       for (std::size_t i = 0; i < times.size(); ++i) {
         out << json_number(times[i]) << ',' << json_number(a1_t[i]) << ',' << json_number(h_t[i]) << "\n";
@@ -115,7 +124,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   out << "{\n  \"h_of_a1\": {\n    \"a1\": " << json_array(a1_curve) << ",\n    \"h\": " << json_array(h_curve)
       << ",\n    \"dh_da1\": " << json_array(rate_curve) << "\n  }";
   if (series) {
-    const double X_inf = pbar * creep->creep_final();
+    const double X_inf = model::CreepWeightedLoad(*creep, pbar).final();
     const double a1_inf = single.contact_radius(X_inf);
     out << ",\n  \"h_inf\": " << json_number(single.displacement_difference(a1_inf, X_inf))
         << ",\n  \"series\": {\n    \"t\": " << json_array(times) << ",\n    \"a1\": " << json_array(a1_t)
@@ -129,11 +138,10 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
   po::options_description opts(std::string(
       "punchsweep elastic: the elastic two-level problem, eqs (9.12)-(9.15), with the\n"
       "nominal-pressure radii A1, A2 solved for (Table 9.1), for each modulus E.\n\n") + kUnits);
-  opts.add_options()
-      ("help", "print this help and exit")
-      ("l", po::value<std::string>()->value_name("L"), "lattice pitch l, in R; required; l > 0")
-      ("dh", po::value<std::string>()->value_name("DH"), "height difference, in R; required; dh >= 0")
-      ("pbar", po::value<std::string>()->value_name("P"), "nominal pressure, in E0*; required; pbar > 0");
+  opts.add_options()("help", "print this help and exit");
+  for (const std::string_view name : {model::kPitch, model::kHeightDifference, model::kPressure}) {
+    add_parameter_option(opts, parameter(name));
+  }
   add_shape_options(opts);
   opts.add_options()
       ("E", po::value<std::string>()->value_name("LIST")->default_value("1"),
@@ -146,10 +154,7 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
     return 0;
   }
   model::ContactProblem problem;
-  problem.l = read_real(vm, "l", "lattice pitch", "l > 0 (in R)", positive);
-  problem.dh = read_real(vm, "dh", "height difference", "dh >= 0 (in R)", [](double v) { return v >= 0.0; });
-  problem.pbar0 = read_real(vm, "pbar", "nominal pressure", "pbar > 0 (in E0*)", positive);
-  problem.shape = read_shape(vm);
+  problem = read_problem(vm);
   const std::vector<double> moduli = read_real_list(vm, "E", "E > 0 (in E0*)", positive);
   const std::string format = read_choice(vm, "format", {"json", "markdown"});
 

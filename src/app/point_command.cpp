@@ -8,7 +8,6 @@
 #include "app/point_output.hpp"
 #include "app/usage_error.hpp"
 #include "model/point_evaluation.hpp"
-#include "model/standard_linear_solid.hpp"
 
 namespace po = boost::program_options;
 
@@ -43,8 +42,7 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
   }
 
-  const model::ContactProblem problem = read_problem(vm);
-  const double T = read_creep_ratio(vm);
+  const PointInputs inputs = read_point_inputs(vm);
 
   model::EvaluationOptions options;
   options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
@@ -53,9 +51,8 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
                               : format_text == "csv" ? OutputFormat::csv
                                                      : OutputFormat::table;
 
-  const model::StandardLinearSolid creep(T);
-  const model::PointResult result = model::evaluate_point(problem, creep, options);
-  write_point(out, format, problem, creep, result);
+  const model::PointResult result = model::evaluate_point(inputs.problem, *inputs.creep, options);
+  write_point(out, format, inputs, result);
   return 0;
 }
 

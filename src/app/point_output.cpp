@@ -2,14 +2,16 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <ostream>
 #include <string>
 
-#include "app/command_options.hpp"
+#include "map/quantities.hpp"
 
 namespace punchsweep::app {
 namespace {
+
+using map::kQuantities;
+using map::QuantitySpec;
 
 std::string number(double v) { return json_number(v); }
 
@@ -22,38 +24,47 @@ std::string json_string(const std::string& text) {
   return quoted + "\"";
 }
 
-template <class Field>
-std::string json_array(const model::PointResult& result, Field field) {
+bool is_point(const QuantitySpec& q) { return q.source == map::Source::model && q.extent == map::Extent::point; }
+bool is_series(const QuantitySpec& q) { return q.source == map::Source::model && q.extent == map::Extent::series; }
+
+// A flag quantity's value as the point command names it.
+std::string flag_text(const QuantitySpec& q, const model::PointResult& r) {
+  if (q.flags == map::Flags::regime) return std::string(model::regime_name(r.regime));
+  return std::string(model::validity_name(r.validity));
+}
+
+std::string series_array(const QuantitySpec* q, const model::PointResult& r) {
   std::string text = "[";
-  for (std::size_t i = 0; i < result.series.size(); ++i) {
-    if (i > 0) text += ", ";
-    text += number(field(result.series[i]));
+  for (std::size_t i = 0; i < r.series.size(); ++i) {
+    text += (i > 0 ? ", " : "") + number(q ? q->series_value(r.series[i]) : r.series[i].t);
   }
   return text + "]";
 }
 
 void write_json(std::ostream& out, const model::PointResult& r) {
-  const std::string t_star = r.t_star ? number(*r.t_star) : "null";
-  out << "{\n"
-      << "  \"regime\": " << json_string(std::string(model::regime_name(r.regime))) << ",\n"
-      << "  \"t_star\": " << t_star << ",\n"
-      << "  \"h_0\": " << number(r.h_0) << ",\n"
-      << "  \"h_inf\": " << number(r.h_inf) << ",\n"
-      << "  \"valid\": " << (r.valid() ? "true" : "false") << ",\n"
-      << "  \"reason\": " << json_string(r.reason()) << ",\n"
-      << "  \"a1_inf\": " << number(r.a1_inf) << ",\n"
-      << "  \"a2_inf\": " << number(r.a2_inf) << ",\n"
-      << "  \"area_fraction_inf\": " << number(r.area_fraction_inf) << ",\n"
-      << "  \"series\": {\n"
-      << "    \"t\": " << json_array(r, [](const model::Snapshot& s) { return s.t; }) << ",\n"
-      << "    \"a1\": " << json_array(r, [](const model::Snapshot& s) { return s.a1; }) << ",\n"
-      << "    \"a2\": " << json_array(r, [](const model::Snapshot& s) { return s.a2; }) << ",\n"
-      << "    \"P1\": " << json_array(r, [](const model::Snapshot& s) { return s.P1; }) << ",\n"
-      << "    \"P2\": " << json_array(r, [](const model::Snapshot& s) { return s.P2; }) << ",\n"
-      << "    \"area_fraction\": "
-      << json_array(r, [](const model::Snapshot& s) { return s.area_fraction; }) << "\n"
-      << "  }\n"
-      << "}\n";
+  out << "{\n";
+  for (const QuantitySpec& q : kQuantities) {
+    if (!is_point(q)) continue;
+    if (q.flags == map::Flags::validity) {
+      out << "  \"" << q.name << "\": " << (r.valid() ? "true" : "false") << ",\n"
+          << "  \"reason\": " << json_string(r.reason()) << ",\n";
+    } else if (q.kind == map::Kind::flag) {
+      out << "  \"" << q.name << "\": " << json_string(flag_text(q, r)) << ",\n";
+    } else {
+      out << "  \"" << q.name << "\": " << number(q.value(r)) << ",\n";
+    }
+  }
+  out << "  \"series\": {\n    \"t\": " << series_array(nullptr, r);
+  for (const QuantitySpec& q : kQuantities) {
+    if (is_series(q)) out << ",\n    \"" << q.name << "\": " << series_array(&q, r);
+  }
+  out << "\n  }\n}\n";
+}
+
+// Units as people read them in the table and the CSV comments.
+std::string display_units(const QuantitySpec& q) {
+  if (q.units == "R^2 E0/(1-nu^2)") return "R^2 E0*";
+  return q.units == "1" ? std::string() : std::string(q.units);
 }
 
 std::string fixed(double v, int width, int precision) {
@@ -63,64 +74,93 @@ std::string fixed(double v, int width, int precision) {
   return buf;
 }
 
-void write_table(std::ostream& out, const model::ContactProblem& p,
-                 const model::StandardLinearSolid& creep, const model::PointResult& r) {
-  out << "punchsweep point: l = " << number(p.l) << " R, dh = " << number(p.dh)
-      << " R, T = " << number(creep.creep_ratio()) << ", pbar0 = " << number(p.pbar0)
-      << " E0*, s = " << p.shape.s << ", C = " << number(p.shape.C) << "\n"
-      << "  (units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps)\n\n"
-      << "  regime              " << model::regime_name(r.regime) << "\n"
-      << "  t_star              " << (r.t_star ? number(*r.t_star) + " T_eps" : "none (never)") << "\n"
-      << "  h_0                 " << number(r.h_0) << " R\n"
-      << "  h_inf               " << number(r.h_inf) << " R\n"
-      << "  valid               "
-      << (r.valid() ? std::string("yes")
-                    : "no (" + std::string(model::validity_name(r.validity)) + "): " + r.reason())
-      << "\n"
-      << "  A1, A2 (frozen)     " << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n"
-      << "  a1_inf              " << number(r.a1_inf) << " R\n"
-      << "  a2_inf              " << number(r.a2_inf) << " R\n"
-      << "  area_fraction_inf   " << number(r.area_fraction_inf) << "\n\n"
-      << "   t [T_eps]      a1 [R]      a2 [R]   P1 [R^2 E0*]   P2 [R^2 E0*]  area_fraction\n";
+void write_table(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
+  out << "punchsweep point: " << inputs.describe() << "\n"
+      << "  (units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps)\n\n";
+  for (const QuantitySpec& q : kQuantities) {
+    if (!is_point(q)) continue;
+    std::string name(q.name);
+    name.resize(20, ' ');
+    std::string value;
+    if (q.flags == map::Flags::validity) {
+      value = r.valid() ? "yes" : "no (" + flag_text(q, r) + "): " + r.reason();
+    } else if (q.kind == map::Kind::flag) {
+      value = flag_text(q, r);
+    } else if (!r.t_star && q.value == map::quantity_access::t_star) {
+      value = "none (never)";
+    } else {
+      value = number(q.value(r));
+      if (const std::string u = display_units(q); !u.empty()) value += " " + u;
+    }
+    out << "  " << name << value << "\n";
+    if (q.flags == map::Flags::validity) {
+      out << "  A1, A2 (frozen)     " << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n";
+    }
+  }
+  out << "\n   t [T_eps]";
+  for (const QuantitySpec& q : kQuantities) {
+    if (!is_series(q)) continue;
+    const std::string u = display_units(q);
+    std::string head = std::string(q.name) + (u.empty() ? "" : " [" + u + "]");
+    const std::size_t width = head.size() < 12 ? 12 : 15;
+    out << std::string(width - head.size(), ' ') << head;
+  }
+  out << "\n";
   for (const model::Snapshot& s : r.series) {
-    out << fixed(s.t, 12, 4) << fixed(s.a1, 12, 7) << fixed(s.a2, 12, 7) << fixed(s.P1, 15, 9)
-        << fixed(s.P2, 15, 9) << fixed(s.area_fraction, 15, 7) << "\n";
+    out << fixed(s.t, 12, 4);
+    for (const QuantitySpec& q : kQuantities) {
+      if (!is_series(q)) continue;
+      const std::string u = display_units(q);
+      const std::string head = std::string(q.name) + (u.empty() ? "" : " [" + u + "]");
+      const bool wide = head.size() >= 12;
+      out << fixed(q.series_value(s), wide ? 15 : 12, q.units == "R^2 E0/(1-nu^2)" ? 9 : 7);
+    }
+    out << "\n";
   }
 }
 
 std::string csv_number(double v) { return std::isfinite(v) ? number(v) : "nan"; }
 
-void write_csv(std::ostream& out, const model::ContactProblem& p,
-               const model::StandardLinearSolid& creep, const model::PointResult& r) {
-  out << "# punchsweep point: l = " << number(p.l) << " R, dh = " << number(p.dh)
-      << " R, T = " << number(creep.creep_ratio()) << ", pbar0 = " << number(p.pbar0)
-      << " E0*, s = " << p.shape.s << ", C = " << number(p.shape.C) << "\n"
-      << "# regime = " << model::regime_name(r.regime) << "\n"
-      << "# t_star = " << (r.t_star ? number(*r.t_star) + " T_eps" : "null (never)") << "\n"
-      << "# h_0 = " << number(r.h_0) << " R\n"
-      << "# h_inf = " << number(r.h_inf) << " R\n"
-      << "# valid = " << (r.valid() ? "true" : "false") << "\n"
-      << "# reason = " << r.reason() << "\n"
-      << "# a1_inf = " << number(r.a1_inf) << " R\n"
-      << "# a2_inf = " << number(r.a2_inf) << " R\n"
-      << "# area_fraction_inf = " << number(r.area_fraction_inf) << "\n"
-      << "# units: t in T_eps, a1 and a2 in R, P1 and P2 in R^2 E0*\n"
-      << "t,a1,a2,P1,P2,area_fraction\n";
+void write_csv(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
+  out << "# punchsweep point: " << inputs.describe() << "\n";
+  for (const QuantitySpec& q : kQuantities) {
+    if (!is_point(q)) continue;
+    if (q.flags == map::Flags::validity) {
+      out << "# " << q.name << " = " << (r.valid() ? "true" : "false") << "\n# reason = " << r.reason() << "\n";
+    } else if (q.kind == map::Kind::flag) {
+      out << "# " << q.name << " = " << flag_text(q, r) << "\n";
+    } else if (!r.t_star && q.value == map::quantity_access::t_star) {
+      out << "# " << q.name << " = null (never)\n";
+    } else {
+      const std::string u = display_units(q);
+      out << "# " << q.name << " = " << number(q.value(r)) << (u.empty() ? "" : " " + u) << "\n";
+    }
+  }
+  std::string units = "# units: t in T_eps";
+  std::string header = "t";
+  for (const QuantitySpec& q : kQuantities) {
+    if (!is_series(q)) continue;
+    header += ',';
+    header.append(q.name);
+    if (const std::string u = display_units(q); !u.empty()) units += ", " + std::string(q.name) + " in " + u;
+  }
+  out << units << "\n" << header << "\n";
   for (const model::Snapshot& s : r.series) {
-    out << csv_number(s.t) << ',' << csv_number(s.a1) << ',' << csv_number(s.a2) << ','
-        << csv_number(s.P1) << ',' << csv_number(s.P2) << ',' << csv_number(s.area_fraction)
-        << "\n";
+    out << csv_number(s.t);
+    for (const QuantitySpec& q : kQuantities) {
+      if (is_series(q)) out << ',' << csv_number(q.series_value(s));
+    }
+    out << "\n";
   }
 }
 
 }  // namespace
 
-void write_point(std::ostream& out, OutputFormat format, const model::ContactProblem& problem,
-                 const model::StandardLinearSolid& creep, const model::PointResult& result) {
+void write_point(std::ostream& out, OutputFormat format, const PointInputs& inputs, const model::PointResult& result) {
   switch (format) {
-    case OutputFormat::table: write_table(out, problem, creep, result); break;
+    case OutputFormat::table: write_table(out, inputs, result); break;
     case OutputFormat::json: write_json(out, result); break;
-    case OutputFormat::csv: write_csv(out, problem, creep, result); break;
+    case OutputFormat::csv: write_csv(out, inputs, result); break;
   }
 }
 

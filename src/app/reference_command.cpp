@@ -8,7 +8,6 @@
 
 #include "app/command_options.hpp"
 #include "app/usage_error.hpp"
-#include "model/standard_linear_solid.hpp"
 #include "reference/reference_point.hpp"
 #include "sweep/reproducible_fft.hpp"
 #include "sweep/sweep_config.hpp"
@@ -47,26 +46,23 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
            "order one grid spacing (about 1% needs a/h >= 15).\n";
     return 0;
   }
-  const model::ContactProblem problem = read_problem(vm);
-  const double T = read_creep_ratio(vm);
+  const PointInputs inputs = read_point_inputs(vm);
+  const model::ContactProblem& problem = inputs.problem;
   reference::ReferenceOptions options;
   options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
   options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
                                          [](double v) { return sweep::is_bem_grid(v); }));
   const std::string format = read_choice(vm, "format", {"json", "table"});
 
-  const model::StandardLinearSolid creep(T);
   // As in `punchsweep sweep --reference bem`, so that a point gives the same bits in both.
   sweep::use_reproducible_fft_plans();
   const auto start = std::chrono::steady_clock::now();
-  const reference::ReferenceResult r = reference::evaluate_reference_point(problem, creep, options);
+  const reference::ReferenceResult r = reference::evaluate_reference_point(problem, *inputs.creep, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string regime(model::regime_name(r.regime));
   if (format == "table") {
     char line[200];
-    out << "punchsweep reference: l = " << json_number(problem.l) << " R, dh = " << json_number(problem.dh)
-        << " R, T = " << json_number(T) << ", pbar0 = " << json_number(problem.pbar0) << " E0*, s = " << problem.shape.s
-        << ", C = " << json_number(problem.shape.C) << "; grid " << options.n << " x " << options.n << " (h = "
+    out << "punchsweep reference: " << inputs.describe() << "; grid " << options.n << " x " << options.n << " (h = "
         << json_number(r.spacing) << " R)\n  regime " << regime << ", t_star "
         << (r.t_star ? json_number(*r.t_star) + " T_eps" : "none") << ", converged " << (r.converged ? "yes" : "no")
         << ", " << r.steps << " steps, " << r.solves << " solves, " << json_number(seconds) << " s\n"

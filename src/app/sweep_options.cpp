@@ -17,9 +17,9 @@
 
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
-#include "model/shape.hpp"
-#include "model/standard_linear_solid.hpp"
-#include "sweep/axis_parser.hpp"
+#include "model/creep_laws.hpp"
+#include "model/parameters.hpp"
+#include "map/axis_parser.hpp"
 
 namespace po = boost::program_options;
 
@@ -31,93 +31,112 @@ constexpr const char* kSeeHelp = " (see punchsweep sweep --help)";
 constexpr const char* kBoolRange = "true, false, 1, 0, yes or no";
 constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output", "run", "reference"};
 
-// Every config key; the order is that of the help text and of resolved_text.
-enum Key : std::size_t {
-  kGridL, kGridDh, kGridT, kGridPbar, kGridS,
-  kModelC, kModelCreepLaw, kTimeTimes, kOutputFile, kOutputQuantities,
-  kRunChunk, kRunQuiet, kRunResume, kRunOverwrite,
-  kReferenceMethod, kReferenceGrid, kReferenceSample, kReferenceSeed, kKeyCount
+// The config keys that are not grid axes; the order is that of the help text and of
+// resolved_text, after the [grid] keys.
+enum class Fixed {
+  none,  // a [grid] key: a model parameter's axis
+  model_C, model_creep_law, time_times, output_file, output_quantities,
+  run_chunk, run_quiet, run_resume, run_overwrite,
+  reference_method, reference_grid, reference_sample, reference_seed
 };
 
 struct KeySpec {
-  const char* section;
-  const char* name;
-  const char* value_name;
-  const char* default_text;
-  const char* meaning;  // with the unit
-  const char* range;    // as printed after "valid range: "
+  std::string section;
+  std::string name;
+  std::string value_name;
+  std::string default_text;
+  std::string meaning;  // with the unit
+  std::string range;    // as printed after "valid range: "
+  Fixed fixed = Fixed::none;
+  const model::Parameter* parameter = nullptr;  // the axis's, or model.C's
 };
 
-constexpr std::array<KeySpec, kKeyCount> kKeys{{
-    {"grid", "l", "AXIS", "linspace(0.5, 1.25, 7)", "lattice pitch l, in R", "l > 0 (in R)"},
-    {"grid", "dh", "AXIS", "linspace(0.01, 0.12, 23)", "height difference dh of the two punch levels, in R",
-     "dh >= 0 (in R)"},
-    {"grid", "T", "AXIS", "linspace(2, 10, 9)",
-     "creep ratio T = T_eps/T_sigma of the standard linear solid (dimensionless; T = 1 is elastic)",
-     "T >= 1 (T = T_eps/T_sigma)"},
-    {"grid", "pbar", "AXIS", "logspace(0.005, 0.08, 24)", "constant nominal pressure pbar0, in E0* = E0/(1-nu^2)",
-     "pbar > 0 (in E0* = E0/(1-nu^2))"},
-    {"grid", "s", "AXIS", "1, 2, 3", "shape exponent s of f(r) = C r^s / R^(s-1) (1 cone, 2 paraboloid)",
-     "integers in [1, 32]"},
-    {"model", "C", "C", "0.5", "shape constant C of f(r) (dimensionless; sphere: s = 2, C = 0.5)", "C > 0"},
-    {"model", "creep_law", "NAME", "standard_linear_solid", "creep law of the half-space",
-     "standard_linear_solid (alias sls)"},
-    {"time", "times", "AXIS", "0, 0.5, 1, 2, 5", "snapshot times of the stored time series, in T_eps",
-     "each t >= 0 and finite, strictly increasing (in T_eps)"},
-    {"output", "file", "FILE", "regime_map.h5", "the HDF5 regime map to write",
-     "a non-empty file name without '#' or line breaks"},
-    {"output", "quantities", "WHAT", "full",
-     "what the map stores: regime (regime, t*, validity, long-term state) or full (also the time series "
-     "at time.times)",
-     "regime or full"},
-    {"run", "chunk", "N", "4096", "target number of grid points per tile and per HDF5 chunk",
-     "an integer >= 1"},
-    {"run", "quiet", "BOOL", "false", "no progress output", kBoolRange},
-    {"run", "resume", "BOOL", "false",
-     "continue an interrupted sweep into the existing partial map; refused if its grid, model or reference "
-     "differ",
-     kBoolRange},
-    {"run", "overwrite", "BOOL", "false", "replace an existing map at output.file", kBoolRange},
-    {"reference", "method", "METHOD", "none",
-     "reference solver evaluated beside the model: none, or bem (the periodic boundary-element solver of "
-     "`punchsweep reference`; adds the bem_* variables)",
-     "none or bem"},
-    {"reference", "grid", "N", "128",
-     "BEM nodes per side N of the l x l cell (spacing l/N; the cost of a point grows faster than N^2, "
-     "--dry-run measures it)",
-     "an even integer in [16, 2048]"},
-    {"reference", "sample", "K", "all",
-     "the grid points that get the reference: all, or K distinct points drawn uniformly at random (a pure "
-     "function of the grid's shape, K and reference.seed); the others read not_computed",
-     "all, or an integer in [1, the grid's point count]"},
-    {"reference", "seed", "SEED", "1", "seed of the random sample of reference.sample = K",
-     "an integer in [0, 9223372036854775807]"},
-}};
+// Every key: the [grid] axes of every creep law (the default law's axes first, in their
+// order: model::sweep_axes), then the fixed keys. Declared by the model's parameters.
+std::vector<KeySpec> make_keys() {
+  std::vector<KeySpec> keys;
+  const auto add_axis = [&](const model::Parameter* p) {
+    for (const KeySpec& k : keys) {
+      if (k.parameter == p) return;
+    }
+    keys.push_back({"grid", std::string(p->name), "AXIS", std::string(p->sweep_default), std::string(p->meaning),
+                    std::string(p->range), Fixed::none, p});
+  };
+  for (const model::CreepLawSpec& law : model::creep_laws()) {
+    for (const model::Parameter* p : model::sweep_axes(law.parameters)) add_axis(p);
+  }
+  const model::Parameter& C = *model::find_parameter(model::kShapeConstant);
+  keys.push_back({"model", "C", "C", std::string(C.point_default), std::string(C.meaning), std::string(C.range),
+                  Fixed::model_C, &C});
+  keys.push_back({"model", "creep_law", "NAME", std::string(model::creep_laws().front().name),
+                  "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
+                  Fixed::model_creep_law});
+  keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5", "snapshot times of the stored time series, in T_eps",
+                  "each t >= 0 and finite, strictly increasing (in T_eps)", Fixed::time_times});
+  keys.push_back({"output", "file", "FILE", "regime_map.h5", "the HDF5 regime map to write",
+                  "a non-empty file name without '#' or line breaks", Fixed::output_file});
+  keys.push_back({"output", "quantities", "WHAT", "full",
+                  "what the map stores: regime (regime, t*, validity, long-term state) or full (also the time "
+                  "series at time.times)",
+                  "regime or full", Fixed::output_quantities});
+  keys.push_back({"run", "chunk", "N", "4096", "target number of grid points per tile and per HDF5 chunk",
+                  "an integer >= 1", Fixed::run_chunk});
+  keys.push_back({"run", "quiet", "BOOL", "false", "no progress output", kBoolRange, Fixed::run_quiet});
+  keys.push_back({"run", "resume", "BOOL", "false",
+                  "continue an interrupted sweep into the existing partial map; refused if its grid, model or "
+                  "reference differ",
+                  kBoolRange, Fixed::run_resume});
+  keys.push_back({"run", "overwrite", "BOOL", "false", "replace an existing map at output.file", kBoolRange,
+                  Fixed::run_overwrite});
+  keys.push_back({"reference", "method", "METHOD", "none",
+                  "reference solver evaluated beside the model: none, or bem (the periodic boundary-element solver "
+                  "of `punchsweep reference`; adds the bem_* variables)",
+                  "none or bem", Fixed::reference_method});
+  keys.push_back({"reference", "grid", "N", "128",
+                  "BEM nodes per side N of the l x l cell (spacing l/N; the cost of a point grows faster than N^2, "
+                  "--dry-run measures it)",
+                  "an even integer in [16, 2048]", Fixed::reference_grid});
+  keys.push_back({"reference", "sample", "K", "all",
+                  "the grid points that get the reference: all, or K distinct points drawn uniformly at random (a "
+                  "pure function of the grid's shape, K and reference.seed); the others read not_computed",
+                  "all, or an integer in [1, the grid's point count]", Fixed::reference_sample});
+  keys.push_back({"reference", "seed", "SEED", "1", "seed of the random sample of reference.sample = K",
+                  "an integer in [0, 9223372036854775807]", Fixed::reference_seed});
+  return keys;
+}
 
-// The [grid] keys come first, in the order of the grid's axes.
-static_assert(std::size_t{kGridL} == sweep::kAxisL && std::size_t{kGridDh} == sweep::kAxisDh &&
-              std::size_t{kGridT} == sweep::kAxisT && std::size_t{kGridPbar} == sweep::kAxisPbar &&
-              std::size_t{kGridS} == sweep::kAxisS);
+const std::vector<KeySpec>& keys() {
+  static const std::vector<KeySpec> kKeys = make_keys();
+  return kKeys;
+}
+
+std::size_t key_index(Fixed fixed) {
+  for (std::size_t k = 0; k < keys().size(); ++k) {
+    if (keys()[k].fixed == fixed) return k;
+  }
+  return keys().size();
+}
 
 // Command-line shortcuts for the keys one sets most often.
 struct Shortcut {
   const char* option;
-  Key key;
+  Fixed key;
   bool takes_value;  // false: a flag that sets the key to true
 };
 
 constexpr std::array<Shortcut, 8> kShortcuts{{
-    {"output", kOutputFile, true},
-    {"quantities", kOutputQuantities, true},
-    {"chunk", kRunChunk, true},
-    {"resume", kRunResume, false},
-    {"overwrite", kRunOverwrite, false},
-    {"quiet", kRunQuiet, false},
-    {"reference", kReferenceMethod, true},
-    {"bem-grid", kReferenceGrid, true},
+    {"output", Fixed::output_file, true},
+    {"quantities", Fixed::output_quantities, true},
+    {"chunk", Fixed::run_chunk, true},
+    {"resume", Fixed::run_resume, false},
+    {"overwrite", Fixed::run_overwrite, false},
+    {"quiet", Fixed::run_quiet, false},
+    {"reference", Fixed::reference_method, true},
+    {"bem-grid", Fixed::reference_grid, true},
 }};
 
-std::string dotted(Key key) { return std::string(kKeys[key].section) + "." + kKeys[key].name; }
+std::string dotted(const KeySpec& key) { return key.section + "." + key.name; }
+std::string dotted(Fixed fixed) { return dotted(keys()[key_index(fixed)]); }
 
 std::string trim(const std::string& text) {
   const std::size_t first = text.find_first_not_of(kWhitespace);
@@ -137,7 +156,7 @@ std::string join(const std::vector<std::string>& lines, const char* separator) {
 
 std::string section_keys(const std::string& section) {
   std::vector<std::string> names;
-  for (const KeySpec& spec : kKeys) {
+  for (const KeySpec& spec : keys()) {
     if (section == spec.section) names.emplace_back(spec.name);
   }
   return join(names, ", ");
@@ -151,19 +170,18 @@ bool is_section(const std::string& name) {
 }
 
 const KeySpec* find_key(const std::string& key) {
-  for (std::size_t k = 0; k < kKeyCount; ++k) {
-    if (key == dotted(static_cast<Key>(k))) return &kKeys[k];
+  for (const KeySpec& spec : keys()) {
+    if (key == dotted(spec)) return &spec;
   }
   return nullptr;
 }
 
 po::options_description key_options(const char* caption) {
   po::options_description opts(caption);
-  for (std::size_t k = 0; k < kKeyCount; ++k) {
-    const KeySpec& spec = kKeys[k];
+  for (const KeySpec& spec : keys()) {
     const std::string description =
         std::string(spec.meaning) + "; " + spec.range + "; default " + spec.default_text;
-    opts.add_options()(dotted(static_cast<Key>(k)).c_str(), po::value<std::string>()->value_name(spec.value_name),
+    opts.add_options()(dotted(spec).c_str(), po::value<std::string>()->value_name(spec.value_name),
                        description.c_str());
   }
   return opts;
@@ -301,7 +319,7 @@ po::variables_map parse_command_line(const std::vector<std::string>& args, const
 }
 
 // Each key's text and where it came from: command line > config file > default.
-std::array<Setting, kKeyCount> resolve_settings(const po::variables_map& cli, const std::string& config_path) {
+std::vector<Setting> resolve_settings(const po::variables_map& cli, const std::string& config_path) {
   std::vector<std::string> conflicts;
   for (const Shortcut& shortcut : kShortcuts) {
     const std::string key = dotted(shortcut.key);
@@ -312,22 +330,22 @@ std::array<Setting, kKeyCount> resolve_settings(const po::variables_map& cli, co
   }
   if (!conflicts.empty()) throw UsageError(join(conflicts, "\n"));
 
-  std::array<Setting, kKeyCount> settings;
-  for (std::size_t k = 0; k < kKeyCount; ++k) settings[k] = {kKeys[k].default_text, Source::default_value};
+  std::vector<Setting> settings(keys().size());
+  for (std::size_t k = 0; k < keys().size(); ++k) settings[k] = {keys()[k].default_text, Source::default_value};
   if (cli.count("config")) {
     const std::map<std::string, std::string> file_values = read_config_file(config_path);
-    for (std::size_t k = 0; k < kKeyCount; ++k) {
-      const auto it = file_values.find(dotted(static_cast<Key>(k)));
+    for (std::size_t k = 0; k < keys().size(); ++k) {
+      const auto it = file_values.find(dotted(keys()[k]));
       if (it != file_values.end()) settings[k] = {trim(it->second), Source::file};
     }
   }
-  for (std::size_t k = 0; k < kKeyCount; ++k) {
-    const std::string key = dotted(static_cast<Key>(k));
+  for (std::size_t k = 0; k < keys().size(); ++k) {
+    const std::string key = dotted(keys()[k]);
     if (cli.count(key)) settings[k] = {trim(cli[key].as<std::string>()), Source::command_line};
   }
   for (const Shortcut& shortcut : kShortcuts) {
     if (!cli.count(shortcut.option)) continue;
-    settings[shortcut.key] = {shortcut.takes_value ? trim(cli[shortcut.option].as<std::string>()) : "true",
+    settings[key_index(shortcut.key)] = {shortcut.takes_value ? trim(cli[shortcut.option].as<std::string>()) : "true",
                               Source::command_line};
   }
   return settings;
@@ -335,16 +353,16 @@ std::array<Setting, kKeyCount> resolve_settings(const po::variables_map& cli, co
 
 std::string listed(const std::vector<double>& values) {
   constexpr std::size_t kShown = 5;
-  if (values.size() <= kShown) return sweep::format_axis_values(values);
-  return sweep::format_axis_values({values.begin(), values.begin() + kShown}) + ", ... (" +
+  if (values.size() <= kShown) return map::format_axis_values(values);
+  return map::format_axis_values({values.begin(), values.begin() + kShown}) + ", ... (" +
          std::to_string(values.size()) + " in all)";
 }
 
 // Empty, or why `text` is not an axis whose values all pass `in_range`.
 template <class InRange>
-std::string check_axis(const std::string& text, bool integers, InRange in_range, sweep::Axis& axis) {
+std::string check_axis(const std::string& text, bool integers, InRange in_range, map::Axis& axis) {
   try {
-    axis = sweep::parse_axis(text, integers);
+    axis = map::parse_axis(text, integers);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -371,7 +389,7 @@ std::string check_bool(const std::string& text, bool& value) {
 std::string check_chunk(const std::string& text, std::size_t& chunk) {
   int value = 0;
   try {
-    value = parse_integer(text, dotted(kRunChunk));
+    value = parse_integer(text, dotted(Fixed::run_chunk));
   } catch (const UsageError&) {
     const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
     return digits ? "value " + text + " is too large (at most " + std::to_string(std::numeric_limits<int>::max()) + ")"
@@ -422,83 +440,72 @@ std::string check_sample(const std::string& text, std::optional<std::uint64_t>& 
 }
 
 // Fills `config` from the settings; returns one line per bad value.
-std::vector<std::string> apply_settings(const std::array<Setting, kKeyCount>& settings, sweep::SweepConfig& config) {
+std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sweep::SweepConfig& config) {
   std::vector<std::string> problems;
-  for (std::size_t k = 0; k < kKeyCount; ++k) {
-    const Key key = static_cast<Key>(k);
+  std::vector<map::Axis> axes(keys().size());  // by key; [grid] keys only
+  for (std::size_t k = 0; k < keys().size(); ++k) {
+    const KeySpec& spec = keys()[k];
     const std::string& text = settings[k].text;
     std::string problem;
     if (text.find_first_of("#\r\n") != std::string::npos) {
       // A config file could not hold it, so resolved_text would not read back.
       problem = "it contains '#' or a line break, which a config file cannot hold";
     } else {
-      switch (key) {
-        case kGridL:
-          problem = check_axis(text, false, [](double v) { return v > 0.0; }, config.grid.axes[sweep::kAxisL]);
-          break;
-        case kGridDh:
-          problem = check_axis(text, false, [](double v) { return v >= 0.0; }, config.grid.axes[sweep::kAxisDh]);
-          break;
-        case kGridT:
-          problem = check_axis(text, false, [](double v) { return model::creep_ratio_error(v).empty(); },
-                               config.grid.axes[sweep::kAxisT]);
-          break;
-        case kGridPbar:
-          problem = check_axis(text, false, [](double v) { return v > 0.0; }, config.grid.axes[sweep::kAxisPbar]);
-          break;
-        case kGridS:
+      switch (spec.fixed) {
+        case Fixed::none:
           problem = check_axis(
-              text, true,
-              [](double v) { return v >= model::Shape::kMinExponent && v <= model::Shape::kMaxExponent; },
-              config.grid.axes[sweep::kAxisS]);
+              text, spec.parameter->integer, [&](double v) { return spec.parameter->in_range(v); }, axes[k]);
+          axes[k].name = spec.name;
           break;
-        case kModelC:
+        case Fixed::model_C:
           try {
-            config.C = parse_real(text, dotted(key));
-            if (!(config.C > 0.0)) problem = "value " + sweep::format_axis_value(config.C) + " is outside its range";
+            config.C = parse_real(text, dotted(spec));
+            if (!spec.parameter->admits(config.C)) {
+              problem = "value " + map::format_axis_value(config.C) + " is outside its range";
+            }
           } catch (const UsageError&) {
             problem = "'" + text + "' is not a finite number";
           }
           break;
-        case kModelCreepLaw:
-          if (text == "standard_linear_solid" || text == "sls") {
-            config.creep_law = "standard_linear_solid";
+        case Fixed::model_creep_law:
+          if (const model::CreepLawSpec* law = model::find_creep_law(text)) {
+            config.creep_law = law;
           } else {
             problem = "'" + text + "' is not a known creep law";
           }
           break;
-        case kTimeTimes: {
-          sweep::Axis times;
+        case Fixed::time_times: {
+          map::Axis times;
           problem = check_axis(text, false, [](double t) { return t >= 0.0; }, times);
           config.times = times.values;
           break;
         }
-        case kOutputFile:
+        case Fixed::output_file:
           if (text.empty()) problem = "the file name is empty";
           config.output = text;
           break;
-        case kOutputQuantities:
+        case Fixed::output_quantities:
           if (text == "regime") {
-            config.quantities = sweep::Quantities::regime;
+            config.quantities = map::Quantities::regime;
           } else if (text == "full") {
-            config.quantities = sweep::Quantities::full;
+            config.quantities = map::Quantities::full;
           } else {
             problem = "'" + text + "' is not one of regime, full";
           }
           break;
-        case kRunChunk:
+        case Fixed::run_chunk:
           problem = check_chunk(text, config.chunk);
           break;
-        case kRunQuiet:
+        case Fixed::run_quiet:
           problem = check_bool(text, config.quiet);
           break;
-        case kRunResume:
+        case Fixed::run_resume:
           problem = check_bool(text, config.resume);
           break;
-        case kRunOverwrite:
+        case Fixed::run_overwrite:
           problem = check_bool(text, config.overwrite);
           break;
-        case kReferenceMethod:
+        case Fixed::reference_method:
           if (text == "none") {
             config.reference.method = sweep::ReferenceMethod::none;
           } else if (text == "bem") {
@@ -507,39 +514,55 @@ std::vector<std::string> apply_settings(const std::array<Setting, kKeyCount>& se
             problem = "'" + text + "' is not one of none, bem";
           }
           break;
-        case kReferenceGrid:
+        case Fixed::reference_grid:
           problem = check_bem_grid(text, config.reference.grid);
           break;
-        case kReferenceSample:
+        case Fixed::reference_sample:
           problem = check_sample(text, config.reference.sample);
           break;
-        case kReferenceSeed:
+        case Fixed::reference_seed:
           // The map stores the seed as an int64 attribute.
           problem = check_whole(text, std::numeric_limits<std::int64_t>::max(), config.reference.seed);
-          break;
-        case kKeyCount:
           break;
       }
     }
     if (!problem.empty()) {
-      problems.push_back(dotted(key) + " = " + (text.empty() ? "''" : text) + ": " + problem +
-                         "; valid range: " + kKeys[k].range);
+      problems.push_back(dotted(spec) + " = " + (text.empty() ? "''" : text) + ": " + problem +
+                         "; valid range: " + spec.range);
+    }
+  }
+  // The grid: the creep law's sweep axes, in their order. A [grid] key set for a parameter
+  // the law does not have is refused.
+  config.grid.axes.clear();
+  const std::vector<const model::Parameter*> wanted = model::sweep_axes(config.creep_law->parameters);
+  for (const model::Parameter* p : wanted) {
+    for (std::size_t k = 0; k < keys().size(); ++k) {
+      if (keys()[k].parameter == p && keys()[k].fixed == Fixed::none) config.grid.axes.push_back(axes[k]);
+    }
+  }
+  for (std::size_t k = 0; k < keys().size(); ++k) {
+    const KeySpec& spec = keys()[k];
+    if (spec.fixed != Fixed::none || settings[k].source == Source::default_value) continue;
+    if (std::find(wanted.begin(), wanted.end(), spec.parameter) == wanted.end()) {
+      problems.push_back(dotted(spec) + " = " + settings[k].text + ": the creep law " +
+                         std::string(config.creep_law->name) + " has no parameter " + spec.name +
+                         "; valid range: the axes of that law's grid");
     }
   }
   return problems;
 }
 
 // Grid::points() must not wrap around; empty when it does not.
-std::string grid_size_problem(const sweep::Grid& grid) {
+std::string grid_size_problem(const map::Grid& grid) {
   constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
   std::size_t points = 1;
   bool overflows = false;
   std::string shape;
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    const std::size_t n = grid.axes[a].values.size();
+  for (const map::Axis& axis : grid.axes) {
+    const std::size_t n = axis.values.size();
     overflows = overflows || points > kMax / n;
     points = overflows ? points : points * n;
-    shape += (a > 0 ? " x " : "") + std::to_string(n);
+    shape += (shape.empty() ? "" : " x ") + std::to_string(n);
   }
   if (!overflows) return {};
   return "grid = " + shape + " points: their number does not fit in 64 bits; valid range: at most " +
@@ -547,13 +570,13 @@ std::string grid_size_problem(const sweep::Grid& grid) {
 }
 
 // The canonical text of a [reference] key, as resolved_text and identity write it.
-std::string reference_value(Key key, const sweep::ReferenceConfig& reference) {
+std::string reference_value(Fixed key, const sweep::ReferenceConfig& reference) {
   switch (key) {
-    case kReferenceMethod:
+    case Fixed::reference_method:
       return reference.on() ? "bem" : "none";
-    case kReferenceGrid:
+    case Fixed::reference_grid:
       return std::to_string(reference.grid);
-    case kReferenceSample:
+    case Fixed::reference_sample:
       return reference.sample ? std::to_string(*reference.sample) : "all";
     default:
       return std::to_string(reference.seed);
@@ -564,47 +587,49 @@ std::string reference_value(Key key, const sweep::ReferenceConfig& reference) {
 std::string sample_size_problem(const sweep::SweepConfig& config, const std::string& text) {
   const std::size_t points = config.grid.points();
   if (!config.reference.sample || *config.reference.sample <= points) return {};
-  return dotted(kReferenceSample) + " = " + text + ": value " + text + " is more than the grid's " +
+  return dotted(Fixed::reference_sample) + " = " + text + ": value " + text + " is more than the grid's " +
          std::to_string(points) + (points == 1 ? " point" : " points") + "; valid range: all, or an integer in [1, " +
          std::to_string(points) + "] (the grid's point count)";
 }
 
 // The final value of each key as it goes into resolved_text: axes keep their given form
 // (linspace stays readable), the rest are canonical.
-std::string resolved_value(Key key, const std::string& text, const sweep::SweepConfig& config) {
+std::string resolved_value(Fixed key, const std::string& text, const sweep::SweepConfig& config) {
   switch (key) {
-    case kModelC:
-      return sweep::format_axis_value(config.C);
-    case kModelCreepLaw:
-      return config.creep_law;
-    case kRunChunk:
+    case Fixed::model_C:
+      return map::format_axis_value(config.C);
+    case Fixed::model_creep_law:
+      return std::string(config.creep_law->name);
+    case Fixed::run_chunk:
       return std::to_string(config.chunk);
-    case kRunQuiet:
+    case Fixed::run_quiet:
       return config.quiet ? "true" : "false";
-    case kRunResume:
+    case Fixed::run_resume:
       return config.resume ? "true" : "false";
-    case kRunOverwrite:
+    case Fixed::run_overwrite:
       return config.overwrite ? "true" : "false";
-    case kReferenceMethod:
-    case kReferenceGrid:
-    case kReferenceSample:
-    case kReferenceSeed:
+    case Fixed::reference_method:
+    case Fixed::reference_grid:
+    case Fixed::reference_sample:
+    case Fixed::reference_seed:
       return reference_value(key, config.reference);
     default:
       return text;
   }
 }
 
-std::string resolved_text(const std::array<Setting, kKeyCount>& settings, const sweep::SweepConfig& config) {
+std::string resolved_text(const std::vector<Setting>& settings, const sweep::SweepConfig& config) {
   std::string text =
       "# punchsweep sweep: the resolved configuration (command line > config file > defaults).\n"
       "# Every key has its final value; the comment above it says where the value came from.\n";
-  const char* section = "";
-  for (std::size_t k = 0; k < kKeyCount; ++k) {
-    const KeySpec& spec = kKeys[k];
-    if (std::string(section) != spec.section) {
+  std::string section;
+  for (std::size_t k = 0; k < keys().size(); ++k) {
+    const KeySpec& spec = keys()[k];
+    // A [grid] key of another creep law's parameter is no axis of this map.
+    if (spec.fixed == Fixed::none && config.grid.find(spec.name) == config.grid.rank()) continue;
+    if (section != spec.section) {
       section = spec.section;
-      text += std::string("\n[") + section + "]\n";
+      text += "\n[" + section + "]\n";
     }
     switch (settings[k].source) {
       case Source::default_value:
@@ -617,24 +642,24 @@ std::string resolved_text(const std::array<Setting, kKeyCount>& settings, const 
         text += "# from the command line\n";
         break;
     }
-    text += std::string(spec.name) + " = " + resolved_value(static_cast<Key>(k), settings[k].text, config) + "\n";
+    text += spec.name + " = " + resolved_value(spec.fixed, settings[k].text, config) + "\n";
   }
   return text;
 }
 
 std::vector<std::string> identity(const sweep::SweepConfig& config) {
   std::vector<std::string> lines;
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    lines.push_back(std::string("grid.") + sweep::kAxisNames[a] + " = " +
-                    sweep::format_axis_values(config.grid.axes[a].values));
+  for (const map::Axis& axis : config.grid.axes) {
+    lines.push_back("grid." + axis.name + " = " + map::format_axis_values(axis.values));
   }
-  lines.push_back("model.C = " + sweep::format_axis_value(config.C));
-  lines.push_back("model.creep_law = " + config.creep_law);
-  lines.push_back("time.times = " + sweep::format_axis_values(config.times));
+  lines.push_back("model.C = " + map::format_axis_value(config.C));
+  lines.push_back("model.creep_law = " + std::string(config.creep_law->name));
+  lines.push_back("time.times = " + map::format_axis_values(config.times));
   lines.push_back(std::string("output.quantities = ") +
-                  (config.quantities == sweep::Quantities::full ? "full" : "regime"));
+                  (config.quantities == map::Quantities::full ? "full" : "regime"));
   lines.push_back("run.chunk = " + std::to_string(config.chunk));
-  for (const Key key : {kReferenceMethod, kReferenceGrid, kReferenceSample, kReferenceSeed}) {
+  for (const Fixed key : {Fixed::reference_method, Fixed::reference_grid, Fixed::reference_sample,
+                          Fixed::reference_seed}) {
     lines.push_back(dotted(key) + " = " + reference_value(key, config.reference));
   }
   return lines;
@@ -646,7 +671,8 @@ void write_help(std::ostream& out, const po::options_description& opts) {
          "                        [--reference none|bem] [--bem-grid N]\n"
          "                        [--SECTION.KEY VALUE ...]\n\n"
          "punchsweep sweep: the regime map (immediate, delayed, never), t* and the contact state\n"
-         "at every point of a 5-D grid over (l, dh, T, pbar, s), written to one HDF5 file.\n\n"
+         "at every point of a grid over l, dh, pbar, s and the creep law's parameters (for the\n"
+         "standard linear solid: l, dh, T, pbar, s), written to one HDF5 file.\n\n"
          "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), time in T_eps\n"
          "(creep time); T = T_eps/T_sigma, s and C are dimensionless.\n\n"
       << opts << "\n"
@@ -694,22 +720,22 @@ void write_help(std::ostream& out, const po::options_description& opts) {
          "  logspace(a, b, n)   n values geometrically spaced from a to b, both included\n"
          "                      (a and b are the values, not exponents; a, b > 0)\n"
          "  n is an integer in [1, "
-      << sweep::kMaxAxisCount
+      << map::kMaxAxisCount
       << "]; n = 1 needs a == b. s takes integers only.\n"
          "  Generated values are rounded to 15 significant digits, so that\n"
          "  linspace(0.5, 1.25, 16) equals the list 0.5, 0.55, 0.6, ..., 1.25.\n\n"
          "Embedded default grid (without --config, and for [grid] keys a file leaves out):\n";
   std::size_t points = 1;
   std::string product;
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    const sweep::Axis axis = sweep::parse_axis(kKeys[a].default_text, a == sweep::kAxisS);
-    std::string line = "  " + std::string(sweep::kAxisNames[a]);
+  for (const model::Parameter* p : model::sweep_axes(model::creep_laws().front().parameters)) {
+    const map::Axis axis = map::parse_axis(std::string(p->sweep_default), p->integer);
+    std::string line = "  " + std::string(p->name);
     line.resize(7, ' ');
-    line += std::string("= ") + kKeys[a].default_text;
+    line += "= " + std::string(p->sweep_default);
     line.resize(38, ' ');
     out << line << axis.values.size() << " values\n";
     points *= axis.values.size();
-    product += (a > 0 ? " x " : "") + std::to_string(axis.values.size());
+    product += (product.empty() ? "" : " x ") + std::to_string(axis.values.size());
   }
   out << "  " << product << " = " << points << " points\n\n"
       << "Examples:\n"
@@ -738,13 +764,13 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   sweep::SweepConfig config;
   config.config_path = cli.count("config") ? cli["config"].as<std::string>() : "";
   config.dry_run = cli.count("dry-run") > 0;
-  const std::array<Setting, kKeyCount> settings = resolve_settings(cli, config.config_path);
+  const std::vector<Setting> settings = resolve_settings(cli, config.config_path);
   std::vector<std::string> problems = apply_settings(settings, config);
   if (problems.empty()) {
     if (std::string problem = grid_size_problem(config.grid); !problem.empty()) problems.push_back(problem);
   }
   if (problems.empty()) {
-    if (std::string problem = sample_size_problem(config, settings[kReferenceSample].text); !problem.empty()) {
+    if (std::string problem = sample_size_problem(config, settings[key_index(Fixed::reference_sample)].text); !problem.empty()) {
       problems.push_back(problem);
     }
   }
@@ -753,41 +779,6 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   config.resolved_text = resolved_text(settings, config);
   config.identity = identity(config);
   return config;
-}
-
-std::vector<std::string> identity_differences(const std::vector<std::string>& existing,
-                                              const std::vector<std::string>& requested) {
-  // Key order: as the existing map lists them, then keys only this run has.
-  const auto split = [](const std::vector<std::string>& lines, std::vector<std::string>& order) {
-    std::map<std::string, std::string> values;
-    for (const std::string& line : lines) {
-      const std::size_t equals = line.find('=');
-      const std::string key = trim(line.substr(0, equals));
-      const std::string value = equals == std::string::npos ? std::string() : trim(line.substr(equals + 1));
-      if (values.emplace(key, value).second && std::find(order.begin(), order.end(), key) == order.end()) {
-        order.push_back(key);
-      }
-    }
-    return values;
-  };
-  std::vector<std::string> order;
-  const std::map<std::string, std::string> old_values = split(existing, order);
-  const std::map<std::string, std::string> new_values = split(requested, order);
-
-  std::vector<std::string> differences;
-  for (const std::string& key : order) {
-    const auto old_it = old_values.find(key);
-    const auto new_it = new_values.find(key);
-    if (old_it == old_values.end()) {
-      differences.push_back(key + ": the existing map does not record it; this run asks for " + new_it->second);
-    } else if (new_it == new_values.end()) {
-      differences.push_back(key + ": the existing map has " + old_it->second + "; this run does not set it");
-    } else if (old_it->second != new_it->second) {
-      differences.push_back(key + ": the existing map has " + old_it->second + "; this run asks for " +
-                            new_it->second);
-    }
-  }
-  return differences;
 }
 
 }  // namespace punchsweep::app

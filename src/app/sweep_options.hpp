@@ -18,10 +18,4 @@ namespace punchsweep::app {
 sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std::ostream& help_out,
                                        bool* help_shown);
 
-/// One sentence per key whose identity line differs between an existing map and this
-/// run, e.g. "grid.T: the existing map has 2, 5, 10; this run asks for 2, 5". Empty when
-/// the two describe the same map. Lines are "section.key = value", as in SweepConfig::identity.
-std::vector<std::string> identity_differences(const std::vector<std::string>& existing,
-                                              const std::vector<std::string>& requested);
-
 }  // namespace punchsweep::app

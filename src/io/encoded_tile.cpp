@@ -10,7 +10,7 @@ namespace punchsweep::io {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x54455350;  // "PSET" read as little-endian bytes
-constexpr std::uint32_t kVersion = 2;  // 2: BEM reference counts in the header
+constexpr std::uint32_t kVersion = 3;  // 2: BEM reference counts in the header; 3: chunks in map::kQuantities order
 constexpr std::size_t kHeaderSize = 2 * sizeof(std::uint32_t) + (2 + 3 + 4 + 3 + 1 + 1) * sizeof(std::uint64_t);
 
 /// Appends raw bytes at a moving cursor; memcpy keeps the buffer free of alignment demands.

@@ -34,7 +34,7 @@ struct EncodedTile {
 /// Flat byte form of an EncodedTile, shared by the MPI result messages and the resume
 /// journal. Layout (native endianness: every rank of one job runs on one architecture, and
 /// the chunks are little-endian anyway, see TileEncoder): a 120-byte header {u32 magic
-/// "PSET", u32 version (2), u64 tile index, u64 points, u64 x 3 regime counts, u64 x 4
+/// "PSET", u32 version (3), u64 tile index, u64 points, u64 x 3 regime counts, u64 x 4
 /// validity counts, u64 x 3 BEM regime counts, u64 BEM agreeing count, u64 chunk count},
 /// then u64 byte length per chunk, then the chunks' bytes.
 std::vector<std::byte> pack_encoded_tile(const EncodedTile& tile);

@@ -7,12 +7,17 @@ namespace punchsweep::io {
 
 void require_valid(const MapLayout& layout) {
   const auto shape = layout.grid.shape();
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+  if (shape.empty()) throw std::invalid_argument("regime map: the grid has no axes");
+  if (layout.chunk.size() != shape.size()) {
+    throw std::invalid_argument("regime map: the chunk shape has " + std::to_string(layout.chunk.size()) +
+                                " lengths for " + std::to_string(shape.size()) + " axes");
+  }
+  for (std::size_t a = 0; a < shape.size(); ++a) {
     if (shape[a] == 0)
-      throw std::invalid_argument(std::string("regime map: axis ") + sweep::kAxisNames[a] + " is empty");
+      throw std::invalid_argument("regime map: axis " + layout.grid.axes[a].name + " is empty");
     if (layout.chunk[a] < 1 || layout.chunk[a] > shape[a]) {
       throw std::invalid_argument(std::string("regime map: chunk length ") + std::to_string(layout.chunk[a]) +
-                                  " on axis " + sweep::kAxisNames[a] + " is outside [1, " +
+                                  " on axis " + layout.grid.axes[a].name + " is outside [1, " +
                                   std::to_string(shape[a]) + "]");
     }
   }
@@ -20,21 +25,25 @@ void require_valid(const MapLayout& layout) {
     throw std::invalid_argument("regime map: the full quantities and the BEM reference need at least one time");
 }
 
-void require_inside_grid(const MapLayout& layout, const sweep::TileBox& box) {
+void require_inside_grid(const MapLayout& layout, const map::TileBox& box) {
   const auto shape = layout.grid.shape();
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+  if (box.start.size() != shape.size() || box.count.size() != shape.size()) {
+    throw std::invalid_argument("regime map: a tile of " + std::to_string(box.count.size()) + " axes in a grid of " +
+                                std::to_string(shape.size()));
+  }
+  for (std::size_t a = 0; a < shape.size(); ++a) {
     if (box.count[a] == 0 || box.start[a] + box.count[a] > shape[a]) {
       throw std::invalid_argument(std::string("regime map: tile range [") + std::to_string(box.start[a]) +
                                   ", " + std::to_string(box.start[a] + box.count[a]) + ") on axis " +
-                                  sweep::kAxisNames[a] + " is empty or outside [0, " +
+                                  layout.grid.axes[a].name + " is empty or outside [0, " +
                                   std::to_string(shape[a]) + ")");
     }
   }
 }
 
-bool is_one_chunk(const MapLayout& layout, const sweep::TileBox& box) {
+bool is_one_chunk(const MapLayout& layout, const map::TileBox& box) {
   const auto shape = layout.grid.shape();
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+  for (std::size_t a = 0; a < shape.size(); ++a) {
     if (box.start[a] % layout.chunk[a] != 0) return false;
     const bool whole = box.count[a] == layout.chunk[a];
     const bool rest_of_grid = box.count[a] < layout.chunk[a] && box.start[a] + box.count[a] == shape[a];
@@ -43,12 +52,12 @@ bool is_one_chunk(const MapLayout& layout, const sweep::TileBox& box) {
   return true;
 }
 
-void require_one_chunk(const MapLayout& layout, const sweep::TileBox& box) {
+void require_one_chunk(const MapLayout& layout, const map::TileBox& box) {
   require_inside_grid(layout, box);
   if (!is_one_chunk(layout, box)) {
     std::string range;
-    for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-      range += std::string(a ? ", " : "") + sweep::kAxisNames[a] + " [" + std::to_string(box.start[a]) +
+    for (std::size_t a = 0; a < box.count.size(); ++a) {
+      range += std::string(a ? ", " : "") + layout.grid.axes[a].name + " [" + std::to_string(box.start[a]) +
                ", " + std::to_string(box.start[a] + box.count[a]) + ")";
     }
     throw std::invalid_argument("regime map: the tile " + range +

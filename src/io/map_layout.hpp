@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "sweep/grid.hpp"
-#include "sweep/sweep_config.hpp"
+#include "map/grid.hpp"
+#include "map/quantities.hpp"
 
 namespace punchsweep::io {
 
@@ -25,14 +25,16 @@ struct BemSetup {
 
 /// What a regime map holds: its grid, snapshot times, quantities, chunk shape and reference.
 struct MapLayout {
-  sweep::Grid grid;
+  map::Grid grid;
   std::vector<double> times;  ///< T_eps; the `time` coordinate (of the full quantities and bem_* series)
-  sweep::Quantities quantities = sweep::Quantities::regime;
-  std::array<std::size_t, sweep::kAxes> chunk{};  ///< 5-D chunk shape, each in [1, axis length]
+  map::Quantities quantities = map::Quantities::regime;
+  map::Index chunk;                ///< chunk shape over the grid's axes, each in [1, axis length]
   std::optional<BemSetup> bem;                    ///< set: the bem_* variables are stored
 
   /// Whether the model's time series are stored too.
-  bool full() const { return quantities == sweep::Quantities::full; }
+  bool full() const { return quantities == map::Quantities::full; }
+  /// Whether the map stores quantity `spec`.
+  bool stores(const map::QuantitySpec& spec) const { return map::is_stored(spec, quantities, bem.has_value()); }
   /// Whether any variable runs over the time axis.
   bool has_series() const { return full() || bem.has_value(); }
 };
@@ -42,13 +44,13 @@ struct MapLayout {
 void require_valid(const MapLayout& layout);
 
 /// Throws std::invalid_argument, naming the axis, unless `box` is non-empty and inside the grid.
-void require_inside_grid(const MapLayout& layout, const sweep::TileBox& box);
+void require_inside_grid(const MapLayout& layout, const map::TileBox& box);
 
 /// Whether `box` is one whole chunk, or the part of one that lies inside the grid (the
 /// boxes that can be stored as one encoded chunk). `box` must lie inside the grid.
-bool is_one_chunk(const MapLayout& layout, const sweep::TileBox& box);
+bool is_one_chunk(const MapLayout& layout, const map::TileBox& box);
 
 /// Throws std::invalid_argument unless `box` lies inside the grid and is_one_chunk.
-void require_one_chunk(const MapLayout& layout, const sweep::TileBox& box);
+void require_one_chunk(const MapLayout& layout, const map::TileBox& box);
 
 }  // namespace punchsweep::io

@@ -5,31 +5,34 @@
 
 namespace punchsweep::io {
 
-std::vector<const VariableSpec*> stored_variables(const MapLayout& layout) {
-  std::vector<const VariableSpec*> stored;
-  for (const VariableSpec& spec : kVariables) {
-    if (is_stored(spec, layout)) stored.push_back(&spec);
+std::vector<std::size_t> stored_variables(const MapLayout& layout) {
+  std::vector<std::size_t> stored;
+  for (std::size_t q = 0; q < map::kQuantityCount; ++q) {
+    if (layout.stores(map::kQuantities[q])) stored.push_back(q);
   }
   return stored;
 }
 
 std::size_t uncompressed_bytes_per_point(const MapLayout& layout) {
   std::size_t bytes = 0;
-  for (const VariableSpec* spec : stored_variables(layout)) {
-    const std::size_t element = spec->codes != nullptr ? sizeof(std::int8_t) : sizeof(double);
-    bytes += element * (spec->series ? layout.times.size() : 1);
+  for (const std::size_t q : stored_variables(layout)) {
+    const map::QuantitySpec& spec = map::kQuantities[q];
+    const std::size_t element = spec.kind == map::Kind::flag ? sizeof(std::int8_t) : sizeof(double);
+    bytes += element * (spec.extent == map::Extent::series ? layout.times.size() : 1);
   }
   return bytes;
 }
 
-void require_tile_arrays(const MapLayout& layout, std::size_t points, const TileData& data) {
-  for (const VariableSpec& spec : kVariables) {
-    const std::size_t expected = !is_stored(spec, layout) ? 0 : spec.series ? points * layout.times.size() : points;
-    const std::size_t size = spec.codes != nullptr ? (data.*spec.codes).size() : (data.*spec.values).size();
+void require_tile_arrays(const MapLayout& layout, std::size_t points, const map::TileData& data) {
+  for (std::size_t q = 0; q < map::kQuantityCount; ++q) {
+    const map::QuantitySpec& spec = map::kQuantities[q];
+    const std::size_t expected = !layout.stores(spec)                  ? 0
+                                 : spec.extent == map::Extent::series ? points * layout.times.size()
+                                                                       : points;
+    const std::size_t size = data.size(q);
     if (size != expected) {
-      throw std::invalid_argument(std::string("regime map: tile array ") + spec.name + " has " +
-                                  std::to_string(size) + " values, the tile needs " +
-                                  std::to_string(expected));
+      throw std::invalid_argument("regime map: tile array " + std::string(spec.name) + " has " +
+                                  std::to_string(size) + " values, the tile needs " + std::to_string(expected));
     }
   }
 }

@@ -10,29 +10,41 @@
 #include <string>
 
 #include "io/map_variables.hpp"
+#include "model/parameters.hpp"
+#include "model/regime.hpp"
+#include "model/validity.hpp"
 
 namespace punchsweep::io {
 
 namespace {
 
-// The codes are a file-format contract (README, "Validity"); never renumber them.
-constexpr std::array<std::int8_t, 4> kRegimeFlags{0, 1, 2, -1};
-constexpr const char* kRegimeMeanings = "immediate delayed never not_computed";
-constexpr std::array<std::int8_t, 5> kValidFlags{0, 1, 2, 3, -1};
-constexpr const char* kValidMeanings =
-    "valid same_level_overlap cross_level_overlap no_solution not_computed";
-
-struct CoordinateSpec {
-  const char* units;
-  const char* long_name;
+/// The flag_values and flag_meanings of a flag set: the model's codes 0, 1, ... by their
+/// names (a file-format contract: README, "Validity"; never renumbered), then -1 not_computed.
+struct FlagSet {
+  std::vector<std::int8_t> values;
+  std::string meanings;
 };
-constexpr std::array<CoordinateSpec, sweep::kAxes> kAxisCoordinates{{
-    {"R", "lattice pitch"},
-    {"R", "height difference of the punch levels"},
-    {"1", "creep ratio T_eps/T_sigma"},
-    {"E0/(1-nu^2)", "nominal pressure"},
-    {"1", "shape exponent"},
-}};
+
+FlagSet flag_set(map::Flags flags) {
+  FlagSet set;
+  const auto add = [&](std::int8_t code, std::string_view name) {
+    set.values.push_back(code);
+    if (!set.meanings.empty()) set.meanings += ' ';
+    set.meanings.append(name);
+  };
+  if (flags == map::Flags::regime) {
+    for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
+      add(static_cast<std::int8_t>(r), model::regime_name(r));
+    }
+  } else {
+    for (const model::Validity v : {model::Validity::valid, model::Validity::same_level_overlap,
+                                    model::Validity::cross_level_overlap, model::Validity::no_solution}) {
+      add(static_cast<std::int8_t>(v), model::validity_name(v));
+    }
+  }
+  add(kNotComputed, "not_computed");
+  return set;
+}
 
 Handle make_property_list(hid_t cls, const std::string& what) {
   return Handle(H5Pcreate(cls), H5Pclose, what);
@@ -66,7 +78,7 @@ void write_double_attribute(hid_t object, const char* name, double value, const 
 }
 
 /// How an axis is spaced, for plots: see the class comment in the header.
-const char* axis_spacing(const sweep::Axis& axis) {
+const char* axis_spacing(const map::Axis& axis) {
   if (axis.log_spaced) return "log";
   const std::vector<double>& v = axis.values;
   if (v.size() < 3) return "linear";
@@ -117,47 +129,47 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   const std::int8_t incomplete = 0;
   write_attribute(file_, "completed", H5T_STD_I8LE, H5T_NATIVE_INT8, &incomplete, 0, in);
 
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
-    const sweep::Axis& axis = layout.grid.axes[a];
-    create_coordinate(sweep::kAxisNames[a], axis.values, kAxisCoordinates[a].units,
-                      kAxisCoordinates[a].long_name);
-    const std::string where = std::string("on '") + sweep::kAxisNames[a] + "' " + in;
+  for (const map::Axis& axis : layout.grid.axes) {
+    // Each axis is a model parameter, which declares its units and long name.
+    const model::Parameter* parameter = model::find_parameter(axis.name);
+    if (parameter == nullptr) throw std::invalid_argument("regime map: axis " + axis.name + " is no model parameter");
+    create_coordinate(axis.name, axis.values, std::string(parameter->units), std::string(parameter->long_name));
+    const std::string where = "on '" + axis.name + "' " + in;
     write_string_attribute(coordinates_.back(), "axis_spec", axis.text, where);
     write_string_attribute(coordinates_.back(), "spacing", axis_spacing(axis), where);
   }
   create_coordinate("time", layout.times, "T_eps", "snapshot time");
 
-  const auto shape = layout.grid.shape();
-  std::array<hsize_t, sweep::kAxes + 1> dims{};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) dims[a] = shape[a];
-  dims[sweep::kAxes] = layout.times.size();
-  space5_ =
-      Handle(H5Screate_simple(sweep::kAxes, dims.data(), nullptr), H5Sclose, "make 5-D dataspace " + in);
-  space6_ =
-      Handle(H5Screate_simple(sweep::kAxes + 1, dims.data(), nullptr), H5Sclose, "make 6-D dataspace " + in);
+  const std::size_t axes = layout.grid.rank();
+  std::vector<hsize_t> dims(axes + 1);
+  const map::Index shape = layout.grid.shape();
+  for (std::size_t a = 0; a < axes; ++a) dims[a] = shape[a];
+  dims[axes] = layout.times.size();
+  space_point_ = Handle(H5Screate_simple(static_cast<int>(axes), dims.data(), nullptr), H5Sclose,
+                        "make the grid's dataspace " + in);
+  space_series_ = Handle(H5Screate_simple(static_cast<int>(axes + 1), dims.data(), nullptr), H5Sclose,
+                         "make the series' dataspace " + in);
 
   stored_ = stored_variables(layout);
-  for (const VariableSpec* stored : stored_) {
-    const VariableSpec& spec = *stored;
-    Handle dataset = create_variable(spec.name, spec.codes != nullptr, spec.series);
-    const std::string where = std::string("on '") + spec.name + "' " + in;
-    const std::size_t rank = spec.series ? sweep::kAxes + 1 : sweep::kAxes;
+  for (const std::size_t q : stored_) {
+    const map::QuantitySpec& spec = map::kQuantities[q];
+    const std::string name(spec.name);
+    const bool series = spec.extent == map::Extent::series;
+    Handle dataset = create_variable(name, spec.kind == map::Kind::flag, series);
+    const std::string where = "on '" + name + "' " + in;
+    const std::size_t rank = series ? axes + 1 : axes;
     for (std::size_t d = 0; d < rank; ++d) {
       check(H5DSattach_scale(dataset, coordinates_[d], static_cast<unsigned>(d)),
-            std::string("attach dimension ") + (d < sweep::kAxes ? sweep::kAxisNames[d] : "time") + " " +
-                where);
+            "attach dimension " + (d < axes ? layout.grid.axes[d].name : std::string("time")) + " " + where);
     }
-    if (spec.units != nullptr) write_string_attribute(dataset, "units", spec.units, where);
-    write_string_attribute(dataset, "long_name", spec.long_name, where);
-    if (spec.comment != nullptr) write_string_attribute(dataset, "comment", spec.comment, where);
-    if (spec.codes == &TileData::regime || spec.codes == &TileData::bem_regime) {
-      write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, kRegimeFlags.data(),
-                      kRegimeFlags.size(), where);
-      write_string_attribute(dataset, "flag_meanings", kRegimeMeanings, where);
-    } else if (spec.codes == &TileData::valid) {
-      write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, kValidFlags.data(),
-                      kValidFlags.size(), where);
-      write_string_attribute(dataset, "flag_meanings", kValidMeanings, where);
+    if (!spec.units.empty()) write_string_attribute(dataset, "units", std::string(spec.units), where);
+    write_string_attribute(dataset, "long_name", std::string(spec.long_name), where);
+    if (!spec.comment.empty()) write_string_attribute(dataset, "comment", std::string(spec.comment), where);
+    if (spec.kind == map::Kind::flag) {
+      const FlagSet flags = flag_set(spec.flags);
+      write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, flags.values.data(),
+                      flags.values.size(), where);
+      write_string_attribute(dataset, "flag_meanings", flags.meanings, where);
     } else {
       write_double_attribute(dataset, "_FillValue", std::numeric_limits<double>::quiet_NaN(), where);
     }
@@ -165,21 +177,21 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   }
 }
 
-void RegimeMapWriter::create_coordinate(const char* name, const std::vector<double>& values,
-                                        const char* units, const char* long_name) {
-  const std::string where = std::string("'") + name + "' in " + path_;
+void RegimeMapWriter::create_coordinate(const std::string& name, const std::vector<double>& values,
+                                        const std::string& units, const std::string& long_name) {
+  const std::string where = "'" + name + "' in " + path_;
   const auto n = static_cast<hsize_t>(values.size());
   const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "make dataspace of " + where);
   const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
   check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
         "set attribute order of " + where);
-  Handle dataset(H5Dcreate2(file_, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
+  Handle dataset(H5Dcreate2(file_, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
                  "create coordinate " + where);
   if (!values.empty()) {
     check(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
           "write coordinate " + where);
   }
-  check(H5DSset_scale(dataset, name), "make dimension scale of " + where);
+  check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
   const std::string on = "on " + where;
   write_string_attribute(dataset, "units", units, on);
   write_string_attribute(dataset, "long_name", long_name, on);
@@ -192,10 +204,11 @@ Handle RegimeMapWriter::create_variable(const std::string& name, bool codes, boo
   check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
         "set attribute order of " + where);
   const MapLayout& layout = encoder_.layout();
-  std::array<hsize_t, sweep::kAxes + 1> chunk{};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) chunk[a] = layout.chunk[a];
-  chunk[sweep::kAxes] = layout.times.size();
-  const int rank = series ? sweep::kAxes + 1 : sweep::kAxes;
+  const std::size_t axes = layout.grid.rank();
+  std::vector<hsize_t> chunk(axes + 1);
+  for (std::size_t a = 0; a < axes; ++a) chunk[a] = layout.chunk[a];
+  chunk[axes] = layout.times.size();
+  const int rank = static_cast<int>(series ? axes + 1 : axes);
   check(H5Pset_chunk(dcpl, rank, chunk.data()), "set chunk shape of " + where);
   check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
   check(H5Pset_deflate(dcpl, kDeflateLevel), "set deflate filter of " + where);
@@ -207,7 +220,7 @@ Handle RegimeMapWriter::create_variable(const std::string& name, bool codes, boo
   // Tiles that are not one chunk go through the default chunk cache (1 MiB per dataset).
   const hid_t type = codes ? H5T_STD_I8LE : H5T_IEEE_F64LE;
   return Handle(
-      H5Dcreate2(file_, name.c_str(), type, series ? space6_ : space5_, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+      H5Dcreate2(file_, name.c_str(), type, series ? space_series_ : space_point_, H5P_DEFAULT, dcpl, H5P_DEFAULT),
       H5Dclose, "create variable " + where);
 }
 
@@ -216,7 +229,7 @@ void RegimeMapWriter::require_open(const char* operation) const {
     throw std::logic_error(std::string("regime map ") + path_ + ": " + operation + " after finish()");
 }
 
-void RegimeMapWriter::write_tile(const sweep::TileBox& box, const TileData& data) {
+void RegimeMapWriter::write_tile(const map::TileBox& box, const map::TileData& data) {
   require_open("write_tile");
   const MapLayout& layout = encoder_.layout();
   require_inside_grid(layout, box);
@@ -228,7 +241,7 @@ void RegimeMapWriter::write_tile(const sweep::TileBox& box, const TileData& data
   }
 }
 
-void RegimeMapWriter::write_encoded(const sweep::TileBox& box, const EncodedTile& tile) {
+void RegimeMapWriter::write_encoded(const map::TileBox& box, const EncodedTile& tile) {
   require_open("write_encoded");
   require_one_chunk(encoder_.layout(), box);
   if (tile.chunks.size() != variables_.size() || tile.summary.points != box.points()) {
@@ -238,45 +251,48 @@ void RegimeMapWriter::write_encoded(const sweep::TileBox& box, const EncodedTile
                                 std::to_string(variables_.size()) + " chunks and the box has " +
                                 std::to_string(box.points()) + " points");
   }
-  std::array<hsize_t, sweep::kAxes + 1> offset{};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) offset[a] = box.start[a];
+  std::vector<hsize_t> offset(box.start.size() + 1, 0);
+  for (std::size_t a = 0; a < box.start.size(); ++a) offset[a] = box.start[a];
   for (std::size_t v = 0; v < variables_.size(); ++v) {
     check(H5Dwrite_chunk(variables_[v], H5P_DEFAULT, 0, offset.data(), tile.chunks[v].size(),
                          tile.chunks[v].data()),
-          std::string("write a chunk of variable '") + stored_[v]->name + "' to " + path_);
+          "write a chunk of variable '" + std::string(map::kQuantities[stored_[v]].name) + "' to " + path_);
   }
 }
 
-void RegimeMapWriter::write_hyperslab(const sweep::TileBox& box, const TileData& data) {
-  std::array<hsize_t, sweep::kAxes + 1> start{};
-  std::array<hsize_t, sweep::kAxes + 1> count{};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+void RegimeMapWriter::write_hyperslab(const map::TileBox& box, const map::TileData& data) {
+  const std::size_t axes = box.start.size();
+  std::vector<hsize_t> start(axes + 1, 0);
+  std::vector<hsize_t> count(axes + 1, 0);
+  for (std::size_t a = 0; a < axes; ++a) {
     start[a] = box.start[a];
     count[a] = box.count[a];
   }
   const MapLayout& layout = encoder_.layout();
-  count[sweep::kAxes] = layout.times.size();
+  count[axes] = layout.times.size();
   const std::string in = " to " + path_;
-  check(H5Sselect_hyperslab(space5_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+  const int rank = static_cast<int>(axes);
+  check(H5Sselect_hyperslab(space_point_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
         "select tile" + in);
-  const Handle memory5(H5Screate_simple(sweep::kAxes, count.data(), nullptr), H5Sclose,
-                       "make tile dataspace" + in);
-  Handle memory6;
+  const Handle memory_point(H5Screate_simple(rank, count.data(), nullptr), H5Sclose, "make tile dataspace" + in);
+  Handle memory_series;
   if (layout.has_series()) {
-    check(H5Sselect_hyperslab(space6_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+    check(H5Sselect_hyperslab(space_series_, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
           "select tile series" + in);
-    memory6 = Handle(H5Screate_simple(sweep::kAxes + 1, count.data(), nullptr), H5Sclose,
-                     "make series dataspace" + in);
+    memory_series = Handle(H5Screate_simple(rank + 1, count.data(), nullptr), H5Sclose,
+                           "make series dataspace" + in);
   }
   for (std::size_t v = 0; v < variables_.size(); ++v) {
-    const VariableSpec& spec = *stored_[v];
-    const hid_t memory = spec.series ? memory6.get() : memory5.get();
-    const hid_t file = spec.series ? space6_.get() : space5_.get();
-    const herr_t status = spec.codes != nullptr ? H5Dwrite(variables_[v], H5T_NATIVE_INT8, memory, file,
-                                                           H5P_DEFAULT, (data.*spec.codes).data())
-                                                : H5Dwrite(variables_[v], H5T_NATIVE_DOUBLE, memory, file,
-                                                           H5P_DEFAULT, (data.*spec.values).data());
-    check(status, std::string("write variable '") + spec.name + "'" + in);
+    const std::size_t q = stored_[v];
+    const map::QuantitySpec& spec = map::kQuantities[q];
+    const bool series = spec.extent == map::Extent::series;
+    const hid_t memory = series ? memory_series.get() : memory_point.get();
+    const hid_t file = series ? space_series_.get() : space_point_.get();
+    const herr_t status = spec.kind == map::Kind::flag
+                              ? H5Dwrite(variables_[v], H5T_NATIVE_INT8, memory, file, H5P_DEFAULT, data.flag(q).data())
+                              : H5Dwrite(variables_[v], H5T_NATIVE_DOUBLE, memory, file, H5P_DEFAULT,
+                                         data.real(q).data());
+    check(status, "write variable '" + std::string(spec.name) + "'" + in);
   }
 }
 
@@ -299,8 +315,8 @@ void RegimeMapWriter::finish(int ranks, double wall_seconds, double points_per_s
   }
   // Flush with a checked status first: closing reports no errors through Handle.
   check(H5Fflush(file_, H5F_SCOPE_LOCAL), "flush " + path_);
-  space6_.reset();
-  space5_.reset();
+  space_series_.reset();
+  space_point_.reset();
   variables_.clear();
   stored_.clear();
   coordinates_.clear();

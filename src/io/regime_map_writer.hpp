@@ -9,9 +9,9 @@
 #include "io/hdf5_handle.hpp"
 #include "io/map_layout.hpp"
 #include "io/map_variables.hpp"
-#include "io/tile_data.hpp"
 #include "io/tile_encoder.hpp"
-#include "sweep/grid.hpp"
+#include "map/grid.hpp"
+#include "map/tile_data.hpp"
 
 namespace punchsweep::io {
 
@@ -30,24 +30,23 @@ struct MapAttributes {
 /// contract:
 ///
 /// - Link and attribute creation order are tracked and indexed, as in netCDF-4 files.
-/// - Coordinates `l`, `dh`, `T`, `pbar`, `s`, `time`: 1-D float64 dimension scales with
-///   `units` and `long_name`. `s` is float64 too (its values are whole numbers), so every
-///   coordinate has one type and a non-integer s could never be truncated silently. The
-///   five grid axes also carry `axis_spec` (the text the axis was given as) and `spacing`:
-///   "log" for logspace() axes, "linear" for evenly spaced values (one or two values
-///   included), "list" for anything else. `time` is written for regime-only maps too, as a
-///   record of the configured times (only the bem_* series use it there).
-/// - Over (l, dh, T, pbar, s): `regime` and `valid` (int8 flag variables with
-///   flag_values/flag_meanings; HDF5 fill value -1 = not_computed; no _FillValue attribute,
-///   so readers do not turn the codes into floats), `t_star`, `h_0`, `h_inf`, `a1_inf`,
-///   `a2_inf`, `area_fraction_inf` (float64, `_FillValue` and HDF5 fill NaN).
-/// - With Quantities::full, over (l, dh, T, pbar, s, time): `a1`, `a2`, `P1`, `P2`,
-///   `area_fraction` (float64, fill NaN).
-/// - With a BEM reference (MapLayout::bem), whatever the quantities: `bem_regime` (int8,
-///   the flags of `regime`, no _FillValue) and `bem_t_star` over the five axes, and
-///   `bem_a1`, `bem_a2`, `bem_P1`, `bem_P2`, `bem_area_fraction` over the time axis too
-///   (float64, fill NaN); cells outside the reference sample read -1 or NaN.
-/// - Every variable is chunked by MapLayout::chunk (times whole for the 6-D ones) and
+/// - Coordinates: one per grid axis, in the grid's order (for the standard linear solid
+///   `l`, `dh`, `T`, `pbar`, `s`), then `time`: 1-D float64 dimension scales with `units`
+///   and `long_name` as the axis's model parameter declares them (model/parameters.hpp).
+///   Integer axes such as `s` are float64 too, so every coordinate has one type and a
+///   non-integer value could never be truncated silently. The grid axes also carry
+///   `axis_spec` (the text the axis was given as) and `spacing`: "log" for logspace() axes,
+///   "linear" for evenly spaced values (one or two values included), "list" for anything
+///   else. `time` is written for regime-only maps too, as a record of the configured times
+///   (only the bem_* series use it there).
+/// - The data variables are map::kQuantities that the layout stores, in that order, over
+///   the grid's axes (and `time` for a series): flags are int8 with flag_values /
+///   flag_meanings (HDF5 fill value -1 = not_computed; no _FillValue attribute, so readers
+///   do not turn the codes into floats), reals float64 with `_FillValue` and HDF5 fill NaN.
+///   The model's series are stored with Quantities::full, the bem_* variables with a BEM
+///   reference (MapLayout::bem) whatever the quantities; cells outside the reference
+///   sample read -1 or NaN.
+/// - Every variable is chunked by MapLayout::chunk (times whole for the series) and
 ///   compressed with shuffle + deflate level 1. A tile that is exactly one chunk (or the
 ///   part of one inside the grid) is stored encoded (TileEncoder) with H5Dwrite_chunk; any
 ///   other box goes through HDF5's filter pipeline. Readers see no difference.
@@ -75,12 +74,12 @@ class RegimeMapWriter {
   /// the series); `box` may be any box of the grid. Throws std::invalid_argument if the box
   /// leaves the grid or an array has the wrong length (the arrays of variables the map does
   /// not store must be empty).
-  void write_tile(const sweep::TileBox& box, const TileData& data);
+  void write_tile(const map::TileBox& box, const map::TileData& data);
 
   /// Stores a tile that a TileEncoder of this map's layout encoded, one H5Dwrite_chunk per
   /// variable (no compression here). Throws std::invalid_argument if `box` is not one chunk
   /// (or the part of one inside the grid), or `tile` has another number of chunks or points.
-  void write_encoded(const sweep::TileBox& box, const EncodedTile& tile);
+  void write_encoded(const map::TileBox& box, const EncodedTile& tile);
 
   /// Hands everything written so far to the operating system.
   void flush();
@@ -92,21 +91,21 @@ class RegimeMapWriter {
   const std::string& path() const { return path_; }
 
  private:
-  void create_coordinate(const char* name, const std::vector<double>& values, const char* units,
-                         const char* long_name);
+  void create_coordinate(const std::string& name, const std::vector<double>& values, const std::string& units,
+                         const std::string& long_name);
   /// An int8 flag variable when `codes`, else float64; over the time axis too when `series`.
   Handle create_variable(const std::string& name, bool codes, bool series);
-  void write_hyperslab(const sweep::TileBox& box, const TileData& data);
+  void write_hyperslab(const map::TileBox& box, const map::TileData& data);
   void require_open(const char* operation) const;
 
   std::string path_;
   TileEncoder encoder_;  ///< holds the layout; encodes write_tile's whole-chunk tiles
   Handle file_;
-  std::vector<Handle> coordinates_;  ///< l, dh, T, pbar, s, time
-  std::vector<const VariableSpec*> stored_;  ///< the kVariables entries the map stores, in order
-  std::vector<Handle> variables_;            ///< their datasets, one per entry of stored_
-  Handle space5_;                    ///< file dataspace of the 5-D variables (selection reused)
-  Handle space6_;                    ///< file dataspace of the 6-D variables
+  std::vector<Handle> coordinates_;  ///< the grid's axes, then time
+  std::vector<std::size_t> stored_;  ///< the map::kQuantities the map stores, in order
+  std::vector<Handle> variables_;    ///< their datasets, one per entry of stored_
+  Handle space_point_;               ///< file dataspace over the grid (selection reused)
+  Handle space_series_;              ///< file dataspace over the grid and the times
 };
 
 }  // namespace punchsweep::io

@@ -21,24 +21,26 @@ namespace {
 /// Copies a tile at the grid's edge into a whole chunk (row-major over `chunk`, `inner`
 /// values per point), with `fill` in the part that lies outside the grid.
 void pad_to_chunk(const std::byte* tile, std::size_t element, const void* fill, std::size_t inner,
-                  const std::array<std::size_t, sweep::kAxes>& count,
-                  const std::array<std::size_t, sweep::kAxes>& chunk, std::vector<std::byte>* out) {
+                  const map::Index& count, const map::Index& chunk, std::vector<std::byte>* out) {
   std::size_t values = inner;
   for (const std::size_t c : chunk) values *= c;
   out->resize(values * element);
   for (std::size_t i = 0; i < values; ++i) std::memcpy(out->data() + i * element, fill, element);
-  const std::size_t run = count[4] * inner * element;  // the fastest axis is contiguous in both
+  // The fastest axis is contiguous in both: copy one run per position on the slower axes.
+  const std::size_t rank = count.size();
+  const std::size_t run = count[rank - 1] * inner * element;
+  std::size_t runs = 1;
+  for (std::size_t a = 0; a + 1 < rank; ++a) runs *= count[a];
   const std::byte* from = tile;
-  for (std::size_t i0 = 0; i0 < count[0]; ++i0) {
-    for (std::size_t i1 = 0; i1 < count[1]; ++i1) {
-      for (std::size_t i2 = 0; i2 < count[2]; ++i2) {
-        for (std::size_t i3 = 0; i3 < count[3]; ++i3) {
-          const std::size_t to = (((i0 * chunk[1] + i1) * chunk[2] + i2) * chunk[3] + i3) * chunk[4];
-          std::memcpy(out->data() + to * inner * element, from, run);
-          from += run;
-        }
-      }
+  for (std::size_t r = 0; r < runs; ++r, from += run) {
+    std::size_t to = 0;  // the run's first point, row-major over `chunk`
+    std::size_t rest = r;
+    std::size_t stride = chunk[rank - 1];
+    for (std::size_t a = rank - 1; a-- > 0; rest /= count[a]) {
+      to += (rest % count[a]) * stride;
+      stride *= chunk[a];
     }
+    std::memcpy(out->data() + to * inner * element, from, run);
   }
 }
 
@@ -57,7 +59,7 @@ TileEncoder::TileEncoder(const MapLayout& layout)
   require_valid(layout_);
 }
 
-EncodedTile TileEncoder::encode(std::uint64_t tile, const sweep::TileBox& box, const TileData& data) {
+EncodedTile TileEncoder::encode(std::uint64_t tile, const map::TileBox& box, const map::TileData& data) {
   require_one_chunk(layout_, box);
   const std::size_t points = box.points();
   require_tile_arrays(layout_, points, data);
@@ -65,24 +67,26 @@ EncodedTile TileEncoder::encode(std::uint64_t tile, const sweep::TileBox& box, c
   EncodedTile encoded;
   encoded.tile = tile;
   encoded.summary.points = points;
-  count_codes(data.regime, &encoded.summary.regimes);
-  count_codes(data.valid, &encoded.summary.validity);
-  count_codes(data.bem_regime, &encoded.summary.bem_regimes);
-  for (std::size_t i = 0; i < data.bem_regime.size(); ++i) {
-    const std::int8_t bem = data.bem_regime[i];  // counted as agreeing only where counted above
+  const std::vector<std::int8_t>& regime = data.flag(map::quantity("regime"));
+  const std::vector<std::int8_t>& bem_regime = data.flag(map::quantity("bem_regime"));
+  count_codes(regime, &encoded.summary.regimes);
+  count_codes(data.flag(map::quantity("valid")), &encoded.summary.validity);
+  count_codes(bem_regime, &encoded.summary.bem_regimes);
+  for (std::size_t i = 0; i < bem_regime.size(); ++i) {
+    const std::int8_t bem = bem_regime[i];  // counted as agreeing only where counted above
     const bool counted = bem >= 0 && static_cast<std::size_t>(bem) < encoded.summary.bem_regimes.size();
-    if (counted && bem == data.regime[i]) ++encoded.summary.bem_agreeing;
+    if (counted && bem == regime[i]) ++encoded.summary.bem_agreeing;
   }
 
   const bool edge = box.count != layout_.chunk;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const VariableSpec* stored : stored_variables(layout_)) {
-    const VariableSpec& spec = *stored;
-    const bool codes = spec.codes != nullptr;
+  for (const std::size_t q : stored_variables(layout_)) {
+    const map::QuantitySpec& spec = map::kQuantities[q];
+    const bool codes = spec.kind == map::Kind::flag;
     const std::size_t element = codes ? sizeof(std::int8_t) : sizeof(double);
-    const std::size_t inner = spec.series ? layout_.times.size() : 1;
-    const auto* values = codes ? reinterpret_cast<const std::byte*>((data.*spec.codes).data())
-                               : reinterpret_cast<const std::byte*>((data.*spec.values).data());
+    const std::size_t inner = spec.extent == map::Extent::series ? layout_.times.size() : 1;
+    const auto* values = codes ? reinterpret_cast<const std::byte*>(data.flag(q).data())
+                               : reinterpret_cast<const std::byte*>(data.real(q).data());
     std::span<const std::byte> bytes;
     if (edge) {
       const void* fill = codes ? static_cast<const void*>(&kNotComputed) : static_cast<const void*>(&nan);

@@ -7,8 +7,8 @@
 #include "io/chunk_compressor.hpp"
 #include "io/encoded_tile.hpp"
 #include "io/map_layout.hpp"
-#include "io/tile_data.hpp"
-#include "sweep/grid.hpp"
+#include "map/tile_data.hpp"
+#include "map/grid.hpp"
 
 namespace punchsweep::io {
 
@@ -32,7 +32,7 @@ class TileEncoder {
   /// grid's edge, the part of one inside the grid; the rest of such a chunk is filled with
   /// what unwritten cells read as (not_computed, NaN). Throws std::invalid_argument for
   /// another box or arrays of the wrong length, std::runtime_error if zlib fails.
-  EncodedTile encode(std::uint64_t tile, const sweep::TileBox& box, const TileData& data);
+  EncodedTile encode(std::uint64_t tile, const map::TileBox& box, const map::TileData& data);
 
   const MapLayout& layout() const { return layout_; }
 

@@ -19,7 +19,7 @@ namespace {
 
 constexpr std::array<char, 8> kFileMagic{'P', 'S', 'J', 'R', 'N', 'L', '\r', '\n'};
 // 2: records hold encoded tiles; 3: their summaries carry the BEM reference counts
-constexpr std::uint32_t kFormatVersion = 3;
+constexpr std::uint32_t kFormatVersion = 4;
 constexpr std::uint32_t kRecordMagic = 0x43525350;  // "PSRC" read as little-endian bytes
 constexpr std::size_t kHeaderFixed = kFileMagic.size() + sizeof(std::uint32_t) + sizeof(std::uint64_t);
 constexpr std::size_t kRecordHead = sizeof(std::uint32_t) + sizeof(std::uint64_t);
@@ -225,9 +225,10 @@ TileJournal TileJournal::open_for_append(const std::string& path, std::size_t go
   return TileJournal(std::move(fd), path, good_end);
 }
 
-void TileJournal::append(const EncodedTile& tile) {
+void TileJournal::append(const EncodedTile& tile) { append_packed(pack_encoded_tile(tile)); }
+
+void TileJournal::append_packed(std::span<const std::byte> payload) {
   if (!fd_.is_open()) throw std::logic_error("tile journal " + path_ + " is not open");
-  const std::vector<std::byte> payload = pack_encoded_tile(tile);
   record_.clear();
   record_.reserve(kRecordHead + payload.size() + kCrcSize);
   append_bytes(&record_, kRecordMagic);

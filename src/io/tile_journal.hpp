@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,13 +18,14 @@ namespace punchsweep::io {
 /// never misread. No fsync: a killed process does not lose the page cache, and a machine
 /// crash at worst costs tiles that are then computed again.
 ///
-/// File layout (native endianness), format version 3:
+/// File layout (native endianness), format version 4:
 ///   header: 8-byte magic "PSJRNL\r\n", u32 format version, u64 text length, the header
 ///           text (the caller's configuration identity), u32 CRC-32 of all of the above;
 ///   record: u32 magic "PSRC", u64 payload length, payload (a pack_encoded_tile buffer:
 ///           the tile as the map stores it), u32 CRC-32 of the length field and the payload.
 /// (Version 1 records held uncompressed tiles, version 2 tiles without the BEM reference
-/// counts; read_header refuses such journals.)
+/// counts, version 3 chunks in the variable order before map::kQuantities; read_header
+/// refuses such journals.)
 ///
 /// Replay stops at the first record that is incomplete, has a wrong magic or a wrong CRC:
 /// what follows a damaged record cannot be framed reliably, so it is ignored as well, and
@@ -53,6 +55,9 @@ class TileJournal {
   /// Appends one record. On a write error the file is cut back to its previous end (so no
   /// half record stays in front of later ones) and std::runtime_error is thrown.
   void append(const EncodedTile& tile);
+  /// The same for a tile already packed (pack_encoded_tile's bytes, as they come from the
+  /// rank that computed it).
+  void append_packed(std::span<const std::byte> payload);
 
   const std::string& path() const { return path_; }
   /// Bytes in the journal after the last appended record.

@@ -1,4 +1,4 @@
-#include "sweep/axis_parser.hpp"
+#include "map/axis_parser.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace punchsweep::sweep {
+namespace punchsweep::map {
 namespace {
 
 constexpr const char* kWhitespace = " \t\r\n\f\v";
@@ -183,4 +183,4 @@ std::string format_axis_values(const std::vector<double>& values) {
   return text;
 }
 
-}  // namespace punchsweep::sweep
+}  // namespace punchsweep::map

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "sweep/grid.hpp"
+#include "map/grid.hpp"
 
-namespace punchsweep::sweep {
+namespace punchsweep::map {
 
 /// Largest count linspace()/logspace() accept: an axis lives in memory and is printed in
 /// the map's identity, and a count beyond this is almost surely a typo.
@@ -35,4 +35,4 @@ std::string format_axis_value(double value);
 /// The values as "v1, v2, ..." with format_axis_value: the canonical text of an axis.
 std::string format_axis_values(const std::vector<double>& values);
 
-}  // namespace punchsweep::sweep
+}  // namespace punchsweep::map

@@ -1,23 +1,16 @@
 #include "model/contact_problem.hpp"
 
-#include <cmath>
-#include <sstream>
+#include "model/parameters.hpp"
 
 namespace punchsweep::model {
 
 std::string problem_error(const ContactProblem& problem) {
-  std::ostringstream out;
-  if (!(std::isfinite(problem.l) && problem.l > 0.0)) {
-    out << "pitch l = " << problem.l << " is outside its range: l > 0 (in R)";
-  } else if (!(std::isfinite(problem.dh) && problem.dh >= 0.0)) {
-    out << "height difference dh = " << problem.dh << " is outside its range: dh >= 0 (in R)";
-  } else if (!(std::isfinite(problem.pbar0) && problem.pbar0 > 0.0)) {
-    out << "nominal pressure pbar0 = " << problem.pbar0
-        << " is outside its range: pbar0 > 0 (in E0/(1-nu^2))";
-  } else {
-    return shape_error(problem.shape);
+  const double values[] = {problem.l, problem.dh, problem.pbar0};
+  const std::string_view names[] = {kPitch, kHeightDifference, kPressure};
+  for (std::size_t k = 0; k < std::size(values); ++k) {
+    if (std::string e = find_parameter(names[k])->error(values[k]); !e.empty()) return e;
   }
-  return out.str();
+  return shape_error(problem.shape);
 }
 
 }  // namespace punchsweep::model

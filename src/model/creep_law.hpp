@@ -1,8 +1,23 @@
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace punchsweep::model {
+
+/// A creep function written as a generalized Kelvin (retardation) series,
+///   J(t) = J(inf) - sum_k J_k exp(-t / lambda_k),   J(0) = J(inf) - sum_k J_k,
+/// which lets a time stepper carry one recursive history variable per term instead of the
+/// whole history (the BEM reference does so).
+struct RetardationSeries {
+  struct Term {
+    double J = 0.0;       ///< J_k, in 1/E0*
+    double lambda = 0.0;  ///< retardation time lambda_k, in T_eps
+  };
+  double J_final = 0.0;     ///< J(inf), finite, in 1/E0*
+  std::vector<Term> terms;  ///< at least one
+};
 
 /// A linear viscoelastic material given by its creep function J(t) and the matching
 /// relaxation function E(t) (interconverted: int_0-^t E(t - tau) dJ(tau) = 1).
@@ -25,6 +40,12 @@ class CreepLaw {
   virtual double time_at_creep(double J) const = 0;
   /// Shortest time over which E(t) changes appreciably (sets the history quadrature step).
   virtual double relaxation_time_scale() const = 0;
+  /// Shortest time over which J(t) changes appreciably (the shortest retardation time;
+  /// bounds the quadrature pieces of history integrals together with the relaxation scale).
+  virtual double creep_time_scale() const = 0;
+  /// The law as a retardation series when it is one (finite J(inf), exponential terms);
+  /// empty otherwise, and then history integrals use the law's J(t) directly.
+  virtual std::optional<RetardationSeries> retardation_series() const { return std::nullopt; }
   /// Age beyond which dE/dt is below 1e-17 of its scale, so older history can be
   /// skipped; +infinity for a law with long memory.
   virtual double relaxation_memory() const = 0;

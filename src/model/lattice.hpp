@@ -5,7 +5,7 @@
 
 namespace punchsweep::model {
 
-/// The square two-level lattice of pitch l (model notes, sections 3 and 4): level-2
+/// The square two-level lattice of pitch l (docs/model.md, sections 3 and 4): level-2
 /// punches sit at the square centres, l2 = l/sqrt(2) from their level-1 neighbours.
 struct Lattice {
   double l;

@@ -10,9 +10,9 @@
 
 namespace punchsweep::model {
 
-LoadHistory::LoadHistory(const CreepLaw& creep, double level1_load, double t0, double t_end,
+LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, double t0, double t_end,
                          const HistoryQuadrature& quadrature, const Sampler& sample)
-    : creep_(creep), level1_load_(level1_load), t0_(t0), n_(quadrature.nodes_per_panel) {
+    : load_(load), creep_(load.creep()), level1_load_(level1_load), t0_(t0), n_(quadrature.nodes_per_panel) {
   const GaussLegendreRule& rule = gauss_legendre(n_);
   nodes_ = rule.nodes;
   bary_.resize(n_);
@@ -24,7 +24,8 @@ LoadHistory::LoadHistory(const CreepLaw& creep, double level1_load, double t0, d
     bary_[j] = w;
   }
   const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
-  panels_ = std::max(1, static_cast<int>(std::ceil(v_end / quadrature.panel_width)));
+  const double width = quadrature.panel_width * std::sqrt(creep_.creep_time_scale());
+  panels_ = std::max(1, static_cast<int>(std::ceil(v_end / width)));
   panel_width_ = std::max(v_end, 1e-300) / panels_;
   Q1_.resize(static_cast<std::size_t>(panels_) * n_);
   Q2_.resize(Q1_.size());
@@ -64,10 +65,10 @@ void LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   const double E0 = creep_.relaxation(0.0);
   Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
-  // Single-level phase [0, t0): Q1 = L J(tau), Q2 = 0, smooth in tau.
+  // Single-level phase [0, t0): Q1 = L g(tau), Q2 = 0, smooth in tau.
   sum[0] += level1_load_ * relaxation_integral(
                                creep_, t, tau_min, std::min(t0_, t),
-                               [&](double tau) { return creep_.creep(tau); }, 0.0);
+                               [&](double tau) { return load_.response(tau); }, 0.0);
 
   // Two-level phase [t0, t], panel by panel in v = sqrt(tau - t0).
   const double v_hi = std::sqrt(std::max(t - t0_, 0.0));

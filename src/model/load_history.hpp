@@ -3,7 +3,7 @@
 #include <functional>
 #include <vector>
 
-#include "model/creep_law.hpp"
+#include "model/creep_weighted_load.hpp"
 
 namespace punchsweep::model {
 
@@ -13,16 +13,18 @@ struct HistoryQuadrature {
   /// panels resolve the kernel (as composite Gauss-Legendre; tested for n = 2, 3), and
   /// never slower than the interpolation error h^n.
   int nodes_per_panel = 12;
-  /// Panel width h in v = sqrt(t - t0), in sqrt(T_eps).
+  /// Panel width h in v = sqrt(t - t0), in units of sqrt(lambda), lambda the law's
+  /// creep_time_scale() (T_eps for the standard linear solid).
   double panel_width = 0.5;
 };
 
-/// The loads P_i(t) = int_0-^t E(t - tau) dQ_i(tau) (model notes, section 5), written as
+/// The loads P_i(t) = int_0-^t E(t - tau) dQ_i(tau) (docs/model.md, section 5), written as
 ///   P_i(t) = E(0) Q_i(t) + int_0^t E'(t - tau) Q_i(tau) dtau,
 /// which needs Q and not its derivative (Q jumps at t = 0 and has a root singularity at t*).
 ///
 /// Before t0 (the delayed contact time; 0 if level 2 touches at once) only level 1 carries
-/// load and Q1 = L J(tau), Q2 = 0 exactly (L = pbar0 l^2). On [t0, t_end] Q is sampled at
+/// load and Q1 = l^2 X(tau) = L g(tau), Q2 = 0 exactly (L = pbar0 l^2, X = pbar0 g the
+/// creep-weighted load). On [t0, t_end] Q is sampled at
 /// Gauss-Legendre nodes of panels uniform in v = sqrt(tau - t0): in v the two-level
 /// solution is analytic, although a2 ~ sqrt(tau - t0) after touchdown. The kernel integral
 /// then uses the piecewise interpolant (product integration): a 16-point Gauss rule on
@@ -34,7 +36,7 @@ class LoadHistory {
   /// Writes Q1, Q2 at tau (called with increasing tau); returns false if it failed.
   using Sampler = std::function<bool(double tau, double* Q1, double* Q2)>;
 
-  LoadHistory(const CreepLaw& creep, double level1_load, double t0, double t_end,
+  LoadHistory(const CreepWeightedLoad& load, double level1_load, double t0, double t_end,
               const HistoryQuadrature& quadrature, const Sampler& sample);
 
   /// False if any sample failed; then load() is meaningless.
@@ -50,7 +52,8 @@ class LoadHistory {
   /// Interpolated Q at v on panel `panel`.
   void interpolate(int panel, double v, double* Q1, double* Q2) const;
 
-  const CreepLaw& creep_;
+  CreepWeightedLoad load_;
+  const CreepLaw& creep_;  ///< load_'s material: its relaxation function is the kernel
   double level1_load_;
   double t0_;
   double panel_width_ = 0.0;

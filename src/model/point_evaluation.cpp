@@ -17,7 +17,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// Which rule of model notes section 7 a state breaks, if any.
+/// Which rule of docs/model.md, section 7 a state breaks, if any.
 struct Violation {
   Validity code = Validity::valid;
   double value = 0.0;
@@ -79,8 +79,9 @@ std::string PointSummary::reason() const {
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single) {
   const SingleLevel single(problem.l, problem.shape);
-  const double X0 = problem.pbar0 * creep.creep_initial();
-  const double X_inf = problem.pbar0 * creep.creep_final();
+  const CreepWeightedLoad load(creep, problem.pbar0);
+  const double X0 = load.initial();
+  const double X_inf = load.final();
   *h_0 = single.displacement_difference(single.contact_radius(X0), X0);
   *a1_inf_single = single.contact_radius(X_inf);
   *h_inf = std::isfinite(X_inf) ? single.displacement_difference(*a1_inf_single, X_inf) : kInf;
@@ -95,12 +96,13 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   out.h_0 = parts.h_0;
   out.h_inf = parts.h_inf;
   const double l = problem.l;
-  const double X_inf = problem.pbar0 * creep.creep_final();
+  const CreepWeightedLoad load(creep, problem.pbar0);
+  const double X_inf = load.final();
 
   // The two-level phase starts from a known state, with frozen radii (eq 9.18).
   const Lattice lattice{l};
   out.radii = NominalRadii{lattice.A1_single(), lattice.A_single()};
-  out.X_start = problem.pbar0 * creep.creep_initial();
+  out.X_start = load.initial();
   if (c.regime == Regime::never) {
     out.a1_inf = parts.a1_inf_single;
     out.a2_inf = 0.0;
@@ -168,8 +170,8 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   PointResult out;
   static_cast<PointSummary&>(out) = summary;
   const SingleLevel single(problem.l, problem.shape);
-  const double pbar0 = problem.pbar0;
-  const double level1_load = pbar0 * problem.l * problem.l;  // P1 while only level 1 touches
+  const CreepWeightedLoad load(creep, problem.pbar0);
+  const double level1_load = problem.pbar0 * problem.l * problem.l;  // P1 while only level 1 touches
   const bool two_level = out.regime != Regime::never;
   const double t_start = out.t_start;
   const TwoLevelSystem system(problem, out.radii);
@@ -188,9 +190,9 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     TwoLevelState previous = out.start;
     double X_current = out.X_start;
     double X_previous = out.X_start;
-    history.emplace(creep, level1_load, t_start, t_max, options.quadrature,
+    history.emplace(load, level1_load, t_start, t_max, options.quadrature,
                     [&](double tau, double* Q1, double* Q2) {
-                      const double X = pbar0 * creep.creep(tau);
+                      const double X = load(tau);
                       TwoLevelSolve r{current, false};
                       if (X_current > X_previous) {
                         const double w = (X - X_current) / (X_current - X_previous);
@@ -220,7 +222,7 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   for (const std::size_t i : order) {
     Snapshot& snap = out.series[i];
     snap.t = options.times[i];
-    const double X = pbar0 * creep.creep(snap.t);
+    const double X = load(snap.t);
     if (!two_level || snap.t < t_start) {
       snap.a1 = single.contact_radius(X);
       snap.a2 = 0.0;

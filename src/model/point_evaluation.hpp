@@ -6,6 +6,7 @@
 
 #include "model/contact_problem.hpp"
 #include "model/creep_law.hpp"
+#include "model/elastic_two_level.hpp"
 #include "model/load_history.hpp"
 #include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
@@ -52,7 +53,7 @@ struct PointSummary {
 
   /// Start of the two-level phase (t_start = t*, or 0 when immediate).
   double t_start = 0.0;
-  double X_start = 0.0;          ///< pbar0 J(t_start), in E0*
+  double X_start = 0.0;          ///< creep-weighted load X(t_start), in E0*
   TwoLevelState start;
   bool start_ok = true;
 

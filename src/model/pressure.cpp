@@ -53,6 +53,7 @@ double punch_pressure_shape(int s, double r, double a) {
 Level1Pressure::Level1Pressure(const ContactProblem& problem, const CreepLaw& creep)
     : problem_(problem),
       creep_(creep),
+      load_(creep, problem.pbar0),
       single_(problem.l, problem.shape),
       A1_(Lattice{problem.l}.A1_single()) {}
 
@@ -67,20 +68,20 @@ double Level1Pressure::creep_scaled(double r, double a1, double X) const {
 }
 
 double Level1Pressure::contact_radius(double t) const {
-  return single_.contact_radius(problem_.pbar0 * creep_.creep(t));
+  return single_.contact_radius(load_(t));
 }
 
 double Level1Pressure::at(double r, double t) const {
-  const double X_t = problem_.pbar0 * creep_.creep(t);
+  const double X_t = load_(t);
   const double a_t = single_.contact_radius(X_t);
   if (!(r < a_t)) return 0.0;
   // The spot edge passes r at tau_r (0 if r was inside from the start); before that q = 0,
   // after it q grows like sqrt(tau - tau_r), hence the sqrt variable.
-  const double J_r = single_.creep_scaled_pressure(r) / problem_.pbar0;
-  const double tau_r = J_r <= creep_.creep_initial() ? 0.0 : creep_.time_at_creep(J_r);
+  const double g_r = single_.creep_scaled_pressure(r) / load_.pbar0();
+  const double tau_r = g_r <= load_.response_initial() ? 0.0 : load_.time_at_response(g_r);
   const double tau_min = std::max(tau_r, t - creep_.relaxation_memory());
   auto q_at = [&](double v) {
-    const double X = problem_.pbar0 * creep_.creep(tau_r + v * v);
+    const double X = load_(tau_r + v * v);
     return creep_scaled(r, single_.contact_radius(X), X);
   };
   const double v_hi = std::sqrt(std::max(t - tau_r, 0.0));

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "model/contact_problem.hpp"
-#include "model/creep_law.hpp"
+#include "model/creep_weighted_load.hpp"
 #include "model/single_level.hpp"
 
 namespace punchsweep::model {
@@ -14,7 +14,7 @@ double punch_pressure_shape(int s, double r, double a);
 
 /// Contact pressure under a level-1 punch during the single-level phase, eq (9.4):
 ///   p(r, t) = int_0-^t E(t - tau) d/dtau q(r, tau) = E(0) q(r, t) + int E'(t - tau) q dtau,
-/// with q the elastic pressure at the creep-scaled load X = pbar0 J(tau): punch term, the
+/// with q the elastic pressure at the creep-weighted load X(tau) (pbar0 J(tau) for a step): punch term, the
 /// four level-1 neighbours as a ring load on radius l, and the nominal pressure outside
 /// A1 = sqrt(5/pi) l. Meaningful while only level 1 touches (t <= t*, or always when
 /// level 2 never touches).
@@ -39,6 +39,7 @@ class Level1Pressure {
  private:
   ContactProblem problem_;
   const CreepLaw& creep_;
+  CreepWeightedLoad load_;  ///< a step of problem.pbar0 on creep_
   SingleLevel single_;
   double A1_;
 };

@@ -24,18 +24,18 @@ Touchdown touchdown(const SingleLevel& single, double dh) {
   return t;
 }
 
-Classification classify(const Touchdown& touch, double pbar0, const CreepLaw& creep) {
+Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
   Classification out;
   out.a1_star = touch.a1_star;
   out.X_star = touch.X_star;
-  out.J_star = touch.X_star / pbar0;
-  if (out.J_star <= creep.creep_initial()) {
+  out.J_star = touch.X_star / load.pbar0();
+  if (out.J_star <= load.response_initial()) {
     out.regime = Regime::immediate;
     out.t_star = 0.0;
   } else {
-    // J* = J(inf) exactly would mean touching only as t -> infinity: that is "never".
-    out.t_star = out.J_star < creep.creep_final() ? std::max(0.0, creep.time_at_creep(out.J_star))
-                                                  : std::numeric_limits<double>::infinity();
+    // g* = g(inf) exactly would mean touching only as t -> infinity: that is "never".
+    out.t_star = out.J_star < load.response_final() ? std::max(0.0, load.time_at_response(out.J_star))
+                                                    : std::numeric_limits<double>::infinity();
     out.regime = std::isfinite(out.t_star) ? Regime::delayed : Regime::never;
   }
   return out;
@@ -43,7 +43,7 @@ Classification classify(const Touchdown& touch, double pbar0, const CreepLaw& cr
 
 Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
   const SingleLevel single(problem.l, problem.shape);
-  return classify(touchdown(single, problem.dh), problem.pbar0, creep);
+  return classify(touchdown(single, problem.dh), CreepWeightedLoad(creep, problem.pbar0));
 }
 
 }  // namespace punchsweep::model

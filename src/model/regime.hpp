@@ -4,11 +4,11 @@
 #include <string_view>
 
 #include "model/contact_problem.hpp"
-#include "model/creep_law.hpp"
+#include "model/creep_weighted_load.hpp"
 
 namespace punchsweep::model {
 
-/// When level 2 touches (model notes, section 4). The integer codes are a file format
+/// When level 2 touches (docs/model.md, section 4). The integer codes are a file format
 /// contract (the regime map stores them); never renumber.
 enum class Regime : std::int8_t {
   immediate = 0,  ///< h(0) >= dh: at once, t* = 0
@@ -18,15 +18,16 @@ enum class Regime : std::int8_t {
 
 std::string_view regime_name(Regime regime);
 
-/// Regime and t* of one point, from a single root: the level-1 radius a1* with h(a1*) = dh
-/// gives the creep J* = X(a1*)/pbar0 at which level 2 touches; comparing J* with J(0) and
-/// J(inf) classifies, and t* = J^-1(J*).
+/// Regime and t* of one point, from a single root (docs/model.md, section 10): the level-1
+/// radius a1* with h(a1*) = dh gives the creep-weighted load X* at which level 2 touches;
+/// comparing g* = X*/pbar0 with g(0+) and g(inf) classifies, and t* = g^-1(g*) (for a step
+/// g = J, so g* = J*).
 struct Classification {
   Regime regime = Regime::never;
   double t_star = 0.0;  ///< in T_eps; 0 for immediate, +infinity for never
   double a1_star = 0.0; ///< level-1 radius at touchdown, in R (0 when dh = 0)
-  double J_star = 0.0;  ///< creep at touchdown, in 1/E0*
-  double X_star = 0.0;  ///< creep-scaled pressure at touchdown, pbar0 J*, in E0*
+  double J_star = 0.0;  ///< g* = X*/pbar0 at touchdown (the creep J* for a step), in 1/E0*
+  double X_star = 0.0;  ///< creep-weighted load at touchdown, in E0*
 };
 
 /// Where level 2 touches along the single-level solution: the level-1 radius a1* with
@@ -42,7 +43,7 @@ class SingleLevel;
 Touchdown touchdown(const SingleLevel& single, double dh);
 
 /// Classifies from a touchdown point: cheap (no root).
-Classification classify(const Touchdown& touch, double pbar0, const CreepLaw& creep);
+Classification classify(const Touchdown& touch, const CreepWeightedLoad& load);
 
 /// Classifies one point (the problem must satisfy problem_error() == "").
 Classification classify(const ContactProblem& problem, const CreepLaw& creep);

@@ -12,9 +12,10 @@ namespace punchsweep::model {
 inline constexpr int kKernelNodes = 16;
 
 /// Longest time one Gauss piece spans: 2 relaxation time scales (16 points integrate
-/// exp(-x) over 2 units to machine precision), and at most 1 T_eps (J varies on that scale).
+/// exp(-x) over 2 units to machine precision), and at most one creep time scale (J, and
+/// so Q, varies on that scale; T_eps for the standard linear solid).
 inline double kernel_piece_span(const CreepLaw& creep) {
-  return std::min(2.0 * creep.relaxation_time_scale(), 1.0);
+  return std::min(2.0 * creep.relaxation_time_scale(), creep.creep_time_scale());
 }
 
 /// int E'(t - tau(u)) f(u) tau'(u) du over [u_a, u_b] by 16-point Gauss pieces, as many as

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Ring-load and nominal-pressure identities of the localization method (model notes,
+/// Ring-load and nominal-pressure identities of the localization method (docs/model.md,
 /// section 3), for a punch of contact radius a. E* = 1 in our units, so loads and
 /// "creep-scaled" loads Q = int J dP enter the same way.
 

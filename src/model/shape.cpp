@@ -4,17 +4,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/parameters.hpp"
+
 namespace punchsweep::model {
 
 std::string shape_error(const Shape& shape) {
-  if (shape.s < Shape::kMinExponent || shape.s > Shape::kMaxExponent) {
-    return "shape exponent s = " + std::to_string(shape.s) + " is outside its range: an integer in [" +
-           std::to_string(Shape::kMinExponent) + ", " + std::to_string(Shape::kMaxExponent) + "]";
-  }
-  if (!(shape.C > 0.0) || !std::isfinite(shape.C)) {
-    return "shape constant C = " + std::to_string(shape.C) + " is outside its range: C > 0";
-  }
-  return {};
+  if (std::string e = find_parameter(kExponent)->error(shape.s); !e.empty()) return e;
+  return find_parameter(kShapeConstant)->error(shape.C);
 }
 
 namespace {

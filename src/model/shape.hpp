@@ -4,7 +4,7 @@
 
 namespace punchsweep::model {
 
-/// Punch profile f(r) = C r^s / R^(s-1) (model notes, section 2).
+/// Punch profile f(r) = C r^s / R^(s-1) (docs/model.md, section 2).
 struct Shape {
   int s = 2;        ///< shape exponent, an integer in [kMinExponent, kMaxExponent]
   double C = 0.5;   ///< dimensionless shape constant, C > 0 (sphere: s = 2, C = 1/2)

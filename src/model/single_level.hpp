@@ -5,7 +5,7 @@
 
 namespace punchsweep::model {
 
-/// The single-level phase: only level-1 punches touch (model notes, section 4).
+/// The single-level phase: only level-1 punches touch (docs/model.md, section 4).
 ///
 /// "Creep-scaled nominal pressure" X = pbar0 J(t) is the only way time enters: the
 /// contact radius and h are functions of X alone. Everything is solved in the scaled
@@ -26,7 +26,7 @@ class SingleLevel {
   static double D_rate(double x);
 
   /// Contact radius a1 of a level-1 punch at creep-scaled pressure X = pbar0 J,
-  /// eq (9.5) with the model-notes correction. Always in (0, kScaledRadiusLimit l).
+  /// eq (9.5) with the misprint corrected (docs/model.md, section 8). Always in (0, kScaledRadiusLimit l).
   double contact_radius(double X) const;
 
   /// X = pbar0 J at which the contact radius is a1 (eq 9.5 solved for X).

@@ -1,18 +1,26 @@
 #include "model/standard_linear_solid.hpp"
 
+#include "model/parameters.hpp"
+
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 namespace punchsweep::model {
 
-std::string creep_ratio_error(double creep_ratio) {
-  if (std::isfinite(creep_ratio) && creep_ratio >= StandardLinearSolid::kMinCreepRatio) {
-    return {};
-  }
-  std::ostringstream out;
-  out << "creep ratio T = " << creep_ratio << " is outside its range: T = T_eps/T_sigma >= 1";
-  return out.str();
+const Parameter& creep_ratio_parameter() {
+  static const Parameter kCreepRatio{
+      "T",
+      "1",
+      "creep ratio T_eps/T_sigma",
+      "creep ratio T = T_eps/T_sigma of the standard linear solid (dimensionless; J(inf) = T/E0*; T = 1 is "
+      "elastic)",
+      "T >= 1 (T = T_eps/T_sigma)",
+      [](double T) { return T >= StandardLinearSolid::kMinCreepRatio; },
+      false,
+      {},
+      "linspace(2, 10, 9)"};
+  return kCreepRatio;
 }
 
 StandardLinearSolid::StandardLinearSolid(double creep_ratio) : T_(creep_ratio) {}
@@ -32,6 +40,10 @@ double StandardLinearSolid::time_at_creep(double J) const {
   if (J >= T_) return std::numeric_limits<double>::infinity();
   // J = T - (T-1) e^{-t}  =>  t = -log((T - J)/(T - 1)); log1p keeps digits for J near 1.
   return -std::log1p((1.0 - J) / (T_ - 1.0));
+}
+
+std::optional<RetardationSeries> StandardLinearSolid::retardation_series() const {
+  return RetardationSeries{T_, {{T_ - 1.0, 1.0}}};
 }
 
 std::string StandardLinearSolid::describe() const {

@@ -4,7 +4,7 @@
 
 namespace punchsweep::model {
 
-/// Standard linear solid (eq 9.11, model notes section 4):
+/// Standard linear solid (eq 9.11, docs/model.md, section 4):
 ///   J(t) = T - (T - 1) exp(-t),   E(t) = 1/T + (1 - 1/T) exp(-T t),
 /// with T = T_eps / T_sigma >= 1 (T = 1 is an elastic material).
 class StandardLinearSolid final : public CreepLaw {
@@ -12,7 +12,7 @@ class StandardLinearSolid final : public CreepLaw {
   /// Smallest admissible creep ratio.
   static constexpr double kMinCreepRatio = 1.0;
 
-  /// @param creep_ratio T = T_eps / T_sigma; must be finite and >= 1 (see creep_ratio_error).
+  /// @param creep_ratio T = T_eps / T_sigma; must be finite and >= 1 (creep_ratio_parameter).
   explicit StandardLinearSolid(double creep_ratio);
 
   double creep(double t) const override;
@@ -22,6 +22,10 @@ class StandardLinearSolid final : public CreepLaw {
   double creep_final() const override { return T_; }
   double time_at_creep(double J) const override;
   double relaxation_time_scale() const override { return 1.0 / T_; }
+  /// The one retardation time, T_eps (the unit of time).
+  double creep_time_scale() const override { return 1.0; }
+  /// J(t) = T - (T - 1) exp(-t): one term, J_1 = T - 1, lambda_1 = 1 (T_eps).
+  std::optional<RetardationSeries> retardation_series() const override;
   /// exp(-40) < 1e-17: dE/dt is negligible after 40 relaxation times T_sigma = 1/T.
   double relaxation_memory() const override { return 40.0 / T_; }
   std::string describe() const override;
@@ -32,7 +36,8 @@ class StandardLinearSolid final : public CreepLaw {
   double T_;
 };
 
-/// Empty when T is admissible, else a sentence naming T and its range.
-std::string creep_ratio_error(double creep_ratio);
+struct Parameter;
+/// T, the standard linear solid's one parameter (model/parameters.hpp).
+const Parameter& creep_ratio_parameter();
 
 }  // namespace punchsweep::model

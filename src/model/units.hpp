@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Units of the whole physics layer (model notes, section 1). Stated here once:
+/// Units of the whole physics layer (docs/model.md, section 1). Stated here once:
 ///   lengths      in R, the characteristic punch size;
 ///   pressures    in E0* = E0 / (1 - nu^2), the instantaneous plane-strain modulus;
 ///   point loads  in R^2 E0*;

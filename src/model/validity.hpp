@@ -5,7 +5,7 @@
 
 namespace punchsweep::model {
 
-/// Why a result may not be trusted (model notes, section 7). The integer codes are a file
+/// Why a result may not be trusted (docs/model.md, section 7). The integer codes are a file
 /// format contract (the regime map stores them); never renumber.
 enum class Validity : std::int8_t {
   valid = 0,

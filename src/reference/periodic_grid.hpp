@@ -42,12 +42,12 @@ std::string grid_error(const PeriodicGrid& grid);
 /// d wrapped into [-L/2, L/2]: the offset to the nearest periodic image.
 double periodic_offset(double d, double L);
 
-/// Profile of one punch centred at (cx, cy), f(r) = C r^s / R^(s-1) with R = 1 (model notes,
+/// Profile of one punch centred at (cx, cy), f(r) = C r^s / R^(s-1) with R = 1 (docs/model.md,
 /// section 2), r the distance to the nearest periodic image of the centre.
 std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& shape, double cx,
                                   double cy);
 
-/// The periodic unit cell of the two-level square lattice (model notes, section 3): the
+/// The periodic unit cell of the two-level square lattice (docs/model.md, section 3): the
 /// l x l square with the level-1 punch at the corners (0, 0) and the level-2 punch, lower by
 /// dh, at the centre (l/2, l/2).
 struct TwoLevelCell {

@@ -229,4 +229,15 @@ double elastic_touchdown_compliance(const model::ContactProblem& problem, int n,
   return 0.5 * (J_lo + J_hi);
 }
 
+model::PointResult as_point_result(const ReferenceResult& result) {
+  model::PointResult point;
+  point.regime = result.regime;
+  point.t_star = result.t_star;
+  point.series.reserve(result.series.size());
+  for (const ReferenceSnapshot& snap : result.series) {
+    point.series.push_back(model::Snapshot{snap.t, snap.a1, snap.a2, snap.P1, snap.P2, snap.area_fraction});
+  }
+  return point;
+}
+
 }  // namespace punchsweep::reference

@@ -13,6 +13,7 @@
 
 #include "model/contact_problem.hpp"
 #include "model/creep_law.hpp"
+#include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
@@ -76,6 +77,10 @@ struct ReferenceResult {
   bool converged = true;      ///< every solve met the tolerance
   double spacing = 0.0;       ///< grid spacing l / n, in R
 };
+
+/// The reference's answer in the model's terms: its regime, t* and, per snapshot, t, a1,
+/// a2, P1, P2 and the area fraction (what map::kQuantities reads for the bem_* variables).
+model::PointResult as_point_result(const ReferenceResult& result);
 
 /// Measures a contact state of a two-level cell (pressure p and displacement u on its grid).
 ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double> p,

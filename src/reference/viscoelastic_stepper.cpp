@@ -2,24 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "model/gauss_legendre.hpp"
-#include "model/standard_linear_solid.hpp"
 
 namespace punchsweep::reference {
 
 namespace {
 
 /// Points of the Gauss-Legendre rule for the step weights: exact for polynomials of degree
-/// 15, so to round-off for the exponential J of the standard linear solid over steps <= 1.
+/// 15, so to round-off for an exponential J over steps up to its retardation time.
 constexpr int kWeightQuadraturePoints = 8;
 
 CreepHistoryForm natural_form(const model::CreepLaw& creep) {
-  return dynamic_cast<const model::StandardLinearSolid*>(&creep) != nullptr
-             ? CreepHistoryForm::exponential
-             : CreepHistoryForm::convolution;
+  return creep.retardation_series() ? CreepHistoryForm::exponential : CreepHistoryForm::convolution;
 }
 
 }  // namespace
@@ -49,12 +47,11 @@ ViscoelasticStepper::ViscoelasticStepper(const PeriodicGrid& grid, std::vector<d
   }
   if (!(mean_pressure > 0.0)) throw std::invalid_argument("ViscoelasticStepper: pbar0 must be > 0");
   if (form_ == CreepHistoryForm::exponential) {
-    const auto* sls = dynamic_cast<const model::StandardLinearSolid*>(&creep);
-    if (sls == nullptr) {
-      throw std::invalid_argument(
-          "ViscoelasticStepper: the exponential form needs a standard linear solid");
+    std::optional<model::RetardationSeries> series = creep.retardation_series();
+    if (!series || series->terms.empty()) {
+      throw std::invalid_argument("ViscoelasticStepper: the exponential form needs a law with a retardation series");
     }
-    T_ = sls->creep_ratio();
+    series_ = std::move(*series);
   }
 }
 
@@ -71,8 +68,12 @@ double ViscoelasticStepper::mean_creep(double t_end, double a, double b) const {
 
 double ViscoelasticStepper::step_compliance(double dt) const {
   if (form_ == CreepHistoryForm::exponential) {
-    const double b = -std::expm1(-dt) / dt;
-    return T_ - (T_ - 1.0) * b;
+    double decayed = 0.0;  // sum_k J_k b_k
+    for (const model::RetardationSeries::Term& term : series_.terms) {
+      const double x = dt / term.lambda;
+      decayed += term.J * (-std::expm1(-x) / x);
+    }
+    return series_.J_final - decayed;
   }
   return mean_creep(t_ + dt, t_, t_ + dt);
 }
@@ -85,7 +86,7 @@ ContactStatus ViscoelasticStepper::start() {
   approach_ = status.approach;
   for (std::size_t i = 0; i < p_.size(); ++i) w_[i] = J0 * p_[i];
   if (form_ == CreepHistoryForm::exponential) {
-    q_ = p_;  // q(0+) = p(0): the load is applied as a step at t = 0
+    q_.assign(series_.terms.size(), p_);  // q_k(0+) = p(0): the load is applied as a step at t = 0
   } else {
     times_.assign(1, 0.0);
     history_.assign(1, p_);
@@ -102,12 +103,22 @@ ContactStatus ViscoelasticStepper::advance(double t_next) {
   const double J_step = step_compliance(dt);
 
   // History part of w(t_next): everything but J_step p(t_next).
-  double decay = 0.0;
-  double ramp = 0.0;
+  const std::size_t terms = form_ == CreepHistoryForm::exponential ? series_.terms.size() : 0;
+  std::vector<double> decay(terms);
+  std::vector<double> ramp(terms);
   if (form_ == CreepHistoryForm::exponential) {
-    decay = std::exp(-dt);
-    ramp = -std::expm1(-dt) / dt;
-    for (std::size_t i = 0; i < n; ++i) w_hist_[i] = (T_ - 1.0) * (ramp * p_[i] - decay * q_[i]);
+    for (std::size_t k = 0; k < terms; ++k) {
+      const model::RetardationSeries::Term& term = series_.terms[k];
+      const double x = dt / term.lambda;
+      decay[k] = std::exp(-x);
+      ramp[k] = -std::expm1(-x) / x;
+      const std::vector<double>& q = q_[k];
+      if (k == 0) {
+        for (std::size_t i = 0; i < n; ++i) w_hist_[i] = term.J * (ramp[k] * p_[i] - decay[k] * q[i]);
+      } else {
+        for (std::size_t i = 0; i < n; ++i) w_hist_[i] += term.J * (ramp[k] * p_[i] - decay[k] * q[i]);
+      }
+    }
   } else {
     const double J_jump = creep_.creep(t_next);  // the step load p(t_0) at t_0 = 0
     const std::vector<double>& p0 = history_.front();
@@ -129,7 +140,10 @@ ContactStatus ViscoelasticStepper::advance(double t_next) {
     w_[i] = J_step * p_next[i] + w_hist_[i];
   }
   if (form_ == CreepHistoryForm::exponential) {
-    for (std::size_t i = 0; i < n; ++i) q_[i] = decay * q_[i] + ramp * (p_next[i] - p_[i]);
+    for (std::size_t k = 0; k < terms; ++k) {
+      std::vector<double>& q = q_[k];
+      for (std::size_t i = 0; i < n; ++i) q[i] = decay[k] * q[i] + ramp[k] * (p_next[i] - p_[i]);
+    }
   } else {
     times_.push_back(t_next);
     history_.push_back(p_next);

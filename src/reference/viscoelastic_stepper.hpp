@@ -16,8 +16,10 @@ namespace punchsweep::reference {
 
 /// How the creep integral's history is carried.
 enum class CreepHistoryForm {
-  /// Standard linear solid: one exponential internal variable per node, updated exactly for
-  /// a pressure history linear in each step (O(nodes) memory and work per step).
+  /// A law that is a retardation series (CreepLaw::retardation_series: the standard linear
+  /// solid, Prony and Kelvin series): one exponential internal variable per term and node,
+  /// updated exactly for a pressure history linear in each step (O(terms x nodes) memory
+  /// and work per step).
   exponential,
   /// Any creep law: the convolution with J over the stored pressure history, with the
   /// exact weights int J(t - tau) dtau of each step by 8-point Gauss-Legendre
@@ -26,15 +28,17 @@ enum class CreepHistoryForm {
 };
 
 /// The surface response u(t) = K w(t), w(t) = int_0-^t J(t - tau) dp(tau) (K: the E* = 1
-/// influence; the "creep-scaled pressure" w is Q of the model notes, node by node), under a
+/// influence; the "creep-scaled pressure" w is Q of docs/model.md, node by node), under a
 /// constant mean pressure pbar0 (the paper's constant nominal pressure).
 ///
 /// The pressure history is taken piecewise linear in time, so each step is
 ///   w(t_n+1) = J_step p(t_n+1) + w_hist,   J_step = (1/dt) int_0^dt J(s) ds,
 /// with w_hist known from the history: one elastic contact solve with compliance J_step
-/// against the profile shifted by K w_hist. For the standard linear solid
-/// J = T - (T - 1) e^-t, w_hist = (T - 1)(b p_n - e^-dt q_n), b = (1 - e^-dt)/dt, and the
-/// internal variable q = int e^-(t - tau) dp(tau) steps as q_n+1 = e^-dt q_n + b (p_n+1 - p_n).
+/// against the profile shifted by K w_hist. For a retardation series
+/// J = J(inf) - sum_k J_k e^(-t/lambda_k) (the standard linear solid: J(inf) = T, one term
+/// J_1 = T - 1, lambda_1 = 1), w_hist = sum_k J_k (b_k p_n - e^(-dt/lambda_k) q_k,n) with
+/// b_k = (1 - e^(-x))/x, x = dt/lambda_k, and each internal variable
+/// q_k = int e^-((t - tau)/lambda_k) dp(tau) steps as q_k,n+1 = e^(-x) q_k,n + b_k (p_n+1 - p_n).
 /// The step is second order in dt where p(t) is smooth (measured: see the tests). Under a
 /// constant mean pressure with a growing contact, w itself has no time-step error (its mean
 /// is pbar0 J(t) exactly and it solves the elastic problem at J(t) on the contact set), so
@@ -46,8 +50,8 @@ class ViscoelasticStepper {
  public:
   /// @param profile   initial separation at zero approach (grid.size() values, in R)
   /// @param mean_pressure  constant nominal pressure pbar0 > 0
-  /// @param creep     the material; the standard linear solid gets the exponential form
-  ///                  unless `form` asks for the convolution (kept for cross-checks)
+  /// @param creep     the material; a law with a retardation series gets the exponential
+  ///                  form unless `form` asks for the convolution (kept for cross-checks)
   ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile, double mean_pressure,
                       const model::CreepLaw& creep, ContactSolverOptions options = {});
   ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile, double mean_pressure,
@@ -62,7 +66,8 @@ class ViscoelasticStepper {
   /// What rewind() needs to return to the present state.
   struct Checkpoint {
     double t = 0.0;
-    std::vector<double> p, w, u, q;
+    std::vector<double> p, w, u;
+    std::vector<std::vector<double>> q;
     double approach = 0.0;
     std::size_t history_length = 0;
   };
@@ -91,13 +96,13 @@ class ViscoelasticStepper {
   double pbar0_;
   const model::CreepLaw& creep_;
   CreepHistoryForm form_;
-  double T_ = 1.0;  ///< J(inf) of the standard linear solid (exponential form)
+  model::RetardationSeries series_;  ///< exponential form: the law's terms
   bool started_ = false;
 
   double t_ = 0.0;
   std::vector<double> p_, w_, u_;
   double approach_ = 0.0;
-  std::vector<double> q_;                     ///< exponential form: int e^-(t-tau) dp
+  std::vector<std::vector<double>> q_;        ///< exponential form, per term: int e^-((t-tau)/lambda_k) dp
   std::vector<double> times_;                 ///< convolution form: t_0 .. t_n
   std::vector<std::vector<double>> history_;  ///< convolution form: p(t_0) .. p(t_n)
 

@@ -1,4 +1,4 @@
-#include "app/progress.hpp"
+#include "run/progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-namespace punchsweep::app {
+namespace punchsweep::run {
 namespace {
 
 std::string duration(double seconds) {
@@ -85,4 +85,4 @@ void Progress::print_summary(int ranks) const {
   out_ << std::flush;
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::run

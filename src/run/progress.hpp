@@ -7,7 +7,7 @@
 
 #include "io/encoded_tile.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::run {
 
 /// Progress and end-of-run summary of a sweep, printed by rank 0 to a stream (stderr):
 /// at most one line a second with points done / total, percent, points/s and ETA, and with
@@ -53,4 +53,4 @@ class Progress {
   std::size_t bem_agreeing_ = 0;
 };
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::run

@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "io/encoded_tile.hpp"
-
 namespace punchsweep::sweep {
 namespace {
 
@@ -54,10 +52,9 @@ class Outbox {
 
 /// Worker side: computes and encodes the tiles it is sent, one result message per tile,
 /// until told to stop.
-void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator, io::TileEncoder& encoder) {
+void work(MPI_Comm comm, const TileWork& compute) {
   std::deque<std::uint64_t> pending;
   bool stop = false;
-  io::TileData data;
   Outbox outbox;
   while (!stop) {
     // Block only when there is nothing to compute.
@@ -81,9 +78,7 @@ void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator, i
     if (stop || pending.empty()) continue;
     const std::uint64_t tile = pending.front();
     pending.pop_front();
-    const TileBox box = tiling.box(tile);
-    evaluator.evaluate(box, &data);
-    outbox.send(io::pack_encoded_tile(encoder.encode(tile, box, data)), comm);
+    outbox.send(compute(tile), comm);
     outbox.release_finished();
   }
   outbox.wait_all();
@@ -92,9 +87,9 @@ void work(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator, i
 
 class Manager {
  public:
-  Manager(MPI_Comm comm, int ranks, const Tiling& tiling, const TileEvaluator& evaluator,
-          io::TileEncoder& encoder, const std::vector<std::size_t>& pending, const TileSink& sink)
-      : comm_(comm), ranks_(ranks), tiling_(tiling), evaluator_(evaluator), encoder_(encoder), sink_(sink),
+  Manager(MPI_Comm comm, int ranks, const TileWork& compute, const std::vector<std::size_t>& pending,
+          const TileSink& sink)
+      : comm_(comm), ranks_(ranks), compute_(compute), sink_(sink),
         queue_(pending.begin(), pending.end()), outstanding_(static_cast<std::size_t>(ranks), 0),
         to_do_(pending.size()) {}
 
@@ -149,9 +144,7 @@ class Manager {
   void compute_one() {
     const std::size_t tile = queue_.front();
     queue_.pop_front();
-    const TileBox box = tiling_.box(tile);
-    evaluator_.evaluate(box, &data_);
-    sink_(encoder_.encode(tile, box, data_));
+    sink_(compute_(tile));
     ++result_.tiles_done;
   }
 
@@ -177,7 +170,7 @@ class Manager {
         ++done_;
         continue;
       }
-      sink_(io::unpack_encoded_tile(buffer_.data(), buffer_.size()));
+      sink_(buffer_);
       ++result_.tiles_done;
       // Keep about two batches of work queued at the worker, so it never waits for us.
       auto& out = outstanding_[static_cast<std::size_t>(worker)];
@@ -188,34 +181,30 @@ class Manager {
 
   MPI_Comm comm_;
   int ranks_;
-  const Tiling& tiling_;
-  const TileEvaluator& evaluator_;
-  io::TileEncoder& encoder_;
+  const TileWork& compute_;
   const TileSink& sink_;
   std::deque<std::size_t> queue_;
   std::vector<std::size_t> outstanding_;
   std::size_t to_do_;
   bool stopping_ = false;
   int done_ = 0;
-  io::TileData data_;
   std::vector<std::byte> buffer_;
   ScheduleResult result_;
 };
 
 }  // namespace
 
-ScheduleResult run_schedule(MPI_Comm comm, const Tiling& tiling, const TileEvaluator& evaluator,
-                            io::TileEncoder& encoder, const std::vector<std::size_t>& pending,
+ScheduleResult run_schedule(MPI_Comm comm, const std::vector<std::size_t>& pending, const TileWork& work_on,
                             const TileSink& sink, const volatile std::sig_atomic_t* stop) {
   int rank = 0;
   int ranks = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &ranks);
   if (rank != 0) {
-    work(comm, tiling, evaluator, encoder);
+    work(comm, work_on);
     return {};
   }
-  return Manager(comm, ranks, tiling, evaluator, encoder, pending, sink).run(stop);
+  return Manager(comm, ranks, work_on, pending, sink).run(stop);
 }
 
 }  // namespace punchsweep::sweep

@@ -7,12 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "sweep/grid.hpp"
+#include "map/grid.hpp"
+#include "map/quantities.hpp"
+#include "model/creep_laws.hpp"
 
 namespace punchsweep::sweep {
-
-/// What the map stores: the 5-D regime variables only, or also the time series.
-enum class Quantities { regime, full };
 
 /// The reference solver a sweep evaluates beside the model: none, or the periodic
 /// boundary-element solver (src/reference), whose results go to the map's bem_* variables.
@@ -43,12 +42,13 @@ struct ReferenceConfig {
 /// A fully resolved, validated `punchsweep sweep` configuration (defaults, INI file and
 /// command-line overrides merged; the command line wins).
 struct SweepConfig {
-  Grid grid;                          ///< [grid] l, dh, T, pbar, s
+  map::Grid grid;                     ///< [grid]: model::sweep_axes of the creep law, in that order
   double C = 0.5;                     ///< [model] C: shape constant, > 0
-  std::string creep_law = "standard_linear_solid";  ///< [model] creep_law (only this one now)
+  /// [model] creep_law: one of model::creep_laws(); the grid's axes include its parameters.
+  const model::CreepLawSpec* creep_law = &model::creep_laws().front();
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps
   std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
-  Quantities quantities = Quantities::full;  ///< [output] quantities
+  map::Quantities quantities = map::Quantities::full;  ///< [output] quantities
   std::size_t chunk = 4096;           ///< [run] chunk: target points per tile / HDF5 chunk
   ReferenceConfig reference;          ///< [reference] method, grid, sample, seed
   bool resume = false;                ///< [run] resume

@@ -1,50 +1,90 @@
 #include "sweep/tile_evaluator.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <utility>
 
 #include "model/point_evaluation.hpp"
 #include "model/single_level.hpp"
-#include "model/standard_linear_solid.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::sweep {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Copies a series of snapshots (the model's or the reference's: each has a1, a2, P1, P2 and
-// area_fraction) into the tile's arrays a1, a2, P1, P2, area_fraction at point i.
-template <class Snapshots>
-void store_series(const Snapshots& series, std::size_t i, const std::array<std::vector<double>*, 5>& arrays) {
-  const std::size_t nt = series.size();
-  for (std::size_t it = 0; it < nt; ++it) {
-    const auto& snap = series[it];
-    const double values[5] = {snap.a1, snap.a2, snap.P1, snap.P2, snap.area_fraction};
-    for (std::size_t v = 0; v < 5; ++v) (*arrays[v])[i * nt + it] = values[v];
-  }
-}
-
 // Above this many entries the run-wide caches would cost more memory than they save.
 constexpr std::size_t kMaxCacheEntries = std::size_t{1} << 24;
 
+// Stores the per-point quantities of `source` that `summary` gives, at point i. Unrolled
+// over kQuantities at compile time, so each is a direct (inlined) read of the result.
+template <map::Source source, std::size_t... Q>
+void store_point(const model::PointSummary& summary, std::size_t i, map::TileData* out,
+                 std::index_sequence<Q...>) {
+  const auto one = [&]<std::size_t q>() {
+    constexpr map::QuantitySpec spec = map::kQuantities[q];
+    if constexpr (spec.source == source && spec.extent == map::Extent::point) {
+      if constexpr (spec.kind == map::Kind::flag) {
+        out->codes[q][i] = spec.code(summary);
+      } else {
+        out->reals[q][i] = spec.value(summary);
+      }
+    }
+  };
+  (one.template operator()<Q>(), ...);
+}
+
+// Stores the series quantities of `source` from `series` at point i.
+template <map::Source source, std::size_t... Q>
+void store_series(const std::vector<model::Snapshot>& series, std::size_t i, map::TileData* out,
+                  std::index_sequence<Q...>) {
+  const std::size_t nt = series.size();
+  const auto one = [&]<std::size_t q>() {
+    constexpr map::QuantitySpec spec = map::kQuantities[q];
+    if constexpr (spec.source == source && spec.extent == map::Extent::series) {
+      for (std::size_t it = 0; it < nt; ++it) out->reals[q][i * nt + it] = spec.series_value(series[it]);
+    }
+  };
+  (one.template operator()<Q>(), ...);
+}
+
+constexpr auto kAll = std::make_index_sequence<map::kQuantityCount>{};
+
+std::size_t require_axis(const map::Grid& grid, std::string_view name) {
+  const std::size_t a = grid.find(name);
+  if (a == grid.rank()) throw std::invalid_argument("sweep: the grid has no axis " + std::string(name));
+  return a;
+}
+
 }  // namespace
 
-TileEvaluator::TileEvaluator(const Grid& grid, double C, std::vector<double> times,
-                             Quantities quantities, const ReferenceConfig& reference)
-    : grid_(grid), C_(C), times_(std::move(times)), quantities_(quantities) {
+TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C,
+                             std::vector<double> times, map::Quantities quantities, const ReferenceConfig& reference)
+    : grid_(grid),
+      law_(law),
+      C_(C),
+      times_(std::move(times)),
+      quantities_(quantities),
+      l_(require_axis(grid, model::kPitch)),
+      dh_(require_axis(grid, model::kHeightDifference)),
+      pbar_(require_axis(grid, model::kPressure)),
+      s_(require_axis(grid, model::kExponent)) {
+  for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
+  if (grid.rank() != 4 + material_.size()) {
+    throw std::invalid_argument("sweep: the grid has axes beyond the model's and the creep law's parameters");
+  }
   if (reference.on()) {
     sample_.emplace(grid.points(), reference.sample, reference.seed);
     reference_options_.n = reference.grid;
     reference_options_.times = times_;
     use_reproducible_fft_plans();
   }
-  const auto n = grid.shape();
-  const std::size_t ends = n[kAxisL] * n[kAxisS] * n[kAxisT] * n[kAxisPbar];
-  const std::size_t touch = n[kAxisL] * n[kAxisS] * n[kAxisDh];
+  const map::Index n = grid.shape();
+  std::size_t materials = 1;
+  for (const std::size_t a : material_) materials *= n[a];
+  const std::size_t ends = n[l_] * n[s_] * materials * n[pbar_];
+  const std::size_t touch = n[l_] * n[s_] * n[dh_];
   cache_ = ends <= kMaxCacheEntries && touch <= kMaxCacheEntries;
   if (cache_) {
     ends_.resize(ends);
@@ -52,98 +92,119 @@ TileEvaluator::TileEvaluator(const Grid& grid, double C, std::vector<double> tim
   }
 }
 
-void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
-  const bool full = quantities_ == Quantities::full;
+void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out) const {
+  const bool full = quantities_ == map::Quantities::full;
   const std::size_t nt = times_.size();
-  out->resize(box.points(), nt, full, sample_.has_value());
-  const auto& c = box.count;
-  const auto value = [&](std::size_t axis, std::size_t i) {
-    return grid_.axes[axis].values[box.start[axis] + i];
-  };
+  out->resize(box.points(), nt, quantities_, sample_.has_value());
+  const map::Index& c = box.count;
+  const auto value = [&](std::size_t axis, std::size_t i) { return grid_.axes[axis].values[box.start[axis] + i]; };
 
-  std::vector<model::StandardLinearSolid> creep;
-  creep.reserve(c[kAxisT]);
-  for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) creep.emplace_back(value(kAxisT, iT));
+  // Row-major strides of the box, and the material combinations of the box (the creep law
+  // at each), numbered row-major over the law's axes.
+  map::Index stride(c.size(), 1);
+  for (std::size_t a = c.size() - 1; a-- > 0;) stride[a] = stride[a + 1] * c[a + 1];
+  const map::Index n = grid_.shape();
+  std::size_t materials = 1;
+  for (const std::size_t a : material_) materials *= c[a];
+  std::vector<std::unique_ptr<model::CreepLaw>> creep(materials);
+  std::vector<std::size_t> material_offset(materials);  // in the box, from the strides
+  std::vector<std::size_t> material_global(materials);  // row-major over the grid's law axes
+  std::vector<double> law_values(material_.size());
+  for (std::size_t m = 0; m < materials; ++m) {
+    std::size_t rest = m;
+    material_offset[m] = 0;
+    for (std::size_t k = material_.size(); k-- > 0; rest /= c[material_[k]]) {
+      const std::size_t a = material_[k];
+      material_offset[m] += (rest % c[a]) * stride[a];
+      law_values[k] = value(a, rest % c[a]);
+    }
+    std::size_t g = 0;
+    rest = m;
+    std::size_t scale = 1;
+    for (std::size_t k = material_.size(); k-- > 0; rest /= c[material_[k]]) {
+      const std::size_t a = material_[k];
+      g += (box.start[a] + rest % c[a]) * scale;
+      scale *= n[a];
+    }
+    material_global[m] = g;
+    creep[m] = model::make_creep_law(law_, law_values);
+  }
+  std::size_t materials_global = 1;
+  for (const std::size_t a : material_) materials_global *= n[a];
   const model::EvaluationOptions options{times_, {}};
 
-  const auto n = grid_.shape();
-  std::vector<model::Touchdown> touch(c[kAxisDh]);
-  std::vector<std::shared_ptr<const model::LongTermGuide>> guide(c[kAxisDh]);
-  std::vector<Ends> ends(c[kAxisT] * c[kAxisPbar]);
-  std::vector<std::optional<model::ElasticTwoLevel>> elastic(c[kAxisDh] * c[kAxisPbar]);
+  std::vector<model::Touchdown> touch(c[dh_]);
+  std::vector<std::shared_ptr<const model::LongTermGuide>> guide(c[dh_]);
+  std::vector<Ends> ends(materials * c[pbar_]);
+  // The elastic start at t = 0 has modulus 1/J(0) = 1 E0* for every material (the unit of
+  // pressure), so it is shared across the material axes.
+  std::vector<std::optional<model::ElasticTwoLevel>> elastic(c[dh_] * c[pbar_]);
 
-  for (std::size_t il = 0; il < c[kAxisL]; ++il) {
-    for (std::size_t is = 0; is < c[kAxisS]; ++is) {
+  for (std::size_t il = 0; il < c[l_]; ++il) {
+    for (std::size_t is = 0; is < c[s_]; ++is) {
       model::ContactProblem problem;
-      problem.l = value(kAxisL, il);
-      problem.shape = model::Shape{static_cast<int>(value(kAxisS, is)), C_};
+      problem.l = value(l_, il);
+      problem.shape = model::Shape{static_cast<int>(value(s_, is)), C_};
       const model::SingleLevel single(problem.l, problem.shape);
-      const std::size_t gl = box.start[kAxisL] + il;
-      const std::size_t gs = box.start[kAxisS] + is;
-      for (std::size_t idh = 0; idh < c[kAxisDh]; ++idh) {
+      const std::size_t gl = box.start[l_] + il;
+      const std::size_t gs = box.start[s_] + is;
+      for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
         Touch scratch;
-        Touch& t = cache_ ? touch_[(gl * n[kAxisS] + gs) * n[kAxisDh] + box.start[kAxisDh] + idh] : scratch;
+        Touch& t = cache_ ? touch_[(gl * n[s_] + gs) * n[dh_] + box.start[dh_] + idh] : scratch;
         if (!t.ready) {
-          const model::Touchdown computed = model::touchdown(single, value(kAxisDh, idh));
+          const model::Touchdown computed = model::touchdown(single, value(dh_, idh));
           model::ContactProblem at_dh = problem;
-          at_dh.dh = value(kAxisDh, idh);
+          at_dh.dh = value(dh_, idh);
           t = Touch{computed, std::make_shared<const model::LongTermGuide>(at_dh), true};
         }
         touch[idh] = t.touchdown;
         guide[idh] = t.guide;
       }
-      for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {
-        for (std::size_t ip = 0; ip < c[kAxisPbar]; ++ip) {
-          Ends& e = ends[iT * c[kAxisPbar] + ip];
+      for (std::size_t m = 0; m < materials; ++m) {
+        for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
+          Ends& e = ends[m * c[pbar_] + ip];
           const std::size_t g =
-              ((gl * n[kAxisS] + gs) * n[kAxisT] + box.start[kAxisT] + iT) * n[kAxisPbar] + box.start[kAxisPbar] + ip;
+              ((gl * n[s_] + gs) * materials_global + material_global[m]) * n[pbar_] + box.start[pbar_] + ip;
           if (cache_ && ends_[g].ready) {
             e = ends_[g];
             continue;
           }
-          problem.pbar0 = value(kAxisPbar, ip);
-          model::single_level_ends(problem, creep[iT], &e.h_0, &e.h_inf, &e.a1_inf_single);
+          problem.pbar0 = value(pbar_, ip);
+          model::single_level_ends(problem, *creep[m], &e.h_0, &e.h_inf, &e.a1_inf_single);
           e.ready = true;
           if (cache_) ends_[g] = e;
         }
       }
       for (auto& e : elastic) e.reset();
 
-      for (std::size_t idh = 0; idh < c[kAxisDh]; ++idh) {
-        problem.dh = value(kAxisDh, idh);
-        for (std::size_t iT = 0; iT < c[kAxisT]; ++iT) {
-          for (std::size_t ip = 0; ip < c[kAxisPbar]; ++ip) {
-            problem.pbar0 = value(kAxisPbar, ip);
-            const Ends& e = ends[iT * c[kAxisPbar] + ip];
+      for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
+        problem.dh = value(dh_, idh);
+        for (std::size_t m = 0; m < materials; ++m) {
+          const model::CreepLaw& law = *creep[m];
+          for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
+            problem.pbar0 = value(pbar_, ip);
+            const Ends& e = ends[m * c[pbar_] + ip];
             model::SummaryParts parts;
-            parts.classification = model::classify(touch[idh], problem.pbar0, creep[iT]);
+            parts.classification = model::classify(touch[idh], model::CreepWeightedLoad(law, problem.pbar0));
             parts.h_0 = e.h_0;
             parts.h_inf = e.h_inf;
             parts.a1_inf_single = e.a1_inf_single;
             parts.guide = guide[idh].get();
             if (parts.classification.regime == model::Regime::immediate) {
-              auto& cached = elastic[idh * c[kAxisPbar] + ip];
-              if (!cached) {
-                cached = model::solve_elastic_two_level(problem, 1.0 / creep[iT].creep_initial(), guide[idh].get());
-              }
+              auto& cached = elastic[idh * c[pbar_] + ip];
+              if (!cached) cached = model::solve_elastic_two_level(problem, 1.0 / law.creep_initial(), guide[idh].get());
               parts.elastic = &*cached;
             }
-            const model::PointSummary summary = model::summarize_point(problem, creep[iT], parts);
+            const model::PointSummary summary = model::summarize_point(problem, law, parts);
 
             const std::size_t i =
-                (((il * c[kAxisDh] + idh) * c[kAxisT] + iT) * c[kAxisPbar] + ip) * c[kAxisS] + is;
-            out->regime[i] = static_cast<std::int8_t>(summary.regime);
-            out->valid[i] = static_cast<std::int8_t>(summary.validity);
-            out->t_star[i] = summary.t_star.value_or(kNaN);
-            out->h_0[i] = summary.h_0;
-            out->h_inf[i] = summary.h_inf;
-            out->a1_inf[i] = summary.a1_inf;
-            out->a2_inf[i] = summary.a2_inf;
-            out->area_fraction_inf[i] = summary.area_fraction_inf;
+                il * stride[l_] + idh * stride[dh_] + material_offset[m] + ip * stride[pbar_] + is * stride[s_];
             if (full) {
-              const model::PointResult r = model::evaluate_point(problem, creep[iT], options, summary);
-              out->valid[i] = static_cast<std::int8_t>(r.validity);  // a series solve may fail
-              store_series(r.series, i, {&out->a1, &out->a2, &out->P1, &out->P2, &out->area_fraction});
+              const model::PointResult r = model::evaluate_point(problem, law, options, summary);
+              store_point<map::Source::model>(r, i, out, kAll);  // a series solve may flag the point
+              store_series<map::Source::model>(r.series, i, out, kAll);
+            } else {
+              store_point<map::Source::model>(summary, i, out, kAll);
             }
           }
         }
@@ -153,26 +214,29 @@ void TileEvaluator::evaluate(const TileBox& box, io::TileData* out) const {
   if (sample_) evaluate_reference(box, out);
 }
 
-void TileEvaluator::evaluate_reference(const TileBox& box, io::TileData* out) const {
-  const auto n = grid_.shape();
-  for (std::size_t i = 0; i < box.points(); ++i) {
-    // The tile's i-th point (row-major over the box) and its flat index in the grid.
-    std::array<std::size_t, kAxes> at{};
-    for (std::size_t a = kAxes, rest = i; a-- > 0; rest /= box.count[a]) at[a] = box.start[a] + rest % box.count[a];
-    std::uint64_t g = 0;
-    for (std::size_t a = 0; a < kAxes; ++a) g = g * n[a] + at[a];
-    if (!sample_->contains(g)) continue;
+model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vector<double>* law_values) const {
+  const auto value = [&](std::size_t axis) { return grid_.axes[axis].values[at[axis]]; };
+  model::ContactProblem problem;
+  problem.l = value(l_);
+  problem.dh = value(dh_);
+  problem.pbar0 = value(pbar_);
+  problem.shape = model::Shape{static_cast<int>(value(s_)), C_};
+  law_values->clear();
+  for (const std::size_t a : material_) law_values->push_back(value(a));
+  return problem;
+}
 
-    model::ContactProblem problem;
-    problem.l = grid_.axes[kAxisL].values[at[kAxisL]];
-    problem.dh = grid_.axes[kAxisDh].values[at[kAxisDh]];
-    problem.pbar0 = grid_.axes[kAxisPbar].values[at[kAxisPbar]];
-    problem.shape = model::Shape{static_cast<int>(grid_.axes[kAxisS].values[at[kAxisS]]), C_};
-    const model::StandardLinearSolid creep(grid_.axes[kAxisT].values[at[kAxisT]]);
-    const reference::ReferenceResult r = reference::evaluate_reference_point(problem, creep, reference_options_);
-    out->bem_regime[i] = static_cast<std::int8_t>(r.regime);
-    out->bem_t_star[i] = r.t_star.value_or(kNaN);
-    store_series(r.series, i, {&out->bem_a1, &out->bem_a2, &out->bem_P1, &out->bem_P2, &out->bem_area_fraction});
+void TileEvaluator::evaluate_reference(const map::TileBox& box, map::TileData* out) const {
+  std::vector<double> law_values;
+  for (std::size_t i = 0; i < box.points(); ++i) {
+    const map::Index at = box.position(i);
+    if (!sample_->contains(grid_.flat_index(at))) continue;
+    const model::ContactProblem problem = problem_at(at, &law_values);
+    const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(law_, law_values);
+    const model::PointResult r =
+        reference::as_point_result(reference::evaluate_reference_point(problem, *creep, reference_options_));
+    store_point<map::Source::bem>(r, i, out, kAll);
+    store_series<map::Source::bem>(r.series, i, out, kAll);
   }
 }
 

@@ -4,21 +4,26 @@
 #include <optional>
 #include <vector>
 
-#include "io/tile_data.hpp"
+#include "map/grid.hpp"
+#include "map/quantities.hpp"
+#include "map/tile_data.hpp"
+#include "model/creep_laws.hpp"
 #include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
 #include "reference/reference_point.hpp"
-#include "sweep/grid.hpp"
 #include "sweep/reference_sample.hpp"
 #include "sweep/sweep_config.hpp"
 
 namespace punchsweep::sweep {
 
 /// Evaluates every point of a tile with the model (the same functions as
-/// `punchsweep point`). Sub-results that depend on fewer coordinates are computed once:
-/// the touchdown and long-term guide per (l, s, dh) and the single-level ends per (l, s, pbar, T) for the whole
-/// run of this process, the elastic start per (l, s, dh, pbar) per tile. Each is a pure
-/// function of its coordinates, so no value depends on the tiling or the rank count.
+/// `punchsweep point`). The grid's axes are the model's parameters by name
+/// (model::sweep_axes): l, dh, pbar, s and the creep law's own (for the standard linear
+/// solid T). Sub-results that depend on fewer coordinates are computed once: the touchdown
+/// and long-term guide per (l, s, dh) and the single-level ends per (l, s, material, pbar)
+/// for the whole run of this process, the elastic start per (l, s, dh, pbar) per tile.
+/// Each is a pure function of its coordinates, so no value depends on the tiling or the
+/// rank count. What a point stores is read off its result through map::kQuantities.
 ///
 /// With a BEM reference it also evaluates reference::evaluate_reference_point (as
 /// `punchsweep reference` does: grid N, the snapshot times, the default step control and
@@ -28,12 +33,13 @@ namespace punchsweep::sweep {
 /// Not thread-safe (one evaluator per rank).
 class TileEvaluator {
  public:
-  /// Throws std::invalid_argument when the reference sample does not fit the grid.
-  TileEvaluator(const Grid& grid, double C, std::vector<double> times, Quantities quantities,
-                const ReferenceConfig& reference = {});
+  /// Throws std::invalid_argument when the grid's axes are not model::sweep_axes of `law`
+  /// or the reference sample does not fit the grid.
+  TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C, std::vector<double> times,
+                map::Quantities quantities, const ReferenceConfig& reference = {});
 
   /// Fills `out` (resized here), row-major over the box, time last.
-  void evaluate(const TileBox& box, io::TileData* out) const;
+  void evaluate(const map::TileBox& box, map::TileData* out) const;
 
   /// The points that get the reference; empty without one.
   const std::optional<ReferenceSample>& reference_sample() const { return sample_; }
@@ -42,9 +48,11 @@ class TileEvaluator {
 
  private:
   /// The reference at the sampled points of `box` into out's bem_* arrays (sized already).
-  void evaluate_reference(const TileBox& box, io::TileData* out) const;
+  void evaluate_reference(const map::TileBox& box, map::TileData* out) const;
+  /// The contact problem and the creep law's parameter values at grid position `at`.
+  model::ContactProblem problem_at(const map::Index& at, std::vector<double>* law_values) const;
 
-  /// The single-level ends of eq 9.5/9.10 at one (l, s, pbar, T).
+  /// The single-level ends of eq 9.5/9.10 at one (l, s, material, pbar).
   struct Ends {
     double h_0 = 0.0;
     double h_inf = 0.0;
@@ -57,14 +65,17 @@ class TileEvaluator {
     bool ready = false;
   };
 
-  Grid grid_;
+  map::Grid grid_;
+  const model::CreepLawSpec& law_;
   double C_;
   std::vector<double> times_;
-  Quantities quantities_;
+  map::Quantities quantities_;
+  std::size_t l_, dh_, pbar_, s_;          ///< positions of the problem's axes in the grid
+  std::vector<std::size_t> material_;      ///< positions of the law's parameters, in its order
   std::optional<ReferenceSample> sample_;
   reference::ReferenceOptions reference_options_;
   bool cache_ = false;                 ///< the run-wide caches fit (else: per tile)
-  mutable std::vector<Ends> ends_;     ///< by global (l, s, T, pbar)
+  mutable std::vector<Ends> ends_;     ///< by global (l, s, material, pbar)
   mutable std::vector<Touch> touch_;   ///< by global (l, s, dh)
 };
 

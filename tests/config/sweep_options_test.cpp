@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "app/usage_error.hpp"
+#include "run/resume_policy.hpp"
 
 namespace {
 
-using punchsweep::app::identity_differences;
+using punchsweep::run::identity_differences;
 using punchsweep::app::parse_sweep_options;
 using punchsweep::app::UsageError;
-using punchsweep::sweep::Quantities;
+using punchsweep::map::Quantities;
 using punchsweep::sweep::ReferenceMethod;
 using punchsweep::sweep::SweepConfig;
 
@@ -64,7 +65,7 @@ TEST(SweepOptions, defaults_give_the_documented_grid) {
   EXPECT_EQ(axes[2].text, "linspace(2, 10, 9)");
   EXPECT_EQ(axes[3].text, "logspace(0.005, 0.08, 24)");
   EXPECT_EQ(axes[4].text, "1, 2, 3");
-  EXPECT_EQ(c.grid.shape(), (std::array<std::size_t, 5>{7, 23, 9, 24, 3}));
+  EXPECT_EQ(c.grid.shape(), (punchsweep::map::Index{7, 23, 9, 24, 3}));
   EXPECT_EQ(c.grid.points(), 104328u);  // 7 x 23 x 9 x 24 x 3: "about 10^5"
   // The paper's pitches are grid values: 0.5, 0.75, 1.0, 1.25.
   EXPECT_EQ(axes[0].values, (std::vector<double>{0.5, 0.625, 0.75, 0.875, 1.0, 1.125, 1.25}));
@@ -79,7 +80,7 @@ TEST(SweepOptions, defaults_give_the_documented_grid) {
   EXPECT_FALSE(axes[0].log_spaced);
   EXPECT_EQ(axes[4].values, (std::vector<double>{1, 2, 3}));
   EXPECT_EQ(c.C, 0.5);
-  EXPECT_EQ(c.creep_law, "standard_linear_solid");
+  EXPECT_EQ(c.creep_law->name, "standard_linear_solid");
   EXPECT_EQ(c.times, (std::vector<double>{0, 0.5, 1, 2, 5}));
   EXPECT_EQ(c.output, "regime_map.h5");
   EXPECT_EQ(c.quantities, Quantities::full);
@@ -105,7 +106,7 @@ TEST(SweepOptions, help_explains_options_ranges_syntax_and_default_grid) {
   for (const char* part : {"usage: punchsweep sweep", "--config FILE.ini", "--output FILE.h5", "--resume",
                            "--overwrite", "--dry-run", "--quiet", "--quantities WHAT", "--chunk N",
                            "--grid.l AXIS", "--grid.pbar AXIS", "--model.creep_law", "--time.times",
-                           "--run.overwrite", "in E0* = E0/(1-nu^2)", "integers in [1, 32]",
+                           "--run.overwrite", "in E0* = E0/(1-nu^2)", "an integer in [1, 32]",
                            "logspace(a, b, n)", "[grid]", "[run]", "pbar = logspace(0.005, 0.08, 32)",
                            "7 x 23 x 9 x 24 x 3 = 104328 points", "Keys the file leaves out keep their defaults",
                            "--reference METHOD", "--bem-grid N", "--reference.method METHOD", "--reference.grid N",
@@ -141,7 +142,7 @@ TEST(SweepOptions, config_file_sets_its_keys_and_left_out_grid_keys_keep_default
   EXPECT_EQ(c.grid.axes[0].text, "linspace(0.5, 1.25, 7)");
   EXPECT_EQ(c.grid.points(), 7u * 23u * 3u * 24u * 1u);
   EXPECT_EQ(c.C, 0.7);
-  EXPECT_EQ(c.creep_law, "standard_linear_solid");
+  EXPECT_EQ(c.creep_law->name, "standard_linear_solid");
   EXPECT_EQ(c.times, (std::vector<double>{0, 1, 2, 3, 4}));
   EXPECT_EQ(c.output, "small.h5");
   EXPECT_EQ(c.quantities, Quantities::regime);
@@ -184,7 +185,7 @@ TEST(SweepOptions, every_key_is_also_a_command_line_option) {
   EXPECT_EQ(c.grid.axes[3].values, (std::vector<double>{0.01, 0.02}));
   EXPECT_EQ(c.grid.axes[4].values, std::vector<double>{4});
   EXPECT_EQ(c.C, 1.5);
-  EXPECT_EQ(c.creep_law, "standard_linear_solid");
+  EXPECT_EQ(c.creep_law->name, "standard_linear_solid");
   EXPECT_EQ(c.times, (std::vector<double>{0, 7}));
   EXPECT_EQ(c.output, "y.h5");
   EXPECT_EQ(c.quantities, Quantities::regime);
@@ -308,10 +309,10 @@ TEST(SweepOptions, each_bad_value_gives_one_line_with_key_value_and_range) {
       {{"--grid.T", "0.5, 2"}, "grid.T = 0.5, 2: value 0.5 is outside its range", "T >= 1 (T = T_eps/T_sigma)"},
       {{"--grid.pbar", "0"}, "grid.pbar = 0: ", "pbar > 0 (in E0* = E0/(1-nu^2))"},
       {{"--grid.pbar", "-0.1, 0.1"}, "grid.pbar = -0.1, 0.1: ", "pbar > 0"},
-      {{"--grid.s", "0"}, "grid.s = 0: ", "integers in [1, 32]"},
-      {{"--grid.s", "2.5"}, "grid.s = 2.5: 2.5 is not an integer", "integers in [1, 32]"},
+      {{"--grid.s", "0"}, "grid.s = 0: ", "an integer in [1, 32]"},
+      {{"--grid.s", "2.5"}, "grid.s = 2.5: 2.5 is not an integer", "an integer in [1, 32]"},
       {{"--grid.s", "linspace(30, 34, 5)"}, "grid.s = linspace(30, 34, 5): values 33, 34 are outside",
-       "integers in [1, 32]"},
+       "an integer in [1, 32]"},
       {{"--model.C", "0"}, "model.C = 0: ", "C > 0"},
       {{"--model.C", "-1"}, "model.C = -1: ", "C > 0"},
       {{"--model.C", "half"}, "model.C = half: 'half' is not a finite number", "C > 0"},

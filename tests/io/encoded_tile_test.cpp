@@ -13,6 +13,7 @@
 namespace punchsweep::io {
 namespace {
 
+using namespace testing;
 using testing::sample_encoded_tile;
 
 constexpr std::size_t kHeaderSize = 120;

@@ -20,16 +20,18 @@
 #include "io/tile_encoder.hpp"
 #include "sample_tiles.hpp"
 #include "scratch_dir.hpp"
-#include "sweep/tiling.hpp"
+#include "map/tiling.hpp"
 
 namespace punchsweep::io {
 namespace {
 
+using namespace testing;
 using testing::nan_with_payload;
 using testing::ScratchDir;
 
-const std::vector<std::string> kAxisVariables{"regime", "valid",  "t_star", "h_0",
-                                              "h_inf",  "a1_inf", "a2_inf", "area_fraction_inf"};
+// In map::kQuantities order, which is also the point command's key order.
+const std::vector<std::string> kAxisVariables{"regime", "t_star", "h_0",    "h_inf",
+                                              "valid",  "a1_inf", "a2_inf", "area_fraction_inf"};
 const std::vector<std::string> kSeriesVariables{"a1", "a2", "P1", "P2", "area_fraction"};
 const std::vector<std::string> kCoordinates{"l", "dh", "T", "pbar", "s", "time"};
 const std::vector<std::string> kFloatVariables{
@@ -39,16 +41,17 @@ const std::vector<std::string> kFloatVariables{
 /// A reference setup as the sweep records it.
 BemSetup small_bem() { return {32, 1e-10, 40, 7, "periodic BEM test method"}; }
 
-MapLayout small_layout(sweep::Quantities quantities, bool bem = false) {
+MapLayout small_layout(map::Quantities quantities, bool bem = false) {
   MapLayout layout;
-  layout.grid.axes[sweep::kAxisL] = {{0.5, 0.75, 1.0}, "linspace(0.5, 1, 3)", false};
-  layout.grid.axes[sweep::kAxisDh] = {{0.0, 0.01, 0.05, 0.1}, "0, 0.01, 0.05, 0.1", false};
-  layout.grid.axes[sweep::kAxisT] = {{1.0, 10.0}, "logspace(0, 1, 2)", true};
-  layout.grid.axes[sweep::kAxisPbar] = {{0.01, 0.02, 0.03, 0.04, 0.05}, "linspace(0.01, 0.05, 5)", false};
-  layout.grid.axes[sweep::kAxisS] = {{1.0, 2.0}, "1, 2", false};
+  layout.grid = sls_grid();
+  layout.grid.axes[kL] = {"l", {0.5, 0.75, 1.0}, "linspace(0.5, 1, 3)", false};
+  layout.grid.axes[kDh] = {"dh", {0.0, 0.01, 0.05, 0.1}, "0, 0.01, 0.05, 0.1", false};
+  layout.grid.axes[kT] = {"T", {1.0, 10.0}, "logspace(0, 1, 2)", true};
+  layout.grid.axes[kPbar] = {"pbar", {0.01, 0.02, 0.03, 0.04, 0.05}, "linspace(0.01, 0.05, 5)", false};
+  layout.grid.axes[kS] = {"s", {1.0, 2.0}, "1, 2", false};
   layout.times = {0.0, 0.5, 2.0};
   layout.quantities = quantities;
-  layout.chunk = sweep::Tiling(layout.grid.shape(), 7).chunk();  // (1, 1, 1, 3, 2): pbar has edge tiles
+  layout.chunk = map::Tiling(layout.grid.shape(), 7).chunk();  // (1, 1, 1, 3, 2): pbar has edge tiles
   if (bem) layout.bem = small_bem();
   return layout;
 }
@@ -63,10 +66,10 @@ MapAttributes small_attributes() {
 }
 
 /// Row-major flat index of a grid point.
-std::size_t flat_index(const std::array<std::size_t, sweep::kAxes>& shape,
-                       const std::array<std::size_t, sweep::kAxes>& at) {
+std::size_t flat_index(const map::Index& shape,
+                       const map::Index& at) {
   std::size_t g = 0;
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) g = g * shape[a] + at[a];
+  for (std::size_t a = 0; a < kAxes; ++a) g = g * shape[a] + at[a];
   return g;
 }
 
@@ -91,39 +94,39 @@ const std::vector<std::string> kBemFloatVariables{"bem_t_star", "bem_a1", "bem_a
 constexpr std::size_t kFirstBemVar = 20;
 
 /// The sample map's values for every point of `box`.
-TileData tile_for(const sweep::TileBox& box, const MapLayout& layout) {
+map::TileData tile_for(const map::TileBox& box, const MapLayout& layout) {
   const auto shape = layout.grid.shape();
   const std::size_t times = layout.times.size();
-  const bool full = layout.quantities == sweep::Quantities::full;
+  const bool full = layout.quantities == map::Quantities::full;
   const bool bem = layout.bem.has_value();
-  TileData data;
-  data.resize(box.points(), times, full, bem);
+  map::TileData data;
+  data.resize(box.points(), times, full ? map::Quantities::full : map::Quantities::regime, bem);
   std::size_t i = 0;
-  std::array<std::size_t, sweep::kAxes> at{};
+  map::Index at(kAxes);
   for (at[0] = box.start[0]; at[0] < box.start[0] + box.count[0]; ++at[0])
     for (at[1] = box.start[1]; at[1] < box.start[1] + box.count[1]; ++at[1])
       for (at[2] = box.start[2]; at[2] < box.start[2] + box.count[2]; ++at[2])
         for (at[3] = box.start[3]; at[3] < box.start[3] + box.count[3]; ++at[3])
           for (at[4] = box.start[4]; at[4] < box.start[4] + box.count[4]; ++at[4], ++i) {
             const std::size_t g = flat_index(shape, at);
-            data.regime[i] = regime_code(g);
-            data.valid[i] = valid_code(g);
+            flag(data, "regime")[i] = regime_code(g);
+            flag(data, "valid")[i] = valid_code(g);
             std::size_t var = 0;
-            for (auto* v : {&data.t_star, &data.h_0, &data.h_inf, &data.a1_inf, &data.a2_inf,
-                            &data.area_fraction_inf}) {
+            for (auto* v : {&real(data, "t_star"), &real(data, "h_0"), &real(data, "h_inf"), &real(data, "a1_inf"), &real(data, "a2_inf"),
+                            &real(data, "area_fraction_inf")}) {
               (*v)[i] = cell_value(var++, g, 0);
             }
             if (bem && bem_sampled(g)) {
-              data.bem_regime[i] = bem_regime_code(g);
-              data.bem_t_star[i] = cell_value(kFirstBemVar, g, 0);
+              flag(data, "bem_regime")[i] = bem_regime_code(g);
+              real(data, "bem_t_star")[i] = cell_value(kFirstBemVar, g, 0);
               std::size_t bem_var = kFirstBemVar + 1;
-              for (auto* v : {&data.bem_a1, &data.bem_a2, &data.bem_P1, &data.bem_P2, &data.bem_area_fraction}) {
+              for (auto* v : {&real(data, "bem_a1"), &real(data, "bem_a2"), &real(data, "bem_P1"), &real(data, "bem_P2"), &real(data, "bem_area_fraction")}) {
                 for (std::size_t t = 0; t < times; ++t) (*v)[i * times + t] = cell_value(bem_var, g, t);
                 ++bem_var;
               }
             }
             if (!full) continue;
-            for (auto* v : {&data.a1, &data.a2, &data.P1, &data.P2, &data.area_fraction}) {
+            for (auto* v : {&real(data, "a1"), &real(data, "a2"), &real(data, "P1"), &real(data, "P2"), &real(data, "area_fraction")}) {
               for (std::size_t t = 0; t < times; ++t) (*v)[i * times + t] = cell_value(var, g, t);
               ++var;
             }
@@ -132,9 +135,9 @@ TileData tile_for(const sweep::TileBox& box, const MapLayout& layout) {
 }
 
 /// Marks the points of `box` in `written` (row-major over the grid).
-void mark(const sweep::TileBox& box, const std::array<std::size_t, sweep::kAxes>& shape,
+void mark(const map::TileBox& box, const map::Index& shape,
           std::vector<bool>* written) {
-  std::array<std::size_t, sweep::kAxes> at{};
+  map::Index at(kAxes);
   for (at[0] = box.start[0]; at[0] < box.start[0] + box.count[0]; ++at[0])
     for (at[1] = box.start[1]; at[1] < box.start[1] + box.count[1]; ++at[1])
       for (at[2] = box.start[2]; at[2] < box.start[2] + box.count[2]; ++at[2])
@@ -146,11 +149,11 @@ void mark(const sweep::TileBox& box, const std::array<std::size_t, sweep::kAxes>
 /// Writes the sample map tile by tile (one chunk each), skipping some tiles; returns which
 /// grid points were written.
 std::vector<bool> write_sample_map(RegimeMapWriter* writer, const MapLayout& layout) {
-  const sweep::Tiling tiling(layout.grid.shape(), 7);
+  const map::Tiling tiling(layout.grid.shape(), 7);
   std::vector<bool> written(layout.grid.points(), false);
   for (std::size_t tile = 0; tile < tiling.tiles(); ++tile) {
     if (skipped(tile)) continue;
-    const sweep::TileBox box = tiling.box(tile);
+    const map::TileBox box = tiling.box(tile);
     writer->write_tile(box, tile_for(box, layout));
     mark(box, layout.grid.shape(), &written);
   }
@@ -219,7 +222,7 @@ void expect_nan_fill(hid_t file, const std::string& name) {
 class RegimeMapWriterTest : public ::testing::Test {
  protected:
   /// Writes the sample map at `path_` and finishes it (unless `finish` is false).
-  void make_map(sweep::Quantities quantities, bool finish = true, bool bem = false) {
+  void make_map(map::Quantities quantities, bool finish = true, bool bem = false) {
     layout_ = small_layout(quantities, bem);
     RegimeMapWriter writer(path_, layout_, small_attributes());
     written_ = write_sample_map(&writer, layout_);
@@ -234,7 +237,7 @@ class RegimeMapWriterTest : public ::testing::Test {
 };
 
 TEST_F(RegimeMapWriterTest, map_has_dimension_scales_and_units) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   const Handle file = open_file(path_);
   std::vector<Handle> coordinates;
   const std::vector<std::string> units{"R", "R", "1", "E0/(1-nu^2)", "1", "T_eps"};
@@ -254,7 +257,7 @@ TEST_F(RegimeMapWriterTest, map_has_dimension_scales_and_units) {
     EXPECT_EQ(read_string_attribute(coordinates.back(), "long_name"), long_names[c]);
   }
   const std::vector<std::string> variable_units{
-      "", "", "T_eps", "R", "R", "R", "R", "1", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", "1"};
+      "", "T_eps", "R", "R", "", "R", "R", "1", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", "1"};
   std::vector<std::string> variables = kAxisVariables;
   variables.insert(variables.end(), kSeriesVariables.begin(), kSeriesVariables.end());
   for (std::size_t v = 0; v < variables.size(); ++v) {
@@ -280,10 +283,10 @@ TEST_F(RegimeMapWriterTest, map_has_dimension_scales_and_units) {
 }
 
 TEST_F(RegimeMapWriterTest, map_coordinates_hold_the_axis_values_and_their_spacing) {
-  make_map(sweep::Quantities::regime);
+  make_map(map::Quantities::regime);
   const Handle file = open_file(path_);
   const std::vector<std::string> spacing{"linear", "list", "log", "linear", "linear"};
-  for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+  for (std::size_t a = 0; a < kAxes; ++a) {
     const Handle coordinate = open_dataset(file, kCoordinates[a]);
     const Handle type(H5Dget_type(coordinate), H5Tclose, "get type");
     EXPECT_GT(H5Tequal(type, H5T_IEEE_F64LE), 0) << kCoordinates[a];
@@ -295,7 +298,7 @@ TEST_F(RegimeMapWriterTest, map_coordinates_hold_the_axis_values_and_their_spaci
 }
 
 TEST_F(RegimeMapWriterTest, flag_variables_carry_flag_values_and_meanings) {
-  make_map(sweep::Quantities::regime);
+  make_map(map::Quantities::regime);
   const Handle file = open_file(path_);
   const Handle regime = open_dataset(file, "regime");
   EXPECT_TRUE(attribute_type_is(regime, "flag_values", H5T_STD_I8LE));
@@ -315,7 +318,7 @@ TEST_F(RegimeMapWriterTest, flag_variables_carry_flag_values_and_meanings) {
 }
 
 TEST_F(RegimeMapWriterTest, float_variables_have_a_nan_fill_value_and_flag_variables_have_none) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   const Handle file = open_file(path_);
   for (const std::string& name : kFloatVariables) expect_nan_fill(file, name);
   for (const char* name : {"regime", "valid"}) {
@@ -329,7 +332,7 @@ TEST_F(RegimeMapWriterTest, float_variables_have_a_nan_fill_value_and_flag_varia
 }
 
 TEST_F(RegimeMapWriterTest, unwritten_cells_read_as_not_computed) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   const Handle file = open_file(path_);
   const std::size_t unwritten = static_cast<std::size_t>(std::count(written_.begin(), written_.end(), false));
   ASSERT_GT(unwritten, 0U);
@@ -375,7 +378,7 @@ void expect_sample_values(const std::string& path, const MapLayout& layout,
   }
   EXPECT_GT(checked, 0U);
   const std::size_t times = layout.times.size();
-  const std::size_t variables = layout.quantities == sweep::Quantities::full ? kFloatVariables.size() : 6;
+  const std::size_t variables = layout.quantities == map::Quantities::full ? kFloatVariables.size() : 6;
   for (std::size_t var = 0; var < variables; ++var) {
     const std::vector<double> values =
         read_dataset<double>(open_dataset(file, kFloatVariables[var]), H5T_NATIVE_DOUBLE);
@@ -392,12 +395,12 @@ void expect_sample_values(const std::string& path, const MapLayout& layout,
 }
 
 TEST_F(RegimeMapWriterTest, written_tiles_read_back_bit_exactly) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   expect_sample_values(path_, layout_, written_);
 }
 
 TEST_F(RegimeMapWriterTest, tiles_that_are_not_one_chunk_read_back_bit_exactly) {
-  layout_ = small_layout(sweep::Quantities::full);  // chunk (1, 1, 1, 3, 2)
+  layout_ = small_layout(map::Quantities::full);  // chunk (1, 1, 1, 3, 2)
   const auto shape = layout_.grid.shape();
   std::vector<bool> written(layout_.grid.points(), false);
   {
@@ -405,7 +408,7 @@ TEST_F(RegimeMapWriterTest, tiles_that_are_not_one_chunk_read_back_bit_exactly) 
     // One whole chunk first, then boxes that straddle chunks (one of them overlapping it),
     // then a whole chunk over one that the pipeline left half written in its cache: encoded
     // chunks and the filter pipeline meet in the same chunks in both orders.
-    std::vector<sweep::TileBox> boxes(5);
+    std::vector<map::TileBox> boxes(5);
     boxes[0].start = {0, 0, 0, 0, 0};
     boxes[0].count = {1, 1, 1, 3, 2};
     boxes[1].start = {0, 0, 0, 2, 0};
@@ -416,7 +419,7 @@ TEST_F(RegimeMapWriterTest, tiles_that_are_not_one_chunk_read_back_bit_exactly) 
     boxes[3].count = {3, 1, 1, 5, 1};
     boxes[4].start = {1, 2, 0, 0, 0};  // boxes[2] wrote only pbar 1, 2 of this chunk
     boxes[4].count = {1, 1, 1, 3, 2};
-    for (const sweep::TileBox& box : boxes) {
+    for (const map::TileBox& box : boxes) {
       writer.write_tile(box, tile_for(box, layout_));
       mark(box, shape, &written);
     }
@@ -434,18 +437,18 @@ TEST_F(RegimeMapWriterTest, tiles_that_are_not_one_chunk_read_back_bit_exactly) 
 }
 
 TEST_F(RegimeMapWriterTest, edge_tiles_spanning_several_rows_read_back_bit_exactly) {
-  layout_ = small_layout(sweep::Quantities::full);
+  layout_ = small_layout(map::Quantities::full);
   layout_.chunk = {2, 3, 2, 3, 2};  // edges on l, dh and pbar, with whole rows around them
   const auto shape = layout_.grid.shape();
   std::vector<bool> written(layout_.grid.points(), false);
   {
     RegimeMapWriter writer(path_, layout_, small_attributes());
-    sweep::TileBox box;
+    map::TileBox box{map::Index(kAxes), map::Index(kAxes)};
     for (box.start[0] = 0; box.start[0] < shape[0]; box.start[0] += layout_.chunk[0])
       for (box.start[1] = 0; box.start[1] < shape[1]; box.start[1] += layout_.chunk[1])
         for (box.start[2] = 0; box.start[2] < shape[2]; box.start[2] += layout_.chunk[2])
           for (box.start[3] = 0; box.start[3] < shape[3]; box.start[3] += layout_.chunk[3]) {
-            for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+            for (std::size_t a = 0; a < kAxes; ++a) {
               box.count[a] = std::min(layout_.chunk[a], shape[a] - box.start[a]);
             }
             if (box.start[0] == 0 && box.start[1] == 0 && box.start[3] == 0) continue;  // stays unwritten
@@ -465,7 +468,7 @@ TEST_F(RegimeMapWriterTest, edge_tiles_spanning_several_rows_read_back_bit_exact
 }
 
 TEST_F(RegimeMapWriterTest, finished_map_records_its_run_and_completion) {
-  make_map(sweep::Quantities::regime);
+  make_map(map::Quantities::regime);
   const Handle file = open_file(path_);
   EXPECT_EQ(read_string_attribute(file, "Conventions"), "CF-1.8");
   const MapAttributes expected = small_attributes();
@@ -486,7 +489,7 @@ TEST_F(RegimeMapWriterTest, finished_map_records_its_run_and_completion) {
 }
 
 TEST_F(RegimeMapWriterTest, unfinished_map_is_marked_incomplete) {
-  make_map(sweep::Quantities::regime, /*finish=*/false);
+  make_map(map::Quantities::regime, /*finish=*/false);
   const Handle file = open_file(path_);
   EXPECT_EQ(read_attribute<std::int8_t>(file, "completed", H5T_NATIVE_INT8), std::vector<std::int8_t>{0});
   EXPECT_EQ(H5Aexists(file, "ranks"), 0);
@@ -507,7 +510,7 @@ herr_t collect_attribute(hid_t, const char* name, const H5A_info_t*, void* names
 }
 
 TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   const Handle file = open_file(path_);
   // Asked of the root group as netCDF-C asks it (HDF5 1.10's H5Fget_create_plist does not
   // report the root group's creation-order flags).
@@ -540,7 +543,7 @@ TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
 }
 
 TEST_F(RegimeMapWriterTest, every_variable_is_chunked_and_compressed) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   const Handle file = open_file(path_);
   std::vector<std::string> variables = kAxisVariables;
   variables.insert(variables.end(), kSeriesVariables.begin(), kSeriesVariables.end());
@@ -550,7 +553,7 @@ TEST_F(RegimeMapWriterTest, every_variable_is_chunked_and_compressed) {
     ASSERT_EQ(H5Pget_layout(dcpl), H5D_CHUNKED) << name;
     std::array<hsize_t, 6> chunk{};
     const int rank = H5Pget_chunk(dcpl, 6, chunk.data());
-    for (std::size_t a = 0; a < sweep::kAxes; ++a)
+    for (std::size_t a = 0; a < kAxes; ++a)
       EXPECT_EQ(chunk[a], layout_.chunk[a]) << name << " axis " << a;
     if (rank == 6) {
       EXPECT_EQ(chunk[5], layout_.times.size()) << name;
@@ -568,7 +571,7 @@ TEST_F(RegimeMapWriterTest, every_variable_is_chunked_and_compressed) {
 }
 
 TEST_F(RegimeMapWriterTest, regime_only_map_has_no_time_series) {
-  make_map(sweep::Quantities::regime);
+  make_map(map::Quantities::regime);
   const Handle file = open_file(path_);
   for (const std::string& name : kSeriesVariables)
     EXPECT_EQ(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
@@ -578,40 +581,40 @@ TEST_F(RegimeMapWriterTest, regime_only_map_has_no_time_series) {
 }
 
 TEST_F(RegimeMapWriterTest, writer_rejects_bad_layouts) {
-  MapLayout layout = small_layout(sweep::Quantities::full);
-  layout.chunk[sweep::kAxisPbar] = 6;  // longer than the axis
+  MapLayout layout = small_layout(map::Quantities::full);
+  layout.chunk[kPbar] = 6;  // longer than the axis
   EXPECT_THROW(RegimeMapWriter(path_, layout, small_attributes()), std::invalid_argument);
-  layout = small_layout(sweep::Quantities::full);
-  layout.chunk[sweep::kAxisL] = 0;
+  layout = small_layout(map::Quantities::full);
+  layout.chunk[kL] = 0;
   EXPECT_THROW(RegimeMapWriter(path_, layout, small_attributes()), std::invalid_argument);
-  layout = small_layout(sweep::Quantities::full);
+  layout = small_layout(map::Quantities::full);
   layout.times.clear();
   EXPECT_THROW(RegimeMapWriter(path_, layout, small_attributes()), std::invalid_argument);
-  layout = small_layout(sweep::Quantities::full);
-  layout.grid.axes[sweep::kAxisS].values.clear();
+  layout = small_layout(map::Quantities::full);
+  layout.grid.axes[kS].values.clear();
   EXPECT_THROW(RegimeMapWriter(path_, layout, small_attributes()), std::invalid_argument);
 }
 
 TEST_F(RegimeMapWriterTest, writer_rejects_tiles_that_do_not_fit) {
-  const MapLayout layout = small_layout(sweep::Quantities::full);
+  const MapLayout layout = small_layout(map::Quantities::full);
   RegimeMapWriter writer(path_, layout, small_attributes());
-  sweep::TileBox box;
+  map::TileBox box{map::Index(kAxes), map::Index(kAxes)};
   box.start = {2, 3, 1, 3, 0};
   box.count = {1, 1, 1, 2, 2};
-  TileData data;
-  data.resize(box.points(), layout.times.size(), true, false);
+  map::TileData data;
+  data.resize(box.points(), layout.times.size(), map::Quantities::full, false);
   EXPECT_NO_THROW(writer.write_tile(box, data));
-  box.count[sweep::kAxisPbar] = 3;  // runs past the last pbar
+  box.count[kPbar] = 3;  // runs past the last pbar
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
-  box.count[sweep::kAxisPbar] = 2;
-  data.P1.pop_back();
+  box.count[kPbar] = 2;
+  real(data, "P1").pop_back();
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
-  data.resize(box.points(), layout.times.size(), false, false);  // series missing from a full map
+  data.resize(box.points(), layout.times.size(), map::Quantities::regime, false);  // series missing from a full map
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
-  data.resize(box.points(), layout.times.size(), true, true);  // bem_* arrays in a map without them
+  data.resize(box.points(), layout.times.size(), map::Quantities::full, true);  // bem_* arrays in a map without them
   EXPECT_THROW(writer.write_tile(box, data), std::invalid_argument);
   writer.finish(1, 0.0, 0.0);
-  data.resize(box.points(), layout.times.size(), true, false);
+  data.resize(box.points(), layout.times.size(), map::Quantities::full, false);
   EXPECT_THROW(writer.write_tile(box, data), std::logic_error);
   EXPECT_THROW(writer.finish(1, 0.0, 0.0), std::logic_error);
 }
@@ -619,7 +622,7 @@ TEST_F(RegimeMapWriterTest, writer_rejects_tiles_that_do_not_fit) {
 TEST_F(RegimeMapWriterTest, writer_error_names_the_file) {
   const std::string path = dir_.file("no/such/dir/map.h5");
   try {
-    RegimeMapWriter writer(path, small_layout(sweep::Quantities::regime), small_attributes());
+    RegimeMapWriter writer(path, small_layout(map::Quantities::regime), small_attributes());
     FAIL() << "created a map in a missing directory";
   } catch (const Hdf5Error& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
@@ -632,7 +635,7 @@ TEST_F(RegimeMapWriterTest, map_stores_a_configuration_text_larger_than_64_kib) 
     attributes.config_text += "# line " + std::to_string(i) + ": a comment naming where the key came from\n";
   }
   {
-    RegimeMapWriter writer(path_, small_layout(sweep::Quantities::regime), attributes);
+    RegimeMapWriter writer(path_, small_layout(map::Quantities::regime), attributes);
     writer.finish(1, 1.0, 1.0);
   }
   const Handle file = open_file(path_);
@@ -644,13 +647,13 @@ TEST_F(RegimeMapWriterTest, map_stores_a_configuration_text_larger_than_64_kib) 
 std::vector<std::vector<std::byte>> stored_chunks(const std::string& path, const MapLayout& layout) {
   const Handle file = open_file(path);
   std::vector<std::vector<std::byte>> chunks;
-  const sweep::Tiling tiling(layout.grid.shape(), 7);
-  for (const VariableSpec* spec : stored_variables(layout)) {
-    const std::string name = spec->name;
+  const map::Tiling tiling(layout.grid.shape(), 7);
+  for (const std::size_t q : stored_variables(layout)) {
+    const std::string name(map::kQuantities[q].name);
     const Handle dataset = open_dataset(file, name);
     for (std::size_t tile = 0; tile < tiling.tiles(); ++tile) {
-      std::array<hsize_t, sweep::kAxes + 1> offset{};
-      for (std::size_t a = 0; a < sweep::kAxes; ++a) offset[a] = tiling.box(tile).start[a];
+      std::array<hsize_t, kAxes + 1> offset{};
+      for (std::size_t a = 0; a < kAxes; ++a) offset[a] = tiling.box(tile).start[a];
       hsize_t size = 0;
       chunks.emplace_back();
       if (H5Dget_chunk_storage_size(dataset, offset.data(), &size) < 0 || size == 0) continue;
@@ -667,9 +670,9 @@ std::vector<std::vector<std::byte>> stored_chunks(const std::string& path, const
 std::vector<std::vector<std::byte>> variable_bytes(const std::string& path, const MapLayout& layout) {
   const Handle file = open_file(path);
   std::vector<std::vector<std::byte>> out;
-  for (const VariableSpec* spec : stored_variables(layout)) {
-    const Handle dataset = open_dataset(file, spec->name);
-    if (spec->codes != nullptr) {
+  for (const std::size_t q : stored_variables(layout)) {
+    const Handle dataset = open_dataset(file, std::string(map::kQuantities[q].name));
+    if (map::kQuantities[q].kind == map::Kind::flag) {
       const auto codes = read_dataset<std::int8_t>(dataset, H5T_NATIVE_INT8);
       const auto* p = reinterpret_cast<const std::byte*>(codes.data());
       out.emplace_back(p, p + codes.size());
@@ -683,9 +686,9 @@ std::vector<std::vector<std::byte>> variable_bytes(const std::string& path, cons
 }
 
 TEST_F(RegimeMapWriterTest, write_encoded_and_write_tile_store_identical_data) {
-  for (const auto& [quantities, bem] : {std::pair{sweep::Quantities::regime, false},
-                                        std::pair{sweep::Quantities::full, false},
-                                        std::pair{sweep::Quantities::regime, true}}) {
+  for (const auto& [quantities, bem] : {std::pair{map::Quantities::regime, false},
+                                        std::pair{map::Quantities::full, false},
+                                        std::pair{map::Quantities::regime, true}}) {
     layout_ = small_layout(quantities, bem);
     const std::string by_tile = dir_.file("by_tile.h5");
     const std::string encoded = dir_.file("encoded.h5");
@@ -700,10 +703,10 @@ TEST_F(RegimeMapWriterTest, write_encoded_and_write_tile_store_identical_data) {
       // another order, and some of them twice (a tile written again after a resume).
       RegimeMapWriter writer(encoded, layout_, small_attributes());
       TileEncoder encoder(layout_);
-      const sweep::Tiling tiling(layout_.grid.shape(), 7);
+      const map::Tiling tiling(layout_.grid.shape(), 7);
       for (std::size_t tile = tiling.tiles(); tile-- > 0;) {
         if (skipped(tile)) continue;
-        const sweep::TileBox box = tiling.box(tile);
+        const map::TileBox box = tiling.box(tile);
         const EncodedTile encoded_tile = encoder.encode(tile, box, tile_for(box, layout_));
         writer.write_encoded(box, encoded_tile);
         if (tile % 4 == 0) writer.write_encoded(box, encoded_tile);
@@ -720,28 +723,28 @@ TEST_F(RegimeMapWriterTest, write_encoded_and_write_tile_store_identical_data) {
 }
 
 TEST_F(RegimeMapWriterTest, write_encoded_refuses_a_tile_that_does_not_fit) {
-  layout_ = small_layout(sweep::Quantities::full);  // chunk (1, 1, 1, 3, 2)
+  layout_ = small_layout(map::Quantities::full);  // chunk (1, 1, 1, 3, 2)
   RegimeMapWriter writer(path_, layout_, small_attributes());
   TileEncoder full(layout_);
-  TileEncoder regime_only(small_layout(sweep::Quantities::regime));
-  sweep::TileBox box;
+  TileEncoder regime_only(small_layout(map::Quantities::regime));
+  map::TileBox box{map::Index(kAxes), map::Index(kAxes)};
   box.start = {0, 0, 0, 3, 0};
   box.count = {1, 1, 1, 2, 2};  // the edge of pbar
   const EncodedTile tile = full.encode(7, box, tile_for(box, layout_));
   EXPECT_NO_THROW(writer.write_encoded(box, tile));
-  sweep::TileBox other = box;
-  other.count[sweep::kAxisPbar] = 1;  // not the whole part of the chunk inside the grid
+  map::TileBox other = box;
+  other.count[kPbar] = 1;  // not the whole part of the chunk inside the grid
   EXPECT_THROW(writer.write_encoded(other, tile), std::invalid_argument);
   other = box;
-  other.start[sweep::kAxisL] = 3;  // outside the grid
+  other.start[kL] = 3;  // outside the grid
   EXPECT_THROW(writer.write_encoded(other, tile), std::invalid_argument);
   other = box;
-  other.start[sweep::kAxisPbar] = 0;
-  other.count[sweep::kAxisPbar] = 3;  // a whole chunk: more points than the tile has
+  other.start[kPbar] = 0;
+  other.count[kPbar] = 3;  // a whole chunk: more points than the tile has
   EXPECT_THROW(writer.write_encoded(other, tile), std::invalid_argument);
   // A tile encoded for a regime-only map lacks the series chunks.
   EXPECT_THROW(writer.write_encoded(
-                   box, regime_only.encode(7, box, tile_for(box, small_layout(sweep::Quantities::regime)))),
+                   box, regime_only.encode(7, box, tile_for(box, small_layout(map::Quantities::regime)))),
                std::invalid_argument);
   writer.finish(1, 0.0, 0.0);
   EXPECT_THROW(writer.write_encoded(box, tile), std::logic_error);
@@ -752,7 +755,7 @@ const std::vector<std::string> kBemVariables{"bem_regime", "bem_t_star", "bem_a1
                                              "bem_P1",     "bem_P2",     "bem_area_fraction"};
 
 TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
-  make_map(sweep::Quantities::full);
+  make_map(map::Quantities::full);
   {
     const Handle file = open_file(path_);
     for (const std::string& name : kBemVariables) EXPECT_EQ(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
@@ -760,7 +763,7 @@ TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
       EXPECT_EQ(H5Aexists(file, name), 0) << name;
   }
   // With the regime quantities the reference keeps its series (over the time coordinate).
-  make_map(sweep::Quantities::regime, /*finish=*/true, /*bem=*/true);
+  make_map(map::Quantities::regime, /*finish=*/true, /*bem=*/true);
   const Handle file = open_file(path_);
   for (const std::string& name : kBemVariables) EXPECT_GT(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
   for (const std::string& name : kSeriesVariables) EXPECT_EQ(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
@@ -773,7 +776,7 @@ TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
 }
 
 TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_values) {
-  make_map(sweep::Quantities::full, /*finish=*/true, /*bem=*/true);
+  make_map(map::Quantities::full, /*finish=*/true, /*bem=*/true);
   const Handle file = open_file(path_);
   std::vector<Handle> coordinates;
   for (const std::string& name : kCoordinates) coordinates.push_back(open_dataset(file, name));
@@ -815,7 +818,7 @@ TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_
 }
 
 TEST_F(RegimeMapWriterTest, map_with_a_reference_records_its_grid_tolerance_sample_and_seed) {
-  make_map(sweep::Quantities::regime, /*finish=*/true, /*bem=*/true);
+  make_map(map::Quantities::regime, /*finish=*/true, /*bem=*/true);
   const Handle file = open_file(path_);
   const BemSetup bem = small_bem();
   EXPECT_TRUE(attribute_type_is(file, "bem_grid", H5T_STD_I32LE));
@@ -831,7 +834,7 @@ TEST_F(RegimeMapWriterTest, map_with_a_reference_records_its_grid_tolerance_samp
 }
 
 TEST_F(RegimeMapWriterTest, bem_values_read_back_bit_exactly_and_unsampled_cells_as_not_computed) {
-  make_map(sweep::Quantities::regime, /*finish=*/true, /*bem=*/true);
+  make_map(map::Quantities::regime, /*finish=*/true, /*bem=*/true);
   const Handle file = open_file(path_);
   const std::vector<std::int8_t> codes =
       read_dataset<std::int8_t>(open_dataset(file, "bem_regime"), H5T_NATIVE_INT8);

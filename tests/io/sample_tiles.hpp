@@ -9,9 +9,12 @@
 #include <vector>
 
 #include "io/encoded_tile.hpp"
-#include "io/tile_data.hpp"
+#include "map/test_grid.hpp"
+#include "map/tile_data.hpp"
 
 namespace punchsweep::io::testing {
+
+using namespace map::testing;
 
 /// The message of the std::runtime_error `f` throws ("" if it throws none).
 template <typename F>
@@ -35,10 +38,10 @@ inline double nan_with_payload(std::uint64_t payload) {
 /// Deterministic tile contents that differ from seed to seed and from array to array,
 /// with NaNs (several payloads), -0.0, infinities and every regime/valid code mixed in;
 /// the bem_* arrays too when `bem`.
-inline TileData sample_tile(std::uint64_t seed, std::size_t points, std::size_t times, bool full,
-                            bool bem = false) {
-  TileData data;
-  data.resize(points, times, full, bem);
+inline map::TileData sample_tile(std::uint64_t seed, std::size_t points, std::size_t times, bool full,
+                                 bool bem = false) {
+  map::TileData data;
+  data.resize(points, times, full ? map::Quantities::full : map::Quantities::regime, bem);
   const std::vector<double> specials{nan_with_payload(seed + 1),
                                      -0.0,
                                      std::numeric_limits<double>::infinity(),
@@ -50,19 +53,18 @@ inline TileData sample_tile(std::uint64_t seed, std::size_t points, std::size_t 
     if (k % 11 == 3) return specials[k % specials.size()];
     return static_cast<double>(k) * 1.000000119 + 1.0 / static_cast<double>(k + 3);
   };
-  for (std::size_t i = 0; i < points; ++i) {
-    data.regime[i] = static_cast<std::int8_t>(static_cast<int>((seed + i) % 4) - 1);
-    data.valid[i] = static_cast<std::int8_t>(static_cast<int>((seed + 3 * i) % 5) - 1);
-  }
-  for (std::size_t i = 0; i < data.bem_regime.size(); ++i) {
-    data.bem_regime[i] = static_cast<std::int8_t>(static_cast<int>((seed + 5 * i) % 4) - 1);
-  }
-  std::size_t array = 0;
-  for (auto* v : {&data.t_star, &data.h_0, &data.h_inf, &data.a1_inf, &data.a2_inf, &data.area_fraction_inf,
-                  &data.a1, &data.a2, &data.P1, &data.P2, &data.area_fraction, &data.bem_t_star, &data.bem_a1,
-                  &data.bem_a2, &data.bem_P1, &data.bem_P2, &data.bem_area_fraction}) {
-    for (std::size_t i = 0; i < v->size(); ++i) (*v)[i] = value(array, i);
-    ++array;
+  // Flag codes: every code of the flag set and not_computed (-1): regime 0..2, validity 0..3.
+  for (std::size_t q = 0; q < map::kQuantityCount; ++q) {
+    const map::QuantitySpec& spec = map::kQuantities[q];
+    if (spec.kind == map::Kind::flag) {
+      const int codes = spec.flags == map::Flags::regime ? 4 : 5;
+      const std::uint64_t step = spec.source == map::Source::bem ? 5 : spec.flags == map::Flags::regime ? 1 : 3;
+      std::vector<std::int8_t>& v = data.flag(q);
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::int8_t>(static_cast<int>((seed + step * i) % codes) - 1);
+    } else {
+      std::vector<double>& v = data.real(q);
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = value(q, i);
+    }
   }
   return data;
 }
@@ -73,15 +75,11 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 /// Whether every array of the two tiles holds the same bits (NaN payloads included).
-inline bool same_bits(const TileData& a, const TileData& b) {
-  return same_bits(a.regime, b.regime) && same_bits(a.valid, b.valid) && same_bits(a.t_star, b.t_star) &&
-         same_bits(a.h_0, b.h_0) && same_bits(a.h_inf, b.h_inf) && same_bits(a.a1_inf, b.a1_inf) &&
-         same_bits(a.a2_inf, b.a2_inf) && same_bits(a.area_fraction_inf, b.area_fraction_inf) &&
-         same_bits(a.a1, b.a1) && same_bits(a.a2, b.a2) && same_bits(a.P1, b.P1) && same_bits(a.P2, b.P2) &&
-         same_bits(a.area_fraction, b.area_fraction) && same_bits(a.bem_regime, b.bem_regime) &&
-         same_bits(a.bem_t_star, b.bem_t_star) && same_bits(a.bem_a1, b.bem_a1) && same_bits(a.bem_a2, b.bem_a2) &&
-         same_bits(a.bem_P1, b.bem_P1) && same_bits(a.bem_P2, b.bem_P2) &&
-         same_bits(a.bem_area_fraction, b.bem_area_fraction);
+inline bool same_bits(const map::TileData& a, const map::TileData& b) {
+  for (std::size_t q = 0; q < map::kQuantityCount; ++q) {
+    if (!same_bits(a.codes[q], b.codes[q]) || !same_bits(a.reals[q], b.reals[q])) return false;
+  }
+  return true;
 }
 
 /// An EncodedTile as the codec and the journal see it: tile index `seed`, `chunks` runs of

@@ -19,16 +19,18 @@
 namespace punchsweep::io {
 namespace {
 
+using namespace testing;
 using testing::sample_tile;
 
 /// A 2 x 3 x 2 x 5 x 2 grid in chunks of 1 x 2 x 1 x 3 x 2: edge tiles on dh and pbar.
-MapLayout test_layout(sweep::Quantities quantities, bool bem = false) {
+MapLayout test_layout(map::Quantities quantities, bool bem = false) {
   MapLayout layout;
-  layout.grid.axes[sweep::kAxisL] = {{0.5, 1.0}, "0.5, 1", false};
-  layout.grid.axes[sweep::kAxisDh] = {{0.0, 0.05, 0.1}, "0, 0.05, 0.1", false};
-  layout.grid.axes[sweep::kAxisT] = {{2.0, 5.0}, "2, 5", false};
-  layout.grid.axes[sweep::kAxisPbar] = {{0.01, 0.02, 0.03, 0.04, 0.05}, "linspace(0.01, 0.05, 5)", false};
-  layout.grid.axes[sweep::kAxisS] = {{1.0, 2.0}, "1, 2", false};
+  layout.grid = sls_grid();
+  layout.grid.axes[kL] = {"l", {0.5, 1.0}, "0.5, 1", false};
+  layout.grid.axes[kDh] = {"dh", {0.0, 0.05, 0.1}, "0, 0.05, 0.1", false};
+  layout.grid.axes[kT] = {"T", {2.0, 5.0}, "2, 5", false};
+  layout.grid.axes[kPbar] = {"pbar", {0.01, 0.02, 0.03, 0.04, 0.05}, "linspace(0.01, 0.05, 5)", false};
+  layout.grid.axes[kS] = {"s", {1.0, 2.0}, "1, 2", false};
   layout.times = {0.0, 1.0, 5.0};
   layout.quantities = quantities;
   layout.chunk = {1, 2, 1, 3, 2};
@@ -37,16 +39,16 @@ MapLayout test_layout(sweep::Quantities quantities, bool bem = false) {
 }
 
 /// Every tile of the layout's chunk grid (edge tiles cut to the grid).
-std::vector<sweep::TileBox> chunk_boxes(const MapLayout& layout) {
+std::vector<map::TileBox> chunk_boxes(const MapLayout& layout) {
   const auto shape = layout.grid.shape();
-  std::vector<sweep::TileBox> boxes;
-  sweep::TileBox box;
+  std::vector<map::TileBox> boxes;
+  map::TileBox box{map::Index(kAxes), map::Index(kAxes)};
   for (box.start[0] = 0; box.start[0] < shape[0]; box.start[0] += layout.chunk[0])
     for (box.start[1] = 0; box.start[1] < shape[1]; box.start[1] += layout.chunk[1])
       for (box.start[2] = 0; box.start[2] < shape[2]; box.start[2] += layout.chunk[2])
         for (box.start[3] = 0; box.start[3] < shape[3]; box.start[3] += layout.chunk[3])
           for (box.start[4] = 0; box.start[4] < shape[4]; box.start[4] += layout.chunk[4]) {
-            for (std::size_t a = 0; a < sweep::kAxes; ++a)
+            for (std::size_t a = 0; a < kAxes; ++a)
               box.count[a] = std::min(layout.chunk[a], shape[a] - box.start[a]);
             boxes.push_back(box);
           }
@@ -72,14 +74,14 @@ std::vector<std::byte> decode_chunk(const std::vector<std::byte>& encoded, std::
 
 /// The whole chunk that `box` (row-major values `values`, `inner` per point) fills: its
 /// values where the box lies, `fill` elsewhere.
-std::vector<std::byte> expected_chunk(const MapLayout& layout, const sweep::TileBox& box,
+std::vector<std::byte> expected_chunk(const MapLayout& layout, const map::TileBox& box,
                                       const std::byte* values, std::size_t element, std::size_t inner,
                                       const void* fill) {
   const auto& chunk = layout.chunk;
   std::size_t cells = inner;
   for (const std::size_t c : chunk) cells *= c;
   std::vector<std::byte> out(cells * element);
-  std::array<std::size_t, sweep::kAxes> at{};
+  map::Index at(kAxes);
   std::size_t cell = 0;
   for (at[0] = 0; at[0] < chunk[0]; ++at[0])
     for (at[1] = 0; at[1] < chunk[1]; ++at[1])
@@ -88,7 +90,7 @@ std::vector<std::byte> expected_chunk(const MapLayout& layout, const sweep::Tile
           for (at[4] = 0; at[4] < chunk[4]; ++at[4]) {
             bool inside = true;
             std::size_t point = 0;
-            for (std::size_t a = 0; a < sweep::kAxes; ++a) {
+            for (std::size_t a = 0; a < kAxes; ++a) {
               inside = inside && at[a] < box.count[a];
               point = point * box.count[a] + at[a];
             }
@@ -102,31 +104,31 @@ std::vector<std::byte> expected_chunk(const MapLayout& layout, const sweep::Tile
 
 TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
   // (quantities, BEM reference, chunks per tile): the model's 8 + 5 series, the reference's 2 + 5.
-  for (const auto& [quantities, bem, chunks] : {std::tuple{sweep::Quantities::regime, false, 8U},
-                                                std::tuple{sweep::Quantities::full, false, 13U},
-                                                std::tuple{sweep::Quantities::regime, true, 15U},
-                                                std::tuple{sweep::Quantities::full, true, 20U}}) {
+  for (const auto& [quantities, bem, chunks] : {std::tuple{map::Quantities::regime, false, 8U},
+                                                std::tuple{map::Quantities::full, false, 13U},
+                                                std::tuple{map::Quantities::regime, true, 15U},
+                                                std::tuple{map::Quantities::full, true, 20U}}) {
     const MapLayout layout = test_layout(quantities, bem);
     TileEncoder encoder(layout);
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const std::vector<const VariableSpec*> stored = stored_variables(layout);
+    const std::vector<std::size_t> stored = stored_variables(layout);
     std::size_t edges = 0;
     std::uint64_t seed = 0;
-    for (const sweep::TileBox& box : chunk_boxes(layout)) {
+    for (const map::TileBox& box : chunk_boxes(layout)) {
       edges += box.count != layout.chunk ? 1 : 0;
-      const TileData data = sample_tile(++seed, box.points(), layout.times.size(), layout.full(), bem);
+      const map::TileData data = sample_tile(++seed, box.points(), layout.times.size(), layout.full(), bem);
       const EncodedTile encoded = encoder.encode(seed, box, data);
       EXPECT_EQ(encoded.tile, seed);
       ASSERT_EQ(encoded.chunks.size(), chunks);
       ASSERT_EQ(stored.size(), chunks);
       for (std::size_t v = 0; v < encoded.chunks.size(); ++v) {
-        const VariableSpec& spec = *stored[v];
-        EXPECT_EQ(spec.bem, v >= (layout.full() ? 13U : 8U)) << spec.name;
-        const bool codes = spec.codes != nullptr;
+        const map::QuantitySpec& spec = map::kQuantities[stored[v]];
+        EXPECT_EQ(spec.source == map::Source::bem, v >= (layout.full() ? 13U : 8U)) << spec.name;
+        const bool codes = spec.kind == map::Kind::flag;
         const std::size_t element = codes ? 1 : sizeof(double);
-        const std::size_t inner = spec.series ? layout.times.size() : 1;
-        const auto* values = codes ? reinterpret_cast<const std::byte*>((data.*spec.codes).data())
-                                   : reinterpret_cast<const std::byte*>((data.*spec.values).data());
+        const std::size_t inner = spec.extent == map::Extent::series ? layout.times.size() : 1;
+        const auto* values = codes ? reinterpret_cast<const std::byte*>(data.flag(stored[v]).data())
+                                   : reinterpret_cast<const std::byte*>(data.real(stored[v]).data());
         const void* fill = codes ? static_cast<const void*>(&kNotComputed) : static_cast<const void*>(&nan);
         const std::vector<std::byte> expected = expected_chunk(layout, box, values, element, inner, fill);
         EXPECT_EQ(decode_chunk(encoded.chunks[v], expected.size(), element), expected)
@@ -138,17 +140,17 @@ TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
 }
 
 TEST(TileEncoder, encoded_tile_summary_counts_points_per_code) {
-  const MapLayout layout = test_layout(sweep::Quantities::regime);
+  const MapLayout layout = test_layout(map::Quantities::regime);
   TileEncoder encoder(layout);
-  for (const sweep::TileBox& box : chunk_boxes(layout)) {
-    const TileData data = sample_tile(box.start[1] + 7 * box.start[3], box.points(), 0, false);
+  for (const map::TileBox& box : chunk_boxes(layout)) {
+    const map::TileData data = sample_tile(box.start[1] + 7 * box.start[3], box.points(), 0, false);
     const TileSummary summary = encoder.encode(0, box, data).summary;
     EXPECT_EQ(summary.points, box.points());
     TileSummary expected;
-    for (const std::int8_t r : data.regime) {
+    for (const std::int8_t r : flag(data, "regime")) {
       if (r >= 0) ++expected.regimes[static_cast<std::size_t>(r)];
     }
-    for (const std::int8_t v : data.valid) {
+    for (const std::int8_t v : flag(data, "valid")) {
       if (v >= 0) ++expected.validity[static_cast<std::size_t>(v)];
     }
     EXPECT_EQ(summary.regimes, expected.regimes);  // not_computed (-1) counts nowhere
@@ -159,18 +161,18 @@ TEST(TileEncoder, encoded_tile_summary_counts_points_per_code) {
 }
 
 TEST(TileEncoder, encoded_tile_summary_counts_reference_points_and_their_agreement) {
-  const MapLayout layout = test_layout(sweep::Quantities::regime, /*bem=*/true);
+  const MapLayout layout = test_layout(map::Quantities::regime, /*bem=*/true);
   TileEncoder encoder(layout);
   std::uint64_t agreeing = 0;
-  for (const sweep::TileBox& box : chunk_boxes(layout)) {
-    const TileData data = sample_tile(box.start[1] + 7 * box.start[3], box.points(), 3, false, true);
+  for (const map::TileBox& box : chunk_boxes(layout)) {
+    const map::TileData data = sample_tile(box.start[1] + 7 * box.start[3], box.points(), 3, false, true);
     const TileSummary summary = encoder.encode(0, box, data).summary;
     TileSummary expected;
-    for (std::size_t i = 0; i < data.bem_regime.size(); ++i) {
-      const std::int8_t r = data.bem_regime[i];
+    for (std::size_t i = 0; i < flag(data, "bem_regime").size(); ++i) {
+      const std::int8_t r = flag(data, "bem_regime")[i];
       if (r < 0) continue;  // outside the sample
       ++expected.bem_regimes[static_cast<std::size_t>(r)];
-      expected.bem_agreeing += r == data.regime[i] ? 1 : 0;
+      expected.bem_agreeing += r == flag(data, "regime")[i] ? 1 : 0;
     }
     EXPECT_EQ(summary.bem_regimes, expected.bem_regimes);
     EXPECT_EQ(summary.bem_agreeing, expected.bem_agreeing);
@@ -181,27 +183,27 @@ TEST(TileEncoder, encoded_tile_summary_counts_reference_points_and_their_agreeme
 
 TEST(TileEncoder, encoded_bytes_depend_only_on_the_tile) {
   // Any rank may encode any tile: the bytes must not depend on what the encoder did before.
-  const MapLayout layout = test_layout(sweep::Quantities::full);
-  const std::vector<sweep::TileBox> boxes = chunk_boxes(layout);
+  const MapLayout layout = test_layout(map::Quantities::full);
+  const std::vector<map::TileBox> boxes = chunk_boxes(layout);
   TileEncoder busy(layout);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     busy.encode(i, boxes[i], sample_tile(100 + i, boxes[i].points(), 3, true));
   }
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    const TileData data = sample_tile(i, boxes[i].points(), 3, true);
+    const map::TileData data = sample_tile(i, boxes[i].points(), 3, true);
     TileEncoder fresh(layout);
     EXPECT_TRUE(fresh.encode(i, boxes[i], data) == busy.encode(i, boxes[i], data)) << "tile " << i;
   }
 }
 
 TEST(TileEncoder, encoder_refuses_boxes_that_are_not_one_chunk) {
-  const MapLayout layout = test_layout(sweep::Quantities::regime);
+  const MapLayout layout = test_layout(map::Quantities::regime);
   TileEncoder encoder(layout);
   const auto refused = [&](std::array<std::size_t, 5> start, std::array<std::size_t, 5> count) {
-    sweep::TileBox box;
-    box.start = start;
-    box.count = count;
-    const TileData data = sample_tile(1, box.points(), 0, false);
+    map::TileBox box{map::Index(kAxes), map::Index(kAxes)};
+    box.start.assign(start.begin(), start.end());
+    box.count.assign(count.begin(), count.end());
+    const map::TileData data = sample_tile(1, box.points(), 0, false);
     EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
   };
   refused({0, 1, 0, 0, 0}, {1, 2, 1, 3, 2});  // not chunk-aligned
@@ -213,13 +215,13 @@ TEST(TileEncoder, encoder_refuses_boxes_that_are_not_one_chunk) {
 }
 
 TEST(TileEncoder, encoder_refuses_arrays_of_the_wrong_length_and_bad_layouts) {
-  const MapLayout layout = test_layout(sweep::Quantities::full);
+  const MapLayout layout = test_layout(map::Quantities::full);
   TileEncoder encoder(layout);
-  sweep::TileBox box;
+  map::TileBox box{map::Index(kAxes), map::Index(kAxes)};
   box.count = layout.chunk;
-  TileData data = sample_tile(1, box.points(), 3, true);
+  map::TileData data = sample_tile(1, box.points(), 3, true);
   EXPECT_NO_THROW(encoder.encode(0, box, data));
-  data.P2.pop_back();
+  real(data, "P2").pop_back();
   EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
   data = sample_tile(1, box.points(), 3, false);  // series missing from a full map
   EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
@@ -227,13 +229,13 @@ TEST(TileEncoder, encoder_refuses_arrays_of_the_wrong_length_and_bad_layouts) {
   EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
   data = sample_tile(1, box.points(), 3, true, true);  // bem_* arrays for a map without them
   EXPECT_THROW(encoder.encode(0, box, data), std::invalid_argument);
-  TileEncoder with_reference(test_layout(sweep::Quantities::full, /*bem=*/true));
+  TileEncoder with_reference(test_layout(map::Quantities::full, /*bem=*/true));
   EXPECT_NO_THROW(with_reference.encode(0, box, data));
   data = sample_tile(1, box.points(), 3, true, false);  // bem_* arrays missing
   EXPECT_THROW(with_reference.encode(0, box, data), std::invalid_argument);
 
   MapLayout bad = layout;
-  bad.chunk[sweep::kAxisPbar] = 6;
+  bad.chunk[kPbar] = 6;
   EXPECT_THROW(TileEncoder{bad}, std::invalid_argument);
   bad = layout;
   bad.times.clear();

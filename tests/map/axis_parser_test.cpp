@@ -1,4 +1,4 @@
-#include "sweep/axis_parser.hpp"
+#include "map/axis_parser.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 
 namespace {
 
-using punchsweep::sweep::Axis;
-using punchsweep::sweep::format_axis_value;
-using punchsweep::sweep::format_axis_values;
-using punchsweep::sweep::parse_axis;
+using punchsweep::map::Axis;
+using punchsweep::map::format_axis_value;
+using punchsweep::map::format_axis_values;
+using punchsweep::map::parse_axis;
 
 // The message parse_axis throws for `text`; fails the test when it does not throw.
 std::string axis_error(const std::string& text, bool integers = false) {

@@ -2,20 +2,24 @@
 
 #include <vector>
 
-#include "sweep/tiling.hpp"
+#include "map/tiling.hpp"
 
-using namespace punchsweep::sweep;
+using namespace punchsweep::map;
+
+namespace {
+constexpr std::size_t kAxes = 5;  // a standard linear solid's grid: l, dh, T, pbar, s
+}  // namespace
 
 TEST(Tiling, chunk_fills_fast_axes_first_then_part_of_the_next) {
   const Tiling t({7, 23, 9, 24, 3}, 4096);
   // s (3) x pbar (24) x T (9) = 648 points; 4096 / 648 = 6 values of dh; l gets 1.
-  EXPECT_EQ(t.chunk(), (std::array<std::size_t, kAxes>{1, 6, 9, 24, 3}));
+  EXPECT_EQ(t.chunk(), (Index{1, 6, 9, 24, 3}));
   EXPECT_EQ(t.tiles(), 7u * 4u);  // 23 dh values in tiles of 6: 6, 6, 6, 5
 }
 
 TEST(Tiling, tiny_target_gives_one_point_tiles_and_huge_gives_one_tile) {
-  const std::array<std::size_t, kAxes> shape{2, 3, 4, 5, 6};
-  EXPECT_EQ(Tiling(shape, 1).chunk(), (std::array<std::size_t, kAxes>{1, 1, 1, 1, 1}));
+  const Index shape{2, 3, 4, 5, 6};
+  EXPECT_EQ(Tiling(shape, 1).chunk(), (Index{1, 1, 1, 1, 1}));
   EXPECT_EQ(Tiling(shape, 1).tiles(), 720u);
   EXPECT_EQ(Tiling(shape, 1000000).chunk(), shape);
   EXPECT_EQ(Tiling(shape, 1000000).tiles(), 1u);
@@ -23,7 +27,7 @@ TEST(Tiling, tiny_target_gives_one_point_tiles_and_huge_gives_one_tile) {
 
 TEST(Tiling, tiles_cover_every_point_exactly_once) {
   for (const std::size_t target : {1u, 5u, 7u, 64u, 100u, 5000u}) {
-    const std::array<std::size_t, kAxes> shape{3, 7, 2, 5, 3};
+    const Index shape{3, 7, 2, 5, 3};
     const Tiling t(shape, target);
     std::vector<int> hits(3 * 7 * 2 * 5 * 3, 0);
     std::size_t points = 0;

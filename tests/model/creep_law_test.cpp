@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "model/parameters.hpp"
 #include "model/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
@@ -61,7 +62,17 @@ TEST(StandardLinearSolid, time_at_creep_inverts_creep) {
 }
 
 TEST(StandardLinearSolid, creep_ratio_below_one_is_refused_with_its_range) {
-  EXPECT_EQ(creep_ratio_error(1.0), "");
-  EXPECT_NE(creep_ratio_error(0.5).find(">= 1"), std::string::npos);
-  EXPECT_NE(creep_ratio_error(std::nan("")).find("T ="), std::string::npos);
+  const Parameter& T = creep_ratio_parameter();
+  EXPECT_EQ(T.error(1.0), "");
+  EXPECT_NE(T.error(0.5).find("T >= 1"), std::string::npos);
+  EXPECT_NE(T.error(std::nan("")).find("T = nan"), std::string::npos);
+}
+
+TEST(StandardLinearSolid, is_the_one_term_retardation_series_of_its_creep_function) {
+  const StandardLinearSolid sls(3.5);
+  const RetardationSeries series = *sls.retardation_series();
+  ASSERT_EQ(series.terms.size(), 1U);
+  EXPECT_EQ(series.J_final, 3.5);
+  EXPECT_EQ(series.terms[0].J, 2.5);
+  EXPECT_EQ(series.terms[0].lambda, 1.0);
 }

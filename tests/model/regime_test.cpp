@@ -131,7 +131,7 @@ TEST(Regime, zero_height_difference_touches_at_once) {
 }
 
 TEST(Regime, regime_follows_h_0_and_h_inf) {
-  // Model notes section 4: immediate iff h(0) >= dh; never iff h(inf) < dh.
+  // docs/model.md section 4: immediate iff h(0) >= dh; never iff h(inf) < dh.
   for (double dh = 0.001; dh < 0.15; dh += 0.0037) {
     const ContactProblem p{0.8, dh, 0.03, Shape{2, 0.5}};
     const PointResult r = evaluate_point(p, StandardLinearSolid(3.0), EvaluationOptions{{}, {}});

@@ -15,7 +15,7 @@ TEST(SingleLevel, D_starts_at_pi_and_vanishes_at_the_radius_limit) {
 }
 
 TEST(SingleLevel, contact_radius_matches_model_notes) {
-  // Model notes section 9: pbar0 = 0.06, l = 0.75: a1 = 0.2824306 at J = 1, 0.3626029 at J = 2.5.
+  // docs/model.md section 9: pbar0 = 0.06, l = 0.75: a1 = 0.2824306 at J = 1, 0.3626029 at J = 2.5.
   const SingleLevel single(0.75, Shape{2, 0.5});
   EXPECT_NEAR(single.contact_radius(0.06 * 1.0), 0.2824306, 5e-8);
   EXPECT_NEAR(single.contact_radius(0.06 * 2.5), 0.3626029, 5e-8);

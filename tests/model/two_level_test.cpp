@@ -9,6 +9,7 @@
 #include "model/lattice.hpp"
 #include "model/long_term_guide.hpp"
 #include "model/single_level.hpp"
+#include "model/elastic_two_level.hpp"
 #include "model/two_level.hpp"
 
 using namespace punchsweep::model;

@@ -23,7 +23,7 @@ using namespace punchsweep::reference;
 
 namespace {
 
-// The paper's point (model notes section 9): l = 0.75, pbar0 = 0.06, T = 2.5, s = 2, C = 1/2.
+// The paper's point (docs/model.md, section 9): l = 0.75, pbar0 = 0.06, T = 2.5, s = 2, C = 1/2.
 model::ContactProblem paper_point(double dh) { return {0.75, dh, 0.06, {2, 0.5}}; }
 
 ReferenceOptions options_with(int n, std::vector<double> times = {0.0, 0.5, 1.0, 2.0, 5.0}) {
@@ -83,7 +83,7 @@ TEST(ReferencePoint, loads_sum_to_nominal_load_and_snapshots_keep_requested_orde
 }
 
 TEST(ReferencePoint, paper_regimes_immediate_delayed_never_are_reproduced) {
-  // Model notes section 9: dh = 0.05 immediate, 0.075 delayed (localization t* = 1.03),
+  // docs/model.md section 9: dh = 0.05 immediate, 0.075 delayed (localization t* = 1.03),
   // 0.1 never. The grid's h(0) = 0.0553 and h(inf) = 0.087 bracket the same way.
   const model::StandardLinearSolid sls(2.5);
   const ReferenceResult immediate =
@@ -202,7 +202,7 @@ TEST(ReferencePoint, time_stepping_error_is_second_order) {
 
 TEST(ReferencePoint, elastic_material_does_not_creep) {
   // T = 1: J = 1 at all times, so every snapshot is the t = 0 state and level 2 is never
-  // "delayed" (model notes section 4).
+  // "delayed" (docs/model.md, section 4).
   const model::StandardLinearSolid elastic(1.0);
   for (const double dh : {0.05, 0.075}) {
     const ReferenceResult r = evaluate_reference_point(paper_point(dh), elastic, options_with(24));

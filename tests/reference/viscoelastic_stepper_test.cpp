@@ -24,8 +24,8 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-/// A Maxwell fluid, J(t) = 1 + t/eta, E(t) = exp(-t/eta): unlimited creep and not a
-/// standard linear solid, so the stepper takes the convolution form.
+/// A Maxwell fluid, J(t) = 1 + t/eta, E(t) = exp(-t/eta): unlimited creep, no retardation
+/// series, so the stepper takes the convolution form.
 class MaxwellFluid final : public model::CreepLaw {
  public:
   explicit MaxwellFluid(double eta) : eta_(eta) {}
@@ -36,6 +36,7 @@ class MaxwellFluid final : public model::CreepLaw {
   double creep_final() const override { return std::numeric_limits<double>::infinity(); }
   double time_at_creep(double J) const override { return J <= 1.0 ? 0.0 : eta_ * (J - 1.0); }
   double relaxation_time_scale() const override { return eta_; }
+  double creep_time_scale() const override { return eta_; }
   double relaxation_memory() const override { return 40.0 * eta_; }
   std::string describe() const override { return "Maxwell fluid"; }
 
@@ -43,7 +44,7 @@ class MaxwellFluid final : public model::CreepLaw {
   double eta_;
 };
 
-/// The standard linear solid seen through the generic interface only (convolution form).
+/// The standard linear solid without its retardation series (so the convolution form).
 class OpaqueCreep final : public model::CreepLaw {
  public:
   explicit OpaqueCreep(const model::CreepLaw& law) : law_(law) {}
@@ -54,6 +55,7 @@ class OpaqueCreep final : public model::CreepLaw {
   double creep_final() const override { return law_.creep_final(); }
   double time_at_creep(double J) const override { return law_.time_at_creep(J); }
   double relaxation_time_scale() const override { return law_.relaxation_time_scale(); }
+  double creep_time_scale() const override { return law_.creep_time_scale(); }
   double relaxation_memory() const override { return law_.relaxation_memory(); }
   std::string describe() const override { return law_.describe(); }
 

@@ -1,0 +1,141 @@
+#pragma once
+/// @file
+/// Every output quantity of a point, declared once: its name (the map's variable, the
+/// point command's JSON key and CSV column), its type, whether it runs over the snapshot
+/// times, whether the model or the BEM reference gives it, its units and long name, and
+/// how it is read off the model's result. The tile's storage (TileData), the map's
+/// variables and their chunk order (io/map_variables.hpp, the journal), the sweep's tile
+/// evaluation and the point output formats all iterate this list; adding a quantity is a
+/// field of the model's result and one entry here.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+
+#include "model/point_evaluation.hpp"
+
+namespace punchsweep::map {
+
+/// What a map stores: the per-point quantities only, or also the time series.
+enum class Quantities { regime, full };
+
+enum class Kind { flag, real };       ///< int8 code, or float64
+enum class Extent { point, series };  ///< over the grid, or over the grid and the times
+enum class Source { model, bem };     ///< the localization model, or the periodic BEM reference
+
+/// The flag sets a flag quantity takes its codes from (the map's flag_values/flag_meanings).
+enum class Flags { none, regime, validity };
+
+struct QuantitySpec {
+  std::string_view name;
+  Kind kind;
+  Extent extent;
+  Source source;
+  Flags flags;                 ///< Flags::none for reals
+  std::string_view units;      ///< empty for flags, which have none
+  std::string_view long_name;
+  std::string_view comment;    ///< empty when there is none
+  /// Reads the quantity off a point's result (for Source::bem, off the reference's result
+  /// in the model's terms, reference::as_point_result): `code` for flags, `value` for
+  /// per-point reals, `series_value` for series reals.
+  std::int8_t (*code)(const model::PointSummary&) = nullptr;
+  double (*value)(const model::PointSummary&) = nullptr;
+  double (*series_value)(const model::Snapshot&) = nullptr;
+};
+
+namespace quantity_access {
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+inline std::int8_t regime(const model::PointSummary& s) { return static_cast<std::int8_t>(s.regime); }
+inline std::int8_t validity(const model::PointSummary& s) { return static_cast<std::int8_t>(s.validity); }
+inline double t_star(const model::PointSummary& s) { return s.t_star.value_or(kNaN); }
+inline double h_0(const model::PointSummary& s) { return s.h_0; }
+inline double h_inf(const model::PointSummary& s) { return s.h_inf; }
+inline double a1_inf(const model::PointSummary& s) { return s.a1_inf; }
+inline double a2_inf(const model::PointSummary& s) { return s.a2_inf; }
+inline double area_fraction_inf(const model::PointSummary& s) { return s.area_fraction_inf; }
+inline double a1(const model::Snapshot& s) { return s.a1; }
+inline double a2(const model::Snapshot& s) { return s.a2; }
+inline double P1(const model::Snapshot& s) { return s.P1; }
+inline double P2(const model::Snapshot& s) { return s.P2; }
+inline double area_fraction(const model::Snapshot& s) { return s.area_fraction; }
+}  // namespace quantity_access
+
+/// The quantities in the order the map creates its variables, the journal stores a tile's
+/// chunks and the point command prints them.
+inline constexpr std::array<QuantitySpec, 20> kQuantities{{
+    {"regime", Kind::flag, Extent::point, Source::model, Flags::regime, "", "contact regime of the level-2 punches",
+     "", quantity_access::regime},
+    {"t_star", Kind::real, Extent::point, Source::model, Flags::none, "T_eps",
+     "time at which the level-2 punches touch", "0 for the immediate regime, NaN for never", nullptr,
+     quantity_access::t_star},
+    {"h_0", Kind::real, Extent::point, Source::model, Flags::none, "R",
+     "displacement difference between punch tip and square centre at t = 0", "", nullptr, quantity_access::h_0},
+    {"h_inf", Kind::real, Extent::point, Source::model, Flags::none, "R",
+     "displacement difference between punch tip and square centre as t -> infinity", "", nullptr,
+     quantity_access::h_inf},
+    {"valid", Kind::flag, Extent::point, Source::model, Flags::validity, "", "validity of the localization method",
+     "", quantity_access::validity},
+    {"a1_inf", Kind::real, Extent::point, Source::model, Flags::none, "R",
+     "long-term contact radius of a level-1 punch", "", nullptr, quantity_access::a1_inf},
+    {"a2_inf", Kind::real, Extent::point, Source::model, Flags::none, "R",
+     "long-term contact radius of a level-2 punch", "", nullptr, quantity_access::a2_inf},
+    {"area_fraction_inf", Kind::real, Extent::point, Source::model, Flags::none, "1",
+     "long-term contact area fraction", "", nullptr, quantity_access::area_fraction_inf},
+    {"a1", Kind::real, Extent::series, Source::model, Flags::none, "R", "contact radius of a level-1 punch", "",
+     nullptr, nullptr, quantity_access::a1},
+    {"a2", Kind::real, Extent::series, Source::model, Flags::none, "R", "contact radius of a level-2 punch", "",
+     nullptr, nullptr, quantity_access::a2},
+    {"P1", Kind::real, Extent::series, Source::model, Flags::none, "R^2 E0/(1-nu^2)", "load on one level-1 punch",
+     "", nullptr, nullptr, quantity_access::P1},
+    {"P2", Kind::real, Extent::series, Source::model, Flags::none, "R^2 E0/(1-nu^2)", "load on one level-2 punch",
+     "", nullptr, nullptr, quantity_access::P2},
+    {"area_fraction", Kind::real, Extent::series, Source::model, Flags::none, "1", "contact area fraction", "",
+     nullptr, nullptr, quantity_access::area_fraction},
+    {"bem_regime", Kind::flag, Extent::point, Source::bem, Flags::regime, "",
+     "periodic BEM reference: contact regime of the level-2 punches",
+     "not_computed at grid points outside the reference sample", quantity_access::regime},
+    {"bem_t_star", Kind::real, Extent::point, Source::bem, Flags::none, "T_eps",
+     "periodic BEM reference: time at which the level-2 punches touch",
+     "0 for the immediate regime; NaN for never, for delayed beyond the last snapshot time, and outside the "
+     "reference sample",
+     nullptr, quantity_access::t_star},
+    {"bem_a1", Kind::real, Extent::series, Source::bem, Flags::none, "R",
+     "periodic BEM reference: contact radius of a level-1 punch",
+     "equivalent radius sqrt(area / pi) of the grid nodes in contact; NaN outside the reference sample", nullptr,
+     nullptr, quantity_access::a1},
+    {"bem_a2", Kind::real, Extent::series, Source::bem, Flags::none, "R",
+     "periodic BEM reference: contact radius of a level-2 punch",
+     "equivalent radius sqrt(area / pi) of the grid nodes in contact; NaN outside the reference sample", nullptr,
+     nullptr, quantity_access::a2},
+    {"bem_P1", Kind::real, Extent::series, Source::bem, Flags::none, "R^2 E0/(1-nu^2)",
+     "periodic BEM reference: load on one level-1 punch", "NaN outside the reference sample", nullptr, nullptr,
+     quantity_access::P1},
+    {"bem_P2", Kind::real, Extent::series, Source::bem, Flags::none, "R^2 E0/(1-nu^2)",
+     "periodic BEM reference: load on one level-2 punch", "NaN outside the reference sample", nullptr, nullptr,
+     quantity_access::P2},
+    {"bem_area_fraction", Kind::real, Extent::series, Source::bem, Flags::none, "1",
+     "periodic BEM reference: contact area fraction", "NaN outside the reference sample", nullptr, nullptr,
+     quantity_access::area_fraction},
+}};
+
+inline constexpr std::size_t kQuantityCount = kQuantities.size();
+
+/// The index of the quantity called `name` in kQuantities (a compile-time lookup:
+/// `quantity("t_star")`); kQuantityCount if none.
+constexpr std::size_t quantity(std::string_view name) {
+  for (std::size_t q = 0; q < kQuantityCount; ++q) {
+    if (kQuantities[q].name == name) return q;
+  }
+  return kQuantityCount;
+}
+
+/// Whether a map of `quantities`, with or without a BEM reference, stores quantity `q`.
+constexpr bool is_stored(const QuantitySpec& q, Quantities quantities, bool bem) {
+  if (q.source == Source::bem) return bem;
+  return q.extent == Extent::point || quantities == Quantities::full;
+}
+
+}  // namespace punchsweep::map

@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// Every input parameter of the model, declared once: its name (the command-line option,
+/// the config key and the map's coordinate), its unit, its valid range with the check
+/// that enforces it, and the values a sweep takes by default. The command line, the config
+/// validation, `--help`, the map's coordinate attributes and the README's tables follow
+/// from these declarations (tests/model/parameters_test.cpp holds the README to them).
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace punchsweep::model {
+
+/// One input parameter of the model (units: units.hpp).
+struct Parameter {
+  std::string_view name;       ///< option `--NAME`, config key, map coordinate: "l"
+  std::string_view units;      ///< the map's `units` attribute: "R", "1", ...
+  std::string_view long_name;  ///< the map's `long_name` attribute: "lattice pitch"
+  std::string_view meaning;    ///< one phrase for help texts, unit included
+  std::string_view range;      ///< the valid range as messages print it: "l > 0 (in R)"
+  bool (*in_range)(double);    ///< the check `range` describes (called on finite values)
+  bool integer = false;        ///< whole numbers only
+  /// The point commands' default value; empty when the option is required.
+  std::string_view point_default = {};
+  /// The values a sweep takes when a config leaves the axis out; empty when the parameter
+  /// is not an axis but one value per sweep (a [model] key).
+  std::string_view sweep_default = {};
+
+  /// Whether `value` is admissible: finite, whole if `integer`, and in range.
+  bool admits(double value) const;
+  /// Empty when `value` is admissible, else "LONG_NAME NAME = VALUE is outside its range: RANGE".
+  std::string error(double value) const;
+  /// Whether a sweep may take it as an axis.
+  bool sweepable() const { return !sweep_default.empty(); }
+};
+
+/// The parameters of the contact problem (model/contact_problem.hpp): geometry and load.
+inline constexpr std::string_view kPitch = "l";
+inline constexpr std::string_view kHeightDifference = "dh";
+inline constexpr std::string_view kPressure = "pbar";
+inline constexpr std::string_view kExponent = "s";
+inline constexpr std::string_view kShapeConstant = "C";
+
+/// The contact problem's parameters, in the order of a map's axes around the material's
+/// (l, dh first; pbar, s after), then C, which is one value per sweep.
+std::span<const Parameter> problem_parameters();
+
+/// The parameter called `name` among the problem's and every creep law's; nullptr if none.
+const Parameter* find_parameter(std::string_view name);
+
+/// A sweep's axes for a creep law with parameters `law`: l, dh, the law's parameters, pbar,
+/// s (for the standard linear solid: l, dh, T, pbar, s).
+std::vector<const Parameter*> sweep_axes(std::span<const Parameter> law);
+
+}  // namespace punchsweep::model

@@ -1,0 +1,74 @@
+#include "run/map_run.hpp"
+
+#include <filesystem>
+#include <ostream>
+
+#include "io/encoded_tile.hpp"
+
+namespace punchsweep::run {
+
+MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, const io::MapAttributes& attributes,
+               Start start, const map::Tiling& tiling, std::ostream& log)
+    : paths_(config.output),
+      tiling_(tiling),
+      writer_(paths_.partial, layout, attributes),
+      progress_(log, config.grid.points(), layout.bem ? static_cast<std::size_t>(layout.bem->sample) : 0,
+                config.quiet),
+      last_flush_(std::chrono::steady_clock::now()) {
+  std::vector<bool> done(tiling.tiles(), false);
+  if (start == Start::resume) {
+    const std::size_t good_end = io::TileJournal::replay(paths_.journal, [&](const io::EncodedTile& tile) {
+      if (tile.tile >= done.size() || done[tile.tile]) return;
+      writer_.write_encoded(tiling.box(tile.tile), tile);
+      done[tile.tile] = true;
+      progress_.restored(tile);
+    });
+    journal_ = io::TileJournal::open_for_append(paths_.journal, good_end);
+    if (!config.quiet) {
+      log << "punchsweep sweep: resuming " << paths_.final_path << ": " << progress_.points_done() << " of "
+          << config.grid.points() << " points already done\n";
+    }
+  } else {
+    std::string identity;
+    for (std::size_t i = 0; i < config.identity.size(); ++i) identity += (i ? "\n" : "") + config.identity[i];
+    journal_ = io::TileJournal::create(paths_.journal, identity);
+  }
+  for (std::size_t t = 0; t < tiling.tiles(); ++t) {
+    if (!done[t]) pending_.push_back(t);
+  }
+}
+
+void MapRun::accept(std::span<const std::byte> bytes) {
+  const io::EncodedTile tile = io::unpack_encoded_tile(bytes.data(), bytes.size());
+  journal_->append_packed(bytes);
+  writer_.write_encoded(tiling_.box(tile.tile), tile);
+  progress_.computed(tile);
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_flush_ > std::chrono::seconds(30)) {
+    writer_.flush();  // lets a user peek at the .partial file; the journal is what resume trusts
+    last_flush_ = now;
+  }
+}
+
+void MapRun::interrupt() { writer_.flush(); }
+
+void MapRun::finish(int ranks) {
+  writer_.finish(ranks, progress_.seconds(), progress_.rate());
+  std::filesystem::rename(paths_.partial, paths_.final_path);
+  journal_.reset();
+  std::filesystem::remove(paths_.journal);
+  progress_.print_summary(ranks);
+}
+
+io::MapLayout map_layout(const sweep::SweepConfig& config, const map::Tiling& tiling,
+                         const std::optional<std::uint64_t>& reference_points, double reference_tolerance) {
+  io::MapLayout layout{config.grid, config.times, config.quantities, tiling.chunk(), std::nullopt};
+  if (reference_points) {
+    layout.bem = io::BemSetup{config.reference.grid, reference_tolerance, static_cast<std::int64_t>(*reference_points),
+                              static_cast<std::int64_t>(config.reference.seed),
+                              "periodic BEM, FFT influence, Polonsky-Keer CG, viscoelastic creep stepping"};
+  }
+  return layout;
+}
+
+}  // namespace punchsweep::run

@@ -1,0 +1,94 @@
+#include "run/preflight.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <vector>
+
+#include "io/tile_journal.hpp"
+#include "run/resume_policy.hpp"
+
+namespace fs = std::filesystem;
+
+namespace punchsweep::run {
+namespace {
+
+std::string join(const std::vector<std::string>& lines, const char* separator) {
+  std::string text;
+  for (std::size_t i = 0; i < lines.size(); ++i) text += (i ? separator : "") + lines[i];
+  return text;
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace
+
+std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start) {
+  const fs::path final_path(paths.final_path);
+  const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    return "output.file = " + paths.final_path + ": the folder " + dir.string() + " does not exist";
+  }
+  // Create-and-remove a probe: access() says yes to root even where nothing can be created.
+  const std::string probe = (dir / (".punchsweep-probe-" + std::to_string(::getpid()))).string();
+  const int probe_fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (probe_fd < 0) {
+    return "output.file = " + paths.final_path + ": the folder " + dir.string() + " is not writable";
+  }
+  ::close(probe_fd);
+  ::unlink(probe.c_str());
+  // HDF5 holds a lock on a file it writes: if the .partial is locked, a sweep into this map
+  // is still running (perhaps an orphan of a killed job).
+  if (const int fd = ::open(paths.partial.c_str(), O_RDONLY); fd >= 0) {
+    const bool busy = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+    ::close(fd);
+    if (busy) {
+      return "output.file = " + paths.final_path + ": " + paths.partial +
+             " is being written by another running sweep; wait for it or stop it first";
+    }
+  }
+  const bool final_exists = fs::exists(final_path, ec);
+  const bool journal_exists = fs::exists(paths.journal, ec);
+  *start = Start::fresh;
+  if (config.overwrite) return {};
+  if (config.resume) {
+    if (final_exists && !journal_exists) {
+      *start = Start::already_complete;
+      return {};
+    }
+    if (!journal_exists) return {};  // nothing to resume yet: a fresh start (job scripts pass --resume always)
+    std::string header;
+    try {
+      header = io::TileJournal::read_header(paths.journal);
+    } catch (const std::exception& e) {
+      return std::string("--resume: ") + e.what() + "; pass --overwrite to start over";
+    }
+    const std::vector<std::string> differences = identity_differences(split_lines(header), config.identity);
+    if (!differences.empty()) {
+      return "--resume refused: the interrupted map " + paths.partial + " was started with another " +
+             "configuration:\n  " + join(differences, "\n  ") +
+             "\n  (restore the configuration, or pass --overwrite to start over)";
+    }
+    *start = Start::resume;
+    return {};
+  }
+  if (final_exists) {
+    return "output.file = " + paths.final_path + " exists; pass --overwrite to replace it or choose another file";
+  }
+  if (journal_exists) {
+    return "an interrupted sweep left " + paths.partial + " and " + paths.journal +
+           "; pass --resume to finish it or --overwrite to start over";
+  }
+  return {};
+}
+
+}  // namespace punchsweep::run

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+
+#include "sweep/sweep_config.hpp"
+
+namespace punchsweep::run {
+
+/// The three files of a map: the final one, the one under construction, and the journal.
+struct OutputPaths {
+  std::string final_path;
+  std::string partial;
+  std::string journal;
+  explicit OutputPaths(const std::string& file)
+      : final_path(file), partial(file + ".partial"), journal(file + ".partial.journal") {}
+};
+
+/// What a run decided before any work: start fresh, resume from the journal, or nothing
+/// to do (the map is complete and --resume was given).
+enum class Start { fresh, resume, already_complete };
+
+/// The resume policy, checked before anything is created: the output's folder must exist
+/// and be writable, and no other sweep may be writing its .partial (HDF5's lock). Then:
+/// --overwrite starts fresh; --resume resumes a journal whose configuration identity equals
+/// this run's (else refuses with the differences), starts fresh when there is nothing to
+/// resume, and reports already_complete for a finished map; without either, an existing
+/// map or an interrupted one is refused. Returns "" (and sets *start) or the refusal, one
+/// or more lines naming the file and what to do.
+std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start);
+
+}  // namespace punchsweep::run

@@ -1,0 +1,189 @@
+// Every creep law of model::creep_laws() passes the same checks: the interconversion of
+// its creep and relaxation functions, monotone J with the declared limits, J^-1, E' = dE/dt,
+// its retardation series (when it has one), its time scales, and the factory's refusal of
+// values outside each parameter's range. A new law adds one row to kSamples.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/creep_laws.hpp"
+
+using namespace punchsweep::model;
+
+namespace {
+
+// Parameter values to check each law at, by law name (each row in the law's parameter
+// order): its elastic limit, ordinary values and a strongly creeping one.
+const std::map<std::string, std::vector<std::vector<double>>> kSamples{
+    {"standard_linear_solid", {{1.0}, {1.5}, {2.5}, {10.0}, {40.0}}},
+};
+
+struct Case {
+  const CreepLawSpec* law;
+  std::vector<double> values;
+};
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  for (const CreepLawSpec& law : creep_laws()) {
+    const auto it = kSamples.find(std::string(law.name));
+    if (it == kSamples.end()) continue;  // caught by every_law_has_conformance_samples
+    for (const std::vector<double>& values : it->second) out.push_back({&law, values});
+  }
+  return out;
+}
+
+void PrintTo(const Case& c, std::ostream* out) {
+  *out << c.law->name << " (";
+  for (std::size_t k = 0; k < c.values.size(); ++k) {
+    *out << (k ? ", " : "") << c.law->parameters[k].name << " = " << c.values[k];
+  }
+  *out << ")";
+}
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  std::string name = std::string(info.param.law->name) + "_" + std::to_string(info.index);
+  return name;
+}
+
+class CreepLawConformance : public ::testing::TestWithParam<Case> {
+ protected:
+  std::unique_ptr<CreepLaw> make() const { return make_creep_law(*GetParam().law, GetParam().values); }
+};
+
+// int_0-^t E(t - tau) dJ(tau) = E(0) J(t) + int_0^t J(tau) E'(t - tau) dtau (by parts), by
+// composite Simpson on n intervals: a quadrature independent of the model's Gauss rules.
+double interconversion(const CreepLaw& law, double t, int n) {
+  const double h = t / n;
+  double sum = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const double tau = i * h;
+    const double weight = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    sum += weight * law.creep(tau) * law.relaxation_rate(t - tau);
+  }
+  return law.relaxation(0.0) * law.creep(t) + sum * h / 3.0;
+}
+
+}  // namespace
+
+TEST(CreepLaws, every_law_has_conformance_samples) {
+  for (const CreepLawSpec& law : creep_laws()) {
+    EXPECT_TRUE(kSamples.count(std::string(law.name))) << law.name << " has no row in kSamples";
+    EXPECT_EQ(find_creep_law(law.name), &law);
+    if (!law.alias.empty()) {
+      EXPECT_EQ(find_creep_law(law.alias), &law);
+    }
+    for (const Parameter& p : law.parameters) {
+      EXPECT_EQ(find_parameter(p.name), &p) << "parameter names are unique across laws and the problem";
+      EXPECT_TRUE(p.sweepable()) << p.name;
+    }
+  }
+  EXPECT_EQ(find_creep_law("no such law"), nullptr);
+}
+
+TEST_P(CreepLawConformance, relaxation_and_creep_are_interconverted) {
+  const auto law = make();
+  const double scale = std::min(law->creep_time_scale(), law->relaxation_time_scale());
+  for (const double t : {0.3, 1.0, 4.0}) {
+    const double span = t * scale;
+    EXPECT_NEAR(interconversion(*law, span, 20000), 1.0, 1e-10) << law->describe() << ", t = " << span;
+  }
+}
+
+TEST_P(CreepLawConformance, creep_is_non_decreasing_between_its_declared_limits) {
+  const auto law = make();
+  EXPECT_DOUBLE_EQ(law->creep(0.0), law->creep_initial());
+  EXPECT_NEAR(law->creep(0.0), 1.0, 1e-15) << "J(0) = 1/E0*: the unit of pressure";
+  double previous = law->creep(0.0);
+  const double scale = law->creep_time_scale();
+  for (int k = 1; k <= 400; ++k) {
+    const double J = law->creep(scale * 0.1 * k);
+    EXPECT_GE(J, previous);
+    previous = J;
+  }
+  if (std::isfinite(law->creep_final())) {
+    EXPECT_NEAR(law->creep(200.0 * scale), law->creep_final(), 1e-12 * law->creep_final());
+    const double long_time = 200.0 * std::max(scale, law->relaxation_time_scale());
+    EXPECT_NEAR(law->relaxation(long_time), 1.0 / law->creep_final(), 1e-12);
+  }
+  EXPECT_NEAR(law->relaxation(0.0), 1.0 / law->creep_initial(), 1e-15);
+}
+
+TEST_P(CreepLawConformance, relaxation_rate_is_the_derivative_of_relaxation) {
+  const auto law = make();
+  const double scale = law->relaxation_time_scale();
+  for (const double x : {0.05, 0.5, 2.0}) {
+    const double t = x * scale;
+    const double h = 1e-5 * scale;
+    const double central = (law->relaxation(t + h) - law->relaxation(t - h)) / (2 * h);
+    EXPECT_NEAR(law->relaxation_rate(t), central, 1e-7 * std::abs(law->relaxation_rate(0.0)) + 1e-12)
+        << law->describe() << ", t = " << t;
+  }
+}
+
+TEST_P(CreepLawConformance, relaxation_memory_bounds_the_kernel) {
+  const auto law = make();
+  const double memory = law->relaxation_memory();
+  if (std::isinf(memory)) return;
+  EXPECT_LE(std::abs(law->relaxation_rate(memory)), 1e-16 * std::abs(law->relaxation_rate(0.0)) + 1e-300);
+}
+
+TEST_P(CreepLawConformance, time_at_creep_inverts_creep) {
+  const auto law = make();
+  if (law->creep_final() == law->creep_initial()) return;  // elastic: J is constant
+  const double scale = law->creep_time_scale();
+  for (const double x : {1e-6, 0.01, 0.77, 3.0}) {
+    const double t = x * scale;
+    const double J = law->creep(t);
+    const double slope = (law->creep(t * 1.001) - law->creep(t * 0.999)) / (0.002 * t);
+    // J(t) is computed from terms as large as J(inf) (for a limited law): its rounding,
+    // divided by the slope, bounds how well t can be recovered.
+    const double magnitude = std::isfinite(law->creep_final()) ? std::max(J, law->creep_final()) : J;
+    const double conditioning = 8.0 * 2.2e-16 * magnitude / slope;
+    EXPECT_NEAR(law->time_at_creep(J), t, conditioning + 1e-12 * t) << law->describe();
+  }
+  EXPECT_EQ(law->time_at_creep(law->creep_initial()), 0.0);
+  if (std::isfinite(law->creep_final())) {
+    EXPECT_TRUE(std::isinf(law->time_at_creep(law->creep_final())));
+  }
+}
+
+TEST_P(CreepLawConformance, retardation_series_reproduces_the_creep_function) {
+  const auto law = make();
+  const std::optional<RetardationSeries> series = law->retardation_series();
+  if (!series) return;
+  EXPECT_EQ(series->J_final, law->creep_final());
+  for (const double t : {0.0, 0.1, 1.0, 7.0}) {
+    double J = series->J_final;
+    for (const RetardationSeries::Term& term : series->terms) {
+      EXPECT_GT(term.lambda, 0.0);
+      J -= term.J * std::exp(-t / term.lambda);
+    }
+    EXPECT_NEAR(J, law->creep(t), 1e-14 * series->J_final) << law->describe() << ", t = " << t;
+  }
+}
+
+TEST_P(CreepLawConformance, factory_refuses_values_outside_each_parameters_range) {
+  const CreepLawSpec& spec = *GetParam().law;
+  for (std::size_t k = 0; k < spec.parameters.size(); ++k) {
+    std::vector<double> values = GetParam().values;
+    values[k] = std::nan("");
+    try {
+      make_creep_law(spec, values);
+      ADD_FAILURE() << spec.name << " accepted NaN for " << spec.parameters[k].name;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string(spec.parameters[k].range)), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(make_creep_law(spec, std::vector<double>(spec.parameters.size() + 1, 1.0)), std::invalid_argument);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryLaw, CreepLawConformance, ::testing::ValuesIn(cases()), case_name);

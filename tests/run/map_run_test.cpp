@@ -1,0 +1,134 @@
+// The run layer without mpirun: the resume policy, preflight's verdicts on the output
+// files, and a map run's journal, replay and finish, driven with tiles encoded as the
+// ranks encode them.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/encoded_tile.hpp"
+#include "io/scratch_dir.hpp"
+#include "io/tile_encoder.hpp"
+#include "io/tile_journal.hpp"
+#include "map/test_grid.hpp"
+#include "map/tiling.hpp"
+#include "run/map_run.hpp"
+#include "run/preflight.hpp"
+#include "run/resume_policy.hpp"
+
+using namespace punchsweep;
+using namespace punchsweep::map::testing;
+using io::testing::ScratchDir;
+
+namespace {
+
+sweep::SweepConfig small_config(const std::string& output) {
+  sweep::SweepConfig config;
+  config.grid = sls_grid();
+  config.grid.axes[kL].values = {0.75, 1.0};
+  config.grid.axes[kDh].values = {0.02, 0.05, 0.08};
+  config.grid.axes[kT].values = {2.5};
+  config.grid.axes[kPbar].values = {0.02, 0.06};
+  config.grid.axes[kS].values = {2};
+  config.quantities = map::Quantities::regime;
+  config.output = output;
+  config.quiet = true;
+  config.identity = {"grid.l = 0.75, 1", "run.chunk = 2"};
+  return config;
+}
+
+// A tile's bytes as a rank sends them: every point flagged with `code` (regime), valid.
+std::vector<std::byte> packed_tile(io::TileEncoder& encoder, const map::Tiling& tiling, std::size_t tile,
+                                   std::int8_t code) {
+  const map::TileBox box = tiling.box(tile);
+  map::TileData data;
+  data.resize(box.points(), 0, map::Quantities::regime, false);
+  for (auto& r : flag(data, "regime")) r = code;
+  for (auto& v : flag(data, "valid")) v = 0;
+  for (const char* name : {"t_star", "h_0", "h_inf", "a1_inf", "a2_inf", "area_fraction_inf"}) {
+    for (double& x : real(data, name)) x = 0.25 * static_cast<double>(tile);
+  }
+  return io::pack_encoded_tile(encoder.encode(tile, box, data));
+}
+
+}  // namespace
+
+TEST(ResumePolicy, identity_differences_name_each_key_in_the_existing_maps_order) {
+  const std::vector<std::string> d = run::identity_differences(
+      {"grid.T = 2, 5", "model.C = 0.5", "run.chunk = 4096"}, {"grid.T = 2, 5", "run.chunk = 8", "time.times = 0"});
+  ASSERT_EQ(d.size(), 3U);
+  EXPECT_EQ(d[0], "model.C: the existing map has 0.5; this run does not set it");
+  EXPECT_EQ(d[1], "run.chunk: the existing map has 4096; this run asks for 8");
+  EXPECT_EQ(d[2], "time.times: the existing map does not record it; this run asks for 0");
+  EXPECT_TRUE(run::identity_differences({"grid.T = 2"}, {"grid.T  =  2"}).empty());
+}
+
+TEST(Preflight, decides_fresh_resume_or_refusal_from_the_files_there) {
+  const ScratchDir dir;
+  sweep::SweepConfig config = small_config(dir.file("map.h5"));
+  const run::OutputPaths paths(config.output);
+  run::Start start = run::Start::resume;
+
+  EXPECT_EQ(run::preflight(config, paths, &start), "");
+  EXPECT_EQ(start, run::Start::fresh);
+
+  std::ofstream(paths.final_path) << "a finished map";
+  EXPECT_NE(run::preflight(config, paths, &start).find("exists; pass --overwrite"), std::string::npos);
+  config.overwrite = true;
+  EXPECT_EQ(run::preflight(config, paths, &start), "");
+  EXPECT_EQ(start, run::Start::fresh);
+  config.overwrite = false;
+  config.resume = true;
+  EXPECT_EQ(run::preflight(config, paths, &start), "");
+  EXPECT_EQ(start, run::Start::already_complete);
+  std::filesystem::remove(paths.final_path);
+
+  io::TileJournal::create(paths.journal, "grid.l = 0.75, 1\nrun.chunk = 2");
+  EXPECT_EQ(run::preflight(config, paths, &start), "");
+  EXPECT_EQ(start, run::Start::resume);
+  config.identity = {"grid.l = 0.75, 1", "run.chunk = 3"};
+  const std::string refusal = run::preflight(config, paths, &start);
+  EXPECT_NE(refusal.find("--resume refused"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("run.chunk: the existing map has 2; this run asks for 3"), std::string::npos) << refusal;
+  config.resume = false;
+  EXPECT_NE(run::preflight(config, paths, &start).find("pass --resume to finish it"), std::string::npos);
+
+  config.output = dir.file("no/such/folder/map.h5");
+  EXPECT_NE(run::preflight(config, run::OutputPaths(config.output), &start).find("does not exist"), std::string::npos);
+}
+
+TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
+  const ScratchDir dir;
+  const sweep::SweepConfig config = small_config(dir.file("map.h5"));
+  const map::Tiling tiling(config.grid.shape(), 2);
+  const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
+  io::TileEncoder encoder(layout);
+  const io::MapAttributes attributes{"t", "s", "h", "c", "standard_linear_solid", 0.5};
+  std::ostringstream log;
+  ASSERT_GT(tiling.tiles(), 3U);
+  {
+    run::MapRun first(config, layout, attributes, run::Start::fresh, tiling, log);
+    ASSERT_EQ(first.pending().size(), tiling.tiles());
+    first.accept(packed_tile(encoder, tiling, 0, 1));
+    first.accept(packed_tile(encoder, tiling, 2, 1));
+    first.interrupt();  // as after a stop signal: the journal keeps tiles 0 and 2
+  }
+  const run::OutputPaths paths(config.output);
+  EXPECT_TRUE(std::filesystem::exists(paths.journal));
+  EXPECT_FALSE(std::filesystem::exists(paths.final_path));
+
+  run::MapRun second(config, layout, attributes, run::Start::resume, tiling, log);
+  std::vector<std::size_t> expected;
+  for (std::size_t t = 0; t < tiling.tiles(); ++t) {
+    if (t != 0 && t != 2) expected.push_back(t);
+  }
+  EXPECT_EQ(second.pending(), expected);
+  EXPECT_EQ(second.progress().points_done(), tiling.box(0).points() + tiling.box(2).points());
+  for (const std::size_t t : second.pending()) second.accept(packed_tile(encoder, tiling, t, 0));
+  second.finish(1);
+  EXPECT_TRUE(std::filesystem::exists(paths.final_path));
+  EXPECT_FALSE(std::filesystem::exists(paths.journal));
+  EXPECT_FALSE(std::filesystem::exists(paths.partial));
+}
