@@ -12,6 +12,10 @@ below it shaded) and h_inf once per creep ratio T (one colour per T). The values
 from the map's h_0 and h_inf variables, which do not depend on dh; the script checks that
 they agree across the dh axis (and h_0 across T) and says so on stderr if they do not.
 
+The map must have the axes dh and --against (pbar or l); a map without a T or an s axis
+gets one curve or one panel. Every other axis of the map (read from the file, like the units)
+is fixed with --at, or has a single value.
+
 Units: dh, h_0, h_inf and l in R (the punch size); pbar in E0/(1-nu^2) (drawn on a log
 axis when the map's pbar axis is log-spaced); T and s dimensionless.
 
@@ -36,6 +40,9 @@ FIG_DPI = 150
 PANEL_SIZE = (4.6, 3.6)  # inches per panel
 LEGEND_WIDTH = 2.2  # inches
 RELATIVE_TOLERANCE = 1e-12  # for "does not depend on dh / T"
+AGAINST = ("pbar", "l")  # the horizontal axes the chart is drawn against
+CURVE_AXIS = "T"  # one h_inf curve per value (h_0 does not depend on it), if the map has it
+PANEL_AXIS = "s"  # one panel per value, if the map has it
 
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
@@ -45,52 +52,61 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--against", default="pbar", metavar="AXIS",
                    help="horizontal axis: pbar (nominal pressure, E0/(1-nu^2); the default) "
                         "or l (lattice pitch, R)")
-    p.add_argument("--at", nargs="+", action="extend", default=[], metavar="AXIS=VALUE",
-                   help="fix the other of l / pbar (l in R, pbar in E0/(1-nu^2)); optionally "
-                        "also T and/or s (dimensionless) to draw only those curves. The nearest "
-                        "grid value is used (in log space for a log-spaced axis) and reported; a "
-                        "value more than half a grid step outside the axis is an error. An axis "
-                        "with a single value may be left out. dh cannot be fixed: it is the "
-                        "chart's vertical axis.")
+    pm.add_at_option(p, "fix the other of l / pbar and any further axis of the map; "
+                        "optionally also T and/or s to draw only those curves and panels",
+                     "dh cannot be fixed: it is the chart's vertical axis.")
     p.add_argument("-o", "--output", required=True,
                    help="picture to write; the format follows the suffix: .png or .pdf")
     return p.parse_args(argv)
 
 
-def along_dh(values: np.ndarray, name: str, dh_axis: int) -> np.ndarray:
-    """Collapses the dh axis of h_0 or h_inf, warning on stderr if the values differ."""
+def along_dh(values: np.ndarray, name: str, dh_axis: int, unit: str = "") -> np.ndarray:
+    """Collapses the dh axis of h_0 or h_inf, warning on stderr if the values differ (`unit`:
+    the suffix for the spread, e.g. ' R')."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)  # all-NaN columns stay NaN
         mid = np.nanmedian(values, axis=dh_axis)
         spread = np.nanmax(np.abs(values - np.expand_dims(mid, dh_axis)))
         scale = np.nanmax(np.abs(mid)) if np.isfinite(mid).any() else 1.0
     if np.isfinite(spread) and spread > RELATIVE_TOLERANCE * max(scale, 1e-300):
-        print(f"critical_dh.py: warning: {name} varies along dh by up to {spread:.3g} R; "
+        print(f"critical_dh.py: warning: {name} varies along dh by up to {spread:.3g}{unit}; "
               f"drawing its median over dh", file=sys.stderr)
     return mid
 
 
 def critical_curves(ds, against: str, fixed: dict[str, pm.Fixed]):
-    """h_0 as (s, x) and h_inf as (T, s, x), with the T, s and x grid values drawn."""
+    """h_0 as (s, x) and h_inf as (T, s, x), with the T, s and x grid values drawn.
+
+    T and s stand for CURVE_AXIS and PANEL_AXIS; for one the map does not have, its values
+    are [nan] (one curve or one panel)."""
     sel = {name: f.index for name, f in fixed.items()}
-    for name in ("T", "s"):
+    for name in (CURVE_AXIS, PANEL_AXIS):
         if name in sel:  # keep the axis, one value long
             sel[name] = [sel[name]]
-    order = ("dh", "T", "s", against)
-    h0 = ds["h_0"].isel(sel).transpose(*order).values
-    hinf = ds["h_inf"].isel(sel).transpose(*order).values
-    h0, hinf = along_dh(h0, "h_0", 0), along_dh(hinf, "h_inf", 0)  # (T, s, x)
+    cut = ds[["h_0", "h_inf"]].isel(sel)
+    for name in (CURVE_AXIS, PANEL_AXIS):
+        if name not in cut.dims:
+            cut = cut.expand_dims(name)
+    order = ("dh", CURVE_AXIS, PANEL_AXIS, against)
+    h0 = cut["h_0"].transpose(*order).values
+    hinf = cut["h_inf"].transpose(*order).values
+    unit = pm.unit_suffix(ds, "dh")
+    h0, hinf = along_dh(h0, "h_0", 0, unit), along_dh(hinf, "h_inf", 0, unit)  # (T, s, x)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         h0_s = np.nanmedian(h0, axis=0)
         spread = np.nanmax(np.abs(h0 - h0_s[None]))
     if np.isfinite(spread) and spread > RELATIVE_TOLERANCE * max(np.nanmax(np.abs(h0_s)), 1e-300):
-        print(f"critical_dh.py: warning: h_0 varies with T by up to {spread:.3g} R; drawing its "
-              f"median over T", file=sys.stderr)
-    T = ds["T"].isel(T=sel.get("T", slice(None))).values.astype(float)
-    s = ds["s"].isel(s=sel.get("s", slice(None))).values.astype(float)
+        print(f"critical_dh.py: warning: h_0 varies with {CURVE_AXIS} by up to {spread:.3g}{unit}; "
+              f"drawing its median over {CURVE_AXIS}", file=sys.stderr)
+
+    def drawn(name: str) -> np.ndarray:
+        if name not in pm.axes(ds):
+            return np.array([np.nan])
+        return ds[name].isel({name: sel.get(name, slice(None))}).values.astype(float)
+
     x = ds[against].values.astype(float)
-    return x, T, s, h0_s, hinf
+    return x, drawn(CURVE_AXIS), drawn(PANEL_AXIS), h0_s, hinf
 
 
 def render(ds, against: str, fixed: dict[str, pm.Fixed]):
@@ -101,6 +117,7 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
     from matplotlib.patches import Patch
 
     x, T, s, h0, hinf = critical_curves(ds, against, fixed)
+    has_curves, has_panels = CURVE_AXIS in pm.axes(ds), PANEL_AXIS in pm.axes(ds)
     n = len(s)
     ncols = min(n, 3)
     nrows = math.ceil(n / ncols)
@@ -109,7 +126,8 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
     grid = fig.add_gridspec(nrows, ncols + 1, width_ratios=[PANEL_SIZE[0]] * ncols + [LEGEND_WIDTH])
     cmap = plt.get_cmap("viridis")
     t_colours = [cmap(0.85 * k / max(len(T) - 1, 1)) for k in range(len(T))]
-    immediate = pm.REGIME_COLOURS[0]
+    immediate = pm.REGIME_COLOURS["immediate"]
+    dh_unit = pm.unit_tex(pm.units(ds, "dh")) if pm.units(ds, "dh") else "-"
     for k in range(n):
         row, col = divmod(k, ncols)
         ax = fig.add_subplot(grid[row, col], sharex=fig.axes[0] if k else None)
@@ -125,17 +143,19 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
             ax.set_xscale("log")
             pm.style_log_axis(ax.xaxis)
         ax.grid(alpha=0.3)
-        ax.set_title(pm.format_value(ds, "s", float(s[k]), tex=True), fontsize=10)
+        if has_panels:
+            ax.set_title(pm.format_value(ds, PANEL_AXIS, float(s[k]), tex=True), fontsize=10)
         if row == nrows - 1 or k + ncols >= n:
             ax.set_xlabel(pm.axis_label(ds, against))
         if col == 0:
-            ax.set_ylabel("critical height difference $\\Delta h$ [$R$]")
+            ax.set_ylabel(f"critical height difference $\\Delta h$ [{dh_unit}]")
 
     handles = [Line2D([], [], color=immediate, lw=2.2, marker="o", ms=3,
                       label="$h_0$: below it, level 2\ntouches immediately"),
                Patch(facecolor=immediate, alpha=0.15, label="immediate region")]
     handles += [Line2D([], [], color=c, lw=1.4, marker="o", ms=2.5,
-                       label=f"$h_\\infty$, {pm.format_value(ds, 'T', float(t), tex=True)}")
+                       label=f"$h_\\infty$, {pm.format_value(ds, CURVE_AXIS, float(t), tex=True)}"
+                       if has_curves else "$h_\\infty$")
                 for t, c in zip(T, t_colours)]
     legend_ax = fig.add_subplot(grid[:, ncols])
     legend_ax.axis("off")
@@ -151,17 +171,19 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    if args.against not in ("l", "pbar"):
+    if args.against not in AGAINST:
         raise pm.MapError(f"--against '{args.against}' is not a valid choice; use l or pbar")
     out = pm.check_output(args.output)
-    at = pm.parse_at(args.at)
     with pm.open_map(args.map) as ds:
+        pm.require_axes(ds, ("dh", args.against), f"critical_dh.py --against {args.against}")
+        at = pm.parse_at(args.at, ds)
         missing = [n for n in ("h_0", "h_inf") if n not in ds.variables]
         if missing:
             raise pm.MapError(f"'{args.map}' has no {' or '.join(missing)} variable")
         reserved = {args.against: "the horizontal axis",
                     "dh": "the chart's vertical axis (h_0 and h_inf do not depend on dh)"}
-        fixed = pm.resolve_at(ds, at, free=["T", "s"], optional=("T", "s"), reserved=reserved)
+        series = (CURVE_AXIS, PANEL_AXIS)
+        fixed = pm.resolve_at(ds, at, free=list(series), optional=series, reserved=reserved)
         for f in fixed.values():
             print(f.message)
         fig = render(ds, args.against, fixed)

@@ -7,7 +7,8 @@ marking t*. Two sources:
   point mode:  runs `punchsweep point --format json` (never parses the text table) at
                --l --dh --T --pbar --s, sampled at --samples times up to --t-max;
   map mode:    reads the series stored in a regime map made with `--quantities full`
-               (--map MAP.h5 --at l=.. dh=.. T=.. pbar=.. s=..), at the map's snapshot times.
+               (--map MAP.h5 --at l=.. dh=.. T=.. pbar=.. s=.., one value per axis of the
+               map, whichever axes it has), at the map's snapshot times.
 
 Examples:
   postprocess/evolution.py --l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 2 -o evolution.png
@@ -25,7 +26,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import punchsweep_maps as pm  # noqa: E402
 from punchsweep_point import find_binary, run_point  # noqa: E402
 
-POINT_OPTIONS = ("l", "dh", "T", "pbar", "s")
+POINT_OPTIONS = ("l", "dh", "T", "pbar", "s")  # the options of `punchsweep point`, not map axes
 POINT_DEFAULTS = {"C": 0.5, "t_max": 5.0, "samples": 101}
 
 
@@ -45,12 +46,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     from_map = p.add_argument_group("map mode (reads a --quantities full regime map)")
     from_map.add_argument("--map", metavar="MAP.h5",
                           help="regime map written by `punchsweep sweep --quantities full`")
-    from_map.add_argument("--at", nargs="+", action="extend", default=[], metavar="AXIS=VALUE",
-                          help="the point: l=.. dh=.. T=.. pbar=.. s=.. (l, dh in R; pbar in "
-                               "E0/(1-nu^2); T, s dimensionless). The nearest grid value is used "
-                               "(in log space for a log-spaced axis) and reported; a value more "
-                               "than half a grid step outside an axis is an error. An axis with a "
-                               "single value may be left out.")
+    pm.add_at_option(from_map, "the point: a value for each axis of the map (e.g. l=.. dh=.. "
+                               "T=.. pbar=.. s=..)")
     p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
     p.add_argument("--json", help="also write the result here, as `punchsweep point --format json`"
                                   " does (in map mode: the map's values in the same layout)")
@@ -96,26 +93,26 @@ def _number(x) -> float | None:
 
 def from_map(args: argparse.Namespace) -> tuple[dict, str]:
     """The map's values at the nearest grid point, in the layout of the engine's JSON."""
-    at = pm.parse_at(args.at)
     with pm.open_map(args.map) as ds:
         if not pm.has_series(ds):
             raise pm.MapError(f"'{args.map}' has no time series (it was swept with --quantities "
                               f"regime): re-run the sweep with --quantities full, or use the point "
                               f"mode (--l --dh --T --pbar --s)")
+        at = pm.parse_at(args.at, ds)
         fixed = pm.resolve_at(ds, at, free=[])
         for f in fixed.values():
             print(f.message)
         cell = ds.isel({name: f.index for name, f in fixed.items()}).load()
-        regime = int(cell["regime"])
+        regime = pm.flags(ds, "regime").meaning(int(cell["regime"]))
         where = ", ".join(pm.format_value(ds, n, f.value) for n, f in fixed.items())
-        if regime == pm.NOT_COMPUTED:
+        if regime not in pm.DRAWN_REGIMES:
             raise pm.MapError(f"the point {where} was not computed (interrupted map): resume the "
                               f"sweep first")
-        valid = int(cell["valid"])
-        result = {"regime": pm.REGIME_NAMES[regime],
+        valid = pm.flags(ds, "valid").meaning(int(cell["valid"]))
+        result = {"regime": regime,
                   "t_star": _number(cell["t_star"]),
                   "h_0": _number(cell["h_0"]), "h_inf": _number(cell["h_inf"]),
-                  "valid": valid == 0, "reason": "" if valid == 0 else pm.VALID_NAMES[valid],
+                  "valid": valid == pm.VALID, "reason": "" if valid == pm.VALID else valid,
                   "a1_inf": _number(cell["a1_inf"]), "a2_inf": _number(cell["a2_inf"]),
                   "area_fraction_inf": _number(cell["area_fraction_inf"]),
                   "series": {"t": [float(t) for t in cell["time"].values],

@@ -12,6 +12,9 @@ Optionally draws the errors against each axis (--errors-plot) and a regime-map s
 the BEM regimes drawn over the localization colours (--slice-plot): markers at the sampled
 cells and, where a slice is fully sampled, the BEM regime boundaries as lines.
 
+The map's axes, their units and the codes of regime, valid and bem_regime are read from
+the file (the dimensions of `regime`, the coordinates' attributes, flag_values/flag_meanings).
+
 Units: t* in T_eps, radii in R; errors are relative (dimensionless).
 Example:
   model_error.py map.h5 --errors-plot errors.png --slice-plot slice.png --x pbar --y dh --at l=0.75 T=5 s=2
@@ -27,7 +30,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import punchsweep_maps as pm  # noqa: E402
 
 BEM_VARIABLES = ("bem_regime", "bem_t_star")
-NAMES = ("immediate", "delayed", "never")
+NAMES = pm.DRAWN_REGIMES  # the confusion table's rows and columns, by flag meaning
 
 
 def require_reference(ds) -> None:
@@ -63,25 +66,31 @@ def compare(ds, valid_only: bool = False) -> dict:
     ({axis: [(value, stats)]}), "radii" ({"a1": stats, "a2": stats} over all snapshot
     times, where both radii are > 0)}."""
     require_reference(ds)
+    axes = pm.axes(ds)
+    model_codes, bem_codes = pm.flags(ds, "regime"), pm.flags(ds, "bem_regime")
     regime = ds.regime.values
-    bem = ds.bem_regime.values
-    mask = bem >= 0
+    bem = ds.bem_regime.transpose(*axes).values
+    mask = np.isin(bem, [bem_codes.code(n) for n in NAMES])  # the reference's sample
     if valid_only:
-        mask &= ds.valid.values == 0
+        mask &= ds.valid.transpose(*axes).values == pm.flags(ds, "valid").code(pm.VALID)
+    model_is = [regime == model_codes.code(n) for n in NAMES]
+    bem_is = [bem == bem_codes.code(n) for n in NAMES]
     confusion = np.zeros((3, 3), dtype=int)
     for m in range(3):
         for b in range(3):
-            confusion[m, b] = int(np.sum(mask & (regime == m) & (bem == b)))
+            confusion[m, b] = int(np.sum(mask & model_is[m] & bem_is[b]))
     sampled = int(mask.sum())
     agreement = float(np.trace(confusion)) / sampled if sampled else float("nan")
 
-    both_delayed = mask & (regime == 1) & (bem == 1)
-    t_err = np.where(both_delayed, relative_error(ds.t_star.values, ds.bem_t_star.values), np.nan)
+    delayed = NAMES.index("delayed")
+    both_delayed = mask & model_is[delayed] & bem_is[delayed]
+    t_err = np.where(both_delayed, relative_error(ds.t_star.transpose(*axes).values,
+                                                  ds.bem_t_star.transpose(*axes).values), np.nan)
     by_axis = {}
-    for axis_index, name in enumerate(pm.AXES):
+    for axis_index, name in enumerate(axes):
         rows = []
-        for i, value in enumerate(ds[name].values):
-            rows.append((float(value), stats(np.take(t_err, i, axis=axis_index))))
+        for i, value in enumerate(pm.grid_values(ds, name)):
+            rows.append((value, stats(np.take(t_err, i, axis=axis_index))))
         by_axis[name] = rows
 
     radii = {}
@@ -89,8 +98,8 @@ def compare(ds, valid_only: bool = False) -> dict:
         bem_name = "bem_" + name
         if bem_name not in ds or name not in ds:
             continue
-        model_r = ds[name].values
-        bem_r = ds[bem_name].values
+        model_r = ds[name].transpose(*axes, ...).values
+        bem_r = ds[bem_name].transpose(*axes, ...).values
         ok = mask[..., None] & (model_r > 0) & (bem_r > 0)
         radii[name] = stats(np.where(ok, relative_error(model_r, bem_r), np.nan))
     return {"sampled": sampled, "confusion": confusion, "agreement": agreement,
@@ -120,7 +129,7 @@ def report(ds, result: dict, valid_result: dict) -> str:
     lines.append("")
     lines.append("t* relative error by axis value (median / worst, points):")
     for name, rows in result["t_star_by_axis"].items():
-        cells = [f"{value:g}: {100 * s['median']:.1f}%/{100 * s['worst']:.1f}% ({s['count']})"
+        cells = [f"{pm.value_text(value)}: {100 * s['median']:.1f}%/{100 * s['worst']:.1f}% ({s['count']})"
                  for value, s in rows if s["count"]]
         lines.append(f"  {name}{pm.unit_suffix(ds, name)}: " + ("; ".join(cells) if cells else "no delayed pairs"))
     return "\n".join(lines)
@@ -132,10 +141,13 @@ def errors_plot(ds, result: dict, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     t_err = result["t_star_errors"]
-    fig, axes = plt.subplots(1, len(pm.AXES), figsize=(3.2 * len(pm.AXES), 3.4), constrained_layout=True,
-                             sharey=True)
-    for axis_index, (ax, name) in enumerate(zip(axes, pm.AXES)):
-        values = ds[name].values
+    names = pm.axes(ds)
+    fig, axes = plt.subplots(1, len(names), figsize=(3.2 * len(names), 3.4), constrained_layout=True,
+                             sharey=True, squeeze=False)
+    axes = axes[0]
+    for axis_index, (ax, name) in enumerate(zip(axes, names)):
+        categorical = pm.is_categorical(ds, name)
+        values = np.arange(ds.sizes[name]) if categorical else ds[name].values.astype(float)
         shape = [1] * t_err.ndim
         shape[axis_index] = len(values)
         x = np.broadcast_to(values.reshape(shape), t_err.shape)
@@ -145,6 +157,8 @@ def errors_plot(ds, result: dict, path: Path) -> None:
         ax.plot(values, 100 * np.array(medians), color="k", marker="o", ms=3, label="median")
         if pm.is_log(ds, name):
             ax.set_xscale("log")
+        if categorical:  # one column per label
+            ax.set_xticks(values, pm.labels(ds, name))
         ax.set_xlabel(pm.axis_label(ds, name))
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("|t*$_{model}$ - t*$_{BEM}$| / t*$_{BEM}$ [%]")
@@ -163,21 +177,26 @@ def slice_plot(ds, x: str, y: str, at: dict, path: Path) -> list[str]:
 
     if x == y:
         raise pm.MapError("--x and --y must differ")
+    pm.require_numeric(ds, x, "--x")
+    pm.require_numeric(ds, y, "--y")
     fixed = pm.resolve_at(ds, at, free=[x, y], reserved={x: "the x axis", y: "the y axis"})
     cut = ds.isel({name: f.index for name, f in fixed.items()}).transpose(y, x, ...)
     xv, yv = ds[x].values, ds[y].values
     xe, ye = pm.cell_edges(xv, pm.is_log(ds, x)), pm.cell_edges(yv, pm.is_log(ds, y))
-    cat = pm.categories(cut.regime.values, cut.valid.values)
+    cat = pm.categories(ds, cut.regime.values, cut.valid.values)
     colours = pm.category_colours()
     fig, ax = plt.subplots(figsize=(7.5, 5), constrained_layout=True)
     ax.pcolormesh(xe, ye, cat, cmap=ListedColormap(colours), norm=BoundaryNorm(np.arange(-0.5, 7.5), 7),
                   shading="flat", antialiased=False)
-    bem = cut.bem_regime.values
+    bem_codes = pm.flags(ds, "bem_regime")
+    bem = np.full(cut.bem_regime.shape, -1)  # index into NAMES; -1 outside the sample
+    for k, name in enumerate(NAMES):
+        bem[cut.bem_regime.values == bem_codes.code(name)] = k
     sampled = bem >= 0
     xx, yy = np.meshgrid(xv, yv)
-    for code in range(3):
-        sel = sampled & (bem == code)
-        ax.scatter(xx[sel], yy[sel], s=28, color=pm.REGIME_COLOURS[code], edgecolors="k", linewidths=0.8, zorder=3)
+    for k, name in enumerate(NAMES):
+        sel = sampled & (bem == k)
+        ax.scatter(xx[sel], yy[sel], s=28, color=pm.REGIME_COLOURS[name], edgecolors="k", linewidths=0.8, zorder=3)
     if sampled.all() and len(xv) > 1 and len(yv) > 1:
         ax.contour(xv, yv, bem, levels=[0.5, 1.5], colors="k", linewidths=1.6, linestyles="--", zorder=2)
     if pm.is_log(ds, x):
@@ -189,7 +208,7 @@ def slice_plot(ds, x: str, y: str, at: dict, path: Path) -> list[str]:
     ax.set_xlabel(pm.axis_label(ds, x))
     ax.set_ylabel(pm.axis_label(ds, y))
     handles = [Patch(color=colours[c], label=f"model: {NAMES[c]}") for c in range(3)]
-    handles += [Line2D([], [], marker="o", ls="", color=pm.REGIME_COLOURS[c], markeredgecolor="k",
+    handles += [Line2D([], [], marker="o", ls="", color=pm.REGIME_COLOURS[NAMES[c]], markeredgecolor="k",
                        label=f"BEM: {NAMES[c]}") for c in range(3)]
     if sampled.all():
         handles.append(Line2D([], [], color="k", ls="--", label="BEM regime boundaries"))
@@ -208,23 +227,22 @@ def main(argv: list[str]) -> int:
     p.add_argument("--slice-plot", metavar="OUT.png", help="draw a regime-map slice with the BEM regimes over it")
     p.add_argument("--x", default="pbar", metavar="AXIS", help="slice axis across (default pbar)")
     p.add_argument("--y", default="dh", metavar="AXIS", help="slice axis up (default dh)")
-    p.add_argument("--at", nargs="+", action="extend", default=[], metavar="AXIS=VALUE",
-                   help="fix the other axes of the slice (nearest grid value; axes with one value may be left out)")
+    pm.add_at_option(p, "fix the other axes of the slice")
     args = p.parse_args(argv)
     outputs = [pm.check_output(o) for o in (args.errors_plot, args.slice_plot) if o]
-    x = pm.parse_axis(args.x, "--x")
-    y = pm.parse_axis(args.y, "--y")
-    at = pm.parse_at(args.at)
-    ds = pm.open_map(args.map)
-    result = compare(ds)
-    print(report(ds, result, compare(ds, valid_only=True)))
-    if args.errors_plot:
-        errors_plot(ds, result, outputs[0])
-        print(f"model_error.py: wrote {outputs[0]}")
-    if args.slice_plot:
-        for message in slice_plot(ds, x, y, at, outputs[-1]):
-            print(message)
-        print(f"model_error.py: wrote {outputs[-1]}")
+    with pm.open_map(args.map) as ds:
+        x = pm.parse_axis(ds, args.x, "--x")
+        y = pm.parse_axis(ds, args.y, "--y")
+        at = pm.parse_at(args.at, ds)
+        result = compare(ds)
+        print(report(ds, result, compare(ds, valid_only=True)))
+        if args.errors_plot:
+            errors_plot(ds, result, outputs[0])
+            print(f"model_error.py: wrote {outputs[0]}")
+        if args.slice_plot:
+            for message in slice_plot(ds, x, y, at, outputs[-1]):
+                print(message)
+            print(f"model_error.py: wrote {outputs[-1]}")
     return 0
 
 

@@ -18,6 +18,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import punchsweep_maps as pm  # noqa: E402
 from punchsweep_point import REPO, find_binary  # noqa: E402
 
 PAPER = REPO / "sweeps" / "paper"
@@ -35,6 +36,17 @@ def sweep(binary: str, config: str, out: Path) -> Path:
     path = out / (Path(config).stem + ".h5")
     engine(binary, "sweep", "--config", str(PAPER / config), "--output", str(path), "--overwrite", "--quiet")
     return path
+
+
+def open_sweep(binary: str, config: str, out: Path, axes: tuple[str, ...]):
+    """Sweeps `config` and opens the map; MapError unless it has the axes the figure selects on."""
+    ds = pm.open_map(sweep(binary, config, out))
+    try:
+        pm.require_axes(ds, axes, f"the figure from {config}")
+    except pm.MapError:
+        ds.close()
+        raise
+    return ds
 
 
 def save(out: Path, name: str, fig, data: dict) -> None:
@@ -64,10 +76,11 @@ def fig9_2(binary, out, plt):
     save(out, "fig9_2", fig, data)
 
 
-def fig9_3(binary, out, plt, xr):
+def fig9_3(binary, out, plt):
     """h(t) for pbar0 = 0.01: (a) l = 0.75, T = 2, 5, 10; (b) T = 10, l = 0.5, 0.75, 1."""
-    with xr.open_dataset(sweep(binary, "fig9_3.ini", out), engine="h5netcdf") as ds:
-        regimes = {f"l={float(l):g},T={float(T):g}": ["immediate", "delayed", "never"][int(ds.regime.sel(l=l, T=T).item())]
+    with open_sweep(binary, "fig9_3.ini", out, ("l", "T")) as ds:
+        codes = pm.flags(ds, "regime")
+        regimes = {f"l={float(l):g},T={float(T):g}": codes.meaning(ds.regime.sel(l=l, T=T).item())
                    for l in ds.l.values for T in ds.T.values}
     data = {"dh": 0.04, "regime_at_dh": regimes, "panels": {}}
     fig, ax = plt.subplots(1, 2, figsize=(10, 3.8), constrained_layout=True, sharey=True)
@@ -91,22 +104,27 @@ def fig9_3(binary, out, plt, xr):
     save(out, "fig9_3", fig, data)
 
 
+MAP_AXES = ("l", "dh", "T", "pbar", "s")  # the axes map_reader selects on
+
+
 def map_reader(ds):
     """Series and regime of the map at (l, dh, pbar), T = 2.5, s = 2."""
+    codes = pm.flags(ds, "regime")
+
     def series(l, dh, pbar, name):
         return [float(v) for v in ds[name].sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).values]
 
     def t_star(l, dh, pbar):
-        r = int(ds.regime.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
+        regime = codes.meaning(ds.regime.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
         value = float(ds.t_star.sel(l=l, dh=dh, T=2.5, pbar=pbar, s=2).item())
-        return ["immediate", "delayed", "never"][r], (None if r == 2 else value)
+        return regime, (None if regime == "never" else value)
 
     return series, t_star
 
 
-def fig9_4(binary, out, plt, xr):
+def fig9_4(binary, out, plt):
     """Radii for pbar0 = 0.06 (a) and 0.025 (b), l = 0.75, dh = 0.05, T = 2.5."""
-    with xr.open_dataset(sweep(binary, "fig9_4.ini", out), engine="h5netcdf") as ds:
+    with open_sweep(binary, "fig9_4.ini", out, MAP_AXES) as ds:
         series, t_star = map_reader(ds)
         t = [float(v) for v in ds.time.values]
         data = {"t": t}
@@ -126,9 +144,9 @@ def fig9_4(binary, out, plt, xr):
         save(out, "fig9_4", fig, data)
 
 
-def fig9_5(binary, out, plt, xr):
+def fig9_5(binary, out, plt):
     """Area fraction; (a) dh = 0.05, pbar0 = 0.025, l varies; (b) l = 0.75, pbar0 = 0.06, dh varies."""
-    with xr.open_dataset(sweep(binary, "fig9_5.ini", out), engine="h5netcdf") as ds:
+    with open_sweep(binary, "fig9_5.ini", out, MAP_AXES) as ds:
         series, t_star = map_reader(ds)
         t = [float(v) for v in ds.time.values]
         data = {"t": t, "a": [], "b": []}
@@ -156,8 +174,8 @@ def fig9_5(binary, out, plt, xr):
         save(out, "fig9_5", fig, data)
 
 
-def table9_1(binary, out, xr):
-    with xr.open_dataset(sweep(binary, "table9_1.ini", out), engine="h5netcdf") as ds:
+def table9_1(binary, out):
+    with open_sweep(binary, "table9_1.ini", out, ("T",)) as ds:
         creep_ratios = [float(T) for T in ds.T.values]
     moduli = ",".join(repr(1.0 / T) for T in creep_ratios)
     args = ["elastic", "--l", "0.75", "--dh", "0.05", "--pbar", "0.06", "--s", "2", "--E", moduli]
@@ -174,18 +192,17 @@ def main(argv: list[str]) -> int:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import xarray as xr
 
     out = Path(args.out)
     try:
         binary = find_binary(args.binary)
         out.mkdir(parents=True, exist_ok=True)
         fig9_2(binary, out, plt)
-        fig9_3(binary, out, plt, xr)
-        fig9_4(binary, out, plt, xr)
-        fig9_5(binary, out, plt, xr)
-        table9_1(binary, out, xr)
-    except (FileNotFoundError, RuntimeError, OSError) as e:
+        fig9_3(binary, out, plt)
+        fig9_4(binary, out, plt)
+        fig9_5(binary, out, plt)
+        table9_1(binary, out)
+    except (FileNotFoundError, RuntimeError, OSError, pm.MapError) as e:
         print(f"paper_figures.py: {e}", file=sys.stderr)
         return 2
     print(f"paper_figures.py: wrote Figs. 9.2-9.5 (PNG + JSON) and table9_1.md to {out}")

@@ -1,9 +1,20 @@
 """Shared reading of punchsweep regime maps (the HDF5 contract in README.md).
 
-Everything the map scripts (regime_map.py, critical_dh.py, summary.py, evolution.py --map)
-have in common lives here: opening a map with xarray (h5netcdf), axis metadata (units,
-long_name, log spacing), the `--at AXIS=VALUE` nearest-grid-value selection, the regime
-colours, output-path checks and the one-line user-error convention (exit code 2).
+Everything the map scripts (regime_map.py, critical_dh.py, summary.py, evolution.py --map,
+model_error.py) have in common lives here: opening a map with xarray (h5netcdf), its axes and
+their metadata (units, long_name, log spacing), the meanings of its flag codes, the
+`--at AXIS=VALUE` nearest-grid-value selection, the regime colours, output-path checks and the
+one-line user-error convention (exit code 2).
+
+A map describes itself, and nothing here keeps a copy of that description:
+  - its axes are the dimensions of the `regime` variable, in their order (today l, dh, T,
+    pbar, s; which axes a map has depends on how it was swept);
+  - an axis's units, long_name and spacing are the attributes of its coordinate variable; a
+    coordinate of text values is a categorical axis, selected by label;
+  - the codes of `regime`, `valid` and `bem_regime` and what they mean are those variables'
+    flag_values/flag_meanings attributes (Flags).
+The scripts name an axis only where they need that one (critical_dh.py: dh and --against),
+and name flag meanings (immediate, delayed, never, not_computed, valid), never codes.
 
 It reads the file only; it never runs or parses the engine.
 """
@@ -17,27 +28,35 @@ from pathlib import Path
 
 import numpy as np
 
-AXES = ("l", "dh", "T", "pbar", "s")
-"""The five grid axes, in the order of the map's dimensions."""
-
 SERIES = ("a1", "a2", "P1", "P2", "area_fraction")
 """The time-series variables of a `--quantities full` map."""
 
-# Flag codes are a file format contract (README, "Validity"); never renumber them.
-REGIME_NAMES = {0: "immediate", 1: "delayed", 2: "never", -1: "not_computed"}
-VALID_NAMES = {0: "valid", 1: "same_level_overlap", 2: "cross_level_overlap", 3: "no_solution",
-               -1: "not_computed"}
-NOT_COMPUTED = -1
+# Flag meanings the scripts act on (README, "Validity"); their codes are read from the map.
+DRAWN_REGIMES = ("immediate", "delayed", "never")
+"""The regimes of computed points, in the order they are drawn and tabulated."""
+NOT_COMPUTED = "not_computed"
+VALID = "valid"
 
-# Fixed categorical colours (Okabe-Ito, readable with colour-vision deficiencies).
-REGIME_COLOURS = {0: "#0072B2", 1: "#E69F00", 2: "#009E73", -1: "#3A3A3A"}
+# Fixed categorical colours per regime meaning (Okabe-Ito, readable with colour-vision
+# deficiencies).
+REGIME_COLOURS = {"immediate": "#0072B2", "delayed": "#E69F00", "never": "#009E73",
+                  NOT_COMPUTED: "#3A3A3A"}
 INVALID_WHITE_MIX = 0.55
 """Invalid points are drawn in their regime colour mixed this much with white (and hatched)."""
 
-# Units as they appear in the file, and how the plots typeset them.
+# How the plots typeset units as they appear in the file and the usual axis symbols; a unit
+# or axis not listed is written as the file has it.
 _UNIT_TEX = {"R": "$R$", "1": "-", "E0/(1-nu^2)": "$E_0/(1-\\nu^2)$", "T_eps": "$T_\\varepsilon$",
              "R^2 E0/(1-nu^2)": "$R^2 E_0/(1-\\nu^2)$"}
 _SYMBOL_TEX = {"l": "$l$", "dh": "$\\Delta h$", "T": "$T$", "pbar": "$\\bar p_0$", "s": "$s$"}
+
+AT_HELP = ("Any axis of the map may be given, in the units the map records for it (e.g. l and "
+           "dh in R, pbar in E0/(1-nu^2), T and s dimensionless; `summary.py MAP.h5` lists a "
+           "map's axes and units); a categorical axis takes one of its labels. The nearest grid "
+           "value is used (nearest in log space for a log-spaced axis) and reported; a value more "
+           "than half a grid step outside the axis is an error. An axis with a single value may "
+           "be left out.")
+"""The part of the --at help that every map script shares (add_at_option)."""
 
 
 class MapError(Exception):
@@ -61,12 +80,21 @@ def run_cli(main, prog: str, argv: list[str] | None = None) -> int:
         return 2
 
 
+def add_at_option(parser, what: str, more: str = "") -> None:
+    """The --at AXIS=VALUE option (repeatable) with the shared help text; `what` says what it
+    fixes in this script, `more` adds a script's own rule."""
+    parser.add_argument("--at", nargs="+", action="extend", default=[], metavar="AXIS=VALUE",
+                        help=f"{what}. {AT_HELP}" + (f" {more}" if more else ""))
+
+
 # ---------------------------------------------------------------------------------------------
 # Opening a map
 
 
 def open_map(path: str | Path):
-    """The map as an xarray Dataset (engine h5netcdf); MapError unless it is a regime map."""
+    """The map as an xarray Dataset (engine h5netcdf); MapError unless it is a regime map:
+    flag variables regime and valid over the same axes, each axis a coordinate variable, and
+    flag_values/flag_meanings on both."""
     import xarray as xr
 
     path = Path(path)
@@ -79,22 +107,37 @@ def open_map(path: str | Path):
     if not h5py.is_hdf5(path):
         raise MapError(f"'{path}' is not an HDF5 file, so not a punchsweep regime map")
     with h5py.File(path, "r") as f:
-        missing = [n for n in (*AXES, "regime", "valid") if n not in f]
-        shape = f["regime"].shape if "regime" in f else None
+        missing = [n for n in ("regime", "valid") if n not in f]
     if missing:
-        raise MapError(f"'{path}' is not a punchsweep regime map (no {', '.join(missing)}; expected "
-                       f"the axes {', '.join(AXES)} and the variables regime, valid)")
+        raise MapError(f"'{path}' is not a punchsweep regime map (no {', '.join(missing)}; a map "
+                       f"holds the flag variables regime and valid over its axes)")
     try:
         ds = xr.open_dataset(path, engine="h5netcdf")
     except Exception as e:  # h5netcdf raises several types for a file that is not netCDF-4
         why = str(e).strip().splitlines()[0] if str(e).strip() else "unreadable"
         raise MapError(f"'{path}' is not a readable punchsweep regime map "
                        f"({type(e).__name__}: {why})") from None
-    if ds["regime"].dims != AXES:
+    try:
+        _check_layout(ds)
+    except MapError as e:
         ds.close()
-        raise MapError(f"'{path}' is not a punchsweep regime map (regime has dimensions "
-                       f"{ds['regime'].dims} of shape {shape}; expected {AXES})")
+        raise MapError(f"'{path}' is not a punchsweep regime map ({e})") from None
     return ds
+
+
+def _check_layout(ds) -> None:
+    names = axes(ds)
+    if not names:
+        raise MapError("regime has no dimensions")
+    for name in names:
+        if name not in ds.coords or ds[name].dims != (name,):
+            raise MapError(f"regime's dimension '{name}' has no coordinate variable (dimension "
+                           f"scale) with its grid values")
+    if set(ds["valid"].dims) != set(names):
+        raise MapError(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime "
+                       f"{', '.join(names)}")
+    flags(ds, "regime")
+    flags(ds, "valid")
 
 
 def has_series(ds) -> bool:
@@ -108,7 +151,103 @@ def is_completed(ds) -> bool:
 
 
 # ---------------------------------------------------------------------------------------------
-# Axis metadata
+# Flag codes and their meanings
+
+
+@dataclass(frozen=True)
+class Flags:
+    """The codes of one flag variable and what they mean (its flag_values/flag_meanings)."""
+    variable: str
+    codes: tuple[int, ...]
+    meanings: tuple[str, ...]
+
+    def code(self, meaning: str) -> int:
+        """The code of `meaning`; MapError if the variable's flags do not list it."""
+        if meaning not in self.meanings:
+            raise MapError(f"the flags of '{self.variable}' have no meaning '{meaning}' "
+                           f"(flag_meanings: {' '.join(self.meanings)})")
+        return self.codes[self.meanings.index(meaning)]
+
+    def meaning(self, code: int) -> str:
+        """What `code` means; MapError for a code the flags do not list."""
+        if int(code) not in self.codes:
+            raise MapError(f"'{self.variable}' holds the code {int(code)}, which its flag_values "
+                           f"({' '.join(map(str, self.codes))}) do not list")
+        return self.meanings[self.codes.index(int(code))]
+
+
+def flags(ds, variable: str = "regime") -> Flags:
+    """The codes and meanings of a flag variable (regime, valid, bem_regime) as the map
+    records them; MapError if its flag_values/flag_meanings are missing or do not pair up."""
+    attrs = ds[variable].attrs
+    values, meanings = attrs.get("flag_values"), attrs.get("flag_meanings")
+    if values is None or meanings is None:
+        raise MapError(f"'{variable}' has no flag_values/flag_meanings attributes, so its codes "
+                       f"cannot be read")
+    if isinstance(meanings, bytes):
+        meanings = meanings.decode()
+    codes = tuple(int(v) for v in np.atleast_1d(values))
+    words = tuple(str(meanings).split())
+    if len(codes) != len(words) or len(set(codes)) != len(codes) or len(set(words)) != len(words):
+        raise MapError(f"'{variable}' has flag_values {' '.join(map(str, codes))} and flag_meanings "
+                       f"'{meanings}', which do not pair up one to one")
+    return Flags(variable, codes, words)
+
+
+# ---------------------------------------------------------------------------------------------
+# Axes and their metadata
+
+
+def axes(ds) -> tuple[str, ...]:
+    """The map's axes: the dimensions of `regime`, in their order."""
+    return tuple(ds["regime"].dims)
+
+
+def require_axes(ds, names, what: str) -> None:
+    """MapError unless the map has every axis in `names` (which `what` needs)."""
+    missing = [n for n in names if n not in axes(ds)]
+    if missing:
+        raise MapError(f"{what} needs the ax{'is' if len(missing) == 1 else 'es'} "
+                       f"{', '.join(missing)}; this map has the axes {', '.join(axes(ds))}")
+
+
+def parse_axis(ds, name: str, option: str) -> str:
+    """`name` if it is an axis of the map, else MapError naming the map's axes."""
+    if name not in axes(ds):
+        raise MapError(f"unknown axis '{name}' for {option}; valid axes: {', '.join(axes(ds))} "
+                       f"(the axes of this map)")
+    return name
+
+
+def labels(ds, name: str) -> list[str] | None:
+    """The labels of a categorical axis (a coordinate of text values); None for a numeric one."""
+    values = ds[name].values
+    if values.dtype.kind not in "OSU":
+        return None
+    return [v.decode() if isinstance(v, bytes) else str(v) for v in values]
+
+
+def is_categorical(ds, name: str) -> bool:
+    return labels(ds, name) is not None
+
+
+def require_numeric(ds, name: str, option: str) -> None:
+    """MapError if `name` is a categorical axis, where `option` needs a numeric one."""
+    names = labels(ds, name)
+    if names is not None:
+        raise MapError(f"{option} {name}: {name} is a categorical axis ({', '.join(names)}); "
+                       f"{option} needs a numeric axis")
+
+
+def grid_values(ds, name: str) -> list:
+    """An axis's grid values: floats, or the labels of a categorical axis."""
+    names = labels(ds, name)
+    return names if names is not None else [float(v) for v in ds[name].values]
+
+
+def value_text(value) -> str:
+    """A grid value for tables and messages: 6 significant digits, or the label."""
+    return value if isinstance(value, str) else f"{value:.6g}"
 
 
 def units(ds, name: str) -> str:
@@ -135,10 +274,11 @@ def unit_tex(unit: str) -> str:
     return _UNIT_TEX.get(unit, unit)
 
 
-def format_value(ds, name: str, value: float, tex: bool = False) -> str:
-    """'l = 0.75 R', 'T = 2.5' (dimensionless: no unit), for titles and messages."""
+def format_value(ds, name: str, value, tex: bool = False) -> str:
+    """'l = 0.75 R', 'T = 2.5' (dimensionless: no unit), for titles and messages; a categorical
+    axis's value is its label."""
     u = units(ds, name)
-    number = f"{value:.6g}"
+    number = value_text(value)
     if tex:
         sym = _SYMBOL_TEX.get(name, name)
         unit = "" if u in ("", "1") else " " + unit_tex(u)
@@ -156,39 +296,51 @@ def unit_suffix(ds, name: str) -> str:
 # --at AXIS=VALUE: nearest grid values
 
 
-def parse_axis(name: str, option: str, axes=AXES) -> str:
-    if name not in axes:
-        raise MapError(f"unknown axis '{name}' for {option}; valid axes: {', '.join(axes)}")
-    return name
-
-
-def parse_at(items: list[str] | None) -> dict[str, float]:
-    """['l=0.75', 'T=2.5'] -> {'l': 0.75, 'T': 2.5}; MapError for bad syntax, axis or number."""
-    at: dict[str, float] = {}
+def parse_at(items: list[str] | None, ds) -> dict[str, float | str]:
+    """['l=0.75', 'T=2.5'] -> {'l': 0.75, 'T': 2.5} for the axes of the map `ds` (a categorical
+    axis keeps the label: 'material=steel' -> 'steel'); MapError for bad syntax, axis or number."""
+    at: dict[str, float | str] = {}
     for item in items or []:
         name, eq, text = item.partition("=")
         name, text = name.strip(), text.strip()
         if not eq or not name:
-            raise MapError(f"--at '{item}' is not AXIS=VALUE (axes: {', '.join(AXES)})")
-        parse_axis(name, "--at")
-        try:
-            value = float(text)
-        except ValueError:
-            raise MapError(f"--at {name}='{text}' is not a number") from None
-        if not math.isfinite(value):
-            raise MapError(f"--at {name}={text} is not a finite number")
+            raise MapError(f"--at '{item}' is not AXIS=VALUE (axes of this map: "
+                           f"{', '.join(axes(ds))})")
+        parse_axis(ds, name, "--at")
+        if is_categorical(ds, name):
+            value: float | str = text
+        else:
+            try:
+                value = float(text)
+            except ValueError:
+                raise MapError(f"--at {name}='{text}' is not a number") from None
+            if not math.isfinite(value):
+                raise MapError(f"--at {name}={text} is not a finite number")
         if name in at:
             raise MapError(f"--at gives {name} twice")
         at[name] = value
     return at
 
 
-def nearest_index(ds, name: str, value: float) -> int:
-    """Index of the grid value nearest to `value` (in log space for a log-spaced axis).
+def _given(value) -> str:
+    return value if isinstance(value, str) else f"{value:g}"
+
+
+def nearest_index(ds, name: str, value) -> int:
+    """Index of the grid value nearest to `value` (in log space for a log-spaced axis); on a
+    categorical axis, the index of the label `value`.
 
     A value outside the axis range by more than half the end grid step is an error. An axis
     with one value accepts only that value (to 1e-9 relative).
     """
+    names = labels(ds, name)
+    if names is not None:
+        if _given(value) not in names:
+            raise MapError(f"--at {name}={_given(value)} is not on the axis; {name} has the "
+                           f"labels {', '.join(names)}")
+        return names.index(_given(value))
+    if isinstance(value, str):
+        raise MapError(f"--at {name}='{value}' is not a number")
     grid = np.asarray(ds[name].values, dtype=float)
     log = is_log(ds, name) and np.all(grid > 0)
     if log and value <= 0:
@@ -210,39 +362,43 @@ def nearest_index(ds, name: str, value: float) -> int:
 
 @dataclass(frozen=True)
 class Fixed:
-    """One fixed axis: its grid index and value, and how it was chosen."""
+    """One fixed axis: its grid index and value (a label on a categorical axis), and how it
+    was chosen."""
     index: int
-    value: float
+    value: float | str
     message: str
 
 
-def resolve_at(ds, at: dict[str, float], free: list[str], optional: tuple[str, ...] = (),
+def resolve_at(ds, at: dict[str, float | str], free: list[str], optional: tuple[str, ...] = (),
                reserved: dict[str, str] | None = None) -> dict[str, Fixed]:
-    """Fixes every axis not in `free`: from --at (nearest value) or, with one value, the value.
+    """Fixes every axis of the map not in `free`: from --at (nearest value) or, with one value,
+    the value.
 
     `optional` axes may be fixed by --at but stay free otherwise; `reserved` maps axis names
-    to why --at may not fix them (e.g. 'the x axis'). Returns only the fixed axes.
+    to why --at may not fix them (e.g. 'the x axis'). `free`, `optional` and `reserved` may
+    name axes the map does not have. Returns only the fixed axes, in the map's axis order.
     """
     reserved = reserved or {}
     for name in at:
+        parse_axis(ds, name, "--at")
         if name in reserved:
             raise MapError(f"--at {name}: {name} is {reserved[name]} and cannot be fixed")
     fixed: dict[str, Fixed] = {}
     unfixed = []
-    for name in AXES:
+    for name in axes(ds):
         if name in reserved or (name in free and name not in at):
             continue
-        grid = ds[name].values
+        grid = grid_values(ds, name)
         if name in at:
             i = nearest_index(ds, name, at[name])
-            msg = (f"--at {name}={at[name]:g} -> nearest grid value "
-                   f"{format_value(ds, name, float(grid[i]))}")
-            fixed[name] = Fixed(i, float(grid[i]), msg)
+            msg = (f"--at {name}={_given(at[name])} -> nearest grid value "
+                   f"{format_value(ds, name, grid[i])}")
+            fixed[name] = Fixed(i, grid[i], msg)
         elif name in optional:
             continue
         elif len(grid) == 1:
-            fixed[name] = Fixed(0, float(grid[0]), f"{name} not given -> its only grid value "
-                                                   f"{format_value(ds, name, float(grid[0]))}")
+            fixed[name] = Fixed(0, grid[0], f"{name} not given -> its only grid value "
+                                            f"{format_value(ds, name, grid[0])}")
         else:
             unfixed.append(name)
     if unfixed:
@@ -253,9 +409,9 @@ def resolve_at(ds, at: dict[str, float], free: list[str], optional: tuple[str, .
 
 
 def grid_summary(ds, name: str, limit: int = 6) -> str:
-    grid = ds[name].values
-    if len(grid) <= limit:
-        return "{" + ", ".join(f"{v:.6g}" for v in grid) + "}"
+    grid = grid_values(ds, name)
+    if len(grid) <= limit or is_categorical(ds, name):
+        return "{" + ", ".join(value_text(v) for v in grid) + "}"
     return f"[{grid[0]:.6g} .. {grid[-1]:.6g}] ({len(grid)} values)"
 
 
@@ -281,35 +437,42 @@ def rgba(colour: str) -> np.ndarray:
     return np.array(to_rgba(colour))
 
 
-def invalid_colour(code: int) -> np.ndarray:
-    """The paler shade an invalid point of regime `code` is drawn in."""
-    c = rgba(REGIME_COLOURS[code])
+def invalid_colour(meaning: str) -> np.ndarray:
+    """The paler shade an invalid point of regime `meaning` (e.g. 'delayed') is drawn in."""
+    c = rgba(REGIME_COLOURS[meaning])
     c[:3] = (1 - INVALID_WHITE_MIX) * c[:3] + INVALID_WHITE_MIX
     return c
 
 
-# The drawn categories: regime code for valid points, code + 3 for invalid, 6 not computed.
+# The drawn categories: DRAWN_REGIMES[k] is k for valid points, k + 3 for invalid ones; 6 is
+# any other regime code (not computed).
 CATEGORY_NOT_COMPUTED = 6
 
 
-def categories(regime: np.ndarray, valid: np.ndarray) -> np.ndarray:
-    """Category per cell: 0-2 valid regimes, 3-5 the same regimes invalid, 6 not computed."""
+def categories(ds, regime: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """Category per cell: 0-2 valid regimes, 3-5 the same regimes invalid, 6 not computed.
+    The codes are the map's (`ds`: the flags of regime and valid)."""
+    regime_flags, valid_flags = flags(ds, "regime"), flags(ds, "valid")
     regime = np.asarray(regime)
-    cat = np.where(np.asarray(valid) == 0, regime, regime + 3).astype(np.int16)
-    cat[regime == NOT_COMPUTED] = CATEGORY_NOT_COMPUTED
+    ok = np.asarray(valid) == valid_flags.code(VALID)
+    cat = np.full(regime.shape, CATEGORY_NOT_COMPUTED, dtype=np.int16)
+    for k, meaning in enumerate(DRAWN_REGIMES):
+        this = regime == regime_flags.code(meaning)
+        cat[this & ok] = k
+        cat[this & ~ok] = k + len(DRAWN_REGIMES)
     return cat
 
 
 def category_colours() -> np.ndarray:
     """RGBA per category (index = category)."""
-    return np.array([rgba(REGIME_COLOURS[0]), rgba(REGIME_COLOURS[1]), rgba(REGIME_COLOURS[2]),
-                     invalid_colour(0), invalid_colour(1), invalid_colour(2),
-                     rgba(REGIME_COLOURS[NOT_COMPUTED])])
+    return np.array([rgba(REGIME_COLOURS[m]) for m in DRAWN_REGIMES]
+                    + [invalid_colour(m) for m in DRAWN_REGIMES]
+                    + [rgba(REGIME_COLOURS[NOT_COMPUTED])])
 
 
-def regime_colour_grid(regime: np.ndarray, valid: np.ndarray) -> np.ndarray:
+def regime_colour_grid(ds, regime: np.ndarray, valid: np.ndarray) -> np.ndarray:
     """The fill colour (RGBA, shape (..., 4)) each cell is drawn with, hatching aside."""
-    return category_colours()[categories(regime, valid)]
+    return category_colours()[categories(ds, regime, valid)]
 
 
 def cell_edges(values: np.ndarray, log: bool) -> np.ndarray:

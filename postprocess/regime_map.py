@@ -9,8 +9,9 @@ points never computed (an interrupted map) are dark grey. Contour lines of t* (i
 the creep time) run over the delayed region. A log-spaced axis (attribute spacing = "log")
 is drawn on a log scale.
 
-Units: l and dh in R (the punch size), pbar in E0/(1-nu^2), T and s dimensionless,
-t* in T_eps.
+Any axes of the map can be drawn, fixed or faceted: the map's axes, their units and the
+regime codes are read from the file. Units (today's axes): l and dh in R (the punch size),
+pbar in E0/(1-nu^2), T and s dimensionless, t* in T_eps.
 
 Example:
   postprocess/regime_map.py map.h5 --x pbar --y dh --at l=0.75 T=2.5 s=2 -o map.png
@@ -39,20 +40,14 @@ FEW_VALUES = 6  # a linear axis with at most this many values is ticked at its g
 
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
-    axes = ", ".join(pm.AXES)
     p = pm.Parser(prog="regime_map.py", description=__doc__,
                   formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("map", metavar="MAP.h5", help="regime map written by `punchsweep sweep`")
     p.add_argument("--x", required=True, metavar="AXIS",
-                   help=f"axis across the picture, one of {axes} (l, dh in R; pbar in "
-                        "E0/(1-nu^2); T, s dimensionless)")
+                   help="axis across the picture: a numeric axis of the map, e.g. pbar (l, dh "
+                        "in R; pbar in E0/(1-nu^2); T, s dimensionless)")
     p.add_argument("--y", required=True, metavar="AXIS", help="axis up the picture (as --x)")
-    p.add_argument("--at", nargs="+", action="extend", default=[], metavar="AXIS=VALUE",
-                   help="fix each axis that is not --x, --y or --facet, e.g. l=0.75 T=2.5 s=2 "
-                        "(values in the axis units: l in R, pbar in E0/(1-nu^2), T and s "
-                        "dimensionless). The nearest grid value is used (nearest in log space "
-                        "for a log-spaced axis) and reported; a value more than half a grid step "
-                        "outside the axis is an error. An axis with a single value may be left out.")
+    pm.add_at_option(p, "fix each axis that is not --x, --y or --facet, e.g. l=0.75 T=2.5 s=2")
     p.add_argument("--facet", metavar="AXIS",
                    help="draw one panel per grid value of this axis (shared legend)")
     p.add_argument("--no-contours", action="store_true",
@@ -72,17 +67,21 @@ class Panel:
     title: str
 
 
-def check_axes(x: str, y: str, facet: str | None) -> None:
-    pm.parse_axis(x, "--x")
-    pm.parse_axis(y, "--y")
+def check_axes(ds, x: str, y: str, facet: str | None) -> None:
+    """--x, --y (numeric) and --facet must be different axes of the map."""
+    axes = pm.axes(ds)
+    pm.parse_axis(ds, x, "--x")
+    pm.parse_axis(ds, y, "--y")
     if x == y:
         raise pm.MapError(f"--x and --y are both '{x}'; choose two different axes of "
-                          f"{', '.join(pm.AXES)}")
+                          f"{', '.join(axes)}")
+    pm.require_numeric(ds, x, "--x")
+    pm.require_numeric(ds, y, "--y")
     if facet is not None:
-        pm.parse_axis(facet, "--facet")
+        pm.parse_axis(ds, facet, "--facet")
         if facet in (x, y):
             raise pm.MapError(f"--facet {facet} is already the {'x' if facet == x else 'y'} axis; "
-                              f"choose one of {', '.join(a for a in pm.AXES if a not in (x, y))}")
+                              f"choose one of {', '.join(a for a in axes if a not in (x, y))}")
 
 
 def contour_levels(t_star: np.ndarray, most: int = 8, decades: float = 2.5) -> list[float]:
@@ -113,23 +112,25 @@ def inside(mask: np.ndarray, xe: np.ndarray, ye: np.ndarray, pts: np.ndarray) ->
     return hit
 
 
-def draw_contours(ax, xv, yv, xe, ye, regime, t_star, levels) -> bool:
+def draw_contours(ax, xv, yv, xe, ye, regime, t_star, levels, codes: pm.Flags) -> bool:
     """t* contour lines (T_eps) clipped to the delayed cells; True if any line is drawn.
 
     The field is log10 t* at the delayed cell centres. Immediate cells stand for t* = 0 and
     never cells for t* = infinity (t* -> 0 and -> infinity at those boundaries), both as
     values a decade beyond the levels, so that lines run up to the delayed cells' edges.
+    `codes` are the map's regime flags.
     """
     from matplotlib.artist import Artist
     from matplotlib.path import Path as MplPath
 
-    delayed = regime == 1
+    delayed = regime == codes.code("delayed")
     if not delayed.any() or regime.shape[0] < 2 or regime.shape[1] < 2:
         return False
     lo, hi = math.log10(levels[0]) - 1, math.log10(levels[-1]) + 1
     with np.errstate(divide="ignore", invalid="ignore"):
         z = np.where(delayed, np.log10(t_star), np.nan)
-    z = np.where(regime == 0, lo, np.where(regime == 2, hi, z))
+    z = np.where(regime == codes.code("immediate"), lo,
+                 np.where(regime == codes.code("never"), hi, z))
     z = np.ma.masked_invalid(z)
     cs = ax.contour(xv, yv, z, levels=np.log10(levels), colors="black", linewidths=0.8,
                     linestyles="solid")
@@ -179,7 +180,8 @@ def few_and_apart(values: np.ndarray, edges: np.ndarray) -> bool:
 
 
 def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed]):
-    """(facet value or None, regime, valid, t*) with arrays shaped (ny, nx)."""
+    """(facet value or None, regime, valid, t*) with arrays shaped (ny, nx); a facet value is
+    a float, or a label on a categorical axis."""
     sel = {name: f.index for name, f in fixed.items()}
     order = ([facet] if facet else []) + [y, x]
     regime = ds["regime"].isel(sel).transpose(*order).values
@@ -188,7 +190,7 @@ def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed]):
               else np.full(regime.shape, np.nan))
     if facet is None:
         return [(None, regime, valid, t_star)]
-    return [(float(v), regime[k], valid[k], t_star[k]) for k, v in enumerate(ds[facet].values)]
+    return [(v, regime[k], valid[k], t_star[k]) for k, v in enumerate(pm.grid_values(ds, facet))]
 
 
 def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = None,
@@ -203,13 +205,15 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
     from matplotlib.patches import Patch, Rectangle
 
     data = slices(ds, x, y, facet, fixed)
+    codes = pm.flags(ds, "regime")
     xv, yv = ds[x].values.astype(float), ds[y].values.astype(float)
     xlog, ylog = pm.is_log(ds, x), pm.is_log(ds, y)
     xe, ye = pm.cell_edges(xv, xlog), pm.cell_edges(yv, ylog)
     colours = pm.category_colours()
     cmap = ListedColormap(colours)
     norm = BoundaryNorm(np.arange(len(colours) + 1) - 0.5, len(colours))
-    all_t = np.concatenate([np.where(r == 1, t, np.nan).ravel() for _, r, _, t in data])
+    all_t = np.concatenate([np.where(r == codes.code("delayed"), t, np.nan).ravel()
+                            for _, r, _, t in data])
     levels = contour_levels(all_t) if contours else []
 
     n = len(data)
@@ -226,7 +230,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         row, col = divmod(k, ncols)
         ax = fig.add_subplot(grid[row, col], sharex=first, sharey=first)
         first = first or ax
-        cat = pm.categories(regime, valid)
+        cat = pm.categories(ds, regime, valid)
         ax.pcolormesh(xe, ye, cat, cmap=cmap, norm=norm, shading="flat", antialiased=False,
                       edgecolors="none")
         bad = (cat >= 3) & (cat < pm.CATEGORY_NOT_COMPUTED)
@@ -249,7 +253,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
             pm.style_log_axis(ax.yaxis)
         elif few_and_apart(yv, ye):
             ax.set_yticks(yv, [f"{v:g}" for v in yv])
-        if levels and draw_contours(ax, xv, yv, xe, ye, regime, t_star, levels):
+        if levels and draw_contours(ax, xv, yv, xe, ye, regime, t_star, levels, codes):
             any_contour = True
         if row == nrows - 1 or k + ncols >= n:
             ax.set_xlabel(pm.axis_label(ds, x))
@@ -258,11 +262,11 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         title = pm.format_value(ds, facet, fval, tex=True) if facet else ""
         if title:
             ax.set_title(title, fontsize=10)
-        panels.append(Panel(ax, xv, yv, pm.regime_colour_grid(regime, valid), title))
+        panels.append(Panel(ax, xv, yv, pm.regime_colour_grid(ds, regime, valid), title))
 
-    handles = [Patch(facecolor=pm.REGIME_COLOURS[c], label=pm.REGIME_NAMES[c]) for c in (0, 1, 2)]
+    handles = [Patch(facecolor=pm.REGIME_COLOURS[m], label=m) for m in pm.DRAWN_REGIMES]
     if any_invalid:
-        handles.append(Patch(facecolor=pm.invalid_colour(1), edgecolor="0.35", hatch="///",
+        handles.append(Patch(facecolor=pm.invalid_colour("delayed"), edgecolor="0.35", hatch="///",
                              linewidth=0, label="invalid (overlap or\nno solution): paler,\nhatched"))
     if any_missing:
         handles.append(Patch(facecolor=pm.REGIME_COLOURS[pm.NOT_COMPUTED], label="not computed"))
@@ -284,10 +288,10 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    check_axes(args.x, args.y, args.facet)
     out = pm.check_output(args.output)
-    at = pm.parse_at(args.at)
     with pm.open_map(args.map) as ds:
+        check_axes(ds, args.x, args.y, args.facet)
+        at = pm.parse_at(args.at, ds)
         reserved = {args.x: "the x axis", args.y: "the y axis"}
         if args.facet:
             reserved[args.facet] = "the facet axis"

@@ -30,7 +30,7 @@ def test_json_contract_keys_and_types():
                       "area_fraction_inf", "series"}
     assert set(r["series"]) == {"t", "a1", "a2", "P1", "P2", "area_fraction"}
     assert r["regime"] == "delayed" and isinstance(r["valid"], bool)
-    assert abs(r["t_star"] - 1.027595) < 1e-6  # model notes, section 9
+    assert abs(r["t_star"] - 1.027595) < 1e-6  # docs/model.md, section 9
     assert r["series"]["t"] == [0, 0.5, 1, 2, 5]
     for P1, P2 in zip(r["series"]["P1"], r["series"]["P2"]):
         assert abs(P1 + P2 - 0.06 * 0.75**2) < 1e-12

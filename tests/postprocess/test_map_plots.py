@@ -77,7 +77,7 @@ def is_png(path: Path) -> bool:
 
 
 def fixed_at(ds, **at) -> dict:
-    free = [a for a in pm.AXES if a not in at]
+    free = [a for a in pm.axes(ds) if a not in at]
     return pm.resolve_at(ds, at, free=free, optional=tuple(free))
 
 
@@ -100,14 +100,14 @@ def cell_centre_pixels(fig, panel) -> tuple[np.ndarray, np.ndarray]:
 def test_regime_map_colour_grid_is_the_regime_colour_per_cell(maps):
     with pm.open_map(maps["partial"]) as ds:
         regime, valid = ds.regime.values, ds.valid.values
-    grid = pm.regime_colour_grid(regime, valid)
+        grid = pm.regime_colour_grid(ds, regime, valid)
     assert grid.shape == regime.shape + (4,)
-    for code in (0, 1, 2):
+    for code, meaning in ((0, "immediate"), (1, "delayed"), (2, "never")):  # README's codes
         plain = grid[(regime == code) & (valid == 0)]
-        assert len(plain) and np.all(plain == pm.rgba(pm.REGIME_COLOURS[code]))
+        assert len(plain) and np.all(plain == pm.rgba(pm.REGIME_COLOURS[meaning]))
         pale = grid[(regime == code) & (valid > 0)]
-        assert len(pale) and np.all(pale == pm.invalid_colour(code))
-    assert np.all(grid[regime == -1] == pm.rgba(pm.REGIME_COLOURS[-1]))
+        assert len(pale) and np.all(pale == pm.invalid_colour(meaning))
+    assert np.all(grid[regime == -1] == pm.rgba(pm.REGIME_COLOURS["not_computed"]))
     colours = {tuple(c) for c in pm.category_colours()}
     assert len(colours) == 7  # every category has its own colour
 
@@ -128,9 +128,10 @@ def test_regime_map_png_shows_the_stored_regime_at_every_valid_cell_centre(maps,
         fig.canvas.draw()
         regime = ds.regime.sel(l=0.75, T=2.5, s=2).transpose("dh", "pbar").values
         valid = ds.valid.sel(l=0.75, T=2.5, s=2).transpose("dh", "pbar").values
+        want = pm.regime_colour_grid(ds, regime, valid)
     assert image.shape[:2] == fig.canvas.get_width_height()[::-1]
     assert panel.colours.shape == (11, 9, 4)
-    np.testing.assert_array_equal(panel.colours, pm.regime_colour_grid(regime, valid))
+    np.testing.assert_array_equal(panel.colours, want)
     rows, cols = cell_centre_pixels(fig, panel)
     drawn = image[rows, cols, :3]
     ok = valid == 0  # invalid cells are hatched: their centre may sit on a hatch line
@@ -154,7 +155,8 @@ def test_regime_map_draws_cells_not_computed_in_their_own_colour(maps, tmp_path)
     rows, cols = cell_centre_pixels(fig, panel)
     image = mpimg.imread(tmp_path / "p.png")
     np.testing.assert_allclose(image[rows, cols, :3][regime == -1],
-                               np.tile(pm.rgba(pm.REGIME_COLOURS[-1])[:3], (54, 1)), atol=1.5 / 255)
+                               np.tile(pm.rgba(pm.REGIME_COLOURS["not_computed"])[:3], (54, 1)),
+                               atol=1.5 / 255)
     assert "not computed" in legend and "incomplete map" in title
 
 
@@ -196,7 +198,7 @@ def test_regime_map_facets_one_panel_per_value_and_writes_pdf(maps, tmp_path):
         for k, p in enumerate(panels):
             want = ds.regime.isel(l=1, s=0, T=k).transpose("dh", "pbar").values
             np.testing.assert_array_equal(
-                p.colours, pm.regime_colour_grid(want, ds.valid.isel(l=1, s=0, T=k).transpose(
+                p.colours, pm.regime_colour_grid(ds, want, ds.valid.isel(l=1, s=0, T=k).transpose(
                     "dh", "pbar").values))
         assert panels[0].ax.get_xlabel() == "nominal pressure $\\bar p_0$ [$E_0/(1-\\nu^2)$]"
         assert panels[0].ax.get_ylabel() == "height difference of the punch levels $\\Delta h$ [$R$]"

@@ -47,10 +47,15 @@ def maps(tmp_path_factory):
     return {"full": full, "partial": partial}
 
 
+AXES = ("l", "dh", "T", "pbar", "s")  # the engine's axes today, in the map's order
+COLUMNS = (["axis", "value", "units", "points", *REGIMES, *(f"fraction_{r}" for r in REGIMES),
+            *VALIDITIES, "t_star_min", "t_star_median", "t_star_max"])
+
+
 def flags(path: Path):
     with h5py.File(path, "r") as f:
         return (f["regime"][:], f["valid"][:], f["t_star"][:],
-                {a: f[a][:] for a in pm.AXES}, int(f.attrs["completed"]))
+                {a: f[a][:] for a in AXES}, int(f.attrs["completed"]))
 
 
 def run(*args) -> subprocess.CompletedProcess:
@@ -97,15 +102,15 @@ def test_csv_counts_equal_unique_counts_overall_and_per_axis_value(maps):
     regime, valid, t_star, axes, completed = flags(maps["full"])
     assert comments["completed"] == "1" == str(completed)
     assert int(comments["points"]) == regime.size and comments["t_star_units"] == "T_eps"
-    assert list(rows[0]) == summary.COLUMNS
+    assert list(rows[0]) == COLUMNS
     assert rows[0]["axis"] == "all" and rows[0]["value"] == ""
     check_row(rows[0], expected(regime, valid, t_star))
     assert len(rows) == 1 + sum(len(v) for v in axes.values())
     table = np.genfromtxt(io.StringIO(done.stdout), delimiter=",", names=True, dtype=None,
                           encoding=None, skip_header=4)  # as the --help says
-    assert list(table.dtype.names) == summary.COLUMNS and table["points"][0] == regime.size
+    assert list(table.dtype.names) == COLUMNS and table["points"][0] == regime.size
     rows_by = {(r["axis"], float(r["value"])): r for r in rows[1:]}
-    for k, name in enumerate(pm.AXES):
+    for k, name in enumerate(AXES):
         for i, value in enumerate(axes[name]):
             take = (slice(None),) * k + (i,)
             row = rows_by[(name, float(value))]
@@ -162,7 +167,7 @@ def test_summary_refuses_a_missing_or_foreign_file(tmp_path, capsys):
     with h5py.File(other, "w") as f:
         f["x"] = [1, 2]
     for path, message in [(tmp_path / "nope.h5", "does not exist"),
-                          (other, "is not a punchsweep regime map (no l, dh, T, pbar, s, regime")]:
+                          (other, "is not a punchsweep regime map (no regime, valid")]:
         assert pm.run_cli(summary.main, "summary.py", [str(path)]) == 2
         captured = capsys.readouterr()
         assert captured.out == "" and message in captured.err

@@ -41,7 +41,8 @@ def add_reference(path: Path, flip: list[tuple], scale: float, sample_every: int
             d = f.create_dataset(name, data=data)
             for i, axis in enumerate(["l", "dh", "T", "pbar", "s", "time"][: data.ndim]):
                 d.dims[i].attach_scale(f[axis])
-        f["bem_regime"].attrs["flag_values"] = np.array([0, 1, 2, -1], dtype=np.int8)
+        for key in ("flag_values", "flag_meanings"):  # as the engine writes them
+            f["bem_regime"].attrs[key] = f["regime"].attrs[key]
         f.attrs["bem_grid"] = np.int32(64)
         f.attrs["bem_sample"] = np.int64(sampled.sum())
 
