@@ -6,9 +6,7 @@ evolution.py --map and model_error.py give what the construction says, and name 
 axes in their errors."""
 from __future__ import annotations
 
-import contextlib
 import csv
-import io
 import json
 import sys
 from pathlib import Path
@@ -23,6 +21,7 @@ import critical_dh  # noqa: E402
 import evolution  # noqa: E402
 import model_error  # noqa: E402
 import punchsweep_maps as pm  # noqa: E402
+from script_runner import call  # noqa: E402
 import regime_map  # noqa: E402
 import summary  # noqa: E402
 
@@ -107,15 +106,6 @@ def synthetic(tmp_path_factory):
             "no_dh": write_map(folder / "no_dh.h5", drop="dh"), "folder": folder}
 
 
-def call(module, *args) -> tuple[int, str, str]:
-    """Runs a script's main in this process; returns (exit code, stdout, stderr)."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            rc = pm.run_cli(module.main, module.__name__ + ".py", [str(a) for a in args])
-        except SystemExit as e:  # argparse
-            rc = e.code
-    return rc, out.getvalue(), err.getvalue()
 
 
 def test_reader_takes_axes_units_and_codes_from_the_file(synthetic):

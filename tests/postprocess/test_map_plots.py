@@ -20,6 +20,7 @@ sys.path.insert(0, str(POSTPROCESS))
 import critical_dh  # noqa: E402
 import evolution  # noqa: E402
 import punchsweep_maps as pm  # noqa: E402
+from script_runner import call  # noqa: E402
 import regime_map  # noqa: E402
 from punchsweep_point import find_binary  # noqa: E402
 
@@ -58,18 +59,6 @@ def run(script: str, *args) -> subprocess.CompletedProcess:
                           capture_output=True, text=True)
 
 
-def call(module, *args) -> tuple[int, str, str]:
-    """Runs a script's main in this process (fast); returns (exit code, stdout, stderr)."""
-    import contextlib
-    import io
-
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            rc = pm.run_cli(module.main, module.__name__ + ".py", [str(a) for a in args])
-        except SystemExit as e:  # argparse
-            rc = e.code
-    return rc, out.getvalue(), err.getvalue()
 
 
 def is_png(path: Path) -> bool:
