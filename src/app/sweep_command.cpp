@@ -210,6 +210,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   attributes.source = std::string("punchsweep ") + kVersion + " (git " + kGitRevision + ")";
   attributes.history = utc_now() + " " + command_line(args);
   attributes.config_text = config.resolved_text;
+  for (std::size_t i = 0; i < config.identity.size(); ++i) attributes.identity += (i ? "\n" : "") + config.identity[i];
   attributes.creep_law = std::string(config.creep_law->name);
   attributes.C = config.C;
 

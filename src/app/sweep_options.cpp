@@ -769,6 +769,10 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   if (problems.empty()) {
     if (std::string problem = grid_size_problem(config.grid); !problem.empty()) problems.push_back(problem);
   }
+  if (config.resume && config.overwrite) {
+    problems.push_back("run.resume = true and run.overwrite = true: give only one (--resume finishes or checks the "
+                       "existing map, --overwrite replaces it)");
+  }
   if (problems.empty()) {
     if (std::string problem = sample_size_problem(config, settings[key_index(Fixed::reference_sample)].text); !problem.empty()) {
       problems.push_back(problem);

@@ -115,6 +115,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   write_string_attribute(file_, "source", attributes.source, in);
   write_string_attribute(file_, "history", attributes.history, in);
   write_string_attribute(file_, "config", attributes.config_text, in);
+  write_string_attribute(file_, "identity", attributes.identity, in);
   write_string_attribute(file_, "creep_law", attributes.creep_law, in);
   write_double_attribute(file_, "C", attributes.C, in);
   if (layout.bem) {

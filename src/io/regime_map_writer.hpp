@@ -21,6 +21,9 @@ struct MapAttributes {
   std::string source;
   std::string history;
   std::string config_text;  ///< the resolved configuration (global attribute `config`)
+  /// The lines that define the map's content (sweep::SweepConfig::identity), joined by
+  /// '\n' (global attribute `identity`): what --resume compares, also on a finished map.
+  std::string identity;
   std::string creep_law;
   double C = 0.0;  ///< shape constant of f(r) = C r^s / R^(s-1)
 };
@@ -50,7 +53,7 @@ struct MapAttributes {
 ///   compressed with shuffle + deflate level 1. A tile that is exactly one chunk (or the
 ///   part of one inside the grid) is stored encoded (TileEncoder) with H5Dwrite_chunk; any
 ///   other box goes through HDF5's filter pipeline. Readers see no difference.
-/// - Global attributes: Conventions "CF-1.8", title, source, history, config, creep_law,
+/// - Global attributes: Conventions "CF-1.8", title, source, history, config, identity, creep_law,
 ///   C, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
 ///   bem_seed (int64), bem_method (string), then completed (int8, 0 until finish() sets 1),
 ///   and from finish(): ranks, wall_seconds, points_per_second.

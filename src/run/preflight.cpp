@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/regime_map_reader.hpp"
 #include "io/tile_journal.hpp"
 #include "run/resume_policy.hpp"
 
@@ -58,10 +59,32 @@ std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths
   }
   const bool final_exists = fs::exists(final_path, ec);
   const bool journal_exists = fs::exists(paths.journal, ec);
+  // Only a regular file can become the map (it is renamed over): refuse a folder, a
+  // device such as /dev/null or a pipe now, not after the whole grid is computed.
+  for (const std::string& path : {paths.final_path, paths.partial, paths.journal}) {
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+      return "output.file = " + paths.final_path + ": " + path + " is " +
+             (fs::is_directory(path, ec) ? "a folder" : "not a regular file") +
+             ", which the map cannot replace; choose another file name";
+    }
+  }
   *start = Start::fresh;
   if (config.overwrite) return {};
   if (config.resume) {
     if (final_exists && !journal_exists) {
+      // A finished map is compared like an interrupted one: a job script that always
+      // passes --resume must not keep a map of another configuration.
+      std::string recorded;
+      try {
+        recorded = io::read_map_identity(paths.final_path);
+      } catch (const std::exception& e) {
+        return "--resume refused: " + std::string(e.what()) + "; choose another file or pass --overwrite to replace it";
+      }
+      const std::vector<std::string> differences = identity_differences(split_lines(recorded), config.identity);
+      if (!differences.empty()) {
+        return "--resume refused: the finished map " + paths.final_path + " was made with another configuration:\n  " +
+               join(differences, "\n  ") + "\n  (restore the configuration, or pass --overwrite to replace the map)";
+      }
       *start = Start::already_complete;
       return {};
     }

@@ -20,11 +20,13 @@ struct OutputPaths {
 enum class Start { fresh, resume, already_complete };
 
 /// The resume policy, checked before anything is created: the output's folder must exist
-/// and be writable, and no other sweep may be writing its .partial (HDF5's lock). Then:
-/// --overwrite starts fresh; --resume resumes a journal whose configuration identity equals
-/// this run's (else refuses with the differences), starts fresh when there is nothing to
-/// resume, and reports already_complete for a finished map; without either, an existing
-/// map or an interrupted one is refused. Returns "" (and sets *start) or the refusal, one
+/// and be writable, the map's paths must not be folders or other non-regular files, and no
+/// other sweep may be writing its .partial (HDF5's lock). Then: --overwrite starts fresh;
+/// --resume resumes a journal whose configuration identity equals this run's (else
+/// refuses with the differences), starts fresh when there is nothing to resume, and
+/// reports already_complete for a finished map of the same identity (a finished map of
+/// another identity, or a file that is no punchsweep map, is refused); without either, an
+/// existing map or an interrupted one is refused. Returns "" (and sets *start) or the refusal, one
 /// or more lines naming the file and what to do.
 std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start);
 

@@ -1,3 +1,4 @@
+#include "io/regime_map_reader.hpp"
 #include "io/regime_map_writer.hpp"
 
 #include <H5DSpublic.h>
@@ -61,6 +62,7 @@ MapAttributes small_attributes() {
           "punchsweep test",
           "written by regime_map_writer_test",
           "[grid]\nl = linspace(0.5, 1, 3)\n",
+          "grid.l = 0.5, 0.75, 1\nmodel.C = 0.5",
           "standard_linear_solid",
           0.5};
 }
@@ -477,6 +479,8 @@ TEST_F(RegimeMapWriterTest, finished_map_records_its_run_and_completion) {
   EXPECT_EQ(read_string_attribute(file, "history"), expected.history);
   EXPECT_EQ(read_string_attribute(file, "config"), expected.config_text);
   EXPECT_EQ(read_string_attribute(file, "creep_law"), expected.creep_law);
+  EXPECT_EQ(read_string_attribute(file, "identity"), expected.identity);
+  EXPECT_EQ(read_map_identity(path_), expected.identity);
   EXPECT_TRUE(attribute_type_is(file, "C", H5T_IEEE_F64LE));
   EXPECT_EQ(read_attribute<double>(file, "C", H5T_NATIVE_DOUBLE), std::vector<double>{0.5});
   EXPECT_TRUE(attribute_type_is(file, "ranks", H5T_STD_I32LE));
@@ -533,7 +537,7 @@ TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
   names.clear();
   ASSERT_GE(H5Aiterate2(file, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect_attribute, &names), 0);
   EXPECT_EQ(names,
-            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "creep_law", "C",
+            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "creep_law", "C",
                                       "completed", "ranks", "wall_seconds", "points_per_second"}));
 
   const Handle regime = open_dataset(file, "regime");

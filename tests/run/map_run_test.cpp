@@ -81,9 +81,23 @@ TEST(Preflight, decides_fresh_resume_or_refusal_from_the_files_there) {
   EXPECT_EQ(start, run::Start::fresh);
   config.overwrite = false;
   config.resume = true;
-  EXPECT_EQ(run::preflight(config, paths, &start), "");
-  EXPECT_EQ(start, run::Start::already_complete);
+  // A file that is no punchsweep map is never taken for a finished one.
+  EXPECT_NE(run::preflight(config, paths, &start).find("is not an HDF5 file"), std::string::npos);
   std::filesystem::remove(paths.final_path);
+
+  // A folder (or a device) where the map would go is refused before any work.
+  std::filesystem::create_directory(paths.final_path);
+  EXPECT_NE(run::preflight(config, paths, &start).find("is a folder"), std::string::npos);
+  config.overwrite = true;
+  config.resume = false;
+  EXPECT_NE(run::preflight(config, paths, &start).find("is a folder"), std::string::npos);
+  config.overwrite = false;
+  config.resume = true;
+  std::filesystem::remove(paths.final_path);
+  sweep::SweepConfig to_null = config;
+  to_null.output = "/dev/null";
+  EXPECT_NE(run::preflight(to_null, run::OutputPaths(to_null.output), &start).find("not a regular file"),
+            std::string::npos);
 
   io::TileJournal::create(paths.journal, "grid.l = 0.75, 1\nrun.chunk = 2");
   EXPECT_EQ(run::preflight(config, paths, &start), "");
@@ -105,7 +119,7 @@ TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
   const map::Tiling tiling(config.grid.shape(), 2);
   const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
   io::TileEncoder encoder(layout);
-  const io::MapAttributes attributes{"t", "s", "h", "c", "standard_linear_solid", 0.5};
+  const io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1\nrun.chunk = 2", "standard_linear_solid", 0.5};
   std::ostringstream log;
   ASSERT_GT(tiling.tiles(), 3U);
   {
@@ -131,4 +145,17 @@ TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
   EXPECT_TRUE(std::filesystem::exists(paths.final_path));
   EXPECT_FALSE(std::filesystem::exists(paths.journal));
   EXPECT_FALSE(std::filesystem::exists(paths.partial));
+
+  // --resume on the finished map: nothing to do with the same configuration, refused with
+  // the differences for another one.
+  sweep::SweepConfig again = config;
+  again.resume = true;
+  run::Start start = run::Start::fresh;
+  EXPECT_EQ(run::preflight(again, paths, &start), "");
+  EXPECT_EQ(start, run::Start::already_complete);
+  again.identity = {"grid.l = 0.75, 1.25", "run.chunk = 2"};
+  const std::string refusal = run::preflight(again, paths, &start);
+  EXPECT_NE(refusal.find("the finished map"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("grid.l: the existing map has 0.75, 1; this run asks for 0.75, 1.25"), std::string::npos)
+      << refusal;
 }

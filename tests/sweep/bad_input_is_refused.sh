@@ -37,6 +37,20 @@ mkdir keep && mv done.h5 keep/
 refused "exists" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5
 "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --overwrite
 "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume  # complete: nothing to do
+# A finished map is compared like a partial one; a file that is no map is never resumed.
+refused "the finished map keep/done.h5 was made with another configuration" \
+  "$PUNCHSWEEP" sweep --grid.l 0.75 --grid.dh 0.05 --grid.T 3 --grid.pbar 0.06 --grid.s 2 --quiet --output keep/done.h5 --resume
+echo "not hdf5" > junk.h5
+refused "junk.h5 is not an HDF5 file" "$PUNCHSWEEP" sweep "${small[@]}" --output junk.h5 --resume
+rm junk.h5
+refused "give only one" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume --overwrite
+# An output that cannot become a regular file is refused before any work.
+mkdir adir.h5
+refused "adir.h5 is a folder" "$PUNCHSWEEP" sweep "${small[@]}" --output adir.h5 --overwrite
+refused "adir.h5 is a folder" "$PUNCHSWEEP" sweep "${small[@]}" --output adir.h5
+test ! -e adir.h5.partial || { echo "FAIL: a .partial was left beside the folder"; exit 1; }
+rmdir adir.h5
+refused "not a regular file" "$PUNCHSWEEP" sweep "${small[@]}" --output /dev/null --overwrite
 printf '[run]\nchunk = 1\n' > slow.ini
 "$PUNCHSWEEP" sweep --config slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,5 --quiet --output keep/part.h5 & pid=$!
 while [ ! -s keep/part.h5.partial.journal ]; do sleep 0.02; done
