@@ -8,6 +8,7 @@
 
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
+#include "map/axis_parser.hpp"
 
 namespace po = boost::program_options;
 
@@ -16,18 +17,26 @@ namespace punchsweep::app {
 po::variables_map parse_command(const std::vector<std::string>& args, const po::options_description& opts,
                                 const std::string& command) {
   po::variables_map vm;
-  const po::positional_options_description no_positionals;
-  const std::string see = " (see punchsweep " + command + " --help)";
+  // Stray arguments are collected under a hidden name, so the message can quote them.
+  constexpr const char* kStray = "stray-argument";
+  po::options_description all;
+  all.add(opts);
+  all.add_options()(kStray, po::value<std::vector<std::string>>());
+  po::positional_options_description stray;
+  stray.add(kStray, -1);
+  const std::string see = "see punchsweep " + command + " --help";
   try {
     const auto style = po::command_line_style::unix_style ^ po::command_line_style::allow_short;
-    po::store(po::command_line_parser(args).options(opts).style(style).positional(no_positionals).run(), vm);
+    po::store(po::command_line_parser(args).options(all).style(style).positional(stray).run(), vm);
     po::notify(vm);
   } catch (const po::unknown_option& e) {
-    throw UsageError("unknown option " + e.get_option_name() + see);
-  } catch (const po::too_many_positional_options_error&) {
-    throw UsageError("unexpected argument (every input is an --option;" + see.substr(1));
+    throw UsageError("unknown option " + e.get_option_name() + " (" + see + ")");
   } catch (const po::error& e) {
-    throw UsageError(std::string(e.what()) + see);
+    throw UsageError(std::string(e.what()) + " (" + see + ")");
+  }
+  if (vm.count(kStray)) {
+    throw UsageError("unexpected argument '" + vm[kStray].as<std::vector<std::string>>().front() +
+                     "': every input is an --option with its value (" + see + ")");
   }
   return vm;
 }
@@ -93,8 +102,15 @@ void add_point_options(po::options_description& opts, const model::CreepLawSpec&
   opts.add_options()("help", "print this help and exit");
   for (const model::Parameter* p : model::sweep_axes(law.parameters)) add_parameter_option(opts, *p);
   add_parameter_option(opts, *model::find_parameter(model::kShapeConstant));
+  add_times_option(opts);
+}
+
+void add_times_option(po::options_description& opts) {
   opts.add_options()("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
-                     "snapshot times, comma-separated, in T_eps; each finite and >= 0");
+                     (std::string("snapshot times in T_eps: a list (commas and/or spaces), linspace(a, b, n) or "
+                                  "logspace(a, b, n); ") +
+                      kTimesRange)
+                         .c_str());
 }
 
 model::ContactProblem read_problem(const po::variables_map& vm) {
@@ -142,6 +158,22 @@ std::string PointInputs::describe() const {
   }
   add(*model::find_parameter(model::kShapeConstant), problem.shape.C);
   return text;
+}
+
+std::vector<double> read_times(const po::variables_map& vm) {
+  const std::string text = vm["times"].as<std::string>();
+  std::string problem;
+  map::Axis times;
+  try {
+    times = map::parse_axis(text, false);
+    for (const double t : times.values) {
+      if (t < 0.0) problem = "value " + map::format_axis_value(t) + " is negative";
+    }
+  } catch (const std::invalid_argument& e) {
+    problem = e.what();
+  }
+  if (!problem.empty()) throw UsageError("--times = '" + text + "': " + problem + "; valid range: " + kTimesRange);
+  return times.values;
 }
 
 std::vector<double> read_real_list(const po::variables_map& vm, const char* name, const char* range,

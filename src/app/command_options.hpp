@@ -64,6 +64,17 @@ struct PointInputs {
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm,
                               const model::CreepLawSpec& law = model::creep_laws().front());
 
+/// The valid range of snapshot times, as --times and [time] times state it.
+inline constexpr const char* kTimesRange = "each t >= 0 and finite, strictly increasing (in T_eps)";
+
+/// Declares --times (default 0,0.5,1,2,5) with its syntax and range.
+void add_times_option(boost::program_options::options_description& opts);
+
+/// --times: snapshot times in T_eps, in the axis syntax of a sweep (a list, linspace() or
+/// logspace()), each >= 0, strictly increasing. Throws UsageError naming --times, the
+/// problem and kTimesRange.
+std::vector<double> read_times(const boost::program_options::variables_map& vm);
+
 /// A list option whose values must each satisfy `in_range` (described by `range`).
 std::vector<double> read_real_list(const boost::program_options::variables_map& vm, const char* name,
                                    const char* range, const std::function<bool(double)>& in_range);

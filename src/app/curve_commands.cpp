@@ -52,9 +52,8 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   add_shape_options(opts);
   add_parameter_option(opts, parameter(model::kPressure), "with the creep law's parameters: time series");
   for (const model::Parameter& p : law.parameters) add_parameter_option(opts, p, "with --pbar: time series");
+  add_times_option(opts);
   opts.add_options()
-      ("times", po::value<std::string>()->value_name("LIST")->default_value("0,0.5,1,2,5"),
-       "times of the series, comma-separated, in T_eps; each >= 0")
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
        "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or csv");
@@ -97,7 +96,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       material += (material.empty() ? "" : ", ") + std::string(p.name) + " = " + json_number(values.back());
     }
     creep = model::make_creep_law(law, values);
-    times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+    times = read_times(vm);
     const model::CreepWeightedLoad load(*creep, pbar);
     for (const double t : times) {
       const double X = load(t);

@@ -45,7 +45,7 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
   const PointInputs inputs = read_point_inputs(vm);
 
   model::EvaluationOptions options;
-  options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+  options.times = read_times(vm);
   const std::string format_text = read_choice(vm, "format", {"table", "json", "csv"});
   const OutputFormat format = format_text == "json"  ? OutputFormat::json
                               : format_text == "csv" ? OutputFormat::csv

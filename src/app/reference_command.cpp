@@ -49,7 +49,7 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
   const PointInputs inputs = read_point_inputs(vm);
   const model::ContactProblem& problem = inputs.problem;
   reference::ReferenceOptions options;
-  options.times = read_real_list(vm, "times", "t >= 0 (in T_eps)", [](double t) { return t >= 0.0; });
+  options.times = read_times(vm);
   options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
                                          [](double v) { return sweep::is_bem_grid(v); }));
   const std::string format = read_choice(vm, "format", {"json", "table"});

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -15,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/command_options.hpp"
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
 #include "model/creep_laws.hpp"
@@ -72,7 +74,7 @@ std::vector<KeySpec> make_keys() {
                   "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
                   Fixed::model_creep_law});
   keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5", "snapshot times of the stored time series, in T_eps",
-                  "each t >= 0 and finite, strictly increasing (in T_eps)", Fixed::time_times});
+                  kTimesRange, Fixed::time_times});
   keys.push_back({"output", "file", "FILE", "regime_map.h5", "the HDF5 regime map to write",
                   "a non-empty file name without '#' or line breaks", Fixed::output_file});
   keys.push_back({"output", "quantities", "WHAT", "full",
@@ -268,7 +270,21 @@ std::map<std::string, std::string> read_config_file(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   if (!in) throw UsageError("config file " + path + " cannot be read");
-  const std::string text = buffer.str();
+  std::string text = buffer.str();
+  // A UTF-8 byte-order mark (editors on Windows write one) is no part of the first key.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  // A binary file would be echoed back line by line: refuse it at its first control byte.
+  int line = 1;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') ++line;
+    if ((byte < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') || byte == 0x7F) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", byte);
+      throw UsageError("config file " + path + ", line " + std::to_string(line) + ": byte " + hex +
+                       " is a control character; a config file is INI text");
+    }
+  }
 
   const std::vector<std::string> problems = config_file_problems(path, text);
   if (!problems.empty()) throw UsageError(join(problems, "\n"));

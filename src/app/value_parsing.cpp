@@ -35,15 +35,29 @@ int parse_integer(const std::string& text, const std::string& option) {
 std::vector<double> parse_real_list(const std::string& text, const std::string& option) {
   std::vector<double> values;
   std::string item;
+  bool comma_pending = false;  // a comma that still needs a number after it
   auto flush = [&] {
     if (!item.empty()) values.push_back(parse_real(item, option));
+    if (!item.empty()) comma_pending = false;
     item.clear();
   };
   for (const char c : text) {
-    if (c == ',' || c == ' ' || c == '\t') flush();
-    else item.push_back(c);
+    if (c == ',') {
+      flush();
+      if (comma_pending || values.empty()) {
+        throw UsageError(option + " = '" + text + "' has an empty item (two commas in a row, or a comma at an end)");
+      }
+      comma_pending = true;
+    } else if (c == ' ' || c == '\t') {
+      flush();
+    } else {
+      item.push_back(c);
+    }
   }
   flush();
+  if (comma_pending) {
+    throw UsageError(option + " = '" + text + "' has an empty item (two commas in a row, or a comma at an end)");
+  }
   if (values.empty()) throw UsageError(option + " = '" + text + "' holds no number");
   return values;
 }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <utility>
 
@@ -245,6 +246,24 @@ void TileJournal::append_packed(std::span<const std::byte> payload) {
     throw;
   }
   end_ += record_.size();
+}
+
+TileJournal::Tail TileJournal::inspect_tail(const std::string& path, std::size_t good_end) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("tile journal " + path + " cannot be read");
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<std::size_t>(in.tellg());
+  Tail tail;
+  if (good_end >= size) return tail;
+  tail.bytes = size - good_end;
+  std::vector<char> bytes(tail.bytes);
+  in.seekg(static_cast<std::streamoff>(good_end));
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  for (std::size_t at = 0; at + sizeof(std::uint32_t) <= bytes.size(); ++at) {
+    if (load<std::uint32_t>(reinterpret_cast<const std::byte*>(bytes.data()) + at) == kRecordMagic) ++tail.records;
+  }
+  if (tail.records == 0) tail.records = 1;  // the damaged record itself
+  return tail;
 }
 
 }  // namespace punchsweep::io

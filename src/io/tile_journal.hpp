@@ -47,6 +47,16 @@ class TileJournal {
   /// CRC is right but whose payload does not decode (a journal of another program version).
   static std::size_t replay(const std::string& path, const std::function<void(const EncodedTile&)>& on_tile);
 
+  /// What lies after the last good record: the bytes that replay could not use and the
+  /// records that start among them (a record magic followed by a plausible length; a torn
+  /// record at the end counts as one). open_for_append cuts them; their tiles are computed
+  /// again.
+  struct Tail {
+    std::size_t bytes = 0;
+    std::size_t records = 0;
+  };
+  static Tail inspect_tail(const std::string& path, std::size_t good_end);
+
   /// Opens an existing journal for appending after `good_end` (what replay returned),
   /// cutting off any torn or damaged tail first. Throws std::runtime_error if the header is
   /// bad or `good_end` lies outside [end of header, end of file].

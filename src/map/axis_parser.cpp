@@ -154,6 +154,7 @@ Axis parse_axis(const std::string& text, bool integers) {
   }
 
   for (std::size_t i = 0; i < axis.values.size(); ++i) {
+    if (axis.values[i] == 0.0) axis.values[i] = 0.0;  // -0 is 0: a coordinate must not print as -0
     const double v = axis.values[i];
     if (!std::isfinite(v)) throw std::invalid_argument("value " + format_axis_value(v) + " is not finite");
     if (integers && v != std::floor(v)) throw std::invalid_argument(format_axis_value(v) + " is not an integer");

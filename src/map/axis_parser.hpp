@@ -23,7 +23,7 @@ inline constexpr long kMaxAxisCount = 1'000'000;
 /// rounded to 15 significant digits (a relative change below 5e-16), so that
 /// linspace(0.5, 1.25, 16) holds the same doubles as the list 0.5, 0.55, ..., 1.25.
 /// The values must be finite and strictly increasing; with `integers` (the s axis) each
-/// must be a whole number. Axis::text is the trimmed input.
+/// must be a whole number. -0 is stored as 0. Axis::text is the trimmed input.
 /// Throws std::invalid_argument with a message that does not name the key, e.g.
 /// "linspace needs 3 arguments (start, stop, count), got 2".
 Axis parse_axis(const std::string& text, bool integers);

@@ -23,6 +23,13 @@ MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, co
       done[tile.tile] = true;
       progress_.restored(tile);
     });
+    // A damaged record hides every later one (they cannot be framed): say how much is lost.
+    const io::TileJournal::Tail tail = io::TileJournal::inspect_tail(paths_.journal, good_end);
+    if (tail.bytes > 0) {
+      log << "punchsweep sweep: the journal " << paths_.journal << " is damaged or torn after byte " << good_end
+          << ": its last " << tail.bytes << " bytes (about " << tail.records << " tile record"
+          << (tail.records == 1 ? "" : "s") << ") cannot be read; those tiles are computed again\n";
+    }
     journal_ = io::TileJournal::open_for_append(paths_.journal, good_end);
     if (!config.quiet) {
       log << "punchsweep sweep: resuming " << paths_.final_path << ": " << progress_.points_done() << " of "

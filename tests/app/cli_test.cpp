@@ -72,6 +72,21 @@ TEST(Cli, zero_pressure_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 2.
 TEST(Cli, negative_pressure_is_refused) { expect_refused("--l 0.75 --dh 0.075 --T 2.5 --pbar -0.01 --s 2", "--pbar", "pbar > 0"); }
 TEST(Cli, non_numeric_value_is_refused) { expect_refused("--l abc --dh 0.075 --T 2.5 --pbar 0.06 --s 2", "--l", "l > 0"); }
 TEST(Cli, negative_time_is_refused) { expect_refused(kGood + " --times 0,-1", "--times", "t >= 0"); }
+TEST(Cli, times_must_increase_strictly_and_have_no_empty_item_as_in_a_sweep) {
+  for (const char* times : {"0,2,1", "0,1,1", "0,1,", "0,,1", ",0"}) {
+    expect_refused(kGood + " --times " + times, "--times", "strictly increasing");
+  }
+  const CliRun r = run_cli("point " + kGood + " --times 'linspace(0, 2, 5)' --format csv");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\n1.5,"), std::string::npos) << "linspace() is accepted as in a sweep";
+}
+TEST(Cli, stray_argument_is_named) {
+  const CliRun r = run_cli("point " + kGood + " extra");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("unexpected argument 'extra'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(see punchsweep point --help)"), std::string::npos) << r.err;
+}
 TEST(Cli, missing_option_is_refused) { expect_refused("--l 0.75 --dh 0.075 --pbar 0.06 --s 2", "--T", ">= 1"); }
 TEST(Cli, unknown_format_is_refused) { expect_refused(kGood + " --format xml", "--format", "table, json, csv"); }
 

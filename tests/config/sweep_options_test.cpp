@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -162,14 +163,15 @@ TEST(SweepOptions, command_line_beats_config_file) {
 
 TEST(SweepOptions, shortcuts_set_their_keys) {
   const SweepConfig c = parse({"--output", "x.h5", "--quantities", "regime", "--chunk", "12", "--resume",
-                               "--overwrite", "--quiet", "--dry-run"});
+                               "--quiet", "--dry-run"});
   EXPECT_EQ(c.output, "x.h5");
   EXPECT_EQ(c.quantities, Quantities::regime);
   EXPECT_EQ(c.chunk, 12u);
   EXPECT_TRUE(c.resume);
-  EXPECT_TRUE(c.overwrite);
+  EXPECT_FALSE(c.overwrite);
   EXPECT_TRUE(c.quiet);
   EXPECT_TRUE(c.dry_run);
+  EXPECT_TRUE(parse({"--overwrite"}).overwrite);
 }
 
 TEST(SweepOptions, every_key_is_also_a_command_line_option) {
@@ -489,6 +491,26 @@ TEST(SweepOptions, identity_differences_report_keys_only_one_side_has) {
   ASSERT_EQ(differences.size(), 2u);
   EXPECT_EQ(differences[0], "model.C: the existing map has 0.5; this run does not set it");
   EXPECT_EQ(differences[1], "run.chunk: the existing map does not record it; this run asks for 8");
+}
+
+TEST(SweepOptions, a_byte_order_mark_is_ignored_and_a_binary_file_refused_in_one_line) {
+  const std::string bom = ::testing::TempDir() + "/bom.ini";
+  std::ofstream(bom) << "\xEF\xBB\xBF[grid]\nT = 2, 3\n";
+  EXPECT_EQ(parse({"--config", bom}).grid.axes[2].values, (std::vector<double>{2, 3}));
+  const std::string binary = ::testing::TempDir() + "/binary.ini";
+  std::ofstream(binary) << "[grid]\nT = 2\n\x7F" << "ELF\x02\x01\x01" << std::string(3, '\0') << "\x1B[31m\n";
+  const std::string message = refusal({"--config", binary});
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 0) << message;
+  EXPECT_NE(message.find("line 3: byte 0x7F is a control character"), std::string::npos) << message;
+}
+
+TEST(SweepOptions, minus_zero_is_stored_as_zero) {
+  const SweepConfig c = parse({"--grid.dh", "-0, 0.1"});
+  EXPECT_FALSE(std::signbit(c.grid.axes[1].values[0]));
+}
+
+TEST(SweepOptions, resume_and_overwrite_together_are_refused) {
+  EXPECT_NE(refusal({"--resume", "--overwrite"}).find("give only one"), std::string::npos);
 }
 
 }  // namespace

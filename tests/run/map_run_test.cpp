@@ -159,3 +159,39 @@ TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
   EXPECT_NE(refusal.find("grid.l: the existing map has 0.75, 1; this run asks for 0.75, 1.25"), std::string::npos)
       << refusal;
 }
+
+TEST(MapRun, resume_says_how_many_records_a_damaged_journal_loses) {
+  const ScratchDir dir;
+  const sweep::SweepConfig config = small_config(dir.file("map.h5"));
+  const map::Tiling tiling(config.grid.shape(), 2);
+  const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
+  io::TileEncoder encoder(layout);
+  const io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1", "standard_linear_solid", 0.5};
+  const run::OutputPaths paths(config.output);
+  std::ostringstream log;
+  std::uintmax_t after_first = 0;
+  {
+    run::MapRun first(config, layout, attributes, run::Start::fresh, tiling, log);
+    first.accept(packed_tile(encoder, tiling, 0, 1));
+    after_first = std::filesystem::file_size(paths.journal);
+    first.accept(packed_tile(encoder, tiling, 1, 1));
+    first.accept(packed_tile(encoder, tiling, 2, 1));
+    first.interrupt();
+  }
+  {  // flip a byte inside the second record, past its magic: records 2 and 3 are lost
+    std::fstream f(paths.journal, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(static_cast<std::streamoff>(after_first + 40));
+    char c = 0;
+    f.read(&c, 1);
+    c = static_cast<char>(c ^ 0x5A);
+    f.seekp(static_cast<std::streamoff>(after_first + 40));
+    f.write(&c, 1);
+  }
+  std::ostringstream resume_log;
+  run::MapRun second(config, layout, attributes, run::Start::resume, tiling, resume_log);
+  EXPECT_NE(resume_log.str().find("about 2 tile records) cannot be read; those tiles are computed again"),
+            std::string::npos)
+      << resume_log.str();
+  EXPECT_EQ(second.pending().front(), 1U) << "tiles 1 and 2 are computed again";
+  EXPECT_EQ(second.pending().size(), tiling.tiles() - 1);
+}
