@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib python3-xarray python3-h5netcdf
   python3-pytest
+  udunits-bin
 )
 
 missing=()

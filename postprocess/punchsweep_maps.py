@@ -251,7 +251,10 @@ def value_text(value) -> str:
 
 
 def units(ds, name: str) -> str:
-    return str(ds[name].attrs.get("units", ""))
+    """The scale a variable is measured in: its `scaled_by` ("R", "E0/(1-nu^2)", "T_eps", ...)
+    where the map names one (its `units` is then "1", a pure number), else its `units`."""
+    attrs = ds[name].attrs
+    return str(attrs.get("scaled_by", attrs.get("units", "")))
 
 
 def is_log(ds, name: str) -> bool:

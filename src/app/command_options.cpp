@@ -140,9 +140,9 @@ std::string PointInputs::describe() const {
     text.append(p.name);
     text += " = ";
     text += json_number(value);
-    if (p.units != "1") {
+    if (p.scale != "1") {
       text += ' ';
-      text.append(p.units);
+      text.append(p.scale);
     }
   };
   for (const model::Parameter* p : model::sweep_axes(law->parameters)) {

@@ -63,8 +63,8 @@ void write_json(std::ostream& out, const model::PointResult& r) {
 
 // Units as people read them in the table and the CSV comments.
 std::string display_units(const QuantitySpec& q) {
-  if (q.units == "R^2 E0/(1-nu^2)") return "R^2 E0*";
-  return q.units == "1" ? std::string() : std::string(q.units);
+  if (q.scale == "R^2 E0/(1-nu^2)") return "R^2 E0*";
+  return q.scale == "1" ? std::string() : std::string(q.scale);
 }
 
 std::string fixed(double v, int width, int precision) {
@@ -113,7 +113,7 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
       const std::string u = display_units(q);
       const std::string head = std::string(q.name) + (u.empty() ? "" : " [" + u + "]");
       const bool wide = head.size() >= 12;
-      out << fixed(q.series_value(s), wide ? 15 : 12, q.units == "R^2 E0/(1-nu^2)" ? 9 : 7);
+      out << fixed(q.series_value(s), wide ? 15 : 12, q.scale == "R^2 E0/(1-nu^2)" ? 9 : 7);
     }
     out << "\n";
   }

@@ -77,6 +77,21 @@ void write_double_attribute(hid_t object, const char* name, double value, const 
   write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value, 0, where);
 }
 
+/// What the scales of the `scaled_by` attributes are (global attribute `scales`).
+constexpr const char* kScales =
+    "Every real variable and coordinate is a pure number (units = \"1\"); its attribute scaled_by names the "
+    "scale it is measured in. R: the characteristic punch size of f(r) = C r^s / R^(s-1); E0/(1-nu^2): the "
+    "instantaneous plane-strain modulus E0* (E0 the instantaneous Young's modulus, nu Poisson's ratio); "
+    "R^2 E0/(1-nu^2): a load; T_eps: the creep (retardation) time of the material. A variable without "
+    "scaled_by is dimensionless.";
+
+/// units = "1" (a pure number, as UDUNITS reads it) and, unless `scale` is "1", the scale
+/// it is measured in as `scaled_by`.
+void write_scale(hid_t object, const std::string& scale, const std::string& where) {
+  write_string_attribute(object, "units", "1", where);
+  if (scale != "1") write_string_attribute(object, "scaled_by", scale, where);
+}
+
 /// How an axis is spaced, for plots: see the class comment in the header.
 const char* axis_spacing(const map::Axis& axis) {
   if (axis.log_spaced) return "log";
@@ -118,6 +133,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   write_string_attribute(file_, "identity", attributes.identity, in);
   write_string_attribute(file_, "creep_law", attributes.creep_law, in);
   write_double_attribute(file_, "C", attributes.C, in);
+  write_string_attribute(file_, "scales", kScales, in);
   if (layout.bem) {
     const BemSetup& bem = *layout.bem;
     const std::int32_t grid = bem.grid;
@@ -134,7 +150,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
     // Each axis is a model parameter, which declares its units and long name.
     const model::Parameter* parameter = model::find_parameter(axis.name);
     if (parameter == nullptr) throw std::invalid_argument("regime map: axis " + axis.name + " is no model parameter");
-    create_coordinate(axis.name, axis.values, std::string(parameter->units), std::string(parameter->long_name));
+    create_coordinate(axis.name, axis.values, std::string(parameter->scale), std::string(parameter->long_name));
     const std::string where = "on '" + axis.name + "' " + in;
     write_string_attribute(coordinates_.back(), "axis_spec", axis.text, where);
     write_string_attribute(coordinates_.back(), "spacing", axis_spacing(axis), where);
@@ -163,7 +179,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
       check(H5DSattach_scale(dataset, coordinates_[d], static_cast<unsigned>(d)),
             "attach dimension " + (d < axes ? layout.grid.axes[d].name : std::string("time")) + " " + where);
     }
-    if (!spec.units.empty()) write_string_attribute(dataset, "units", std::string(spec.units), where);
+    if (!spec.scale.empty()) write_scale(dataset, std::string(spec.scale), where);
     write_string_attribute(dataset, "long_name", std::string(spec.long_name), where);
     if (!spec.comment.empty()) write_string_attribute(dataset, "comment", std::string(spec.comment), where);
     if (spec.kind == map::Kind::flag) {
@@ -179,7 +195,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
 }
 
 void RegimeMapWriter::create_coordinate(const std::string& name, const std::vector<double>& values,
-                                        const std::string& units, const std::string& long_name) {
+                                        const std::string& scale, const std::string& long_name) {
   const std::string where = "'" + name + "' in " + path_;
   const auto n = static_cast<hsize_t>(values.size());
   const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "make dataspace of " + where);
@@ -194,7 +210,7 @@ void RegimeMapWriter::create_coordinate(const std::string& name, const std::vect
   }
   check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
   const std::string on = "on " + where;
-  write_string_attribute(dataset, "units", units, on);
+  write_scale(dataset, scale, on);
   write_string_attribute(dataset, "long_name", long_name, on);
   coordinates_.push_back(std::move(dataset));
 }

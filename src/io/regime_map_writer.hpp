@@ -35,7 +35,11 @@ struct MapAttributes {
 /// - Link and attribute creation order are tracked and indexed, as in netCDF-4 files.
 /// - Coordinates: one per grid axis, in the grid's order (for the standard linear solid
 ///   `l`, `dh`, `T`, `pbar`, `s`), then `time`: 1-D float64 dimension scales with `units`
-///   and `long_name` as the axis's model parameter declares them (model/parameters.hpp).
+///   "1" and `long_name`, and `scaled_by` the scale of a scaled quantity ("R",
+///   "E0/(1-nu^2)", "T_eps"; none for pure numbers), as the axis's model parameter declares
+///   them (model/parameters.hpp). Every real data variable has `units` "1" and `scaled_by`
+///   likewise (map::QuantitySpec::scale); the global attribute `scales` says what the scales
+///   are. So UDUNITS-based tools (cf-units, pint-xarray) read every `units` correctly.
 ///   Integer axes such as `s` are float64 too, so every coordinate has one type and a
 ///   non-integer value could never be truncated silently. The grid axes also carry
 ///   `axis_spec` (the text the axis was given as) and `spacing`: "log" for logspace() axes,
@@ -94,7 +98,7 @@ class RegimeMapWriter {
   const std::string& path() const { return path_; }
 
  private:
-  void create_coordinate(const std::string& name, const std::vector<double>& values, const std::string& units,
+  void create_coordinate(const std::string& name, const std::vector<double>& values, const std::string& scale,
                          const std::string& long_name);
   /// An int8 flag variable when `codes`, else float64; over the time axis too when `series`.
   Handle create_variable(const std::string& name, bool codes, bool series);

@@ -35,7 +35,10 @@ struct QuantitySpec {
   Extent extent;
   Source source;
   Flags flags;                 ///< Flags::none for reals
-  std::string_view units;      ///< empty for flags, which have none
+  /// The scale the value is measured in (model/units.hpp): "R", "T_eps", "R^2 E0/(1-nu^2)",
+  /// or "1" for a pure number; empty for flags. The map writes `units = "1"` for every real
+  /// and names the scale in `scaled_by` (UDUNITS would read "R" as the roentgen).
+  std::string_view scale;
   std::string_view long_name;
   std::string_view comment;    ///< empty when there is none
   /// Reads the quantity off a point's result (for Source::bem, off the reference's result

@@ -13,10 +13,13 @@
 
 namespace punchsweep::model {
 
-/// One input parameter of the model (units: units.hpp).
+/// One input parameter of the model.
 struct Parameter {
   std::string_view name;       ///< option `--NAME`, config key, map coordinate: "l"
-  std::string_view units;      ///< the map's `units` attribute: "R", "1", ...
+  /// The scale the value is measured in (units.hpp): "R", "E0/(1-nu^2)", or "1" for a pure
+  /// number. The map stores it as `scaled_by` beside `units = "1"` (UDUNITS reads "R" as
+  /// the roentgen, so a scale is never a `units` string).
+  std::string_view scale;
   std::string_view long_name;  ///< the map's `long_name` attribute: "lattice pitch"
   std::string_view meaning;    ///< one phrase for help texts, unit included
   std::string_view range;      ///< the valid range as messages print it: "l > 0 (in R)"

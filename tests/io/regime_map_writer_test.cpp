@@ -238,11 +238,23 @@ class RegimeMapWriterTest : public ::testing::Test {
   std::vector<bool> written_;
 };
 
+// Every real is a pure number (units "1", which UDUNITS reads; "R" would be the roentgen)
+// with its scale in scaled_by; "" here means no scaled_by (dimensionless) or, for flags, no
+// units at all.
+void expect_scale(hid_t object, const std::string& scale, const std::string& what) {
+  EXPECT_EQ(read_string_attribute(object, "units"), "1") << what;
+  if (scale.empty()) {
+    EXPECT_EQ(H5Aexists(object, "scaled_by"), 0) << what;
+  } else {
+    EXPECT_EQ(read_string_attribute(object, "scaled_by"), scale) << what;
+  }
+}
+
 TEST_F(RegimeMapWriterTest, map_has_dimension_scales_and_units) {
   make_map(map::Quantities::full);
   const Handle file = open_file(path_);
   std::vector<Handle> coordinates;
-  const std::vector<std::string> units{"R", "R", "1", "E0/(1-nu^2)", "1", "T_eps"};
+  const std::vector<std::string> scales{"R", "R", "", "E0/(1-nu^2)", "", "T_eps"};
   const std::vector<std::string> long_names{"lattice pitch",
                                             "height difference of the punch levels",
                                             "creep ratio T_eps/T_sigma",
@@ -255,11 +267,11 @@ TEST_F(RegimeMapWriterTest, map_has_dimension_scales_and_units) {
     char name[16] = {};
     ASSERT_GT(H5DSget_scale_name(coordinates.back(), name, sizeof name), 0);
     EXPECT_EQ(std::string(name), kCoordinates[c]);
-    EXPECT_EQ(read_string_attribute(coordinates.back(), "units"), units[c]);
+    expect_scale(coordinates.back(), scales[c], kCoordinates[c]);
     EXPECT_EQ(read_string_attribute(coordinates.back(), "long_name"), long_names[c]);
   }
-  const std::vector<std::string> variable_units{
-      "", "T_eps", "R", "R", "", "R", "R", "1", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", "1"};
+  const std::vector<std::string> variable_scales{
+      "-", "T_eps", "R", "R", "-", "R", "R", "", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", ""};  // -: a flag
   std::vector<std::string> variables = kAxisVariables;
   variables.insert(variables.end(), kSeriesVariables.begin(), kSeriesVariables.end());
   for (std::size_t v = 0; v < variables.size(); ++v) {
@@ -274,10 +286,10 @@ TEST_F(RegimeMapWriterTest, map_has_dimension_scales_and_units) {
           << variables[v] << " is not attached to " << kCoordinates[static_cast<std::size_t>(d)];
     }
     EXPECT_FALSE(read_string_attribute(dataset, "long_name").empty()) << variables[v];
-    if (variable_units[v].empty()) {
+    if (variable_scales[v] == "-") {
       EXPECT_EQ(H5Aexists(dataset, "units"), 0) << variables[v];
     } else {
-      EXPECT_EQ(read_string_attribute(dataset, "units"), variable_units[v]) << variables[v];
+      expect_scale(dataset, variable_scales[v], variables[v]);
     }
   }
   const Handle t_star = open_dataset(file, "t_star");
@@ -537,7 +549,7 @@ TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
   names.clear();
   ASSERT_GE(H5Aiterate2(file, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect_attribute, &names), 0);
   EXPECT_EQ(names,
-            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "creep_law", "C",
+            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "creep_law", "C", "scales",
                                       "completed", "ranks", "wall_seconds", "points_per_second"}));
 
   const Handle regime = open_dataset(file, "regime");
@@ -801,7 +813,7 @@ TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_
     if (units[v].empty()) {
       EXPECT_EQ(H5Aexists(dataset, "units"), 0) << name;
     } else {
-      EXPECT_EQ(read_string_attribute(dataset, "units"), units[v]) << name;
+      expect_scale(dataset, units[v] == "1" ? "" : units[v], name);
     }
   }
   const Handle regime = open_dataset(file, "bem_regime");

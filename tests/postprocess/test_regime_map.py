@@ -40,11 +40,13 @@ def test_xarray_reads_labelled_dimensions_and_coordinates(full_map):
         np.testing.assert_array_equal(ds.l.values, [0.5, 0.75, 1.25])
         np.testing.assert_allclose(ds.pbar.values, 0.005 * 16.0 ** (np.arange(5) / 4), rtol=1e-14)
         np.testing.assert_array_equal(ds.time.values, [0, 1, 5])
-        units = {name: ds[name].attrs["units"] for name in ["l", "dh", "T", "pbar", "s", "time"]}
-        assert units == {"l": "R", "dh": "R", "T": "1", "pbar": "E0/(1-nu^2)", "s": "1", "time": "T_eps"}
+        axes = ["l", "dh", "T", "pbar", "s", "time"]
+        assert {ds[name].attrs["units"] for name in axes} == {"1"}  # pure numbers, each in its scale:
+        scales = {name: ds[name].attrs.get("scaled_by") for name in axes}
+        assert scales == {"l": "R", "dh": "R", "T": None, "pbar": "E0/(1-nu^2)", "s": None, "time": "T_eps"}
         for name in ["t_star", "h_0", "h_inf", "a1_inf", "a2_inf", "a1", "P1", "area_fraction"]:
             assert "units" in ds[name].attrs and "long_name" in ds[name].attrs, name
-        assert ds.t_star.attrs["units"] == "T_eps" and ds.P1.attrs["units"] == "R^2 E0/(1-nu^2)"
+        assert ds.t_star.attrs["scaled_by"] == "T_eps" and ds.P1.attrs["scaled_by"] == "R^2 E0/(1-nu^2)"
         assert ds.attrs["Conventions"] == "CF-1.8" and ds.attrs["completed"] == 1
         assert "[grid]" in ds.attrs["config"] and ds.attrs["creep_law"] == "standard_linear_solid"
         assert ds.pbar.attrs["spacing"] == "log"
@@ -119,3 +121,26 @@ def test_sweeps_default_ini_is_the_embedded_default():
         return [line for line in done.stdout.splitlines() if "calibration" not in line and "estimated" not in line]
     assert dry("--config", str(REPO / "sweeps" / "default.ini")) == dry()
     assert any("104328 in" in line for line in dry())
+
+
+def test_every_units_attribute_means_what_udunits_reads(full_map):
+    """UDUNITS (and so cf-units and pint-xarray) must read every `units` as the map means it:
+    here every real is a pure number, "1"; a scale such as R (which UDUNITS would read as
+    the roentgen) lives in `scaled_by`."""
+    import shutil
+    import subprocess
+
+    udunits = shutil.which("udunits2")
+    assert udunits, "udunits2 (Debian's udunits-bin, installed by cmake/install-deps.sh) is missing"
+    with xr.open_dataset(full_map, engine="h5netcdf") as ds:
+        names = [n for n in [*ds.coords, *ds.data_vars] if "units" in ds[n].attrs]
+        assert len(names) > 10
+        for name in names:
+            unit = ds[name].attrs["units"]
+            done = subprocess.run([udunits, "-H", unit, "-W", ""], capture_output=True, text=True,
+                                  stdin=subprocess.DEVNULL)
+            assert done.returncode == 0, f"{name}: udunits2 does not parse units {unit!r}: {done.stderr}"
+            assert done.stdout.strip() == "1", f"{name}: units {unit!r} is read as {done.stdout.strip()!r}"
+        for name in ["regime", "valid"]:
+            assert "units" not in ds[name].attrs  # flags have no units
+        assert "scaled_by" in ds.attrs["scales"]
