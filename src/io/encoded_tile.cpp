@@ -1,5 +1,6 @@
 #include "io/encoded_tile.hpp"
 
+#include <array>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
@@ -10,8 +11,14 @@ namespace punchsweep::io {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x54455350;  // "PSET" read as little-endian bytes
-constexpr std::uint32_t kVersion = 3;  // 2: BEM reference counts in the header; 3: chunks in map::kQuantities order
-constexpr std::size_t kHeaderSize = 2 * sizeof(std::uint32_t) + (2 + 3 + 4 + 3 + 1 + 1) * sizeof(std::uint64_t);
+// 2: BEM reference counts in the header; 3: chunks in map::kQuantities order; 4: five
+// validity counts (code 4, inaccurate).
+constexpr std::uint32_t kVersion = 4;
+constexpr std::size_t kHeaderSize = 2 * sizeof(std::uint32_t) +
+                                    (2 + std::tuple_size_v<decltype(TileSummary::regimes)> +
+                                     std::tuple_size_v<decltype(TileSummary::validity)> +
+                                     std::tuple_size_v<decltype(TileSummary::bem_regimes)> + 1 + 1) *
+                                        sizeof(std::uint64_t);
 
 /// Appends raw bytes at a moving cursor; memcpy keeps the buffer free of alignment demands.
 class Writer {

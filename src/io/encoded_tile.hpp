@@ -12,7 +12,7 @@ namespace punchsweep::io {
 struct TileSummary {
   std::uint64_t points = 0;                 ///< grid points in the tile
   std::array<std::uint64_t, 3> regimes{};   ///< points per regime code: 0 immediate, 1 delayed, 2 never
-  std::array<std::uint64_t, 4> validity{};  ///< points per validity code 0 .. 3 (README, "Validity")
+  std::array<std::uint64_t, 5> validity{};  ///< points per validity code 0 .. 4 (README, "Validity")
   std::array<std::uint64_t, 3> bem_regimes{};  ///< BEM reference points per regime code
   std::uint64_t bem_agreeing = 0;              ///< BEM reference points whose regime is the model's
 
@@ -33,8 +33,8 @@ struct EncodedTile {
 
 /// Flat byte form of an EncodedTile, shared by the MPI result messages and the resume
 /// journal. Layout (native endianness: every rank of one job runs on one architecture, and
-/// the chunks are little-endian anyway, see TileEncoder): a 120-byte header {u32 magic
-/// "PSET", u32 version (3), u64 tile index, u64 points, u64 x 3 regime counts, u64 x 4
+/// the chunks are little-endian anyway, see TileEncoder): a 128-byte header {u32 magic
+/// "PSET", u32 version (4), u64 tile index, u64 points, u64 x 3 regime counts, u64 x 5
 /// validity counts, u64 x 3 BEM regime counts, u64 BEM agreeing count, u64 chunk count},
 /// then u64 byte length per chunk, then the chunks' bytes.
 std::vector<std::byte> pack_encoded_tile(const EncodedTile& tile);

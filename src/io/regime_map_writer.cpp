@@ -37,8 +37,7 @@ FlagSet flag_set(map::Flags flags) {
       add(static_cast<std::int8_t>(r), model::regime_name(r));
     }
   } else {
-    for (const model::Validity v : {model::Validity::valid, model::Validity::same_level_overlap,
-                                    model::Validity::cross_level_overlap, model::Validity::no_solution}) {
+    for (const model::Validity v : model::kValidities) {
       add(static_cast<std::int8_t>(v), model::validity_name(v));
     }
   }

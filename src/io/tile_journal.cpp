@@ -20,7 +20,7 @@ namespace {
 
 constexpr std::array<char, 8> kFileMagic{'P', 'S', 'J', 'R', 'N', 'L', '\r', '\n'};
 // 2: records hold encoded tiles; 3: their summaries carry the BEM reference counts
-constexpr std::uint32_t kFormatVersion = 4;
+constexpr std::uint32_t kFormatVersion = 5;
 constexpr std::uint32_t kRecordMagic = 0x43525350;  // "PSRC" read as little-endian bytes
 constexpr std::size_t kHeaderFixed = kFileMagic.size() + sizeof(std::uint32_t) + sizeof(std::uint64_t);
 constexpr std::size_t kRecordHead = sizeof(std::uint32_t) + sizeof(std::uint64_t);

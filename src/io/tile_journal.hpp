@@ -18,14 +18,14 @@ namespace punchsweep::io {
 /// never misread. No fsync: a killed process does not lose the page cache, and a machine
 /// crash at worst costs tiles that are then computed again.
 ///
-/// File layout (native endianness), format version 4:
+/// File layout (native endianness), format version 5:
 ///   header: 8-byte magic "PSJRNL\r\n", u32 format version, u64 text length, the header
 ///           text (the caller's configuration identity), u32 CRC-32 of all of the above;
 ///   record: u32 magic "PSRC", u64 payload length, payload (a pack_encoded_tile buffer:
 ///           the tile as the map stores it), u32 CRC-32 of the length field and the payload.
 /// (Version 1 records held uncompressed tiles, version 2 tiles without the BEM reference
-/// counts, version 3 chunks in the variable order before map::kQuantities; read_header
-/// refuses such journals.)
+/// counts, version 3 chunks in the variable order before map::kQuantities, version 4 four
+/// validity counts; read_header refuses such journals.)
 ///
 /// Replay stops at the first record that is incomplete, has a wrong magic or a wrong CRC:
 /// what follows a damaged record cannot be framed reliably, so it is ignored as well, and

@@ -41,27 +41,37 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
 void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const {
   const double xi = 2.0 * (v / panel_width_ - panel) - 1.0;
   const std::size_t base = static_cast<std::size_t>(panel) * n_;
+  interpolate_nodes(&Q1_[base], &Q2_[base], xi, Q1, Q2);
+}
+
+void LoadHistory::interpolate_nodes(const double* Q1, const double* Q2, double xi, double* q1, double* q2) const {
   double num1 = 0.0;
   double num2 = 0.0;
   double den = 0.0;
   for (int j = 0; j < n_; ++j) {
     const double d = xi - nodes_[j];
     if (d == 0.0) {
-      *Q1 = Q1_[base + j];
-      *Q2 = Q2_[base + j];
+      *q1 = Q1[j];
+      *q2 = Q2[j];
       return;
     }
     const double c = bary_[j] / d;
-    num1 += c * Q1_[base + j];
-    num2 += c * Q2_[base + j];
+    num1 += c * Q1[j];
+    num2 += c * Q2[j];
     den += c;
   }
-  *Q1 = num1 / den;
-  *Q2 = num2 / den;
+  *q1 = num1 / den;
+  *q2 = num2 / den;
 }
 
-void LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2) const {
-  const double tau_min = std::max(0.0, t - creep_.relaxation_memory());
+bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
+                       const Sampler& near) const {
+  const double memory = creep_.relaxation_memory();
+  const double v_t = std::sqrt(std::max(t - t0_, 0.0));
+  // The stretch of time the panel at t spans; a memory shorter than that is a narrow kernel.
+  const double panel_span = (2.0 * v_t + panel_width_) * panel_width_;
+  if (memory < panel_span) return load_near(t, Q1_at_t, Q2_at_t, P1, P2, near);
+  const double tau_min = std::max(0.0, t - memory);
   const double E0 = creep_.relaxation(0.0);
   Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
@@ -89,6 +99,45 @@ void LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   }
   *P1 = sum[0];
   *P2 = sum[1];
+  return true;
+}
+
+bool LoadHistory::load_near(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
+                            const Sampler& near) const {
+  const double tau_min = std::max(0.0, t - creep_.relaxation_memory());
+  const double E_t = creep_.relaxation(t);
+  Eigen::Vector2d sum(E_t * Q1_at_t, E_t * Q2_at_t);
+  const Eigen::Vector2d at_t(Q1_at_t, Q2_at_t);
+
+  // Single-level part of the window, [tau_min, t0): Q1 = L g(tau), Q2 = 0.
+  sum += relaxation_integral(
+      creep_, t, tau_min, std::min(t0_, t),
+      [&](double tau) { return (Eigen::Vector2d(level1_load_ * load_.response(tau), 0.0) - at_t).eval(); },
+      Eigen::Vector2d::Zero().eval());
+
+  // Two-level part, [max(tau_min, t0), t]: Q sampled at the n Gauss nodes of the window in
+  // v = sqrt(tau - t0), in which Q is analytic even across touchdown.
+  const double v_a = std::sqrt(std::max(tau_min - t0_, 0.0));
+  const double v_b = std::sqrt(std::max(t - t0_, 0.0));
+  if (v_b > v_a) {
+    std::vector<double> q1(static_cast<std::size_t>(n_));
+    std::vector<double> q2(q1.size());
+    for (int j = 0; j < n_; ++j) {
+      const double v = v_a + 0.5 * (nodes_[static_cast<std::size_t>(j)] + 1.0) * (v_b - v_a);
+      if (!near(t0_ + v * v, &q1[static_cast<std::size_t>(j)], &q2[static_cast<std::size_t>(j)])) return false;
+    }
+    sum += relaxation_integral_sqrt(
+        creep_, t, t0_, v_a, v_b,
+        [&](double v) {
+          Eigen::Vector2d q;
+          interpolate_nodes(q1.data(), q2.data(), 2.0 * (v - v_a) / (v_b - v_a) - 1.0, &q[0], &q[1]);
+          return (q - at_t).eval();
+        },
+        Eigen::Vector2d::Zero().eval());
+  }
+  *P1 = sum[0];
+  *P2 = sum[1];
+  return true;
 }
 
 }  // namespace punchsweep::model

@@ -31,6 +31,16 @@ struct HistoryQuadrature {
 /// sub-intervals no longer than 2 relaxation time scales, so the kernel is resolved at no
 /// extra solves. Only the error of the interpolant remains; because it interpolates at
 /// Gauss nodes it integrates at order 2n in h (see HistoryQuadrature).
+///
+/// A fast-relaxing material (a relaxation memory shorter than the stretch of time one
+/// panel spans at t: the standard linear solid with T above about 16 at t = 5, or any T at
+/// late enough t) needs more: P_i is then about E(inf)/E(0) of the two terms above, so
+/// their difference would amplify the interpolant's error near t by E(0)/E(inf), and the
+/// rounding of tau near a large t by the kernel's rate. There load() uses
+///   P_i(t) = E(t) Q_i(t) + int_{t-m}^t (Q_i(tau) - Q_i(t)) E'(t - tau) dtau
+/// (by parts; m the relaxation memory, beyond which E' is below 1e-17 of its scale), with Q
+/// sampled afresh at n Gauss nodes of the memory window: the integrand vanishes where the
+/// kernel is largest, and the window's interpolant is as exact as the window is short.
 class LoadHistory {
  public:
   /// Writes Q1, Q2 at tau (called with increasing tau); returns false if it failed.
@@ -42,8 +52,10 @@ class LoadHistory {
   /// False if any sample failed; then load() is meaningless.
   bool ok() const { return ok_; }
 
-  /// P_i(t) for t in [t0, t_end], given the exact Q_i(t) at that time.
-  void load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2) const;
+  /// P_i(t) for t in [t0, t_end], given the exact Q_i(t) at that time. `near` samples Q in
+  /// the memory window before t when the kernel is narrower than a panel (called with tau
+  /// in [t - memory, t), in increasing order); returns false if a sample failed.
+  bool load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2, const Sampler& near) const;
 
   /// Number of Q samples taken (the solves the history cost).
   int samples() const { return static_cast<int>(Q1_.size()); }
@@ -51,6 +63,10 @@ class LoadHistory {
  private:
   /// Interpolated Q at v on panel `panel`.
   void interpolate(int panel, double v, double* Q1, double* Q2) const;
+  /// Barycentric interpolation at xi in [-1, 1] of samples at the reference nodes.
+  void interpolate_nodes(const double* Q1, const double* Q2, double xi, double* q1, double* q2) const;
+  /// The narrow-kernel form of load() (see the class comment); false if `near` failed.
+  bool load_near(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2, const Sampler& near) const;
 
   CreepWeightedLoad load_;
   const CreepLaw& creep_;  ///< load_'s material: its relaxation function is the kernel

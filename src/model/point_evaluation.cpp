@@ -70,6 +70,29 @@ std::string PointSummary::reason() const {
     case Validity::no_solution:
       out << "the two-level equations have no admissible solution " << when(invalid_at);
       break;
+    case Validity::inaccurate:
+      switch (invariant) {
+        case Invariant::loads_sum:
+          out << "the loads break P1 + P2 = pbar0 l^2 " << when(invalid_at) << ": P1 + P2 = " << violation_value
+              << ", pbar0 l^2 = " << violation_limit << " R^2 E0* (relative error "
+              << std::abs(violation_value - violation_limit) / violation_limit << " > " << kLoadsTolerance << ")";
+          break;
+        case Invariant::not_finite:
+          if (std::isinf(invalid_at)) {
+            out << "a summary value (h_0, h_inf, t* or the long-term state) is not finite";
+          } else {
+            out << "a value of the state is not finite " << when(invalid_at);
+          }
+          out << " (the point lies beyond what double precision resolves)";
+          break;
+        case Invariant::radii_order:
+          out << "the radii break 0 <= a2 <= a1 " << when(invalid_at) << ": a1 = " << violation_limit
+              << " R, a2 = " << violation_value << " R";
+          break;
+        case Invariant::none:
+          break;
+      }
+      break;
     case Validity::valid: break;
   }
   if (first_seen < invalid_at) out << "; already broken " << when(first_seen);
@@ -143,6 +166,19 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
     }
   }
   out.area_fraction_inf = area_fraction(out.a1_inf, out.a2_inf, l);
+  // Whatever the flags say, no number that is not finite is ever called valid.
+  if (out.valid()) {
+    const bool finite = std::isfinite(out.h_0) && (std::isfinite(out.h_inf) || !std::isfinite(X_inf)) &&
+                        std::isfinite(out.a1_inf) && std::isfinite(out.a2_inf) &&
+                        std::isfinite(out.area_fraction_inf) && (!out.t_star || std::isfinite(*out.t_star));
+    if (!finite) {
+      flag(out, {Validity::inaccurate, kNaN, kNaN}, kInf);
+      out.invariant = PointSummary::Invariant::not_finite;
+    } else if (!(out.a2_inf >= 0.0 && out.a2_inf <= out.a1_inf)) {
+      flag(out, {Validity::inaccurate, out.a2_inf, out.a1_inf}, kInf);
+      out.invariant = PointSummary::Invariant::radii_order;
+    }
+  }
   return out;
 }
 
@@ -236,7 +272,21 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
         X_current = X;
         snap.a1 = current.a1;
         snap.a2 = current.a2;
-        history->load(snap.t, current.Q1, current.Q2, &snap.P1, &snap.P2);
+        // For a narrow relaxation kernel the load history samples Q again just before t,
+        // starting from the state at t.
+        const TwoLevelState at_t = current;
+        const auto near = [&](double tau, double* Q1, double* Q2) {
+          const double X_tau = load(tau);
+          TwoLevelSolve s = system.solve(X_tau, at_t);
+          if (!s.converged) s = system.continue_to(at_t, X, X_tau);
+          *Q1 = s.state.Q1;
+          *Q2 = s.state.Q2;
+          return s.converged;
+        };
+        if (!history->load(snap.t, current.Q1, current.Q2, &snap.P1, &snap.P2, near)) {
+          if (out.valid()) flag(out, {Validity::no_solution, kNaN, kNaN}, snap.t);
+          snap.P1 = snap.P2 = kNaN;
+        }
       } else {
         current_ok = false;
         if (out.valid()) flag(out, {Validity::no_solution, kNaN, kNaN}, snap.t);
@@ -244,6 +294,21 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
       }
     }
     snap.area_fraction = area_fraction(snap.a1, snap.a2, problem.l);
+    // The snapshot's invariants (docs/model.md, section 5): loads that sum to the nominal
+    // load, finite values, 0 <= a2 <= a1.
+    if (out.valid()) {
+      const double sum = snap.P1 + snap.P2;
+      if (!(std::isfinite(snap.a1) && std::isfinite(snap.a2) && std::isfinite(snap.P1) && std::isfinite(snap.P2))) {
+        flag(out, {Validity::inaccurate, kNaN, kNaN}, snap.t);
+        out.invariant = PointSummary::Invariant::not_finite;
+      } else if (!(std::abs(sum - level1_load) <= kLoadsTolerance * level1_load)) {
+        flag(out, {Validity::inaccurate, sum, level1_load}, snap.t);
+        out.invariant = PointSummary::Invariant::loads_sum;
+      } else if (!(snap.a2 >= 0.0 && snap.a2 <= snap.a1)) {
+        flag(out, {Validity::inaccurate, snap.a2, snap.a1}, snap.t);
+        out.invariant = PointSummary::Invariant::radii_order;
+      }
+    }
     // The summary decided validity; a snapshot only tells how early a break is visible.
     if (!out.valid() && snap.t < out.first_seen && std::isfinite(snap.a1) &&
         check_state(snap.a1, snap.a2, problem.l).code != Validity::valid) {

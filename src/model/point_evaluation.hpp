@@ -15,6 +15,11 @@
 
 namespace punchsweep::model {
 
+/// Relative tolerance of the invariant P1 + P2 = pbar0 l^2 before a point is flagged
+/// Validity::inaccurate. The load history meets it with orders of magnitude to spare
+/// (tests/model/point_evaluation_test.cpp: 1e-10 for T from 1 to 1e6, t up to 1e9).
+inline constexpr double kLoadsTolerance = 1e-8;
+
 /// The contact state at one snapshot time.
 struct Snapshot {
   double t = 0.0;              ///< in T_eps
@@ -46,6 +51,9 @@ struct PointSummary {
   double violation_value = 0.0;  ///< the offending 2 a_i or a1 + a2 there, in R
   double violation_limit = 0.0;  ///< l or l/sqrt(2), in R
   double first_seen = 0.0;       ///< earliest computed time that shows a break, in T_eps
+  /// For Validity::inaccurate: which invariant broke (violation_value and violation_limit
+  /// hold its numbers, invalid_at its time).
+  enum class Invariant : std::int8_t { none, loads_sum, not_finite, radii_order } invariant = Invariant::none;
   NominalRadii radii;            ///< A1, A2 of the two-level phase (frozen, eq 9.18)
   double a1_inf = 0.0;           ///< long-term radii and area fraction (J = J(inf))
   double a2_inf = 0.0;
@@ -92,7 +100,9 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 
 /// Evaluates one point: its summary and the state at every requested time. Never throws
 /// for a problem that passes problem_error(); a point whose equations have no admissible
-/// solution comes back flagged no_solution with NaN only in what could not be computed.
+/// solution comes back flagged no_solution with NaN only in what could not be computed, and
+/// a point whose numbers break an invariant (P1 + P2 = pbar0 l^2 to kLoadsTolerance, finite
+/// values, 0 <= a2 <= a1) comes back flagged inaccurate.
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options = {});
 

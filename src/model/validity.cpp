@@ -8,6 +8,7 @@ std::string_view validity_name(Validity v) {
     case Validity::same_level_overlap: return "same_level_overlap";
     case Validity::cross_level_overlap: return "cross_level_overlap";
     case Validity::no_solution: return "no_solution";
+    case Validity::inaccurate: return "inaccurate";
   }
   return "unknown";
 }

@@ -80,6 +80,13 @@ TEST(Cli, times_must_increase_strictly_and_have_no_empty_item_as_in_a_sweep) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\n1.5,"), std::string::npos) << "linspace() is accepted as in a sweep";
 }
+TEST(Cli, a_point_beyond_double_precision_is_flagged_not_valid) {
+  const CliRun r = run_cli("point --l 1e308 --dh 0.05 --T 2.5 --pbar 0.06 --s 2 --format json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"h_0\": null"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"valid\": false"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not finite"), std::string::npos) << r.out;
+}
 TEST(Cli, stray_argument_is_named) {
   const CliRun r = run_cli("point " + kGood + " extra");
   EXPECT_EQ(r.exit_code, 2);

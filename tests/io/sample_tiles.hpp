@@ -57,7 +57,7 @@ inline map::TileData sample_tile(std::uint64_t seed, std::size_t points, std::si
   for (std::size_t q = 0; q < map::kQuantityCount; ++q) {
     const map::QuantitySpec& spec = map::kQuantities[q];
     if (spec.kind == map::Kind::flag) {
-      const int codes = spec.flags == map::Flags::regime ? 4 : 5;
+      const int codes = spec.flags == map::Flags::regime ? 4 : 6;  // every code and -1
       const std::uint64_t step = spec.source == map::Source::bem ? 5 : spec.flags == map::Flags::regime ? 1 : 3;
       std::vector<std::int8_t>& v = data.flag(q);
       for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::int8_t>(static_cast<int>((seed + step * i) % codes) - 1);
@@ -90,7 +90,7 @@ inline EncodedTile sample_encoded_tile(std::uint64_t seed, std::size_t chunks, s
   tile.tile = seed;
   tile.summary.points = 4096 + seed % 13;
   tile.summary.regimes = {seed % 100, 2000, 7};
-  tile.summary.validity = {3000, 0, seed % 50, 1};
+  tile.summary.validity = {3000, 0, seed % 50, 1, seed % 3};
   tile.summary.bem_regimes = {seed % 7, 3, 11};
   tile.summary.bem_agreeing = seed % 5;
   std::uint32_t x = static_cast<std::uint32_t>(seed) * 2654435761U + 1;

@@ -240,8 +240,9 @@ TEST(TileJournal, journal_create_truncates_an_old_journal) {
 
 TEST(TileJournal, journal_of_an_older_format_version_is_refused) {
   // Version 1 records held uncompressed tiles, version 2 tiles without the BEM counts,
-  // version 3 chunks in the old variable order; none must be misread as version 4.
-  for (const std::uint32_t version : {1U, 2U, 3U}) {
+  // version 3 chunks in the old variable order, version 4 four validity counts; none must
+  // be misread as version 5.
+  for (const std::uint32_t version : {1U, 2U, 3U, 4U}) {
     const ScratchDir dir;
     const std::string path = dir.file("j");
     write_journal(path, "h", 1);
@@ -250,7 +251,7 @@ TEST(TileJournal, journal_of_an_older_format_version_is_refused) {
     write_bytes(path, bytes, bytes.size());
     EXPECT_NE(error_of([&] {
                 TileJournal::read_header(path);
-              }).find("format version " + std::to_string(version) + ", this program reads version 4"),
+              }).find("format version " + std::to_string(version) + ", this program reads version 5"),
               std::string::npos);
   }
 }

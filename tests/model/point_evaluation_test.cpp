@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -202,4 +203,50 @@ TEST(Validity, codes_and_names_are_the_file_contract) {
   EXPECT_EQ(static_cast<int>(Regime::delayed), 1);
   EXPECT_EQ(static_cast<int>(Regime::never), 2);
   EXPECT_EQ(regime_name(Regime::delayed), "delayed");
+}
+
+TEST(PointEvaluation, loads_sum_to_the_nominal_load_for_any_relaxation_time_and_output_time) {
+  // P1 + P2 = pbar0 l^2 at every t (docs/model.md, section 5), for materials that relax
+  // from slightly (T = 1.5) to a millionfold (T = 1e6), up to t = 1e9 T_eps: the load
+  // history must not lose digits to a fast kernel or to a late time. (Before, T = 1e4 gave
+  // 1.2e-6 at t = 100 and 1.2e-4 at t = 1e4, T = 10 gave 4.5e-6 at t = 1e9.)
+  const std::vector<double> times{0.0, 0.5, 1.0, 3.0, 100.0, 1e4, 1e9};
+  for (const ContactProblem& p : {kFig94a, kDelayed, ContactProblem{1.0, 0.02, 0.02, Shape{1, 0.5}}}) {
+    for (const double T : {1.5, 2.5, 10.0, 100.0, 1e4, 1e6}) {
+      const PointResult r = evaluate(p, T, times);
+      EXPECT_NE(r.validity, Validity::inaccurate) << r.reason();
+      const double nominal = p.pbar0 * p.l * p.l;
+      for (const Snapshot& s : r.series) {
+        if (!std::isfinite(s.P1)) continue;  // a point the equations cannot follow (flagged)
+        // 1e-10, or the rounding floor: P is about Q/T, computed from Q values that carry a
+        // rounding of eps Q, so no formulation gets below about eps T (4e-10 at T = 1e6).
+        const double tolerance = std::max(1e-10, 4.0 * 2.2e-16 * T);
+        EXPECT_NEAR((s.P1 + s.P2) / nominal, 1.0, tolerance) << "T = " << T << ", t = " << s.t << ", l = " << p.l;
+        EXPECT_GE(s.P1, 0.0);
+        EXPECT_GE(s.P2, 0.0);
+      }
+    }
+  }
+}
+
+TEST(PointEvaluation, fast_relaxing_loads_agree_with_a_history_resolved_by_fine_panels) {
+  // T = 200 at t = 1.1, 2, 5: the relaxation memory (0.2) is shorter than a default panel,
+  // so the default history samples the memory window afresh; panels 0.01 wide resolve the
+  // kernel in the ordinary form. The two routes must agree.
+  for (const ContactProblem& p : {kFig94a, kDelayed}) {
+    const std::vector<double> times{1.1, 2.0, 5.0};
+    const PointResult fast = evaluate(p, 200.0, times);
+    const PointResult fine = evaluate(p, 200.0, times, {12, 0.01});
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      EXPECT_NEAR(fast.series[i].P1 / fine.series[i].P1, 1.0, 1e-9) << times[i];
+      EXPECT_NEAR(fast.series[i].P2 / fine.series[i].P2, 1.0, 1e-8) << times[i];
+    }
+  }
+}
+
+TEST(PointEvaluation, a_point_beyond_double_precision_is_flagged_inaccurate_never_valid) {
+  const PointResult r = evaluate(ContactProblem{1e308, 0.05, 0.06, Shape{2, 0.5}}, 2.5, {0.0, 1.0});
+  EXPECT_EQ(r.validity, Validity::inaccurate);
+  EXPECT_NE(r.reason().find("not finite"), std::string::npos) << r.reason();
+  EXPECT_EQ(validity_name(Validity::inaccurate), "inaccurate");
 }
