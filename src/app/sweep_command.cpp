@@ -28,6 +28,7 @@
 #include "io/tile_encoder.hpp"
 #include "io/tile_journal.hpp"
 #include "map/tiling.hpp"
+#include "run/disk_space.hpp"
 #include "run/map_run.hpp"
 #include "run/preflight.hpp"
 #include "sweep/scheduler.hpp"
@@ -156,8 +157,17 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
                 config.reference.sample ? "random" : "all", static_cast<long long>(layout.bem->seed));
   }
   const double bytes = static_cast<double>(points) * static_cast<double>(io::uncompressed_bytes_per_point(layout));
-  std::printf("\n  output: %s, %.3g MiB uncompressed (shuffle + deflate shrink it, typically 3-10x)\n",
-              config.output.c_str(), bytes / (1024.0 * 1024.0));
+  const run::DiskEstimate disk = run::estimate_disk(tiling, evaluator, layout, 0.5);
+  const double free = run::free_bytes(config.output);
+  std::printf("\n  output: %s, %s uncompressed; measured on %llu points: the map takes about %s and its journal "
+              "%s while it runs (%s free there)\n",
+              config.output.c_str(), run::format_bytes(bytes).c_str(),
+              static_cast<unsigned long long>(disk.sampled_points), run::format_bytes(disk.map_bytes).c_str(),
+              run::format_bytes(disk.journal_bytes).c_str(), free < 0 ? "unknown" : run::format_bytes(free).c_str());
+  if (const std::string problem = run::disk_space_problem(run::OutputPaths(config.output), disk);
+      !problem.empty()) {
+    std::printf("  refused at the start: %s\n", problem.c_str());
+  }
   // Calibration: whole tiles (so the per-tile reuse is measured too), picked at random.
   std::mt19937_64 rng(12345);
   std::uniform_int_distribution<std::size_t> pick(0, tiling.tiles() - 1);
@@ -252,7 +262,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
   }
   if (help) return 0;
 
-  const map::Tiling tiling(config.grid.shape(), config.chunk);
+  const map::Tiling tiling(config.grid.shape(), config.tile_points());
   if (config.dry_run) {
     if (root) print_dry_run(config, tiling, mpi.size());
     return 0;
@@ -276,6 +286,22 @@ int run_sweep_command(const std::vector<std::string>& args) {
       std::cerr << "punchsweep sweep: " << config.output << " is already complete; nothing to resume\n";
     }
     return 0;
+  }
+  // Rank 0 measures what the map and its journal will take and refuses a run whose file
+  // system cannot hold them, before any work.
+  if (root) {
+    const sweep::TileEvaluator model_only(config.grid, *config.creep_law, config.C, config.times, config.quantities);
+    const sweep::TileEvaluator with_reference(config.grid, *config.creep_law, config.C, config.times,
+                                              config.quantities, config.reference);
+    const run::DiskEstimate disk =
+        run::estimate_disk(tiling, model_only, layout_of(config, tiling, with_reference), 0.3);
+    refusal = run::disk_space_problem(run::OutputPaths(config.output), disk);
+  }
+  int room = refusal.empty() ? 0 : 1;
+  MPI_Bcast(&room, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (room != 0) {
+    if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
+    return kUsageExitCode;
   }
 
   for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_stop_signal);

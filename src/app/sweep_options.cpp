@@ -81,7 +81,10 @@ std::vector<KeySpec> make_keys() {
                   "what the map stores: regime (regime, t*, validity, long-term state) or full (also the time "
                   "series at time.times)",
                   "regime or full", Fixed::output_quantities});
-  keys.push_back({"run", "chunk", "N", "4096", "target number of grid points per tile and per HDF5 chunk",
+  keys.push_back({"run", "chunk", "N", "4096",
+                  "target number of values per tile and HDF5 chunk of the largest variable: grid points, or "
+                  "grid points x snapshot times for a map with time series (then chunk / times points, at "
+                  "least 1)",
                   "an integer >= 1", Fixed::run_chunk});
   keys.push_back({"run", "quiet", "BOOL", "false", "no progress output", kBoolRange, Fixed::run_quiet});
   keys.push_back({"run", "resume", "BOOL", "false",
@@ -205,7 +208,8 @@ po::options_description command_line_options() {
       ("quantities", po::value<std::string>()->value_name("WHAT"),
        "same as --output.quantities: regime or full; default full")
       ("chunk", po::value<std::string>()->value_name("N"),
-       "same as --run.chunk: target grid points per tile and HDF5 chunk; an integer >= 1; default 4096")
+       "same as --run.chunk: target values per tile and HDF5 chunk (points x times with time series); an "
+       "integer >= 1; default 4096")
       ("reference", po::value<std::string>()->value_name("METHOD"),
        "same as --reference.method: bem evaluates the periodic BEM reference at every grid point (or at "
        "--reference.sample K random ones) into the bem_* variables; none or bem; default none")

@@ -1,6 +1,8 @@
 #include "run/map_run.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <unordered_set>
 #include <ostream>
 
 #include "io/encoded_tile.hpp"
@@ -15,12 +17,12 @@ MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, co
       progress_(log, config.grid.points(), layout.bem ? static_cast<std::size_t>(layout.bem->sample) : 0,
                 config.quiet),
       last_flush_(std::chrono::steady_clock::now()) {
-  std::vector<bool> done(tiling.tiles(), false);
+  // The tiles the journal holds: memory in proportion to the work done, not to the grid.
+  std::unordered_set<std::uint64_t> done;
   if (start == Start::resume) {
     const std::size_t good_end = io::TileJournal::replay(paths_.journal, [&](const io::EncodedTile& tile) {
-      if (tile.tile >= done.size() || done[tile.tile]) return;
+      if (tile.tile >= tiling.tiles() || !done.insert(tile.tile).second) return;
       writer_.write_encoded(tiling.box(tile.tile), tile);
-      done[tile.tile] = true;
       progress_.restored(tile);
     });
     // A damaged record hides every later one (they cannot be framed): say how much is lost.
@@ -40,9 +42,14 @@ MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, co
     for (std::size_t i = 0; i < config.identity.size(); ++i) identity += (i ? "\n" : "") + config.identity[i];
     journal_ = io::TileJournal::create(paths_.journal, identity);
   }
-  for (std::size_t t = 0; t < tiling.tiles(); ++t) {
-    if (!done[t]) pending_.push_back(t);
+  std::vector<std::uint64_t> sorted(done.begin(), done.end());
+  std::sort(sorted.begin(), sorted.end());
+  std::uint64_t next = 0;
+  for (const std::uint64_t t : sorted) {
+    pending_.add(next, t);
+    next = t + 1;
   }
+  pending_.add(next, tiling.tiles());
 }
 
 void MapRun::accept(std::span<const std::byte> bytes) {

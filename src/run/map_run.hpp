@@ -12,6 +12,7 @@
 #include "map/tiling.hpp"
 #include "run/preflight.hpp"
 #include "run/progress.hpp"
+#include "sweep/tile_ranges.hpp"
 
 namespace punchsweep::run {
 
@@ -26,8 +27,8 @@ class MapRun {
   MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, const io::MapAttributes& attributes,
          Start start, const map::Tiling& tiling, std::ostream& log);
 
-  /// The tiles still to compute, in increasing order.
-  const std::vector<std::size_t>& pending() const { return pending_; }
+  /// The tiles still to compute.
+  const sweep::TileRanges& pending() const { return pending_; }
 
   /// The scheduler's sink: journals and writes one tile packed by io::pack_encoded_tile.
   void accept(std::span<const std::byte> bytes);
@@ -49,7 +50,7 @@ class MapRun {
   io::RegimeMapWriter writer_;
   Progress progress_;
   std::optional<io::TileJournal> journal_;
-  std::vector<std::size_t> pending_;
+  sweep::TileRanges pending_;
   std::chrono::steady_clock::time_point last_flush_;
 };
 

@@ -11,6 +11,7 @@ namespace {
 
 enum Tag : int { kTagWork = 1, kTagStop = 2, kTagResult = 3, kTagDone = 4 };
 constexpr int kBatchesInFlight = 2;
+constexpr std::uint64_t kMaxBatch = 256;  // tiles in one batch at most
 
 void check(int status, const char* what) {
   if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
@@ -53,7 +54,7 @@ class Outbox {
 /// Worker side: computes and encodes the tiles it is sent, one result message per tile,
 /// until told to stop.
 void work(MPI_Comm comm, const TileWork& compute) {
-  std::deque<std::uint64_t> pending;
+  TileRanges pending;
   bool stop = false;
   Outbox outbox;
   while (!stop) {
@@ -72,13 +73,11 @@ void work(MPI_Comm comm, const TileWork& compute) {
       std::vector<std::uint64_t> message(static_cast<std::size_t>(count));
       check(MPI_Recv(message.data(), count, MPI_UINT64_T, 0, status.MPI_TAG, comm, MPI_STATUS_IGNORE), "recv work");
       if (status.MPI_TAG == kTagStop) stop = true;
-      else pending.insert(pending.end(), message.begin(), message.end());
+      else pending.add_flat(message);
       check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
     }
     if (stop || pending.empty()) continue;
-    const std::uint64_t tile = pending.front();
-    pending.pop_front();
-    outbox.send(compute(tile), comm);
+    outbox.send(compute(pending.pop_front()), comm);
     outbox.release_finished();
   }
   outbox.wait_all();
@@ -87,11 +86,9 @@ void work(MPI_Comm comm, const TileWork& compute) {
 
 class Manager {
  public:
-  Manager(MPI_Comm comm, int ranks, const TileWork& compute, const std::vector<std::size_t>& pending,
-          const TileSink& sink)
-      : comm_(comm), ranks_(ranks), compute_(compute), sink_(sink),
-        queue_(pending.begin(), pending.end()), outstanding_(static_cast<std::size_t>(ranks), 0),
-        to_do_(pending.size()) {}
+  Manager(MPI_Comm comm, int ranks, const TileWork& compute, const TileRanges& pending, const TileSink& sink)
+      : comm_(comm), ranks_(ranks), compute_(compute), sink_(sink), queue_(pending),
+        outstanding_(static_cast<std::size_t>(ranks), 0), to_do_(pending.size()) {}
 
   ScheduleResult run(const volatile std::sig_atomic_t* stop) {
     for (int w = 1; w < ranks_; ++w) {
@@ -119,19 +116,20 @@ class Manager {
     return n;
   }
 
-  // Guided size: large batches early, single tiles at the end.
+  // Guided size: large batches early (at most kMaxBatch, so no message and no worker's
+  // backlog grows with the grid), single tiles at the end.
   std::size_t guided_size() const {
-    return std::clamp<std::size_t>(queue_.size() / (4 * static_cast<std::size_t>(ranks_)), 1,
-                                   std::max<std::size_t>(queue_.size(), 1));
+    const std::uint64_t size = queue_.size() / (4 * static_cast<std::uint64_t>(ranks_));
+    return static_cast<std::size_t>(std::clamp<std::uint64_t>(size, 1, kMaxBatch));
   }
 
   void send_batch(int worker) {
     if (queue_.empty() || stopping_) return;
-    const std::size_t size = guided_size();
-    std::vector<std::uint64_t> batch(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(size));
-    queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(size));
-    check(MPI_Send(batch.data(), static_cast<int>(batch.size()), MPI_UINT64_T, worker, kTagWork, comm_), "send work");
-    outstanding_[static_cast<std::size_t>(worker)] += size;
+    const TileRanges batch = queue_.take(guided_size());
+    const std::vector<std::uint64_t> message = batch.flat();  // [first, last) pairs
+    check(MPI_Send(message.data(), static_cast<int>(message.size()), MPI_UINT64_T, worker, kTagWork, comm_),
+          "send work");
+    outstanding_[static_cast<std::size_t>(worker)] += batch.size();
   }
 
   void begin_stop() {
@@ -142,9 +140,7 @@ class Manager {
   }
 
   void compute_one() {
-    const std::size_t tile = queue_.front();
-    queue_.pop_front();
-    sink_(compute_(tile));
+    sink_(compute_(queue_.pop_front()));
     ++result_.tiles_done;
   }
 
@@ -183,7 +179,7 @@ class Manager {
   int ranks_;
   const TileWork& compute_;
   const TileSink& sink_;
-  std::deque<std::size_t> queue_;
+  TileRanges queue_;
   std::vector<std::size_t> outstanding_;
   std::size_t to_do_;
   bool stopping_ = false;
@@ -194,7 +190,7 @@ class Manager {
 
 }  // namespace
 
-ScheduleResult run_schedule(MPI_Comm comm, const std::vector<std::size_t>& pending, const TileWork& work_on,
+ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const TileWork& work_on,
                             const TileSink& sink, const volatile std::sig_atomic_t* stop) {
   int rank = 0;
   int ranks = 1;

@@ -9,6 +9,8 @@
 #include <span>
 #include <vector>
 
+#include "sweep/tile_ranges.hpp"
+
 namespace punchsweep::sweep {
 
 /// Computes one tile, by its index, into the bytes that travel to rank 0 (the sweep packs
@@ -26,9 +28,9 @@ struct ScheduleResult {
 
 /// Dynamic manager/worker scheduling of tiles over the ranks of `comm`.
 ///
-/// Rank 0 is the manager: it hands out batches of tile indices (guided sizes: a batch is
-/// about the remaining tiles / (4 * ranks), at least 1; two batches in flight per worker so
-/// no worker waits for the next), receives each tile as one message of `work`'s bytes and
+/// Rank 0 is the manager: it hands out batches of tiles as index ranges (guided sizes: a
+/// batch is about the remaining tiles / (4 * ranks), at least 1 and at most 256; two batches
+/// in flight per worker so no worker waits for the next), receives each tile as one message of `work`'s bytes and
 /// passes it to `sink`, and between those duties computes tiles itself, so N ranks use N
 /// cores. Every rank turns the tiles it computes into bytes itself (the sweep compresses
 /// there), so the manager's share of the file writing stays a copy of bytes however many
@@ -37,8 +39,9 @@ struct ScheduleResult {
 /// workers to finish the tile in hand, and collects what was computed; untouched tiles stay
 /// pending. The scheduler knows nothing of grids, models or files.
 ///
-/// Called collectively. `pending` (rank 0 only) lists the tiles still to compute.
-ScheduleResult run_schedule(MPI_Comm comm, const std::vector<std::size_t>& pending, const TileWork& work,
+/// Called collectively. `pending` (rank 0 only) holds the tiles still to compute; no memory
+/// of the schedule grows with the number of tiles.
+ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const TileWork& work,
                             const TileSink& sink, const volatile std::sig_atomic_t* stop);
 
 }  // namespace punchsweep::sweep

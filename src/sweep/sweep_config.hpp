@@ -49,7 +49,9 @@ struct SweepConfig {
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps
   std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
   map::Quantities quantities = map::Quantities::full;  ///< [output] quantities
-  std::size_t chunk = 4096;           ///< [run] chunk: target points per tile / HDF5 chunk
+  /// [run] chunk: target number of values per tile and HDF5 chunk of the largest variable
+  /// (tile_points() grid points).
+  std::size_t chunk = 4096;
   ReferenceConfig reference;          ///< [reference] method, grid, sample, seed
   bool resume = false;                ///< [run] resume
   bool overwrite = false;             ///< [run] overwrite
@@ -59,6 +61,15 @@ struct SweepConfig {
   /// The resolved configuration as INI text, every key with its final value and a comment
   /// line naming its source; stored in the map and compared on --resume.
   std::string resolved_text;
+  /// Grid points per tile and HDF5 chunk: `chunk` counts the values of the largest
+  /// variable, so a map with time series of n snapshots (full quantities or a BEM
+  /// reference) gets chunk / n points a tile, at least 1. A tile's memory, its compute time
+  /// and an HDF5 chunk so stay bounded however many times are asked for.
+  std::size_t tile_points() const {
+    const bool series = quantities == map::Quantities::full || reference.on();
+    const std::size_t n = series && !times.empty() ? times.size() : 1;
+    return chunk / n > 0 ? chunk / n : 1;
+  }
   /// The keys that define the map's content (grid, model, time, quantities, chunk,
   /// reference) as "section.key = value" lines; --resume refuses any difference in these.
   std::vector<std::string> identity;

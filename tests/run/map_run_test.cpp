@@ -14,6 +14,8 @@
 #include "io/tile_journal.hpp"
 #include "map/test_grid.hpp"
 #include "map/tiling.hpp"
+#include "model/creep_laws.hpp"
+#include "run/disk_space.hpp"
 #include "run/map_run.hpp"
 #include "run/preflight.hpp"
 #include "run/resume_policy.hpp"
@@ -138,9 +140,9 @@ TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
   for (std::size_t t = 0; t < tiling.tiles(); ++t) {
     if (t != 0 && t != 2) expected.push_back(t);
   }
-  EXPECT_EQ(second.pending(), expected);
+  EXPECT_EQ(second.pending().tiles(), expected);
   EXPECT_EQ(second.progress().points_done(), tiling.box(0).points() + tiling.box(2).points());
-  for (const std::size_t t : second.pending()) second.accept(packed_tile(encoder, tiling, t, 0));
+  for (const std::uint64_t t : second.pending().tiles()) second.accept(packed_tile(encoder, tiling, t, 0));
   second.finish(1);
   EXPECT_TRUE(std::filesystem::exists(paths.final_path));
   EXPECT_FALSE(std::filesystem::exists(paths.journal));
@@ -194,4 +196,36 @@ TEST(MapRun, resume_says_how_many_records_a_damaged_journal_loses) {
       << resume_log.str();
   EXPECT_EQ(second.pending().front(), 1U) << "tiles 1 and 2 are computed again";
   EXPECT_EQ(second.pending().size(), tiling.tiles() - 1);
+}
+
+TEST(DiskSpace, the_measured_estimate_is_close_to_the_chunks_the_map_stores_and_refuses_what_cannot_fit) {
+  sweep::SweepConfig config = small_config("unused.h5");
+  config.grid.axes[kDh].values = {0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.1};
+  config.grid.axes[kPbar].values = {0.005, 0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07};
+  config.grid.axes[kT].values = {2.0, 3.0, 5.0, 8.0};
+  config.grid.axes[kS].values = {1, 2, 3};
+  config.quantities = map::Quantities::full;
+  const map::Tiling tiling(config.grid.shape(), 64);
+  const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
+  const sweep::TileEvaluator model(config.grid, model::creep_laws().front(), config.C, config.times, config.quantities);
+  const run::DiskEstimate estimate = run::estimate_disk(tiling, model, layout, 10.0);
+  // Every tile encoded: the bytes the map's chunks really take.
+  io::TileEncoder encoder(layout);
+  map::TileData data;
+  double exact = 0.0;
+  for (std::size_t t = 0; t < tiling.tiles(); ++t) {
+    model.evaluate(tiling.box(t), &data);
+    for (const auto& chunk : encoder.encode(t, tiling.box(t), data).chunks) exact += static_cast<double>(chunk.size());
+  }
+  EXPECT_NEAR(estimate.map_bytes / exact, 1.0, 0.25) << estimate.map_bytes << " vs " << exact;
+  EXPECT_GT(estimate.journal_bytes, estimate.map_bytes);  // the same chunks plus record headers
+
+  const ScratchDir dir;
+  const run::OutputPaths paths(dir.file("map.h5"));
+  EXPECT_EQ(run::disk_space_problem(paths, estimate), "");
+  run::DiskEstimate huge = estimate;
+  huge.map_bytes = 1e20;
+  const std::string refusal = run::disk_space_problem(paths, huge);
+  EXPECT_NE(refusal.find("need about"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("free"), std::string::npos) << refusal;
 }

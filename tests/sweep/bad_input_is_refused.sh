@@ -58,4 +58,16 @@ kill -9 "$pid"; wait "$pid" 2>/dev/null || true
 cd keep
 refused "grid.T" "$PUNCHSWEEP" sweep --config ../slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,6 --output part.h5 --resume
 refused "pass --resume" "$PUNCHSWEEP" sweep --config ../slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,5 --output part.h5
+cd ..
+# A grid whose map cannot fit on the disk is refused before any work, with flat memory
+# (a 1e12-point grid once grew rank 0 by 250 MB/s with no point done).
+refused "but its file system has" /usr/bin/time -f "%M" -o rss.txt "$PUNCHSWEEP" sweep --grid.l 'linspace(0.5,1.5,10000)' \
+  --grid.dh 'linspace(0,0.2,10000)' --grid.T 'linspace(1,10,100)' --grid.pbar 'logspace(0.001,0.1,100)' --grid.s 1 \
+  --quantities regime --output huge.h5
+test "$(tail -1 rss.txt)" -lt 200000 || { echo "FAIL: a 1e12-point grid took $(tail -1 rss.txt) KB before its refusal"; exit 1; }
+# A million snapshot times: chunks stay bounded (chunk / times points a tile) and the map
+# that would need terabytes is refused before it is created.
+refused "the map and its journal need about" "$PUNCHSWEEP" sweep --time.times 'linspace(0,5,1000000)' --output many.h5
+"$PUNCHSWEEP" sweep "${small[@]}" --time.times 'linspace(0,5,200000)' --dry-run > dry.txt
+grep -q "points: 1 in 1 tiles" dry.txt || { echo "FAIL: dry run of 2e5 times"; cat dry.txt; exit 1; }
 echo "PASS: bad input refused with exit 2 and nothing written"
