@@ -30,7 +30,9 @@ hostfile=()
 mpirun "${hostfile[@]}" -np "$ranks" --bind-to core "$binary" sweep --config "$run/config.ini" \
   --output "$run/map.h5" --resume "${extra[@]}" &
 step=$!
-trap 'kill -TERM "$step" 2>/dev/null || true' TERM USR1
+# mpirun passes USR1 to every rank and lets the sweep's exit code 3 through; on TERM it
+# would end with 1 (after the ranks drained), and the job would not be rerun.
+trap 'kill -USR1 "$step" 2>/dev/null || true' TERM USR1
 status=0
 wait "$step" || status=$?
 while kill -0 "$step" 2>/dev/null; do wait "$step" || status=$?; done

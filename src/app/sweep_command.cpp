@@ -230,12 +230,13 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
                           [&](std::span<const std::byte> bytes) { map_run.accept(bytes); }, &g_stop_signal);
   if (result.interrupted) {
     map_run.interrupt();
+    const int signal = result.stop_signal != 0 ? result.stop_signal : static_cast<int>(g_stop_signal);
     std::string resume = command_line(args);
     if (!config.resume) resume += " --resume";
     std::fprintf(stderr,
-                 "punchsweep sweep: stopped by signal %d with %zu of %zu points done; the finished tiles "
-                 "are kept in %s.\n  Resume with: %s\n",
-                 static_cast<int>(g_stop_signal), map_run.progress().points_done(), config.grid.points(),
+                 "punchsweep sweep: stopped by signal %d (received by rank %d) with %zu of %zu points done; the "
+                 "finished tiles are kept in %s.\n  Resume with: %s\n",
+                 signal, result.stop_rank, map_run.progress().points_done(), config.grid.points(),
                  map_run.paths().journal.c_str(), resume.c_str());
     return kInterruptedExitCode;
   }

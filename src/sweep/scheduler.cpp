@@ -1,6 +1,9 @@
 #include "sweep/scheduler.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <thread>
 #include <cstdint>
 #include <deque>
 #include <stdexcept>
@@ -9,7 +12,7 @@
 namespace punchsweep::sweep {
 namespace {
 
-enum Tag : int { kTagWork = 1, kTagStop = 2, kTagResult = 3, kTagDone = 4 };
+enum Tag : int { kTagWork = 1, kTagStop = 2, kTagResult = 3, kTagDone = 4, kTagStopRequest = 5 };
 constexpr int kBatchesInFlight = 2;
 constexpr std::uint64_t kMaxBatch = 256;  // tiles in one batch at most
 
@@ -52,20 +55,26 @@ class Outbox {
 };
 
 /// Worker side: computes and encodes the tiles it is sent, one result message per tile,
-/// until told to stop.
-void work(MPI_Comm comm, const TileWork& compute) {
+/// until told to stop. A stop signal to this rank (`*signalled`) is passed on to the
+/// manager, which stops the whole sweep; the worker starts no further tile meanwhile.
+void work(MPI_Comm comm, const TileWork& compute, const volatile std::sig_atomic_t* signalled) {
   TileRanges pending;
   bool stop = false;
+  bool requested = false;
   Outbox outbox;
   while (!stop) {
-    // Block only when there is nothing to compute.
+    if (*signalled && !requested) {
+      const int signal = static_cast<int>(*signalled);
+      check(MPI_Send(&signal, 1, MPI_INT, 0, kTagStopRequest, comm), "send stop request");
+      requested = true;
+    }
+    // Wait only when there is nothing to compute, polling so that a signal is noticed.
     int flag = 0;
     MPI_Status status;
-    if (pending.empty()) {
-      check(MPI_Probe(0, MPI_ANY_TAG, comm, &status), "probe");
-      flag = 1;
-    } else {
-      check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
+    check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
+    if (!flag && (pending.empty() || requested)) {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      continue;
     }
     while (flag) {
       int count = 0;
@@ -76,7 +85,7 @@ void work(MPI_Comm comm, const TileWork& compute) {
       else pending.add_flat(message);
       check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
     }
-    if (stop || pending.empty()) continue;
+    if (stop || requested || pending.empty()) continue;
     outbox.send(compute(pending.pop_front()), comm);
     outbox.release_finished();
   }
@@ -95,7 +104,12 @@ class Manager {
       for (int b = 0; b < kBatchesInFlight; ++b) send_batch(w);
     }
     while (true) {
-      if (*stop && !stopping_) begin_stop();
+      if (*stop && !stopping_) {
+        result_.stop_signal = static_cast<int>(*stop);
+        result_.stop_rank = 0;
+        begin_stop();
+      }
+      if (result_.stop_signal != 0 && !stopping_) begin_stop();  // a worker's signal
       drain_results(false);
       if (!stopping_ && !queue_.empty()) {
         compute_one();
@@ -166,6 +180,13 @@ class Manager {
         ++done_;
         continue;
       }
+      if (status.MPI_TAG == kTagStopRequest) {
+        if (result_.stop_signal == 0) {
+          std::memcpy(&result_.stop_signal, buffer_.data(), sizeof(int));
+          result_.stop_rank = worker;
+        }
+        continue;
+      }
       sink_(buffer_);
       ++result_.tiles_done;
       // Keep about two batches of work queued at the worker, so it never waits for us.
@@ -197,7 +218,7 @@ ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const Tile
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &ranks);
   if (rank != 0) {
-    work(comm, work_on);
+    work(comm, work_on, stop);
     return {};
   }
   return Manager(comm, ranks, work_on, pending, sink).run(stop);

@@ -24,6 +24,8 @@ using TileSink = std::function<void(std::span<const std::byte> bytes)>;
 struct ScheduleResult {
   std::size_t tiles_done = 0;  ///< tiles finished by this run (not counting resumed ones)
   bool interrupted = false;    ///< a stop was requested before every tile was handed out
+  int stop_signal = 0;         ///< the stop signal, 0 if none
+  int stop_rank = 0;           ///< the rank that received it (rank 0 or a worker)
 };
 
 /// Dynamic manager/worker scheduling of tiles over the ranks of `comm`.
@@ -35,9 +37,10 @@ struct ScheduleResult {
 /// cores. Every rank turns the tiles it computes into bytes itself (the sweep compresses
 /// there), so the manager's share of the file writing stays a copy of bytes however many
 /// workers there are. With one rank it simply computes every tile. When `*stop` becomes
-/// non-zero (SIGTERM, SIGUSR1, SIGINT) the manager stops handing out work, tells the
-/// workers to finish the tile in hand, and collects what was computed; untouched tiles stay
-/// pending. The scheduler knows nothing of grids, models or files.
+/// non-zero (SIGTERM, SIGUSR1, SIGINT) on rank 0, or on any worker (which tells rank 0 and
+/// starts no further tile), the manager stops handing out work, tells the workers to
+/// finish the tile in hand, and collects what was computed; untouched tiles stay pending.
+/// The scheduler knows nothing of grids, models or files.
 ///
 /// Called collectively. `pending` (rank 0 only) holds the tiles still to compute; no memory
 /// of the schedule grows with the number of tiles.
