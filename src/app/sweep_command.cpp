@@ -263,6 +263,15 @@ int run_sweep_command(const std::vector<std::string>& args) {
   }
   if (help) return 0;
 
+  // run.chunk = auto: rank 0 decides (from the journal when resuming), every rank follows.
+  std::uint64_t chunk = config.chunk;
+  if (root) {
+    run::resolve_chunk(config, run::OutputPaths(config.output), mpi.size());
+    chunk = config.chunk;
+  }
+  MPI_Bcast(&chunk, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  sweep::set_chunk(config, static_cast<std::size_t>(chunk));
+
   const map::Tiling tiling(config.grid.shape(), config.tile_points());
   if (config.dry_run) {
     if (root) print_dry_run(config, tiling, mpi.size());

@@ -85,7 +85,9 @@ std::vector<KeySpec> make_keys() {
                   "target number of values per tile and HDF5 chunk of the largest variable: grid points, or "
                   "grid points x snapshot times for a map with time series (then chunk / times points, at "
                   "least 1)",
-                  "an integer >= 1", Fixed::run_chunk});
+                  "an integer >= 1, or auto (from the work and the rank count: about 16 tiles a rank, "
+                  "256 to 4096 values; a resumed run keeps the size its map was started with)",
+                  Fixed::run_chunk});
   keys.push_back({"run", "quiet", "BOOL", "false", "no progress output", kBoolRange, Fixed::run_quiet});
   keys.push_back({"run", "resume", "BOOL", "false",
                   "continue an interrupted sweep into the existing partial map; refused if its grid, model or "
@@ -407,6 +409,10 @@ std::string check_bool(const std::string& text, bool& value) {
 }
 
 std::string check_chunk(const std::string& text, std::size_t& chunk) {
+  if (text == "auto") {
+    chunk = sweep::kAutoChunk;  // resolved at the start of the run (sweep::auto_chunk)
+    return {};
+  }
   int value = 0;
   try {
     value = parse_integer(text, dotted(Fixed::run_chunk));
@@ -621,7 +627,7 @@ std::string resolved_value(Fixed key, const std::string& text, const sweep::Swee
     case Fixed::model_creep_law:
       return std::string(config.creep_law->name);
     case Fixed::run_chunk:
-      return std::to_string(config.chunk);
+      return config.chunk == sweep::kAutoChunk ? "auto" : std::to_string(config.chunk);
     case Fixed::run_quiet:
       return config.quiet ? "true" : "false";
     case Fixed::run_resume:
@@ -677,7 +683,7 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
   lines.push_back("time.times = " + map::format_axis_values(config.times));
   lines.push_back(std::string("output.quantities = ") +
                   (config.quantities == map::Quantities::full ? "full" : "regime"));
-  lines.push_back("run.chunk = " + std::to_string(config.chunk));
+  lines.push_back("run.chunk = " + (config.chunk == sweep::kAutoChunk ? std::string("auto") : std::to_string(config.chunk)));
   for (const Fixed key : {Fixed::reference_method, Fixed::reference_grid, Fixed::reference_sample,
                           Fixed::reference_seed}) {
     lines.push_back(dotted(key) + " = " + reference_value(key, config.reference));

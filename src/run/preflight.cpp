@@ -114,4 +114,30 @@ std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths
   return {};
 }
 
+void resolve_chunk(sweep::SweepConfig& config, const OutputPaths& paths, int ranks) {
+  if (config.chunk != sweep::kAutoChunk) return;
+  if (config.resume && !config.overwrite) {
+    std::error_code ec;
+    std::string recorded;
+    try {
+      if (fs::exists(paths.journal, ec)) {
+        recorded = io::TileJournal::read_header(paths.journal);
+      } else if (fs::exists(paths.final_path, ec)) {
+        recorded = io::read_map_identity(paths.final_path);
+      }
+    } catch (const std::exception&) {
+      recorded.clear();  // preflight reports what is wrong with the file
+    }
+    for (const std::string& line : split_lines(recorded)) {
+      if (line.rfind("run.chunk = ", 0) != 0) continue;
+      const std::string value = line.substr(12);
+      if (!value.empty() && value.find_first_not_of("0123456789") == std::string::npos) {
+        sweep::set_chunk(config, std::stoull(value));
+        return;
+      }
+    }
+  }
+  sweep::set_chunk(config, sweep::auto_chunk(config, ranks));
+}
+
 }  // namespace punchsweep::run

@@ -30,4 +30,10 @@ enum class Start { fresh, resume, already_complete };
 /// or more lines naming the file and what to do.
 std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start);
 
+/// Resolves run.chunk = auto (else leaves the config alone): a run that will resume takes
+/// the size its map was started with (from the journal, or a finished map's identity), so
+/// its tiles are the same whatever the rank count; a fresh run sizes it for `ranks`
+/// (sweep::auto_chunk).
+void resolve_chunk(sweep::SweepConfig& config, const OutputPaths& paths, int ranks);
+
 }  // namespace punchsweep::run

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -39,6 +40,9 @@ struct ReferenceConfig {
   bool on() const { return method == ReferenceMethod::bem; }
 };
 
+/// run.chunk = auto: sized at the start of a run by auto_chunk().
+inline constexpr std::size_t kAutoChunk = 0;
+
 /// A fully resolved, validated `punchsweep sweep` configuration (defaults, INI file and
 /// command-line overrides merged; the command line wins).
 struct SweepConfig {
@@ -66,6 +70,7 @@ struct SweepConfig {
   /// reference) gets chunk / n points a tile, at least 1. A tile's memory, its compute time
   /// and an HDF5 chunk so stay bounded however many times are asked for.
   std::size_t tile_points() const {
+    if (chunk == kAutoChunk) return 1;  // resolve auto first (auto_chunk)
     const bool series = quantities == map::Quantities::full || reference.on();
     const std::size_t n = series && !times.empty() ? times.size() : 1;
     return chunk / n > 0 ? chunk / n : 1;
@@ -74,5 +79,24 @@ struct SweepConfig {
   /// reference) as "section.key = value" lines; --resume refuses any difference in these.
   std::vector<std::string> identity;
 };
+
+/// run.chunk = auto for `ranks` ranks: about 16 tiles a rank, so the guided schedule ends
+/// with a short tail, clamped to 256 .. 4096 values (compression and rank 0's per-tile cost
+/// want large tiles; past 4096 nothing is gained).
+inline std::size_t auto_chunk(const SweepConfig& config, int ranks) {
+  const bool series = config.quantities == map::Quantities::full || config.reference.on();
+  const double values = static_cast<double>(config.grid.points()) *
+                        static_cast<double>(series && !config.times.empty() ? config.times.size() : 1);
+  const double per_tile = values / (16.0 * static_cast<double>(ranks > 0 ? ranks : 1));
+  return static_cast<std::size_t>(std::clamp(per_tile, 256.0, 4096.0));
+}
+
+/// Sets run.chunk (and its identity line) to `chunk`, resolving auto.
+inline void set_chunk(SweepConfig& config, std::size_t chunk) {
+  config.chunk = chunk;
+  for (std::string& line : config.identity) {
+    if (line.rfind("run.chunk = ", 0) == 0) line = "run.chunk = " + std::to_string(chunk);
+  }
+}
 
 }  // namespace punchsweep::sweep

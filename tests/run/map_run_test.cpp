@@ -229,3 +229,37 @@ TEST(DiskSpace, the_measured_estimate_is_close_to_the_chunks_the_map_stores_and_
   EXPECT_NE(refusal.find("need about"), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("free"), std::string::npos) << refusal;
 }
+
+TEST(ResolveChunk, auto_sizes_for_the_ranks_and_a_resume_keeps_the_size_its_map_started_with) {
+  const ScratchDir dir;
+  sweep::SweepConfig config = small_config(dir.file("map.h5"));
+  // 2 x 3 x 1 x 2 x 1 = 12 points: auto clamps to its floor of 256 values.
+  config.chunk = sweep::kAutoChunk;
+  config.identity = {"grid.l = 0.75, 1", "run.chunk = auto"};
+  run::resolve_chunk(config, run::OutputPaths(config.output), 4);
+  EXPECT_EQ(config.chunk, 256U);
+  EXPECT_EQ(config.identity[1], "run.chunk = 256");
+
+  // The default grid in full mode: 104328 points x 5 times / (16 ranks x 16) = 2037 values.
+  sweep::SweepConfig big;
+  big.grid = sls_grid();
+  big.grid.axes[kL].values.assign(7, 1.0);
+  big.grid.axes[kDh].values.assign(23, 1.0);
+  big.grid.axes[kT].values.assign(9, 1.0);
+  big.grid.axes[kPbar].values.assign(24, 1.0);
+  big.grid.axes[kS].values.assign(3, 1.0);
+  EXPECT_EQ(sweep::auto_chunk(big, 16), 2037U);
+  EXPECT_EQ(sweep::auto_chunk(big, 1), 4096U);
+
+  // Resuming: the journal's size wins over the rank count.
+  io::TileJournal::create(run::OutputPaths(config.output).journal, "grid.l = 0.75, 1\nrun.chunk = 1234");
+  config.chunk = sweep::kAutoChunk;
+  config.resume = true;
+  run::resolve_chunk(config, run::OutputPaths(config.output), 64);
+  EXPECT_EQ(config.chunk, 1234U);
+  EXPECT_EQ(config.identity[1], "run.chunk = 1234");
+  // An explicit size is never touched.
+  config.chunk = 77;
+  run::resolve_chunk(config, run::OutputPaths(config.output), 64);
+  EXPECT_EQ(config.chunk, 77U);
+}
