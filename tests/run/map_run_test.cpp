@@ -55,6 +55,18 @@ std::vector<std::byte> packed_tile(io::TileEncoder& encoder, const map::Tiling& 
   return io::pack_encoded_tile(encoder.encode(tile, box, data));
 }
 
+// A small map run's parts: its config (in a scratch folder), tiling (tiles of 2 points),
+// layout, an encoder as the ranks have, and the map's attributes.
+struct SmallRun {
+  ScratchDir dir;
+  sweep::SweepConfig config = small_config(dir.file("map.h5"));
+  map::Tiling tiling{config.grid.shape(), 2};
+  io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
+  io::TileEncoder encoder{layout};
+  io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1\nrun.chunk = 2", "standard_linear_solid", 0.5};
+  run::OutputPaths paths{config.output};
+};
+
 }  // namespace
 
 TEST(ResumePolicy, identity_differences_name_each_key_in_the_existing_maps_order) {
@@ -116,12 +128,8 @@ TEST(Preflight, decides_fresh_resume_or_refusal_from_the_files_there) {
 }
 
 TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
-  const ScratchDir dir;
-  const sweep::SweepConfig config = small_config(dir.file("map.h5"));
-  const map::Tiling tiling(config.grid.shape(), 2);
-  const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
-  io::TileEncoder encoder(layout);
-  const io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1\nrun.chunk = 2", "standard_linear_solid", 0.5};
+  SmallRun r;
+  auto& [dir, config, tiling, layout, encoder, attributes, paths] = r;
   std::ostringstream log;
   ASSERT_GT(tiling.tiles(), 3U);
   {
@@ -131,7 +139,6 @@ TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
     first.accept(packed_tile(encoder, tiling, 2, 1));
     first.interrupt();  // as after a stop signal: the journal keeps tiles 0 and 2
   }
-  const run::OutputPaths paths(config.output);
   EXPECT_TRUE(std::filesystem::exists(paths.journal));
   EXPECT_FALSE(std::filesystem::exists(paths.final_path));
 
@@ -163,13 +170,8 @@ TEST(MapRun, journals_every_tile_and_resumes_with_only_the_missing_ones) {
 }
 
 TEST(MapRun, resume_says_how_many_records_a_damaged_journal_loses) {
-  const ScratchDir dir;
-  const sweep::SweepConfig config = small_config(dir.file("map.h5"));
-  const map::Tiling tiling(config.grid.shape(), 2);
-  const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
-  io::TileEncoder encoder(layout);
-  const io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1", "standard_linear_solid", 0.5};
-  const run::OutputPaths paths(config.output);
+  SmallRun r;
+  auto& [dir, config, tiling, layout, encoder, attributes, paths] = r;
   std::ostringstream log;
   std::uintmax_t after_first = 0;
   {
