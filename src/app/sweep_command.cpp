@@ -306,6 +306,13 @@ int run_sweep_command(const std::vector<std::string>& args) {
     const run::DiskEstimate disk =
         run::estimate_disk(tiling, model_only, layout_of(config, tiling, with_reference), 0.3);
     refusal = run::disk_space_problem(run::OutputPaths(config.output), disk);
+    if (refusal.empty() && !config.quiet) {
+      const double free = run::free_bytes(config.output);
+      std::cerr << "punchsweep sweep: " << config.grid.points() << " points in " << tiling.tiles()
+                << " tiles; the map will take about " << run::format_bytes(disk.map_bytes) << " and its journal "
+                << run::format_bytes(disk.journal_bytes) << " until the map is complete ("
+                << (free < 0 ? std::string("free space unknown") : run::format_bytes(free) + " free") << ")\n";
+    }
   }
   int room = refusal.empty() ? 0 : 1;
   MPI_Bcast(&room, 1, MPI_INT, 0, MPI_COMM_WORLD);
