@@ -159,14 +159,14 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   const double bytes = static_cast<double>(points) * static_cast<double>(io::uncompressed_bytes_per_point(layout));
   const run::DiskEstimate disk = run::estimate_disk(tiling, evaluator, layout, 0.5);
   const double free = run::free_bytes(config.output);
-  std::printf("\n  output: %s, %s uncompressed; measured on %llu points: the map takes about %s and its journal "
-              "%s while it runs (%s free there)\n",
-              config.output.c_str(), run::format_bytes(bytes).c_str(),
+  std::printf("\n  output: %s, %s uncompressed\n", config.output.c_str(), run::format_bytes(bytes).c_str());
+  std::printf("  disk: measured on %llu points, the map takes about %s and its journal %s while it runs (%s free "
+              "there)\n",
               static_cast<unsigned long long>(disk.sampled_points), run::format_bytes(disk.map_bytes).c_str(),
               run::format_bytes(disk.journal_bytes).c_str(), free < 0 ? "unknown" : run::format_bytes(free).c_str());
   if (const std::string problem = run::disk_space_problem(run::OutputPaths(config.output), disk);
       !problem.empty()) {
-    std::printf("  refused at the start: %s\n", problem.c_str());
+    std::printf("  disk: a run would be refused at its start: %s\n", problem.c_str());
   }
   // Calibration: whole tiles (so the per-tile reuse is measured too), picked at random.
   std::mt19937_64 rng(12345);
