@@ -31,6 +31,7 @@
 #include "run/disk_space.hpp"
 #include "run/map_run.hpp"
 #include "run/preflight.hpp"
+#include "run/text_lines.hpp"
 #include "sweep/scheduler.hpp"
 #include "sweep/tile_evaluator.hpp"
 
@@ -71,13 +72,6 @@ class MpiSession {
   int rank_ = 0;
   int size_ = 1;
 };
-
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 // The arguments as a shell would need them typed again (the resume hint is copy-pasted).
 std::string command_line(const std::vector<std::string>& args) {
@@ -220,7 +214,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   attributes.source = std::string("punchsweep ") + kVersion + " (git " + kGitRevision + ")";
   attributes.history = utc_now() + " " + command_line(args);
   attributes.config_text = config.resolved_text;
-  for (std::size_t i = 0; i < config.identity.size(); ++i) attributes.identity += (i ? "\n" : "") + config.identity[i];
+  attributes.identity = run::join(config.identity, "\n");
   attributes.creep_law = std::string(config.creep_law->name);
   attributes.C = config.C;
 
@@ -257,7 +251,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     config = parse_sweep_options(args, root ? static_cast<std::ostream&>(std::cout) : discard, &help);
   } catch (const UsageError& e) {
     if (root) {
-      for (const std::string& line : split_lines(e.what())) std::cerr << "punchsweep sweep: " << line << "\n";
+      for (const std::string& line : run::split_lines(e.what())) std::cerr << "punchsweep sweep: " << line << "\n";
     }
     return kUsageExitCode;
   }
@@ -286,7 +280,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
   MPI_Bcast(verdict, 2, MPI_INT, 0, MPI_COMM_WORLD);
   if (verdict[0] != 0) {
     if (root) {
-      for (const std::string& line : split_lines(refusal)) std::cerr << "punchsweep sweep: " << line << "\n";
+      for (const std::string& line : run::split_lines(refusal)) std::cerr << "punchsweep sweep: " << line << "\n";
     }
     return kUsageExitCode;
   }

@@ -21,6 +21,7 @@
 #include "app/value_parsing.hpp"
 #include "model/creep_laws.hpp"
 #include "model/parameters.hpp"
+#include "run/text_lines.hpp"
 #include "map/axis_parser.hpp"
 
 namespace po = boost::program_options;
@@ -28,7 +29,6 @@ namespace po = boost::program_options;
 namespace punchsweep::app {
 namespace {
 
-constexpr const char* kWhitespace = " \t\r\n\f\v";
 constexpr const char* kSeeHelp = " (see punchsweep sweep --help)";
 constexpr const char* kBoolRange = "true, false, 1, 0, yes or no";
 constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output", "run", "reference"};
@@ -145,21 +145,8 @@ constexpr std::array<Shortcut, 8> kShortcuts{{
 std::string dotted(const KeySpec& key) { return key.section + "." + key.name; }
 std::string dotted(Fixed fixed) { return dotted(keys()[key_index(fixed)]); }
 
-std::string trim(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(kWhitespace);
-  if (first == std::string::npos) return {};
-  const std::size_t last = text.find_last_not_of(kWhitespace);
-  return text.substr(first, last - first + 1);
-}
-
-std::string join(const std::vector<std::string>& lines, const char* separator) {
-  std::string text;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (i > 0) text += separator;
-    text += lines[i];
-  }
-  return text;
-}
+using run::join;
+using run::trim;
 
 std::string section_keys(const std::string& section) {
   std::vector<std::string> names;

@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <unordered_set>
 #include <ostream>
+#include <unordered_set>
 
 #include "io/encoded_tile.hpp"
+#include "run/text_lines.hpp"
 
 namespace punchsweep::run {
 
@@ -38,9 +39,7 @@ MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, co
           << config.grid.points() << " points already done\n";
     }
   } else {
-    std::string identity;
-    for (std::size_t i = 0; i < config.identity.size(); ++i) identity += (i ? "\n" : "") + config.identity[i];
-    journal_ = io::TileJournal::create(paths_.journal, identity);
+    journal_ = io::TileJournal::create(paths_.journal, join(config.identity, "\n"));
   }
   std::vector<std::uint64_t> sorted(done.begin(), done.end());
   std::sort(sorted.begin(), sorted.end());

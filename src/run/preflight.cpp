@@ -5,32 +5,17 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <sstream>
+#include <optional>
 #include <vector>
 
 #include "io/regime_map_reader.hpp"
 #include "io/tile_journal.hpp"
 #include "run/resume_policy.hpp"
+#include "run/text_lines.hpp"
 
 namespace fs = std::filesystem;
 
 namespace punchsweep::run {
-namespace {
-
-std::string join(const std::vector<std::string>& lines, const char* separator) {
-  std::string text;
-  for (std::size_t i = 0; i < lines.size(); ++i) text += (i ? separator : "") + lines[i];
-  return text;
-}
-
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-}  // namespace
 
 std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start) {
   const fs::path final_path(paths.final_path);
@@ -128,13 +113,10 @@ void resolve_chunk(sweep::SweepConfig& config, const OutputPaths& paths, int ran
     } catch (const std::exception&) {
       recorded.clear();  // preflight reports what is wrong with the file
     }
-    for (const std::string& line : split_lines(recorded)) {
-      if (line.rfind("run.chunk = ", 0) != 0) continue;
-      const std::string value = line.substr(12);
-      if (!value.empty() && value.find_first_not_of("0123456789") == std::string::npos) {
-        sweep::set_chunk(config, std::stoull(value));
-        return;
-      }
+    const std::optional<std::string> value = identity_value(split_lines(recorded), "run.chunk");
+    if (value && !value->empty() && value->find_first_not_of("0123456789") == std::string::npos) {
+      sweep::set_chunk(config, std::stoull(*value));
+      return;
     }
   }
   sweep::set_chunk(config, sweep::auto_chunk(config, ranks));

@@ -2,19 +2,28 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
+
+#include "run/text_lines.hpp"
 
 namespace punchsweep::run {
 namespace {
 
-std::string trim(const std::string& text) {
-  constexpr const char* kWhitespace = " \t\r\n\f\v";
-  const std::size_t first = text.find_first_not_of(kWhitespace);
-  if (first == std::string::npos) return {};
-  const std::size_t last = text.find_last_not_of(kWhitespace);
-  return text.substr(first, last - first + 1);
+// "section.key = value" as (key, value), both trimmed; a line without '=' has no value.
+std::pair<std::string, std::string> split_identity_line(const std::string& line) {
+  const std::size_t equals = line.find('=');
+  return {trim(line.substr(0, equals)), equals == std::string::npos ? std::string() : trim(line.substr(equals + 1))};
 }
 
 }  // namespace
+
+std::optional<std::string> identity_value(const std::vector<std::string>& lines, const std::string& key) {
+  for (const std::string& line : lines) {
+    auto [k, value] = split_identity_line(line);
+    if (k == key) return value;
+  }
+  return std::nullopt;
+}
 
 std::vector<std::string> identity_differences(const std::vector<std::string>& existing,
                                               const std::vector<std::string>& requested) {
@@ -22,9 +31,7 @@ std::vector<std::string> identity_differences(const std::vector<std::string>& ex
   const auto split = [](const std::vector<std::string>& lines, std::vector<std::string>& order) {
     std::map<std::string, std::string> values;
     for (const std::string& line : lines) {
-      const std::size_t equals = line.find('=');
-      const std::string key = trim(line.substr(0, equals));
-      const std::string value = equals == std::string::npos ? std::string() : trim(line.substr(equals + 1));
+      const auto [key, value] = split_identity_line(line);
       if (values.emplace(key, value).second && std::find(order.begin(), order.end(), key) == order.end()) {
         order.push_back(key);
       }

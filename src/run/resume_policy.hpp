@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,5 +13,8 @@ namespace punchsweep::run {
 /// only this run has.
 std::vector<std::string> identity_differences(const std::vector<std::string>& existing,
                                               const std::vector<std::string>& requested);
+
+/// The value of `key` ("section.key") in identity lines; empty if no line has it.
+std::optional<std::string> identity_value(const std::vector<std::string>& lines, const std::string& key);
 
 }  // namespace punchsweep::run
