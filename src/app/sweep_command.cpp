@@ -131,10 +131,9 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   const bool full = config.quantities == map::Quantities::full;
   // The model is calibrated without the reference, which would swamp it; the reference is
   // calibrated on its own.
-  const sweep::TileEvaluator evaluator(config.grid, *config.creep_law, config.C, config.times, config.quantities);
-  const sweep::TileEvaluator with_reference(config.grid, *config.creep_law, config.C, config.times, config.quantities,
-                                            config.reference);
-  const io::MapLayout layout = layout_of(config, tiling, with_reference);
+  const sweep::TileEvaluator evaluator(config.grid, *config.creep_law, config.C, config.times, config.quantities,
+                                       config.reference);
+  const io::MapLayout layout = layout_of(config, tiling, evaluator);
   std::printf("punchsweep sweep --dry-run\n");
   for (const map::Axis& axis : config.grid.axes) {
     std::printf("  %-4s %4zu values  %-28s [%g .. %g]\n", axis.name.c_str(), axis.values.size(), axis.text.c_str(),
@@ -171,7 +170,7 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   double elapsed = 0.0;
   for (int i = 0; i < 64 && elapsed < 1.0; ++i) {
     const map::TileBox box = tiling.box(pick(rng));
-    evaluator.evaluate(box, &data);
+    evaluator.evaluate(box, &data, sweep::TileEvaluator::Reference::skipped);
     sampled += box.points();
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -182,7 +181,7 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   std::printf("  calibration: %zu points in %.2f s (%.3g points/s per rank)\n", sampled, elapsed, 1.0 / per_point);
   if (layout.bem) {
     std::size_t measured = 0;
-    const double per_bem = calibrate_reference(config, with_reference, &measured);
+    const double per_bem = calibrate_reference(config, evaluator, &measured);
     const double bem_estimate = per_bem * static_cast<double>(layout.bem->sample) / busy;
     std::printf("  reference calibration: %zu point%s, %.3g s per point at grid %d (%.3g s for the sample on %d "
                 "rank%s)\n",
@@ -291,37 +290,34 @@ int run_sweep_command(const std::vector<std::string>& args) {
     }
     return 0;
   }
-  // Rank 0 measures what the map and its journal will take and refuses a run whose file
-  // system cannot hold them, before any work.
-  if (root) {
-    const sweep::TileEvaluator model_only(config.grid, *config.creep_law, config.C, config.times, config.quantities);
-    const sweep::TileEvaluator with_reference(config.grid, *config.creep_law, config.C, config.times,
-                                              config.quantities, config.reference);
-    const run::DiskEstimate disk =
-        run::estimate_disk(tiling, model_only, layout_of(config, tiling, with_reference), 0.3);
-    refusal = run::disk_space_problem(run::OutputPaths(config.output), disk);
-    if (refusal.empty() && !config.quiet) {
-      const double free = run::free_bytes(config.output);
-      std::cerr << "punchsweep sweep: " << config.grid.points() << " points in " << tiling.tiles()
-                << " tiles; the map will take about " << run::format_bytes(disk.map_bytes) << " and its journal "
-                << run::format_bytes(disk.journal_bytes) << " until the map is complete ("
-                << (free < 0 ? std::string("free space unknown") : run::format_bytes(free) + " free") << ")\n";
-    }
-  }
-  int room = refusal.empty() ? 0 : 1;
-  MPI_Bcast(&room, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  if (room != 0) {
-    if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
-    return kUsageExitCode;
-  }
-
-  for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_stop_signal);
   int code = 0;
   try {
     const sweep::TileEvaluator evaluator(config.grid, *config.creep_law, config.C, config.times, config.quantities,
                                          config.reference);
-    // Every rank encodes the tiles it computes into the map's chunks.
     const io::MapLayout layout = layout_of(config, tiling, evaluator);
+    // Rank 0 measures what the map and its journal will take (with the run's own evaluator,
+    // whose caches the run then keeps) and refuses a run whose file system cannot hold them,
+    // before any work.
+    if (root) {
+      const run::DiskEstimate disk = run::estimate_disk(tiling, evaluator, layout, 0.3);
+      refusal = run::disk_space_problem(run::OutputPaths(config.output), disk);
+      if (refusal.empty() && !config.quiet) {
+        const double free = run::free_bytes(config.output);
+        std::cerr << "punchsweep sweep: " << config.grid.points() << " points in " << tiling.tiles()
+                  << " tiles; the map will take about " << run::format_bytes(disk.map_bytes) << " and its journal "
+                  << run::format_bytes(disk.journal_bytes) << " until the map is complete ("
+                  << (free < 0 ? std::string("free space unknown") : run::format_bytes(free) + " free") << ")\n";
+      }
+    }
+    int room = refusal.empty() ? 0 : 1;
+    MPI_Bcast(&room, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (room != 0) {
+      if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
+      return kUsageExitCode;
+    }
+
+    for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_stop_signal);
+    // Every rank encodes the tiles it computes into the map's chunks.
     io::TileEncoder encoder(layout);
     const sweep::TileWork work = tile_work(tiling, evaluator, encoder);
     if (root) {

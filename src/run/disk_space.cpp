@@ -15,8 +15,8 @@ namespace fs = std::filesystem;
 
 namespace punchsweep::run {
 
-DiskEstimate estimate_disk(const map::Tiling& tiling, const sweep::TileEvaluator& model, const io::MapLayout& layout,
-                           double seconds) {
+DiskEstimate estimate_disk(const map::Tiling& tiling, const sweep::TileEvaluator& evaluator,
+                           const io::MapLayout& layout, double seconds) {
   io::MapLayout model_layout = layout;
   model_layout.bem.reset();
   io::TileEncoder encoder(model_layout);
@@ -30,7 +30,7 @@ DiskEstimate estimate_disk(const map::Tiling& tiling, const sweep::TileEvaluator
   for (std::uint64_t k = 0; k < tiles; ++k) {
     const std::uint64_t tile = tiling.tiles() / tiles * k;  // spread over the grid
     const map::TileBox box = tiling.box(tile);
-    model.evaluate(box, &data);
+    evaluator.evaluate(box, &data, sweep::TileEvaluator::Reference::skipped);
     const io::EncodedTile encoded = encoder.encode(tile, box, data);
     for (const auto& chunk : encoded.chunks) compressed += static_cast<double>(chunk.size());
     records += static_cast<double>(io::pack_encoded_tile(encoded).size());

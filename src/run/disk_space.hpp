@@ -19,12 +19,11 @@ struct DiskEstimate {
   double map_bytes = 0.0;
   double journal_bytes = 0.0;
   std::uint64_t sampled_points = 0;
-  double bytes_per_point() const { return map_bytes; }
 };
 
-/// `model` evaluates the model only (no reference). `layout` is the map's.
-DiskEstimate estimate_disk(const map::Tiling& tiling, const sweep::TileEvaluator& model, const io::MapLayout& layout,
-                           double seconds);
+/// `evaluator` is the sweep's (its reference, if any, is skipped); `layout` the map's.
+DiskEstimate estimate_disk(const map::Tiling& tiling, const sweep::TileEvaluator& evaluator,
+                           const io::MapLayout& layout, double seconds);
 
 /// Bytes free to an unprivileged user on the file system that holds `path`'s folder; a
 /// negative number when it cannot be told.

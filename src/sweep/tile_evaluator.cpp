@@ -92,10 +92,11 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
   }
 }
 
-void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out) const {
+void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Reference reference) const {
   const bool full = quantities_ == map::Quantities::full;
   const std::size_t nt = times_.size();
-  out->resize(box.points(), nt, quantities_, sample_.has_value());
+  const bool bem = sample_.has_value() && reference == Reference::evaluated;
+  out->resize(box.points(), nt, quantities_, bem);
   const map::Index& c = box.count;
   const auto value = [&](std::size_t axis, std::size_t i) { return grid_.axes[axis].values[box.start[axis] + i]; };
 
@@ -112,21 +113,17 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out) const 
   std::vector<double> law_values(material_.size());
   for (std::size_t m = 0; m < materials; ++m) {
     std::size_t rest = m;
+    std::size_t scale = 1;  // of the grid's law axes, row-major
     material_offset[m] = 0;
+    material_global[m] = 0;
     for (std::size_t k = material_.size(); k-- > 0; rest /= c[material_[k]]) {
       const std::size_t a = material_[k];
-      material_offset[m] += (rest % c[a]) * stride[a];
-      law_values[k] = value(a, rest % c[a]);
-    }
-    std::size_t g = 0;
-    rest = m;
-    std::size_t scale = 1;
-    for (std::size_t k = material_.size(); k-- > 0; rest /= c[material_[k]]) {
-      const std::size_t a = material_[k];
-      g += (box.start[a] + rest % c[a]) * scale;
+      const std::size_t i = rest % c[a];  // the position on law axis a within the box
+      material_offset[m] += i * stride[a];
+      material_global[m] += (box.start[a] + i) * scale;
       scale *= n[a];
+      law_values[k] = value(a, i);
     }
-    material_global[m] = g;
     creep[m] = model::make_creep_law(law_, law_values);
   }
   std::size_t materials_global = 1;
@@ -211,7 +208,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out) const 
       }
     }
   }
-  if (sample_) evaluate_reference(box, out);
+  if (bem) evaluate_reference(box, out);
 }
 
 model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vector<double>* law_values) const {

@@ -38,8 +38,13 @@ class TileEvaluator {
   TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C, std::vector<double> times,
                 map::Quantities quantities, const ReferenceConfig& reference = {});
 
-  /// Fills `out` (resized here), row-major over the box, time last.
-  void evaluate(const map::TileBox& box, map::TileData* out) const;
+  /// Whether evaluate() also runs the BEM reference (when this evaluator has one).
+  enum class Reference { evaluated, skipped };
+
+  /// Fills `out` (resized here), row-major over the box, time last. With
+  /// Reference::skipped only the model's quantities are filled (no bem_* arrays): what a
+  /// calibration or a disk estimate of the model alone needs, from the same evaluator.
+  void evaluate(const map::TileBox& box, map::TileData* out, Reference reference = Reference::evaluated) const;
 
   /// The points that get the reference; empty without one.
   const std::optional<ReferenceSample>& reference_sample() const { return sample_; }

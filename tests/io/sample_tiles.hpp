@@ -69,19 +69,6 @@ inline map::TileData sample_tile(std::uint64_t seed, std::size_t points, std::si
   return data;
 }
 
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-/// Whether every array of the two tiles holds the same bits (NaN payloads included).
-inline bool same_bits(const map::TileData& a, const map::TileData& b) {
-  for (std::size_t q = 0; q < map::kQuantityCount; ++q) {
-    if (!same_bits(a.codes[q], b.codes[q]) || !same_bits(a.reals[q], b.reals[q])) return false;
-  }
-  return true;
-}
-
 /// An EncodedTile as the codec and the journal see it: tile index `seed`, `chunks` runs of
 /// deterministic bytes whose lengths vary around `bytes` (and from seed to seed), and
 /// summary counts that fit its points.

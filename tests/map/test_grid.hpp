@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "map/grid.hpp"
@@ -31,6 +32,19 @@ inline const std::vector<std::int8_t>& flag(const TileData& d, const char* name)
 inline std::vector<double>& real(TileData& d, const char* name) { return d.real(quantity(name)); }
 inline const std::vector<double>& real(const TileData& d, const char* name) {
   return d.real(quantity(name));
+}
+
+template <typename T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+/// Whether every array of the two tiles holds the same bits (NaN payloads included).
+inline bool same_bits(const TileData& a, const TileData& b) {
+  for (std::size_t q = 0; q < kQuantityCount; ++q) {
+    if (!same_bits(a.codes[q], b.codes[q]) || !same_bits(a.reals[q], b.reals[q])) return false;
+  }
+  return true;
 }
 
 }  // namespace punchsweep::map::testing

@@ -154,6 +154,11 @@ TEST(TileEvaluator, reference_values_equal_evaluate_reference_point_at_sampled_p
   EXPECT_TRUE(flag(model, "bem_regime").empty() && real(model, "bem_a1").empty());
   EXPECT_EQ(flag(data, "regime"), flag(model, "regime"));  // the reference leaves the model's values alone
   for (std::size_t i = 0; i < real(model, "t_star").size(); ++i) ASSERT_TRUE(bits_equal(real(data, "t_star")[i], real(model, "t_star")[i]));
+  // The same evaluator with its reference skipped gives the model-only tile exactly.
+  map::TileData skipped;
+  evaluator.evaluate(tiling.box(0), &skipped, TileEvaluator::Reference::skipped);
+  EXPECT_TRUE(flag(skipped, "bem_regime").empty() && real(skipped, "bem_t_star").empty());
+  EXPECT_TRUE(same_bits(skipped, model));
 
   const ReferenceSample& sample = *evaluator.reference_sample();
   std::size_t i = 0;
