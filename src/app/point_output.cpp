@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "map/quantities.hpp"
 
@@ -97,23 +98,27 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
       out << "  A1, A2 (frozen)     " << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n";
     }
   }
-  out << "\n   t [T_eps]";
+  // The series' columns: each head with its unit, 12 wide (15 for a long head).
+  struct Column {
+    const QuantitySpec* q;
+    std::string head;
+    int width;
+  };
+  std::vector<Column> columns;
   for (const QuantitySpec& q : kQuantities) {
     if (!is_series(q)) continue;
     const std::string u = display_units(q);
     std::string head = std::string(q.name) + (u.empty() ? "" : " [" + u + "]");
-    const std::size_t width = head.size() < 12 ? 12 : 15;
-    out << std::string(width - head.size(), ' ') << head;
+    const int width = head.size() < 12 ? 12 : 15;
+    columns.push_back({&q, std::move(head), width});
   }
+  out << "\n   t [T_eps]";
+  for (const Column& c : columns) out << std::string(static_cast<std::size_t>(c.width) - c.head.size(), ' ') << c.head;
   out << "\n";
   for (const model::Snapshot& s : r.series) {
     out << fixed(s.t, 12, 4);
-    for (const QuantitySpec& q : kQuantities) {
-      if (!is_series(q)) continue;
-      const std::string u = display_units(q);
-      const std::string head = std::string(q.name) + (u.empty() ? "" : " [" + u + "]");
-      const bool wide = head.size() >= 12;
-      out << fixed(q.series_value(s), wide ? 15 : 12, q.scale == "R^2 E0/(1-nu^2)" ? 9 : 7);
+    for (const Column& c : columns) {
+      out << fixed(c.q->series_value(s), c.width, c.q->scale == "R^2 E0/(1-nu^2)" ? 9 : 7);
     }
     out << "\n";
   }
