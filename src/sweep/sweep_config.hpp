@@ -71,9 +71,14 @@ struct SweepConfig {
   /// and an HDF5 chunk so stay bounded however many times are asked for.
   std::size_t tile_points() const {
     if (chunk == kAutoChunk) return 1;  // resolve auto first (auto_chunk)
-    const bool series = quantities == map::Quantities::full || reference.on();
-    const std::size_t n = series && !times.empty() ? times.size() : 1;
+    const std::size_t n = values_per_point();
     return chunk / n > 0 ? chunk / n : 1;
+  }
+  /// The values the largest variable holds per grid point: the snapshot times when the map
+  /// has time series (full quantities or a BEM reference), else 1.
+  std::size_t values_per_point() const {
+    const bool series = quantities == map::Quantities::full || reference.on();
+    return series && !times.empty() ? times.size() : 1;
   }
   /// The keys that define the map's content (grid, model, time, quantities, chunk,
   /// reference) as "section.key = value" lines; --resume refuses any difference in these.
@@ -84,9 +89,7 @@ struct SweepConfig {
 /// with a short tail, clamped to 256 .. 4096 values (compression and rank 0's per-tile cost
 /// want large tiles; past 4096 nothing is gained).
 inline std::size_t auto_chunk(const SweepConfig& config, int ranks) {
-  const bool series = config.quantities == map::Quantities::full || config.reference.on();
-  const double values = static_cast<double>(config.grid.points()) *
-                        static_cast<double>(series && !config.times.empty() ? config.times.size() : 1);
+  const double values = static_cast<double>(config.grid.points()) * static_cast<double>(config.values_per_point());
   const double per_tile = values / (16.0 * static_cast<double>(ranks > 0 ? ranks : 1));
   return static_cast<std::size_t>(std::clamp(per_tile, 256.0, 4096.0));
 }
