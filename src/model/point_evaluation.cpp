@@ -41,6 +41,15 @@ void flag(PointSummary& out, const Violation& v, double t) {
   out.first_seen = t;
 }
 
+/// Flags a broken invariant (Validity::inaccurate): which, its numbers, and when.
+void flag_inaccurate(PointSummary& out, PointSummary::Invariant which, double value, double limit, double t) {
+  flag(out, {Validity::inaccurate, value, limit}, t);
+  out.invariant = which;
+}
+
+/// The radii invariant 0 <= a2 <= a1 (level 2 is the lower level).
+bool radii_ordered(double a1, double a2) { return a2 >= 0.0 && a2 <= a1; }
+
 double area_fraction(double a1, double a2, double l) {
   return std::numbers::pi * (a1 * a1 + a2 * a2) / (l * l);
 }
@@ -172,11 +181,9 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
                         std::isfinite(out.a1_inf) && std::isfinite(out.a2_inf) &&
                         std::isfinite(out.area_fraction_inf) && (!out.t_star || std::isfinite(*out.t_star));
     if (!finite) {
-      flag(out, {Validity::inaccurate, kNaN, kNaN}, kInf);
-      out.invariant = PointSummary::Invariant::not_finite;
-    } else if (!(out.a2_inf >= 0.0 && out.a2_inf <= out.a1_inf)) {
-      flag(out, {Validity::inaccurate, out.a2_inf, out.a1_inf}, kInf);
-      out.invariant = PointSummary::Invariant::radii_order;
+      flag_inaccurate(out, PointSummary::Invariant::not_finite, kNaN, kNaN, kInf);
+    } else if (!radii_ordered(out.a1_inf, out.a2_inf)) {
+      flag_inaccurate(out, PointSummary::Invariant::radii_order, out.a2_inf, out.a1_inf, kInf);
     }
   }
   return out;
@@ -299,14 +306,11 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     if (out.valid()) {
       const double sum = snap.P1 + snap.P2;
       if (!(std::isfinite(snap.a1) && std::isfinite(snap.a2) && std::isfinite(snap.P1) && std::isfinite(snap.P2))) {
-        flag(out, {Validity::inaccurate, kNaN, kNaN}, snap.t);
-        out.invariant = PointSummary::Invariant::not_finite;
+        flag_inaccurate(out, PointSummary::Invariant::not_finite, kNaN, kNaN, snap.t);
       } else if (!(std::abs(sum - level1_load) <= kLoadsTolerance * level1_load)) {
-        flag(out, {Validity::inaccurate, sum, level1_load}, snap.t);
-        out.invariant = PointSummary::Invariant::loads_sum;
-      } else if (!(snap.a2 >= 0.0 && snap.a2 <= snap.a1)) {
-        flag(out, {Validity::inaccurate, snap.a2, snap.a1}, snap.t);
-        out.invariant = PointSummary::Invariant::radii_order;
+        flag_inaccurate(out, PointSummary::Invariant::loads_sum, sum, level1_load, snap.t);
+      } else if (!radii_ordered(snap.a1, snap.a2)) {
+        flag_inaccurate(out, PointSummary::Invariant::radii_order, snap.a2, snap.a1, snap.t);
       }
     }
     // The summary decided validity; a snapshot only tells how early a break is visible.
