@@ -70,8 +70,8 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   const double v_t = std::sqrt(std::max(t - t0_, 0.0));
   // The stretch of time the panel at t spans; a memory shorter than that is a narrow kernel.
   const double panel_span = (2.0 * v_t + panel_width_) * panel_width_;
-  if (memory < panel_span) return load_near(t, Q1_at_t, Q2_at_t, P1, P2, near);
   const double tau_min = std::max(0.0, t - memory);
+  if (memory < panel_span) return load_near(t, tau_min, v_t, Q1_at_t, Q2_at_t, P1, P2, near);
   const double E0 = creep_.relaxation(0.0);
   Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
@@ -81,12 +81,11 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
                                [&](double tau) { return load_.response(tau); }, 0.0);
 
   // Two-level phase [t0, t], panel by panel in v = sqrt(tau - t0).
-  const double v_hi = std::sqrt(std::max(t - t0_, 0.0));
   const double v_lo = std::sqrt(std::max(tau_min - t0_, 0.0));
   const int first_panel = std::min(static_cast<int>(v_lo / panel_width_), panels_ - 1);
   for (int panel = first_panel; panel < panels_; ++panel) {
     const double v_a = std::max(v_lo, panel * panel_width_);
-    const double v_b = panel + 1 == panels_ ? v_hi : std::min(v_hi, (panel + 1) * panel_width_);
+    const double v_b = panel + 1 == panels_ ? v_t : std::min(v_t, (panel + 1) * panel_width_);
     if (!(v_b > v_a)) break;
     sum += relaxation_integral_sqrt(
         creep_, t, t0_, v_a, v_b,
@@ -102,9 +101,8 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   return true;
 }
 
-bool LoadHistory::load_near(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
-                            const Sampler& near) const {
-  const double tau_min = std::max(0.0, t - creep_.relaxation_memory());
+bool LoadHistory::load_near(double t, double tau_min, double v_t, double Q1_at_t, double Q2_at_t, double* P1,
+                            double* P2, const Sampler& near) const {
   const double E_t = creep_.relaxation(t);
   Eigen::Vector2d sum(E_t * Q1_at_t, E_t * Q2_at_t);
   const Eigen::Vector2d at_t(Q1_at_t, Q2_at_t);
@@ -118,7 +116,7 @@ bool LoadHistory::load_near(double t, double Q1_at_t, double Q2_at_t, double* P1
   // Two-level part, [max(tau_min, t0), t]: Q sampled at the n Gauss nodes of the window in
   // v = sqrt(tau - t0), in which Q is analytic even across touchdown.
   const double v_a = std::sqrt(std::max(tau_min - t0_, 0.0));
-  const double v_b = std::sqrt(std::max(t - t0_, 0.0));
+  const double v_b = v_t;
   if (v_b > v_a) {
     std::vector<double> q1(static_cast<std::size_t>(n_));
     std::vector<double> q2(q1.size());

@@ -65,8 +65,10 @@ class LoadHistory {
   void interpolate(int panel, double v, double* Q1, double* Q2) const;
   /// Barycentric interpolation at xi in [-1, 1] of samples at the reference nodes.
   void interpolate_nodes(const double* Q1, const double* Q2, double xi, double* q1, double* q2) const;
-  /// The narrow-kernel form of load() (see the class comment); false if `near` failed.
-  bool load_near(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2, const Sampler& near) const;
+  /// The narrow-kernel form of load() (see the class comment) over [tau_min, t], with
+  /// v_t = sqrt(t - t0); false if `near` failed.
+  bool load_near(double t, double tau_min, double v_t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
+                 const Sampler& near) const;
 
   CreepWeightedLoad load_;
   const CreepLaw& creep_;  ///< load_'s material: its relaxation function is the kernel
