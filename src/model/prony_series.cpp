@@ -5,8 +5,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/root_finding.hpp"
+
 namespace punchsweep::model {
 namespace {
+
+// Roots (retardation rates, times on J) to two units in the last place.
+constexpr double kRootTolerance = 2.0 * std::numeric_limits<double>::epsilon();
 
 std::string bad(const std::string& what, double value, const std::string& range) {
   std::ostringstream out;
@@ -56,21 +61,9 @@ PronySeries::PronySeries(double E_inf, std::vector<double> E, std::vector<double
   const std::size_t n = E_.size();
   for (std::size_t k = 0; k < n; ++k) {
     // The root in (-1/tau_k, -1/tau_(k+1)), or (-1/tau_n, 0) for the last.
-    double lo = -1.0 / tau_[k];
-    double hi = k + 1 < n ? -1.0 / tau_[k + 1] : 0.0;
-    double s = 0.5 * (lo + hi);
-    for (int it = 0; it < 400; ++it) {
-      double df = 0.0;
-      const double value = f(s, &df);
-      if (value < 0.0) lo = s; else hi = s;
-      double next = s - value / df;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (next == s || hi - lo <= 2.0 * std::numeric_limits<double>::epsilon() * std::abs(s)) {
-        s = next;
-        break;
-      }
-      s = next;
-    }
+    const double lo = -1.0 / tau_[k];
+    const double hi = k + 1 < n ? -1.0 / tau_[k + 1] : 0.0;
+    const double s = newton_bisect_increasing(f, lo, hi, 0.5 * (lo + hi), 0.0, 400, kRootTolerance).x;
     double df = 0.0;
     f(s, &df);
     lambda_.push_back(-1.0 / s);
@@ -112,18 +105,12 @@ double PronySeries::time_at_creep(double J) const {
     hi *= 2.0;
     if (!std::isfinite(hi)) return std::numeric_limits<double>::infinity();
   }
-  double t = 0.5 * (lo + hi);
-  for (int it = 0; it < 400; ++it) {
-    double slope = 0.0;
-    for (std::size_t k = 0; k < J_.size(); ++k) slope += J_[k] / lambda_[k] * std::exp(-t / lambda_[k]);
-    const double value = creep(t) - J;
-    if (value < 0.0) lo = t; else hi = t;
-    double next = slope > 0.0 ? t - value / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (next == t || hi - lo <= 2.0 * std::numeric_limits<double>::epsilon() * t) return next;
-    t = next;
-  }
-  return t;
+  const auto residual = [&](double t, double* slope) {
+    *slope = 0.0;
+    for (std::size_t k = 0; k < J_.size(); ++k) *slope += J_[k] / lambda_[k] * std::exp(-t / lambda_[k]);
+    return creep(t) - J;
+  };
+  return newton_bisect_increasing(residual, lo, hi, 0.5 * (lo + hi), 0.0, 400, kRootTolerance).x;
 }
 
 std::optional<RetardationSeries> PronySeries::retardation_series() const {

@@ -14,10 +14,11 @@ struct RootResult {
 /// Safeguarded Newton (Numerical Recipes' rtsafe idea): Newton steps from `guess`, falling
 /// back to bisection whenever a step leaves the bracket [lo, hi] or fails to halve the
 /// bracket. `f(x, &dfdx)` returns f; f(lo) < 0 < f(hi) is the caller's promise (f increasing).
-/// Stops when the step is below `x_tol` (absolute) or after `max_iterations`.
+/// Stops when the step, or the bracket, is below `x_tol` + `relative_tol` |x| or after
+/// `max_iterations` (a relative tolerance serves roots whose size is not known beforehand).
 template <class F>
 RootResult newton_bisect_increasing(F&& f, double lo, double hi, double guess, double x_tol,
-                                    int max_iterations = 100) {
+                                    int max_iterations = 100, double relative_tol = 0.0) {
   double x = (guess > lo && guess < hi) ? guess : 0.5 * (lo + hi);
   double dx_old = hi - lo;
   double dx = dx_old;
@@ -42,7 +43,8 @@ RootResult newton_bisect_increasing(F&& f, double lo, double hi, double guess, d
       dx = 0.5 * (hi - lo);
       x = lo + dx;
     }
-    if (std::abs(dx) <= x_tol || hi - lo <= x_tol) {
+    const double tol = x_tol + relative_tol * std::abs(x);
+    if (std::abs(dx) <= tol || hi - lo <= tol) {
       result.x = x;
       result.converged = true;
       return result;
