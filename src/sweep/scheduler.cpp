@@ -104,12 +104,11 @@ class Manager {
       for (int b = 0; b < kBatchesInFlight; ++b) send_batch(w);
     }
     while (true) {
-      if (*stop && !stopping_) {
+      if (*stop && result_.stop_signal == 0) {  // a signal to rank 0 (a worker's is taken in drain_results)
         result_.stop_signal = static_cast<int>(*stop);
         result_.stop_rank = 0;
-        begin_stop();
       }
-      if (result_.stop_signal != 0 && !stopping_) begin_stop();  // a worker's signal
+      if (result_.stop_signal != 0 && !stopping_) begin_stop();
       drain_results(false);
       if (!stopping_ && !queue_.empty()) {
         compute_one();
