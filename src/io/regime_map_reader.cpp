@@ -3,7 +3,6 @@
 #include <hdf5.h>
 
 #include <stdexcept>
-#include <vector>
 
 #include "io/hdf5_handle.hpp"
 

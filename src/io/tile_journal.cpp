@@ -256,11 +256,23 @@ TileJournal::Tail TileJournal::inspect_tail(const std::string& path, std::size_t
   Tail tail;
   if (good_end >= size) return tail;
   tail.bytes = size - good_end;
-  std::vector<char> bytes(tail.bytes);
+  // Read in blocks (a tail can be most of a large journal), each overlapping the last by
+  // three bytes so that a magic across a block boundary is seen once.
+  constexpr std::size_t kBlock = std::size_t{1} << 20;
+  constexpr std::size_t kOverlap = sizeof(std::uint32_t) - 1;
+  std::vector<std::byte> block(kBlock + kOverlap);
+  std::size_t carried = 0;
   in.seekg(static_cast<std::streamoff>(good_end));
-  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  for (std::size_t at = 0; at + sizeof(std::uint32_t) <= bytes.size(); ++at) {
-    if (load<std::uint32_t>(reinterpret_cast<const std::byte*>(bytes.data()) + at) == kRecordMagic) ++tail.records;
+  for (std::size_t left = tail.bytes; left > 0;) {
+    const std::size_t n = std::min(kBlock, left);
+    in.read(reinterpret_cast<char*>(block.data() + carried), static_cast<std::streamsize>(n));
+    left -= n;
+    const std::size_t have = carried + n;
+    for (std::size_t at = 0; at + sizeof(std::uint32_t) <= have; ++at) {
+      if (load<std::uint32_t>(block.data() + at) == kRecordMagic) ++tail.records;
+    }
+    carried = std::min(kOverlap, have);
+    std::memmove(block.data(), block.data() + have - carried, carried);
   }
   if (tail.records == 0) tail.records = 1;  // the damaged record itself
   return tail;

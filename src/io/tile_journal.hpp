@@ -48,8 +48,8 @@ class TileJournal {
   static std::size_t replay(const std::string& path, const std::function<void(const EncodedTile&)>& on_tile);
 
   /// What lies after the last good record: the bytes that replay could not use and the
-  /// records that start among them (a record magic followed by a plausible length; a torn
-  /// record at the end counts as one). open_for_append cuts them; their tiles are computed
+  /// records that start among them (the record magics found there, read a block at a time;
+  /// at least one, the damaged record itself). open_for_append cuts them; their tiles are computed
   /// again.
   struct Tail {
     std::size_t bytes = 0;
