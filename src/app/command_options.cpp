@@ -124,39 +124,38 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
 
 PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law) {
   PointInputs inputs;
-  // In the order of the options, so that the first bad one is reported.
-  for (const model::Parameter* p : model::sweep_axes(law.parameters)) read_parameter(vm, *p);
-  inputs.problem = read_problem(vm);
+  // Each parameter read once, in the order of the options, so the first bad one is reported.
+  std::vector<const model::Parameter*> parameters = model::sweep_axes(law.parameters);
+  parameters.push_back(model::find_parameter(model::kShapeConstant));
+  for (const model::Parameter* p : parameters) inputs.values.emplace_back(p, read_parameter(vm, *p));
+  const auto value = [&](std::string_view name) {
+    for (const auto& [p, v] : inputs.values) {
+      if (p->name == name) return v;
+    }
+    return 0.0;  // every name asked for is among the parameters read
+  };
+  inputs.problem.l = value(model::kPitch);
+  inputs.problem.dh = value(model::kHeightDifference);
+  inputs.problem.pbar0 = value(model::kPressure);
+  inputs.problem.shape = model::Shape{static_cast<int>(value(model::kExponent)), value(model::kShapeConstant)};
   inputs.law = &law;
-  for (const model::Parameter& p : law.parameters) inputs.law_values.push_back(read_parameter(vm, p));
+  for (const model::Parameter& p : law.parameters) inputs.law_values.push_back(value(p.name));
   inputs.creep = model::make_creep_law(law, inputs.law_values);
   return inputs;
 }
 
 std::string PointInputs::describe() const {
   std::string text;
-  const auto add = [&](const model::Parameter& p, double value) {
+  for (const auto& [p, value] : values) {
     if (!text.empty()) text += ", ";
-    text.append(p.name);
+    text.append(p->name);
     text += " = ";
     text += json_number(value);
-    if (p.scale != "1") {
+    if (p->scale != "1") {
       text += ' ';
-      text.append(p.scale);
-    }
-  };
-  for (const model::Parameter* p : model::sweep_axes(law->parameters)) {
-    if (p->name == model::kPitch) add(*p, problem.l);
-    else if (p->name == model::kHeightDifference) add(*p, problem.dh);
-    else if (p->name == model::kPressure) add(*p, problem.pbar0);
-    else if (p->name == model::kExponent) add(*p, problem.shape.s);
-    else {
-      for (std::size_t k = 0; k < law->parameters.size(); ++k) {
-        if (&law->parameters[k] == p) add(*p, law_values[k]);
-      }
+      text.append(p->scale);
     }
   }
-  add(*model::find_parameter(model::kShapeConstant), problem.shape.C);
   return text;
 }
 

@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/contact_problem.hpp"
@@ -50,6 +51,8 @@ model::ContactProblem read_problem(const boost::program_options::variables_map& 
 /// The inputs of one parameter point: the contact problem and the creep law with its
 /// parameter values.
 struct PointInputs {
+  /// Every parameter given, with its value, in add_point_options' order.
+  std::vector<std::pair<const model::Parameter*, double>> values;
   model::ContactProblem problem;
   const model::CreepLawSpec* law = nullptr;
   std::vector<double> law_values;  ///< in law->parameters order
