@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "model/load_shape.hpp"
 #include "model/shape.hpp"
 
 namespace punchsweep::model {
@@ -11,8 +12,9 @@ namespace punchsweep::model {
 struct ContactProblem {
   double l = 0.75;      ///< lattice pitch, in R; l > 0
   double dh = 0.05;     ///< height difference of the two levels, in R; dh >= 0
-  double pbar0 = 0.06;  ///< constant nominal pressure, in E0*; pbar0 > 0
+  double pbar0 = 0.06;  ///< nominal pressure (held after the rise), in E0*; pbar0 > 0
   Shape shape{};
+  LoadShape loading{};  ///< pbar(t) = pbar0 phi(t); the step by default
 };
 
 /// Empty when every field is in range, else one sentence naming the first bad field,

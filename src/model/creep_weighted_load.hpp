@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/creep_law.hpp"
+#include "model/load_shape.hpp"
 
 namespace punchsweep::model {
 
@@ -9,26 +10,38 @@ namespace punchsweep::model {
 /// the touchdown time t*, the two-level state, the pressure and the load history all depend
 /// on t only through X(t) (extended correspondence principle, valid while contact does not
 /// recede). It is written X(t) = pbar0 g(t) with g the response to the unit-shaped load
-/// pbar(t)/pbar0; for today's step load pbar(t) = pbar0 (t > 0), g = J.
-/// Units: X in E0*, g in 1/E0*, t in T_eps. Holds a reference to the law.
+/// pbar(t)/pbar0 = phi(t) (LoadShape):
+///   g(t) = phi(0+) J(t) + sum over the linear pieces [t_a, t_b] of phi, slope k:
+///          k int_{t_a}^{min(t, t_b)} J(t - tau) dtau = k int_{t - min(t, t_b)}^{t - t_a} J(u) du;
+/// for the step phi = 1 it is g = J.
+/// Units: X in E0*, g in 1/E0*, t in the law's time unit. Holds references to the law and
+/// copies the shape.
 class CreepWeightedLoad {
  public:
-  /// A step of nominal pressure pbar0 (> 0) at t = 0 on a material of creep function J.
-  CreepWeightedLoad(const CreepLaw& creep, double pbar0) : creep_(creep), pbar0_(pbar0) {}
+  /// Nominal pressure pbar0 (> 0) applied with `shape` (a step by default) on a material of
+  /// creep function J.
+  CreepWeightedLoad(const CreepLaw& creep, double pbar0, const LoadShape& shape = {})
+      : creep_(creep), pbar0_(pbar0), shape_(shape) {}
 
   /// The final nominal pressure pbar0, in E0*.
   double pbar0() const { return pbar0_; }
   /// The material.
   const CreepLaw& creep() const { return creep_; }
+  /// The shape of the load.
+  const LoadShape& shape() const { return shape_; }
 
   /// g(t) = X(t)/pbar0, the response to the unit-shaped load.
-  double response(double t) const { return creep_.creep(t); }
+  double response(double t) const;
+  /// dg/dt.
+  double response_rate(double t) const;
   /// g(0+).
-  double response_initial() const { return creep_.creep_initial(); }
-  /// g(inf); +infinity for unlimited creep.
+  double response_initial() const {
+    return shape_.is_step() ? creep_.creep_initial() : shape_.jump() * creep_.creep_initial();
+  }
+  /// g(inf) = J(inf) (phi ends at 1); +infinity for unlimited creep.
   double response_final() const { return creep_.creep_final(); }
   /// The t > 0 with g(t) = g for g in (g(0+), g(inf)); non-decreasing g makes it a root.
-  double time_at_response(double g) const { return creep_.time_at_creep(g); }
+  double time_at_response(double g) const;
 
   /// X(t), in E0*.
   double operator()(double t) const { return pbar0_ * response(t); }
@@ -37,12 +50,13 @@ class CreepWeightedLoad {
   /// X(inf); +infinity for unlimited creep.
   double final() const { return pbar0_ * response_final(); }
 
-  /// The nominal pressure pbar(t) at t > 0, in E0*. A step: pbar0.
-  double nominal_pressure(double /*t*/) const { return pbar0_; }
+  /// The nominal pressure pbar(t) = pbar0 phi(t) at t > 0, in E0*.
+  double nominal_pressure(double t) const { return shape_.is_step() ? pbar0_ : pbar0_ * shape_.at(t); }
 
  private:
   const CreepLaw& creep_;
   double pbar0_;
+  LoadShape shape_;
 };
 
 }  // namespace punchsweep::model

@@ -25,21 +25,57 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
   }
   const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
   const double width = quadrature.panel_width * std::sqrt(creep_.creep_time_scale());
-  panels_ = std::max(1, static_cast<int>(std::ceil(v_end / width)));
-  panel_width_ = std::max(v_end, 1e-300) / panels_;
+  kinks_ = load.shape().kinks();
+  // Stretches of v between the load's kinks after t0, each cut into equal panels.
+  std::vector<double> edges{0.0};
+  for (const double k : kinks_) {
+    if (k > t0 && k < t_end) edges.push_back(std::sqrt(k - t0));
+  }
+  edges.push_back(v_end);
+  for (std::size_t j = 0; j + 1 < edges.size(); ++j) {
+    const double length = edges[j + 1] - edges[j];
+    Stretch stretch;
+    stretch.v_start = edges[j];
+    stretch.first_panel = panels_;
+    stretch.panels = std::max(1, static_cast<int>(std::ceil(length / width)));
+    stretch.width = std::max(length, 1e-300) / stretch.panels;
+    panels_ += stretch.panels;
+    stretches_.push_back(stretch);
+  }
   Q1_.resize(static_cast<std::size_t>(panels_) * n_);
   Q2_.resize(Q1_.size());
-  for (int p = 0; p < panels_ && ok_; ++p) {
-    for (int j = 0; j < n_ && ok_; ++j) {
-      const double v = (p + 0.5 * (nodes_[j] + 1.0)) * panel_width_;
-      const std::size_t i = static_cast<std::size_t>(p) * n_ + j;
-      ok_ = sample(t0 + v * v, &Q1_[i], &Q2_[i]);
+  for (const Stretch& stretch : stretches_) {
+    for (int p = 0; p < stretch.panels && ok_; ++p) {
+      for (int j = 0; j < n_ && ok_; ++j) {
+        const double v = stretch.v_start + (p + 0.5 * (nodes_[j] + 1.0)) * stretch.width;
+        const std::size_t i = static_cast<std::size_t>(stretch.first_panel + p) * n_ + j;
+        ok_ = sample(t0 + v * v, &Q1_[i], &Q2_[i]);
+      }
     }
   }
 }
 
+const LoadHistory::Stretch& LoadHistory::stretch_of(int panel) const {
+  std::size_t j = stretches_.size() - 1;
+  while (j > 0 && panel < stretches_[j].first_panel) --j;
+  return stretches_[j];
+}
+
+int LoadHistory::panel_at(double v) const {
+  std::size_t j = stretches_.size() - 1;
+  while (j > 0 && v < stretches_[j].v_start) --j;
+  const Stretch& s = stretches_[j];
+  return s.first_panel + std::min(static_cast<int>((v - s.v_start) / s.width), s.panels - 1);
+}
+
+double LoadHistory::panel_start(int panel) const {
+  const Stretch& s = stretch_of(panel);
+  return s.v_start + (panel - s.first_panel) * s.width;
+}
+
 void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const {
-  const double xi = 2.0 * (v / panel_width_ - panel) - 1.0;
+  const Stretch& s = stretch_of(panel);
+  const double xi = 2.0 * ((v - s.v_start) / s.width - (panel - s.first_panel)) - 1.0;
   const std::size_t base = static_cast<std::size_t>(panel) * n_;
   interpolate_nodes(&Q1_[base], &Q2_[base], xi, Q1, Q2);
 }
@@ -69,23 +105,24 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   const double memory = creep_.relaxation_memory();
   const double v_t = std::sqrt(std::max(t - t0_, 0.0));
   // The stretch of time the panel at t spans; a memory shorter than that is a narrow kernel.
-  const double panel_span = (2.0 * v_t + panel_width_) * panel_width_;
+  const double width_at_t = stretch_of(panel_at(v_t)).width;
+  const double panel_span = (2.0 * v_t + width_at_t) * width_at_t;
   const double tau_min = std::max(0.0, t - memory);
   if (memory < panel_span) return load_near(t, tau_min, v_t, Q1_at_t, Q2_at_t, P1, P2, near);
   const double E0 = creep_.relaxation(0.0);
   Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
-  // Single-level phase [0, t0): Q1 = L g(tau), Q2 = 0, smooth in tau.
-  sum[0] += level1_load_ * relaxation_integral(
-                               creep_, t, tau_min, std::min(t0_, t),
-                               [&](double tau) { return load_.response(tau); }, 0.0);
+  // Single-level phase [0, t0): Q1 = L g(tau), Q2 = 0, smooth in tau between the kinks.
+  for_each_piece(tau_min, std::min(t0_, t), [&](double a, double b) {
+    sum[0] += level1_load_ * relaxation_integral(
+                                 creep_, t, a, b, [&](double tau) { return load_.response(tau); }, 0.0);
+  });
 
   // Two-level phase [t0, t], panel by panel in v = sqrt(tau - t0).
   const double v_lo = std::sqrt(std::max(tau_min - t0_, 0.0));
-  const int first_panel = std::min(static_cast<int>(v_lo / panel_width_), panels_ - 1);
-  for (int panel = first_panel; panel < panels_; ++panel) {
-    const double v_a = std::max(v_lo, panel * panel_width_);
-    const double v_b = panel + 1 == panels_ ? v_t : std::min(v_t, (panel + 1) * panel_width_);
+  for (int panel = panel_at(v_lo); panel < panels_; ++panel) {
+    const double v_a = std::max(v_lo, panel_start(panel));
+    const double v_b = panel + 1 == panels_ ? v_t : std::min(v_t, panel_start(panel + 1));
     if (!(v_b > v_a)) break;
     sum += relaxation_integral_sqrt(
         creep_, t, t0_, v_a, v_b,
@@ -108,22 +145,28 @@ bool LoadHistory::load_near(double t, double tau_min, double v_t, double Q1_at_t
   const Eigen::Vector2d at_t(Q1_at_t, Q2_at_t);
 
   // Single-level part of the window, [tau_min, t0): Q1 = L g(tau), Q2 = 0.
-  sum += relaxation_integral(
-      creep_, t, tau_min, std::min(t0_, t),
-      [&](double tau) { return (Eigen::Vector2d(level1_load_ * load_.response(tau), 0.0) - at_t).eval(); },
-      Eigen::Vector2d::Zero().eval());
+  for_each_piece(tau_min, std::min(t0_, t), [&](double a, double b) {
+    sum += relaxation_integral(
+        creep_, t, a, b,
+        [&](double tau) { return (Eigen::Vector2d(level1_load_ * load_.response(tau), 0.0) - at_t).eval(); },
+        Eigen::Vector2d::Zero().eval());
+  });
 
   // Two-level part, [max(tau_min, t0), t]: Q sampled at the n Gauss nodes of the window in
-  // v = sqrt(tau - t0), in which Q is analytic even across touchdown.
-  const double v_a = std::sqrt(std::max(tau_min - t0_, 0.0));
-  const double v_b = v_t;
-  if (v_b > v_a) {
-    std::vector<double> q1(static_cast<std::size_t>(n_));
-    std::vector<double> q2(q1.size());
-    for (int j = 0; j < n_; ++j) {
+  // v = sqrt(tau - t0), in which Q is analytic even across touchdown (and between kinks of
+  // the load, so the window is cut at them).
+  bool ok = true;
+  std::vector<double> q1(static_cast<std::size_t>(n_));
+  std::vector<double> q2(q1.size());
+  for_each_piece(std::max(tau_min, t0_), t, [&](double a, double b) {
+    const double v_a = std::sqrt(std::max(a - t0_, 0.0));
+    const double v_b = a == std::max(tau_min, t0_) && b == t ? v_t : std::sqrt(b - t0_);
+    if (!ok || !(v_b > v_a)) return;
+    for (int j = 0; j < n_ && ok; ++j) {
       const double v = v_a + 0.5 * (nodes_[static_cast<std::size_t>(j)] + 1.0) * (v_b - v_a);
-      if (!near(t0_ + v * v, &q1[static_cast<std::size_t>(j)], &q2[static_cast<std::size_t>(j)])) return false;
+      ok = near(t0_ + v * v, &q1[static_cast<std::size_t>(j)], &q2[static_cast<std::size_t>(j)]);
     }
+    if (!ok) return;
     sum += relaxation_integral_sqrt(
         creep_, t, t0_, v_a, v_b,
         [&](double v) {
@@ -132,7 +175,8 @@ bool LoadHistory::load_near(double t, double tau_min, double v_t, double Q1_at_t
           return (q - at_t).eval();
         },
         Eigen::Vector2d::Zero().eval());
-  }
+  });
+  if (!ok) return false;
   *P1 = sum[0];
   *P2 = sum[1];
   return true;

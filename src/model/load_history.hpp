@@ -29,7 +29,8 @@ struct HistoryQuadrature {
 /// solution is analytic, although a2 ~ sqrt(tau - t0) after touchdown. The kernel integral
 /// then uses the piecewise interpolant (product integration): a 16-point Gauss rule on
 /// sub-intervals no longer than 2 relaxation time scales, so the kernel is resolved at no
-/// extra solves. Only the error of the interpolant remains; because it interpolates at
+/// extra solves. A load that rises piecewise linearly (ramp, table) puts kinks into X and
+/// so into Q: panels and kernel pieces end at them. Only the error of the interpolant remains; because it interpolates at
 /// Gauss nodes it integrates at order 2n in h (see HistoryQuadrature).
 ///
 /// A fast-relaxing material (a relaxation memory shorter than the stretch of time one
@@ -61,6 +62,31 @@ class LoadHistory {
   int samples() const { return static_cast<int>(Q1_.size()); }
 
  private:
+  /// A stretch of v between kinks of the load, cut into `panels` panels of equal width.
+  struct Stretch {
+    double v_start = 0.0;
+    double width = 0.0;  ///< of each panel
+    int first_panel = 0;
+    int panels = 0;
+  };
+  /// Calls f(a, b) for the pieces of [lo, hi] between the load's kinks (nothing if hi <= lo).
+  template <class F>
+  void for_each_piece(double lo, double hi, F&& f) const {
+    if (!(hi > lo)) return;
+    double a = lo;
+    for (const double k : kinks_) {
+      if (k > a && k < hi) {
+        f(a, k);
+        a = k;
+      }
+    }
+    f(a, hi);
+  }
+  /// The stretch panel `panel` lies in.
+  const Stretch& stretch_of(int panel) const;
+  /// The panel that holds v (the last one for v beyond the end).
+  int panel_at(double v) const;
+  double panel_start(int panel) const;
   /// Interpolated Q at v on panel `panel`.
   void interpolate(int panel, double v, double* Q1, double* Q2) const;
   /// Barycentric interpolation at xi in [-1, 1] of samples at the reference nodes.
@@ -74,7 +100,8 @@ class LoadHistory {
   const CreepLaw& creep_;  ///< load_'s material: its relaxation function is the kernel
   double level1_load_;
   double t0_;
-  double panel_width_ = 0.0;
+  std::vector<Stretch> stretches_;  ///< one unless the load has kinks after t0
+  std::vector<double> kinks_;       ///< kinks of the load's shape (LoadShape::kinks)
   int panels_ = 0;
   int n_ = 0;
   bool ok_ = true;

@@ -82,8 +82,8 @@ std::string PointSummary::reason() const {
     case Validity::inaccurate:
       switch (invariant) {
         case Invariant::loads_sum:
-          out << "the loads break P1 + P2 = pbar0 l^2 " << when(invalid_at) << ": P1 + P2 = " << violation_value
-              << ", pbar0 l^2 = " << violation_limit << " R^2 E0* (relative error "
+          out << "the loads break P1 + P2 = pbar l^2 " << when(invalid_at) << ": P1 + P2 = " << violation_value
+              << ", pbar l^2 = " << violation_limit << " R^2 E0* (relative error "
               << std::abs(violation_value - violation_limit) / violation_limit << " > " << kLoadsTolerance << ")";
           break;
         case Invariant::not_finite:
@@ -111,7 +111,7 @@ std::string PointSummary::reason() const {
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single) {
   const SingleLevel single(problem.l, problem.shape);
-  const CreepWeightedLoad load(creep, problem.pbar0);
+  const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
   const double X0 = load.initial();
   const double X_inf = load.final();
   *h_0 = single.displacement_difference(single.contact_radius(X0), X0);
@@ -128,7 +128,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   out.h_0 = parts.h_0;
   out.h_inf = parts.h_inf;
   const double l = problem.l;
-  const CreepWeightedLoad load(creep, problem.pbar0);
+  const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
   const double X_inf = load.final();
 
   // The two-level phase starts from a known state, with frozen radii (eq 9.18).
@@ -142,7 +142,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
     const Violation v = check_state(out.a1_inf, 0.0, l);
     if (v.code != Validity::valid) flag(out, v, kInf);
   } else {
-    if (c.regime == Regime::immediate) {
+    if (c.elastic_start) {
       out.radii = parts.elastic->radii;
       out.start = parts.elastic->state;
       out.start_ok = parts.elastic->converged;
@@ -189,6 +189,14 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   return out;
 }
 
+ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide) {
+  if (problem.loading.is_step()) return solve_elastic_two_level(problem, 1.0 / creep.creep_initial(), guide);
+  ContactProblem at_once = problem;
+  at_once.pbar0 = problem.pbar0 * problem.loading.jump();
+  at_once.loading = LoadShape{};
+  return solve_elastic_two_level(at_once, 1.0 / creep.creep_initial(), guide);
+}
+
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
   const LongTermGuide guide(problem);
   SummaryParts parts;
@@ -196,8 +204,8 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   parts.classification = classify(problem, creep);
   single_level_ends(problem, creep, &parts.h_0, &parts.h_inf, &parts.a1_inf_single);
   std::optional<ElasticTwoLevel> elastic;
-  if (parts.classification.regime == Regime::immediate) {
-    elastic = solve_elastic_two_level(problem, 1.0 / creep.creep_initial(), &guide);
+  if (parts.classification.elastic_start) {
+    elastic = solve_elastic_start(problem, creep, &guide);
     parts.elastic = &*elastic;
   }
   return summarize_point(problem, creep, parts);
@@ -213,8 +221,8 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   PointResult out;
   static_cast<PointSummary&>(out) = summary;
   const SingleLevel single(problem.l, problem.shape);
-  const CreepWeightedLoad load(creep, problem.pbar0);
-  const double level1_load = problem.pbar0 * problem.l * problem.l;  // P1 while only level 1 touches
+  const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
+  const double level1_load = problem.pbar0 * problem.l * problem.l;  // L: Q1 = L g before touchdown
   const bool two_level = out.regime != Regime::never;
   const double t_start = out.t_start;
   const TwoLevelSystem system(problem, out.radii);
@@ -266,10 +274,12 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     Snapshot& snap = out.series[i];
     snap.t = options.times[i];
     const double X = load(snap.t);
+    // P1 + P2 = pbar(t) l^2: the nominal load on one cell at t.
+    const double nominal_load = load.nominal_pressure(snap.t) * problem.l * problem.l;
     if (!two_level || snap.t < t_start) {
       snap.a1 = single.contact_radius(X);
       snap.a2 = 0.0;
-      snap.P1 = level1_load;
+      snap.P1 = nominal_load;
       snap.P2 = 0.0;
     } else {
       TwoLevelSolve r{current, false};
@@ -307,8 +317,8 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
       const double sum = snap.P1 + snap.P2;
       if (!(std::isfinite(snap.a1) && std::isfinite(snap.a2) && std::isfinite(snap.P1) && std::isfinite(snap.P2))) {
         flag_inaccurate(out, PointSummary::Invariant::not_finite, kNaN, kNaN, snap.t);
-      } else if (!(std::abs(sum - level1_load) <= kLoadsTolerance * level1_load)) {
-        flag_inaccurate(out, PointSummary::Invariant::loads_sum, sum, level1_load, snap.t);
+      } else if (!(std::abs(sum - nominal_load) <= kLoadsTolerance * nominal_load)) {
+        flag_inaccurate(out, PointSummary::Invariant::loads_sum, sum, nominal_load, snap.t);
       } else if (!radii_ordered(snap.a1, snap.a2)) {
         flag_inaccurate(out, PointSummary::Invariant::radii_order, snap.a2, snap.a1, snap.t);
       }

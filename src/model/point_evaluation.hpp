@@ -83,7 +83,8 @@ struct SummaryParts {
   double h_0 = 0.0;                ///< per (l, s, C, pbar)
   double h_inf = 0.0;              ///< per (l, s, C, pbar, creep)
   double a1_inf_single = 0.0;      ///< single-level radius at J(inf): the same subset
-  const ElasticTwoLevel* elastic = nullptr;  ///< at E0, per (l, s, C, dh, pbar); immediate only
+  /// solve_elastic_start(), per (l, s, C, dh, pbar); required when classification.elastic_start
+  const ElasticTwoLevel* elastic = nullptr;
   const LongTermGuide* guide = nullptr;      ///< per (l, s, C, dh); required
 };
 
@@ -91,7 +92,11 @@ struct SummaryParts {
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single);
 
-/// The summary from its parts (`elastic` must be set when the regime is immediate).
+/// The elastic two-level state at t = 0+ (eqs 9.12-9.15): modulus 1/J(0) under the nominal
+/// pressure applied at once, pbar(0+) = pbar0 phi(0+). `guide` may be null.
+ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide);
+
+/// The summary from its parts (`elastic` must be set when classification.elastic_start).
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
                              const SummaryParts& parts);
 

@@ -53,7 +53,7 @@ double punch_pressure_shape(int s, double r, double a) {
 Level1Pressure::Level1Pressure(const ContactProblem& problem, const CreepLaw& creep)
     : problem_(problem),
       creep_(creep),
-      load_(creep, problem.pbar0),
+      load_(creep, problem.pbar0, problem.loading),
       single_(problem.l, problem.shape),
       A1_(Lattice{problem.l}.A1_single()) {}
 

@@ -94,6 +94,22 @@ double PronySeries::creep(double t) const {
   return 1.0 + crept;
 }
 
+double PronySeries::creep_rate(double t) const {
+  double rate = 0.0;
+  for (std::size_t k = 0; k < J_.size(); ++k) rate += J_[k] / lambda_[k] * std::exp(-t / lambda_[k]);
+  return rate;
+}
+
+double PronySeries::creep_integral(double u0, double u1) const {
+  // J(inf) d - sum J_k lambda_k (e^(-u0/lambda_k) - e^(-u1/lambda_k)), d = u1 - u0.
+  const double d = u1 - u0;
+  double sum = J_final_ * d;
+  for (std::size_t k = 0; k < J_.size(); ++k) {
+    sum += J_[k] * lambda_[k] * std::exp(-u0 / lambda_[k]) * std::expm1(-d / lambda_[k]);
+  }
+  return sum;
+}
+
 double PronySeries::time_at_creep(double J) const {
   if (J <= 1.0) return 0.0;
   if (J >= J_final_) return std::numeric_limits<double>::infinity();
@@ -106,8 +122,7 @@ double PronySeries::time_at_creep(double J) const {
     if (!std::isfinite(hi)) return std::numeric_limits<double>::infinity();
   }
   const auto residual = [&](double t, double* slope) {
-    *slope = 0.0;
-    for (std::size_t k = 0; k < J_.size(); ++k) *slope += J_[k] / lambda_[k] * std::exp(-t / lambda_[k]);
+    *slope = creep_rate(t);
     return creep(t) - J;
   };
   return newton_bisect_increasing(residual, lo, hi, 0.5 * (lo + hi), 0.0, 400, kRootTolerance).x;

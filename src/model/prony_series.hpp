@@ -28,6 +28,8 @@ class PronySeries final : public CreepLaw {
   PronySeries(double E_inf, std::vector<double> E, std::vector<double> tau);
 
   double creep(double t) const override;
+  double creep_rate(double t) const override;
+  double creep_integral(double u0, double u1) const override;
   double relaxation(double t) const override;
   double relaxation_rate(double t) const override;
   double creep_initial() const override { return 1.0; }

@@ -32,18 +32,21 @@ Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
   if (out.J_star <= load.response_initial()) {
     out.regime = Regime::immediate;
     out.t_star = 0.0;
+    out.elastic_start = load.initial() > 0.0;
   } else {
     // g* = g(inf) exactly would mean touching only as t -> infinity: that is "never".
     out.t_star = out.J_star < load.response_final() ? std::max(0.0, load.time_at_response(out.J_star))
                                                     : std::numeric_limits<double>::infinity();
-    out.regime = std::isfinite(out.t_star) ? Regime::delayed : Regime::never;
+    const double rise = load.shape().rise_time();
+    const bool while_rising = rise > 0.0 && out.t_star <= rise;
+    out.regime = !std::isfinite(out.t_star) ? Regime::never : while_rising ? Regime::immediate : Regime::delayed;
   }
   return out;
 }
 
 Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
   const SingleLevel single(problem.l, problem.shape);
-  return classify(touchdown(single, problem.dh), CreepWeightedLoad(creep, problem.pbar0));
+  return classify(touchdown(single, problem.dh), CreepWeightedLoad(creep, problem.pbar0, problem.loading));
 }
 
 }  // namespace punchsweep::model

@@ -11,8 +11,10 @@ namespace punchsweep::model {
 /// When level 2 touches (docs/model.md, section 4). The integer codes are a file format
 /// contract (the regime map stores them); never renumber.
 enum class Regime : std::int8_t {
-  immediate = 0,  ///< h(0) >= dh: at once, t* = 0
-  delayed = 1,    ///< h(0) < dh <= h(inf): at t* > 0 with h(t*) = dh
+  /// By the end of the load's rise: for a step at once (h(0) >= dh, t* = 0); under a ramp
+  /// or table while the load still rises (0 < t* <= rise time).
+  immediate = 0,
+  delayed = 1,    ///< later, while the load is held: at t* > rise time with h(t*) = dh
   never = 2,      ///< h(inf) < dh: never (limited creep only)
 };
 
@@ -28,6 +30,10 @@ struct Classification {
   double a1_star = 0.0; ///< level-1 radius at touchdown, in R (0 when dh = 0)
   double J_star = 0.0;  ///< g* = X*/pbar0 at touchdown (the creep J* for a step), in 1/E0*
   double X_star = 0.0;  ///< creep-weighted load at touchdown, in E0*
+  /// Level 2 touches at t = 0+ under a load X(0+) > 0, so the two-level phase starts from
+  /// the elastic two-level solution (eqs 9.12-9.15); otherwise it starts at t* from the
+  /// single-level state with a2 = 0 (also when an immediate touch comes during a ramp).
+  bool elastic_start = false;
 };
 
 /// Where level 2 touches along the single-level solution: the level-1 radius a1* with

@@ -182,14 +182,15 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
             problem.pbar0 = value(pbar_, ip);
             const Ends& e = ends[m * c[pbar_] + ip];
             model::SummaryParts parts;
-            parts.classification = model::classify(touch[idh], model::CreepWeightedLoad(law, problem.pbar0));
+            parts.classification =
+                model::classify(touch[idh], model::CreepWeightedLoad(law, problem.pbar0, problem.loading));
             parts.h_0 = e.h_0;
             parts.h_inf = e.h_inf;
             parts.a1_inf_single = e.a1_inf_single;
             parts.guide = guide[idh].get();
-            if (parts.classification.regime == model::Regime::immediate) {
+            if (parts.classification.elastic_start) {
               auto& cached = elastic[idh * c[pbar_] + ip];
-              if (!cached) cached = model::solve_elastic_two_level(problem, 1.0 / law.creep_initial(), guide[idh].get());
+              if (!cached) cached = model::solve_elastic_start(problem, law, guide[idh].get());
               parts.elastic = &*cached;
             }
             const model::PointSummary summary = model::summarize_point(problem, law, parts);
