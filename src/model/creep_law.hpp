@@ -30,9 +30,9 @@ class CreepLaw {
   virtual double creep(double t) const = 0;
   /// dJ/dt at t >= 0 (the rate of the creep-weighted load under a jump).
   virtual double creep_rate(double t) const = 0;
-  /// int_u0^u1 J(u) du for 0 <= u0 <= u1, without cancellation when u1 - u0 is small
-  /// against u0 (the creep-weighted load of a ramp, docs/model.md, section 10).
-  virtual double creep_integral(double u0, double u1) const = 0;
+  /// int_u^(u+d) J(v) dv for u >= 0, d >= 0, without cancellation when d is small against
+  /// u (the creep-weighted load of a ramp, docs/model.md, section 10).
+  virtual double creep_integral(double u, double d) const = 0;
   /// Relaxation function E(t) for t >= 0.
   virtual double relaxation(double t) const = 0;
   /// dE/dt at t >= 0 (the kernel of the load history integral).

@@ -13,7 +13,7 @@ double CreepWeightedLoad::response(double t) const {
   double g = shape_.jump() > 0.0 ? shape_.jump() * creep_.creep(t) : 0.0;
   for (const LoadShape::Segment& s : shape_.segments()) {
     if (!(t > s.t_a)) break;
-    g += s.slope * creep_.creep_integral(t - std::min(t, s.t_b), t - s.t_a);
+    g += s.slope * creep_.creep_integral(t - std::min(t, s.t_b), std::min(t, s.t_b) - s.t_a);
   }
   return g;
 }

@@ -66,7 +66,7 @@ KelvinSeries::KelvinSeries(std::vector<double> J, std::vector<double> lambda, do
     double dg = 0.0;
     g(s, &dg);
     tau_.push_back(-1.0 / s);
-    E_.push_back(1.0 / (s * dg));  // residue of 1/(s h(s)) at s_k: 1/(s_k h'(s_k)), h' = -g'
+    E_.push_back(-1.0 / (s * dg));  // residue of 1/(s h(s)) at s_k: 1/(s_k h'(s_k)), h' = -g'
   };
   // Below the fastest pole: g rises from -1 (at -infinity) to +infinity; bracket by doubling.
   const std::size_t n = J_.size();
@@ -91,11 +91,10 @@ double KelvinSeries::creep_rate(double t) const {
   return rate;
 }
 
-double KelvinSeries::creep_integral(double u0, double u1) const {
-  const double d = u1 - u0;
-  double sum = d + phi_ * d * 0.5 * (u0 + u1);
+double KelvinSeries::creep_integral(double u, double d) const {
+  double sum = d + phi_ * d * (u + 0.5 * d);
   for (std::size_t k = 0; k < J_.size(); ++k) {
-    sum += J_[k] * (d + lambda_[k] * std::exp(-u0 / lambda_[k]) * std::expm1(-d / lambda_[k]));
+    sum += J_[k] * (d + lambda_[k] * std::exp(-u / lambda_[k]) * std::expm1(-d / lambda_[k]));
   }
   return sum;
 }

@@ -100,12 +100,11 @@ double PronySeries::creep_rate(double t) const {
   return rate;
 }
 
-double PronySeries::creep_integral(double u0, double u1) const {
-  // J(inf) d - sum J_k lambda_k (e^(-u0/lambda_k) - e^(-u1/lambda_k)), d = u1 - u0.
-  const double d = u1 - u0;
+double PronySeries::creep_integral(double u, double d) const {
+  // J(inf) d - sum J_k lambda_k (e^(-u/lambda_k) - e^(-(u+d)/lambda_k)).
   double sum = J_final_ * d;
   for (std::size_t k = 0; k < J_.size(); ++k) {
-    sum += J_[k] * lambda_[k] * std::exp(-u0 / lambda_[k]) * std::expm1(-d / lambda_[k]);
+    sum += J_[k] * lambda_[k] * std::exp(-u / lambda_[k]) * std::expm1(-d / lambda_[k]);
   }
   return sum;
 }

@@ -29,7 +29,7 @@ class PronySeries final : public CreepLaw {
 
   double creep(double t) const override;
   double creep_rate(double t) const override;
-  double creep_integral(double u0, double u1) const override;
+  double creep_integral(double u, double d) const override;
   double relaxation(double t) const override;
   double relaxation_rate(double t) const override;
   double creep_initial() const override { return 1.0; }

@@ -29,10 +29,9 @@ double StandardLinearSolid::creep(double t) const { return T_ - (T_ - 1.0) * std
 
 double StandardLinearSolid::creep_rate(double t) const { return (T_ - 1.0) * std::exp(-t); }
 
-double StandardLinearSolid::creep_integral(double u0, double u1) const {
-  // T d - (T - 1) (e^-u0 - e^-u1), the difference written with expm1 of d = u1 - u0.
-  const double d = u1 - u0;
-  return T_ * d + (T_ - 1.0) * std::exp(-u0) * std::expm1(-d);
+double StandardLinearSolid::creep_integral(double u, double d) const {
+  // T d - (T - 1) (e^-u - e^-(u+d)), the difference written with expm1.
+  return T_ * d + (T_ - 1.0) * std::exp(-u) * std::expm1(-d);
 }
 
 double StandardLinearSolid::relaxation(double t) const {

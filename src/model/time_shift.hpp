@@ -46,7 +46,7 @@ class TimeShiftedLaw final : public CreepLaw {
 
   double creep(double t) const override { return ref_->creep(t / a_); }
   double creep_rate(double t) const override { return ref_->creep_rate(t / a_) / a_; }
-  double creep_integral(double u0, double u1) const override { return a_ * ref_->creep_integral(u0 / a_, u1 / a_); }
+  double creep_integral(double u, double d) const override { return a_ * ref_->creep_integral(u / a_, d / a_); }
   double relaxation(double t) const override { return ref_->relaxation(t / a_); }
   double relaxation_rate(double t) const override { return ref_->relaxation_rate(t / a_) / a_; }
   double creep_initial() const override { return ref_->creep_initial(); }

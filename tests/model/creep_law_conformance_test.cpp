@@ -17,7 +17,9 @@
 #include <functional>
 
 #include "model/creep_laws.hpp"
+#include "model/kelvin_series.hpp"
 #include "model/prony_series.hpp"
+#include "model/time_shift.hpp"
 
 using namespace punchsweep::model;
 
@@ -54,6 +56,31 @@ std::vector<Case> cases() {
                        0.05, std::vector<double>{0.2, 0.1, 0.3, 0.15, 0.1, 0.05, 0.05},
                        std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1, 1.0, 1e2, 1e4});
                  }});
+  // Kelvin series: one term (the SLS at T = 2.5), 5 terms over 6 decades, and with a
+  // dashpot (unlimited creep; the Burgers model for one term).
+  out.push_back({"kelvin", nullptr, {}, [] {
+                   return std::make_unique<KelvinSeries>(std::vector<double>{1.5}, std::vector<double>{1.0});
+                 }});
+  out.push_back({"kelvin", nullptr, {}, [] {
+                   return std::make_unique<KelvinSeries>(std::vector<double>{0.3, 1.0, 0.5, 2.0, 0.2},
+                                                         std::vector<double>{1e-3, 1e-2, 1.0, 10.0, 1e3});
+                 }});
+  out.push_back({"kelvin_dashpot", nullptr, {}, [] {
+                   return std::make_unique<KelvinSeries>(std::vector<double>{1.0}, std::vector<double>{1.0}, 0.05);
+                 }});
+  out.push_back({"kelvin_dashpot", nullptr, {}, [] {
+                   return std::make_unique<KelvinSeries>(std::vector<double>{0.5, 2.0}, std::vector<double>{0.1, 10.0},
+                                                         1e-3);
+                 }});
+  // A shifted law: a 3-term Prony series 100 times slower and 1000 times faster.
+  for (const double a_T : {100.0, 1e-3}) {
+    out.push_back({"shifted_prony", nullptr, {}, [a_T] {
+                     return std::make_unique<TimeShiftedLaw>(
+                         std::make_unique<PronySeries>(0.2, std::vector<double>{0.3, 0.3, 0.2},
+                                                       std::vector<double>{0.01, 1.0, 100.0}),
+                         a_T);
+                   }});
+  }
   return out;
 }
 
@@ -146,6 +173,40 @@ TEST_P(CreepLawConformance, relaxation_rate_is_the_derivative_of_relaxation) {
     EXPECT_NEAR(law->relaxation_rate(t), central, 1e-7 * std::abs(law->relaxation_rate(0.0)) + 1e-12)
         << law->describe() << ", t = " << t;
   }
+}
+
+TEST_P(CreepLawConformance, creep_rate_is_the_derivative_of_creep) {
+  const auto law = make();
+  const double scale = law->creep_time_scale();
+  for (const double x : {0.05, 0.5, 2.0, 30.0}) {
+    const double t = x * scale;
+    const double h = 1e-5 * t;
+    const double central = (law->creep(t + h) - law->creep(t - h)) / (2 * h);
+    EXPECT_NEAR(law->creep_rate(t), central, 1e-6 * std::abs(central) + 1e-9 * law->creep(t) / scale)
+        << law->describe() << ", t = " << t;
+  }
+}
+
+// int_u0^u1 J du against composite Simpson on 2000 intervals, also for a short interval
+// far out (where the law must avoid the cancellation of I(u1) - I(u0)).
+TEST_P(CreepLawConformance, creep_integral_is_the_integral_of_creep) {
+  const auto law = make();
+  const double scale = law->creep_time_scale();
+  const auto simpson = [&](double a, double b) {
+    const int n = 2000;
+    const double h = (b - a) / n;
+    double sum = law->creep(a) + law->creep(b);
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * law->creep(a + i * h);
+    return sum * h / 3.0;
+  };
+  for (const auto& [a, b] : {std::pair{0.0, 0.3}, std::pair{0.0, 5.0}, std::pair{2.0, 3.0}, std::pair{1e6, 1e6 + 1e-3}}) {
+    const double u0 = a * scale;
+    const double u1 = b * scale;
+    const double expected = simpson(u0, u1);
+    EXPECT_NEAR(law->creep_integral(u0, u1 - u0), expected, 1e-11 * std::abs(expected)) << law->describe() << ", ["
+                                                                                   << u0 << ", " << u1 << "]";
+  }
+  EXPECT_EQ(law->creep_integral(0.7 * scale, 0.0), 0.0);
 }
 
 TEST_P(CreepLawConformance, relaxation_memory_bounds_the_kernel) {

@@ -32,9 +32,7 @@ class MaxwellFluid final : public model::CreepLaw {
   explicit MaxwellFluid(double eta) : eta_(eta) {}
   double creep(double t) const override { return 1.0 + t / eta_; }
   double creep_rate(double /*t*/) const override { return 1.0 / eta_; }
-  double creep_integral(double u0, double u1) const override {
-    return (u1 - u0) * (1.0 + 0.5 * (u0 + u1) / eta_);
-  }
+  double creep_integral(double u, double d) const override { return d * (1.0 + (u + 0.5 * d) / eta_); }
   double relaxation(double t) const override { return std::exp(-t / eta_); }
   double relaxation_rate(double t) const override { return -std::exp(-t / eta_) / eta_; }
   double creep_initial() const override { return 1.0; }
@@ -55,7 +53,7 @@ class OpaqueCreep final : public model::CreepLaw {
   explicit OpaqueCreep(const model::CreepLaw& law) : law_(law) {}
   double creep(double t) const override { return law_.creep(t); }
   double creep_rate(double t) const override { return law_.creep_rate(t); }
-  double creep_integral(double u0, double u1) const override { return law_.creep_integral(u0, u1); }
+  double creep_integral(double u, double d) const override { return law_.creep_integral(u, d); }
   double relaxation(double t) const override { return law_.relaxation(t); }
   double relaxation_rate(double t) const override { return law_.relaxation_rate(t); }
   double creep_initial() const override { return law_.creep_initial(); }
