@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "app/usage_error.hpp"
@@ -144,6 +146,49 @@ PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLaw
   return inputs;
 }
 
+std::shared_ptr<const model::Material> read_material_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("--material = " + path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return std::make_shared<const model::Material>(model::Material::parse(text.str(), path));
+  } catch (const model::MaterialError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+PointMaterial find_point_material(const std::vector<std::string>& args) {
+  std::optional<std::string> path;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--material" && i + 1 < args.size()) path = args[i + 1];
+    if (args[i].rfind("--material=", 0) == 0) path = args[i].substr(11);
+  }
+  if (!path) return {nullptr, model::creep_laws().front()};
+  std::shared_ptr<const model::Material> material = read_material_file(*path);
+  return {material, material->spec()};
+}
+
+void add_material_options(po::options_description& opts) {
+  opts.add_options()("material", po::value<std::string>()->value_name("FILE"),
+                     "material file (materials/NAME.ini: a Prony or Kelvin series in physical units); replaces "
+                     "--T, times are then in the file's time_unit")(
+      "ramp", po::value<std::string>()->value_name("TR")->default_value("0"),
+      "ramp time t_r: the nominal pressure rises linearly to pbar over t_r, then holds (time unit as --times; "
+      "0 is a step); t_r >= 0");
+}
+
+PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& material) {
+  PointInputs inputs = read_point_inputs(vm, material.spec);
+  inputs.material = material.material;
+  inputs.time_unit = material.time_unit();
+  const double ramp = read_real(vm, "ramp", "ramp time", "ramp time t_r >= 0 (0 is a step)",
+                                [](double v) { return v >= 0.0; });
+  inputs.problem.loading = model::LoadShape::ramp(ramp);
+  if (ramp > 0.0) inputs.values.emplace_back(&model::ramp_time_parameter(), ramp);
+  return inputs;
+}
+
 std::string PointInputs::describe() const {
   std::string text;
   for (const auto& [p, value] : values) {
@@ -151,7 +196,9 @@ std::string PointInputs::describe() const {
     text.append(p->name);
     text += " = ";
     text += json_number(value);
-    if (p->scale != "1") {
+    if (p->scale == "T_eps") {
+      text += ' ' + time_unit;
+    } else if (p->scale != "1") {
       text += ' ';
       text.append(p->scale);
     }

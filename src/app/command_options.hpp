@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/contact_problem.hpp"
+#include "model/material.hpp"
 #include "model/creep_laws.hpp"
 #include "model/parameters.hpp"
 #include "model/shape.hpp"
@@ -48,6 +49,24 @@ void add_point_options(boost::program_options::options_description& opts,
 /// --l, --dh, --pbar, --s and --C as a ContactProblem, each range-checked.
 model::ContactProblem read_problem(const boost::program_options::variables_map& vm);
 
+/// The material file `path` read and parsed. Throws UsageError with the file's message
+/// (file, key, value, valid range) when it cannot be read or is refused.
+std::shared_ptr<const model::Material> read_material_file(const std::string& path);
+
+/// A point command's material: the file given as --material in `args` (nullptr without it)
+/// and the creep law it defines, else the default creep law. The options the command
+/// declares depend on it (--temperature for a material with a shift, --T for the default).
+struct PointMaterial {
+  std::shared_ptr<const model::Material> material;
+  model::CreepLawSpec spec;  ///< material->spec(), or the default creep law
+  /// The unit of every time: the file's time_unit, or "T_eps".
+  std::string time_unit() const { return material ? material->time_unit() : "T_eps"; }
+};
+PointMaterial find_point_material(const std::vector<std::string>& args);
+
+/// --material FILE and --ramp TR, declared for a point command.
+void add_material_options(boost::program_options::options_description& opts);
+
 /// The inputs of one parameter point: the contact problem and the creep law with its
 /// parameter values.
 struct PointInputs {
@@ -57,6 +76,8 @@ struct PointInputs {
   const model::CreepLawSpec* law = nullptr;
   std::vector<double> law_values;  ///< in law->parameters order
   std::unique_ptr<model::CreepLaw> creep;
+  std::shared_ptr<const model::Material> material;  ///< the --material file, or nullptr
+  std::string time_unit = "T_eps";                   ///< of every time in and out
 
   /// "l = 0.75 R, dh = 0.075 R, T = 2.5, pbar = 0.06 E0/(1-nu^2), s = 2, C = 0.5": every
   /// parameter in add_point_options' order, with its unit.
@@ -66,6 +87,9 @@ struct PointInputs {
 /// The point's options (add_point_options) read and range-checked, for creep law `law`.
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm,
                               const model::CreepLawSpec& law = model::creep_laws().front());
+
+/// The same for the material found by find_point_material, with --ramp (add_material_options).
+PointInputs read_point_inputs(const boost::program_options::variables_map& vm, const PointMaterial& material);
 
 /// The valid range of snapshot times, as --times and [time] times state it.
 inline constexpr const char* kTimesRange = "each t >= 0 and finite, strictly increasing (in T_eps)";

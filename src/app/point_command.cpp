@@ -16,14 +16,15 @@ namespace {
 
 constexpr const char* kUsage = "usage: punchsweep point --l L --dh DH --T T --pbar P --s S [options]";
 
-po::options_description point_options() {
+po::options_description point_options(const PointMaterial& material) {
   po::options_description opts(
       "punchsweep point: regime, t*, and the contact state over time of one parameter point\n"
       "(two-level square lattice of punches f(r) = C r^s / R^(s-1) pressed with constant\n"
-      "nominal pressure into a standard linear solid).\n\n"
+      "nominal pressure into a standard linear solid, or the material of --material FILE).\n\n"
       "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), loads in R^2 E0*,\n"
-      "time in T_eps (creep time).\n\nOptions");
-  add_point_options(opts);
+      "time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
+  add_point_options(opts, material.spec);
+  add_material_options(opts);
   opts.add_options()
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
@@ -33,7 +34,8 @@ po::options_description point_options() {
 }  // namespace
 
 int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
-  const po::options_description opts = point_options();
+  const PointMaterial material = find_point_material(args);
+  const po::options_description opts = point_options(material);
   const po::variables_map vm = parse_command(args, opts, "point");
   if (vm.count("help")) {
     out << kUsage << "\n\n" << opts << "\n"
@@ -42,7 +44,7 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
   }
 
-  const PointInputs inputs = read_point_inputs(vm);
+  const PointInputs inputs = read_point_inputs(vm, material);
 
   model::EvaluationOptions options;
   options.times = read_times(vm);

@@ -42,13 +42,13 @@ std::string series_array(const QuantitySpec* q, const model::PointResult& r) {
   return text + "]";
 }
 
-void write_json(std::ostream& out, const model::PointResult& r) {
+void write_json(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
   out << "{\n";
   for (const QuantitySpec& q : kQuantities) {
     if (!is_point(q)) continue;
     if (q.flags == map::Flags::validity) {
       out << "  \"" << q.name << "\": " << (r.valid() ? "true" : "false") << ",\n"
-          << "  \"reason\": " << json_string(r.reason()) << ",\n";
+          << "  \"reason\": " << json_string(r.reason(inputs.time_unit)) << ",\n";
     } else if (q.kind == map::Kind::flag) {
       out << "  \"" << q.name << "\": " << json_string(flag_text(q, r)) << ",\n";
     } else {
@@ -63,8 +63,9 @@ void write_json(std::ostream& out, const model::PointResult& r) {
 }
 
 // Units as people read them in the table and the CSV comments.
-std::string display_units(const QuantitySpec& q) {
+std::string display_units(const QuantitySpec& q, const std::string& time_unit) {
   if (q.scale == "R^2 E0/(1-nu^2)") return "R^2 E0*";
+  if (q.scale == "T_eps") return time_unit;
   return q.scale == "1" ? std::string() : std::string(q.scale);
 }
 
@@ -77,21 +78,27 @@ std::string fixed(double v, int width, int precision) {
 
 void write_table(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
   out << "punchsweep point: " << inputs.describe() << "\n"
-      << "  (units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps)\n\n";
+      << "  (units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in " << inputs.time_unit
+      << ")\n";
+  if (inputs.material) {
+    out << "  material: " << inputs.material->describe() << "\n"
+        << "  E0* = E0/(1-nu^2) = " << number(inputs.material->plane_strain_modulus_Pa()) << " Pa\n";
+  }
+  out << "\n";
   for (const QuantitySpec& q : kQuantities) {
     if (!is_point(q)) continue;
     std::string name(q.name);
     name.resize(20, ' ');
     std::string value;
     if (q.flags == map::Flags::validity) {
-      value = r.valid() ? "yes" : "no (" + flag_text(q, r) + "): " + r.reason();
+      value = r.valid() ? "yes" : "no (" + flag_text(q, r) + "): " + r.reason(inputs.time_unit);
     } else if (q.kind == map::Kind::flag) {
       value = flag_text(q, r);
     } else if (!r.t_star && q.value == map::quantity_access::t_star) {
       value = "none (never)";
     } else {
       value = number(q.value(r));
-      if (const std::string u = display_units(q); !u.empty()) value += " " + u;
+      if (const std::string u = display_units(q, inputs.time_unit); !u.empty()) value += " " + u;
     }
     out << "  " << name << value << "\n";
     if (q.flags == map::Flags::validity) {
@@ -107,12 +114,14 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
   std::vector<Column> columns;
   for (const QuantitySpec& q : kQuantities) {
     if (!is_series(q)) continue;
-    const std::string u = display_units(q);
+    const std::string u = display_units(q, inputs.time_unit);
     std::string head = std::string(q.name) + (u.empty() ? "" : " [" + u + "]");
     const int width = head.size() < 12 ? 12 : 15;
     columns.push_back({&q, std::move(head), width});
   }
-  out << "\n   t [T_eps]";
+  std::string t_head = "t [" + inputs.time_unit + "]";
+  if (t_head.size() < 12) t_head.insert(0, 12 - t_head.size(), ' ');
+  out << "\n" << t_head;
   for (const Column& c : columns) out << std::string(static_cast<std::size_t>(c.width) - c.head.size(), ' ') << c.head;
   out << "\n";
   for (const model::Snapshot& s : r.series) {
@@ -131,23 +140,23 @@ void write_csv(std::ostream& out, const PointInputs& inputs, const model::PointR
   for (const QuantitySpec& q : kQuantities) {
     if (!is_point(q)) continue;
     if (q.flags == map::Flags::validity) {
-      out << "# " << q.name << " = " << (r.valid() ? "true" : "false") << "\n# reason = " << r.reason() << "\n";
+      out << "# " << q.name << " = " << (r.valid() ? "true" : "false") << "\n# reason = " << r.reason(inputs.time_unit) << "\n";
     } else if (q.kind == map::Kind::flag) {
       out << "# " << q.name << " = " << flag_text(q, r) << "\n";
     } else if (!r.t_star && q.value == map::quantity_access::t_star) {
       out << "# " << q.name << " = null (never)\n";
     } else {
-      const std::string u = display_units(q);
+      const std::string u = display_units(q, inputs.time_unit);
       out << "# " << q.name << " = " << number(q.value(r)) << (u.empty() ? "" : " " + u) << "\n";
     }
   }
-  std::string units = "# units: t in T_eps";
+  std::string units = "# units: t in " + inputs.time_unit;
   std::string header = "t";
   for (const QuantitySpec& q : kQuantities) {
     if (!is_series(q)) continue;
     header += ',';
     header.append(q.name);
-    if (const std::string u = display_units(q); !u.empty()) units += ", " + std::string(q.name) + " in " + u;
+    if (const std::string u = display_units(q, inputs.time_unit); !u.empty()) units += ", " + std::string(q.name) + " in " + u;
   }
   out << units << "\n" << header << "\n";
   for (const model::Snapshot& s : r.series) {
@@ -164,7 +173,7 @@ void write_csv(std::ostream& out, const PointInputs& inputs, const model::PointR
 void write_point(std::ostream& out, OutputFormat format, const PointInputs& inputs, const model::PointResult& result) {
   switch (format) {
     case OutputFormat::table: write_table(out, inputs, result); break;
-    case OutputFormat::json: write_json(out, result); break;
+    case OutputFormat::json: write_json(out, inputs, result); break;
     case OutputFormat::csv: write_csv(out, inputs, result); break;
   }
 }

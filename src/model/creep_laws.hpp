@@ -5,6 +5,7 @@
 /// class, one entry in creep_laws.cpp, and its row in the conformance test
 /// (tests/model/creep_law_conformance_test.cpp).
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <string_view>
@@ -21,7 +22,7 @@ struct CreepLawSpec {
   std::string_view description;  ///< one line with J(t), for help texts
   std::span<const Parameter> parameters;  ///< its parameters, in the order of a map's axes
   /// Builds the law from values in `parameters` order, each admitted by its Parameter.
-  std::unique_ptr<CreepLaw> (*make)(std::span<const double> values);
+  std::function<std::unique_ptr<CreepLaw>(std::span<const double> values)> make;
 };
 
 /// Every known creep law; the first is the default.

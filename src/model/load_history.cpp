@@ -80,6 +80,22 @@ void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const
   interpolate_nodes(&Q1_[base], &Q2_[base], xi, Q1, Q2);
 }
 
+LoadHistory::Cost LoadHistory::cost(const CreepWeightedLoad& load, double t0, double t_end,
+                                    const HistoryQuadrature& quadrature) {
+  const CreepLaw& creep = load.creep();
+  const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
+  const double width = quadrature.panel_width * std::sqrt(creep.creep_time_scale());
+  Cost c;
+  c.samples = (std::ceil(v_end / width) + static_cast<double>(load.shape().kinks().size()) + 1.0) *
+              quadrature.nodes_per_panel;
+  // The kernel pieces of the wide form over the memory window (the narrow form samples Q
+  // afresh instead and needs a handful).
+  const double window = std::min(creep.relaxation_memory(), t_end);
+  const double panel_span = (2.0 * v_end + width) * width;
+  c.kernel_pieces = creep.relaxation_memory() < panel_span ? 0.0 : window / kernel_piece_span(creep);
+  return c;
+}
+
 void LoadHistory::interpolate_nodes(const double* Q1, const double* Q2, double xi, double* q1, double* q2) const {
   double num1 = 0.0;
   double num2 = 0.0;

@@ -50,6 +50,19 @@ class LoadHistory {
   LoadHistory(const CreepWeightedLoad& load, double level1_load, double t0, double t_end,
               const HistoryQuadrature& quadrature, const Sampler& sample);
 
+  /// The work a history over [t0, t_end] would take, before any is done: the Q samples it
+  /// takes and the kernel pieces one load() call may sum.
+  struct Cost {
+    double samples = 0.0;
+    double kernel_pieces = 0.0;
+  };
+  static Cost cost(const CreepWeightedLoad& load, double t0, double t_end, const HistoryQuadrature& quadrature);
+  /// The most work evaluate_point() spends on one history; a material whose times span
+  /// more decades than that resolves (a wide Prony spectrum over a long time) is flagged
+  /// instead (docs/model.md, section 12.7).
+  static constexpr double kMaxSamples = 2e6;
+  static constexpr double kMaxKernelPieces = 1e5;
+
   /// False if any sample failed; then load() is meaningless.
   bool ok() const { return ok_; }
 

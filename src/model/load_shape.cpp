@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/parameters.hpp"
+
 namespace punchsweep::model {
 namespace {
 
@@ -15,6 +17,20 @@ std::string number(double v) {
 }
 
 }  // namespace
+
+const Parameter& ramp_time_parameter() {
+  static const Parameter kRampTime{"ramp_time",
+                                   "T_eps",
+                                   "ramp time",
+                                   "ramp time t_r over which the nominal pressure rises linearly to pbar (then held), "
+                                   "in the law's time unit; 0 is a step",
+                                   "ramp_time >= 0 (0 is a step)",
+                                   [](double v) { return v >= 0.0; },
+                                   false,
+                                   "0",
+                                   "0"};
+  return kRampTime;
+}
 
 LoadShape LoadShape::ramp(double ramp_time) {
   if (!(std::isfinite(ramp_time) && ramp_time >= 0.0)) {

@@ -61,4 +61,8 @@ class LoadShape {
   std::shared_ptr<const std::vector<Segment>> segments_;  ///< null for the step
 };
 
+struct Parameter;
+/// ramp_time, the rise time of a ramp load (model/parameters.hpp), in the law's time unit.
+const Parameter& ramp_time_parameter();
+
 }  // namespace punchsweep::model

@@ -56,15 +56,15 @@ double area_fraction(double a1, double a2, double l) {
 
 }  // namespace
 
-std::string PointSummary::reason() const {
+std::string PointSummary::reason(std::string_view time_unit) const {
   if (validity == Validity::valid) return {};
   std::ostringstream out;
   out.precision(6);
-  const auto when = [](double t) {
+  const auto when = [time_unit](double t) {
     std::ostringstream text;
     text.precision(6);
     if (std::isinf(t)) text << "in the long-term state (t -> infinity)";
-    else text << "at t = " << t << " T_eps";
+    else text << "at t = " << t << " " << time_unit;
     return text.str();
   };
   switch (validity) {
@@ -93,6 +93,11 @@ std::string PointSummary::reason() const {
             out << "a value of the state is not finite " << when(invalid_at);
           }
           out << " (the point lies beyond what double precision resolves)";
+          break;
+        case Invariant::history_cost:
+          out << "the loads P1, P2 " << when(invalid_at) << " are not computed: the material's creep and relaxation "
+              << "times span " << violation_value << " decades up to that time, more than the load-history quadrature "
+              << "resolves (regime, t*, h and the radii are unaffected)";
           break;
         case Invariant::radii_order:
           out << "the radii break 0 <= a2 <= a1 " << when(invalid_at) << ": a1 = " << violation_limit
@@ -234,7 +239,17 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   const double t_max = options.times.empty() ? 0.0 : options.times[order.back()];
 
   std::optional<LoadHistory> history;
+  bool history_skipped = false;
   if (two_level && out.start_ok && t_max >= t_start) {
+    const LoadHistory::Cost cost = LoadHistory::cost(load, t_start, t_max, options.quadrature);
+    history_skipped = cost.samples > LoadHistory::kMaxSamples || cost.kernel_pieces > LoadHistory::kMaxKernelPieces;
+    if (history_skipped && out.valid()) {
+      const double shortest = std::min(creep.creep_time_scale(), creep.relaxation_time_scale());
+      flag_inaccurate(out, PointSummary::Invariant::history_cost, std::log10(std::max(t_max, 1.0 * shortest) / shortest),
+                      0.0, t_start);
+    }
+  }
+  if (two_level && out.start_ok && t_max >= t_start && !history_skipped) {
     // Along the history path, a secant predictor in (X, a1, a2^2) from the last two samples
     // halves the Newton work; a2^2 rather than a2 because a2 ~ sqrt(X - X*) at touchdown.
     TwoLevelState current = out.start;
@@ -284,7 +299,13 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     } else {
       TwoLevelSolve r{current, false};
       if (current_ok) r = system.continue_to(current, X_current, X);
-      if (r.converged && history && history->ok()) {
+      if (r.converged && history_skipped) {
+        current = r.state;
+        X_current = X;
+        snap.a1 = current.a1;
+        snap.a2 = current.a2;
+        snap.P1 = snap.P2 = kNaN;  // flagged history_cost above
+      } else if (r.converged && history && history->ok()) {
         current = r.state;
         X_current = X;
         snap.a1 = current.a1;

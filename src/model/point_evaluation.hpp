@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "model/contact_problem.hpp"
@@ -53,7 +54,9 @@ struct PointSummary {
   double first_seen = 0.0;       ///< earliest computed time that shows a break, in T_eps
   /// For Validity::inaccurate: which invariant broke (violation_value and violation_limit
   /// hold its numbers, invalid_at its time).
-  enum class Invariant : std::int8_t { none, loads_sum, not_finite, radii_order } invariant = Invariant::none;
+  /// history_cost: the loads were not computed (LoadHistory::kMaxSamples, kMaxKernelPieces);
+  /// violation_value holds the decades the law's times span.
+  enum class Invariant : std::int8_t { none, loads_sum, not_finite, radii_order, history_cost } invariant = Invariant::none;
   NominalRadii radii;            ///< A1, A2 of the two-level phase (frozen, eq 9.18)
   double a1_inf = 0.0;           ///< long-term radii and area fraction (J = J(inf))
   double a2_inf = 0.0;
@@ -67,7 +70,7 @@ struct PointSummary {
 
   bool valid() const { return validity == Validity::valid; }
   /// One sentence telling why the result is flagged, with the numbers; "" when valid.
-  std::string reason() const;
+  std::string reason(std::string_view time_unit = "T_eps") const;
 };
 
 /// A point's summary plus its state at the requested times.
