@@ -216,6 +216,11 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   attributes.identity = run::join(config.identity, "\n");
   attributes.creep_law = std::string(config.creep_law->name);
   attributes.C = config.C;
+  attributes.time_unit = config.time_unit();
+  if (config.material) {
+    attributes.material = {config.material->name(), config.material->text(), config.material->instantaneous_modulus_Pa(),
+                           config.material->plane_strain_modulus_Pa(), config.material->poisson()};
+  }
 
   run::MapRun map_run(config, layout, attributes, start, tiling, std::cerr);
   const sweep::ScheduleResult result =

@@ -19,6 +19,7 @@
 #include "app/command_options.hpp"
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
+#include "io/crc32.hpp"
 #include "model/creep_laws.hpp"
 #include "model/parameters.hpp"
 #include "run/text_lines.hpp"
@@ -37,7 +38,7 @@ constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output"
 // resolved_text, after the [grid] keys.
 enum class Fixed {
   none,  // a [grid] key: a model parameter's axis
-  model_C, model_creep_law, time_times, output_file, output_quantities,
+  model_C, model_creep_law, model_material, time_times, output_file, output_quantities,
   run_chunk, run_quiet, run_resume, run_overwrite,
   reference_method, reference_grid, reference_sample, reference_seed
 };
@@ -67,13 +68,20 @@ std::vector<KeySpec> make_keys() {
   for (const model::CreepLawSpec& law : model::creep_laws()) {
     for (const model::Parameter* p : model::sweep_axes(law.parameters)) add_axis(p);
   }
+  add_axis(&model::temperature_parameter());
+  add_axis(&model::ramp_time_parameter());
   const model::Parameter& C = *model::find_parameter(model::kShapeConstant);
   keys.push_back({"model", "C", "C", std::string(C.point_default), std::string(C.meaning), std::string(C.range),
                   Fixed::model_C, &C});
   keys.push_back({"model", "creep_law", "NAME", std::string(model::creep_laws().front().name),
                   "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
                   Fixed::model_creep_law});
-  keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5", "snapshot times of the stored time series, in T_eps",
+  keys.push_back({"model", "material", "FILE", "",
+                  "material file (materials/NAME.ini, see README); replaces creep_law: the axes are then l, dh, "
+                  "[temperature when the file has a [shift]], pbar, s, and times are in the file's time_unit",
+                  "empty, or a readable material file", Fixed::model_material});
+  keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5",
+                  "snapshot times of the stored time series, in T_eps (or the material's time_unit)",
                   kTimesRange, Fixed::time_times});
   keys.push_back({"output", "file", "FILE", "regime_map.h5", "the HDF5 regime map to write",
                   "a non-empty file name without '#' or line breaks", Fixed::output_file});
@@ -115,6 +123,13 @@ std::vector<KeySpec> make_keys() {
 const std::vector<KeySpec>& keys() {
   static const std::vector<KeySpec> kKeys = make_keys();
   return kKeys;
+}
+
+std::size_t key_index(const model::Parameter* axis) {
+  for (std::size_t k = 0; k < keys().size(); ++k) {
+    if (keys()[k].parameter == axis) return k;
+  }
+  return keys().size();
 }
 
 std::size_t key_index(Fixed fixed) {
@@ -487,6 +502,17 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
             problem = "'" + text + "' is not a known creep law";
           }
           break;
+        case Fixed::model_material:
+          config.material_path = text;
+          if (!text.empty()) {
+            try {
+              config.material = read_material_file(text);
+              config.material_spec = std::make_shared<const model::CreepLawSpec>(config.material->spec());
+            } catch (const UsageError& e) {
+              problem = e.what();
+            }
+          }
+          break;
         case Fixed::time_times: {
           map::Axis times;
           problem = check_axis(text, false, [](double t) { return t >= 0.0; }, times);
@@ -544,19 +570,51 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
                          "; valid range: " + spec.range);
     }
   }
-  // The grid: the creep law's sweep axes, in their order. A [grid] key set for a parameter
-  // the law does not have is refused.
+  // A material replaces the creep law (and its parameters) by the file's.
+  if (config.material) {
+    const std::size_t law_key = key_index(Fixed::model_creep_law);
+    if (settings[law_key].source != Source::default_value) {
+      problems.push_back(dotted(Fixed::model_creep_law) + " = " + settings[law_key].text +
+                         ": model.material is given too; valid range: one of model.creep_law and model.material");
+    }
+    config.creep_law = config.material_spec.get();
+  }
+  // The grid: the creep law's sweep axes, in their order, and ramp_time last when it is set.
+  // A [grid] key set for a parameter the law does not have is refused.
   config.grid.axes.clear();
-  const std::vector<const model::Parameter*> wanted = model::sweep_axes(config.creep_law->parameters);
+  std::vector<const model::Parameter*> wanted = model::sweep_axes(config.creep_law->parameters);
+  const std::size_t ramp_key = key_index(&model::ramp_time_parameter());
+  config.ramp = settings[ramp_key].source != Source::default_value;
+  if (config.ramp) wanted.push_back(&model::ramp_time_parameter());
   for (const model::Parameter* p : wanted) {
     for (std::size_t k = 0; k < keys().size(); ++k) {
-      if (keys()[k].parameter == p && keys()[k].fixed == Fixed::none) config.grid.axes.push_back(axes[k]);
+      const KeySpec& spec = keys()[k];
+      if (spec.fixed != Fixed::none || spec.name != p->name) continue;
+      map::Axis axis = axes[k];
+      if (settings[k].source == Source::default_value && !p->sweep_default.empty() &&
+          std::string(p->sweep_default) != spec.default_text) {
+        // A parameter whose default depends on the material (temperature: the shift's T_ref).
+        check_axis(std::string(p->sweep_default), p->integer, [](double) { return true; }, axis);
+        axis.name = spec.name;
+      }
+      // A material's temperature is also held to its shift's range (WLF diverges below
+      // T_ref - C2).
+      if (config.material && p->name == model::temperature_parameter().name) {
+        for (const double v : axis.values) {
+          if (!config.material->shift()->admits(v)) {
+            problems.push_back(dotted(spec) + " = " + settings[k].text + ": value " + map::format_axis_value(v) +
+                               " is outside its range: " + config.material->shift()->range());
+            break;
+          }
+        }
+      }
+      config.grid.axes.push_back(axis);
     }
   }
   for (std::size_t k = 0; k < keys().size(); ++k) {
     const KeySpec& spec = keys()[k];
     if (spec.fixed != Fixed::none || settings[k].source == Source::default_value) continue;
-    if (std::find(wanted.begin(), wanted.end(), spec.parameter) == wanted.end()) {
+    if (std::none_of(wanted.begin(), wanted.end(), [&](const model::Parameter* p) { return p->name == spec.name; })) {
       problems.push_back(dotted(spec) + " = " + settings[k].text + ": the creep law " +
                          std::string(config.creep_law->name) + " has no parameter " + spec.name +
                          "; valid range: the axes of that law's grid");
@@ -612,7 +670,7 @@ std::string resolved_value(Fixed key, const std::string& text, const sweep::Swee
     case Fixed::model_C:
       return map::format_axis_value(config.C);
     case Fixed::model_creep_law:
-      return std::string(config.creep_law->name);
+      return std::string(config.material ? model::creep_laws().front().name : config.creep_law->name);
     case Fixed::run_chunk:
       return config.chunk == sweep::kAutoChunk ? "auto" : std::to_string(config.chunk);
     case Fixed::run_quiet:
@@ -667,6 +725,14 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
   }
   lines.push_back("model.C = " + map::format_axis_value(config.C));
   lines.push_back("model.creep_law = " + std::string(config.creep_law->name));
+  if (config.material) {
+    // The material's content, not its path: the same file moved is the same map.
+    std::uint32_t crc = io::crc32(reinterpret_cast<const unsigned char*>(config.material->text().data()),
+                                  config.material->text().size());
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", crc);
+    lines.push_back("model.material = " + config.material->name() + " (file crc32 " + hex + ")");
+  }
   lines.push_back("time.times = " + map::format_axis_values(config.times));
   lines.push_back(std::string("output.quantities = ") +
                   (config.quantities == map::Quantities::full ? "full" : "regime"));

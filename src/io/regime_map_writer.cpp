@@ -108,7 +108,7 @@ const char* axis_spacing(const map::Axis& axis) {
 
 RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layout,
                                  const MapAttributes& attributes)
-    : path_(path), encoder_(layout) {  // the encoder checks the layout before any file exists
+    : time_unit_(attributes.time_unit), path_(path), encoder_(layout) {  // the encoder checks the layout before any file exists
   // Our exceptions name the file and the operation; HDF5's own stack dump would only
   // bury them (this is process-wide, and nothing in punchsweep wants the dump).
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -132,6 +132,14 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   write_string_attribute(file_, "identity", attributes.identity, in);
   write_string_attribute(file_, "creep_law", attributes.creep_law, in);
   write_double_attribute(file_, "C", attributes.C, in);
+  write_string_attribute(file_, "time_unit", attributes.time_unit, in);
+  if (!attributes.material.name.empty()) {
+    write_string_attribute(file_, "material", attributes.material.name, in);
+    write_string_attribute(file_, "material_file", attributes.material.text, in);
+    write_double_attribute(file_, "E0_Pa", attributes.material.E0_Pa, in);
+    write_double_attribute(file_, "E0_star_Pa", attributes.material.E0_star_Pa, in);
+    write_double_attribute(file_, "poisson", attributes.material.poisson, in);
+  }
   write_string_attribute(file_, "scales", kScales, in);
   if (layout.bem) {
     const BemSetup& bem = *layout.bem;
@@ -178,7 +186,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
       check(H5DSattach_scale(dataset, coordinates_[d], static_cast<unsigned>(d)),
             "attach dimension " + (d < axes ? layout.grid.axes[d].name : std::string("time")) + " " + where);
     }
-    if (!spec.scale.empty()) write_scale(dataset, std::string(spec.scale), where);
+    if (!spec.scale.empty()) write_units(dataset, std::string(spec.scale), where);
     write_string_attribute(dataset, "long_name", std::string(spec.long_name), where);
     if (!spec.comment.empty()) write_string_attribute(dataset, "comment", std::string(spec.comment), where);
     if (spec.kind == map::Kind::flag) {
@@ -190,6 +198,18 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
       write_double_attribute(dataset, "_FillValue", std::numeric_limits<double>::quiet_NaN(), where);
     }
     variables_.push_back(std::move(dataset));
+  }
+}
+
+/// A time in a material's unit and a temperature have real units; everything else is a
+/// pure number with its scale (write_scale).
+void RegimeMapWriter::write_units(hid_t object, const std::string& scale, const std::string& where) const {
+  if (scale == "T_eps" && time_unit_ != "T_eps") {
+    write_string_attribute(object, "units", time_unit_, where);
+  } else if (scale == "degC") {
+    write_string_attribute(object, "units", "degC", where);
+  } else {
+    write_scale(object, scale, where);
   }
 }
 
@@ -209,7 +229,7 @@ void RegimeMapWriter::create_coordinate(const std::string& name, const std::vect
   }
   check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
   const std::string on = "on " + where;
-  write_scale(dataset, scale, on);
+  write_units(dataset, scale, on);
   write_string_attribute(dataset, "long_name", long_name, on);
   coordinates_.push_back(std::move(dataset));
 }

@@ -26,6 +26,18 @@ struct MapAttributes {
   std::string identity;
   std::string creep_law;
   double C = 0.0;  ///< shape constant of f(r) = C r^s / R^(s-1)
+  /// The unit of every time: "T_eps" (then a scale, written as scaled_by) or a material's
+  /// time unit ("s", "min", "h"; then written as units).
+  std::string time_unit = "T_eps";
+  /// A material map (empty name: none): the file's name line and text, its instantaneous
+  /// Young's modulus E_0 and the plane-strain E0* = E_0/(1 - nu^2) in Pa, nu.
+  struct Material {
+    std::string name;
+    std::string text;
+    double E0_Pa = 0.0;
+    double E0_star_Pa = 0.0;
+    double poisson = 0.0;
+  } material;
 };
 
 /// Writes a regime map: an HDF5 file laid out as a netCDF-4/CF-1.8 dataset, which
@@ -58,7 +70,8 @@ struct MapAttributes {
 ///   part of one inside the grid) is stored encoded (TileEncoder) with H5Dwrite_chunk; any
 ///   other box goes through HDF5's filter pipeline. Readers see no difference.
 /// - Global attributes: Conventions "CF-1.8", title, source, history, config, identity, creep_law,
-///   C, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
+///   C, time_unit, for a material map material, material_file (its text), E0_Pa, E0_star_Pa
+///   (the pressure scale) and poisson, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
 ///   bem_seed (int64), bem_method (string), then completed (int8, 0 until finish() sets 1),
 ///   and from finish(): ranks, wall_seconds, points_per_second.
 ///
@@ -98,6 +111,8 @@ class RegimeMapWriter {
   const std::string& path() const { return path_; }
 
  private:
+  /// units (and scaled_by) of a value measured in `scale` (see write_units in the .cpp).
+  void write_units(hid_t object, const std::string& scale, const std::string& where) const;
   void create_coordinate(const std::string& name, const std::vector<double>& values, const std::string& scale,
                          const std::string& long_name);
   /// An int8 flag variable when `codes`, else float64; over the time axis too when `series`.
@@ -105,6 +120,7 @@ class RegimeMapWriter {
   void write_hyperslab(const map::TileBox& box, const map::TileData& data);
   void require_open(const char* operation) const;
 
+  std::string time_unit_;
   std::string path_;
   TileEncoder encoder_;  ///< holds the layout; encodes write_tile's whole-chunk tiles
   Handle file_;

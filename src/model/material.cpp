@@ -295,6 +295,7 @@ Material Material::parse(std::string_view text, std::string_view origin) {
     m.shift_ = shift;
     auto temperature = std::make_shared<Temperature>(Temperature{f.text("shift.T_ref"), temperature_parameter()});
     temperature->parameter.point_default = temperature->reference;
+    temperature->parameter.sweep_default = temperature->reference;
     m.temperature_ = std::move(temperature);
   }
   // Build once, so that what the law's own checks refuse is refused here, with the file named.

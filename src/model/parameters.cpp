@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "model/creep_laws.hpp"
+#include "model/load_shape.hpp"
+#include "model/material.hpp"
 #include "model/shape.hpp"
 
 namespace punchsweep::model {
@@ -49,6 +51,9 @@ const Parameter* find_parameter(std::string_view name) {
     for (const Parameter& p : law.parameters) {
       if (p.name == name) return &p;
     }
+  }
+  for (const Parameter* p : {&temperature_parameter(), &ramp_time_parameter()}) {
+    if (p->name == name) return p;
   }
   return nullptr;
 }

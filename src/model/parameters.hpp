@@ -50,7 +50,8 @@ inline constexpr std::string_view kShapeConstant = "C";
 /// (l, dh first; pbar, s after), then C, which is one value per sweep.
 std::span<const Parameter> problem_parameters();
 
-/// The parameter called `name` among the problem's and every creep law's; nullptr if none.
+/// The parameter called `name` among the problem's, every creep law's, a material's
+/// (temperature) and the load's (ramp_time); nullptr if none.
 const Parameter* find_parameter(std::string_view name);
 
 /// A sweep's axes for a creep law with parameters `law`: l, dh, the law's parameters, pbar,

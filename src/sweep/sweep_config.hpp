@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "map/grid.hpp"
 #include "map/quantities.hpp"
 #include "model/creep_laws.hpp"
+#include "model/material.hpp"
 
 namespace punchsweep::sweep {
 
@@ -48,8 +50,19 @@ inline constexpr std::size_t kAutoChunk = 0;
 struct SweepConfig {
   map::Grid grid;                     ///< [grid]: model::sweep_axes of the creep law, in that order
   double C = 0.5;                     ///< [model] C: shape constant, > 0
-  /// [model] creep_law: one of model::creep_laws(); the grid's axes include its parameters.
+  /// [model] creep_law: one of model::creep_laws(), or material_spec; the grid's axes
+  /// include its parameters.
   const model::CreepLawSpec* creep_law = &model::creep_laws().front();
+  /// [model] material: the material file (nullptr when the map is of creep_law) and its
+  /// path as given; material_spec is material->spec(), which creep_law then points to.
+  std::shared_ptr<const model::Material> material;
+  std::string material_path;
+  std::shared_ptr<const model::CreepLawSpec> material_spec;
+  /// The grid has a ramp_time axis (the load rises over ramp_time, then holds); without it
+  /// the load is a step.
+  bool ramp = false;
+  /// The unit of every time: the material's time_unit, or T_eps.
+  std::string time_unit() const { return material ? material->time_unit() : "T_eps"; }
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps
   std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
   map::Quantities quantities = map::Quantities::full;  ///< [output] quantities

@@ -71,6 +71,10 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
       pbar_(require_axis(grid, model::kPressure)),
       s_(require_axis(grid, model::kExponent)) {
   for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
+  law_axes_ = material_.size();
+  if (const std::size_t ramp = grid.find(model::ramp_time_parameter().name); ramp < grid.rank()) {
+    material_.push_back(ramp);
+  }
   if (grid.rank() != 4 + material_.size()) {
     throw std::invalid_argument("sweep: the grid has axes beyond the model's and the creep law's parameters");
   }
@@ -108,6 +112,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
   std::size_t materials = 1;
   for (const std::size_t a : material_) materials *= c[a];
   std::vector<std::unique_ptr<model::CreepLaw>> creep(materials);
+  std::vector<model::LoadShape> loading(materials);
   std::vector<std::size_t> material_offset(materials);  // in the box, from the strides
   std::vector<std::size_t> material_global(materials);  // row-major over the grid's law axes
   std::vector<double> law_values(material_.size());
@@ -124,7 +129,8 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
       scale *= n[a];
       law_values[k] = value(a, i);
     }
-    creep[m] = model::make_creep_law(law_, law_values);
+    creep[m] = model::make_creep_law(law_, std::span<const double>(law_values).first(law_axes_));
+    if (material_.size() > law_axes_) loading[m] = model::LoadShape::ramp(law_values.back());
   }
   std::size_t materials_global = 1;
   for (const std::size_t a : material_) materials_global *= n[a];
@@ -167,6 +173,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
             continue;
           }
           problem.pbar0 = value(pbar_, ip);
+          problem.loading = loading[m];
           model::single_level_ends(problem, *creep[m], &e.h_0, &e.h_inf, &e.a1_inf_single);
           e.ready = true;
           if (cache_) ends_[g] = e;
@@ -178,6 +185,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
         problem.dh = value(dh_, idh);
         for (std::size_t m = 0; m < materials; ++m) {
           const model::CreepLaw& law = *creep[m];
+          problem.loading = loading[m];
           for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
             problem.pbar0 = value(pbar_, ip);
             const Ends& e = ends[m * c[pbar_] + ip];
@@ -220,7 +228,8 @@ model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vecto
   problem.pbar0 = value(pbar_);
   problem.shape = model::Shape{static_cast<int>(value(s_)), C_};
   law_values->clear();
-  for (const std::size_t a : material_) law_values->push_back(value(a));
+  for (std::size_t k = 0; k < law_axes_; ++k) law_values->push_back(value(material_[k]));
+  if (material_.size() > law_axes_) problem.loading = model::LoadShape::ramp(value(material_.back()));
   return problem;
 }
 

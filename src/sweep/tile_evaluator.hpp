@@ -19,7 +19,7 @@ namespace punchsweep::sweep {
 /// Evaluates every point of a tile with the model (the same functions as
 /// `punchsweep point`). The grid's axes are the model's parameters by name
 /// (model::sweep_axes): l, dh, pbar, s and the creep law's own (for the standard linear
-/// solid T). Sub-results that depend on fewer coordinates are computed once: the touchdown
+/// solid T), and ramp_time when the load is a ramp. Sub-results that depend on fewer coordinates are computed once: the touchdown
 /// and long-term guide per (l, s, dh) and the single-level ends per (l, s, material, pbar)
 /// for the whole run of this process, the elastic start per (l, s, dh, pbar) per tile.
 /// Each is a pure function of its coordinates, so no value depends on the tiling or the
@@ -76,7 +76,10 @@ class TileEvaluator {
   std::vector<double> times_;
   map::Quantities quantities_;
   std::size_t l_, dh_, pbar_, s_;          ///< positions of the problem's axes in the grid
-  std::vector<std::size_t> material_;      ///< positions of the law's parameters, in its order
+  /// Positions of the law's parameters, in its order, then of ramp_time when the grid has
+  /// it: the axes that make the material and its loading.
+  std::vector<std::size_t> material_;
+  std::size_t law_axes_ = 0;               ///< how many of material_ are the law's
   std::optional<ReferenceSample> sample_;
   reference::ReferenceOptions reference_options_;
   bool cache_ = false;                 ///< the run-wide caches fit (else: per tile)

@@ -64,7 +64,9 @@ MapAttributes small_attributes() {
           "[grid]\nl = linspace(0.5, 1, 3)\n",
           "grid.l = 0.5, 0.75, 1\nmodel.C = 0.5",
           "standard_linear_solid",
-          0.5};
+          0.5,
+          "T_eps",
+          {}};
 }
 
 /// Row-major flat index of a grid point.
@@ -549,7 +551,7 @@ TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
   names.clear();
   ASSERT_GE(H5Aiterate2(file, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect_attribute, &names), 0);
   EXPECT_EQ(names,
-            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "creep_law", "C", "scales",
+            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "creep_law", "C", "time_unit", "scales",
                                       "completed", "ranks", "wall_seconds", "points_per_second"}));
 
   const Handle regime = open_dataset(file, "regime");

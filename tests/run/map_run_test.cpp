@@ -63,7 +63,7 @@ struct SmallRun {
   map::Tiling tiling{config.grid.shape(), 2};
   io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
   io::TileEncoder encoder{layout};
-  io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1\nrun.chunk = 2", "standard_linear_solid", 0.5};
+  io::MapAttributes attributes{"t", "s", "h", "c", "grid.l = 0.75, 1\nrun.chunk = 2", "standard_linear_solid", 0.5, "T_eps", {}};
   run::OutputPaths paths{config.output};
 };
 

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# [model] material = FILE: a map over l, dh, temperature, pbar, s (and ramp_time when set)
+# whose times are in the file's unit, with the material's text, E_0 and E0* in its
+# attributes; the WLF shift holds across the temperature axis (t* at th = a_T t* at T_ref);
+# a ramp_time axis of 0 reproduces the step map; the same map on 1 and 3 ranks; --resume
+# refuses a map made with a different material file; a bad file or temperature is refused.
+source "$(dirname "$0")/common.sh"
+PY=/usr/bin/python3
+fail() { echo "FAIL: $*"; exit 1; }
+cat > wlf.ini <<'INI'
+# a made-up WLF material for the test
+[material]
+name = test polymer, made up for this test
+law = prony
+modulus_unit = MPa
+time_unit = s
+poisson = 0.4
+E_inf = 1.0
+E_i = 2.0, 1.5, 0.5
+tau_i = 0.5, 20, 600
+[shift]
+kind = wlf
+C1 = 17.44
+C2 = 51.6
+T_ref = 105
+INI
+grid=(--grid.l 0.75,1 --grid.dh 'linspace(0.01, 0.08, 8)' --grid.temperature 105,110,120
+      --grid.pbar 'logspace(0.005, 0.04, 4)' --grid.s 2 --time.times 0,1,10,100)
+run_ranks 0 sweep --model.material wlf.ini "${grid[@]}" --quiet --output one.h5 || fail "material sweep"
+run_ranks 3 sweep --model.material wlf.ini "${grid[@]}" --quiet --chunk 40 --output three.h5 || fail "3 ranks"
+same_maps one.h5 three.h5 || fail "1 and 3 ranks differ"
+
+"$PY" - one.h5 wlf.ini <<'PY' || fail "map contents"
+import sys, numpy as np, xarray as xr
+d = xr.open_dataset(sys.argv[1], engine="h5netcdf")
+assert list(d.regime.dims) == ["l", "dh", "temperature", "pbar", "s"], d.regime.dims
+assert d.attrs["time_unit"] == "s" and d.t_star.attrs["units"] == "s" and d.time.attrs["units"] == "s"
+assert d.temperature.attrs["units"] == "degC", d.temperature.attrs
+assert d.attrs["material_file"] == open(sys.argv[2]).read()
+assert abs(d.attrs["E0_Pa"] - 5.0e6) < 1e-6 and abs(d.attrs["E0_star_Pa"] - 5.0e6 / (1 - 0.16)) < 1e-6
+assert d.pbar.attrs["scaled_by"] == "E0/(1-nu^2)"
+# WLF: log10 a_T = -C1 (th - T_ref) / (C2 + th - T_ref); t* scales with a_T, h does not.
+t = d.t_star.values
+for k, th in enumerate(d.temperature.values):
+    a_T = 10 ** (-17.44 * (th - 105) / (51.6 + th - 105))
+    ok = np.isfinite(t[:, :, 0]) & (t[:, :, 0] > 0)
+    assert ok.sum() > 10, ok.sum()
+    rel = np.abs(t[:, :, k][ok] - a_T * t[:, :, 0][ok]) / (a_T * t[:, :, 0][ok])
+    assert rel.max() < 1e-10, (th, rel.max())
+    assert (d.regime.values[:, :, k] == d.regime.values[:, :, 0]).all()
+    assert np.array_equal(d.h_inf.values[:, :, k], d.h_inf.values[:, :, 0])
+print("material map ok")
+PY
+
+# A ramp_time axis: 0 is the step (bit for bit), and a longer ramp touches no earlier.
+run_ranks 0 sweep --model.material wlf.ini "${grid[@]}" --grid.ramp_time 0,50 --quiet --output ramp.h5 || fail "ramp"
+"$PY" - one.h5 ramp.h5 <<'PY' || fail "ramp map"
+import sys, numpy as np, xarray as xr
+step = xr.open_dataset(sys.argv[1], engine="h5netcdf")
+ramp = xr.open_dataset(sys.argv[2], engine="h5netcdf")
+assert ramp.regime.dims[-1] == "ramp_time" and ramp.ramp_time.attrs["units"] == "s"
+for v in ["regime", "t_star", "h_inf", "a1_inf", "a2_inf", "a1", "a2", "P1", "P2"]:
+    assert np.array_equal(ramp[v].isel(ramp_time=0).values, step[v].values, equal_nan=True), v
+t0 = ramp.t_star.isel(ramp_time=0).values
+t1 = ramp.t_star.isel(ramp_time=1).values
+ok = np.isfinite(t0)
+assert (t1[ok] >= t0[ok]).all()
+print("ramp map ok")
+PY
+
+# --resume compares the material's content.
+sed 's/E_inf = 1.0/E_inf = 1.1/' wlf.ini > other.ini
+cp other.ini wlf2.ini
+run_ranks 0 sweep --model.material wlf2.ini "${grid[@]}" --quiet --output one.h5 --resume 2> resume.log &&
+  fail "--resume accepted a map of another material"
+grep -q "model.material" resume.log || { cat resume.log; fail "the refusal does not name model.material"; }
+
+# Bad inputs: a temperature below T_ref - C2, a bad file, creep_law beside material.
+run_ranks 0 sweep --model.material wlf.ini --grid.temperature 40 --dry-run 2> bad.log && fail "40 degC accepted"
+grep -q "grid.temperature = 40: value 40 is outside its range: temperature > 53.4" bad.log || { cat bad.log; fail "temperature"; }
+sed 's/tau_i = 0.5, 20, 600/tau_i = 0.5, 20, 20/' wlf.ini > bad.ini
+run_ranks 0 sweep --model.material bad.ini --dry-run 2> bad.log && fail "repeated tau accepted"
+test $? -ne 0
+grep -q "bad.ini:.*tau_i = 0.5, 20, 20.*strictly increasing" bad.log || { cat bad.log; fail "bad file message"; }
+run_ranks 0 sweep --model.material wlf.ini --model.creep_law sls --dry-run 2> bad.log && fail "both accepted"
+grep -q "model.material is given too" bad.log || { cat bad.log; fail "creep_law with material"; }
+test ! -e regime_map.h5 || fail "a refused run left a map"
+echo "material_map: ok"
