@@ -39,6 +39,19 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
     stretch.first_panel = panels_;
     stretch.panels = std::max(1, static_cast<int>(std::ceil(length / width)));
     stretch.width = std::max(length, 1e-300) / stretch.panels;
+    const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
+    if (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width) {
+      // Graded: panels of the uniform width until the growth exceeds it, then growing.
+      stretch.edges.push_back(edges[j]);
+      while (stretch.edges.back() < edges[j + 1]) {
+        const double v = stretch.edges.back();
+        double next = v + std::max(width, growth * v);
+        // No sliver at the end: a last step under half a panel joins the one before.
+        if (edges[j + 1] - next < 0.5 * (next - v)) next = edges[j + 1];
+        stretch.edges.push_back(next);
+      }
+      stretch.panels = static_cast<int>(stretch.edges.size()) - 1;
+    }
     panels_ += stretch.panels;
     stretches_.push_back(stretch);
   }
@@ -47,7 +60,9 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
   for (const Stretch& stretch : stretches_) {
     for (int p = 0; p < stretch.panels && ok_; ++p) {
       for (int j = 0; j < n_ && ok_; ++j) {
-        const double v = stretch.v_start + (p + 0.5 * (nodes_[j] + 1.0)) * stretch.width;
+        const double v = stretch.edges.empty()
+                             ? stretch.v_start + (p + 0.5 * (nodes_[j] + 1.0)) * stretch.width
+                             : stretch.panel_start(p) + 0.5 * (nodes_[j] + 1.0) * stretch.panel_width(p);
         const std::size_t i = static_cast<std::size_t>(stretch.first_panel + p) * n_ + j;
         ok_ = sample(t0 + v * v, &Q1_[i], &Q2_[i]);
       }
@@ -65,17 +80,24 @@ int LoadHistory::panel_at(double v) const {
   std::size_t j = stretches_.size() - 1;
   while (j > 0 && v < stretches_[j].v_start) --j;
   const Stretch& s = stretches_[j];
+  if (!s.edges.empty()) {
+    const auto above = std::upper_bound(s.edges.begin(), s.edges.end(), v);
+    const int relative = static_cast<int>(above - s.edges.begin()) - 1;
+    return s.first_panel + std::clamp(relative, 0, s.panels - 1);
+  }
   return s.first_panel + std::min(static_cast<int>((v - s.v_start) / s.width), s.panels - 1);
 }
 
 double LoadHistory::panel_start(int panel) const {
   const Stretch& s = stretch_of(panel);
-  return s.v_start + (panel - s.first_panel) * s.width;
+  return s.panel_start(panel - s.first_panel);
 }
 
 void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const {
   const Stretch& s = stretch_of(panel);
-  const double xi = 2.0 * ((v - s.v_start) / s.width - (panel - s.first_panel)) - 1.0;
+  const int relative = panel - s.first_panel;
+  const double xi = s.edges.empty() ? 2.0 * ((v - s.v_start) / s.width - relative) - 1.0
+                                    : 2.0 * (v - s.panel_start(relative)) / s.panel_width(relative) - 1.0;
   const std::size_t base = static_cast<std::size_t>(panel) * n_;
   interpolate_nodes(&Q1_[base], &Q2_[base], xi, Q1, Q2);
 }
@@ -86,13 +108,25 @@ LoadHistory::Cost LoadHistory::cost(const CreepWeightedLoad& load, double t0, do
   const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
   const double width = quadrature.panel_width * std::sqrt(creep.creep_time_scale());
   Cost c;
-  c.samples = (std::ceil(v_end / width) + static_cast<double>(load.shape().kinks().size()) + 1.0) *
-              quadrature.nodes_per_panel;
-  // The kernel pieces of the wide form over the memory window (the narrow form samples Q
-  // afresh instead and needs a handful).
+  // Panels: uniform, or graded past kMaxUniformPanels (5 of the uniform width, then a
+  // factor 1 + kPanelGrowth each), in each stretch between kinks.
+  double panels = std::ceil(v_end / width);
+  const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
+  if (panels > kMaxUniformPanels && growth * v_end > width) {
+    panels = std::min(panels, 1.0 / growth + std::log(v_end * growth / width) / std::log1p(growth) + 1.0);
+  }
+  c.samples = (panels + static_cast<double>(load.shape().kinks().size()) + 1.0) * quadrature.nodes_per_panel;
+  // The kernel pieces of the wide form over the memory window, uniform or graded by age as
+  // relaxation_integral_mapped cuts them (the narrow form samples Q afresh, a handful).
   const double window = std::min(creep.relaxation_memory(), t_end);
   const double panel_span = (2.0 * v_end + width) * width;
-  c.kernel_pieces = creep.relaxation_memory() < panel_span ? 0.0 : window / kernel_piece_span(creep);
+  const double span = kernel_piece_span(creep);
+  double pieces = std::ceil(window / span);
+  if (pieces > kMaxUniformKernelPieces) {
+    pieces = 1.0 / kAgeRatio + std::log(window * kAgeRatio / span) / std::log1p(kAgeRatio) + 1.0;
+  }
+  // The pieces restart at each panel's edge, so each panel adds about one.
+  c.kernel_pieces = creep.relaxation_memory() < panel_span ? 0.0 : pieces + panels;
   return c;
 }
 
@@ -121,7 +155,9 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   const double memory = creep_.relaxation_memory();
   const double v_t = std::sqrt(std::max(t - t0_, 0.0));
   // The stretch of time the panel at t spans; a memory shorter than that is a narrow kernel.
-  const double width_at_t = stretch_of(panel_at(v_t)).width;
+  const int panel_t = panel_at(v_t);
+  const Stretch& stretch_t = stretch_of(panel_t);
+  const double width_at_t = stretch_t.panel_width(panel_t - stretch_t.first_panel);
   const double panel_span = (2.0 * v_t + width_at_t) * width_at_t;
   const double tau_min = std::max(0.0, t - memory);
   if (memory < panel_span) return load_near(t, tau_min, v_t, Q1_at_t, Q2_at_t, P1, P2, near);

@@ -78,10 +78,27 @@ class LoadHistory {
   /// A stretch of v between kinks of the load, cut into `panels` panels of equal width.
   struct Stretch {
     double v_start = 0.0;
-    double width = 0.0;  ///< of each panel
+    double width = 0.0;  ///< of each panel (uniform stretches)
     int first_panel = 0;
     int panels = 0;
+    /// Graded stretches: the panels' edges (panels + 1 of them); empty when uniform.
+    std::vector<double> edges;
+    double panel_start(int relative) const {
+      return edges.empty() ? v_start + relative * width : edges[static_cast<std::size_t>(relative)];
+    }
+    double panel_width(int relative) const {
+      return edges.empty() ? width
+                           : edges[static_cast<std::size_t>(relative) + 1] - edges[static_cast<std::size_t>(relative)];
+    }
   };
+  /// The most uniform panels a stretch takes; beyond, they grow geometrically in v
+  /// (kPanelGrowth), as a spectrum of retardation times over many decades needs.
+  static constexpr int kMaxUniformPanels = 64;
+  /// A graded panel at v spans max(width, kPanelGrowth v width / width0) in v, width0 the
+  /// default panel width (HistoryQuadrature{}.panel_width sqrt(creep time)): at the default
+  /// a factor 1.44 in time a panel, and finer in proportion to a finer width, so that the
+  /// width still controls the error everywhere.
+  static constexpr double kPanelGrowth = 0.2;
   /// Calls f(a, b) for the pieces of [lo, hi] between the load's kinks (nothing if hi <= lo).
   template <class F>
   void for_each_piece(double lo, double hi, F&& f) const {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "model/gauss_legendre.hpp"
@@ -31,6 +30,8 @@ constexpr double kEllipse = 4.5;
 // exp(-e^v) (exp(-s r)) is negligible beyond e^v = 50, and 1 - exp(-e^v) below v = -37.
 constexpr double kCutoff = 50.0;
 constexpr double kTailLog = -37.0;
+// A quadrature needing more panels than this is not built (the other variable serves).
+constexpr std::size_t kMaxPanels = 1000;
 
 std::string shortest(double value) {
   char buffer[32];
@@ -103,11 +104,13 @@ bool panel_fits(double l, double r, const std::vector<Singular>& singular, doubl
 
 // Panels covering [lo, hi], each as wide as the singularities allow (greedy from lo; the
 // ellipse of a wider panel with the same left end contains the narrower one's, so the
-// greedy cover is the shortest).
-std::vector<double> panel_breaks(double lo, double hi, const std::vector<Singular>& singular, double max_width) {
+// greedy cover is the shortest). Empty if more than `max_panels` would be needed.
+std::vector<double> panel_breaks(double lo, double hi, const std::vector<Singular>& singular, double max_width,
+                                 std::size_t max_panels) {
   std::vector<double> breaks{lo};
   double l = lo;
   while (l < hi) {
+    if (breaks.size() > max_panels) return {};
     double r = hi;
     if (!panel_fits(l, hi, singular, max_width)) {
       double good = l;
@@ -140,7 +143,9 @@ void panel_nodes(const std::vector<double>& breaks, std::vector<double>* nodes, 
 }  // namespace
 
 MittagLeffler::MittagLeffler(double a) : a_(a) {
-  if (!(a > 0.0 && a < 1.0)) throw std::invalid_argument("Mittag-Leffler order a = " + shortest(a) + " is outside 0 < a < 1");
+  if (!(a > 0.0 && a < 1.0)) {
+    throw std::invalid_argument("Mittag-Leffler order a = " + shortest(a) + " is outside its range: 0 < a < 1");
+  }
   sin_pi_a_ = sin_pi(a);
   cos_pi_a_ = a <= 0.5 ? std::cos(kPi * a) : -std::cos(kPi * (1.0 - a));
   // 2 cosh(u) + 2 cos(a pi) = 4 sinh^2(u/2) + 4 cos^2(a pi/2): both terms >= 0, no cancellation.
@@ -162,9 +167,10 @@ MittagLeffler::MittagLeffler(double a) : a_(a) {
     asymptotic_.push_back(g[k - 1]);
     asymptotic_size_.push_back(std::max(std::abs(g[k - 1]), std::abs(g[k])));
   }
-  // The series is used from the x where (i) exp(-s), the order of its error at its
-  // smallest term, is below the tolerance against f ~ g_1/x, and (ii) K terms reach the
-  // tolerance. f >= g_1/(2x) there.
+  // The asymptotic series is used from the x where (i) exp(-s), the order of its error at
+  // its smallest term, is below the tolerance against f ~ g_1/x, and (ii) K terms reach
+  // the tolerance (f >= g_1/(2x) there). s = x^(1/a) is 42 to 62 there for a >= 0.3, more
+  // for small a (178 at a = 0.1), where the terms decrease slowly.
   const double g1 = g[0];
   double s_remainder = 40.0;
   for (int it = 0; it < 20; ++it) s_remainder = std::log(1.0 / (kTruncation * g1)) + a * std::log(s_remainder);
@@ -182,17 +188,36 @@ MittagLeffler::MittagLeffler(double a) : a_(a) {
   // Variable v = log(r s): f = int exp(-e^v) R(a (v - log s)) dv with
   // R(u) = sin(a pi) / (pi (2 cosh u + 2 cos(a pi))), poles at v = log s +- i delta/a.
   const std::vector<Singular> v_singular{{-1.5, kInfinity, strip}, {L_lo, L_hi, delta / a}};
-  const std::vector<double> v_breaks = panel_breaks(kTailLog, std::log(kCutoff), v_singular, 8.0);
   // Variable w = a log r: f = int exp(-s e^(w/a)) R(w) dw / a, poles at w = +-i delta;
   // exp(-s e^(w/a)) is bounded for |Im w| < a pi/2 and grows beyond it where s e^(w/a) is
   // not small (w above about -a (L_hi + 1.5)).
   const double w_lo = a * (kTailLog - L_hi);
   const double w_hi = a * (std::log(kCutoff) - L_lo);
   const std::vector<Singular> w_singular{{-a * (L_hi + 1.5), kInfinity, a * strip}, {0.0, 0.0, delta}};
-  const std::vector<double> w_breaks = panel_breaks(w_lo, w_hi, w_singular, 6.0);
 
-  // A v node costs a division, a w node an exp (about four times as much).
-  fixed_rates_ = 4 * (w_breaks.size() - 1) < v_breaks.size() - 1;
+  // A v node costs a division, a w node an exp (about four times as much). The v panels
+  // grow in number like 1/(1 - a) as a -> 1, the w panels like 1/a as a -> 0; at least one
+  // of the two stays few. The likely cheaper is built first, the other only while it is
+  // cheaper still.
+  const auto build_v = [&](std::size_t max_panels) {
+    return panel_breaks(kTailLog, std::log(kCutoff), v_singular, 8.0, max_panels);
+  };
+  const auto build_w = [&](std::size_t max_panels) { return panel_breaks(w_lo, w_hi, w_singular, 6.0, max_panels); };
+  std::vector<double> v_breaks;
+  std::vector<double> w_breaks;
+  if (a < 0.97) {
+    v_breaks = build_v(kMaxPanels);
+    w_breaks = build_w(v_breaks.empty() ? kMaxPanels : (v_breaks.size() - 1) / 4);
+  } else {
+    w_breaks = build_w(kMaxPanels);
+    v_breaks = build_v(w_breaks.empty() ? kMaxPanels : 4 * (w_breaks.size() - 1) - 1);
+    if (!v_breaks.empty()) w_breaks.clear();
+  }
+  if (v_breaks.empty() && w_breaks.empty()) {
+    throw std::logic_error("Mittag-Leffler order a = " + shortest(a) + ": no quadrature within " +
+                           std::to_string(kMaxPanels) + " panels");
+  }
+  fixed_rates_ = !w_breaks.empty();
   std::vector<double> nodes;
   std::vector<double> weights;
   if (!fixed_rates_) {

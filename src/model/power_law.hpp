@@ -12,21 +12,28 @@ namespace punchsweep::model {
 ///   f(s) = E_a(-s^a) = int_0^inf exp(-r s) K(r) dr,
 ///   K(r) = sin(a pi) r^(a-1) / (pi (r^(2a) + 2 r^a cos(a pi) + 1)) > 0,
 /// with its derivative f'(s) = -s^(a-1) E_(a,a)(-s^a) = -int_0^inf r exp(-r s) K(r) dr.
-/// Three regions in x = s^a, each exact to rounding (all tables are set up per order a
-/// in the constructor; a call costs no special function beyond pow and atan2):
+/// Three regions in x = s^a, each exact to rounding; every table is set up per order a in
+/// the constructor (about 50 us; up to 0.4 ms near a = 1), so a call costs no special
+/// function beyond pow (and one atan2):
 ///  - x <= 0.5: the power series sum_k (-x)^k / Gamma(a k + 1) (no cancellation worth a
-///    digit: its terms' moduli sum to E_a(x) <= 3 E_a(-x));
-///  - x >= x_hi (s >= about 50): the asymptotic series
-///    sum_(k=1..K) (-1)^(k+1) x^-k / Gamma(1 - a k), K <= 100, whose error past its
+///    digit: its terms' moduli sum to E_a(x) <= 3 E_a(-x)); f' from sum_k (-x)^k / Gamma(a k);
+///  - x >= x_asymptotic() (s >= 42 to 65 for a >= 0.3, 178 at a = 0.1): the asymptotic
+///    series sum_(k=1..K) (-1)^(k+1) x^-k / Gamma(1 - a k), K <= 100, whose error past its
 ///    smallest term is of order exp(-s);
 ///  - in between, the integral by composite 16-point Gauss-Legendre on panels graded
-///    against the integrand's complex singularities, in one of two variables:
-///    v = log(r s), where exp(-e^v) is fixed and the spectrum moves with s (cheap: one
-///    division a node; used when the spectrum's poles, a distance (1 - a) pi / a from the
-///    real v axis, are not close: a up to about 0.8), or w = a log r, where the nodes are
-///    fixed rates r_j and f(s) = T + sum_j W_j exp(-r_j s) is a positive sum of
-///    exponentials (one exp a node; used near a = 1, where K tends to a delta at r = 1).
-///    The integrand is positive, so the sum keeps the relative accuracy of its terms.
+///    against the integrand's complex singularities (each panel's Bernstein ellipse of
+///    parameter 4.5 keeps clear of them: the discretization error is about 1e-21), in one
+///    of two variables. v = log(r s), where exp(-e^v) is fixed and the spectrum moves with
+///    s: one division a node, 176 nodes for a <= 0.72, rising to 1400 at a = 0.98 (its
+///    poles come within (1 - a) pi / a of the real axis). Or w = a log r, near a = 1 (from
+///    a = 0.98, where K tends to a delta at r = 1): the nodes are fixed rates r_j and
+///    f(s) = T + sum_j W_j exp(-r_j s), a positive sum of exponentials, one exp a node,
+///    350 to 530 nodes (700 at a = 1 - 1e-6). The integrand is positive, so the sum keeps
+///    the relative accuracy of its terms.
+/// Measured against mpmath (40+ digits) for a from 0.01 to 0.999 and s from 1e-6 to 1e6,
+/// and against exp(x^2) erfc(x) for a = 1/2: relative error below 1.3e-15 for f and s f'.
+/// A call costs about 60-200 ns in the series and asymptotic regions, and in the middle one
+/// 170 ns for a <= 0.72, 0.3 us at a = 0.9, 1 us at 0.98 and 2 us near a = 1.
 class MittagLeffler {
  public:
   /// Throws std::invalid_argument unless 0 < a < 1.
@@ -41,7 +48,7 @@ class MittagLeffler {
   double relaxation_rate(double s) const;
 
   /// The number of quadrature nodes of the middle region (a cost: each call there sums
-  /// over all of them), and whether they are fixed rates (the w variable, one exp each).
+  /// over them), and whether they are fixed rates (the w variable, one exp each).
   std::size_t quadrature_nodes() const { return node_a_.size(); }
   bool fixed_rates() const { return fixed_rates_; }
   /// The region boundaries in x = s^a: series below x_series, asymptotic from x_asymptotic.
@@ -60,7 +67,7 @@ class MittagLeffler {
   double sin_pi_a_, cos_pi_a_;
   double x_series_, x_asymptotic_;
   std::vector<double> series_, series_rate_;          // 1/Gamma(a k + 1), k >= 0; 1/Gamma(a k), k >= 1
-  std::vector<double> asymptotic_, asymptotic_size_;  // 1/Gamma(1 - a k), k >= 1; and its modulus
+  std::vector<double> asymptotic_, asymptotic_size_;  // g_k = 1/Gamma(1 - a k), k >= 1; max(|g_k|, |g_k+1|)
   bool fixed_rates_ = false;
   // v variable: nodes a v_j / 2 as exp(+-a v_j / 2), weights g_j exp(-e^v_j) and times e^v_j;
   // w variable: rates r_j, weights W_j (node_b_ unused).
@@ -78,7 +85,7 @@ class MittagLeffler {
 /// E_n(-Gamma(1 + n) t_1^-n t^n)). E decays like (t/t_1)^-n / (Gamma(1 + n) Gamma(1 - n)), so
 /// J E -> sin(n pi) / (n pi): the memory is long. Both rates are singular at t = 0:
 /// J' ~ t^(n-1) and E' ~ -t^(n-1) (the kernel of a history integral is weakly singular at
-/// age 0; no time step resolves it, a quadrature must treat the end).
+/// age 0: no step size resolves it, a history quadrature must treat that end specially).
 class PowerLaw final : public CreepLaw {
  public:
   /// Throws std::invalid_argument naming the bad value unless 0 < n < 1 and t_1 is finite
@@ -91,8 +98,9 @@ class PowerLaw final : public CreepLaw {
   /// int_u0^u1 J du = d + t_1/(n+1) ((u1/t_1)^(n+1) - (u0/t_1)^(n+1)), the difference by
   /// expm1/log1p of d/u0 (d = u1 - u0).
   double creep_integral(double u0, double u1) const override;
-  /// int_0^t J(u) du = t (1 + (t/t_1)^n / (n + 1)). (The brief's one-argument form; the
-  /// base class now declares the two-argument one above.)
+  /// int_0^t J(u) du = t (1 + (t/t_1)^n / (n + 1)), the same as creep_integral(0, t).
+  /// Not an override (yet): kept for a one-argument CreepLaw::creep_integral(t); the base
+  /// class now declares the two-argument form above.
   double creep_integral(double t) const;
   double relaxation(double t) const override;
   /// dE/dt = f'(t/tau)/tau (f of MittagLeffler): -infinity at t = 0.

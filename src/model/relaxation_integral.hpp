@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "model/creep_law.hpp"
 #include "model/gauss_legendre.hpp"
@@ -18,37 +19,109 @@ inline double kernel_piece_span(const CreepLaw& creep) {
   return std::min(2.0 * creep.relaxation_time_scale(), creep.creep_time_scale());
 }
 
-/// int E'(t - tau(u)) f(u) tau'(u) du over [u_a, u_b] by 16-point Gauss pieces, as many as
-/// make each piece span at most kernel_piece_span in time (`tau_span` is the whole span).
-/// `map(u, &dtau_du)` returns tau(u). `zero` is the additive identity of f's result type.
-template <class Map, class F, class R>
-R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double u_b,
-                             double tau_span, Map&& map, F&& f, R zero) {
+/// The most uniform pieces a kernel integral takes before it grades them by age.
+inline constexpr int kMaxUniformKernelPieces = 256;
+/// Graded pieces: a piece at age s = t - tau (its end nearest t) spans at most
+/// max(kernel_piece_span, kAgeRatio s). A relaxation term exp(-s/tau_k) matters at age s
+/// only while s/tau_k < 37 (below that it is under 1e-16 of its weight), so such a piece
+/// spans at most 37 kAgeRatio < 4 of its times, which 16 Gauss points integrate to
+/// machine precision: a spectrum over many decades costs 24 pieces a decade of age.
+inline constexpr double kAgeRatio = 0.1;
+/// Graded pieces are laid out in age up to kSplitAge t (see relaxation_integral_mapped).
+inline constexpr double kSplitAge = 1e-3;
+
+/// int E'(t - tau(u)) f(u) tau'(u) du over [u_a, u_b] by 16-point Gauss pieces: uniform,
+/// as many as make each piece span at most kernel_piece_span in time (`tau_span` is the
+/// whole span), while that is at most kMaxUniformKernelPieces; else graded by age
+/// (kAgeRatio), which needs `inverse(tau)`, the u of a tau. `map(u, &dtau_du)` returns
+/// tau(u). `zero` is the additive identity of f's result type. With `graded_f`, f itself
+/// varies on the creep time scale only near tau(u_a) and on the scale tau - tau(u_a) beyond
+/// (the creep-weighted load from the start of the load or a kink): graded pieces then also
+/// span at most max(creep_time_scale, kAgeRatio (tau - tau(u_a))).
+template <class Map, class Inverse, class F, class R>
+R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double u_b, double tau_span, Map&& map,
+                             Inverse&& inverse, F&& f, R zero, bool graded_f = false) {
   if (!(u_b > u_a)) return zero;
   const GaussLegendreRule& rule = gauss_legendre(kKernelNodes);
-  const int pieces = std::max(1, static_cast<int>(std::ceil(tau_span / kernel_piece_span(creep))));
-  const double width = (u_b - u_a) / pieces;
+  const double span = kernel_piece_span(creep);
   R sum = zero;
-  for (int k = 0; k < pieces; ++k) {
-    const double mid = u_a + (k + 0.5) * width;
+  const auto piece = [&](double mid, double width) {
     for (int g = 0; g < kKernelNodes; ++g) {
       const double u = mid + 0.5 * width * rule.nodes[g];
       double dtau_du = 0.0;
       const double tau = map(u, &dtau_du);
       sum += (0.5 * width * rule.weights[g] * dtau_du * creep.relaxation_rate(t - tau)) * f(u);
     }
+  };
+  const double uniform = std::ceil(tau_span / span);
+  if (uniform <= kMaxUniformKernelPieces) {
+    const int pieces = std::max(1, static_cast<int>(uniform));
+    const double width = (u_b - u_a) / pieces;
+    for (int k = 0; k < pieces; ++k) {
+      piece(u_a + (k + 0.5) * width, width);
+    }
+    return sum;
+  }
+  // Graded. Near t (region A) the kernel's fastest terms decay within ages far below the
+  // rounding of tau ~ t, so the pieces there are laid out in the age s = t - tau itself,
+  // from the end nearest t: a node's age is exact to its own size. Beyond s_split (region
+  // B: ages of at least kSplitAge t, where t - tau is exact enough, and at least half the
+  // range) they are laid out in u from u_a, where f may vary fast (graded_f) or be singular
+  // in tau (the sqrt map). Each piece spans at most max(span, kAgeRatio s) at the age s of
+  // its end nearest t, and with graded_f at most max(creep_time_scale, kAgeRatio (tau -
+  // tau_a)) at its end nearest tau_a.
+  double dtau = 0.0;
+  const double tau_a = map(u_a, &dtau);
+  const double tau_b = map(u_b, &dtau);
+  const double age_a = t - tau_a;
+  // An end that is t itself up to the rounding of tau(u_b) (v_t = sqrt(t - tau0) maps back
+  // to t within a few ulps) is age 0 exactly: the fastest terms of the kernel would
+  // otherwise miss a sliver of age as wide as that rounding.
+  const double age_b = t - tau_b <= 8.0 * std::numeric_limits<double>::epsilon() * std::abs(t) ? 0.0 : t - tau_b;
+  const double s_split = std::clamp(kSplitAge * t, age_b, age_b + 0.5 * (age_a - age_b));
+  const double f_span = creep.creep_time_scale();
+  // Region A: ages [age_b, s_split], integrated in s (dtau = -ds).
+  double s_lo = age_b;
+  while (s_lo < s_split) {
+    double width = std::max(span, kAgeRatio * s_lo);
+    if (graded_f) width = std::min(width, std::max(f_span, kAgeRatio * (age_a - s_lo) / (1.0 + kAgeRatio)));
+    const double s_hi = std::min(s_split, s_lo + width);
+    const double mid = 0.5 * (s_lo + s_hi);
+    const double half = 0.5 * (s_hi - s_lo);
+    for (int g = 0; g < kKernelNodes; ++g) {
+      const double age = mid + half * rule.nodes[g];
+      sum += (half * rule.weights[g] * creep.relaxation_rate(age)) * f(inverse(t - age));
+    }
+    s_lo = s_hi;
+  }
+  // Region B: tau in [tau_a, t - s_split], in u from u_a up.
+  const double tau_split = t - s_split;
+  const double u_split = s_split <= age_b ? u_b : std::min(u_b, inverse(tau_split));
+  double lo = u_a;
+  double tau_lo = tau_a;
+  while (lo < u_split) {
+    double width = std::max(span, kAgeRatio * (t - tau_lo) / (1.0 + kAgeRatio));
+    if (graded_f) width = std::min(width, std::max(f_span, kAgeRatio * (tau_lo - tau_a)));
+    const double tau_hi = tau_lo + width;
+    const double hi = tau_hi >= tau_split ? u_split : std::min(u_split, inverse(tau_hi));
+    if (!(hi > lo)) break;
+    piece(0.5 * (lo + hi), hi - lo);
+    lo = hi;
+    tau_lo = tau_hi;
   }
   return sum;
 }
 
-/// int_{tau_a}^{tau_b} E'(t - tau) f(tau) dtau for an f smooth on [tau_a, tau_b].
+/// int_{tau_a}^{tau_b} E'(t - tau) f(tau) dtau for an f smooth on [tau_a, tau_b] on the
+/// creep time scale near tau_a and on the scale tau - tau_a beyond (graded_f above).
 template <class F, class R>
 R relaxation_integral(const CreepLaw& creep, double t, double tau_a, double tau_b, F&& f, R zero) {
   const auto identity = [](double tau, double* dtau) {
     *dtau = 1.0;
     return tau;
   };
-  return relaxation_integral_mapped(creep, t, tau_a, tau_b, tau_b - tau_a, identity, f, zero);
+  return relaxation_integral_mapped(creep, t, tau_a, tau_b, tau_b - tau_a, identity, [](double tau) { return tau; },
+                                    f, zero, true);
 }
 
 /// int E'(t - tau) f dtau over tau in [tau0 + v_a^2, tau0 + v_b^2], in the variable
@@ -61,7 +134,8 @@ R relaxation_integral_sqrt(const CreepLaw& creep, double t, double tau0, double 
     *dtau = 2.0 * v;
     return tau0 + v * v;
   };
-  return relaxation_integral_mapped(creep, t, v_a, v_b, v_b * v_b - v_a * v_a, square, f, zero);
+  const auto root = [tau0](double tau) { return std::sqrt(std::max(tau - tau0, 0.0)); };
+  return relaxation_integral_mapped(creep, t, v_a, v_b, v_b * v_b - v_a * v_a, square, root, f, zero);
 }
 
 }  // namespace punchsweep::model
