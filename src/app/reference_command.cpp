@@ -32,9 +32,12 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
       "reference solver (the full two-level contact problem on an N x N grid of the l x l\n"
       "cell, FFT influence, constrained conjugate gradient, viscoelastic creep stepping),\n"
       "with the inputs and series of `punchsweep point`, to hold the localization model to.\n\n"
-      "Units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps.\n\n"
+      "Units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps\n"
+      "(or the --material file's time_unit).\n\n"
       "Options");
-  add_point_options(opts);
+  const PointMaterial material = find_point_material(args);
+  add_point_options(opts, material.spec);
+  add_material_options(opts);
   opts.add_options()
       ("bem-grid", po::value<std::string>()->value_name("N")->default_value("128"),
        "grid nodes per side N (the cell spacing is l/N); an even integer in [16, 2048]")
@@ -46,9 +49,15 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
            "order one grid spacing (about 1% needs a/h >= 15).\n";
     return 0;
   }
-  const PointInputs inputs = read_point_inputs(vm);
+  const PointInputs inputs = read_point_inputs(vm, material);
   const model::ContactProblem& problem = inputs.problem;
+  if (!problem.loading.is_step()) {
+    throw UsageError("--ramp = " + vm["ramp"].as<std::string>() +
+                     ": the BEM reference steps a step load only; valid range: --ramp 0 (ramped loads are the "
+                     "model's, `punchsweep point --ramp`)");
+  }
   reference::ReferenceOptions options;
+  reference::scale_steps_to_law(*inputs.creep, &options);
   options.times = read_times(vm);
   options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
                                          [](double v) { return sweep::is_bem_grid(v); }));
@@ -64,9 +73,9 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
     char line[200];
     out << "punchsweep reference: " << inputs.describe() << "; grid " << options.n << " x " << options.n << " (h = "
         << json_number(r.spacing) << " R)\n  regime " << regime << ", t_star "
-        << (r.t_star ? json_number(*r.t_star) + " T_eps" : "none") << ", converged " << (r.converged ? "yes" : "no")
+        << (r.t_star ? json_number(*r.t_star) + " " + inputs.time_unit : "none") << ", converged " << (r.converged ? "yes" : "no")
         << ", " << r.steps << " steps, " << r.solves << " solves, " << json_number(seconds) << " s\n"
-        << "   t [T_eps]      a1 [R]      a2 [R]   P1 [R^2 E0*]   P2 [R^2 E0*]  area_fraction\n";
+        << "   t [" << inputs.time_unit << "]      a1 [R]      a2 [R]   P1 [R^2 E0*]   P2 [R^2 E0*]  area_fraction\n";
     for (const auto& s : r.series) {
       std::snprintf(line, sizeof line, "%12.4f%12.7f%12.7f%15.9f%15.9f%15.7f\n", s.t, s.a1, s.a2, s.P1, s.P2,
                     s.area_fraction);

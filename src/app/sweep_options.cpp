@@ -848,6 +848,11 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   if (problems.empty()) {
     if (std::string problem = grid_size_problem(config.grid); !problem.empty()) problems.push_back(problem);
   }
+  if (problems.empty() && config.ramp && config.reference.on()) {
+    problems.push_back("grid.ramp_time = " + settings[key_index(&model::ramp_time_parameter())].text +
+                       ": the BEM reference (reference.method = bem) steps a step load only; valid range: no "
+                       "ramp_time axis with reference.method = bem");
+  }
   if (config.resume && config.overwrite) {
     problems.push_back("run.resume = true and run.overwrite = true: give only one (--resume finishes or checks the "
                        "existing map, --overwrite replaces it)");

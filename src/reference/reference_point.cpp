@@ -91,6 +91,21 @@ bool level2_loaded(const TwoLevelCell& cell, std::span<const double> p) {
   return false;
 }
 
+void scale_steps_to_law(const model::CreepLaw& creep, ReferenceOptions* options) {
+  double shortest = creep.creep_time_scale();
+  double longest = shortest;
+  if (const std::optional<model::RetardationSeries> series = creep.retardation_series()) {
+    for (const model::RetardationSeries::Term& term : series->terms) {
+      shortest = std::min(shortest, term.lambda);
+      longest = std::max(longest, term.lambda);
+    }
+  }
+  const StepControl defaults{};
+  options->steps.first_step = defaults.first_step * shortest;
+  options->steps.max_step = defaults.max_step * longest;
+  options->t_star_resolution = ReferenceOptions{}.t_star_resolution * shortest;
+}
+
 ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
                                          const model::CreepLaw& creep,
                                          const ReferenceOptions& options) {

@@ -29,6 +29,14 @@ struct StepControl {
   double max_step = 0.25;    ///< in T_eps, >= first_step
 };
 
+/// The steps and t* resolution for `creep`, scaled with its retardation times lambda: first
+/// step 0.02 lambda_min, at most 0.25 lambda_max, t* to 1e-3 lambda_min (for the standard
+/// linear solid, lambda = 1 T_eps: the defaults). A spectrum over many decades is so
+/// stepped geometrically across all of them (about 10 steps a decade). A law without a
+/// retardation series uses its creep time scale for both.
+struct ReferenceOptions;
+void scale_steps_to_law(const model::CreepLaw& creep, ReferenceOptions* options);
+
 /// Numerical choices of a reference point.
 struct ReferenceOptions {
   int n = 128;  ///< n x n grid on the l x l cell; even, >= kMinTwoLevelNodes

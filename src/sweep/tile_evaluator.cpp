@@ -240,8 +240,10 @@ void TileEvaluator::evaluate_reference(const map::TileBox& box, map::TileData* o
     if (!sample_->contains(grid_.flat_index(at))) continue;
     const model::ContactProblem problem = problem_at(at, &law_values);
     const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(law_, law_values);
+    reference::ReferenceOptions options = reference_options_;
+    reference::scale_steps_to_law(*creep, &options);
     const model::PointResult r =
-        reference::as_point_result(reference::evaluate_reference_point(problem, *creep, reference_options_));
+        reference::as_point_result(reference::evaluate_reference_point(problem, *creep, options));
     store_point<map::Source::bem>(r, i, out, kAll);
     store_series<map::Source::bem>(r.series, i, out, kAll);
   }

@@ -14,6 +14,7 @@
 #include "model/contact_problem.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
+#include "model/prony_series.hpp"
 #include "model/standard_linear_solid.hpp"
 #include "reference/periodic_grid.hpp"
 #include "reference/reference_point.hpp"
@@ -132,6 +133,33 @@ TEST(ReferencePoint, stepped_t_star_matches_elastic_touchdown_by_correspondence_
     EXPECT_LE(t_elastic, r.t_star_upper + 1e-5);
     EXPECT_NEAR(*r.t_star, t_elastic, options.t_star_resolution);
   }
+}
+
+TEST(ReferencePoint, steps_scaled_to_a_wide_spectrum_find_t_star_by_correspondence) {
+  // A Prony series with relaxation times over 6 decades (as a material file gives them),
+  // stepped with scale_steps_to_law: t* must still be J^-1(J*) with J* from elastic solves,
+  // to the scaled resolution (1e-3 of the shortest retardation time) and a relative 1e-4.
+  const model::PronySeries law(0.25, {0.3, 0.2, 0.15, 0.1}, {1e-3, 1e-1, 10.0, 1e3});
+  const model::StandardLinearSolid sls(2.5);
+  for (const double dh : {0.065, 0.09}) {
+    const model::ContactProblem problem = paper_point(dh);
+    ReferenceOptions options = options_with(32, {0.0, 1e4});
+    scale_steps_to_law(law, &options);
+    EXPECT_LT(options.steps.first_step, 1e-4);
+    const ReferenceResult r = evaluate_reference_point(problem, law, options);
+    ASSERT_EQ(r.regime, model::Regime::delayed);
+    ASSERT_TRUE(r.t_star.has_value());
+    EXPECT_LT(r.steps, 400) << "geometric steps across the spectrum";
+    const double J_star = elastic_touchdown_compliance(problem, 32, 1.0, law.creep_final(), 1e-9);
+    const double t_elastic = law.time_at_creep(J_star);
+    EXPECT_NEAR(*r.t_star, t_elastic, options.t_star_resolution + 1e-4 * t_elastic) << "dh = " << dh;
+  }
+  // For the standard linear solid the scaled steps are the defaults (lambda = 1 T_eps).
+  ReferenceOptions options;
+  scale_steps_to_law(sls, &options);
+  EXPECT_EQ(options.steps.first_step, StepControl{}.first_step);
+  EXPECT_EQ(options.steps.max_step, StepControl{}.max_step);
+  EXPECT_EQ(options.t_star_resolution, ReferenceOptions{}.t_star_resolution);
 }
 
 TEST(ReferencePoint, t_star_agrees_with_localization_model_on_dilute_lattice) {
