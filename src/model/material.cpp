@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "model/kelvin_series.hpp"
+#include "model/power_law.hpp"
 #include "model/prony_series.hpp"
 
 namespace punchsweep::model {
@@ -36,7 +37,8 @@ constexpr KeyRule kKeys[] = {
     {"material", "time_unit", false}, {"material", "poisson", false}, {"material", "E_inf", false},
     {"material", "E_0", false},    {"material", "E_i", true},      {"material", "g_i", true},
     {"material", "tau_i", true},   {"material", "J_i", true},      {"material", "lambda_i", true},
-    {"material", "eta", false},    {"shift", "kind", false},       {"shift", "C1", false},
+    {"material", "eta", false},    {"material", "n", false},       {"material", "t_1", false},
+    {"shift", "kind", false},       {"shift", "C1", false},
     {"shift", "C2", false},        {"shift", "T_ref", false},      {"shift", "E_a", false},
 };
 
@@ -268,8 +270,18 @@ Material Material::parse(std::string_view text, std::string_view origin) {
       if (!(eta > 0.0)) f.fail_value("material.eta", "outside its range: eta > 0 (in modulus_unit time_unit)");
       m.final_ = E0 / eta;
     }
+  } else if (m.law_ == "power_law") {
+    forbid({"E_inf", "E_i", "g_i", "tau_i", "J_i", "lambda_i", "eta"},
+           "not a key of law = power_law (its keys: E_0, n, t_1)");
+    E0 = f.number("material.E_0");
+    if (!(E0 > 0.0)) f.fail_value("material.E_0", "outside its range: E_0 > 0");
+    m.final_ = f.number("material.n");
+    if (!(m.final_ > 0.0 && m.final_ < 1.0)) f.fail_value("material.n", "outside its range: 0 < n < 1");
+    const double t_1 = f.number("material.t_1");
+    if (!(t_1 > 0.0)) f.fail_value("material.t_1", "outside its range: t_1 > 0 (in time_unit)");
+    m.times_ = {t_1};
   } else {
-    f.fail_value("material.law", "unknown law; valid: prony, kelvin");
+    f.fail_value("material.law", "unknown law; valid: prony, kelvin, power_law");
   }
   m.E0_Pa_ = E0 * modulus->factor;
 
@@ -316,6 +328,8 @@ std::unique_ptr<CreepLaw> Material::make(std::span<const double> values) const {
   std::unique_ptr<CreepLaw> law;
   if (law_ == "prony") {
     law = std::make_unique<PronySeries>(final_, moduli_, times_);
+  } else if (law_ == "power_law") {
+    law = std::make_unique<PowerLaw>(final_, times_.front());
   } else {
     law = std::make_unique<KelvinSeries>(moduli_, times_, final_);
   }
@@ -335,7 +349,13 @@ CreepLawSpec Material::spec() const {
 std::string Material::describe() const {
   std::ostringstream out;
   out.precision(6);
-  out << name_ << "; " << law_ << ", " << times_.size() << " terms, E_0 = " << E0_Pa_ << " Pa, nu = " << nu_
+  out << name_ << "; " << law_;
+  if (law_ == "power_law") {
+    out << ", n = " << final_ << ", t_1 = " << times_.front();
+  } else {
+    out << ", " << times_.size() << " terms";
+  }
+  out << ", E_0 = " << E0_Pa_ << " Pa, nu = " << nu_
       << ", time in " << time_unit_;
   if (shift_) out << "; " << shift_->describe();
   return out.str();

@@ -69,6 +69,11 @@ std::string PointSummary::reason(std::string_view time_unit) const {
   };
   switch (validity) {
     case Validity::same_level_overlap:
+      if (std::isinf(violation_value)) {
+        out << "creep is unlimited (J(inf) = infinity): the spots grow without bound until they merge, so the "
+               "localization does not hold in the long term (t* and the states before the spots reach l/2 do)";
+        break;
+      }
       out << "spots of one level merge " << when(invalid_at) << ": 2 a_i = " << violation_value
           << " R >= l = " << violation_limit << " R (localization needs separate spots)";
       break;
@@ -172,6 +177,9 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
       flag(out, {Validity::no_solution, kNaN, kNaN}, out.t_start);
     } else if (at_start.code != Validity::valid) {
       flag(out, at_start, out.t_start);
+    } else if (!std::isfinite(X_inf)) {
+      // Unlimited creep: X grows without bound, and with it the spots, until they merge.
+      flag(out, {Validity::same_level_overlap, kInf, l}, kInf);
     } else if (!r.converged) {
       flag(out, {Validity::no_solution, kNaN, kNaN}, kInf);
     } else {

@@ -370,17 +370,15 @@ double PowerLaw::creep(double t) const { return 1.0 + std::pow(t / t_1_, n_); }
 
 double PowerLaw::creep_rate(double t) const { return n_ / t_1_ * std::pow(t / t_1_, n_ - 1.0); }
 
-double PowerLaw::creep_integral(double u0, double u1) const {
-  const double d = u1 - u0;
+double PowerLaw::creep_integral(double u, double d) const {
   if (!(d > 0.0)) return 0.0;
-  // d + t_1/(n+1) ((u1/t_1)^(n+1) - (u0/t_1)^(n+1)); for a short interval (d < u0) the
-  // difference is u0 (u0/t_1)^n ((1 + d/u0)^(n+1) - 1), by expm1 and log1p.
-  const double creep_part = d < u0 ? u0 * std::pow(u0 / t_1_, n_) * std::expm1((n_ + 1.0) * std::log1p(d / u0))
-                                   : u1 * std::pow(u1 / t_1_, n_) - u0 * std::pow(u0 / t_1_, n_);
+  // d + t_1/(n+1) (((u+d)/t_1)^(n+1) - (u/t_1)^(n+1)); for a short interval (d < u) the
+  // difference is u (u/t_1)^n ((1 + d/u)^(n+1) - 1), by expm1 and log1p.
+  const double u1 = u + d;
+  const double creep_part = d < u ? u * std::pow(u / t_1_, n_) * std::expm1((n_ + 1.0) * std::log1p(d / u))
+                                  : u1 * std::pow(u1 / t_1_, n_) - u * std::pow(u / t_1_, n_);
   return d + creep_part / (n_ + 1.0);
 }
-
-double PowerLaw::creep_integral(double t) const { return t * (1.0 + std::pow(t / t_1_, n_) / (n_ + 1.0)); }
 
 double PowerLaw::relaxation(double t) const { return ml_.relaxation(t / tau_); }
 

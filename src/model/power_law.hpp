@@ -95,13 +95,9 @@ class PowerLaw final : public CreepLaw {
   double creep(double t) const override;
   /// n/t_1 (t/t_1)^(n-1): +infinity at t = 0.
   double creep_rate(double t) const override;
-  /// int_u0^u1 J du = d + t_1/(n+1) ((u1/t_1)^(n+1) - (u0/t_1)^(n+1)), the difference by
-  /// expm1/log1p of d/u0 (d = u1 - u0).
-  double creep_integral(double u0, double u1) const override;
-  /// int_0^t J(u) du = t (1 + (t/t_1)^n / (n + 1)), the same as creep_integral(0, t).
-  /// Not an override (yet): kept for a one-argument CreepLaw::creep_integral(t); the base
-  /// class now declares the two-argument form above.
-  double creep_integral(double t) const;
+  /// int_u^(u+d) J dv = d + t_1/(n+1) (((u+d)/t_1)^(n+1) - (u/t_1)^(n+1)), the difference
+  /// by expm1/log1p of d/u when d < u.
+  double creep_integral(double u, double d) const override;
   double relaxation(double t) const override;
   /// dE/dt = f'(t/tau)/tau (f of MittagLeffler): -infinity at t = 0.
   double relaxation_rate(double t) const override;

@@ -27,6 +27,9 @@ inline constexpr int kMaxUniformKernelPieces = 256;
 /// spans at most 37 kAgeRatio < 4 of its times, which 16 Gauss points integrate to
 /// machine precision: a spectrum over many decades costs 24 pieces a decade of age.
 inline constexpr double kAgeRatio = 0.1;
+/// Geometric pieces (a factor 4 each) toward a singular end of a power-law integrand: 4^-40 of
+/// the first piece is left, where the integrand's share is below 1e-16 of it (n >= 0.05).
+inline constexpr int kSingularLevels = 40;
 /// Graded pieces are laid out in age up to kSplitAge t (see relaxation_integral_mapped).
 inline constexpr double kSplitAge = 1e-3;
 
@@ -53,8 +56,13 @@ R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double
       sum += (0.5 * width * rule.weights[g] * dtau_du * creep.relaxation_rate(t - tau)) * f(u);
     }
   };
+  // A power-law kernel E' ~ -s^(n-1) is singular at age 0, and under a power law J ~ tau^n
+  // makes f singular where it starts: both ends are then graded geometrically (a factor 4
+  // a piece, kSingularLevels pieces), where Gauss converges as for a smooth integrand.
+  const bool singular_kernel = !std::isfinite(creep.relaxation_rate(0.0));
+  const bool singular_f = graded_f && !std::isfinite(creep.creep_rate(0.0));
   const double uniform = std::ceil(tau_span / span);
-  if (uniform <= kMaxUniformKernelPieces) {
+  if (uniform <= kMaxUniformKernelPieces && !singular_kernel && !singular_f) {
     const int pieces = std::max(1, static_cast<int>(uniform));
     const double width = (u_b - u_a) / pieces;
     for (int k = 0; k < pieces; ++k) {
@@ -81,17 +89,30 @@ R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double
   const double s_split = std::clamp(kSplitAge * t, age_b, age_b + 0.5 * (age_a - age_b));
   const double f_span = creep.creep_time_scale();
   // Region A: ages [age_b, s_split], integrated in s (dtau = -ds).
-  double s_lo = age_b;
-  while (s_lo < s_split) {
-    double width = std::max(span, kAgeRatio * s_lo);
-    if (graded_f) width = std::min(width, std::max(f_span, kAgeRatio * (age_a - s_lo) / (1.0 + kAgeRatio)));
-    const double s_hi = std::min(s_split, s_lo + width);
+  const auto age_piece = [&](double s_lo, double s_hi) {
     const double mid = 0.5 * (s_lo + s_hi);
     const double half = 0.5 * (s_hi - s_lo);
     for (int g = 0; g < kKernelNodes; ++g) {
       const double age = mid + half * rule.nodes[g];
       sum += (half * rule.weights[g] * creep.relaxation_rate(age)) * f(inverse(t - age));
     }
+  };
+  double s_lo = age_b;
+  if (singular_kernel && age_b == 0.0 && s_split > 0.0) {
+    // [0, eps]: int E' = E(eps) - E(0), f taken at eps/2; then pieces growing 4-fold.
+    const double first = std::min(s_split, span);
+    double edge = first * std::pow(0.25, kSingularLevels);
+    sum += (creep.relaxation(edge) - creep.relaxation(0.0)) * f(inverse(t - 0.5 * edge));
+    for (int k = 0; k < kSingularLevels; ++k, edge *= 4.0) age_piece(edge, std::min(first, 4.0 * edge));
+    s_lo = first;
+  }
+  // A singular kernel has no smallest scale: its pieces grow with age from any age.
+  const double floor_span = singular_kernel ? 0.0 : span;
+  while (s_lo < s_split) {
+    double width = std::max(floor_span, kAgeRatio * s_lo);
+    if (graded_f) width = std::min(width, std::max(f_span, kAgeRatio * (age_a - s_lo) / (1.0 + kAgeRatio)));
+    const double s_hi = std::min(s_split, s_lo + width);
+    age_piece(s_lo, s_hi);
     s_lo = s_hi;
   }
   // Region B: tau in [tau_a, t - s_split], in u from u_a up.
@@ -99,8 +120,23 @@ R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double
   const double u_split = s_split <= age_b ? u_b : std::min(u_b, inverse(tau_split));
   double lo = u_a;
   double tau_lo = tau_a;
+  if (singular_f && u_split > u_a) {
+    // f ~ (tau - tau_a)^n: pieces growing 4-fold from tau_a up to the creep time scale.
+    const double first = std::min(f_span, tau_split - tau_a);
+    double edge = first * std::pow(0.25, kSingularLevels);
+    double u_edge = std::min(u_split, inverse(tau_a + edge));
+    piece(0.5 * (u_a + u_edge), u_edge - u_a);
+    for (int k = 0; k < kSingularLevels; ++k) {
+      const double u_next = std::min(u_split, inverse(tau_a + std::min(first, 4.0 * edge)));
+      if (u_next > u_edge) piece(0.5 * (u_edge + u_next), u_next - u_edge);
+      u_edge = u_next;
+      edge *= 4.0;
+    }
+    lo = u_edge;
+    tau_lo = tau_a + first;
+  }
   while (lo < u_split) {
-    double width = std::max(span, kAgeRatio * (t - tau_lo) / (1.0 + kAgeRatio));
+    double width = std::max(floor_span, kAgeRatio * (t - tau_lo) / (1.0 + kAgeRatio));
     if (graded_f) width = std::min(width, std::max(f_span, kAgeRatio * (tau_lo - tau_a)));
     const double tau_hi = tau_lo + width;
     const double hi = tau_hi >= tau_split ? u_split : std::min(u_split, inverse(tau_hi));

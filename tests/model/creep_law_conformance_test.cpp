@@ -3,6 +3,8 @@
 // its retardation series (when it has one), its time scales, and the factory's refusal of
 // values outside each parameter's range. A new law adds one row to kSamples.
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 
 #include "model/creep_laws.hpp"
 #include "model/kelvin_series.hpp"
+#include "model/power_law.hpp"
 #include "model/prony_series.hpp"
 #include "model/time_shift.hpp"
 
@@ -72,6 +75,10 @@ std::vector<Case> cases() {
                    return std::make_unique<KelvinSeries>(std::vector<double>{0.5, 2.0}, std::vector<double>{0.1, 10.0},
                                                          1e-3);
                  }});
+  // Power law (unlimited creep, a kernel singular at age 0): slow, middling and fast.
+  for (const double n : {0.1, 0.4, 0.8}) {
+    out.push_back({"power_law", nullptr, {}, [n] { return std::make_unique<PowerLaw>(n, 2.0); }});
+  }
   // A shifted law: a 3-term Prony series 100 times slower and 1000 times faster.
   for (const double a_T : {100.0, 1e-3}) {
     out.push_back({"shifted_prony", nullptr, {}, [a_T] {
@@ -103,17 +110,27 @@ class CreepLawConformance : public ::testing::TestWithParam<Case> {
   }
 };
 
-// int_0-^t E(t - tau) dJ(tau) = E(0) J(t) + int_0^t J(tau) E'(t - tau) dtau (by parts), by
-// composite Simpson on n intervals: a quadrature independent of the model's Gauss rules.
-double interconversion(const CreepLaw& law, double t, int n) {
-  const double h = t / n;
-  double sum = 0.0;
-  for (int i = 0; i <= n; ++i) {
-    const double tau = i * h;
-    const double weight = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
-    sum += weight * law.creep(tau) * law.relaxation_rate(t - tau);
-  }
-  return law.relaxation(0.0) * law.creep(t) + sum * h / 3.0;
+// int_a^b f by GSL's adaptive QAGS (21-point Kronrod with extrapolation, which also takes
+// the integrable endpoint singularities of a power law): a quadrature independent of the
+// model's own rules.
+template <class F>
+double qags(F&& f, double a, double b) {
+  gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
+  gsl_function fn;
+  fn.function = [](double x, void* p) { return (*static_cast<F*>(p))(x); };
+  fn.params = &f;
+  double result = 0.0, error = 0.0;
+  gsl_set_error_handler_off();
+  gsl_integration_qags(&fn, a, b, 0.0, 1e-13, 2000, w, &result, &error);
+  gsl_integration_workspace_free(w);
+  return result;
+}
+
+// int_0-^t E(t - tau) dJ(tau) = E(t) J(0) + int_0^t E(t - tau) J'(tau) dtau, the integral
+// by QAGS (J' may be singular at 0, as a power law's is).
+double interconversion(const CreepLaw& law, double t) {
+  return law.relaxation(t) * law.creep(0.0) +
+         qags([&](double tau) { return law.relaxation(t - tau) * law.creep_rate(tau); }, 0.0, t);
 }
 
 }  // namespace
@@ -138,7 +155,7 @@ TEST_P(CreepLawConformance, relaxation_and_creep_are_interconverted) {
   const double scale = std::min(law->creep_time_scale(), law->relaxation_time_scale());
   for (const double t : {0.3, 1.0, 4.0}) {
     const double span = t * scale;
-    EXPECT_NEAR(interconversion(*law, span, 20000), 1.0, 1e-10) << law->describe() << ", t = " << span;
+    EXPECT_NEAR(interconversion(*law, span), 1.0, 1e-10) << law->describe() << ", t = " << span;
   }
 }
 
@@ -170,7 +187,9 @@ TEST_P(CreepLawConformance, relaxation_rate_is_the_derivative_of_relaxation) {
     const double t = x * scale;
     const double h = 1e-5 * scale;
     const double central = (law->relaxation(t + h) - law->relaxation(t - h)) / (2 * h);
-    EXPECT_NEAR(law->relaxation_rate(t), central, 1e-7 * std::abs(law->relaxation_rate(0.0)) + 1e-12)
+    const double rate_scale = std::isfinite(law->relaxation_rate(0.0)) ? std::abs(law->relaxation_rate(0.0))
+                                                                        : std::abs(law->relaxation_rate(t));
+    EXPECT_NEAR(law->relaxation_rate(t), central, 1e-7 * rate_scale + 1e-12)
         << law->describe() << ", t = " << t;
   }
 }
@@ -187,22 +206,16 @@ TEST_P(CreepLawConformance, creep_rate_is_the_derivative_of_creep) {
   }
 }
 
-// int_u0^u1 J du against composite Simpson on 2000 intervals, also for a short interval
-// far out (where the law must avoid the cancellation of I(u1) - I(u0)).
+// int_u0^u1 J du against QAGS, also for a short interval far out (where the law must avoid
+// the cancellation of I(u1) - I(u0)).
 TEST_P(CreepLawConformance, creep_integral_is_the_integral_of_creep) {
   const auto law = make();
   const double scale = law->creep_time_scale();
-  const auto simpson = [&](double a, double b) {
-    const int n = 2000;
-    const double h = (b - a) / n;
-    double sum = law->creep(a) + law->creep(b);
-    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * law->creep(a + i * h);
-    return sum * h / 3.0;
-  };
+  const auto reference = [&](double a, double b) { return qags([&](double u) { return law->creep(u); }, a, b); };
   for (const auto& [a, b] : {std::pair{0.0, 0.3}, std::pair{0.0, 5.0}, std::pair{2.0, 3.0}, std::pair{1e6, 1e6 + 1e-3}}) {
     const double u0 = a * scale;
     const double u1 = b * scale;
-    const double expected = simpson(u0, u1);
+    const double expected = reference(u0, u1);
     EXPECT_NEAR(law->creep_integral(u0, u1 - u0), expected, 1e-11 * std::abs(expected)) << law->describe() << ", ["
                                                                                    << u0 << ", " << u1 << "]";
   }

@@ -196,3 +196,45 @@ TEST(Material, every_shipped_material_parses) {
   }
   EXPECT_GE(found, 3);
 }
+
+// Power law (docs/model.md, section 10): creep is unlimited, so level 2 always touches, at
+// t* = t_1 (J* - 1)^(1/n) with J* = X*/pbar0 of the touchdown (an independent root of
+// h(a1) = dh through the single-level phase); and the long term is flagged, since the
+// spots grow until they merge.
+TEST(Material, power_law_never_gives_never) {
+  const std::string text =
+      "[material]\nname = power law, made up for the test\nlaw = power_law\nmodulus_unit = kPa\n"
+      "time_unit = min\npoisson = 0.49\nE_0 = 800\nn = 0.3\nt_1 = 10\n";
+  const Material m = Material::parse(text, "pl.ini");
+  EXPECT_EQ(m.time_unit(), "min");
+  EXPECT_DOUBLE_EQ(m.instantaneous_modulus_Pa(), 8e5);
+  const auto law = m.make({});
+  ContactProblem problem;
+  problem.l = 0.75;
+  problem.pbar0 = 0.005;
+  for (const double dh : {0.02, 0.2, 1.0}) {
+    problem.dh = dh;
+    const PointSummary s = summarize_point(problem, *law);
+    ASSERT_NE(s.regime, Regime::never) << "dh = " << dh;
+    ASSERT_TRUE(s.t_star.has_value());
+    if (s.regime == Regime::delayed) {
+      EXPECT_NEAR(*s.t_star, 10.0 * std::pow(s.X_start / problem.pbar0 - 1.0, 1.0 / 0.3), 1e-10 * *s.t_star);
+    }
+    // Flagged: at the start already (spots that merge at once), else for the long term.
+    EXPECT_EQ(s.validity, Validity::same_level_overlap) << s.reason("min");
+    if (s.invalid_at > s.t_start) {
+      EXPECT_NE(s.reason("min").find("creep is unlimited"), std::string::npos) << s.reason("min");
+    }
+  }
+  const auto refused = [&](const std::string& from, const std::string& to) {
+    try {
+      Material::parse(replaced(text, from, to), "pl.ini");
+    } catch (const MaterialError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refused("n = 0.3", "n = 1.2").find("0 < n < 1"), std::string::npos);
+  EXPECT_NE(refused("t_1 = 10", "t_1 = 0").find("t_1 > 0"), std::string::npos);
+  EXPECT_NE(refused("n = 0.3", "n = 0.3\ntau_i = 1").find("not a key of law = power_law"), std::string::npos);
+}

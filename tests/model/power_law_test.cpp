@@ -331,10 +331,9 @@ TEST(PowerLaw, creep_rate_and_integral) {
           (8.0 * (law.creep(t + h) - law.creep(t - h)) - (law.creep(t + 2 * h) - law.creep(t - 2 * h))) / (12.0 * h);
       EXPECT_NEAR(law.creep_rate(t), difference, 1e-10 * law.creep_rate(t) + 4e-16 * law.creep(t) / h)
           << "n = " << n << ", t = " << t;
-      // int_0^t J = t + t_1 (t/t_1)^(n+1) / (n+1), in both forms.
+      // int_0^t J = t + t_1 (t/t_1)^(n+1) / (n+1).
       const double integral = t + t_1 * std::pow(t / t_1, n + 1.0) / (n + 1.0);
       EXPECT_NEAR(law.creep_integral(0.0, t), integral, 4e-15 * integral);
-      EXPECT_NEAR(law.creep_integral(t), integral, 4e-15 * integral);
     }
     // A short interval far out: int_u^(u+d) J = d J(u + d/2) + J'' d^3 / 24 + ..., without
     // the cancellation of the difference of two large integrals (d is the interval's exact
@@ -343,9 +342,9 @@ TEST(PowerLaw, creep_rate_and_integral) {
     const double d = (u + 1e-3) - u;
     const double mid = law.creep(u + 0.5 * d);
     const double curvature = 0.5 * n * (n - 1.0) * std::pow(u / t_1, n) / (u * u);  // J''/2
-    EXPECT_NEAR(law.creep_integral(u, u + d), d * mid + curvature * d * d * d / 12.0, 1e-14 * d * mid);
-    EXPECT_EQ(law.creep_integral(0.7, 0.7), 0.0);
-    EXPECT_NEAR(law.creep_integral(2.0, 5.0), law.creep_integral(5.0) - law.creep_integral(2.0), 1e-14 * 10.0);
+    EXPECT_NEAR(law.creep_integral(u, d), d * mid + curvature * d * d * d / 12.0, 1e-14 * d * mid);
+    EXPECT_EQ(law.creep_integral(0.7, 0.0), 0.0);
+    EXPECT_NEAR(law.creep_integral(2.0, 3.0), law.creep_integral(0.0, 5.0) - law.creep_integral(0.0, 2.0), 1e-14 * 10.0);
   }
 }
 
