@@ -122,6 +122,29 @@ def open_map(path: str | Path):
     except MapError as e:
         ds.close()
         raise MapError(f"'{path}' is not a punchsweep regime map ({e})") from None
+    return in_physical_units(ds)
+
+
+def in_physical_units(ds):
+    """A material map (global attribute E0_star_Pa) in physical units: every value scaled by
+    E0/(1-nu^2) (pressures: the pbar axis) becomes kPa, E0* being the material's
+    plane-strain instantaneous modulus; its times already carry their unit (s, min, h). Other
+    maps are returned as they are."""
+    E0_star = ds.attrs.get("E0_star_Pa")
+    if E0_star is None:
+        return ds
+    factor = float(E0_star) / 1e3
+    for name in list(ds.variables):
+        attrs = dict(ds[name].attrs)
+        if attrs.get("scaled_by") != "E0/(1-nu^2)":
+            continue
+        attrs.pop("scaled_by")
+        attrs["units"] = "kPa"
+        if name in ds.coords:
+            ds = ds.assign_coords({name: (ds[name].dims, ds[name].values * factor, attrs)})
+        else:
+            ds[name] = ds[name] * factor
+            ds[name].attrs = attrs
     return ds
 
 

@@ -10,8 +10,9 @@ the creep time) run over the delayed region. A log-spaced axis (attribute spacin
 is drawn on a log scale.
 
 Any axes of the map can be drawn, fixed or faceted: the map's axes, their units and the
-regime codes are read from the file. Units (today's axes): l and dh in R (the punch size),
-pbar in E0/(1-nu^2), T and s dimensionless, t* in T_eps.
+regime codes are read from the file. Units: l and dh in R (the punch size),
+pbar in E0/(1-nu^2), T and s dimensionless, t* in T_eps; for a material map (sweep
+[model] material) pbar in kPa (pbar E0* of the material) and times in its file's unit.
 
 Example:
   postprocess/regime_map.py map.h5 --x pbar --y dh --at l=0.75 T=2.5 s=2 -o map.png
@@ -272,7 +273,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         handles.append(Patch(facecolor=pm.REGIME_COLOURS[pm.NOT_COMPUTED], label="not computed"))
     if any_contour:
         handles.append(Line2D([], [], color="black", lw=0.8, label="$t^*$ contours,\n"
-                                                                     "labels in $T_\\varepsilon$"))
+                                                                     f"labels in {pm.unit_tex(pm.units(ds, 't_star'))}"))
     legend_ax = fig.add_subplot(grid[:, ncols])
     legend_ax.axis("off")
     legend_ax.legend(handles=handles, loc="upper left", title="level-2 contact", frameon=False,
