@@ -20,6 +20,10 @@ std::string bad(const std::string& what, double value, const std::string& range)
   return out.str();
 }
 
+// A term decayed by exp(-50) < 2e-22 is left out of E and E' (history integrals evaluate
+// them at every age, and libm's exp is slowest where it underflows).
+constexpr double kNegligibleDecay = 50.0;
+
 }  // namespace
 
 KelvinSeries::KelvinSeries(std::vector<double> J, std::vector<double> lambda, double fluidity)
@@ -101,13 +105,19 @@ double KelvinSeries::creep_integral(double u, double d) const {
 
 double KelvinSeries::relaxation(double t) const {
   double e = E_inf_;
-  for (std::size_t i = 0; i < E_.size(); ++i) e += E_[i] * std::exp(-t / tau_[i]);
+  for (std::size_t i = 0; i < E_.size(); ++i) {
+    const double x = t / tau_[i];
+    if (x < kNegligibleDecay) e += E_[i] * std::exp(-x);
+  }
   return e;
 }
 
 double KelvinSeries::relaxation_rate(double t) const {
   double rate = 0.0;
-  for (std::size_t i = 0; i < E_.size(); ++i) rate -= E_[i] / tau_[i] * std::exp(-t / tau_[i]);
+  for (std::size_t i = 0; i < E_.size(); ++i) {
+    const double x = t / tau_[i];
+    if (x < kNegligibleDecay) rate -= E_[i] / tau_[i] * std::exp(-x);
+  }
   return rate;
 }
 

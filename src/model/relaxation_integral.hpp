@@ -24,9 +24,9 @@ inline constexpr int kMaxUniformKernelPieces = 256;
 /// Graded pieces: a piece at age s = t - tau (its end nearest t) spans at most
 /// max(kernel_piece_span, kAgeRatio s). A relaxation term exp(-s/tau_k) matters at age s
 /// only while s/tau_k < 37 (below that it is under 1e-16 of its weight), so such a piece
-/// spans at most 37 kAgeRatio < 4 of its times, which 16 Gauss points integrate to
-/// machine precision: a spectrum over many decades costs 24 pieces a decade of age.
-inline constexpr double kAgeRatio = 0.1;
+/// spans at most 37 kAgeRatio = 11 of its times, over which 16 Gauss points integrate
+/// exp(-x) to 1e-19: a spectrum over many decades costs 9 pieces a decade of age.
+inline constexpr double kAgeRatio = 0.3;
 /// Geometric pieces (a factor 4 each) toward a singular end of a power-law integrand: 4^-40 of
 /// the first piece is left, where the integrand's share is below 1e-16 of it (n >= 0.05).
 inline constexpr int kSingularLevels = 40;
