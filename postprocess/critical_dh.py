@@ -12,16 +12,25 @@ below it shaded) and h_inf once per creep ratio T (one colour per T). The values
 from the map's h_0 and h_inf variables, which do not depend on dh; the script checks that
 they agree across the dh axis (and h_0 across T) and says so on stderr if they do not.
 
-The map must have the axes dh and --against (pbar or l); a map without a T or an s axis
-gets one curve or one panel. Every other axis of the map (read from the file, like the units)
+With --touch-by t1,t2,...: also the height difference below which level 2 touches by each
+time t_k (dashed), interpolated along the dh axis of the map's t_star in log t*. Against
+the temperature of a material map (--against temperature) this is the chart that moves:
+h_0 and h_inf do not depend on the temperature (a time shift changes neither J(0) nor
+J(inf)), the touch-by curves rise with it.
+
+The map must have the axes dh and --against (pbar, l or temperature); a map without a T
+or an s axis gets one curve or one panel. Every other axis of the map (read from the file, like the units)
 is fixed with --at, or has a single value.
 
-Units: dh, h_0, h_inf and l in R (the punch size); pbar in E0/(1-nu^2) (drawn on a log
-axis when the map's pbar axis is log-spaced); T and s dimensionless.
+Units: dh, h_0, h_inf and l in R (the punch size); pbar in E0/(1-nu^2) (kPa for a material
+map; drawn on a log axis when the map's pbar axis is log-spaced); T and s dimensionless;
+temperature in degC; --touch-by times in the map's time unit (T_eps, or the material's).
 
 Example:
   postprocess/critical_dh.py map.h5 --against pbar --at l=0.75 -o chart.png
   postprocess/critical_dh.py map.h5 --against l --at pbar=0.04 T=2.5 -o chart.pdf
+  postprocess/critical_dh.py wlf_map.h5 --against temperature --at l=0.75 pbar=47 \
+      --touch-by 1,60,3600 -o chart.png
 """
 from __future__ import annotations
 
@@ -40,7 +49,7 @@ FIG_DPI = 150
 PANEL_SIZE = (4.6, 3.6)  # inches per panel
 LEGEND_WIDTH = 2.2  # inches
 RELATIVE_TOLERANCE = 1e-12  # for "does not depend on dh / T"
-AGAINST = ("pbar", "l")  # the horizontal axes the chart is drawn against
+AGAINST = ("pbar", "l", "temperature")  # the horizontal axes the chart is drawn against
 CURVE_AXIS = "T"  # one h_inf curve per value (h_0 does not depend on it), if the map has it
 PANEL_AXIS = "s"  # one panel per value, if the map has it
 
@@ -55,6 +64,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     pm.add_at_option(p, "fix the other of l / pbar and any further axis of the map; "
                         "optionally also T and/or s to draw only those curves and panels",
                      "dh cannot be fixed: it is the chart's vertical axis.")
+    p.add_argument("--touch-by", default="", metavar="TIMES",
+                   help="comma-separated times: also draw the dh below which level 2 touches by "
+                        "each (from t_star, in the map's time unit)")
     p.add_argument("-o", "--output", required=True,
                    help="picture to write; the format follows the suffix: .png or .pdf")
     return p.parse_args(argv)
@@ -72,6 +84,45 @@ def along_dh(values: np.ndarray, name: str, dh_axis: int, unit: str = "") -> np.
         print(f"critical_dh.py: warning: {name} varies along dh by up to {spread:.3g}{unit}; "
               f"drawing its median over dh", file=sys.stderr)
     return mid
+
+
+def touch_by_curve(dh: np.ndarray, t_star: np.ndarray, t_target: float) -> float:
+    """The dh below which level 2 touches by t_target along one dh line of t* (0 immediate,
+    NaN never; t* grows with dh): linear in log t* between the bracketing grid points (in t*
+    from an immediate one, t* = 0); the last grid dh that touches when the next never does,
+    NaN when none does."""
+    t = np.where(np.isnan(t_star), np.inf, t_star)
+    touched = t <= t_target
+    if not touched.any():
+        return float("nan")
+    k = int(np.nonzero(touched)[0][-1])
+    if k + 1 >= len(dh) or not np.isfinite(t[k + 1]):
+        return float(dh[k])
+    lo, hi = t[k], t[k + 1]
+    if lo == 0.0:
+        w = t_target / hi
+    else:
+        w = (np.log(t_target) - np.log(lo)) / (np.log(hi) - np.log(lo)) if hi > lo else 0.0
+    return float(dh[k] + w * (dh[k + 1] - dh[k]))
+
+
+def touch_by_curves(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float]) -> np.ndarray:
+    """(time, T, s, x): touch_by_curve over the map's dh axis for each target time."""
+    sel = {name: f.index for name, f in fixed.items()}
+    for name in (CURVE_AXIS, PANEL_AXIS):
+        if name in sel:
+            sel[name] = [sel[name]]
+    cut = ds["t_star"].isel(sel)
+    for name in (CURVE_AXIS, PANEL_AXIS):
+        if name not in cut.dims:
+            cut = cut.expand_dims(name)
+    t = cut.transpose("dh", CURVE_AXIS, PANEL_AXIS, against).values
+    dh = ds["dh"].values.astype(float)
+    out = np.full((len(times),) + t.shape[1:], np.nan)
+    for i, target in enumerate(times):
+        for idx in np.ndindex(*t.shape[1:]):
+            out[(i,) + idx] = touch_by_curve(dh, t[(slice(None),) + idx], target)
+    return out
 
 
 def critical_curves(ds, against: str, fixed: dict[str, pm.Fixed]):
@@ -109,7 +160,7 @@ def critical_curves(ds, against: str, fixed: dict[str, pm.Fixed]):
     return x, drawn(CURVE_AXIS), drawn(PANEL_AXIS), h0_s, hinf
 
 
-def render(ds, against: str, fixed: dict[str, pm.Fixed]):
+def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | None = None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -117,6 +168,9 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
     from matplotlib.patches import Patch
 
     x, T, s, h0, hinf = critical_curves(ds, against, fixed)
+    times = times or []
+    touch = touch_by_curves(ds, against, fixed, times) if times else None
+    time_unit = pm.unit_tex(pm.units(ds, "t_star"))
     has_curves, has_panels = CURVE_AXIS in pm.axes(ds), PANEL_AXIS in pm.axes(ds)
     n = len(s)
     ncols = min(n, 3)
@@ -135,6 +189,8 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
         ax.plot(x, h0[k], color=immediate, lw=2.2, marker="o", ms=3)
         for j in range(len(T)):
             ax.plot(x, hinf[j, k], color=t_colours[j], lw=1.4, marker="o", ms=2.5)
+            for i in range(len(times)):
+                ax.plot(x, touch[i, j, k], color=t_colours[j], lw=1.0, ls=(0, (4, 1 + 2 * i)))
         top = np.nanmax(hinf[:, k]) if np.isfinite(hinf[:, k]).any() else 1.0
         ax.set_ylim(0, 1.05 * top)
         if len(x) > 1:
@@ -157,6 +213,8 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
                        label=f"$h_\\infty$, {pm.format_value(ds, CURVE_AXIS, float(t), tex=True)}"
                        if has_curves else "$h_\\infty$")
                 for t, c in zip(T, t_colours)]
+    handles += [Line2D([], [], color="grey", lw=1.0, ls=(0, (4, 1 + 2 * i)),
+                       label=f"touches by t = {t:g} {time_unit}") for i, t in enumerate(times)]
     legend_ax = fig.add_subplot(grid[:, ncols])
     legend_ax.axis("off")
     legend_ax.legend(handles=handles, loc="upper left", frameon=False, fontsize=9, borderaxespad=0,
@@ -172,7 +230,13 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed]):
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
     if args.against not in AGAINST:
-        raise pm.MapError(f"--against '{args.against}' is not a valid choice; use l or pbar")
+        raise pm.MapError(f"--against '{args.against}' is not a valid choice; use l, pbar or temperature")
+    try:
+        times = [float(v) for v in args.touch_by.split(",") if v.strip()]
+    except ValueError:
+        raise pm.MapError(f"--touch-by '{args.touch_by}': not a comma-separated list of times") from None
+    if any(not (t > 0 and math.isfinite(t)) for t in times):
+        raise pm.MapError(f"--touch-by '{args.touch_by}': each time must be > 0 and finite")
     out = pm.check_output(args.output)
     with pm.open_map(args.map) as ds:
         pm.require_axes(ds, ("dh", args.against), f"critical_dh.py --against {args.against}")
@@ -186,7 +250,9 @@ def main(argv: list[str]) -> int:
         fixed = pm.resolve_at(ds, at, free=list(series), optional=series, reserved=reserved)
         for f in fixed.values():
             print(f.message)
-        fig = render(ds, args.against, fixed)
+        if times and "t_star" not in ds.variables:
+            raise pm.MapError(f"'{args.map}' has no t_star variable (needed by --touch-by)")
+        fig = render(ds, args.against, fixed, times)
         pm.save_figure(fig, out, dpi=FIG_DPI)
     print(f"critical_dh.py: wrote {out}")
     return 0

@@ -55,3 +55,37 @@ def test_regime_map_draws_it_in_kpa_and_seconds(material_map, tmp_path):
     ds = pm.open_map(material_map)
     assert "kPa" in pm.axis_label(ds, "pbar")
     assert pm.unit_tex(pm.units(ds, "t_star")) == "s"
+
+
+def test_touch_by_interpolates_in_log_time():
+    import critical_dh
+    dh = np.array([0.1, 0.2, 0.3, 0.4])
+    t_star = np.array([0.0, 10.0, 1000.0, np.nan])
+    assert critical_dh.touch_by_curve(dh, t_star, 100.0) == pytest.approx(0.25, rel=1e-12)  # halfway in log t
+    assert critical_dh.touch_by_curve(dh, t_star, 5.0) == pytest.approx(0.15, rel=1e-12)  # linear from t* = 0
+    assert critical_dh.touch_by_curve(dh, t_star, 1e4) == 0.3  # the last that touches; the next never does
+    assert np.isnan(critical_dh.touch_by_curve(dh, np.array([5.0, 50.0, np.nan, np.nan]), 1.0))
+
+
+def test_critical_dh_against_temperature_of_a_wlf_map(tmp_path):
+    import critical_dh
+    material = tmp_path / "wlf.ini"
+    material.write_text(MATERIAL.read_text() + "[shift]\nkind = wlf\nC1 = 17.44\nC2 = 51.6\nT_ref = 20\n")
+    path = tmp_path / "wlf.h5"
+    done = subprocess.run([BINARY, "sweep", "--model.material", str(material), "--grid.l", "0.75",
+                           "--grid.dh", "linspace(0.005, 0.06, 12)", "--grid.temperature", "10, 20, 30",
+                           "--grid.pbar", "0.005", "--grid.s", "2", "--quantities", "regime", "--quiet",
+                           "--output", str(path)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    ds = pm.open_map(path)
+    # WLF: colder is slower, so the dh that touches within 100 s shrinks with falling temperature.
+    fixed = pm.resolve_at(ds, pm.parse_at(["l=0.75", "s=2", "pbar=23.532"], ds), free=["T", "s"],
+                          optional=("T", "s"),
+                          reserved={"temperature": "the horizontal axis", "dh": "the vertical axis"})
+    curves = critical_dh.touch_by_curves(ds, "temperature", fixed, [100.0])[0, 0, 0]
+    assert curves[0] <= curves[1] <= curves[2] and curves[0] < curves[2]
+    out = tmp_path / "chart.png"
+    rc, _, err = call(critical_dh, path, "--against", "temperature", "--at", "l=0.75", "pbar=23.532",
+                      "--touch-by", "1,100", "-o", out)
+    assert rc == 0, err
+    assert out.stat().st_size > 10_000
