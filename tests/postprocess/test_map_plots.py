@@ -306,7 +306,7 @@ def test_critical_dh_takes_h_at_any_dh_and_warns_if_it_varies_along_dh(maps, tmp
 
 @pytest.mark.parametrize("args, message", [
     (["--at", "l=0.75", "dh=0.05"], "dh is the chart's vertical axis"),
-    (["--against", "T"], "--against 'T' is not a valid choice; use l or pbar"),
+    (["--against", "T"], "--against 'T' is not a valid choice; use l, pbar or temperature"),
     (["--against", "l"], "still to fix pbar"),
     (["--at", "l=3"], "--at l=3 is outside the axis range"),
 ], ids=["dh-fixed", "against-T", "pbar-not-fixed", "at-out-of-range"])
