@@ -220,6 +220,15 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   if (config.material) {
     attributes.material = {config.material->name(), config.material->text(), config.material->instantaneous_modulus_Pa(),
                            config.material->plane_strain_modulus_Pa(), config.material->poisson()};
+  } else if (!config.materials.empty()) {
+    // Several: their names and texts, one after the other in the material axis's order; the
+    // pressure scale differs between them, so no single E0.
+    for (std::size_t k = 0; k < config.materials.size(); ++k) {
+      const model::Material& m = *config.materials[k];
+      attributes.material.name += (k ? "\n" : "") + config.material_labels[k] + ": " + m.name();
+      attributes.material.text += (k ? "\n" : "") + std::string("# ---- material ") + config.material_labels[k] +
+                                  " ----\n" + m.text();
+    }
   }
 
   run::MapRun map_run(config, layout, attributes, start, tiling, std::cerr);

@@ -76,10 +76,12 @@ std::vector<KeySpec> make_keys() {
   keys.push_back({"model", "creep_law", "NAME", std::string(model::creep_laws().front().name),
                   "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
                   Fixed::model_creep_law});
-  keys.push_back({"model", "material", "FILE", "",
+  keys.push_back({"model", "material", "FILES", "",
                   "material file (materials/NAME.ini, see README); replaces creep_law: the axes are then l, dh, "
-                  "[temperature when the file has a [shift]], pbar, s, and times are in the file's time_unit",
-                  "empty, or a readable material file", Fixed::model_material});
+                  "[temperature when the file has a [shift]], pbar, s, and times are in the file's time_unit. A "
+                  "list (a.ini, b.ini) adds a categorical axis material after dh, labelled by the files' names",
+                  "empty, or readable material files (several: one time_unit, all or none with a [shift])",
+                  Fixed::model_material});
   keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5",
                   "snapshot times of the stored time series, in T_eps (or the material's time_unit)",
                   kTimesRange, Fixed::time_times});
@@ -504,13 +506,33 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
           break;
         case Fixed::model_material:
           config.material_path = text;
-          if (!text.empty()) {
-            try {
-              config.material = read_material_file(text);
-              config.material_spec = std::make_shared<const model::CreepLawSpec>(config.material->spec());
-            } catch (const UsageError& e) {
-              problem = e.what();
+          config.materials.clear();
+          config.material_labels.clear();
+          try {
+            std::string item;
+            std::istringstream list(text);
+            while (std::getline(list, item, ',')) {
+              item = run::trim(item);
+              if (item.empty()) continue;
+              config.materials.push_back(read_material_file(item));
+              std::string label = std::filesystem::path(item).stem().string();
+              if (std::find(config.material_labels.begin(), config.material_labels.end(), label) !=
+                  config.material_labels.end()) {
+                throw UsageError("two material files are named " + label + "; valid: files of different names");
+              }
+              config.material_labels.push_back(label);
             }
+            if (config.materials.size() == 1) {
+              config.material = config.materials.front();
+              config.material_spec = std::make_shared<const model::CreepLawSpec>(config.material->spec());
+            } else if (config.materials.size() > 1) {
+              config.material_spec =
+                  std::make_shared<const model::CreepLawSpec>(model::material_choice(config.materials));
+            }
+          } catch (const UsageError& e) {
+            problem = e.what();
+          } catch (const std::invalid_argument& e) {
+            problem = e.what();
           }
           break;
         case Fixed::time_times: {
@@ -571,7 +593,7 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
     }
   }
   // A material replaces the creep law (and its parameters) by the file's.
-  if (config.material) {
+  if (config.material_spec) {
     const std::size_t law_key = key_index(Fixed::model_creep_law);
     if (settings[law_key].source != Source::default_value) {
       problems.push_back(dotted(Fixed::model_creep_law) + " = " + settings[law_key].text +
@@ -587,6 +609,16 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
   config.ramp = settings[ramp_key].source != Source::default_value;
   if (config.ramp) wanted.push_back(&model::ramp_time_parameter());
   for (const model::Parameter* p : wanted) {
+    if (p->name == model::material_parameter().name) {
+      // The categorical axis of the material files, labelled by their names.
+      map::Axis axis;
+      axis.name = std::string(p->name);
+      axis.text = config.material_path;
+      axis.labels = config.material_labels;
+      for (std::size_t k = 0; k < axis.labels.size(); ++k) axis.values.push_back(static_cast<double>(k));
+      config.grid.axes.push_back(axis);
+      continue;
+    }
     for (std::size_t k = 0; k < keys().size(); ++k) {
       const KeySpec& spec = keys()[k];
       if (spec.fixed != Fixed::none || spec.name != p->name) continue;
@@ -599,11 +631,13 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
       }
       // A material's temperature is also held to its shift's range (WLF diverges below
       // T_ref - C2).
-      if (config.material && p->name == model::temperature_parameter().name) {
-        for (const double v : axis.values) {
-          if (!config.material->shift()->admits(v)) {
-            problems.push_back(dotted(spec) + " = " + settings[k].text + ": value " + map::format_axis_value(v) +
-                               " is outside its range: " + config.material->shift()->range());
+      if (p->name == model::temperature_parameter().name) {
+        for (const auto& material : config.materials) {
+          const auto bad = std::find_if(axis.values.begin(), axis.values.end(),
+                                        [&](double v) { return !material->shift()->admits(v); });
+          if (bad != axis.values.end()) {
+            problems.push_back(dotted(spec) + " = " + settings[k].text + ": value " + map::format_axis_value(*bad) +
+                               " is outside its range for " + material->name() + ": " + material->shift()->range());
             break;
           }
         }
@@ -670,7 +704,7 @@ std::string resolved_value(Fixed key, const std::string& text, const sweep::Swee
     case Fixed::model_C:
       return map::format_axis_value(config.C);
     case Fixed::model_creep_law:
-      return std::string(config.material ? model::creep_laws().front().name : config.creep_law->name);
+      return std::string(config.material_spec ? model::creep_laws().front().name : config.creep_law->name);
     case Fixed::run_chunk:
       return config.chunk == sweep::kAutoChunk ? "auto" : std::to_string(config.chunk);
     case Fixed::run_quiet:
@@ -725,13 +759,13 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
   }
   lines.push_back("model.C = " + map::format_axis_value(config.C));
   lines.push_back("model.creep_law = " + std::string(config.creep_law->name));
-  if (config.material) {
+  for (const auto& material : config.materials) {
     // The material's content, not its path: the same file moved is the same map.
-    std::uint32_t crc = io::crc32(reinterpret_cast<const unsigned char*>(config.material->text().data()),
-                                  config.material->text().size());
+    std::uint32_t crc = io::crc32(reinterpret_cast<const unsigned char*>(material->text().data()),
+                                  material->text().size());
     char hex[9];
     std::snprintf(hex, sizeof hex, "%08x", crc);
-    lines.push_back("model.material = " + config.material->name() + " (file crc32 " + hex + ")");
+    lines.push_back("model.material = " + material->name() + " (file crc32 " + hex + ")");
   }
   lines.push_back("time.times = " + map::format_axis_values(config.times));
   lines.push_back(std::string("output.quantities = ") +

@@ -136,9 +136,11 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   if (!attributes.material.name.empty()) {
     write_string_attribute(file_, "material", attributes.material.name, in);
     write_string_attribute(file_, "material_file", attributes.material.text, in);
-    write_double_attribute(file_, "E0_Pa", attributes.material.E0_Pa, in);
-    write_double_attribute(file_, "E0_star_Pa", attributes.material.E0_star_Pa, in);
-    write_double_attribute(file_, "poisson", attributes.material.poisson, in);
+    if (attributes.material.E0_Pa > 0.0) {  // one material: its pressure scale
+      write_double_attribute(file_, "E0_Pa", attributes.material.E0_Pa, in);
+      write_double_attribute(file_, "E0_star_Pa", attributes.material.E0_star_Pa, in);
+      write_double_attribute(file_, "poisson", attributes.material.poisson, in);
+    }
   }
   write_string_attribute(file_, "scales", kScales, in);
   if (layout.bem) {
@@ -157,10 +159,14 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
     // Each axis is a model parameter, which declares its units and long name.
     const model::Parameter* parameter = model::find_parameter(axis.name);
     if (parameter == nullptr) throw std::invalid_argument("regime map: axis " + axis.name + " is no model parameter");
-    create_coordinate(axis.name, axis.values, std::string(parameter->scale), std::string(parameter->long_name));
+    if (!axis.labels.empty()) {
+      create_label_coordinate(axis.name, axis.labels, std::string(parameter->long_name));
+    } else {
+      create_coordinate(axis.name, axis.values, std::string(parameter->scale), std::string(parameter->long_name));
+    }
     const std::string where = "on '" + axis.name + "' " + in;
     write_string_attribute(coordinates_.back(), "axis_spec", axis.text, where);
-    write_string_attribute(coordinates_.back(), "spacing", axis_spacing(axis), where);
+    write_string_attribute(coordinates_.back(), "spacing", axis.labels.empty() ? axis_spacing(axis) : "list", where);
   }
   create_coordinate("time", layout.times, "T_eps", "snapshot time");
 
@@ -199,6 +205,25 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
     }
     variables_.push_back(std::move(dataset));
   }
+}
+
+void RegimeMapWriter::create_label_coordinate(const std::string& name, const std::vector<std::string>& labels,
+                                              const std::string& long_name) {
+  const std::string where = "'" + name + "' in " + path_;
+  const auto n = static_cast<hsize_t>(labels.size());
+  const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "make dataspace of " + where);
+  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
+  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
+        "set attribute order of " + where);
+  const Handle type = string_type("make a string type for " + where);
+  Handle dataset(H5Dcreate2(file_, name.c_str(), type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
+                 "create coordinate " + where);
+  std::vector<const char*> text;
+  for (const std::string& label : labels) text.push_back(label.c_str());
+  check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()), "write coordinate " + where);
+  check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
+  write_string_attribute(dataset, "long_name", long_name, "on " + where);
+  coordinates_.push_back(std::move(dataset));
 }
 
 /// A time in a material's unit and a temperature have real units; everything else is a

@@ -113,6 +113,9 @@ class RegimeMapWriter {
  private:
   /// units (and scaled_by) of a value measured in `scale` (see write_units in the .cpp).
   void write_units(hid_t object, const std::string& scale, const std::string& where) const;
+  /// A categorical axis: a variable-length UTF-8 string coordinate of its labels.
+  void create_label_coordinate(const std::string& name, const std::vector<std::string>& labels,
+                               const std::string& long_name);
   void create_coordinate(const std::string& name, const std::vector<double>& values, const std::string& scale,
                          const std::string& long_name);
   /// An int8 flag variable when `codes`, else float64; over the time axis too when `series`.

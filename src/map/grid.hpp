@@ -23,6 +23,9 @@ struct Axis {
   std::vector<double> values;
   std::string text;          ///< e.g. "linspace(0.5, 1.25, 16)" or "2, 5, 10"
   bool log_spaced = false;   ///< given by logspace(): plots use a log axis
+  /// A categorical axis (the materials of a sweep): one label per value, the values being
+  /// 0, 1, ...; empty for a numeric axis.
+  std::vector<std::string> labels = {};
 };
 
 /// The grid: the product of its axes.

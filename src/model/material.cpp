@@ -209,6 +209,51 @@ const Parameter& temperature_parameter() {
   return kTemperature;
 }
 
+const Parameter& material_parameter() {
+  static const Parameter kMaterial{"material",
+                                   "1",
+                                   "material",
+                                   "the material, one of the sweep's material files",
+                                   "one of the material files given",
+                                   [](double v) { return v >= 0.0; },
+                                   true,
+                                   {},
+                                   {}};
+  return kMaterial;
+}
+
+CreepLawSpec material_choice(std::vector<std::shared_ptr<const Material>> materials) {
+  if (materials.empty()) throw std::invalid_argument("material_choice: no materials");
+  const Material& first = *materials.front();
+  for (const auto& m : materials) {
+    if (m->time_unit() != first.time_unit()) {
+      throw std::invalid_argument("the materials' time units differ (" + first.time_unit() + " and " + m->time_unit() +
+                                  "); valid: one time_unit for every material of a map");
+    }
+    if (m->shift().has_value() != first.shift().has_value()) {
+      throw std::invalid_argument("some materials have a [shift] and some do not; valid: all or none (a map has one "
+                                  "temperature axis or none)");
+    }
+  }
+  struct Held {
+    std::vector<std::shared_ptr<const Material>> materials;
+    std::vector<Parameter> parameters;
+  };
+  auto held = std::make_shared<Held>();
+  held->materials = std::move(materials);
+  held->parameters.push_back(material_parameter());
+  if (first.shift()) held->parameters.push_back(temperature_parameter());
+  const std::span<const Parameter> parameters(held->parameters);
+  return CreepLawSpec{"material", {}, "one of several material files", parameters,
+                      [held](std::span<const double> values) {
+                        const auto k = static_cast<std::size_t>(values[0]);
+                        if (k >= held->materials.size()) {
+                          throw std::invalid_argument("material index " + std::to_string(k) + " is outside its range");
+                        }
+                        return held->materials[k]->make(values.subspan(1));
+                      }};
+}
+
 Material Material::parse(std::string_view text, std::string_view origin) {
   const Entries f(text, std::string(origin));
   Material m;

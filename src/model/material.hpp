@@ -30,6 +30,17 @@ class MaterialError : public std::invalid_argument {
 /// temperature, the parameter a material with a [shift] takes (in degC; sweepable).
 const Parameter& temperature_parameter();
 
+/// material, the categorical parameter of a sweep over several material files: the index of
+/// the material (its label is the file's name).
+const Parameter& material_parameter();
+
+class Material;
+/// Several materials as one creep law for a sweep: parameters material (the index into
+/// `materials`) and, when every material has a [shift], temperature. Throws
+/// std::invalid_argument when the materials differ in time unit or in having a shift (a
+/// map has one time axis and one set of axes).
+CreepLawSpec material_choice(std::vector<std::shared_ptr<const Material>> materials);
+
 class Material {
  public:
   /// Parses a material file's text; `origin` (the file name) starts every message. Throws

@@ -52,7 +52,7 @@ const Parameter* find_parameter(std::string_view name) {
       if (p.name == name) return &p;
     }
   }
-  for (const Parameter* p : {&temperature_parameter(), &ramp_time_parameter()}) {
+  for (const Parameter* p : {&material_parameter(), &temperature_parameter(), &ramp_time_parameter()}) {
     if (p->name == name) return p;
   }
   return nullptr;

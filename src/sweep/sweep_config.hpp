@@ -58,11 +58,16 @@ struct SweepConfig {
   std::shared_ptr<const model::Material> material;
   std::string material_path;
   std::shared_ptr<const model::CreepLawSpec> material_spec;
+  /// [model] material = a.ini, b.ini: every material file, in order (one for `material`);
+  /// with several, the grid has a categorical `material` axis labelled by the files' names
+  /// and material_spec is model::material_choice of them (material is then nullptr).
+  std::vector<std::shared_ptr<const model::Material>> materials;
+  std::vector<std::string> material_labels;
   /// The grid has a ramp_time axis (the load rises over ramp_time, then holds); without it
   /// the load is a step.
   bool ramp = false;
   /// The unit of every time: the material's time_unit, or T_eps.
-  std::string time_unit() const { return material ? material->time_unit() : "T_eps"; }
+  std::string time_unit() const { return materials.empty() ? "T_eps" : materials.front()->time_unit(); }
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps
   std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
   map::Quantities quantities = map::Quantities::full;  ///< [output] quantities

@@ -20,7 +20,7 @@ inline constexpr const char* kAxisNames[kAxes] = {"l", "dh", "T", "pbar", "s"};
 /// A grid with those five named axes and no values yet.
 inline Grid sls_grid() {
   Grid grid;
-  for (const char* name : kAxisNames) grid.axes.push_back(Axis{name, {}, "", false});
+  for (const char* name : kAxisNames) grid.axes.push_back(Axis{name, {}, "", false, {}});
   return grid;
 }
 

@@ -4,6 +4,7 @@
 # attributes; the WLF shift holds across the temperature axis (t* at th = a_T t* at T_ref);
 # a ramp_time axis of 0 reproduces the step map; the same map on 1 and 3 ranks; --resume
 # refuses a map made with a different material file; a bad file or temperature is refused.
+repo=$(cd "$(dirname "$0")/../.." && pwd)
 source "$(dirname "$0")/common.sh"
 PY=/usr/bin/python3
 fail() { echo "FAIL: $*"; exit 1; }
@@ -68,6 +69,31 @@ assert (t1[ok] >= t0[ok]).all()
 print("ramp map ok")
 PY
 
+# Several materials: a categorical material axis (after dh) labelled by the files' names,
+# each slice bit for bit the single-material map, on 2 ranks as on 1.
+cp "$repo/materials/nbr_linder2011.ini" nbr.ini
+small=(--grid.l 0.75,1 --grid.dh 'linspace(0.01, 0.08, 8)' --grid.pbar 'logspace(0.005, 0.04, 4)' --grid.s 2
+       --time.times 0,1,10,100)
+run_ranks 0 sweep --model.material "wlf.ini, nbr.ini" "${small[@]}" --grid.temperature 105 --quiet --output both.h5 \
+  2> mixed.log && fail "a material with a [shift] beside one without was accepted"
+grep -q "some materials have a \[shift\] and some do not" mixed.log || { cat mixed.log; fail "mixed shift message"; }
+sed '/^\[shift\]/,$d' wlf.ini > plain.ini
+run_ranks 2 sweep --model.material "plain.ini, nbr.ini" "${small[@]}" --quiet --output both.h5 || fail "two materials"
+run_ranks 0 sweep --model.material plain.ini "${small[@]}" --quiet --output plain.h5 || fail "plain"
+run_ranks 0 sweep --model.material nbr.ini "${small[@]}" --quiet --output nbr.h5 || fail "nbr"
+"$PY" - both.h5 plain.h5 nbr.h5 <<'PY' || fail "material axis"
+import sys, numpy as np, xarray as xr
+both = xr.open_dataset(sys.argv[1], engine="h5netcdf")
+assert list(both.regime.dims) == ["l", "dh", "material", "pbar", "s"], both.regime.dims
+assert list(both.material.values) == ["plain", "nbr"], both.material.values
+assert "E0_star_Pa" not in both.attrs  # two pressure scales: none claimed for the map
+for label, path in (("plain", sys.argv[2]), ("nbr", sys.argv[3])):
+    one = xr.open_dataset(path, engine="h5netcdf")
+    for v in ["regime", "valid", "t_star", "h_0", "h_inf", "a1_inf", "a2_inf", "a1", "a2", "P1", "P2"]:
+        assert np.array_equal(both[v].sel(material=label).values, one[v].values, equal_nan=True), (label, v)
+print("material axis ok")
+PY
+
 # --resume compares the material's content.
 sed 's/E_inf = 1.0/E_inf = 1.1/' wlf.ini > other.ini
 cp other.ini wlf2.ini
@@ -77,7 +103,7 @@ grep -q "model.material" resume.log || { cat resume.log; fail "the refusal does 
 
 # Bad inputs: a temperature below T_ref - C2, a bad file, creep_law beside material.
 run_ranks 0 sweep --model.material wlf.ini --grid.temperature 40 --dry-run 2> bad.log && fail "40 degC accepted"
-grep -q "grid.temperature = 40: value 40 is outside its range: temperature > 53.4" bad.log || { cat bad.log; fail "temperature"; }
+grep -q "grid.temperature = 40: value 40 is outside its range for test polymer.*: temperature > 53.4" bad.log || { cat bad.log; fail "temperature"; }
 sed 's/tau_i = 0.5, 20, 600/tau_i = 0.5, 20, 20/' wlf.ini > bad.ini
 run_ranks 0 sweep --model.material bad.ini --dry-run 2> bad.log && fail "repeated tau accepted"
 test $? -ne 0
