@@ -169,13 +169,38 @@ PointMaterial find_point_material(const std::vector<std::string>& args) {
   return {material, material->spec()};
 }
 
+model::LoadShape parse_load_table(const std::string& text, const std::string& key) {
+  std::vector<model::LoadShape::Point> points;
+  std::string item;
+  std::istringstream list(text);
+  const std::string form = "; valid: t:phi, t:phi, ... from 0:phi0 to t_n:1, non-decreasing phi in [0, 1]";
+  while (std::getline(list, item, ',')) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos) throw UsageError(key + " = '" + text + "': '" + item + "' is not t:phi" + form);
+    try {
+      points.push_back({parse_real(item.substr(0, colon), key), parse_real(item.substr(colon + 1), key)});
+    } catch (const UsageError&) {
+      throw UsageError(key + " = '" + text + "': '" + item + "' is not two numbers t:phi" + form);
+    }
+  }
+  try {
+    return model::LoadShape::table(points);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(key + " = '" + text + "': " + e.what());
+  }
+}
+
 void add_material_options(po::options_description& opts) {
   opts.add_options()("material", po::value<std::string>()->value_name("FILE"),
                      "material file (materials/NAME.ini: a Prony or Kelvin series in physical units); replaces "
                      "--T, times are then in the file's time_unit")(
       "ramp", po::value<std::string>()->value_name("TR")->default_value("0"),
       "ramp time t_r: the nominal pressure rises linearly to pbar over t_r, then holds (time unit as --times; "
-      "0 is a step); t_r >= 0");
+      "0 is a step); t_r >= 0")(
+      "load-table", po::value<std::string>()->value_name("T:PHI,..."),
+      "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time unit as --times), "
+      "from 0:phi0 to t_n:1 and non-decreasing (a load that falls is refused: the model holds while the contact "
+      "does not recede); instead of --ramp");
 }
 
 PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& material) {
@@ -186,6 +211,11 @@ PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& 
                                 [](double v) { return v >= 0.0; });
   inputs.problem.loading = model::LoadShape::ramp(ramp);
   if (ramp > 0.0) inputs.values.emplace_back(&model::ramp_time_parameter(), ramp);
+  if (vm.count("load-table")) {
+    if (ramp > 0.0) throw UsageError("--ramp and --load-table both given; valid: one of them");
+    inputs.problem.loading = parse_load_table(vm["load-table"].as<std::string>(), "--load-table");
+    inputs.load_text = vm["load-table"].as<std::string>();
+  }
   return inputs;
 }
 
@@ -203,6 +233,7 @@ std::string PointInputs::describe() const {
       text.append(p->scale);
     }
   }
+  if (!load_text.empty()) text += ", load table " + load_text + " (t in " + time_unit + ": fraction of pbar)";
   return text;
 }
 

@@ -64,7 +64,12 @@ struct PointMaterial {
 };
 PointMaterial find_point_material(const std::vector<std::string>& args);
 
-/// --material FILE and --ramp TR, declared for a point command.
+/// A load table "t:phi, t:phi, ..." (times in the law's unit, phi the fraction of pbar; from
+/// t = 0 to phi = 1, non-decreasing) as a LoadShape. Throws UsageError naming `key`, the
+/// text and the rule it breaks.
+model::LoadShape parse_load_table(const std::string& text, const std::string& key);
+
+/// --material FILE, --ramp TR and --load-table, declared for a point command.
 void add_material_options(boost::program_options::options_description& opts);
 
 /// The inputs of one parameter point: the contact problem and the creep law with its
@@ -78,6 +83,7 @@ struct PointInputs {
   std::unique_ptr<model::CreepLaw> creep;
   std::shared_ptr<const model::Material> material;  ///< the --material file, or nullptr
   std::string time_unit = "T_eps";                   ///< of every time in and out
+  std::string load_text;                             ///< --load-table as given, or empty
 
   /// "l = 0.75 R, dh = 0.075 R, T = 2.5, pbar = 0.06 E0/(1-nu^2), s = 2, C = 0.5": every
   /// parameter in add_point_options' order, with its unit.

@@ -38,7 +38,7 @@ constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output"
 // resolved_text, after the [grid] keys.
 enum class Fixed {
   none,  // a [grid] key: a model parameter's axis
-  model_C, model_creep_law, model_material, time_times, output_file, output_quantities,
+  model_C, model_creep_law, model_material, model_load_table, time_times, output_file, output_quantities,
   run_chunk, run_quiet, run_resume, run_overwrite,
   reference_method, reference_grid, reference_sample, reference_seed
 };
@@ -82,6 +82,10 @@ std::vector<KeySpec> make_keys() {
                   "list (a.ini, b.ini) adds a categorical axis material after dh, labelled by the files' names",
                   "empty, or readable material files (several: one time_unit, all or none with a [shift])",
                   Fixed::model_material});
+  keys.push_back({"model", "load_table", "T:PHI,...", "",
+                  "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time in T_eps "
+                  "or the material's unit), from 0:phi0 to t_n:1; empty: a step (a ramp: grid.ramp_time)",
+                  "empty, or points from 0:phi0 to t_n:1 with phi non-decreasing in [0, 1]", Fixed::model_load_table});
   keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5",
                   "snapshot times of the stored time series, in T_eps (or the material's time_unit)",
                   kTimesRange, Fixed::time_times});
@@ -535,6 +539,18 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
             problem = e.what();
           }
           break;
+        case Fixed::model_load_table:
+          config.load_text = text;
+          config.loading = model::LoadShape{};
+          if (!text.empty()) {
+            try {
+              config.loading = parse_load_table(text, dotted(spec));
+            } catch (const UsageError& e) {
+              const std::string what = e.what();
+              problem = what.substr(what.find(": ") + 2);
+            }
+          }
+          break;
         case Fixed::time_times: {
           map::Axis times;
           problem = check_axis(text, false, [](double t) { return t >= 0.0; }, times);
@@ -767,6 +783,7 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
     std::snprintf(hex, sizeof hex, "%08x", crc);
     lines.push_back("model.material = " + material->name() + " (file crc32 " + hex + ")");
   }
+  if (!config.load_text.empty()) lines.push_back("model.load_table = " + config.load_text);
   lines.push_back("time.times = " + map::format_axis_values(config.times));
   lines.push_back(std::string("output.quantities = ") +
                   (config.quantities == map::Quantities::full ? "full" : "regime"));
@@ -881,6 +898,15 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   std::vector<std::string> problems = apply_settings(settings, config);
   if (problems.empty()) {
     if (std::string problem = grid_size_problem(config.grid); !problem.empty()) problems.push_back(problem);
+  }
+  if (problems.empty() && config.ramp && !config.load_text.empty()) {
+    problems.push_back("model.load_table = " + config.load_text +
+                       ": a ramp_time axis is given too; valid range: one of grid.ramp_time and model.load_table");
+  }
+  if (problems.empty() && !config.load_text.empty() && config.reference.on()) {
+    problems.push_back("model.load_table = " + config.load_text +
+                       ": the BEM reference (reference.method = bem) steps a step load only; valid range: empty with "
+                       "reference.method = bem");
   }
   if (problems.empty() && config.ramp && config.reference.on()) {
     problems.push_back("grid.ramp_time = " + settings[key_index(&model::ramp_time_parameter())].text +

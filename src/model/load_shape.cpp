@@ -11,7 +11,7 @@ namespace {
 
 std::string number(double v) {
   std::ostringstream out;
-  out.precision(17);
+  out.precision(12);
   out << v;
   return out.str();
 }

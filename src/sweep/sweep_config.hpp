@@ -66,6 +66,10 @@ struct SweepConfig {
   /// The grid has a ramp_time axis (the load rises over ramp_time, then holds); without it
   /// the load is a step.
   bool ramp = false;
+  /// [model] load_table: the load's shape when it is neither a step nor a ramp axis (its
+  /// text as given in load_text; empty: a step).
+  model::LoadShape loading{};
+  std::string load_text;
   /// The unit of every time: the material's time_unit, or T_eps.
   std::string time_unit() const { return materials.empty() ? "T_eps" : materials.front()->time_unit(); }
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps

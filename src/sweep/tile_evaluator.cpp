@@ -60,7 +60,8 @@ std::size_t require_axis(const map::Grid& grid, std::string_view name) {
 }  // namespace
 
 TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C,
-                             std::vector<double> times, map::Quantities quantities, const ReferenceConfig& reference)
+                             std::vector<double> times, map::Quantities quantities, const ReferenceConfig& reference,
+                             model::LoadShape loading)
     : grid_(grid),
       law_(law),
       C_(C),
@@ -69,7 +70,8 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
       l_(require_axis(grid, model::kPitch)),
       dh_(require_axis(grid, model::kHeightDifference)),
       pbar_(require_axis(grid, model::kPressure)),
-      s_(require_axis(grid, model::kExponent)) {
+      s_(require_axis(grid, model::kExponent)),
+      loading_(std::move(loading)) {
   for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
   law_axes_ = material_.size();
   if (const std::size_t ramp = grid.find(model::ramp_time_parameter().name); ramp < grid.rank()) {
@@ -112,7 +114,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
   std::size_t materials = 1;
   for (const std::size_t a : material_) materials *= c[a];
   std::vector<std::unique_ptr<model::CreepLaw>> creep(materials);
-  std::vector<model::LoadShape> loading(materials);
+  std::vector<model::LoadShape> loading(materials, loading_);
   std::vector<std::size_t> material_offset(materials);  // in the box, from the strides
   std::vector<std::size_t> material_global(materials);  // row-major over the grid's law axes
   std::vector<double> law_values(material_.size());
@@ -229,7 +231,7 @@ model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vecto
   problem.shape = model::Shape{static_cast<int>(value(s_)), C_};
   law_values->clear();
   for (std::size_t k = 0; k < law_axes_; ++k) law_values->push_back(value(material_[k]));
-  if (material_.size() > law_axes_) problem.loading = model::LoadShape::ramp(value(material_.back()));
+  problem.loading = material_.size() > law_axes_ ? model::LoadShape::ramp(value(material_.back())) : loading_;
   return problem;
 }
 

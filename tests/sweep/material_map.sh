@@ -94,6 +94,35 @@ for label, path in (("plain", sys.argv[2]), ("nbr", sys.argv[3])):
 print("material axis ok")
 PY
 
+# A load table: a map equal to `punchsweep point --load-table` at its points, and one equal
+# to the ramp map when the table is that ramp.
+table=(--model.material nbr.ini "${small[@]}" --model.load_table "0:0, 50:1")
+run_ranks 0 sweep "${table[@]}" --quiet --output table.h5 || fail "load table"
+run_ranks 0 sweep --model.material nbr.ini "${small[@]}" --grid.ramp_time 50 --quiet --output ramp1.h5 || fail "ramp 50"
+"$PY" - table.h5 ramp1.h5 <<'PY' || fail "table map"
+import sys, numpy as np, xarray as xr
+table = xr.open_dataset(sys.argv[1], engine="h5netcdf")
+ramp = xr.open_dataset(sys.argv[2], engine="h5netcdf").isel(ramp_time=0)
+for v in ["regime", "t_star", "a1", "a2", "P1", "P2"]:
+    assert np.allclose(table[v].values, ramp[v].values, rtol=1e-12, atol=0, equal_nan=True), v
+print("table map ok")
+PY
+"$PUNCHSWEEP" point --material nbr.ini --l 1 --dh 0.05 --pbar 0.04 --s 2 --times 0,1,10,100 \
+  --load-table "0:0, 50:1" --format json > point.json
+"$PY" - table.h5 point.json <<'PY' || fail "table point"
+import json, sys, numpy as np, xarray as xr
+table = xr.open_dataset(sys.argv[1], engine="h5netcdf").sel(l=1, dh=0.05, pbar=0.04, s=2)
+point = json.load(open(sys.argv[2]))
+assert float(table.t_star) == point["t_star"], (float(table.t_star), point["t_star"])
+assert np.array_equal(table.P1.values, np.array(point["series"]["P1"]))
+print("table point ok")
+PY
+run_ranks 0 sweep "${table[@]}" --grid.ramp_time 10 --dry-run 2> bad.log && fail "table with a ramp axis"
+grep -q "one of grid.ramp_time and model.load_table" bad.log || { cat bad.log; fail "table + ramp message"; }
+run_ranks 0 sweep --model.material nbr.ini --model.load_table "0:0, 5:0.8, 9:0.5, 10:1" --dry-run 2> bad.log &&
+  fail "a falling load table accepted"
+grep -q "model.load_table = .*the load decreases; refused because" bad.log || { cat bad.log; fail "falling table"; }
+
 # --resume compares the material's content.
 sed 's/E_inf = 1.0/E_inf = 1.1/' wlf.ini > other.ini
 cp other.ini wlf2.ini
