@@ -51,11 +51,6 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
   }
   const PointInputs inputs = read_point_inputs(vm, material);
   const model::ContactProblem& problem = inputs.problem;
-  if (!problem.loading.is_step()) {
-    throw UsageError(std::string(vm.count("load-table") ? "--load-table" : "--ramp") +
-                     ": the BEM reference steps a step load only; valid range: a step (ramped and tabulated loads "
-                     "are the model's, `punchsweep point`)");
-  }
   reference::ReferenceOptions options;
   reference::scale_steps_to_law(*inputs.creep, &options);
   options.times = read_times(vm);

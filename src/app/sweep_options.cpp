@@ -903,16 +903,6 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
     problems.push_back("model.load_table = " + config.load_text +
                        ": a ramp_time axis is given too; valid range: one of grid.ramp_time and model.load_table");
   }
-  if (problems.empty() && !config.load_text.empty() && config.reference.on()) {
-    problems.push_back("model.load_table = " + config.load_text +
-                       ": the BEM reference (reference.method = bem) steps a step load only; valid range: empty with "
-                       "reference.method = bem");
-  }
-  if (problems.empty() && config.ramp && config.reference.on()) {
-    problems.push_back("grid.ramp_time = " + settings[key_index(&model::ramp_time_parameter())].text +
-                       ": the BEM reference (reference.method = bem) steps a step load only; valid range: no "
-                       "ramp_time axis with reference.method = bem");
-  }
   if (config.resume && config.overwrite) {
     problems.push_back("run.resume = true and run.overwrite = true: give only one (--resume finishes or checks the "
                        "existing map, --overwrite replaces it)");

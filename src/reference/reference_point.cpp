@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -124,7 +125,15 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
   std::vector<ReferenceSnapshot> at_target;
   at_target.reserve(targets.size());
 
-  ViscoelasticStepper stepper(cell.grid, cell.profile, problem.pbar0, creep, options.solver);
+  ViscoelasticStepper stepper(cell.grid, cell.profile, problem.pbar0, creep, options.solver, problem.loading);
+  // A ramp or table is linear between its kinks: the steps land on them.
+  const std::vector<double> kinks = problem.loading.kinks();
+  const auto next_kink = [&](double t) {
+    for (const double k : kinks) {
+      if (k > t) return k;
+    }
+    return std::numeric_limits<double>::infinity();
+  };
   log(stepper.start());
   bool touched = level2_loaded(cell, stepper.pressure());
   if (touched) {
@@ -147,7 +156,7 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
   double dt = options.steps.first_step;
   for (const double target : targets) {
     while (stepper.time() < target) {
-      const double t_next = std::min(stepper.time() + dt, target);
+      const double t_next = std::min({stepper.time() + dt, target, next_kink(stepper.time())});
       if (touched) {
         log(stepper.advance(t_next));
         ++result.steps;
@@ -177,7 +186,6 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
           if (stepper.time() == lo) log(stepper.advance(hi));
           touched = level2_loaded(cell, stepper.pressure());
           if (touched) {
-            result.regime = model::Regime::delayed;
             result.t_star_lower = lo;
             result.t_star_upper = hi;
             double t_star = 0.5 * (lo + hi);
@@ -185,6 +193,10 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
               t_star = t_b + g_b * (t_b - t_a) / (g_a - g_b);  // secant on the tip gap
             }
             result.t_star = std::clamp(t_star, lo, hi);
+            // As the model says it (model/regime.hpp): touching while the load still rises
+            // is immediate, during the hold delayed.
+            const double rise = problem.loading.rise_time();
+            result.regime = rise > 0.0 && *result.t_star <= rise ? model::Regime::immediate : model::Regime::delayed;
           } else {
             remember_free_state();
           }

@@ -24,16 +24,18 @@ CreepHistoryForm natural_form(const model::CreepLaw& creep) {
 
 ViscoelasticStepper::ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile,
                                          double mean_pressure, const model::CreepLaw& creep,
-                                         ContactSolverOptions options)
+                                         ContactSolverOptions options, model::LoadShape loading)
     : ViscoelasticStepper(grid, std::move(profile), mean_pressure, creep, options,
-                          natural_form(creep)) {}
+                          natural_form(creep), std::move(loading)) {}
 
 ViscoelasticStepper::ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile,
                                          double mean_pressure, const model::CreepLaw& creep,
-                                         ContactSolverOptions options, CreepHistoryForm form)
+                                         ContactSolverOptions options, CreepHistoryForm form,
+                                         model::LoadShape loading)
     : solver_(grid, options),
       profile_(std::move(profile)),
       pbar0_(mean_pressure),
+      loading_(std::move(loading)),
       creep_(creep),
       form_(form),
       p_(grid.size(), mean_pressure),
@@ -80,8 +82,16 @@ double ViscoelasticStepper::step_compliance(double dt) const {
 
 ContactStatus ViscoelasticStepper::start() {
   const double J0 = creep_.creep(0.0);
-  std::fill(p_.begin(), p_.end(), pbar0_);
-  const ContactStatus status = solver_.solve(profile_, pbar0_, J0, p_, u_);
+  const double p0 = mean_pressure(0.0);
+  std::fill(p_.begin(), p_.end(), p0);
+  ContactStatus status;
+  if (p0 > 0.0) {
+    status = solver_.solve(profile_, p0, J0, p_, u_);
+  } else {
+    // No load at once (a ramp): the unloaded surface, nothing in contact.
+    std::fill(u_.begin(), u_.end(), 0.0);
+    status.converged = true;
+  }
   t_ = 0.0;
   approach_ = status.approach;
   for (std::size_t i = 0; i < p_.size(); ++i) w_[i] = J0 * p_[i];
@@ -134,7 +144,7 @@ ContactStatus ViscoelasticStepper::advance(double t_next) {
   for (std::size_t i = 0; i < n; ++i) shifted_profile_[i] = profile_[i] + u_hist_[i];
 
   std::vector<double> p_next = p_;  // warm start from the present pressure
-  const ContactStatus status = solver_.solve(shifted_profile_, pbar0_, J_step, p_next, u_);
+  const ContactStatus status = solver_.solve(shifted_profile_, mean_pressure(t_next), J_step, p_next, u_);
   for (std::size_t i = 0; i < n; ++i) {
     u_[i] += u_hist_[i];
     w_[i] = J_step * p_next[i] + w_hist_[i];

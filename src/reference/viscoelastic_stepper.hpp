@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/creep_law.hpp"
+#include "model/load_shape.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 
@@ -52,11 +53,14 @@ class ViscoelasticStepper {
   /// @param mean_pressure  constant nominal pressure pbar0 > 0
   /// @param creep     the material; a law with a retardation series gets the exponential
   ///                  form unless `form` asks for the convolution (kept for cross-checks)
+  /// `loading`: the mean pressure is pbar0 phi(t) (a step by default); without a jump at
+  /// t = 0 the start is the unloaded surface. A caller steps onto the load's kinks (the
+  /// pressure is taken linear within a step).
   ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile, double mean_pressure,
-                      const model::CreepLaw& creep, ContactSolverOptions options = {});
+                      const model::CreepLaw& creep, ContactSolverOptions options = {}, model::LoadShape loading = {});
   ViscoelasticStepper(const PeriodicGrid& grid, std::vector<double> profile, double mean_pressure,
                       const model::CreepLaw& creep, ContactSolverOptions options,
-                      CreepHistoryForm form);
+                      CreepHistoryForm form, model::LoadShape loading = {});
 
   /// The instantaneous response at t = 0 (compliance J(0)); must be called first.
   ContactStatus start();
@@ -94,6 +98,9 @@ class ViscoelasticStepper {
   ContactSolver solver_;
   std::vector<double> profile_;
   double pbar0_;
+  model::LoadShape loading_;
+  /// The mean pressure at t > 0 (at 0: what is applied at once).
+  double mean_pressure(double t) const { return loading_.is_step() ? pbar0_ : pbar0_ * (t > 0.0 ? loading_.at(t) : loading_.jump()); }
   const model::CreepLaw& creep_;
   CreepHistoryForm form_;
   model::RetardationSeries series_;  ///< exponential form: the law's terms

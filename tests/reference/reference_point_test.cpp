@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "model/contact_problem.hpp"
+#include "model/creep_weighted_load.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
 #include "model/prony_series.hpp"
@@ -160,6 +161,29 @@ TEST(ReferencePoint, steps_scaled_to_a_wide_spectrum_find_t_star_by_corresponden
   EXPECT_EQ(options.steps.first_step, StepControl{}.first_step);
   EXPECT_EQ(options.steps.max_step, StepControl{}.max_step);
   EXPECT_EQ(options.t_star_resolution, ReferenceOptions{}.t_star_resolution);
+}
+
+TEST(ReferencePoint, ramped_load_touches_where_the_correspondence_principle_says) {
+  // Under a non-decreasing load the contact set at t is the elastic one at X(t) = pbar0 g(t)
+  // (g the ramp's creep-weighted response), so t* = g^-1(J*) with J* from elastic solves
+  // alone: the BEM, stepping the ramp from the unloaded surface, must find it, and call it
+  // immediate when it comes while the load rises.
+  const model::StandardLinearSolid sls(2.5);
+  for (const double ramp : {0.5, 3.0}) {
+    model::ContactProblem problem = paper_point(0.075);
+    problem.loading = model::LoadShape::ramp(ramp);
+    ReferenceOptions options = options_with(32, {0.0, 5.0});
+    const ReferenceResult r = evaluate_reference_point(problem, sls, options);
+    ASSERT_TRUE(r.t_star.has_value());
+    const double J_star = elastic_touchdown_compliance(problem, 32, 1e-6, 2.5, 1e-9);
+    const double t_elastic = model::CreepWeightedLoad(sls, problem.pbar0, problem.loading).time_at_response(J_star);
+    EXPECT_NEAR(*r.t_star, t_elastic, options.t_star_resolution + 1e-4 * t_elastic) << "ramp " << ramp;
+    EXPECT_EQ(r.regime, t_elastic <= ramp ? model::Regime::immediate : model::Regime::delayed) << "ramp " << ramp;
+    // The loads carry the ramped nominal load at t = 0 (none) and at t = 5 (all of it).
+    EXPECT_EQ(r.series.front().P1 + r.series.front().P2, 0.0);
+    EXPECT_NEAR(r.series.back().P1 + r.series.back().P2, problem.pbar0 * problem.l * problem.l,
+                1e-9 * problem.pbar0);
+  }
 }
 
 TEST(ReferencePoint, t_star_agrees_with_localization_model_on_dilute_lattice) {
