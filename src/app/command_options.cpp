@@ -142,7 +142,13 @@ PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLaw
   inputs.problem.shape = model::Shape{static_cast<int>(value(model::kExponent)), value(model::kShapeConstant)};
   inputs.law = &law;
   for (const model::Parameter& p : law.parameters) inputs.law_values.push_back(value(p.name));
-  inputs.creep = model::make_creep_law(law, inputs.law_values);
+  try {
+    inputs.creep = model::make_creep_law(law, inputs.law_values);
+  } catch (const std::invalid_argument& e) {
+    // A range the law itself holds its parameters to (a material's WLF temperature range),
+    // named as the option it came from: "temperature = 40 is outside ...".
+    throw UsageError("--" + std::string(e.what()));
+  }
   return inputs;
 }
 

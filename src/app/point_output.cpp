@@ -69,6 +69,13 @@ std::string display_units(const QuantitySpec& q, const std::string& time_unit) {
   return q.scale == "1" ? std::string() : std::string(q.scale);
 }
 
+// `digits` significant digits, for a number quoted beside the results (not one of them).
+std::string significant(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
 std::string fixed(double v, int width, int precision) {
   if (!std::isfinite(v)) return std::string(static_cast<std::size_t>(width) - 3, ' ') + "nan";
   char buf[64];
@@ -82,7 +89,7 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
       << ")\n";
   if (inputs.material) {
     out << "  material: " << inputs.material->describe() << "\n"
-        << "  E0* = E0/(1-nu^2) = " << number(inputs.material->plane_strain_modulus_Pa()) << " Pa\n";
+        << "  E0* = E0/(1-nu^2) = " << significant(inputs.material->plane_strain_modulus_Pa(), 6) << " Pa\n";
   }
   out << "\n";
   for (const QuantitySpec& q : kQuantities) {

@@ -246,3 +246,36 @@ TEST(Cli, reference_command_solves_a_point_on_a_grid) {
   }
   expect_refused_command("reference --l 0.75 --dh 0.05 --T 2.5 --pbar 0.06 --s 2 --bem-grid 33", "--bem-grid", "even");
 }
+
+// Material files (README, "Real materials and loading"): the point takes --material, its
+// temperature and a ramp; bad files and values are refused like any bad input.
+TEST(Cli, material_point_runs_and_states_its_units) {
+  const std::string material = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/nbr_linder2011.ini";
+  const CliRun r = run_cli("point --material " + material + " --l 0.75 --dh 0.02 --pbar 0.005 --s 2 --ramp 20");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("time in s"), std::string::npos) << r.out;
+  // E0* = (1200 + 1607.1 + 228.6 + 361.5 + 63.9 + 68.7) kPa / (1 - 0.5^2), from the file.
+  EXPECT_NE(r.out.find("E0* = E0/(1-nu^2) = 4.7064e+06 Pa"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ramp_time = 20 s"), std::string::npos) << r.out;
+}
+
+TEST(Cli, material_inputs_are_refused_with_their_range) {
+  const std::string dir = ::testing::TempDir();
+  const std::string wlf = dir + "/punchsweep_cli_wlf.ini";
+  std::ofstream(wlf) << "[material]\nname = test, made up\nlaw = prony\nmodulus_unit = MPa\ntime_unit = s\n"
+                        "poisson = 0.4\nE_inf = 1\nE_i = 2\ntau_i = 1\n[shift]\nkind = wlf\nC1 = 17.44\n"
+                        "C2 = 51.6\nT_ref = 105\n";
+  const std::string bad = dir + "/punchsweep_cli_bad.ini";
+  std::ofstream(bad) << "[material]\nname = bad\nlaw = prony\nmodulus_unit = MPa\ntime_unit = s\n"
+                        "poisson = 0.4\nE_inf = -1\nE_i = 2\ntau_i = 1\n";
+  const std::string point = " --l 0.75 --dh 0.05 --pbar 0.03 --s 2";
+  expect_refused("--material " + wlf + point + " --temperature 40", "--temperature = 40", "temperature > 53.4");
+  expect_refused("--material " + bad + point, "E_inf = -1", "E_inf > 0");
+  expect_refused("--material " + dir + "/no_such_file.ini" + point, "--material", "cannot open");
+  expect_refused("--material " + wlf + point + " --T 2", "--T", "unknown option");
+  expect_refused("--material " + wlf + point + " --ramp -1", "--ramp", "t_r >= 0");
+  expect_refused("--material " + wlf + point + " --load-table '0:0, 5:0.9, 6:0.5, 9:1'", "--load-table",
+                 "does not recede");
+  expect_refused_command("reference --material " + wlf + point + " --temperature 40 --bem-grid 32",
+                         "--temperature = 40", "temperature > 53.4");
+}
