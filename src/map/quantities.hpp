@@ -70,10 +70,12 @@ inline double area_fraction(const model::Snapshot& s) { return s.area_fraction; 
 /// chunks and the point command prints them.
 inline constexpr std::array<QuantitySpec, 20> kQuantities{{
     {"regime", Kind::flag, Extent::point, Source::model, Flags::regime, "", "contact regime of the level-2 punches",
-     "", quantity_access::regime},
+     "immediate: level 2 touches by the end of the load's rise (at once for a step load); delayed: later, while "
+     "the load is held; never: not at all", quantity_access::regime},
     {"t_star", Kind::real, Extent::point, Source::model, Flags::none, "T_eps",
-     "time at which the level-2 punches touch", "0 for the immediate regime, NaN for never", nullptr,
-     quantity_access::t_star},
+     "time at which the level-2 punches touch",
+     "0 for the immediate regime under a step load (under a ramp or table its time during the rise), NaN for never",
+     nullptr, quantity_access::t_star},
     {"h_0", Kind::real, Extent::point, Source::model, Flags::none, "R",
      "displacement difference between punch tip and square centre at t = 0", "", nullptr, quantity_access::h_0},
     {"h_inf", Kind::real, Extent::point, Source::model, Flags::none, "R",
