@@ -124,12 +124,47 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
   return problem;
 }
 
+namespace {
+
+/// --pressure VALUE[UNIT] (Pa, kPa, MPa, GPa) as pbar = p / E0* of `material`; empty without it.
+std::optional<double> read_physical_pressure(const po::variables_map& vm, const model::Material* material) {
+  if (!vm.count("pressure")) return std::nullopt;
+  const std::string text = vm["pressure"].as<std::string>();
+  if (material == nullptr) throw UsageError("--pressure = " + text + ": needs --material (E0* in Pa); use --pbar");
+  if (vm.count("pbar")) throw UsageError("--pressure and --pbar both given; valid: one of them");
+  struct Unit {
+    const char* name;
+    double factor;
+  };
+  constexpr Unit kUnits[] = {{"GPa", 1e9}, {"MPa", 1e6}, {"kPa", 1e3}, {"Pa", 1.0}};
+  for (const Unit& u : kUnits) {
+    const std::string name = u.name;
+    if (text.size() > name.size() && text.compare(text.size() - name.size(), name.size(), name) == 0) {
+      const double value = parse_real(text.substr(0, text.size() - name.size()), "--pressure");
+      if (!(value > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
+      return value * u.factor / material->plane_strain_modulus_Pa();
+    }
+  }
+  throw UsageError("--pressure = " + text + ": no unit; valid: a number followed by Pa, kPa, MPa or GPa (50kPa)");
+}
+
+}  // namespace
+
 PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law) {
+  return read_point_inputs(vm, law, std::nullopt);
+}
+
+PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law,
+                              std::optional<double> pbar) {
   PointInputs inputs;
   // Each parameter read once, in the order of the options, so the first bad one is reported.
   std::vector<const model::Parameter*> parameters = model::sweep_axes(law.parameters);
   parameters.push_back(model::find_parameter(model::kShapeConstant));
-  for (const model::Parameter* p : parameters) inputs.values.emplace_back(p, read_parameter(vm, *p));
+  for (const model::Parameter* p : parameters) {
+    const bool given = pbar && p->name == model::kPressure;
+    if (given && !p->admits(*pbar)) throw UsageError("--pressure gives " + p->error(*pbar));
+    inputs.values.emplace_back(p, given ? *pbar : read_parameter(vm, *p));
+  }
   const auto value = [&](std::string_view name) {
     for (const auto& [p, v] : inputs.values) {
       if (p->name == name) return v;
@@ -203,6 +238,9 @@ void add_material_options(po::options_description& opts) {
       "ramp", po::value<std::string>()->value_name("TR")->default_value("0"),
       "ramp time t_r: the nominal pressure rises linearly to pbar over t_r, then holds (time unit as --times; "
       "0 is a step); t_r >= 0")(
+      "pressure", po::value<std::string>()->value_name("P"),
+      "with --material, the nominal pressure in physical units instead of --pbar: a number and Pa, kPa, MPa or "
+      "GPa (50kPa); pbar = P / E0*")(
       "load-table", po::value<std::string>()->value_name("T:PHI,..."),
       "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time unit as --times), "
       "from 0:phi0 to t_n:1 and non-decreasing (a load that falls is refused: the model holds while the contact "
@@ -210,7 +248,7 @@ void add_material_options(po::options_description& opts) {
 }
 
 PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& material) {
-  PointInputs inputs = read_point_inputs(vm, material.spec);
+  PointInputs inputs = read_point_inputs(vm, material.spec, read_physical_pressure(vm, material.material.get()));
   inputs.material = material.material;
   inputs.time_unit = material.time_unit();
   const double ramp = read_real(vm, "ramp", "ramp time", "ramp time t_r >= 0 (0 is a step)",

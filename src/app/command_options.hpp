@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,7 +95,12 @@ struct PointInputs {
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm,
                               const model::CreepLawSpec& law = model::creep_laws().front());
 
-/// The same for the material found by find_point_material, with --ramp (add_material_options).
+/// The same with pbar given (from --pressure) instead of read from --pbar.
+PointInputs read_point_inputs(const boost::program_options::variables_map& vm, const model::CreepLawSpec& law,
+                              std::optional<double> pbar);
+
+/// The same for the material found by find_point_material, with --ramp, --load-table and
+/// --pressure (add_material_options).
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm, const PointMaterial& material);
 
 /// The valid range of snapshot times, as --times and [time] times state it.

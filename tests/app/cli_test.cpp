@@ -279,3 +279,18 @@ TEST(Cli, material_inputs_are_refused_with_their_range) {
   expect_refused_command("reference --material " + wlf + point + " --temperature 40 --bem-grid 32",
                          "--temperature = 40", "temperature > 53.4");
 }
+
+// --pressure 23.532kPa is pbar = 23532 Pa / E0*, E0* = 3529.8 kPa / 0.75 from the file: 0.005.
+TEST(Cli, physical_pressure_is_pbar_times_the_plane_strain_modulus) {
+  const std::string material = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/nbr_linder2011.ini";
+  const std::string point = "point --material " + material + " --l 0.75 --dh 0.02 --s 2 --format json";
+  const CliRun kpa = run_cli(point + " --pressure 23.532kPa");
+  const CliRun pbar = run_cli(point + " --pbar 0.005");
+  ASSERT_EQ(kpa.exit_code, 0) << kpa.err;
+  ASSERT_EQ(pbar.exit_code, 0) << pbar.err;
+  EXPECT_NEAR(json_number(kpa.out, "t_star"), json_number(pbar.out, "t_star"), 1e-9 * json_number(pbar.out, "t_star"));
+  expect_refused("--material " + material + " --l 0.75 --dh 0.02 --s 2 --pressure 23", "--pressure", "kPa");
+  expect_refused("--material " + material + " --l 0.75 --dh 0.02 --s 2 --pressure 23kPa --pbar 0.005", "--pressure",
+                 "one of them");
+  expect_refused("--l 0.75 --dh 0.02 --T 2.5 --s 2 --pressure 23kPa", "--pressure", "needs --material");
+}
