@@ -124,9 +124,6 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
   return problem;
 }
 
-namespace {
-
-/// --pressure VALUE[UNIT] (Pa, kPa, MPa, GPa) as pbar = p / E0* of `material`; empty without it.
 std::optional<double> read_physical_pressure(const po::variables_map& vm, const model::Material* material) {
   if (!vm.count("pressure")) return std::nullopt;
   const std::string text = vm["pressure"].as<std::string>();
@@ -148,7 +145,14 @@ std::optional<double> read_physical_pressure(const po::variables_map& vm, const 
   throw UsageError("--pressure = " + text + ": no unit; valid: a number followed by Pa, kPa, MPa or GPa (50kPa)");
 }
 
-}  // namespace
+model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, std::string* table_text) {
+  *ramp_time = read_real(vm, "ramp", "ramp time", "ramp time t_r >= 0 (0 is a step)", [](double v) { return v >= 0.0; });
+  table_text->clear();
+  if (!vm.count("load-table")) return model::LoadShape::ramp(*ramp_time);
+  if (*ramp_time > 0.0) throw UsageError("--ramp and --load-table both given; valid: one of them");
+  *table_text = vm["load-table"].as<std::string>();
+  return parse_load_table(*table_text, "--load-table");
+}
 
 PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law) {
   return read_point_inputs(vm, law, std::nullopt);
@@ -251,15 +255,9 @@ PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& 
   PointInputs inputs = read_point_inputs(vm, material.spec, read_physical_pressure(vm, material.material.get()));
   inputs.material = material.material;
   inputs.time_unit = material.time_unit();
-  const double ramp = read_real(vm, "ramp", "ramp time", "ramp time t_r >= 0 (0 is a step)",
-                                [](double v) { return v >= 0.0; });
-  inputs.problem.loading = model::LoadShape::ramp(ramp);
+  double ramp = 0.0;
+  inputs.problem.loading = read_loading(vm, &ramp, &inputs.load_text);
   if (ramp > 0.0) inputs.values.emplace_back(&model::ramp_time_parameter(), ramp);
-  if (vm.count("load-table")) {
-    if (ramp > 0.0) throw UsageError("--ramp and --load-table both given; valid: one of them");
-    inputs.problem.loading = parse_load_table(vm["load-table"].as<std::string>(), "--load-table");
-    inputs.load_text = vm["load-table"].as<std::string>();
-  }
   return inputs;
 }
 

@@ -70,6 +70,16 @@ PointMaterial find_point_material(const std::vector<std::string>& args);
 /// text and the rule it breaks.
 model::LoadShape parse_load_table(const std::string& text, const std::string& key);
 
+/// --pressure VALUE[UNIT] (Pa, kPa, MPa, GPa) as pbar = p / E0* of `material`; empty
+/// without it. Throws UsageError without a unit, beside --pbar or without a material.
+std::optional<double> read_physical_pressure(const boost::program_options::variables_map& vm,
+                                             const model::Material* material);
+
+/// --ramp and --load-table as the load's shape (a step without either); the ramp time and
+/// the table's text as given come back too. Throws UsageError for both or a bad value.
+model::LoadShape read_loading(const boost::program_options::variables_map& vm, double* ramp_time,
+                              std::string* table_text);
+
 /// --material FILE, --ramp TR and --load-table, declared for a point command.
 void add_material_options(boost::program_options::options_description& opts);
 

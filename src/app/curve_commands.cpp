@@ -46,13 +46,15 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       "touch; level 2 ignored): h(a1) along the solution curve and its slope (Fig. 9.2),\n"
       "and with --pbar and --T the radius a1(t) and h(t) (Fig. 9.3). h is the displacement\n"
       "difference between a level-1 punch tip and the square centre (eq 9.10).\n\n") + kUnits);
-  const model::CreepLawSpec& law = model::creep_laws().front();
+  const PointMaterial point_material = find_point_material(args);
+  const model::CreepLawSpec& law = point_material.spec;
   opts.add_options()("help", "print this help and exit");
   add_parameter_option(opts, parameter(model::kPitch));
   add_shape_options(opts);
   add_parameter_option(opts, parameter(model::kPressure), "with the creep law's parameters: time series");
   for (const model::Parameter& p : law.parameters) add_parameter_option(opts, p, "with --pbar: time series");
   add_times_option(opts);
+  add_material_options(opts);
   opts.add_options()
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
        "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
@@ -67,7 +69,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   const double n_real = read_real(vm, "a1-points", "points of h(a1)", "an integer in [2, 100000]",
                                   [](double v) { return v >= 2 && v <= 100000 && v == std::floor(v); });
   const std::size_t n = static_cast<std::size_t>(n_real);
-  bool series = vm.count("pbar") > 0;
+  bool series = vm.count("pbar") > 0 || vm.count("pressure") > 0 || point_material.material != nullptr;
   for (const model::Parameter& p : law.parameters) series = series || vm.count(std::string(p.name)) > 0;
   const std::string format = read_choice(vm, "format", {"json", "csv"});
   const model::SingleLevel single(l, shape);
@@ -87,17 +89,25 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   std::vector<double> h_t;
   std::unique_ptr<model::CreepLaw> creep;
   std::string material;  // "T = 2.5": the law's parameters as given
+  model::LoadShape loading;
   double pbar = 0.0;
   if (series) {
-    pbar = read_parameter(vm, parameter(model::kPressure));
+    const std::optional<double> physical = read_physical_pressure(vm, point_material.material.get());
+    pbar = physical ? *physical : read_parameter(vm, parameter(model::kPressure));
     std::vector<double> values;
+    if (point_material.material) material = point_material.material->name();
     for (const model::Parameter& p : law.parameters) {
       values.push_back(read_parameter(vm, p));
       material += (material.empty() ? "" : ", ") + std::string(p.name) + " = " + json_number(values.back());
     }
     creep = model::make_creep_law(law, values);
     times = read_times(vm);
-    const model::CreepWeightedLoad load(*creep, pbar);
+    double ramp = 0.0;
+    std::string table;
+    loading = read_loading(vm, &ramp, &table);
+    if (ramp > 0.0) material += ", ramp over " + json_number(ramp) + " " + point_material.time_unit();
+    if (!table.empty()) material += ", load table " + table;
+    const model::CreepWeightedLoad load(*creep, pbar, loading);
     for (const double t : times) {
       const double X = load(t);
       a1_t.push_back(single.contact_radius(X));
@@ -113,7 +123,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
     }
     if (series) {
       out << "\n# time series at pbar0 = " << json_number(pbar) << " E0*, " << material
-          << "; units: t in T_eps, a1 and h in R\nt,a1,h\n";
+          << "; units: t in " << point_material.time_unit() << ", a1 and h in R\nt,a1,h\n";
       for (std::size_t i = 0; i < times.size(); ++i) {
         out << json_number(times[i]) << ',' << json_number(a1_t[i]) << ',' << json_number(h_t[i]) << "\n";
       }
@@ -123,7 +133,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   out << "{\n  \"h_of_a1\": {\n    \"a1\": " << json_array(a1_curve) << ",\n    \"h\": " << json_array(h_curve)
       << ",\n    \"dh_da1\": " << json_array(rate_curve) << "\n  }";
   if (series) {
-    const double X_inf = model::CreepWeightedLoad(*creep, pbar).final();
+    const double X_inf = model::CreepWeightedLoad(*creep, pbar, loading).final();
     const double a1_inf = single.contact_radius(X_inf);
     out << ",\n  \"h_inf\": " << json_number(single.displacement_difference(a1_inf, X_inf))
         << ",\n  \"series\": {\n    \"t\": " << json_array(times) << ",\n    \"a1\": " << json_array(a1_t)

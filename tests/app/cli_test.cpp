@@ -2,6 +2,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "model/point_evaluation.hpp"
+#include "model/single_level.hpp"
 #include "model/standard_linear_solid.hpp"
 
 namespace {
@@ -293,4 +295,26 @@ TEST(Cli, physical_pressure_is_pbar_times_the_plane_strain_modulus) {
   expect_refused("--material " + material + " --l 0.75 --dh 0.02 --s 2 --pressure 23kPa --pbar 0.005", "--pressure",
                  "one of them");
   expect_refused("--l 0.75 --dh 0.02 --T 2.5 --s 2 --pressure 23kPa", "--pressure", "needs --material");
+}
+
+// single-level under a ramp on the standard linear solid: a1(t) is the single-level radius at
+// X = pbar0 g(t), g the ramp's closed form (T t + (T - 1)(e^-t - 1))/t_r before t_r and
+// T - (T - 1) e^-t (e^t_r - 1)/t_r after it.
+TEST(Cli, single_level_under_an_sls_ramp_follows_its_closed_form) {
+  const CliRun r = run_cli("single-level --l 0.75 --s 2 --pbar 0.02 --T 2.5 --ramp 2 --times 0.5,2,6 "
+                           "--a1-points 2 --format csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double T = 2.5, t_r = 2.0;
+  const punchsweep::model::SingleLevel single(0.75, punchsweep::model::Shape{2, 0.5});
+  std::istringstream lines(r.out.substr(r.out.find("t,a1,h\n") + 7));
+  for (const double t : {0.5, 2.0, 6.0}) {
+    double time = 0.0, a1 = 0.0;
+    char comma = 0;
+    lines >> time >> comma >> a1;
+    lines.ignore(1000, '\n');
+    const double g = t <= t_r ? (T * t + (T - 1.0) * std::expm1(-t)) / t_r
+                              : T - (T - 1.0) * std::exp(-t) * std::expm1(t_r) / t_r;
+    EXPECT_EQ(time, t);
+    EXPECT_NEAR(a1, single.contact_radius(0.02 * g), 1e-13) << "t = " << t;
+  }
 }
