@@ -237,7 +237,7 @@ model::LoadShape parse_load_table(const std::string& text, const std::string& ke
 
 void add_material_options(po::options_description& opts) {
   opts.add_options()("material", po::value<std::string>()->value_name("FILE"),
-                     "material file (materials/NAME.ini: a Prony or Kelvin series in physical units); replaces "
+                     "material file (materials/NAME.ini: a Prony or Kelvin series or a power law in physical units, with an optional WLF/Arrhenius shift and then --temperature); replaces "
                      "--T, times are then in the file's time_unit")(
       "ramp", po::value<std::string>()->value_name("TR")->default_value("0"),
       "ramp time t_r: the nominal pressure rises linearly to pbar over t_r, then holds (time unit as --times; "
