@@ -1,10 +1,9 @@
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "model/creep_law.hpp"
+#include "model/exponential_series.hpp"
 
 namespace punchsweep::model {
 
@@ -20,7 +19,7 @@ namespace punchsweep::model {
 /// dashpot, one between -1/lambda_N and 0 (then E_inf = 0, else E_inf = 1/J(inf));
 /// E_k = 1 / (s_k h'(s_k)) the residues. Each root bracketed and found by safeguarded Newton.
 /// With the dashpot creep is unlimited (J(inf) = infinity): level 2 always touches.
-class KelvinSeries final : public CreepLaw {
+class KelvinSeries final : public ExponentialSeriesLaw {
  public:
   /// J_i (in 1/E_0) and lambda_i; `fluidity` phi = E_0/eta (in 1/time unit), 0 for no
   /// dashpot. Throws std::invalid_argument naming the bad value when a J_i <= 0, a
@@ -28,32 +27,7 @@ class KelvinSeries final : public CreepLaw {
   /// increasing, phi < 0, or a value is not finite.
   KelvinSeries(std::vector<double> J, std::vector<double> lambda, double fluidity = 0.0);
 
-  double creep(double t) const override;
-  double creep_rate(double t) const override;
-  double creep_integral(double u, double d) const override;
-  double relaxation(double t) const override;
-  double relaxation_rate(double t) const override;
-  double creep_initial() const override { return 1.0; }
-  double creep_final() const override { return J_final_; }
-  double time_at_creep(double J) const override;
-  double relaxation_time_scale() const override { return tau_.front(); }
-  double creep_time_scale() const override { return lambda_.front(); }
-  /// exp(-40) < 1e-17: every term of dE/dt is negligible after 40 of the longest tau.
-  double relaxation_memory() const override { return 40.0 * tau_.back(); }
-  /// The series itself; empty with the dashpot (J(inf) is not finite).
-  std::optional<RetardationSeries> retardation_series() const override;
   std::string describe() const override;
-
-  const std::vector<double>& relaxation_times() const { return tau_; }
-  const std::vector<double>& moduli() const { return E_; }
-  double modulus_final() const { return E_inf_; }
-
- private:
-  std::vector<double> J_, lambda_;
-  double phi_;
-  double J_final_;  ///< 1 + sum J_i, or infinity with the dashpot
-  double E_inf_ = 0.0;
-  std::vector<double> E_, tau_;
 };
 
 }  // namespace punchsweep::model

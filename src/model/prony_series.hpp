@@ -1,10 +1,9 @@
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "model/creep_law.hpp"
+#include "model/exponential_series.hpp"
 
 namespace punchsweep::model {
 
@@ -20,40 +19,14 @@ namespace punchsweep::model {
 /// J_k = -1 / (s_k f'(s_k)) the residues of J^(s) = 1 / (s^2 E^(s)). Each root is
 /// bracketed and found by safeguarded Newton to the last bits: no numerical Laplace
 /// inversion. Limited creep only (E_inf > 0).
-class PronySeries final : public CreepLaw {
+class PronySeries final : public ExponentialSeriesLaw {
  public:
   /// Throws std::invalid_argument naming the bad value when E_inf <= 0, an E_i <= 0, a
   /// tau_i <= 0, the lists differ in length or are empty, the tau_i are not strictly
   /// increasing, or a value is not finite.
   PronySeries(double E_inf, std::vector<double> E, std::vector<double> tau);
 
-  double creep(double t) const override;
-  double creep_rate(double t) const override;
-  double creep_integral(double u, double d) const override;
-  double relaxation(double t) const override;
-  double relaxation_rate(double t) const override;
-  double creep_initial() const override { return 1.0; }
-  double creep_final() const override { return J_final_; }
-  double time_at_creep(double J) const override;
-  double relaxation_time_scale() const override { return tau_.front(); }
-  double creep_time_scale() const override { return lambda_.front(); }
-  /// exp(-40) < 1e-17: every term of dE/dt is negligible after 40 of the longest tau.
-  double relaxation_memory() const override { return 40.0 * tau_.back(); }
-  std::optional<RetardationSeries> retardation_series() const override;
   std::string describe() const override;
-
-  /// The normalized moduli E_i / E_0 and E_inf / E_0, the relaxation and retardation times.
-  const std::vector<double>& moduli() const { return E_; }
-  double modulus_final() const { return E_inf_; }
-  const std::vector<double>& relaxation_times() const { return tau_; }
-  const std::vector<double>& retardation_times() const { return lambda_; }
-  const std::vector<double>& compliances() const { return J_; }
-
- private:
-  double E_inf_;
-  std::vector<double> E_, tau_;
-  double J_final_ = 0.0;
-  std::vector<double> J_, lambda_;
 };
 
 }  // namespace punchsweep::model

@@ -1,0 +1,127 @@
+#include "model/exponential_series.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "model/root_finding.hpp"
+
+namespace punchsweep::model {
+namespace {
+
+// A term decayed by exp(-50) < 2e-22 is left out of E and E' (history integrals evaluate
+// them at every age, and libm's exp is slowest where it underflows).
+constexpr double kNegligibleDecay = 50.0;
+
+}  // namespace
+
+std::string ExponentialSeriesLaw::out_of_range(std::string_view law, const std::string& what, double value,
+                                               const std::string& range) {
+  std::ostringstream out;
+  out.precision(17);
+  out << law << ": " << what << " = " << value << " is outside its range: " << range;
+  return out.str();
+}
+
+void ExponentialSeriesLaw::check_count(std::string_view law, std::string_view kind, std::string_view name,
+                                       const std::vector<double>& values, std::string_view time,
+                                       const std::vector<double>& times) {
+  if (values.empty() || values.size() != times.size()) {
+    throw std::invalid_argument(std::string(law) + ": " + std::to_string(values.size()) + " " + std::string(kind) +
+                                " " + std::string(name) + "_i and " + std::to_string(times.size()) + " times " +
+                                std::string(time) + "_i; valid: the same number, at least one");
+  }
+}
+
+void ExponentialSeriesLaw::check_terms(std::string_view law, std::string_view name, const std::vector<double>& values,
+                                       std::string_view time, const std::vector<double>& times) {
+  const std::string v(name);
+  const std::string t(time);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string index = std::to_string(i + 1);
+    if (!(std::isfinite(values[i]) && values[i] > 0.0)) {
+      throw std::invalid_argument(out_of_range(law, v + "_" + index, values[i], v + "_i > 0"));
+    }
+    if (!(std::isfinite(times[i]) && times[i] > 0.0)) {
+      throw std::invalid_argument(out_of_range(law, t + "_" + index, times[i], t + "_i > 0"));
+    }
+    if (i > 0 && !(times[i] > times[i - 1])) {
+      throw std::invalid_argument(out_of_range(law, t + "_" + index, times[i],
+                                               "strictly increasing " + t + "_i (a repeated time is one term)"));
+    }
+  }
+}
+
+void ExponentialSeriesLaw::set_creep_final() {
+  J_sum_ = 1.0;
+  for (const double j : J_) J_sum_ += j;
+  J_final_ = phi_ > 0.0 ? std::numeric_limits<double>::infinity() : J_sum_;
+}
+
+double ExponentialSeriesLaw::creep(double t) const {
+  // J(0) + sum J_k (1 - e^(-t/lambda_k)): exact at t = 0, no cancellation at small t.
+  double crept = phi_ > 0.0 ? phi_ * t : 0.0;
+  for (std::size_t k = 0; k < J_.size(); ++k) crept += J_[k] * -std::expm1(-t / lambda_[k]);
+  return 1.0 + crept;
+}
+
+double ExponentialSeriesLaw::creep_rate(double t) const {
+  double rate = phi_;
+  for (std::size_t k = 0; k < J_.size(); ++k) rate += J_[k] / lambda_[k] * std::exp(-t / lambda_[k]);
+  return rate;
+}
+
+double ExponentialSeriesLaw::creep_integral(double u, double d) const {
+  // (1 + sum J_k) d + phi d (u + d/2) - sum J_k lambda_k (e^(-u/lambda_k) - e^(-(u+d)/lambda_k)).
+  double sum = J_sum_ * d;
+  if (phi_ > 0.0) sum += phi_ * d * (u + 0.5 * d);
+  for (std::size_t k = 0; k < J_.size(); ++k) {
+    sum += J_[k] * lambda_[k] * std::exp(-u / lambda_[k]) * std::expm1(-d / lambda_[k]);
+  }
+  return sum;
+}
+
+double ExponentialSeriesLaw::relaxation(double t) const {
+  double e = E_inf_;
+  for (std::size_t i = 0; i < E_.size(); ++i) {
+    const double x = t / tau_[i];
+    if (x < kNegligibleDecay) e += E_[i] * std::exp(-x);
+  }
+  return e;
+}
+
+double ExponentialSeriesLaw::relaxation_rate(double t) const {
+  double rate = 0.0;
+  for (std::size_t i = 0; i < E_.size(); ++i) {
+    const double x = t / tau_[i];
+    if (x < kNegligibleDecay) rate -= E_[i] / tau_[i] * std::exp(-x);
+  }
+  return rate;
+}
+
+double ExponentialSeriesLaw::time_at_creep(double J) const {
+  if (J <= 1.0) return 0.0;
+  if (J >= J_final_) return std::numeric_limits<double>::infinity();
+  // J(t) rises monotonically; bracket by doubling from the shortest retardation time.
+  double lo = 0.0;
+  double hi = lambda_.front();
+  while (creep(hi) < J) {
+    lo = hi;
+    hi *= 2.0;
+    if (!std::isfinite(hi)) return std::numeric_limits<double>::infinity();
+  }
+  const auto residual = [&](double t, double* slope) {
+    *slope = creep_rate(t);
+    return creep(t) - J;
+  };
+  return newton_bisect_increasing(residual, lo, hi, 0.5 * (lo + hi), 0.0, 400, kRootTolerance).x;
+}
+
+std::optional<RetardationSeries> ExponentialSeriesLaw::retardation_series() const {
+  if (phi_ > 0.0) return std::nullopt;
+  RetardationSeries series{J_final_, {}};
+  for (std::size_t k = 0; k < J_.size(); ++k) series.terms.push_back({J_[k], lambda_[k]});
+  return series;
+}
+
+}  // namespace punchsweep::model
