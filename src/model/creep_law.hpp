@@ -51,6 +51,9 @@ class CreepLaw {
   /// The law as a retardation series when it is one (finite J(inf), exponential terms);
   /// empty otherwise, and then history integrals use the law's J(t) directly.
   virtual std::optional<RetardationSeries> retardation_series() const { return std::nullopt; }
+  /// Whether J' and E' are infinite at t = 0 (a power law: J ~ t^n, E' ~ -t^(n-1)), so that
+  /// history integrals grade their ends at 0 geometrically.
+  virtual bool singular_at_zero() const { return false; }
   /// Age beyond which dE/dt is below 1e-17 of its scale, so older history can be
   /// skipped; +infinity for a law with long memory.
   virtual double relaxation_memory() const = 0;

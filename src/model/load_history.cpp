@@ -42,7 +42,7 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
     const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
     // Under a power law J ~ t^n, so Q ~ v^(2n) at v = 0 when the two-level phase starts at
     // t = 0: panels shrink 4-fold towards it (kSingularLevels of them) before the rest.
-    const bool singular_start = j == 0 && t0 == 0.0 && !std::isfinite(creep_.creep_rate(0.0));
+    const bool singular_start = j == 0 && t0 == 0.0 && creep_.singular_at_zero();
     if (singular_start) {
       const double first = std::min(width, edges[1]);
       stretch.edges.push_back(0.0);
@@ -107,8 +107,7 @@ double LoadHistory::panel_start(int panel) const {
   return s.panel_start(panel - s.first_panel);
 }
 
-void LoadHistory::interpolate(int panel, double v, double* Q1, double* Q2) const {
-  const Stretch& s = stretch_of(panel);
+void LoadHistory::interpolate(const Stretch& s, int panel, double v, double* Q1, double* Q2) const {
   const int relative = panel - s.first_panel;
   const double xi = s.edges.empty() ? 2.0 * ((v - s.v_start) / s.width - relative) - 1.0
                                     : 2.0 * (v - s.panel_start(relative)) / s.panel_width(relative) - 1.0;
@@ -190,11 +189,12 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
     const double v_a = std::max(v_lo, panel_start(panel));
     const double v_b = panel + 1 == panels_ ? v_t : std::min(v_t, panel_start(panel + 1));
     if (!(v_b > v_a)) break;
+    const Stretch& stretch = stretch_of(panel);  // once a panel, not at every kernel node
     sum += relaxation_integral_sqrt(
         creep_, t, t0_, v_a, v_b,
         [&](double v) {
           Eigen::Vector2d q;
-          interpolate(panel, v, &q[0], &q[1]);
+          interpolate(stretch, panel, v, &q[0], &q[1]);
           return q;
         },
         Eigen::Vector2d::Zero().eval());

@@ -117,8 +117,8 @@ class LoadHistory {
   /// The panel that holds v (the last one for v beyond the end).
   int panel_at(double v) const;
   double panel_start(int panel) const;
-  /// Interpolated Q at v on panel `panel`.
-  void interpolate(int panel, double v, double* Q1, double* Q2) const;
+  /// Interpolated Q at v on panel `panel` of stretch `s` (stretch_of(panel)).
+  void interpolate(const Stretch& s, int panel, double v, double* Q1, double* Q2) const;
   /// Barycentric interpolation at xi in [-1, 1] of samples at the reference nodes.
   void interpolate_nodes(const double* Q1, const double* Q2, double xi, double* q1, double* q2) const;
   /// The narrow-kernel form of load() (see the class comment) over [tau_min, t], with

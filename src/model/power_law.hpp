@@ -113,6 +113,8 @@ class PowerLaw final : public CreepLaw {
   double relaxation_time_scale() const override { return tau_; }
   /// t_1, the time at which J has doubled (J(t_1) = 2 J(0)).
   double creep_time_scale() const override { return t_1_; }
+  /// J' ~ t^(n-1) and E' ~ -t^(n-1) at 0.
+  bool singular_at_zero() const override { return true; }
   /// +infinity: E' decays like t^(-1-n) only.
   double relaxation_memory() const override;
   std::string describe() const override;

@@ -59,8 +59,8 @@ R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double
   // A power-law kernel E' ~ -s^(n-1) is singular at age 0, and under a power law J ~ tau^n
   // makes f singular where it starts: both ends are then graded geometrically (a factor 4
   // a piece, kSingularLevels pieces), where Gauss converges as for a smooth integrand.
-  const bool singular_kernel = !std::isfinite(creep.relaxation_rate(0.0));
-  const bool singular_f = graded_f && !std::isfinite(creep.creep_rate(0.0));
+  const bool singular_kernel = creep.singular_at_zero();
+  const bool singular_f = graded_f && singular_kernel;
   const double uniform = std::ceil(tau_span / span);
   if (uniform <= kMaxUniformKernelPieces && !singular_kernel && !singular_f) {
     const int pieces = std::max(1, static_cast<int>(uniform));

@@ -222,6 +222,12 @@ TEST_P(CreepLawConformance, creep_integral_is_the_integral_of_creep) {
   EXPECT_EQ(law->creep_integral(0.7 * scale, 0.0), 0.0);
 }
 
+TEST_P(CreepLawConformance, declares_the_singularity_of_its_rates_at_zero) {
+  const auto law = make();
+  EXPECT_EQ(law->singular_at_zero(), !std::isfinite(law->relaxation_rate(0.0))) << law->describe();
+  EXPECT_EQ(law->singular_at_zero(), !std::isfinite(law->creep_rate(0.0))) << law->describe();
+}
+
 TEST_P(CreepLawConformance, relaxation_memory_bounds_the_kernel) {
   const auto law = make();
   const double memory = law->relaxation_memory();
