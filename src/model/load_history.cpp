@@ -32,6 +32,7 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
     if (k > t0 && k < t_end) edges.push_back(std::sqrt(k - t0));
   }
   edges.push_back(v_end);
+  const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
   for (std::size_t j = 0; j + 1 < edges.size(); ++j) {
     const double length = edges[j + 1] - edges[j];
     Stretch stretch;
@@ -39,24 +40,16 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
     stretch.first_panel = panels_;
     stretch.panels = std::max(1, static_cast<int>(std::ceil(length / width)));
     stretch.width = std::max(length, 1e-300) / stretch.panels;
-    const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
     // Under a power law J ~ t^n, so Q ~ v^(2n) at v = 0 when the two-level phase starts at
     // t = 0: panels shrink 4-fold towards it (kSingularLevels of them) before the rest.
     const bool singular_start = j == 0 && t0 == 0.0 && creep_.singular_at_zero();
-    if (singular_start) {
-      const double first = std::min(width, edges[1]);
-      stretch.edges.push_back(0.0);
-      for (int k = kSingularLevels; k >= 0; --k) stretch.edges.push_back(first * std::pow(0.25, k));
-      while (stretch.edges.back() < edges[j + 1]) {
-        const double v = stretch.edges.back();
-        double next = v + std::max(width, growth * v);
-        if (edges[j + 1] - next < 0.5 * (next - v)) next = edges[j + 1];
-        stretch.edges.push_back(next);
-      }
-      stretch.panels = static_cast<int>(stretch.edges.size()) - 1;
-    } else if (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width) {
+    if (singular_start || (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width)) {
       // Graded: panels of the uniform width until the growth exceeds it, then growing.
       stretch.edges.push_back(edges[j]);
+      if (singular_start) {
+        const double first = std::min(width, edges[1]);
+        for (int k = kSingularLevels; k >= 0; --k) stretch.edges.push_back(first * std::pow(0.25, k));
+      }
       while (stretch.edges.back() < edges[j + 1]) {
         const double v = stretch.edges.back();
         double next = v + std::max(width, growth * v);
