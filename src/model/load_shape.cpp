@@ -1,23 +1,12 @@
 #include "model/load_shape.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
+#include "model/number_text.hpp"
 #include "model/parameters.hpp"
 
 namespace punchsweep::model {
-namespace {
-
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
-}
-
-}  // namespace
-
 const Parameter& ramp_time_parameter() {
   static const Parameter kRampTime{"ramp_time",
                                    "T_eps",
@@ -34,7 +23,7 @@ const Parameter& ramp_time_parameter() {
 
 LoadShape LoadShape::ramp(double ramp_time) {
   if (!(std::isfinite(ramp_time) && ramp_time >= 0.0)) {
-    throw std::invalid_argument("ramp time ramp_time = " + number(ramp_time) +
+    throw std::invalid_argument("ramp time ramp_time = " + number_text(ramp_time, 12) +
                                 " is outside its range: ramp_time >= 0 (0 is a step)");
   }
   LoadShape shape;
@@ -48,8 +37,8 @@ LoadShape LoadShape::ramp(double ramp_time) {
 
 LoadShape LoadShape::table(const std::vector<Point>& points) {
   const auto bad = [](std::size_t k, const Point& p, const std::string& rule) {
-    return std::invalid_argument("load table point " + std::to_string(k + 1) + " (t = " + number(p.t) +
-                                 ", phi = " + number(p.phi) + "): " + rule);
+    return std::invalid_argument("load table point " + std::to_string(k + 1) + " (t = " + number_text(p.t, 12) +
+                                 ", phi = " + number_text(p.phi, 12) + "): " + rule);
   };
   if (points.empty()) throw std::invalid_argument("load table: no points; valid: (0, phi_0), ..., (t_n, 1)");
   for (std::size_t k = 0; k < points.size(); ++k) {
@@ -108,8 +97,8 @@ std::vector<double> LoadShape::kinks() const {
 std::string LoadShape::describe() const {
   switch (kind_) {
     case Kind::step: return "step";
-    case Kind::ramp: return "ramp over " + number(rise_time_);
-    case Kind::table: return "table, jump " + number(jump_) + ", rises until " + number(rise_time_);
+    case Kind::ramp: return "ramp over " + number_text(rise_time_, 12);
+    case Kind::table: return "table, jump " + number_text(jump_, 12) + ", rises until " + number_text(rise_time_, 12);
   }
   return {};
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "model/kelvin_series.hpp"
+#include "model/number_text.hpp"
 #include "model/power_law.hpp"
 #include "model/prony_series.hpp"
 
@@ -163,12 +164,6 @@ std::string unit_names(std::span<const Unit> units) {
   return out;
 }
 
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(10);
-  out << v;
-  return out.str();
-}
 
 /// Strictly increasing, positive times; every entry of `moduli` positive; the same count.
 void check_terms(const Entries& f, const std::string& moduli_key, const std::vector<double>& moduli,
@@ -179,16 +174,16 @@ void check_terms(const Entries& f, const std::string& moduli_key, const std::vec
   }
   for (std::size_t i = 0; i < moduli.size(); ++i) {
     if (!(moduli[i] > 0.0)) {
-      f.fail_value(moduli_key, "term " + std::to_string(i + 1) + " = " + number(moduli[i]) + " is outside its range: " +
+      f.fail_value(moduli_key, "term " + std::to_string(i + 1) + " = " + number_text(moduli[i], 10) + " is outside its range: " +
                                    modulus_range);
     }
     if (!(times[i] > 0.0)) {
-      f.fail_value(times_key, "term " + std::to_string(i + 1) + " = " + number(times[i]) +
+      f.fail_value(times_key, "term " + std::to_string(i + 1) + " = " + number_text(times[i], 10) +
                                   " is outside its range: times > 0");
     }
     if (i > 0 && !(times[i] > times[i - 1])) {
-      f.fail_value(times_key, "term " + std::to_string(i + 1) + " = " + number(times[i]) +
-                                  " does not exceed the one before it (" + number(times[i - 1]) +
+      f.fail_value(times_key, "term " + std::to_string(i + 1) + " = " + number_text(times[i], 10) +
+                                  " does not exceed the one before it (" + number_text(times[i - 1], 10) +
                                   "); valid: strictly increasing times (a repeated time is one term)");
     }
   }
@@ -287,7 +282,7 @@ Material Material::parse(std::string_view text, std::string_view origin) {
       double sum = 0.0;
       for (const double g : m.moduli_) sum += g;
       if (!(sum < 1.0)) {
-        f.fail_value("material.g_i", "sum g_i = " + number(sum) + " is outside its range: sum g_i < 1 "
+        f.fail_value("material.g_i", "sum g_i = " + number_text(sum, 10) + " is outside its range: sum g_i < 1 "
                                      "(E_inf = E_0 (1 - sum g_i) must be > 0)");
       }
       m.final_ = 1.0 - sum;
@@ -381,7 +376,7 @@ std::unique_ptr<CreepLaw> Material::make(std::span<const double> values) const {
   if (!shift_) return law;
   const double th = values[0];
   if (!shift_->admits(th)) {
-    throw std::invalid_argument("temperature = " + number(th) + " is outside its range: " + shift_->range());
+    throw std::invalid_argument("temperature = " + number_text(th, 10) + " is outside its range: " + shift_->range());
   }
   const double a_T = std::pow(10.0, shift_->log10_factor(th));
   return std::make_unique<TimeShiftedLaw>(std::move(law), a_T);

@@ -1,24 +1,14 @@
 #include "model/time_shift.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
+#include "model/number_text.hpp"
+
 namespace punchsweep::model {
-namespace {
-
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(10);
-  out << v;
-  return out.str();
-}
-
-}  // namespace
-
 std::string TemperatureShift::error() const {
   const auto bad = [](const char* name, double v, const char* range) {
-    return std::string("shift ") + name + " = " + number(v) + " is outside its range: " + range;
+    return std::string("shift ") + name + " = " + number_text(v, 10) + " is outside its range: " + range;
   };
   if (!(std::isfinite(T_ref) && T_ref > -kZeroCelsius)) return bad("T_ref", T_ref, "T_ref > -273.15 (in degC)");
   if (kind == Kind::wlf) {
@@ -37,7 +27,7 @@ bool TemperatureShift::admits(double th) const {
 
 std::string TemperatureShift::range() const {
   if (kind == Kind::arrhenius) return "temperature > -273.15 (in degC)";
-  return "temperature > " + number(T_ref - C2) + " (in degC; T_ref - C2, where WLF diverges)";
+  return "temperature > " + number_text(T_ref - C2, 10) + " (in degC; T_ref - C2, where WLF diverges)";
 }
 
 double TemperatureShift::log10_factor(double th) const {
@@ -48,14 +38,14 @@ double TemperatureShift::log10_factor(double th) const {
 
 std::string TemperatureShift::describe() const {
   if (kind == Kind::wlf) {
-    return "WLF, C1 = " + number(C1) + ", C2 = " + number(C2) + " K, T_ref = " + number(T_ref) + " degC";
+    return "WLF, C1 = " + number_text(C1, 10) + ", C2 = " + number_text(C2, 10) + " K, T_ref = " + number_text(T_ref, 10) + " degC";
   }
-  return "Arrhenius, E_a = " + number(E_a) + " J/mol, T_ref = " + number(T_ref) + " degC";
+  return "Arrhenius, E_a = " + number_text(E_a, 10) + " J/mol, T_ref = " + number_text(T_ref, 10) + " degC";
 }
 
 TimeShiftedLaw::TimeShiftedLaw(std::unique_ptr<CreepLaw> reference, double a_T) : ref_(std::move(reference)), a_(a_T) {
   if (!(std::isfinite(a_) && a_ > 0.0)) {
-    throw std::invalid_argument("time-temperature shift factor a_T = " + number(a_) +
+    throw std::invalid_argument("time-temperature shift factor a_T = " + number_text(a_, 10) +
                                 " is outside its range: a finite a_T > 0 (the temperature is too far from T_ref)");
   }
 }
@@ -69,7 +59,7 @@ std::optional<RetardationSeries> TimeShiftedLaw::retardation_series() const {
 }
 
 std::string TimeShiftedLaw::describe() const {
-  return ref_->describe() + ", times shifted by a_T = " + number(a_);
+  return ref_->describe() + ", times shifted by a_T = " + number_text(a_, 10);
 }
 
 }  // namespace punchsweep::model
