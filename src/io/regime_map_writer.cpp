@@ -207,21 +207,30 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   }
 }
 
-void RegimeMapWriter::create_label_coordinate(const std::string& name, const std::vector<std::string>& labels,
-                                              const std::string& long_name) {
+Handle RegimeMapWriter::dimension_scale(const std::string& name, hid_t file_type, hid_t memory_type,
+                                        std::size_t count, const void* values) {
   const std::string where = "'" + name + "' in " + path_;
-  const auto n = static_cast<hsize_t>(labels.size());
+  const auto n = static_cast<hsize_t>(count);
   const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "make dataspace of " + where);
   const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
   check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
         "set attribute order of " + where);
-  const Handle type = string_type("make a string type for " + where);
-  Handle dataset(H5Dcreate2(file_, name.c_str(), type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
+  Handle dataset(H5Dcreate2(file_, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
                  "create coordinate " + where);
+  if (count > 0) {
+    check(H5Dwrite(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values), "write coordinate " + where);
+  }
+  check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
+  return dataset;
+}
+
+void RegimeMapWriter::create_label_coordinate(const std::string& name, const std::vector<std::string>& labels,
+                                              const std::string& long_name) {
+  const std::string where = "'" + name + "' in " + path_;
+  const Handle type = string_type("make a string type for " + where);
   std::vector<const char*> text;
   for (const std::string& label : labels) text.push_back(label.c_str());
-  check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()), "write coordinate " + where);
-  check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
+  Handle dataset = dimension_scale(name, type, type, text.size(), text.data());
   write_string_attribute(dataset, "long_name", long_name, "on " + where);
   coordinates_.push_back(std::move(dataset));
 }
@@ -241,18 +250,7 @@ void RegimeMapWriter::write_units(hid_t object, const std::string& scale, const 
 void RegimeMapWriter::create_coordinate(const std::string& name, const std::vector<double>& values,
                                         const std::string& scale, const std::string& long_name) {
   const std::string where = "'" + name + "' in " + path_;
-  const auto n = static_cast<hsize_t>(values.size());
-  const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "make dataspace of " + where);
-  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
-  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
-        "set attribute order of " + where);
-  Handle dataset(H5Dcreate2(file_, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
-                 "create coordinate " + where);
-  if (!values.empty()) {
-    check(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-          "write coordinate " + where);
-  }
-  check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
+  Handle dataset = dimension_scale(name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.size(), values.data());
   const std::string on = "on " + where;
   write_units(dataset, scale, on);
   write_string_attribute(dataset, "long_name", long_name, on);

@@ -113,6 +113,10 @@ class RegimeMapWriter {
  private:
   /// units (and scaled_by) of a value measured in `scale` (see write_units in the .cpp).
   void write_units(hid_t object, const std::string& scale, const std::string& where) const;
+  /// A 1-D dimension scale `name` of `count` values (file and memory types given), with
+  /// attribute creation order tracked, as every coordinate is created.
+  Handle dimension_scale(const std::string& name, hid_t file_type, hid_t memory_type, std::size_t count,
+                         const void* values);
   /// A categorical axis: a variable-length UTF-8 string coordinate of its labels.
   void create_label_coordinate(const std::string& name, const std::vector<std::string>& labels,
                                const std::string& long_name);
