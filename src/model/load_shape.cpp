@@ -94,13 +94,4 @@ std::vector<double> LoadShape::kinks() const {
   return out;
 }
 
-std::string LoadShape::describe() const {
-  switch (kind_) {
-    case Kind::step: return "step";
-    case Kind::ramp: return "ramp over " + number_text(rise_time_, 12);
-    case Kind::table: return "table, jump " + number_text(jump_, 12) + ", rises until " + number_text(rise_time_, 12);
-  }
-  return {};
-}
-
 }  // namespace punchsweep::model

@@ -39,7 +39,6 @@ class LoadShape {
   static LoadShape table(const std::vector<Point>& points);
 
   bool is_step() const { return kind_ == Kind::step; }
-  bool is_ramp() const { return kind_ == Kind::ramp; }
   /// phi(0+), the part applied at once.
   double jump() const { return jump_; }
   /// The time phi reaches 1 (0 for the step).
@@ -50,8 +49,6 @@ class LoadShape {
   const std::vector<Segment>& segments() const;
   /// The times where phi has a kink (segment ends inside (0, rise_time]).
   std::vector<double> kinks() const;
-  /// "step", "ramp over 10", "table of 4 points".
-  std::string describe() const;
 
  private:
   enum class Kind { step, ramp, table };

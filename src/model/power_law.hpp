@@ -39,7 +39,6 @@ class MittagLeffler {
   /// Throws std::invalid_argument unless 0 < a < 1.
   explicit MittagLeffler(double a);
 
-  double order() const { return a_; }
   /// E_a(-x) for x >= 0.
   double negative(double x) const;
   /// f(s) = E_a(-s^a) for s >= 0: 1 at s = 0, completely monotone, ~ s^-a / Gamma(1 - a).
@@ -47,10 +46,6 @@ class MittagLeffler {
   /// f'(s) = d/ds E_a(-s^a) for s >= 0: -infinity at s = 0 (~ -s^(a-1) / Gamma(a)).
   double relaxation_rate(double s) const;
 
-  /// The number of quadrature nodes of the middle region (a cost: each call there sums
-  /// over them), and whether they are fixed rates (the w variable, one exp each).
-  std::size_t quadrature_nodes() const { return node_a_.size(); }
-  bool fixed_rates() const { return fixed_rates_; }
   /// The region boundaries in x = s^a: series below x_series, asymptotic from x_asymptotic.
   double x_series() const { return x_series_; }
   double x_asymptotic() const { return x_asymptotic_; }
@@ -120,7 +115,8 @@ class PowerLaw final : public CreepLaw {
   std::string describe() const override;
 
   double exponent() const { return n_; }
-  double time_unit() const { return t_1_; }
+  /// t_1, the time at which J has doubled.
+  double doubling_time() const { return t_1_; }
   const MittagLeffler& mittag_leffler() const { return ml_; }
 
  private:

@@ -59,7 +59,6 @@ class TimeShiftedLaw final : public CreepLaw {
   std::optional<RetardationSeries> retardation_series() const override;
   std::string describe() const override;
 
-  double shift_factor() const { return a_; }
 
  private:
   std::unique_ptr<CreepLaw> ref_;

@@ -162,7 +162,7 @@ double interconversion(const PowerLaw& law, double t, double h) {
         return law.relaxation(t * -std::expm1(log_u / n));
       },
       h);
-  return law.creep(0.0) * law.relaxation(t) + std::pow(t / law.time_unit(), n) * integral;
+  return law.creep(0.0) * law.relaxation(t) + std::pow(t / law.doubling_time(), n) * integral;
 }
 
 }  // namespace
