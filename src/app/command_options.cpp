@@ -191,9 +191,9 @@ PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLaw
   return inputs;
 }
 
-std::shared_ptr<const model::Material> read_material_file(const std::string& path) {
+std::shared_ptr<const model::Material> read_material_file(const std::string& path, const std::string& option) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("--material = " + path + ": cannot open the file");
+  if (!in) throw UsageError((option.empty() ? path : option + " = " + path) + ": cannot open the file");
   std::ostringstream text;
   text << in.rdbuf();
   try {

@@ -52,7 +52,10 @@ model::ContactProblem read_problem(const boost::program_options::variables_map& 
 
 /// The material file `path` read and parsed. Throws UsageError with the file's message
 /// (file, key, value, valid range) when it cannot be read or is refused.
-std::shared_ptr<const model::Material> read_material_file(const std::string& path);
+/// `option` ("--material") starts the message of a file that cannot be opened; empty where
+/// the caller names the key itself.
+std::shared_ptr<const model::Material> read_material_file(const std::string& path,
+                                                          const std::string& option = "--material");
 
 /// A point command's material: the file given as --material in `args` (nullptr without it)
 /// and the creep law it defines, else the default creep law. The options the command

@@ -518,7 +518,12 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
             while (std::getline(list, item, ',')) {
               item = run::trim(item);
               if (item.empty()) continue;
-              config.materials.push_back(read_material_file(item));
+              // A path in a config file is taken from the file's folder, as a user reads it.
+              std::filesystem::path file(item);
+              if (settings[k].source == Source::file && file.is_relative()) {
+                file = std::filesystem::path(config.config_path).parent_path() / file;
+              }
+              config.materials.push_back(read_material_file(file.string(), ""));
               std::string label = std::filesystem::path(item).stem().string();
               if (std::find(config.material_labels.begin(), config.material_labels.end(), label) !=
                   config.material_labels.end()) {

@@ -123,6 +123,16 @@ run_ranks 0 sweep --model.material nbr.ini --model.load_table "0:0, 5:0.8, 9:0.5
   fail "a falling load table accepted"
 grep -q "model.load_table = .*the load decreases; refused because" bad.log || { cat bad.log; fail "falling table"; }
 
+# A relative material path in a config file is taken from the config file's folder, run
+# from anywhere; the shipped worked example runs so.
+mkdir -p configs/sub
+printf '[grid]\nl = 0.75\ndh = 0.02\npbar = 0.005\ns = 2\n[model]\nmaterial = ../../nbr.ini\n' > configs/sub/c.ini
+run_ranks 0 sweep --config configs/sub/c.ini --quiet --output rel.h5 || fail "relative material path in a config"
+run_ranks 0 sweep --config "$repo/sweeps/materials/nbr.ini" --quiet --output example.h5 || fail "sweeps/materials/nbr.ini"
+run_ranks 0 sweep --model.material configs/sub/missing.ini --dry-run 2> bad.log && fail "a missing material accepted"
+grep -q "^punchsweep sweep: model.material = configs/sub/missing.ini: configs/sub/missing.ini: cannot open the file" \
+  bad.log || { cat bad.log; fail "missing material message"; }
+
 # --resume compares the material's content.
 sed 's/E_inf = 1.0/E_inf = 1.1/' wlf.ini > other.ini
 cp other.ini wlf2.ini
