@@ -19,6 +19,19 @@ struct RetardationSeries {
   std::vector<Term> terms;  ///< at least one
 };
 
+/// A relaxation function written as a generalized Maxwell (Prony) series,
+///   E(t) = E(inf) + sum_k E_k exp(-t / tau_k),
+/// which lets a load-history integral treat each term by itself: a term that relaxes
+/// within a stretch of smooth history is a Gauss-Laguerre sum at t (LoadHistory).
+struct RelaxationSeries {
+  struct Term {
+    double E = 0.0;    ///< E_k, in E0*
+    double tau = 0.0;  ///< relaxation time tau_k, in T_eps
+  };
+  double E_final = 0.0;     ///< E(inf), in E0* (0 with a dashpot)
+  std::vector<Term> terms;  ///< at least one, tau ascending
+};
+
 /// A linear viscoelastic material given by its creep function J(t) and the matching
 /// relaxation function E(t) (interconverted: int_0-^t E(t - tau) dJ(tau) = 1).
 /// Time in T_eps, J in 1/E0*, E in E0* (see units.hpp). J must be non-decreasing.
@@ -51,6 +64,9 @@ class CreepLaw {
   /// The law as a retardation series when it is one (finite J(inf), exponential terms);
   /// empty otherwise, and then history integrals use the law's J(t) directly.
   virtual std::optional<RetardationSeries> retardation_series() const { return std::nullopt; }
+  /// The law as a relaxation series when its load histories are to be integrated term by
+  /// term; empty otherwise, and then they integrate E' as a whole.
+  virtual std::optional<RelaxationSeries> relaxation_series() const { return std::nullopt; }
   /// Whether J' and E' are infinite at t = 0 (a power law: J ~ t^n, E' ~ -t^(n-1)), so that
   /// history integrals grade their ends at 0 geometrically.
   virtual bool singular_at_zero() const { return false; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "model/root_finding.hpp"
 
@@ -27,6 +28,14 @@ double CreepWeightedLoad::response_rate(double t) const {
     rate += s.slope * (creep_.creep(t - s.t_a) - (t > s.t_b ? creep_.creep(t - s.t_b) : 0.0));
   }
   return rate;
+}
+
+double CreepWeightedLoad::settled_time() const {
+  const std::optional<RetardationSeries> series = creep_.retardation_series();
+  if (!series) return std::numeric_limits<double>::infinity();
+  double longest = 0.0;
+  for (const RetardationSeries::Term& term : series->terms) longest = std::max(longest, term.lambda);
+  return shape_.rise_time() + 40.0 * longest;
 }
 
 double CreepWeightedLoad::time_at_response(double g) const {

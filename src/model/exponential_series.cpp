@@ -12,6 +12,8 @@ namespace {
 // A term decayed by exp(-50) < 2e-22 is left out of E and E' (history integrals evaluate
 // them at every age, and libm's exp is slowest where it underflows).
 constexpr double kNegligibleDecay = 50.0;
+// 1 - exp(-40) is 1 in double precision (exp(-40) < 2^-54): J's term has settled.
+constexpr double kSettledDecay = 40.0;
 
 }  // namespace
 
@@ -59,9 +61,13 @@ void ExponentialSeriesLaw::set_creep_final() {
 }
 
 double ExponentialSeriesLaw::creep(double t) const {
-  // J(0) + sum J_k (1 - e^(-t/lambda_k)): exact at t = 0, no cancellation at small t.
+  // J(0) + sum J_k (1 - e^(-t/lambda_k)): exact at t = 0, no cancellation at small t. A
+  // term past kSettledDecay is J_k exactly (-expm1(-x) rounds to 1 from x = 37.43 on).
   double crept = phi_ > 0.0 ? phi_ * t : 0.0;
-  for (std::size_t k = 0; k < J_.size(); ++k) crept += J_[k] * -std::expm1(-t / lambda_[k]);
+  for (std::size_t k = 0; k < J_.size(); ++k) {
+    const double x = t / lambda_[k];
+    crept += x < kSettledDecay ? J_[k] * -std::expm1(-x) : J_[k];
+  }
   return 1.0 + crept;
 }
 
@@ -121,6 +127,12 @@ std::optional<RetardationSeries> ExponentialSeriesLaw::retardation_series() cons
   if (phi_ > 0.0) return std::nullopt;
   RetardationSeries series{J_final_, {}};
   for (std::size_t k = 0; k < J_.size(); ++k) series.terms.push_back({J_[k], lambda_[k]});
+  return series;
+}
+
+std::optional<RelaxationSeries> ExponentialSeriesLaw::relaxation_series() const {
+  RelaxationSeries series{E_inf_, {}};
+  for (std::size_t i = 0; i < E_.size(); ++i) series.terms.push_back({E_[i], tau_[i]});
   return series;
 }
 

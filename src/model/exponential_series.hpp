@@ -33,6 +33,8 @@ class ExponentialSeriesLaw : public CreepLaw {
   double relaxation_memory() const override { return 40.0 * tau_.back(); }
   /// The creep series; empty with a dashpot (J(inf) is not finite).
   std::optional<RetardationSeries> retardation_series() const override;
+  /// The relaxation series (with a dashpot too: E(inf) = 0 then).
+  std::optional<RelaxationSeries> relaxation_series() const override;
 
   /// The normalized moduli E_i / E_0 and E_inf / E_0, the relaxation and retardation times,
   /// the normalized compliances J_k E_0.

@@ -2,18 +2,60 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Core>
 
-#include "model/gauss_legendre.hpp"
+#include "model/gauss_rules.hpp"
 #include "model/relaxation_integral.hpp"
 
 namespace punchsweep::model {
+namespace {
+
+/// The terms k >= first of a relaxation series (without E(inf)) as the kernel of a history
+/// integral (relaxation_integral_mapped): the terms too slow for the Gauss-Laguerre sum.
+class SeriesTail {
+ public:
+  SeriesTail(const RelaxationSeries& series, std::size_t first, double creep_time_scale)
+      : terms_(series.terms), first_(first), creep_time_scale_(creep_time_scale) {}
+  double relaxation(double age) const {
+    double e = 0.0;
+    for (std::size_t k = first_; k < terms_.size(); ++k) e += terms_[k].E * decay(age, k);
+    return e;
+  }
+  double relaxation_rate(double age) const {
+    double rate = 0.0;
+    for (std::size_t k = first_; k < terms_.size(); ++k) rate -= terms_[k].E / terms_[k].tau * decay(age, k);
+    return rate;
+  }
+  double relaxation_time_scale() const { return terms_[first_].tau; }
+  double creep_time_scale() const { return creep_time_scale_; }
+  /// exp(-40) < 1e-17, as ExponentialSeriesLaw::relaxation_memory.
+  double relaxation_memory() const { return 40.0 * terms_.back().tau; }
+  bool singular_at_zero() const { return false; }
+
+ private:
+  /// exp(-age/tau_k), left out (0) below exp(-50), as ExponentialSeriesLaw leaves it out.
+  double decay(double age, std::size_t k) const {
+    const double x = age / terms_[k].tau;
+    return x < 50.0 ? std::exp(-x) : 0.0;
+  }
+  const std::vector<RelaxationSeries::Term>& terms_;
+  std::size_t first_;
+  double creep_time_scale_;
+};
+
+}  // namespace
 
 LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, double t0, double t_end,
                          const HistoryQuadrature& quadrature, const Sampler& sample)
-    : load_(load), creep_(load.creep()), level1_load_(level1_load), t0_(t0), n_(quadrature.nodes_per_panel) {
-  const GaussLegendreRule& rule = gauss_legendre(n_);
+    : load_(load),
+      creep_(load.creep()),
+      series_(load.creep().relaxation_series()),
+      level1_load_(level1_load),
+      t0_(t0),
+      n_(quadrature.nodes_per_panel) {
+  const GaussRule& rule = gauss_legendre(n_);
   nodes_ = rule.nodes;
   bary_.resize(n_);
   for (int j = 0; j < n_; ++j) {
@@ -26,11 +68,15 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
   const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
   const double width = quadrature.panel_width * std::sqrt(creep_.creep_time_scale());
   kinks_ = load.shape().kinks();
-  // Stretches of v between the load's kinks after t0, each cut into equal panels.
+  // Stretches of v between the load's kinks after t0, each cut into equal panels. Once the
+  // load has settled (X = X(inf) to rounding), Q is constant: one panel holds the rest.
   std::vector<double> edges{0.0};
   for (const double k : kinks_) {
     if (k > t0 && k < t_end) edges.push_back(std::sqrt(k - t0));
   }
+  const double t_settled = load.settled_time();
+  const bool settles = t_settled > t0 && t_settled < t_end;
+  if (settles) edges.push_back(std::sqrt(t_settled - t0));
   edges.push_back(v_end);
   const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
   for (std::size_t j = 0; j + 1 < edges.size(); ++j) {
@@ -38,12 +84,13 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
     Stretch stretch;
     stretch.v_start = edges[j];
     stretch.first_panel = panels_;
-    stretch.panels = std::max(1, static_cast<int>(std::ceil(length / width)));
+    const bool settled = settles && j + 2 == edges.size();
+    stretch.panels = settled ? 1 : std::max(1, static_cast<int>(std::ceil(length / width)));
     stretch.width = std::max(length, 1e-300) / stretch.panels;
     // Under a power law J ~ t^n, so Q ~ v^(2n) at v = 0 when the two-level phase starts at
     // t = 0: panels shrink 4-fold towards it (kSingularLevels of them) before the rest.
     const bool singular_start = j == 0 && t0 == 0.0 && creep_.singular_at_zero();
-    if (singular_start || (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width)) {
+    if (!settled && (singular_start || (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width))) {
       // Graded: panels of the uniform width until the growth exceeds it, then growing.
       stretch.edges.push_back(edges[j]);
       if (singular_start) {
@@ -111,7 +158,8 @@ void LoadHistory::interpolate(const Stretch& s, int panel, double v, double* Q1,
 LoadHistory::Cost LoadHistory::cost(const CreepWeightedLoad& load, double t0, double t_end,
                                     const HistoryQuadrature& quadrature) {
   const CreepLaw& creep = load.creep();
-  const double v_end = std::sqrt(std::max(t_end - t0, 0.0));
+  // Past the settled time one panel holds the rest (the constructor's layout).
+  const double v_end = std::sqrt(std::max(std::min(t_end, load.settled_time()) - t0, 0.0));
   const double width = quadrature.panel_width * std::sqrt(creep.creep_time_scale());
   Cost c;
   // Panels: uniform, or graded past kMaxUniformPanels (5 of the uniform width, then a
@@ -121,7 +169,7 @@ LoadHistory::Cost LoadHistory::cost(const CreepWeightedLoad& load, double t0, do
   if (panels > kMaxUniformPanels && growth * v_end > width) {
     panels = std::min(panels, 1.0 / growth + std::log(v_end * growth / width) / std::log1p(growth) + 1.0);
   }
-  c.samples = (panels + static_cast<double>(load.shape().kinks().size()) + 1.0) * quadrature.nodes_per_panel;
+  c.samples = (panels + static_cast<double>(load.shape().kinks().size()) + 2.0) * quadrature.nodes_per_panel;
   // The kernel pieces of the wide form over the memory window, uniform or graded by age as
   // relaxation_integral_mapped cuts them (the narrow form samples Q afresh, a handful).
   const double window = std::min(creep.relaxation_memory(), t_end);
@@ -156,9 +204,57 @@ void LoadHistory::interpolate_nodes(const double* Q1, const double* Q2, double x
   *q2 = num2 / den;
 }
 
+Eigen::Vector2d LoadHistory::interpolate_at(double tau) const {
+  const double v = std::sqrt(std::max(tau - t0_, 0.0));
+  const int panel = panel_at(v);
+  Eigen::Vector2d q;
+  interpolate(stretch_of(panel), panel, v, &q[0], &q[1]);
+  return q;
+}
+
 bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
                        const Sampler& near) const {
-  const double memory = creep_.relaxation_memory();
+  if (!series_) return load_kernel(creep_, creep_, t, Q1_at_t, Q2_at_t, P1, P2, near);
+  const std::vector<RelaxationSeries::Term>& terms = series_->terms;
+  // The smooth stretch of history before t: since touchdown or the load's last kink.
+  double t_smooth = t0_;
+  for (const double k : kinks_) {
+    if (k > t_smooth && k < t) t_smooth = k;
+  }
+  std::size_t fast = 0;
+  while (fast < terms.size() && kLaguerreReach * terms[fast].tau <= t - t_smooth) ++fast;
+  Eigen::Vector2d sum = series_->E_final * Eigen::Vector2d(Q1_at_t, Q2_at_t);
+  if (fast > 0) {
+    const GaussRule& rule = gauss_laguerre(kLaguerreNodes);
+    const Eigen::Vector2d q_t = interpolate_at(t);
+    for (std::size_t k = 0; k < fast; ++k) {
+      Eigen::Vector2d d = Eigen::Vector2d::Zero();
+      for (int i = 0; i < kLaguerreNodes; ++i) {
+        d += rule.weights[i] * (q_t - interpolate_at(t - terms[k].tau * rule.nodes[i]));
+      }
+      sum += terms[k].E * d;
+    }
+  }
+  if (fast < terms.size()) {
+    Eigen::Vector2d slow;
+    // Over the two-level panels the integrand is the interpolant, a polynomial in v that the
+    // Gauss pieces integrate as they resolve the kernel: the creep time scale does not bound them.
+    const SeriesTail tail(*series_, fast, creep_.creep_time_scale());
+    const SeriesTail tail_on_panels(*series_, fast, std::numeric_limits<double>::infinity());
+    if (!load_kernel(tail, tail_on_panels, t, Q1_at_t, Q2_at_t, &slow[0], &slow[1], near)) {
+      return false;
+    }
+    sum += slow;
+  }
+  *P1 = sum[0];
+  *P2 = sum[1];
+  return true;
+}
+
+template <class Kernel>
+bool LoadHistory::load_kernel(const Kernel& creep, const Kernel& on_panels, double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
+                              const Sampler& near) const {
+  const double memory = creep.relaxation_memory();
   const double v_t = std::sqrt(std::max(t - t0_, 0.0));
   // The stretch of time the panel at t spans; a memory shorter than that is a narrow kernel.
   const int panel_t = panel_at(v_t);
@@ -166,14 +262,14 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   const double width_at_t = stretch_t.panel_width(panel_t - stretch_t.first_panel);
   const double panel_span = (2.0 * v_t + width_at_t) * width_at_t;
   const double tau_min = std::max(0.0, t - memory);
-  if (memory < panel_span) return load_near(t, tau_min, v_t, Q1_at_t, Q2_at_t, P1, P2, near);
-  const double E0 = creep_.relaxation(0.0);
+  if (memory < panel_span) return load_near(creep, on_panels, t, tau_min, v_t, Q1_at_t, Q2_at_t, P1, P2, near);
+  const double E0 = creep.relaxation(0.0);
   Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
   // Single-level phase [0, t0): Q1 = L g(tau), Q2 = 0, smooth in tau between the kinks.
   for_each_piece(tau_min, std::min(t0_, t), [&](double a, double b) {
     sum[0] += level1_load_ * relaxation_integral(
-                                 creep_, t, a, b, [&](double tau) { return load_.response(tau); }, 0.0);
+                                 creep, t, a, b, [&](double tau) { return load_.response(tau); }, 0.0);
   });
 
   // Two-level phase [t0, t], panel by panel in v = sqrt(tau - t0).
@@ -184,7 +280,7 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
     if (!(v_b > v_a)) break;
     const Stretch& stretch = stretch_of(panel);  // once a panel, not at every kernel node
     sum += relaxation_integral_sqrt(
-        creep_, t, t0_, v_a, v_b,
+        on_panels, t, t0_, v_a, v_b,
         [&](double v) {
           Eigen::Vector2d q;
           interpolate(stretch, panel, v, &q[0], &q[1]);
@@ -197,16 +293,17 @@ bool LoadHistory::load(double t, double Q1_at_t, double Q2_at_t, double* P1, dou
   return true;
 }
 
-bool LoadHistory::load_near(double t, double tau_min, double v_t, double Q1_at_t, double Q2_at_t, double* P1,
-                            double* P2, const Sampler& near) const {
-  const double E_t = creep_.relaxation(t);
+template <class Kernel>
+bool LoadHistory::load_near(const Kernel& creep, const Kernel& on_panels, double t, double tau_min, double v_t, double Q1_at_t, double Q2_at_t,
+                            double* P1, double* P2, const Sampler& near) const {
+  const double E_t = creep.relaxation(t);
   Eigen::Vector2d sum(E_t * Q1_at_t, E_t * Q2_at_t);
   const Eigen::Vector2d at_t(Q1_at_t, Q2_at_t);
 
   // Single-level part of the window, [tau_min, t0): Q1 = L g(tau), Q2 = 0.
   for_each_piece(tau_min, std::min(t0_, t), [&](double a, double b) {
     sum += relaxation_integral(
-        creep_, t, a, b,
+        creep, t, a, b,
         [&](double tau) { return (Eigen::Vector2d(level1_load_ * load_.response(tau), 0.0) - at_t).eval(); },
         Eigen::Vector2d::Zero().eval());
   });
@@ -227,7 +324,7 @@ bool LoadHistory::load_near(double t, double tau_min, double v_t, double Q1_at_t
     }
     if (!ok) return;
     sum += relaxation_integral_sqrt(
-        creep_, t, t0_, v_a, v_b,
+        on_panels, t, t0_, v_a, v_b,
         [&](double v) {
           Eigen::Vector2d q;
           interpolate_nodes(q1.data(), q2.data(), 2.0 * (v - v_a) / (v_b - v_a) - 1.0, &q[0], &q[1]);

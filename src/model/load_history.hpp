@@ -1,7 +1,10 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "model/creep_weighted_load.hpp"
 
@@ -42,6 +45,17 @@ struct HistoryQuadrature {
 /// (by parts; m the relaxation memory, beyond which E' is below 1e-17 of its scale), with Q
 /// sampled afresh at n Gauss nodes of the memory window: the integrand vanishes where the
 /// kernel is largest, and the window's interpolant is as exact as the window is short.
+///
+/// A law given as a relaxation series E = E(inf) + sum_k E_k exp(-s/tau_k)
+/// (CreepLaw::relaxation_series) is integrated term by term (docs/model.md, section 12.7):
+///   P_i(t) = E(inf) Q_i(t) + sum_k E_k D_k(t),   D_k(t) = int_0-^t exp(-(t - tau)/tau_k) dQ_i(tau).
+/// A term that relaxes within the smooth stretch of history before t (tau_k at most
+/// 1/kLaguerreReach of the time since touchdown or the load's last kink) forgets everything
+/// older, and
+///   D_k(t) = int_0^inf exp(-x) (q(t) - q(t - tau_k x)) dx
+/// is a Gauss-Laguerre sum over the interpolant q: no kernel quadrature, no fresh samples,
+/// and the difference of q with itself carries no interpolation error into P. The other
+/// terms (the slow ones) are the kernel of the integral above.
 class LoadHistory {
  public:
   /// Writes Q1, Q2 at tau (called with increasing tau); returns false if it failed.
@@ -73,6 +87,14 @@ class LoadHistory {
 
   /// Number of Q samples taken (the solves the history cost).
   int samples() const { return static_cast<int>(Q1_.size()); }
+
+  /// A series term is summed by Gauss-Laguerre once the smooth history before t is at least
+  /// kLaguerreReach of its tau_k: the integrand's branch point (touchdown, where Q2 ~
+  /// sqrt(tau - t0), or a kink of the load) lies beyond x = kLaguerreReach, where the
+  /// kLaguerreNodes-point rule's error, about (2 n)! / kLaguerreReach^(2 n) = 2.5e-16 of Q,
+  /// is at rounding; its nodes reach x = 29.9, inside the stretch.
+  static constexpr double kLaguerreReach = 50.0;
+  static constexpr int kLaguerreNodes = 10;
 
  private:
   /// A stretch of v between kinks of the load, cut into `panels` panels of equal width.
@@ -121,13 +143,22 @@ class LoadHistory {
   void interpolate(const Stretch& s, int panel, double v, double* Q1, double* Q2) const;
   /// Barycentric interpolation at xi in [-1, 1] of samples at the reference nodes.
   void interpolate_nodes(const double* Q1, const double* Q2, double xi, double* q1, double* q2) const;
-  /// The narrow-kernel form of load() (see the class comment) over [tau_min, t], with
+  /// The interpolant at time tau in [t0, t_end].
+  Eigen::Vector2d interpolate_at(double tau) const;
+  /// load() with the relaxation kernel `kernel` (the law, or the slow terms of its series),
+  /// and `on_panels`, the same kernel for the two-level panels.
+  template <class Kernel>
+  bool load_kernel(const Kernel& kernel, const Kernel& on_panels, double t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
+                   const Sampler& near) const;
+  /// The narrow-kernel form of load_kernel() (see the class comment) over [tau_min, t], with
   /// v_t = sqrt(t - t0); false if `near` failed.
-  bool load_near(double t, double tau_min, double v_t, double Q1_at_t, double Q2_at_t, double* P1, double* P2,
-                 const Sampler& near) const;
+  template <class Kernel>
+  bool load_near(const Kernel& kernel, const Kernel& on_panels, double t, double tau_min, double v_t, double Q1_at_t, double Q2_at_t,
+                 double* P1, double* P2, const Sampler& near) const;
 
   CreepWeightedLoad load_;
   const CreepLaw& creep_;  ///< load_'s material: its relaxation function is the kernel
+  std::optional<RelaxationSeries> series_;  ///< the law's relaxation series, if term by term
   double level1_load_;
   double t0_;
   std::vector<Stretch> stretches_;  ///< one unless the load has kinks after t0

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "model/gauss_legendre.hpp"
+#include "model/gauss_rules.hpp"
 
 namespace punchsweep::model {
 namespace {
@@ -129,7 +129,7 @@ std::vector<double> panel_breaks(double lo, double hi, const std::vector<Singula
 
 // Gauss-Legendre nodes and weights on the panels.
 void panel_nodes(const std::vector<double>& breaks, std::vector<double>* nodes, std::vector<double>* weights) {
-  const GaussLegendreRule& rule = gauss_legendre(kPanelNodes);
+  const GaussRule& rule = gauss_legendre(kPanelNodes);
   for (std::size_t p = 0; p + 1 < breaks.size(); ++p) {
     const double center = 0.5 * (breaks[p] + breaks[p + 1]);
     const double half = 0.5 * (breaks[p + 1] - breaks[p]);

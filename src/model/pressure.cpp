@@ -6,7 +6,7 @@
 
 #include "model/integer_power.hpp"
 
-#include "model/gauss_legendre.hpp"
+#include "model/gauss_rules.hpp"
 #include "model/lattice.hpp"
 #include "model/relaxation_integral.hpp"
 
@@ -93,7 +93,7 @@ double Level1Pressure::at(double r, double t) const {
 double Level1Pressure::total_load(double t) const {
   const double a_t = contact_radius(t);
   const double a_0 = contact_radius(0.0);
-  const GaussLegendreRule& rule = gauss_legendre(24);
+  const GaussRule& rule = gauss_legendre(24);
   auto integrate = [&](double phi_a, double phi_b) {
     double sum = 0.0;
     for (int g = 0; g < 24; ++g) {

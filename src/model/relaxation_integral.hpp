@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "model/creep_law.hpp"
-#include "model/gauss_legendre.hpp"
+#include "model/gauss_rules.hpp"
 
 namespace punchsweep::model {
 
@@ -15,7 +15,8 @@ inline constexpr int kKernelNodes = 16;
 /// Longest time one Gauss piece spans: 2 relaxation time scales (16 points integrate
 /// exp(-x) over 2 units to machine precision), and at most one creep time scale (J, and
 /// so Q, varies on that scale; T_eps for the standard linear solid).
-inline double kernel_piece_span(const CreepLaw& creep) {
+template <class Kernel>
+double kernel_piece_span(const Kernel& creep) {
   return std::min(2.0 * creep.relaxation_time_scale(), creep.creep_time_scale());
 }
 
@@ -41,11 +42,14 @@ inline constexpr double kSplitAge = 1e-3;
 /// varies on the creep time scale only near tau(u_a) and on the scale tau - tau(u_a) beyond
 /// (the creep-weighted load from the start of the load or a kink): graded pieces then also
 /// span at most max(creep_time_scale, kAgeRatio (tau - tau(u_a))).
-template <class Map, class Inverse, class F, class R>
-R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double u_b, double tau_span, Map&& map,
+/// `Kernel` is a CreepLaw, or any type with its relaxation, relaxation_rate,
+/// relaxation_time_scale, creep_time_scale and singular_at_zero (LoadHistory passes the
+/// slow terms of a relaxation series).
+template <class Kernel, class Map, class Inverse, class F, class R>
+R relaxation_integral_mapped(const Kernel& creep, double t, double u_a, double u_b, double tau_span, Map&& map,
                              Inverse&& inverse, F&& f, R zero, bool graded_f = false) {
   if (!(u_b > u_a)) return zero;
-  const GaussLegendreRule& rule = gauss_legendre(kKernelNodes);
+  const GaussRule& rule = gauss_legendre(kKernelNodes);
   const double span = kernel_piece_span(creep);
   R sum = zero;
   const auto piece = [&](double mid, double width) {
@@ -150,8 +154,8 @@ R relaxation_integral_mapped(const CreepLaw& creep, double t, double u_a, double
 
 /// int_{tau_a}^{tau_b} E'(t - tau) f(tau) dtau for an f smooth on [tau_a, tau_b] on the
 /// creep time scale near tau_a and on the scale tau - tau_a beyond (graded_f above).
-template <class F, class R>
-R relaxation_integral(const CreepLaw& creep, double t, double tau_a, double tau_b, F&& f, R zero) {
+template <class Kernel, class F, class R>
+R relaxation_integral(const Kernel& creep, double t, double tau_a, double tau_b, F&& f, R zero) {
   const auto identity = [](double tau, double* dtau) {
     *dtau = 1.0;
     return tau;
@@ -163,8 +167,8 @@ R relaxation_integral(const CreepLaw& creep, double t, double tau_a, double tau_
 /// int E'(t - tau) f dtau over tau in [tau0 + v_a^2, tau0 + v_b^2], in the variable
 /// v = sqrt(tau - tau0) (dtau = 2 v dv), for an f that is smooth in v but behaves like
 /// sqrt(tau - tau0) in tau (a contact edge passing, level 2 touching). f takes v.
-template <class F, class R>
-R relaxation_integral_sqrt(const CreepLaw& creep, double t, double tau0, double v_a, double v_b,
+template <class Kernel, class F, class R>
+R relaxation_integral_sqrt(const Kernel& creep, double t, double tau0, double v_a, double v_b,
                            F&& f, R zero) {
   const auto square = [tau0](double v, double* dtau) {
     *dtau = 2.0 * v;

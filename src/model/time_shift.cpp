@@ -58,6 +58,14 @@ std::optional<RetardationSeries> TimeShiftedLaw::retardation_series() const {
   return series;
 }
 
+std::optional<RelaxationSeries> TimeShiftedLaw::relaxation_series() const {
+  std::optional<RelaxationSeries> series = ref_->relaxation_series();
+  if (series) {
+    for (RelaxationSeries::Term& term : series->terms) term.tau *= a_;
+  }
+  return series;
+}
+
 std::string TimeShiftedLaw::describe() const {
   return ref_->describe() + ", times shifted by a_T = " + number_text(a_, 10);
 }

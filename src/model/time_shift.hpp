@@ -57,6 +57,7 @@ class TimeShiftedLaw final : public CreepLaw {
   double relaxation_memory() const override { return a_ * ref_->relaxation_memory(); }
   bool singular_at_zero() const override { return ref_->singular_at_zero(); }
   std::optional<RetardationSeries> retardation_series() const override;
+  std::optional<RelaxationSeries> relaxation_series() const override;
   std::string describe() const override;
 
 

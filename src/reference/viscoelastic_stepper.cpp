@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "model/gauss_legendre.hpp"
+#include "model/gauss_rules.hpp"
 
 namespace punchsweep::reference {
 
@@ -58,7 +58,7 @@ ViscoelasticStepper::ViscoelasticStepper(const PeriodicGrid& grid, std::vector<d
 }
 
 double ViscoelasticStepper::mean_creep(double t_end, double a, double b) const {
-  const model::GaussLegendreRule& rule = model::gauss_legendre(kWeightQuadraturePoints);
+  const model::GaussRule& rule = model::gauss_legendre(kWeightQuadraturePoints);
   const double mid = 0.5 * (a + b);
   const double half = 0.5 * (b - a);
   double sum = 0.0;

@@ -270,6 +270,30 @@ TEST_P(CreepLawConformance, retardation_series_reproduces_the_creep_function) {
   }
 }
 
+TEST_P(CreepLawConformance, relaxation_series_reproduces_the_relaxation_function) {
+  // A law that offers its relaxation series has its load histories integrated term by term
+  // (LoadHistory): the series must be the law's E and E', with tau ascending.
+  const auto law = make();
+  const std::optional<RelaxationSeries> series = law->relaxation_series();
+  if (!series) return;
+  ASSERT_FALSE(series->terms.empty());
+  for (std::size_t k = 1; k < series->terms.size(); ++k) {
+    EXPECT_GT(series->terms[k].tau, series->terms[k - 1].tau) << law->describe();
+  }
+  for (const double t : {0.0, 1e-3, 0.1, 1.0, 7.0}) {
+    double E = series->E_final;
+    double rate = 0.0;
+    for (const RelaxationSeries::Term& term : series->terms) {
+      EXPECT_GT(term.E, 0.0);
+      E += term.E * std::exp(-t / term.tau);
+      rate -= term.E / term.tau * std::exp(-t / term.tau);
+    }
+    EXPECT_NEAR(E, law->relaxation(t), 1e-14 * law->relaxation(0.0)) << law->describe() << ", t = " << t;
+    EXPECT_NEAR(rate, law->relaxation_rate(t), 1e-13 * std::abs(law->relaxation_rate(0.0)))
+        << law->describe() << ", t = " << t;
+  }
+}
+
 TEST_P(CreepLawConformance, factory_refuses_values_outside_each_parameters_range) {
   if (GetParam().law == nullptr) return;  // not built by the factory
   const CreepLawSpec& spec = *GetParam().law;

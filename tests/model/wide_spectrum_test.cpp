@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "model/gauss_legendre.hpp"
+#include "model/gauss_rules.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/prony_series.hpp"
 #include "model/two_level.hpp"
@@ -47,7 +47,7 @@ void brute_force(const ContactProblem& p, const CreepLaw& law, const PointResult
     *q1 = s.state.Q1;
     *q2 = s.state.Q2;
   };
-  const GaussLegendreRule& g = gauss_legendre(16);
+  const GaussRule& g = gauss_legendre(16);
   *P1 = *P2 = 0.0;
   const auto add = [&](double a, double b, int map) {  // map 0: tau, 1: v from t0, 2: age
     for (int k = 0; k < 16; ++k) {
