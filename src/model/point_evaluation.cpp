@@ -1,6 +1,7 @@
 #include "model/point_evaluation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -258,32 +259,45 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     }
   }
   if (two_level && out.start_ok && t_max >= t_start && !history_skipped) {
-    // Along the history path, a secant predictor in (X, a1, a2^2) from the last two samples
-    // halves the Newton work; a2^2 rather than a2 because a2 ~ sqrt(X - X*) at touchdown.
-    TwoLevelState current = out.start;
-    TwoLevelState previous = out.start;
-    double X_current = out.X_start;
-    double X_previous = out.X_start;
+    // Along the history path a predictor in (X, a1, a2^2) from the last samples, quadratic
+    // through three (secant through two at the start), leaves about one Newton evaluation
+    // a sample; a2^2 rather than a2 because a2 ~ sqrt(X - X*) at touchdown. Samples at an
+    // unchanged X (the load settled) do not enter it.
+    std::array<TwoLevelState, 3> last{out.start, out.start, out.start};  // newest first
+    std::array<double, 3> X_last{out.X_start, out.X_start, out.X_start};
+    int known = 1;  // distinct X among last
     history.emplace(load, level1_load, t_start, t_max, options.quadrature,
                     [&](double tau, double* Q1, double* Q2) {
                       const double X = load(tau);
-                      TwoLevelSolve r{current, false};
-                      if (X_current > X_previous) {
-                        const double w = (X - X_current) / (X_current - X_previous);
-                        const double z = current.a2 * current.a2 +
-                                         w * (current.a2 * current.a2 - previous.a2 * previous.a2);
-                        const TwoLevelState guess{current.a1 + w * (current.a1 - previous.a1),
-                                                  std::sqrt(std::max(z, 0.0)), 0.0, 0.0};
-                        r = system.solve(X, guess);
+                      TwoLevelSolve r{last[0], false};
+                      if (known >= 2) {
+                        // Lagrange weights of the known points at X.
+                        std::array<double, 3> w{};
+                        for (int i = 0; i < known && i < 3; ++i) {
+                          w[i] = 1.0;
+                          for (int j = 0; j < known && j < 3; ++j) {
+                            if (j != i) w[i] *= (X - X_last[j]) / (X_last[i] - X_last[j]);
+                          }
+                        }
+                        double a1 = 0.0;
+                        double z = 0.0;
+                        for (int i = 0; i < known && i < 3; ++i) {
+                          a1 += w[i] * last[i].a1;
+                          z += w[i] * last[i].a2 * last[i].a2;
+                        }
+                        r = system.solve(X, TwoLevelState{a1, std::sqrt(std::max(z, 0.0)), 0.0, 0.0});
                       }
-                      if (!r.converged) r = system.continue_to(current, X_current, X);
+                      if (!r.converged) r = system.continue_to(last[0], X_last[0], X);
                       if (!r.converged) return false;
-                      previous = current;
-                      X_previous = X_current;
-                      current = r.state;
-                      X_current = X;
-                      *Q1 = current.Q1;
-                      *Q2 = current.Q2;
+                      if (X > X_last[0]) {
+                        last = {r.state, last[0], last[1]};
+                        X_last = {X, X_last[0], X_last[1]};
+                        known = std::min(known + 1, 3);
+                      } else {
+                        last[0] = r.state;
+                      }
+                      *Q1 = r.state.Q1;
+                      *Q2 = r.state.Q2;
                       return true;
                     });
     out.history_samples = history->samples();
