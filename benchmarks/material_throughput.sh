@@ -6,11 +6,14 @@
 # The material is materials/silicone_elite_double32.ini (10 terms, 5e-8 s to 0.49 s) with a
 # made-up WLF shift, so that a 17-value temperature axis gives the grid of the SLS's 17 T
 # values: the same 2,350,080 points (regime) and 24,480 (full) for both.
-# Usage: bash benchmarks/material_throughput.sh [punchsweep-binary] [repeats]
+# With a baseline binary (an older build), its Prony rates run interleaved with the same
+# runs and the ratio new/baseline is printed beside them.
+# Usage: bash benchmarks/material_throughput.sh [punchsweep-binary] [repeats] [baseline-binary]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-"$root/build/src/app/punchsweep"}
 repeats=${2:-3}
+baseline=${3:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 { cat "$root/materials/silicone_elite_double32.ini"
@@ -23,8 +26,8 @@ full=(--grid.l 'linspace(0.5, 1.25, 4)' --grid.dh 'linspace(0.01, 0.12, 10)' --g
 sls=(--grid.T 'linspace(2, 10, 17)')
 material=(--model.material "$work/silicone_wlf.ini" --grid.temperature 'linspace(20, 60, 17)')
 
-rate() {  # rate ARGS...: the engine's points/s of one sweep
-  "$bin" sweep "$@" --quiet --overwrite --output "$work/map.h5"
+rate() {  # rate ARGS...: the engine's points/s of one sweep (BIN overrides the binary)
+  "${BIN:-$bin}" sweep "$@" --quiet --overwrite --output "$work/map.h5"
   h5dump -a /points_per_second "$work/map.h5" | sed -n 's/.*(0): \(.*\)/\1/p'
 }
 
@@ -32,12 +35,17 @@ printf '%-8s %-22s %s\n' mode law "points/s (one rank), $repeats runs interleave
 for mode in regime full; do
   for r in $(seq "$repeats"); do
     if [ "$mode" = regime ]; then
-      a=$(rate "${common[@]}" "${sls[@]}" --quantities regime)
-      b=$(rate "${common[@]}" "${material[@]}" --quantities regime)
+      args=("${common[@]}")
     else
-      a=$(rate "${full[@]}" "${sls[@]}" --quantities full)
-      b=$(rate "${full[@]}" "${material[@]}" --quantities full)
+      args=("${full[@]}")
     fi
-    printf '%-8s %-22s %.3g\n%-8s %-22s %.3g\n' "$mode" "sls (T axis)" "$a" "$mode" "prony 10 (temperature)" "$b"
+    a=$(rate "${args[@]}" "${sls[@]}" --quantities "$mode")
+    b=$(rate "${args[@]}" "${material[@]}" --quantities "$mode")
+    printf '%-8s %-22s %.3g\n%-8s %-22s %.3g' "$mode" "sls (T axis)" "$a" "$mode" "prony 10 (temperature)" "$b"
+    if [ -n "$baseline" ]; then
+      c=$(BIN=$baseline rate "${args[@]}" "${material[@]}" --quantities "$mode")
+      printf '   baseline %.3g, ratio %s' "$c" "$(awk -v b="$b" -v c="$c" 'BEGIN { printf "%.2f", b / c }')"
+    fi
+    printf '\n'
   done
 done
