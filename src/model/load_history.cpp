@@ -90,7 +90,28 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
     // Under a power law J ~ t^n, so Q ~ v^(2n) at v = 0 when the two-level phase starts at
     // t = 0: panels shrink 4-fold towards it (kSingularLevels of them) before the rest.
     const bool singular_start = j == 0 && t0 == 0.0 && creep_.singular_at_zero();
-    if (!settled && (singular_start || (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width))) {
+    if (j > 0 && !settled) {
+      // After a kink of the load every retardation term starts again: Q is smooth in tau
+      // there but varies on the shortest creep time near the kink. The panels are laid out
+      // as the first stretch's from touchdown, in u = sqrt(tau - tau_kink) (uniform, or
+      // graded past kMaxUniformPanels), and mapped to v = sqrt(v_kink^2 + u^2).
+      const double v_kink = edges[j];
+      const double u_end = std::sqrt((edges[j + 1] - v_kink) * (edges[j + 1] + v_kink));
+      const int uniform = std::max(1, static_cast<int>(std::ceil(u_end / width)));
+      const bool graded = uniform > kMaxUniformPanels && growth * u_end > width;
+      std::vector<double> u{0.0};
+      while (u.back() < u_end) {
+        const double at = u.back();
+        double next = graded ? at + std::max(width, growth * at) : at + u_end / uniform;
+        if (u_end - next < 0.5 * (next - at)) next = u_end;
+        u.push_back(next);
+      }
+      stretch.edges.push_back(v_kink);
+      for (std::size_t k = 1; k + 1 < u.size(); ++k) stretch.edges.push_back(std::sqrt(v_kink * v_kink + u[k] * u[k]));
+      stretch.edges.push_back(edges[j + 1]);
+      stretch.panels = static_cast<int>(stretch.edges.size()) - 1;
+    } else if (!settled &&
+               (singular_start || (stretch.panels > kMaxUniformPanels && growth * edges[j + 1] > width))) {
       // Graded: panels of the uniform width until the growth exceeds it, then growing.
       stretch.edges.push_back(edges[j]);
       if (singular_start) {
