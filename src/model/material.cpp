@@ -41,6 +41,7 @@ constexpr KeyRule kKeys[] = {
     {"material", "eta", false},    {"material", "n", false},       {"material", "t_1", false},
     {"shift", "kind", false},       {"shift", "C1", false},
     {"shift", "C2", false},        {"shift", "T_ref", false},      {"shift", "E_a", false},
+    {"shift", "E_a_below", false}, {"shift", "T_min", false},      {"shift", "T_max", false},
 };
 
 /// The parsed file: values by "section.key", with their line for messages.
@@ -334,8 +335,9 @@ Material Material::parse(std::string_view text, std::string_view origin) {
       shift.kind = TemperatureShift::Kind::wlf;
       shift.C1 = f.number("shift.C1");
       shift.C2 = f.number("shift.C2");
+      if (f.has("shift.E_a_below")) shift.E_a_below = f.number("shift.E_a_below");
     } else if (kind == "arrhenius") {
-      for (const char* key : {"shift.C1", "shift.C2"}) {
+      for (const char* key : {"shift.C1", "shift.C2", "shift.E_a_below"}) {
         if (f.has(key)) f.fail_value(key, "not a key of kind = arrhenius (it is kind = wlf's)");
       }
       shift.kind = TemperatureShift::Kind::arrhenius;
@@ -343,6 +345,8 @@ Material Material::parse(std::string_view text, std::string_view origin) {
     } else {
       f.fail_value("shift.kind", "unknown kind; valid: wlf, arrhenius");
     }
+    if (f.has("shift.T_min")) shift.T_min = f.number("shift.T_min");
+    if (f.has("shift.T_max")) shift.T_max = f.number("shift.T_max");
     if (std::string e = shift.error(); !e.empty()) throw MaterialError(std::string(origin) + ": [shift] " + e);
     m.shift_ = shift;
     auto temperature = std::make_shared<Temperature>(Temperature{f.text("shift.T_ref"), temperature_parameter()});

@@ -7,40 +7,68 @@
 
 namespace punchsweep::model {
 std::string TemperatureShift::error() const {
-  const auto bad = [](const char* name, double v, const char* range) {
+  const auto bad = [](const char* name, double v, const std::string& range) {
     return std::string("shift ") + name + " = " + number_text(v, 10) + " is outside its range: " + range;
   };
   if (!(std::isfinite(T_ref) && T_ref > -kZeroCelsius)) return bad("T_ref", T_ref, "T_ref > -273.15 (in degC)");
   if (kind == Kind::wlf) {
     if (!(std::isfinite(C1) && C1 > 0.0)) return bad("C1", C1, "C1 > 0");
     if (!(std::isfinite(C2) && C2 > 0.0)) return bad("C2", C2, "C2 > 0 (in K)");
+    if (!(std::isfinite(E_a_below) && E_a_below >= 0.0)) {
+      return bad("E_a_below", E_a_below, "E_a_below > 0 (in J/mol; leave it out for WLF on both sides of T_ref)");
+    }
   } else if (!(std::isfinite(E_a) && E_a > 0.0)) {
     return bad("E_a", E_a, "E_a > 0 (in J/mol)");
+  }
+  if (!(T_min >= -kZeroCelsius && T_min < T_max)) {
+    return bad("T_min", T_min, "-273.15 <= T_min < T_max = " + number_text(T_max, 10) + " (in degC)");
   }
   return {};
 }
 
 bool TemperatureShift::admits(double th) const {
-  if (!(std::isfinite(th) && th > -kZeroCelsius)) return false;
-  return kind == Kind::arrhenius || C2 + th - T_ref > 0.0;
+  if (!(std::isfinite(th) && th > -kZeroCelsius && th >= T_min && th <= T_max)) return false;
+  return !wlf_at(th) || C2 + th - T_ref > 0.0;
 }
 
 std::string TemperatureShift::range() const {
-  if (kind == Kind::arrhenius) return "temperature > -273.15 (in degC)";
-  return "temperature > " + number_text(T_ref - C2, 10) + " (in degC; T_ref - C2, where WLF diverges)";
+  const bool diverges = kind == Kind::wlf && !(E_a_below > 0.0);  // WLF below T_ref too
+  const bool limited = T_min > -kZeroCelsius || std::isfinite(T_max);
+  std::string r = "temperature";
+  if (T_min > -kZeroCelsius && !(diverges && T_min <= T_ref - C2)) {
+    r += " >= " + number_text(T_min, 10);
+  } else {
+    r += " > " + (diverges ? number_text(T_ref - C2, 10) : std::string("-273.15"));
+  }
+  if (std::isfinite(T_max)) r += " and <= " + number_text(T_max, 10);
+  r += " (in degC";
+  if (diverges) r += "; T_ref - C2, where WLF diverges";
+  if (limited) r += "; T_min, T_max: the range the shift was fitted over";
+  return r + ")";
 }
+
+bool TemperatureShift::wlf_at(double th) const { return kind == Kind::wlf && !(E_a_below > 0.0 && th < T_ref); }
 
 double TemperatureShift::log10_factor(double th) const {
   const double d = th - T_ref;
-  if (kind == Kind::wlf) return -C1 * d / (C2 + d);
-  return E_a / kGasConstant * (1.0 / (th + kZeroCelsius) - 1.0 / (T_ref + kZeroCelsius)) / std::log(10.0);
+  if (wlf_at(th)) return -C1 * d / (C2 + d);
+  const double energy = kind == Kind::wlf ? E_a_below : E_a;
+  return energy / kGasConstant * (1.0 / (th + kZeroCelsius) - 1.0 / (T_ref + kZeroCelsius)) / std::log(10.0);
 }
 
 std::string TemperatureShift::describe() const {
+  std::string d;
   if (kind == Kind::wlf) {
-    return "WLF, C1 = " + number_text(C1, 10) + ", C2 = " + number_text(C2, 10) + " K, T_ref = " + number_text(T_ref, 10) + " degC";
+    d = "WLF, C1 = " + number_text(C1, 10) + ", C2 = " + number_text(C2, 10) + " K, T_ref = " + number_text(T_ref, 10) +
+        " degC";
+    if (E_a_below > 0.0) d += ", Arrhenius below T_ref with E_a = " + number_text(E_a_below, 10) + " J/mol";
+  } else {
+    d = "Arrhenius, E_a = " + number_text(E_a, 10) + " J/mol, T_ref = " + number_text(T_ref, 10) + " degC";
   }
-  return "Arrhenius, E_a = " + number_text(E_a, 10) + " J/mol, T_ref = " + number_text(T_ref, 10) + " degC";
+  if (T_min > -kZeroCelsius || std::isfinite(T_max)) {
+    d += ", fitted from " + number_text(T_min, 10) + " to " + number_text(T_max, 10) + " degC";
+  }
+  return d;
 }
 
 TimeShiftedLaw::TimeShiftedLaw(std::unique_ptr<CreepLaw> reference, double a_T) : ref_(std::move(reference)), a_(a_T) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -7,6 +8,9 @@
 #include "model/creep_law.hpp"
 
 namespace punchsweep::model {
+
+/// 0 degC in K.
+inline constexpr double kZeroCelsius = 273.15;
 
 /// Time-temperature superposition (docs/model.md, section 10): the law at temperature th is
 /// the reference law with t -> t / a_T(th). Temperatures in degrees Celsius.
@@ -17,12 +21,20 @@ struct TemperatureShift {
   double C1 = 0.0;     ///< WLF: log10 a_T = -C1 (th - T_ref) / (C2 + th - T_ref)
   double C2 = 0.0;     ///< WLF, in K (a temperature difference)
   double E_a = 0.0;    ///< Arrhenius: ln a_T = (E_a / R) (1/(th + 273.15) - 1/(T_ref + 273.15)), in J/mol
+  /// WLF only, optional (0: none): below T_ref the shift is Arrhenius with this activation
+  /// energy, in J/mol (WLF above the glass transition T_ref, Arrhenius below; a_T is
+  /// continuous at T_ref).
+  double E_a_below = 0.0;
+  /// Optional: the temperatures the shift was fitted over, in degC; others are refused.
+  double T_min = -kZeroCelsius;
+  double T_max = std::numeric_limits<double>::infinity();
 
-  /// Empty when the constants are admissible (finite; C1 > 0, C2 > 0; E_a > 0; T_ref above
-  /// absolute zero), else a sentence naming the bad one and its range.
+  /// Empty when the constants are admissible (finite; C1 > 0, C2 > 0; E_a > 0; E_a_below
+  /// >= 0; T_ref above absolute zero; T_min < T_max), else a sentence naming the bad one
+  /// and its range.
   std::string error() const;
-  /// Whether temperature th (degC) is one the shift holds at: above absolute zero, and for
-  /// WLF above T_ref - C2 (where log10 a_T diverges).
+  /// Whether temperature th (degC) is one the shift holds at: above absolute zero, within
+  /// [T_min, T_max], and where WLF applies above T_ref - C2 (where log10 a_T diverges).
   bool admits(double th) const;
   /// The range admits() checks, as messages print it: "temperature > 54.4 degC (T_ref - C2)".
   std::string range() const;
@@ -30,12 +42,14 @@ struct TemperatureShift {
   double log10_factor(double th) const;
   /// "WLF, C1 = 17.44, C2 = 51.6 K, T_ref = 105 degC".
   std::string describe() const;
+
+ private:
+  /// Whether the WLF form holds at th (kind wlf, and not below T_ref with E_a_below).
+  bool wlf_at(double th) const;
 };
 
 /// Gas constant, in J/(mol K).
 inline constexpr double kGasConstant = 8.314462618;
-/// 0 degC in K.
-inline constexpr double kZeroCelsius = 273.15;
 
 /// A law with its time axis scaled by a_T: J(t) = J_ref(t / a_T), E(t) = E_ref(t / a_T).
 /// a_T > 1 makes it slower (colder than T_ref for WLF and Arrhenius).

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -95,6 +96,42 @@ TEST(TemperatureShift, wlf_and_arrhenius_as_written) {
   TemperatureShift bad = wlf;
   bad.C2 = -3.0;
   EXPECT_NE(bad.error().find("C2 = -3"), std::string::npos);
+}
+
+TEST(TemperatureShift, wlf_above_and_arrhenius_below_a_glass_transition) {
+  // WLF above T_ref, Arrhenius with E_a_below under it (log10 a_T = C3 (1/T - 1/T_ref) in
+  // the form papers write, C3 = E_a / (R ln 10)), continuous at T_ref; outside [T_min,
+  // T_max] refused.
+  TemperatureShift s;
+  s.C1 = 17.4;
+  s.C2 = 51.6;
+  s.T_ref = 65.0;
+  s.E_a_below = 35000.0 * 8.314462618 * std::log(10.0);
+  s.T_min = 23.0;
+  s.T_max = 85.0;
+  EXPECT_EQ(s.error(), "");
+  EXPECT_NEAR(s.log10_factor(85.0), -17.4 * 20.0 / 71.6, 1e-14);
+  EXPECT_NEAR(s.log10_factor(23.0), 35000.0 * (1.0 / 296.15 - 1.0 / 338.15), 1e-11);
+  EXPECT_EQ(s.log10_factor(65.0), 0.0);
+  EXPECT_NEAR(s.log10_factor(64.999999), 0.0, 1e-4);  // continuous at T_ref
+  EXPECT_TRUE(s.admits(23.0));
+  EXPECT_TRUE(s.admits(85.0));
+  EXPECT_FALSE(s.admits(22.9));
+  EXPECT_FALSE(s.admits(85.1));
+  EXPECT_NE(s.range().find(">= 23"), std::string::npos) << s.range();
+  EXPECT_NE(s.range().find("<= 85"), std::string::npos) << s.range();
+  EXPECT_NE(s.describe().find("Arrhenius below T_ref"), std::string::npos) << s.describe();
+  // Without the limits, the Arrhenius branch holds down to absolute zero (no WLF divergence).
+  TemperatureShift open = s;
+  open.T_min = -273.15;
+  open.T_max = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(open.admits(-100.0));
+  TemperatureShift bad = s;
+  bad.T_min = 90.0;
+  EXPECT_NE(bad.error().find("T_min = 90"), std::string::npos) << bad.error();
+  bad = s;
+  bad.E_a_below = -1.0;
+  EXPECT_NE(bad.error().find("E_a_below = -1"), std::string::npos) << bad.error();
 }
 
 TEST(TimeShiftedLaw, is_the_reference_law_at_scaled_time) {

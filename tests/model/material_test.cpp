@@ -125,6 +125,9 @@ TEST(Material, refuses_every_bad_file_with_key_value_and_range) {
       {"C2 = 51.6", "C2 = -51.6", "C2 = -51.6", "C2 > 0"},
       {"kind = wlf", "kind = vft", "kind = vft", "wlf, arrhenius"},
       {"[shift]", "[shfit]", "unknown section [shfit]", "[material] and an optional [shift]"},
+      {"kind = wlf\nC1 = 17.44\nC2 = 51.6", "kind = arrhenius\nE_a = 1e5\nE_a_below = 1e5", "E_a_below", "kind = wlf's"},
+      {"T_ref = 105", "T_ref = 105\nT_min = 120\nT_max = 110", "T_min = 120", "T_min < T_max"},
+      {"T_ref = 105", "T_ref = 105\nT_min = 110", "temperature = 105", ">= 110"},
   };
   for (const Bad& c : cases) {
     const std::string message = refusal(replaced(kExample, c.from, c.to));
