@@ -120,7 +120,7 @@ class LoadHistory {
   /// default panel width (HistoryQuadrature{}.panel_width sqrt(creep time)): at the default
   /// a factor 1.69 in time a panel, and finer in proportion to a finer width, so that the
   /// width still controls the error everywhere. (Against histories of growth 0.05 and 16
-  /// nodes, the loads P_i of the three shipped materials agree to 6e-15 E0* R^2 at 0.3, as
+  /// nodes, the loads P_i of the four shipped materials agree to 6e-15 E0* R^2 at 0.3, as
   /// at 0.2 (1.5e-14); at 0.4 the 24-term epoxy's are 4e-13 off.)
   static constexpr double kPanelGrowth = 0.3;
   /// Calls f(a, b) for the pieces of [lo, hi] between the load's kinks (nothing if hi <= lo).
