@@ -129,6 +129,28 @@ mkdir -p configs/sub
 printf '[grid]\nl = 0.75\ndh = 0.02\npbar = 0.005\ns = 2\n[model]\nmaterial = ../../nbr.ini\n' > configs/sub/c.ini
 run_ranks 0 sweep --config configs/sub/c.ini --quiet --output rel.h5 || fail "relative material path in a config"
 run_ranks 0 sweep --config "$repo/sweeps/materials/nbr.ini" --quiet --output example.h5 || fail "sweeps/materials/nbr.ini"
+# The PLA example (a published WLF above T_g = 65 C and Arrhenius below): t* scales with
+# a_T, log10 a_T = -17.4 (th - 65)/(51.6 + th - 65) above T_g and 35000 K (1/T - 1/T_g)
+# below it (the paper's constants, not the code's), at every dh that touches late.
+run_ranks 0 sweep --config "$repo/sweeps/materials/pla.ini" --quiet --output pla.h5 || fail "sweeps/materials/pla.ini"
+"$PY" - pla.h5 <<'PYEOF' || fail "PLA t* does not scale with the published shift"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1])
+t = np.squeeze(f["t_star"][...])          # (dh, temperature)
+T = f["temperature"][...]
+regime = np.squeeze(f["regime"][...])
+def log10_aT(th):
+    return -17.4 * (th - 65) / (51.6 + th - 65) if th >= 65 else 35000.0 * (1 / (th + 273.15) - 1 / 338.15)
+ref = int(np.argmin(abs(T - 65)))
+checked = 0
+for j in (int(np.argmin(abs(T - 55))), int(np.argmin(abs(T - 75))), int(np.argmin(abs(T - 40)))):
+    for i in range(t.shape[0]):
+        if regime[i, ref] == 1 and regime[i, j] == 1:  # delayed at both
+            expect = 10 ** (log10_aT(T[j]) - log10_aT(T[ref]))
+            assert abs(t[i, j] / t[i, ref] / expect - 1) < 1e-9, (T[j], i, t[i, j] / t[i, ref], expect)
+            checked += 1
+assert checked > 100, checked
+PYEOF
 run_ranks 0 sweep --model.material configs/sub/missing.ini --dry-run 2> bad.log && fail "a missing material accepted"
 grep -q "^punchsweep sweep: model.material = configs/sub/missing.ini: configs/sub/missing.ini: cannot open the file" \
   bad.log || { cat bad.log; fail "missing material message"; }
