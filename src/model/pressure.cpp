@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "model/integer_power.hpp"
 
@@ -85,9 +86,16 @@ double Level1Pressure::at(double r, double t) const {
     return creep_scaled(r, single_.contact_radius(X), X);
   };
   const double v_hi = std::sqrt(std::max(t - tau_r, 0.0));
-  const double v_lo = std::sqrt(std::max(tau_min - tau_r, 0.0));
-  return creep_.relaxation(0.0) * creep_scaled(r, a_t, X_t) +
-         relaxation_integral_sqrt(creep_, t, tau_r, v_lo, v_hi, q_at, 0.0);
+  // q has a kink wherever the load does: the quadrature ends its pieces there.
+  double v_lo = std::sqrt(std::max(tau_min - tau_r, 0.0));
+  double p = creep_.relaxation(0.0) * creep_scaled(r, a_t, X_t);
+  for (const double kink : problem_.loading.kinks()) {
+    if (!(kink > tau_min && kink < t)) continue;
+    const double v_kink = std::sqrt(kink - tau_r);
+    p += relaxation_integral_sqrt(creep_, t, tau_r, v_lo, v_kink, q_at, 0.0);
+    v_lo = v_kink;
+  }
+  return p + relaxation_integral_sqrt(creep_, t, tau_r, v_lo, v_hi, q_at, 0.0);
 }
 
 double Level1Pressure::total_load(double t) const {
@@ -114,10 +122,20 @@ double Level1Pressure::total_load(double t) const {
     total += integrate(lo, hi);
     lo = hi;
   }
+  // Past a_0 the profile also kinks at the radius the spot had at each kink of the load
+  // (where the edge passed when the load's rate changed): 4 panels between breaks.
+  std::vector<double> breaks{phi_kink};
+  for (const double kink : problem_.loading.kinks()) {
+    const double a_k = kink < t ? contact_radius(kink) : a_t;
+    if (a_k > a_0 && a_k < a_t) breaks.push_back(std::asin(a_k / a_t));
+  }
+  breaks.push_back(0.5 * kPi);
   constexpr int kOuterPanels = 4;
-  for (int k = 0; k < kOuterPanels; ++k) {
-    const double width = (0.5 * kPi - phi_kink) / kOuterPanels;
-    total += integrate(phi_kink + k * width, phi_kink + (k + 1) * width);
+  for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
+    for (int k = 0; k < kOuterPanels; ++k) {
+      const double width = (breaks[b + 1] - breaks[b]) / kOuterPanels;
+      total += integrate(breaks[b] + k * width, breaks[b] + (k + 1) * width);
+    }
   }
   return total;
 }

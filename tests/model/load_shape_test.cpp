@@ -132,7 +132,7 @@ TEST(Level1Pressure, carries_the_ramped_nominal_load) {
   for (const double t : {0.5, 2.0, 3.0, 8.0}) {
     EXPECT_NEAR(pressure.contact_radius(t), single.contact_radius(0.02 * sls_ramp(2.5, 2.0, t)), 1e-14);
     const double nominal = 0.02 * std::min(t / 2.0, 1.0) * problem.l * problem.l;
-    EXPECT_NEAR(pressure.total_load(t), nominal, 2e-6 * nominal) << "t = " << t;
+    EXPECT_NEAR(pressure.total_load(t), nominal, 1e-9 * nominal) << "t = " << t;
   }
 }
 
