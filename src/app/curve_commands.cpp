@@ -10,8 +10,10 @@
 #include "app/usage_error.hpp"
 #include "model/creep_laws.hpp"
 #include "model/creep_weighted_load.hpp"
-#include "model/single_level.hpp"
 #include "model/elastic_two_level.hpp"
+#include "model/localization.hpp"
+#include "model/single_level.hpp"
+#include "model/single_level_shells.hpp"
 #include "model/two_level.hpp"
 
 namespace po = boost::program_options;
@@ -58,6 +60,10 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   opts.add_options()
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
        "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
+      ("localization", po::value<std::string>()->value_name("L")->default_value("paper"),
+       "the localization model (docs/model.md, section 11): paper (one shell of point loads, "
+       "eqs 9.5/9.10), shells:K (K shells of neighbours spread over their own spots) or "
+       "point-shells:K; 1 <= K <= 1000")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or csv");
   const po::variables_map vm = parse_command(args, opts, "single-level");
   if (vm.count("help")) {
@@ -72,18 +78,18 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   bool series = vm.count("pbar") > 0 || vm.count("pressure") > 0 || point_material.material != nullptr;
   for (const model::Parameter& p : law.parameters) series = series || vm.count(std::string(p.name)) > 0;
   const std::string format = read_choice(vm, "format", {"json", "csv"});
-  const model::SingleLevel single(l, shape);
+  model::Localization localization;
+  try {
+    localization = model::parse_localization(vm["localization"].as<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--localization: ") + e.what());
+  }
 
-  // h(a1) up to 2 a1 = l (beyond, level-1 spots merge: the model's validity ends there).
+  // h(a1) up to 2 a1 = l (beyond, level-1 spots merge: the model's validity ends there);
+  // null where the localization model has no solution (beyond its radius limit).
   std::vector<double> a1_curve;
   std::vector<double> h_curve;
   std::vector<double> rate_curve;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a1 = 0.5 * l * static_cast<double>(i) / static_cast<double>(n - 1);
-    a1_curve.push_back(a1);
-    h_curve.push_back(i == 0 ? 0.0 : single.displacement_difference(a1));
-    rate_curve.push_back(i == 0 ? 0.0 : single.displacement_difference_rate(a1));
-  }
   std::vector<double> times;
   std::vector<double> a1_t;
   std::vector<double> h_t;
@@ -91,7 +97,15 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   std::string material;  // "T = 2.5": the law's parameters as given
   model::LoadShape loading;
   double pbar = 0.0;
-  if (series) {
+  double h_inf = 0.0;
+  const auto compute = [&](const auto& single) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a1 = 0.5 * l * static_cast<double>(i) / static_cast<double>(n - 1);
+      a1_curve.push_back(a1);
+      h_curve.push_back(i == 0 ? 0.0 : single.displacement_difference(a1));
+      rate_curve.push_back(i == 0 ? 0.0 : single.displacement_difference_rate(a1));
+    }
+    if (!series) return;
     const std::optional<double> physical = read_physical_pressure(vm, point_material.material.get());
     pbar = physical ? *physical : read_parameter(vm, parameter(model::kPressure));
     std::vector<double> values;
@@ -113,6 +127,13 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       a1_t.push_back(single.contact_radius(X));
       h_t.push_back(single.displacement_difference(a1_t.back(), X));
     }
+    const double X_inf = load.final();
+    h_inf = single.displacement_difference(single.contact_radius(X_inf), X_inf);
+  };
+  if (localization.is_paper()) {
+    compute(model::SingleLevel(l, shape));
+  } else {
+    compute(model::SingleLevelShells(l, shape, localization));
   }
 
   if (format == "csv") {
@@ -133,9 +154,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   out << "{\n  \"h_of_a1\": {\n    \"a1\": " << json_array(a1_curve) << ",\n    \"h\": " << json_array(h_curve)
       << ",\n    \"dh_da1\": " << json_array(rate_curve) << "\n  }";
   if (series) {
-    const double X_inf = model::CreepWeightedLoad(*creep, pbar, loading).final();
-    const double a1_inf = single.contact_radius(X_inf);
-    out << ",\n  \"h_inf\": " << json_number(single.displacement_difference(a1_inf, X_inf))
+    out << ",\n  \"h_inf\": " << json_number(h_inf)
         << ",\n  \"series\": {\n    \"t\": " << json_array(times) << ",\n    \"a1\": " << json_array(a1_t)
         << ",\n    \"h\": " << json_array(h_t) << "\n  }";
   }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace punchsweep::model {
 
@@ -18,5 +19,17 @@ struct Lattice {
   /// A = 2 l / sqrt(pi). Also A2 of the delayed two-level phase (eq 9.18).
   double A_single() const { return 2.0 * l / std::sqrt(std::numbers::pi); }
 };
+
+/// Punches of the lattice at one distance from a point.
+struct DistanceShell {
+  double distance = 0.0;  ///< in units of the pitch l
+  int count = 0;          ///< punches at that distance
+};
+
+/// The K nearest distance shells of the level-1 sites (i l, j l) about the point (cx, cy) l,
+/// nearest first, a site at the point itself left out (docs/model.md, section 11). About a
+/// level-1 punch: 4 at 1, 4 at sqrt(2), 4 at 2, 8 at sqrt(5), ...; about a square centre
+/// (0.5, 0.5): 4 at sqrt(1/2), 8 at sqrt(5/2), ...
+std::vector<DistanceShell> level1_shells(double cx, double cy, int K);
 
 }  // namespace punchsweep::model

@@ -82,3 +82,28 @@ def test_distributed_neighbours_over_many_distances_converge_in_both_radii():
         assert abs(a1 / ref["a1"] - 1) < 1.5e-3, ref
     paper = [study.two_level(r["l"], r["dh"], r["X"], guess=(r["a1"], r["a2"]))[1] / r["a2"] - 1 for r in BEM_TWO[:2]]
     assert paper[0] < -0.1 and paper[1] < -0.2, paper
+
+
+def single_level_cli(*args):
+    done = subprocess.run([BINARY, "single-level", *args], capture_output=True, text=True)
+    return done
+
+
+def test_the_engines_distributed_shells_meet_the_bem_through_the_cli():
+    # `punchsweep single-level --localization shells:K` (the C++ implementation) against the
+    # BEM cache: within 0.15% at K = 100 where spots are apart, as the study found.
+    for (l, X), ref in BEM.items():
+        if ref["a1"] / l > 0.4:
+            continue
+        done = single_level_cli("--l", str(l), "--s", "2", "--pbar", str(X), "--T", "1", "--times", "0",
+                                "--localization", "shells:100", "--a1-points", "2")
+        assert done.returncode == 0, done.stderr
+        series = json.loads(done.stdout)["series"]
+        assert abs(series["h"][0] / ref["h"] - 1) < 1.5e-3, (l, X, series)
+        assert abs(series["a1"][0] / ref["a1"] - 1) < 2.5e-3, (l, X, series)
+
+
+def test_a_bad_localization_is_refused_with_the_valid_forms():
+    done = single_level_cli("--l", "0.75", "--s", "2", "--localization", "shells:0")
+    assert done.returncode == 2 and done.stdout == ""
+    assert "valid: paper, shells:K" in done.stderr

@@ -1,0 +1,31 @@
+#include "model/localization.hpp"
+
+#include <charconv>
+#include <stdexcept>
+
+namespace punchsweep::model {
+
+std::string Localization::spelling() const {
+  if (is_paper()) return "paper";
+  return std::string(distributed ? "shells:" : "point-shells:") + std::to_string(shells);
+}
+
+Localization parse_localization(std::string_view text) {
+  const std::string valid = "valid: paper, shells:K (K distance shells of distributed neighbours) or point-shells:K "
+                            "(of point loads), 1 <= K <= " + std::to_string(Localization::kMaxShells);
+  if (text == "paper") return {};
+  for (const auto& [prefix, distributed] : {std::pair{std::string_view("shells:"), true},
+                                            std::pair{std::string_view("point-shells:"), false}}) {
+    if (text.substr(0, prefix.size()) != prefix) continue;
+    const std::string_view number = text.substr(prefix.size());
+    int K = 0;
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), K);
+    if (error != std::errc() || end != number.data() + number.size() || K < 1 || K > Localization::kMaxShells) {
+      break;
+    }
+    return Localization{K, distributed};
+  }
+  throw std::invalid_argument("localization '" + std::string(text) + "' is not one; " + valid);
+}
+
+}  // namespace punchsweep::model

@@ -1,0 +1,108 @@
+#include "model/single_level_shells.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "model/integer_power.hpp"
+
+namespace punchsweep::model {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+}  // namespace
+
+SingleLevelShells::SingleLevelShells(double l, Shape shape, Localization localization)
+    : l_(l),
+      shape_(shape),
+      localization_(localization),
+      K_P_(load_coefficient(shape)),
+      K_d_(depth_coefficient(shape)),
+      around_punch_(level1_shells(0.0, 0.0, localization.shells)),
+      around_centre_(level1_shells(0.5, 0.5, localization.shells)),
+      spot_(shape.s) {
+  int kept = 1;
+  for (DistanceShell& shell : around_punch_) {
+    shell.distance *= l;
+    kept += shell.count;
+  }
+  int kept_centre = 0;
+  for (DistanceShell& shell : around_centre_) {
+    shell.distance *= l;
+    kept_centre += shell.count;
+  }
+  A_ = l * std::sqrt(kept / kPi);
+  A_M_ = l * std::sqrt(kept_centre / kPi);
+  // The radius limit: spread neighbours reach the spot at a = l/2 (point loads at the
+  // nearest distance, l); below, the first zero of the balance's capacity.
+  const double hard = localization.distributed ? 0.5 * l : std::min(l, A_);
+  double lo = 0.0;
+  double hi = hard * (1.0 - 1e-12);
+  if (capacity(hi, sums(hi)) > 0.0) {
+    a_limit_ = hi;
+  } else {
+    while (hi - lo > 1e-15 * hi) {
+      const double mid = 0.5 * (lo + hi);
+      (capacity(mid, sums(mid)) > 0.0 ? lo : hi) = mid;
+    }
+    a_limit_ = lo;
+  }
+}
+
+SingleLevelShells::Sums SingleLevelShells::sums(double a) const {
+  const auto carried = [a](double r) { return 2.0 / kPi * (a / std::sqrt(r * r - a * a) - std::asin(a / r)); };
+  const auto depth = [a](double r) { return 1.0 / (kPi * std::sqrt(r * r - a * a)); };
+  const auto centre = [](double r) { return 1.0 / (kPi * r); };
+  const auto mean = [&](const auto& f, double rho) { return localization_.distributed ? spot_(f, rho, a) : f(rho); };
+  Sums s;
+  for (const DistanceShell& shell : around_punch_) {
+    s.carried += shell.count * mean(carried, shell.distance);
+    s.depth += shell.count * mean(depth, shell.distance);
+  }
+  for (const DistanceShell& shell : around_centre_) s.centre += shell.count * mean(centre, shell.distance);
+  return s;
+}
+
+double SingleLevelShells::capacity(double a, const Sums& s) const {
+  return l_ * l_ * (1.0 - s.carried) - 2.0 * (A_ * A_ * std::asin(a / A_) - a * std::sqrt(A_ * A_ - a * a));
+}
+
+double SingleLevelShells::creep_scaled_pressure(double a1) const {
+  if (!(a1 < a_limit_)) return std::numeric_limits<double>::infinity();
+  return K_P_ * ipow(a1, shape_.s + 1) / capacity(a1, sums(a1));
+}
+
+double SingleLevelShells::displacement_difference(double a1, double X) const {
+  const Sums s = sums(a1);
+  const double P = X * l_ * l_;
+  return K_d_ * ipow(a1, shape_.s) + P * s.depth - 2.0 * X * std::sqrt(A_ * A_ - a1 * a1) -
+         (P * s.centre - 2.0 * X * A_M_);
+}
+
+double SingleLevelShells::displacement_difference(double a1) const {
+  return displacement_difference(a1, creep_scaled_pressure(a1));
+}
+
+double SingleLevelShells::displacement_difference_rate(double a1) const {
+  const double step = 1e-3 * a1;
+  if (!(a1 + step < a_limit_) || !(a1 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  const auto central = [&](double d) {
+    return (displacement_difference(a1 + d) - displacement_difference(a1 - d)) / (2.0 * d);
+  };
+  return (4.0 * central(0.5 * step) - central(step)) / 3.0;
+}
+
+double SingleLevelShells::contact_radius(double X) const {
+  if (!(X > 0.0)) return 0.0;
+  if (std::isinf(X)) return a_limit_;
+  double lo = 0.0;
+  double hi = a_limit_;
+  while (hi - lo > 1e-15 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (creep_scaled_pressure(mid) < X ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace punchsweep::model

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <vector>
+
+#include "model/lattice.hpp"
+#include "model/localization.hpp"
+#include "model/shape.hpp"
+#include "model/spot_average.hpp"
+
+namespace punchsweep::model {
+
+/// The single-level phase under a localization of the family of docs/model.md, section 11:
+/// around a level-1 punch the K nearest shells of level-1 neighbours (n_k at rho_k), around
+/// the square centre M likewise, each as a point load or spread over its own spot, and the
+/// nominal pressure X beyond A_K (pi A_K^2 = (1 + sum n_k) l^2) and A_M (pi A_M^2 =
+/// sum n_m l^2). With P = X l^2:
+///   balance  P = K_P a^(s+1) + P sum_k n_k <w(a, .)>_k + 2X (A_K^2 asin(a/A_K) - a sqrt(A_K^2 - a^2))
+///   h = K_d a^s + P sum_k n_k <1/(pi sqrt(.^2 - a^2))>_k - 2X sqrt(A_K^2 - a^2)
+///       - (P sum_m n_m <1/(pi .)>_m - 2X A_M).
+/// The paper's localization (one shell, point loads) is SingleLevel's eqs 9.5/9.10, which
+/// this reproduces to rounding; the engine's sweeps use SingleLevel. The same public face
+/// as SingleLevel, for `punchsweep single-level --localization`.
+/// Units: lengths in R, X in E0*, h in R.
+class SingleLevelShells {
+ public:
+  SingleLevelShells(double l, Shape shape, Localization localization);
+
+  /// X = pbar0 J at which the contact radius is a1 (the balance solved for X); +infinity
+  /// at and beyond radius_limit().
+  double creep_scaled_pressure(double a1) const;
+  /// h at contact radius a1 and creep-scaled pressure X.
+  double displacement_difference(double a1, double X) const;
+  /// h along the solution curve.
+  double displacement_difference(double a1) const;
+  /// dh/da1 along the solution curve (Richardson-extrapolated central differences, to
+  /// about 1e-10); NaN within 1e-3 a1 of radius_limit().
+  double displacement_difference_rate(double a1) const;
+  /// The contact radius at X (bisection to 1e-15 relative), in (0, radius_limit()).
+  double contact_radius(double X) const;
+  /// Where the balance needs X -> infinity, or where spread neighbours would reach the
+  /// spot (a = l/2), whichever is first.
+  double radius_limit() const { return a_limit_; }
+
+ private:
+  /// The neighbours' sums at contact radius a, per unit load P: carried share, depth and
+  /// centre displacement kernels (1/length).
+  struct Sums {
+    double carried = 0.0;
+    double depth = 0.0;
+    double centre = 0.0;
+  };
+  Sums sums(double a) const;
+  /// The balance's denominator: l^2 (1 - carried) - 2 (A^2 asin(a/A) - a sqrt(A^2 - a^2)).
+  double capacity(double a, const Sums& s) const;
+
+  double l_;
+  Shape shape_;
+  Localization localization_;
+  double K_P_;
+  double K_d_;
+  std::vector<DistanceShell> around_punch_;   ///< distances in R
+  std::vector<DistanceShell> around_centre_;  ///< distances in R
+  double A_;   ///< A_K
+  double A_M_;
+  SpotAverage spot_;
+  double a_limit_ = 0.0;
+};
+
+}  // namespace punchsweep::model

@@ -1,0 +1,111 @@
+// The single-level phase under the family of localizations of docs/model.md, section 11:
+// one shell of point loads is the paper's eqs 9.5/9.10 (SingleLevel's closed forms); the
+// lattice shells are the lattice's; the distributed model equals the independent Python
+// study (studies/localization/localization_shells.py, numpy/scipy quadrature and root
+// finding) at two of its points.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include "model/lattice.hpp"
+#include "model/localization.hpp"
+#include "model/single_level.hpp"
+#include "model/single_level_shells.hpp"
+#include "model/spot_average.hpp"
+
+using namespace punchsweep::model;
+
+TEST(LatticeShells, are_the_lattice_distances_and_counts) {
+  const auto punch = level1_shells(0.0, 0.0, 5);
+  const double expect[5][2] = {{1.0, 4}, {std::sqrt(2.0), 4}, {2.0, 4}, {std::sqrt(5.0), 8}, {std::sqrt(8.0), 4}};
+  ASSERT_EQ(punch.size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_DOUBLE_EQ(punch[k].distance, expect[k][0]);
+    EXPECT_EQ(punch[k].count, expect[k][1]);
+  }
+  const auto centre = level1_shells(0.5, 0.5, 3);
+  EXPECT_DOUBLE_EQ(centre[0].distance, std::sqrt(0.5));
+  EXPECT_EQ(centre[0].count, 4);
+  EXPECT_DOUBLE_EQ(centre[1].distance, std::sqrt(2.5));
+  EXPECT_EQ(centre[1].count, 8);
+  EXPECT_DOUBLE_EQ(centre[2].distance, std::sqrt(4.5));
+  EXPECT_EQ(centre[2].count, 4);
+  // 100 shells hold 1 + 828 punches (the study's N at K = 100).
+  int kept = 1;
+  for (const DistanceShell& s : level1_shells(0.0, 0.0, 100)) kept += s.count;
+  EXPECT_EQ(kept, 829);
+}
+
+TEST(SingleLevelShells, one_shell_of_point_loads_is_the_papers_single_level_phase) {
+  for (const int s : {1, 2, 3}) {
+    for (const double l : {0.5, 0.75, 1.5}) {
+      const Shape shape{s, 0.5};
+      const SingleLevel paper(l, shape);
+      const SingleLevelShells shells(l, shape, Localization{});
+      EXPECT_NEAR(shells.radius_limit() / (SingleLevel::kScaledRadiusLimit * l), 1.0, 1e-12);
+      for (const double x : {0.05, 0.2, 0.4, 0.6}) {
+        const double a = x * l;
+        EXPECT_NEAR(shells.creep_scaled_pressure(a) / paper.creep_scaled_pressure(a), 1.0, 1e-12);
+        EXPECT_NEAR(shells.displacement_difference(a) / paper.displacement_difference(a), 1.0, 1e-11)
+            << "s = " << s << ", l = " << l << ", x = " << x;
+        EXPECT_NEAR(shells.displacement_difference_rate(a) / paper.displacement_difference_rate(a), 1.0, 1e-8);
+      }
+      const double X = paper.creep_scaled_pressure(0.3 * l);
+      EXPECT_NEAR(shells.contact_radius(X) / (0.3 * l), 1.0, 1e-14);
+    }
+  }
+}
+
+TEST(SingleLevelShells, distributed_shells_equal_the_python_study) {
+  const Shape sphere{2, 0.5};
+  struct Case {
+    double l, X;
+    int K;
+    double a, h;  // localization_shells.single_level(l, X, K, distributed=True)
+  };
+  for (const Case& c : {Case{0.75, 0.06, 10, 0.28124424983206403, 0.05498264448637946},
+                        Case{1.5, 0.005, 30, 0.20325091183356941, 0.035993477464789064}}) {
+    const SingleLevelShells model(c.l, sphere, Localization{c.K, true});
+    const double a = model.contact_radius(c.X);
+    EXPECT_NEAR(a / c.a, 1.0, 1e-12);
+    EXPECT_NEAR(model.displacement_difference(a, c.X) / c.h, 1.0, 1e-11);
+  }
+}
+
+TEST(SpotAverage, the_far_rule_agrees_with_the_near_one_where_it_is_used) {
+  // Just past the threshold the far rule applies; a spot radius a hair larger puts the same
+  // geometry under the near rule.
+  for (const int s : {1, 2, 4}) {
+    const SpotAverage spot(s);
+    for (const double rho : {1.0, 2.0, 5.0}) {
+      const double a = rho / SpotAverage::kFarDistance;
+      const auto depth = [a](double r) { return 1.0 / std::sqrt(r * r - a * a); };
+      const auto share = [a](double r) { return a / std::sqrt(r * r - a * a) - std::asin(a / r); };
+      for (const auto& f : {std::function<double(double)>(depth), std::function<double(double)>(share)}) {
+        const double far = spot(f, rho, a * (1.0 - 1e-13));
+        const double near = spot(f, rho, a * (1.0 + 1e-13));
+        EXPECT_NEAR(far / near, 1.0, 1e-13) << "s = " << s << ", rho = " << rho;
+      }
+    }
+  }
+}
+
+TEST(Localization, parses_its_spellings_and_refuses_others) {
+  EXPECT_TRUE(parse_localization("paper").is_paper());
+  const Localization k = parse_localization("shells:30");
+  EXPECT_EQ(k.shells, 30);
+  EXPECT_TRUE(k.distributed);
+  EXPECT_EQ(k.spelling(), "shells:30");
+  EXPECT_FALSE(parse_localization("point-shells:3").distributed);
+  for (const char* bad : {"shells:0", "shells:", "shells:3x", "shells:1001", "refined", ""}) {
+    try {
+      parse_localization(bad);
+      ADD_FAILURE() << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("valid: paper, shells:K"), std::string::npos) << e.what();
+    }
+  }
+}
