@@ -184,13 +184,16 @@ LoadHistory::Cost LoadHistory::cost(const CreepWeightedLoad& load, double t0, do
   const double width = quadrature.panel_width * std::sqrt(creep.creep_time_scale());
   Cost c;
   // Panels: uniform, or graded past kMaxUniformPanels (5 of the uniform width, then a
-  // factor 1 + kPanelGrowth each), in each stretch between kinks.
+  // factor 1 + kPanelGrowth each).
   double panels = std::ceil(v_end / width);
   const double growth = kPanelGrowth * quadrature.panel_width / HistoryQuadrature{}.panel_width;
   if (panels > kMaxUniformPanels && growth * v_end > width) {
     panels = std::min(panels, 1.0 / growth + std::log(v_end * growth / width) / std::log1p(growth) + 1.0);
   }
-  c.samples = (panels + static_cast<double>(load.shape().kinks().size()) + 2.0) * quadrature.nodes_per_panel;
+  // Each stretch after a kink is laid out afresh from the kink (at most as many panels as
+  // the first), and a settled load adds one.
+  const double kinks = static_cast<double>(load.shape().kinks().size());
+  c.samples = (panels * (1.0 + kinks) + 1.0) * quadrature.nodes_per_panel;
   // The kernel pieces of the wide form over the memory window, uniform or graded by age as
   // relaxation_integral_mapped cuts them (the narrow form samples Q afresh, a handful).
   const double window = std::min(creep.relaxation_memory(), t_end);
