@@ -3,6 +3,7 @@
 #include <boost/program_options.hpp>
 
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <ostream>
 
@@ -14,6 +15,7 @@
 #include "model/localization.hpp"
 #include "model/single_level.hpp"
 #include "model/single_level_shells.hpp"
+#include "model/two_level_shells.hpp"
 #include "model/two_level.hpp"
 
 namespace po = boost::program_options;
@@ -175,7 +177,12 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
       ("E", po::value<std::string>()->value_name("LIST")->default_value("1"),
        "moduli E, comma-separated, in E0* (1 instantaneous, 1/T long-term); each > 0")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"),
-       "output format: json or markdown (a table like Table 9.1)");
+       "output format: json or markdown (a table like Table 9.1)")
+      ("localization", po::value<std::string>()->value_name("L")->default_value("paper"),
+       "the localization model (docs/model.md, section 11): paper (eqs 9.12-9.15), "
+       "shells:D (the punches of both levels within the D nearest distances, spread over "
+       "their own spots; the paper keeps D = 2) or point-shells:D; 1 <= D <= 1000; started "
+       "from the paper's state, where level 2 touches");
   const po::variables_map vm = parse_command(args, opts, "elastic");
   if (vm.count("help")) {
     out << "usage: punchsweep elastic --l L --dh DH --pbar P --s S [--C C] [--E LIST] [--format FMT]\n\n" << opts << "\n";
@@ -186,9 +193,28 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
   const std::vector<double> moduli = read_real_list(vm, "E", "E > 0 (in E0*)", positive);
   const std::string format = read_choice(vm, "format", {"json", "markdown"});
 
+  model::Localization localization;
+  try {
+    localization = model::parse_localization(vm["localization"].as<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--localization: ") + e.what());
+  }
+
   std::vector<double> P1, P2, a1, a2, A1, A2, touches, converged;
   for (const double E : moduli) {
-    const model::ElasticTwoLevel r = model::solve_elastic_two_level(problem, E);
+    model::ElasticTwoLevel r = model::solve_elastic_two_level(problem, E);
+    if (!localization.is_paper()) {
+      // The family's state from the paper's; where level 2 does not touch in the paper's
+      // model there is no start, and the row is null, not converged.
+      model::TwoLevelShells::State s;
+      if (r.level2_touches && r.converged) {
+        s = model::TwoLevelShells(problem, localization).solve(problem.pbar0 / E, r.state.a1, r.state.a2);
+      }
+      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+      r.state = s.converged ? model::TwoLevelState{s.a1, s.a2, s.Q1, s.Q2} : model::TwoLevelState{kNaN, kNaN, kNaN, kNaN};
+      r.radii = s.converged ? model::NominalRadii{s.A1, s.A2} : model::NominalRadii{kNaN, kNaN};
+      r.converged = s.converged;
+    }
     P1.push_back(E * r.state.Q1);  // P = E Q
     P2.push_back(E * r.state.Q2);
     a1.push_back(r.state.a1);

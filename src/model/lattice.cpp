@@ -6,7 +6,9 @@
 
 namespace punchsweep::model {
 
-std::vector<DistanceShell> level1_shells(double cx, double cy, int K) {
+std::vector<DistanceShell> level1_shells(double cx, double cy, int K) { return lattice_shells(cx, cy, K, 0.0); }
+
+std::vector<DistanceShell> lattice_shells(double cx, double cy, int K, double offset) {
   // Squared distances are exact in quarters (the points used sit on the half-integer
   // grid), so the shells are keyed by 4 d^2, an integer; a square of half-width R holds
   // every site within R of the point, and K shells lie within sqrt(K) + 2 of it.
@@ -14,8 +16,8 @@ std::vector<DistanceShell> level1_shells(double cx, double cy, int K) {
   std::map<std::int64_t, int> counts;
   for (int i = -R; i <= R; ++i) {
     for (int j = -R; j <= R; ++j) {
-      const double dx = i - cx;
-      const double dy = j - cy;
+      const double dx = i + offset - cx;
+      const double dy = j + offset - cy;
       const auto key = static_cast<std::int64_t>(std::llround(4.0 * (dx * dx + dy * dy)));
       if (key > 0) ++counts[key];
     }

@@ -32,4 +32,8 @@ struct DistanceShell {
 /// (0.5, 0.5): 4 at sqrt(1/2), 8 at sqrt(5/2), ...
 std::vector<DistanceShell> level1_shells(double cx, double cy, int K);
 
+/// The same for the sites ((i + offset) l, (j + offset) l): offset 0 the level-1 punches,
+/// 0.5 the level-2 punches at the square centres. (cx, cy) on the half-integer grid.
+std::vector<DistanceShell> lattice_shells(double cx, double cy, int K, double offset);
+
 }  // namespace punchsweep::model

@@ -9,12 +9,15 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <tuple>
 
 #include "model/lattice.hpp"
 #include "model/localization.hpp"
 #include "model/single_level.hpp"
+#include "model/elastic_two_level.hpp"
 #include "model/single_level_shells.hpp"
 #include "model/spot_average.hpp"
+#include "model/two_level_shells.hpp"
 
 using namespace punchsweep::model;
 
@@ -107,5 +110,39 @@ TEST(Localization, parses_its_spellings_and_refuses_others) {
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find("valid: paper, shells:K"), std::string::npos) << e.what();
     }
+  }
+}
+
+// The two-level family: D = 2 distances of point loads is the paper's elastic two-level
+// state (eqs 9.12-9.15, Table 9.1, solved by ElasticTwoLevel); D = 20 distributed equals the
+// Python study (localization_shells.two_level) at two of its points.
+TEST(TwoLevelShells, two_distances_of_point_loads_are_the_papers_elastic_state) {
+  for (const auto& [l, dh, pbar] : {std::tuple{0.75, 0.05, 0.06}, std::tuple{1.25, 0.05, 0.025},
+                                    std::tuple{1.0, 0.02, 0.06}}) {
+    const ContactProblem p{l, dh, pbar, Shape{2, 0.5}};
+    const ElasticTwoLevel paper = solve_elastic_two_level(p, 1.0);
+    ASSERT_TRUE(paper.converged && paper.level2_touches);
+    const TwoLevelShells::State s = TwoLevelShells(p, Localization{2, false}).solve(pbar, paper.state.a1, paper.state.a2);
+    ASSERT_TRUE(s.converged);
+    EXPECT_NEAR(s.a1 / paper.state.a1, 1.0, 1e-10);
+    EXPECT_NEAR(s.a2 / paper.state.a2, 1.0, 1e-9);
+    EXPECT_NEAR(s.Q1 / paper.state.Q1, 1.0, 1e-10);
+    EXPECT_NEAR(s.A1 / paper.radii.A1, 1.0, 1e-10);
+    EXPECT_NEAR(s.A2 / paper.radii.A2, 1.0, 1e-10);
+  }
+}
+
+TEST(TwoLevelShells, twenty_distances_distributed_equal_the_python_study) {
+  struct Case {
+    double l, dh, X, a1, a2, Q1;
+  };
+  for (const Case& c : {Case{0.75, 0.05, 0.06, 0.2795406117475716, 0.06914789241474505, 0.03319329985717882},
+                        Case{1.25, 0.05, 0.025, 0.29411650707050113, 0.14175976069728735, 0.03505533767637511}}) {
+    const ContactProblem p{c.l, c.dh, c.X, Shape{2, 0.5}};
+    const TwoLevelShells::State s = TwoLevelShells(p, Localization{20, true}).solve(c.X, c.a1 * 1.02, c.a2 * 0.9);
+    ASSERT_TRUE(s.converged);
+    EXPECT_NEAR(s.a1 / c.a1, 1.0, 1e-10);
+    EXPECT_NEAR(s.a2 / c.a2, 1.0, 1e-9);
+    EXPECT_NEAR(s.Q1 / c.Q1, 1.0, 1e-10);
   }
 }
