@@ -42,6 +42,15 @@ std::string json_array(const std::vector<double>& values) {
 
 bool positive(double v) { return v > 0.0; }
 
+/// --localization, refused as a usage error (exit 2) naming its valid forms.
+model::Localization read_localization(const po::variables_map& vm) {
+  try {
+    return model::parse_localization(vm["localization"].as<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--localization: ") + e.what());
+  }
+}
+
 }  // namespace
 
 int run_single_level_command(const std::vector<std::string>& args, std::ostream& out) {
@@ -80,12 +89,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   bool series = vm.count("pbar") > 0 || vm.count("pressure") > 0 || point_material.material != nullptr;
   for (const model::Parameter& p : law.parameters) series = series || vm.count(std::string(p.name)) > 0;
   const std::string format = read_choice(vm, "format", {"json", "csv"});
-  model::Localization localization;
-  try {
-    localization = model::parse_localization(vm["localization"].as<std::string>());
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--localization: ") + e.what());
-  }
+  const model::Localization localization = read_localization(vm);
 
   // h(a1) up to 2 a1 = l (beyond, level-1 spots merge: the model's validity ends there);
   // null where the localization model has no solution (beyond its radius limit).
@@ -193,12 +197,7 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
   const std::vector<double> moduli = read_real_list(vm, "E", "E > 0 (in E0*)", positive);
   const std::string format = read_choice(vm, "format", {"json", "markdown"});
 
-  model::Localization localization;
-  try {
-    localization = model::parse_localization(vm["localization"].as<std::string>());
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--localization: ") + e.what());
-  }
+  const model::Localization localization = read_localization(vm);
 
   std::vector<double> P1, P2, a1, a2, A1, A2, touches, converged;
   for (const double E : moduli) {
