@@ -20,20 +20,24 @@ struct Lattice {
   double A_single() const { return 2.0 * l / std::sqrt(std::numbers::pi); }
 };
 
-/// Punches of the lattice at one distance from a point.
+/// Punches of one level of the lattice at one distance from a point.
 struct DistanceShell {
   double distance = 0.0;  ///< in units of the pitch l
   int count = 0;          ///< punches at that distance
+  int level = 1;          ///< 1: the sites (i, j) l; 2: the square centres ((i + 1/2), (j + 1/2)) l
 };
 
-/// The K nearest distance shells of the level-1 sites (i l, j l) about the point (cx, cy) l,
-/// nearest first, a site at the point itself left out (docs/model.md, section 11). About a
-/// level-1 punch: 4 at 1, 4 at sqrt(2), 4 at 2, 8 at sqrt(5), ...; about a square centre
-/// (0.5, 0.5): 4 at sqrt(1/2), 8 at sqrt(5/2), ...
-std::vector<DistanceShell> level1_shells(double cx, double cy, int K);
+/// The K nearest distance shells of the level-`level` sites about the point (cx, cy) l (on
+/// the half-integer grid), nearest first, a site at the point itself left out. About a
+/// level-1 punch, level 1: 4 at 1, 4 at sqrt(2), 4 at 2, 8 at sqrt(5), ...; about a square
+/// centre (0.5, 0.5), level 1: 4 at sqrt(1/2), 8 at sqrt(5/2), ...
+std::vector<DistanceShell> lattice_shells(double cx, double cy, int K, int level);
 
-/// The same for the sites ((i + offset) l, (j + offset) l): offset 0 the level-1 punches,
-/// 0.5 the level-2 punches at the square centres. (cx, cy) on the half-integer grid.
-std::vector<DistanceShell> lattice_shells(double cx, double cy, int K, double offset);
+/// The neighbourhood a localization of the family keeps about a punch of `level`
+/// (docs/model.md, section 11): the punches of either level within its D nearest distinct
+/// distances, by distance. D = 2 is the paper's: about a level-1 punch four level-2 punches
+/// at l/sqrt(2) and four level-1 punches at l, and the same about a level-2 punch. In the
+/// single-level phase only the level-1 ones carry load.
+std::vector<DistanceShell> kept_neighbours(int level, int D);
 
 }  // namespace punchsweep::model

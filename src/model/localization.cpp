@@ -11,19 +11,20 @@ std::string Localization::spelling() const {
 }
 
 Localization parse_localization(std::string_view text) {
-  const std::string valid = "valid: paper, shells:K (K distance shells of distributed neighbours) or point-shells:K "
-                            "(of point loads), 1 <= K <= " + std::to_string(Localization::kMaxShells);
+  const std::string valid = "valid: paper (= point-shells:2), shells:D (the neighbours within the D nearest "
+                            "distances, spread over their spots) or point-shells:D (as point loads), 1 <= D <= " +
+                            std::to_string(Localization::kMaxShells);
   if (text == "paper") return {};
   for (const auto& [prefix, distributed] : {std::pair{std::string_view("shells:"), true},
                                             std::pair{std::string_view("point-shells:"), false}}) {
     if (text.substr(0, prefix.size()) != prefix) continue;
     const std::string_view number = text.substr(prefix.size());
-    int K = 0;
-    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), K);
-    if (error != std::errc() || end != number.data() + number.size() || K < 1 || K > Localization::kMaxShells) {
+    int D = 0;
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), D);
+    if (error != std::errc() || end != number.data() + number.size() || D < 1 || D > Localization::kMaxShells) {
       break;
     }
-    return Localization{K, distributed};
+    return Localization{D, distributed};
   }
   throw std::invalid_argument("localization '" + std::string(text) + "' is not one; " + valid);
 }

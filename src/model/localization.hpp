@@ -6,16 +6,14 @@
 namespace punchsweep::model {
 
 /// Which localization model stands in for the lattice around a punch (docs/model.md,
-/// section 11). The paper's keeps the nearest shell of neighbours as point loads and puts
-/// the nominal pressure beyond it; the family keeps K shells and may spread each
-/// neighbour over its own spot.
+/// section 11). The paper's keeps the neighbours at the two nearest distances as point
+/// loads and puts the nominal pressure beyond them; the family keeps D distances and may
+/// spread each neighbour over its own spot.
 struct Localization {
-  /// K: in the single-level phase, the distance shells of level-1 neighbours kept around a
-  /// punch and around a square centre (1: the paper's four at l, and four at l/sqrt(2)
-  /// around the centre); in the two-level phase, the distinct distances of either level
-  /// kept around a punch (2: the paper's four at l/sqrt(2) and four at l). A refined model
-  /// for both phases must keep one set, so that they join at touchdown (issue 12).
-  int shells = 1;
+  /// D: the punches of either level within the D nearest distinct distances about a punch
+  /// are kept (lattice.hpp, kept_neighbours), in both phases; in the single-level phase the
+  /// level-1 ones carry load. 2 is the paper's: four at l/sqrt(2) and four at l.
+  int shells = 2;
   /// Neighbours spread over their own spots (the m = 0 average of their pressure about
   /// the punch); false: point loads at their distances, the paper's choice.
   bool distributed = false;
@@ -24,13 +22,13 @@ struct Localization {
   static constexpr int kMaxShells = 1000;
 
   /// The spelling "paper": the engine's own eqs 9.5/9.10 and 9.12-9.19.
-  bool is_paper() const { return shells == 1 && !distributed; }
-  /// "paper", "shells:K" (distributed) or "point-shells:K".
+  bool is_paper() const { return shells == 2 && !distributed; }
+  /// "paper", "shells:D" (distributed) or "point-shells:D".
   std::string spelling() const;
 };
 
-/// Parses "paper", "shells:K" (K distributed shells) or "point-shells:K" (K shells of point
-/// loads), 1 <= K <= kMaxShells. Throws std::invalid_argument naming the valid forms.
+/// Parses "paper", "shells:D" (D distances of distributed neighbours) or "point-shells:D"
+/// (of point loads), 1 <= D <= kMaxShells. Throws std::invalid_argument naming the valid forms.
 Localization parse_localization(std::string_view text);
 
 }  // namespace punchsweep::model

@@ -19,17 +19,19 @@ SingleLevelShells::SingleLevelShells(double l, Shape shape, Localization localiz
       localization_(localization),
       K_P_(load_coefficient(shape)),
       K_d_(depth_coefficient(shape)),
-      around_punch_(level1_shells(0.0, 0.0, localization.shells)),
-      around_centre_(level1_shells(0.5, 0.5, localization.shells)),
       spot_(shape.s) {
+  // The level-1 punches of the kept neighbourhoods: about the punch, and about the square
+  // centre (a level-2 site, so that the phase joins the two-level one at touchdown).
   int kept = 1;
-  for (DistanceShell& shell : around_punch_) {
-    shell.distance *= l;
+  for (const DistanceShell& shell : kept_neighbours(1, localization.shells)) {
+    if (shell.level != 1) continue;
+    around_punch_.push_back({shell.distance * l, shell.count, 1});
     kept += shell.count;
   }
   int kept_centre = 0;
-  for (DistanceShell& shell : around_centre_) {
-    shell.distance *= l;
+  for (const DistanceShell& shell : kept_neighbours(2, localization.shells)) {
+    if (shell.level != 1) continue;
+    around_centre_.push_back({shell.distance * l, shell.count, 1});
     kept_centre += shell.count;
   }
   A_ = l * std::sqrt(kept / kPi);

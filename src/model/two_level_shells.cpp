@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <set>
 
 #include "model/integer_power.hpp"
 #include "model/lattice.hpp"
@@ -24,22 +23,9 @@ TwoLevelShells::TwoLevelShells(const ContactProblem& problem, Localization local
       K_P_(load_coefficient(problem.shape)),
       K_d_(depth_coefficient(problem.shape)),
       spot_(problem.shape.s) {
-  const int D = localization.shells;
   for (int level = 1; level <= 2; ++level) {
-    const double c = level == 1 ? 0.0 : 0.5;
-    std::vector<Kept> all;
-    std::set<double> distances;
-    for (int other = 1; other <= 2; ++other) {
-      for (const DistanceShell& shell : lattice_shells(c, c, 2 * D, other == 1 ? 0.0 : 0.5)) {
-        all.push_back({shell.distance, shell.count, other});
-        distances.insert(shell.distance);
-      }
-    }
-    // The D nearest distinct distances of either level (both lists hold at least those).
-    std::vector<double> nearest(distances.begin(), distances.end());
-    const double last = nearest[static_cast<std::size_t>(D) - 1];
-    for (const Kept& k : all) {
-      if (k.distance <= last * (1.0 + 1e-12)) kept_[level - 1].push_back({k.distance * problem.l, k.count, k.level});
+    for (const DistanceShell& shell : kept_neighbours(level, localization.shells)) {
+      kept_[level - 1].push_back({shell.distance * problem.l, shell.count, shell.level});
     }
   }
 }
@@ -57,7 +43,7 @@ std::vector<double> TwoLevelShells::residuals(double X, const double* z, double*
     double loads = Q[i];
     double share = 0.0;
     double d = 0.0;
-    for (const Kept& k : kept_[i]) {
+    for (const DistanceShell& k : kept_[i]) {
       const double source = a[k.level - 1];
       const bool spread = localization_.distributed && source > 0.0;
       loads += k.count * Q[k.level - 1];
@@ -77,28 +63,38 @@ std::vector<double> TwoLevelShells::residuals(double X, const double* z, double*
 TwoLevelShells::State TwoLevelShells::solve(double X, double a1, double a2) const {
   const double l = problem_.l;
   const double scale = X * l * l;  // loads and, over l, the residuals' size
-  Eigen::Vector4d z(a1, a2, 0.9 * scale, 0.1 * scale);
+  // Newton runs in (a1, w, Q1, Q2) with w = a2^2 for s >= 2 (a2 for s = 1), in which the
+  // residuals stay regular as level 2 starts to touch (as TwoLevelSystem does).
+  const bool squared = problem_.shape.s >= 2;
+  const auto a2_of = [squared](double w) { return squared ? std::sqrt(std::max(w, 0.0)) : w; };
+  Eigen::Vector4d z(a1, squared ? a2 * a2 : a2, 0.9 * scale, 0.1 * scale);
+  const auto physical = [&](const Eigen::Vector4d& v) { return Eigen::Vector4d(v[0], a2_of(v[1]), v[2], v[3]); };
   const auto admissible = [&](const Eigen::Vector4d& v) {
-    return v[0] > 0.0 && v[1] > 0.0 && 2.0 * v[0] < l && 2.0 * v[1] < l && v[0] + v[1] < l / std::numbers::sqrt2 &&
+    const double b = a2_of(v[1]);
+    return v[0] > 0.0 && v[1] > 0.0 && 2.0 * v[0] < l && 2.0 * b < l && v[0] + b < l / std::numbers::sqrt2 &&
            v[2] > 0.0 && v[3] > 0.0;
   };
   const auto norm = [&](const std::vector<double>& r) {
     return std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3]) * l}) / scale;
   };
+  const auto residuals_at = [&](const Eigen::Vector4d& v, double* A1, double* A2) {
+    const Eigen::Vector4d p = physical(v);
+    return residuals(X, p.data(), A1, A2);
+  };
   State out;
   double A1 = 0.0, A2 = 0.0;
-  std::vector<double> r = residuals(X, z.data(), &A1, &A2);
+  std::vector<double> r = residuals_at(z, &A1, &A2);
   for (int it = 0; it < 60 && norm(r) > 1e-13; ++it) {
     Eigen::Matrix4d J;
     for (int c = 0; c < 4; ++c) {
       Eigen::Vector4d zp = z;
-      const double h = 1e-7 * (c < 2 ? l : scale);
+      const double h = 1e-7 * (c == 0 ? l : c == 1 ? std::max(std::abs(z[1]), 1e-6 * (squared ? l * l : l)) : scale);
       zp[c] += h;
       Eigen::Vector4d zm = z;
       zm[c] -= h;
       double t1, t2;
-      const std::vector<double> rp = residuals(X, zp.data(), &t1, &t2);
-      const std::vector<double> rm = residuals(X, zm.data(), &t1, &t2);
+      const std::vector<double> rp = residuals_at(zp, &t1, &t2);
+      const std::vector<double> rm = residuals_at(zm, &t1, &t2);
       for (int k = 0; k < 4; ++k) J(k, c) = (rp[k] - rm[k]) / (2.0 * h);
     }
     const Eigen::Vector4d step = J.partialPivLu().solve(-Eigen::Vector4d(r[0], r[1], r[2], r[3]));
@@ -107,7 +103,7 @@ TwoLevelShells::State TwoLevelShells::solve(double X, double a1, double a2) cons
     for (int halving = 0; halving < 30 && !accepted; ++halving, lambda *= 0.5) {
       const Eigen::Vector4d trial = z + lambda * step;
       if (!admissible(trial)) continue;
-      const std::vector<double> rt = residuals(X, trial.data(), &A1, &A2);
+      const std::vector<double> rt = residuals_at(trial, &A1, &A2);
       if (norm(rt) < norm(r)) {
         z = trial;
         r = rt;
@@ -116,8 +112,8 @@ TwoLevelShells::State TwoLevelShells::solve(double X, double a1, double a2) cons
     }
     if (!accepted) break;
   }
-  residuals(X, z.data(), &A1, &A2);
-  out = {z[0], z[1], z[2], z[3], A1, A2, norm(r) <= 1e-12 && admissible(z)};
+  residuals_at(z, &A1, &A2);
+  out = {z[0], a2_of(z[1]), z[2], z[3], A1, A2, norm(r) <= 1e-12 && admissible(z)};
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "model/contact_problem.hpp"
+#include "model/lattice.hpp"
 #include "model/localization.hpp"
 #include "model/spot_average.hpp"
 
@@ -11,7 +12,7 @@ namespace punchsweep::model {
 /// The two-level state under a localization of the family of docs/model.md, section 11, at
 /// creep-scaled pressure X (elastic at t = 0: X = pbar0): around a punch of level i every
 /// punch of either level within the D = localization.shells nearest distinct distances is
-/// kept (D = 2, point loads: the paper's eight neighbours, eqs 9.12-9.15), each as a point
+/// kept (kept_neighbours; D = 2, point loads: the paper's eight, eqs 9.12-9.15), each as a point
 /// load or spread over its own spot; the nominal pressure X acts beyond A_i with
 /// pi A_i^2 X = the loads kept, itself included. With Q1 + Q2 = X l^2:
 ///   balance_i  Q_i = K_P a_i^(s+1) + sum_kept Q_j <w(a_i, .)>_j + 2X (A_i^2 asin(a_i/A_i) - a_i sqrt(A_i^2 - a_i^2))
@@ -30,18 +31,13 @@ class TwoLevelShells {
   State solve(double X, double a1, double a2) const;
 
  private:
-  struct Kept {
-    double distance;  ///< in R
-    int count;
-    int level;  ///< 1 or 2
-  };
   /// Residuals (balance 1, balance 2, load sum, depth) at z = (a1, a2, Q1, Q2), with A_i.
   std::vector<double> residuals(double X, const double* z, double* A1, double* A2) const;
 
   ContactProblem problem_;
   Localization localization_;
   double K_P_, K_d_;
-  std::vector<Kept> kept_[2];  ///< about a level-1 punch, about a level-2 punch
+  std::vector<DistanceShell> kept_[2];  ///< about a level-1 and a level-2 punch; distances in R
   SpotAverage spot_;
 };
 

@@ -117,25 +117,38 @@ def share(a, r):
 
 
 def single_level(l, X, K=1, distributed=False):
-    """(a1, h) of the K-shell model."""
-    KP, Kd = coefficients(S, C)
-    P = X * l * l
+    """(a1, h) of the K-shell model: the K nearest shells of level-1 neighbours."""
     rk, nk = shells((0.0, 0.0), l, K)
     rm, nm = shells((0.5 * l, 0.5 * l), l, K)
-    A = l * math.sqrt((1 + nk.sum()) / math.pi)
-    AM = l * math.sqrt(nm.sum() / math.pi)
+    return single_level_kept(l, X, list(zip(rk, nk)), list(zip(rm, nm)), distributed)
+
+
+def single_level_distances(l, X, D=2, distributed=False):
+    """(a1, h) with the level-1 punches within the D nearest distances of either level (the
+    engine's kept set, shared with the two-level model; D = 2 is the paper's)."""
+    about_punch = [(rho, n) for rho, n, level in two_level_neighbours(1, l, D) if level == 1]
+    about_centre = [(rho, n) for rho, n, level in two_level_neighbours(2, l, D) if level == 1]
+    return single_level_kept(l, X, about_punch, about_centre, distributed)
+
+
+def single_level_kept(l, X, about_punch, about_centre, distributed):
+    """(a1, h) with the (distance, count) level-1 neighbours kept about the punch and the centre."""
+    KP, Kd = coefficients(S, C)
+    P = X * l * l
+    A = l * math.sqrt((1 + sum(n for _, n in about_punch)) / math.pi)
+    AM = l * math.sqrt(sum(n for _, n in about_centre) / math.pi)
 
     def mean(f, rho, a):
         return spot_average(f, rho, a) if distributed else float(f(np.asarray(rho)))
 
     def balance(a):
-        carried = sum(n * mean(lambda d: share(a, d), r, a) for r, n in zip(rk, nk))
+        carried = sum(n * mean(lambda d: share(a, d), r, a) for r, n in about_punch)
         return KP * a ** (S + 1) + P * carried + 2 * X * (A * A * math.asin(a / A) - a * math.sqrt(A * A - a * a)) - P
 
-    a = brentq(balance, 1e-9, 0.999999 * min(0.5 * l, A), xtol=1e-15)
+    a = brentq(balance, 1e-9, 0.999999 * min(0.5 * l if distributed else l, A), xtol=1e-15)
     depth = (Kd * a ** S + P * sum(n * mean(lambda x: 1 / (math.pi * np.sqrt(x * x - a * a)), r, a)
-                                   for r, n in zip(rk, nk)) - 2 * X * math.sqrt(A * A - a * a))
-    centre = P * sum(n * mean(lambda x: 1 / (math.pi * x), r, a) for r, n in zip(rm, nm)) - 2 * X * AM
+                                   for r, n in about_punch) - 2 * X * math.sqrt(A * A - a * a))
+    centre = P * sum(n * mean(lambda x: 1 / (math.pi * x), r, a) for r, n in about_centre) - 2 * X * AM
     return a, depth - centre
 
 

@@ -22,14 +22,14 @@
 using namespace punchsweep::model;
 
 TEST(LatticeShells, are_the_lattice_distances_and_counts) {
-  const auto punch = level1_shells(0.0, 0.0, 5);
+  const auto punch = lattice_shells(0.0, 0.0, 5, 1);
   const double expect[5][2] = {{1.0, 4}, {std::sqrt(2.0), 4}, {2.0, 4}, {std::sqrt(5.0), 8}, {std::sqrt(8.0), 4}};
   ASSERT_EQ(punch.size(), 5u);
   for (int k = 0; k < 5; ++k) {
     EXPECT_DOUBLE_EQ(punch[k].distance, expect[k][0]);
     EXPECT_EQ(punch[k].count, expect[k][1]);
   }
-  const auto centre = level1_shells(0.5, 0.5, 3);
+  const auto centre = lattice_shells(0.5, 0.5, 3, 1);
   EXPECT_DOUBLE_EQ(centre[0].distance, std::sqrt(0.5));
   EXPECT_EQ(centre[0].count, 4);
   EXPECT_DOUBLE_EQ(centre[1].distance, std::sqrt(2.5));
@@ -38,11 +38,29 @@ TEST(LatticeShells, are_the_lattice_distances_and_counts) {
   EXPECT_EQ(centre[2].count, 4);
   // 100 shells hold 1 + 828 punches (the study's N at K = 100).
   int kept = 1;
-  for (const DistanceShell& s : level1_shells(0.0, 0.0, 100)) kept += s.count;
+  for (const DistanceShell& s : lattice_shells(0.0, 0.0, 100, 1)) kept += s.count;
   EXPECT_EQ(kept, 829);
 }
 
-TEST(SingleLevelShells, one_shell_of_point_loads_is_the_papers_single_level_phase) {
+TEST(LatticeShells, the_papers_neighbourhood_is_two_distances) {
+  for (const int level : {1, 2}) {
+    const auto kept = kept_neighbours(level, 2);
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_DOUBLE_EQ(kept[0].distance, std::sqrt(0.5));
+    EXPECT_EQ(kept[0].count, 4);
+    EXPECT_EQ(kept[0].level, 3 - level);  // the other level, at l/sqrt(2)
+    EXPECT_DOUBLE_EQ(kept[1].distance, 1.0);
+    EXPECT_EQ(kept[1].count, 4);
+    EXPECT_EQ(kept[1].level, level);
+  }
+  // Three distances about a level-1 punch: then 8 level-2 punches at sqrt(5/2)? No: sqrt(2)
+  // (4 of level 1) comes first, at 1.414 < 1.581.
+  const auto three = kept_neighbours(1, 3);
+  EXPECT_DOUBLE_EQ(three[2].distance, std::sqrt(2.0));
+  EXPECT_EQ(three[2].level, 1);
+}
+
+TEST(SingleLevelShells, the_papers_neighbourhood_of_point_loads_is_the_papers_single_level_phase) {
   for (const int s : {1, 2, 3}) {
     for (const double l : {0.5, 0.75, 1.5}) {
       const Shape shape{s, 0.5};
@@ -66,15 +84,46 @@ TEST(SingleLevelShells, distributed_shells_equal_the_python_study) {
   const Shape sphere{2, 0.5};
   struct Case {
     double l, X;
-    int K;
-    double a, h;  // localization_shells.single_level(l, X, K, distributed=True)
+    int D;
+    double a, h;  // localization_shells.single_level_distances(l, X, D, distributed=True)
   };
-  for (const Case& c : {Case{0.75, 0.06, 10, 0.28124424983206403, 0.05498264448637946},
-                        Case{1.5, 0.005, 30, 0.20325091183356941, 0.035993477464789064}}) {
-    const SingleLevelShells model(c.l, sphere, Localization{c.K, true});
+  for (const Case& c : {Case{0.75, 0.06, 20, 0.2812355347198514, 0.055867711854423796},
+                        Case{1.5, 0.005, 60, 0.20325090596959977, 0.036050558649695474}}) {
+    const SingleLevelShells model(c.l, sphere, Localization{c.D, true});
     const double a = model.contact_radius(c.X);
     EXPECT_NEAR(a / c.a, 1.0, 1e-12);
     EXPECT_NEAR(model.displacement_difference(a, c.X) / c.h, 1.0, 1e-11);
+  }
+}
+
+TEST(SingleLevelShells, joins_the_two_level_family_at_touchdown) {
+  // The same neighbourhoods in both phases: past the touchdown X* of the single-level model
+  // (h = dh) the two-level state starts from it, a2 ~ sqrt(X - X*) -> 0 and a1 -> a1*.
+  const Shape sphere{2, 0.5};
+  for (const Localization loc : {Localization{}, Localization{20, true}}) {
+    const double l = 0.75;
+    const double dh = 0.05;
+    const SingleLevelShells single(l, sphere, loc);
+    double lo = 1e-4, hi = 1.0;  // X* by bisection on h(X) = dh
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (single.displacement_difference(single.contact_radius(mid), mid) < dh ? lo : hi) = mid;
+    }
+    const double X_star = 0.5 * (lo + hi);
+    const double a1_star = single.contact_radius(X_star);
+    double a2[2];
+    double a1_gap[2];
+    for (int k = 0; k < 2; ++k) {
+      const double X = X_star * (1.0 + (k == 0 ? 1e-2 : 1e-4));
+      const ContactProblem p{l, dh, X, sphere};
+      const TwoLevelShells::State s = TwoLevelShells(p, loc).solve(X, a1_star, 0.02 * l);
+      ASSERT_TRUE(s.converged) << loc.spelling() << ", X/X* - 1 = " << X / X_star - 1;
+      a2[k] = s.a2;
+      a1_gap[k] = std::abs(s.a1 / a1_star - 1.0);
+    }
+    // A hundredth of the excess: a2 ten times smaller (sqrt), a1 a hundred times closer.
+    EXPECT_NEAR(a2[0] / a2[1], 10.0, 0.5) << loc.spelling();
+    EXPECT_LT(a1_gap[1], 2e-2 * a1_gap[0] + 1e-9) << loc.spelling();
   }
 }
 
@@ -98,6 +147,7 @@ TEST(SpotAverage, the_far_rule_agrees_with_the_near_one_where_it_is_used) {
 
 TEST(Localization, parses_its_spellings_and_refuses_others) {
   EXPECT_TRUE(parse_localization("paper").is_paper());
+  EXPECT_TRUE(parse_localization("point-shells:2").is_paper());
   const Localization k = parse_localization("shells:30");
   EXPECT_EQ(k.shells, 30);
   EXPECT_TRUE(k.distributed);
@@ -108,7 +158,7 @@ TEST(Localization, parses_its_spellings_and_refuses_others) {
       parse_localization(bad);
       ADD_FAILURE() << bad;
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("valid: paper, shells:K"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("valid: paper (= point-shells:2), shells:D"), std::string::npos) << e.what();
     }
   }
 }

@@ -90,13 +90,14 @@ def single_level_cli(*args):
 
 
 def test_the_engines_distributed_shells_meet_the_bem_through_the_cli():
-    # `punchsweep single-level --localization shells:K` (the C++ implementation) against the
-    # BEM cache: within 0.15% at K = 100 where spots are apart, as the study found.
+    # `punchsweep single-level --localization shells:D` (the C++ implementation; D distances
+    # of either level, whose level-1 punches make about D/2 shells) against the BEM cache:
+    # within 0.15% at D = 200 where spots are apart, as the study found at K = 100.
     for (l, X), ref in BEM.items():
         if ref["a1"] / l > 0.4:
             continue
         done = single_level_cli("--l", str(l), "--s", "2", "--pbar", str(X), "--T", "1", "--times", "0",
-                                "--localization", "shells:100", "--a1-points", "2")
+                                "--localization", "shells:200", "--a1-points", "2")
         assert done.returncode == 0, done.stderr
         series = json.loads(done.stdout)["series"]
         assert abs(series["h"][0] / ref["h"] - 1) < 1.5e-3, (l, X, series)
@@ -106,7 +107,7 @@ def test_the_engines_distributed_shells_meet_the_bem_through_the_cli():
 def test_a_bad_localization_is_refused_with_the_valid_forms():
     done = single_level_cli("--l", "0.75", "--s", "2", "--localization", "shells:0")
     assert done.returncode == 2 and done.stdout == ""
-    assert "valid: paper, shells:K" in done.stderr
+    assert "valid: paper (= point-shells:2), shells:D" in done.stderr
 
 
 def test_the_engines_two_level_family_meets_the_bem_through_the_cli():
