@@ -54,6 +54,9 @@ from scipy.optimize import brentq, fsolve
 HERE = Path(__file__).resolve().parent
 CACHE = HERE / "bem_single_level.json"
 CACHE_TWO = HERE / "bem_two_level.json"
+CACHE_CREEP = HERE / "bem_two_level_creep.json"
+# The paper's immediate points under the SLS, T = 2.5: a1, a2 at t = 5 (X = pbar0 J(5)).
+T_CREEP, T_AT = 2.5, 5.0
 # (l, X): the issue's table (N = 256 there) and two denser states at l = 0.75.
 POINTS = [(0.5, 0.005), (0.5, 0.02), (0.75, 0.005), (0.75, 0.06), (1.0, 0.005), (1.0, 0.06),
           (1.5, 0.005), (1.5, 0.06), (0.75, 0.112), (0.75, 0.14)]
@@ -152,8 +155,10 @@ def single_level_kept(l, X, about_punch, about_centre, distributed):
     return a, depth - centre
 
 
-def two_level(l, dh, X, D=2, distributed=False, guess=(0.25, 0.1)):
-    """(a1, a2, Q1, Q2) of the D-distance two-level model, by Newton (fsolve) from `guess`."""
+def two_level(l, dh, X, D=2, distributed=False, guess=(0.25, 0.1), radii=None):
+    """(a1, a2, Q1, Q2) of the D-distance two-level model, by Newton (fsolve) from `guess`.
+    With radii = (A1, A2) the nominal-pressure radii are held at those values (eq 9.18's
+    frozen radii) instead of following the loads kept."""
     KP, Kd = coefficients(S, C)
     kept = {1: two_level_neighbours(1, l, D), 2: two_level_neighbours(2, l, D)}
 
@@ -165,7 +170,7 @@ def two_level(l, dh, X, D=2, distributed=False, guess=(0.25, 0.1)):
         Q = {1: z[2], 2: z[3]}
         r, depth = [], {}
         for i in (1, 2):
-            A = math.sqrt((Q[i] + sum(n * Q[j] for _, n, j in kept[i])) / (math.pi * X))
+            A = radii[i - 1] if radii else math.sqrt((Q[i] + sum(n * Q[j] for _, n, j in kept[i])) / (math.pi * X))
             carried = sum(n * Q[j] * mean(lambda x: share(a[i], x), rho, a[j]) for rho, n, j in kept[i])
             r.append(KP * a[i] ** (S + 1) + carried
                      + 2 * X * (A * A * math.asin(a[i] / A) - a[i] * math.sqrt(A * A - a[i] ** 2)) - Q[i])
@@ -183,11 +188,38 @@ def two_level(l, dh, X, D=2, distributed=False, guess=(0.25, 0.1)):
     raise RuntimeError(f"two-level model at l = {l}, dh = {dh}, X = {X}, D = {D}: residual {worst:.2g} ({message})")
 
 
+def nominal_radii(l, X, D, Q1, Q2):
+    """(A1, A2) of the D-distance model from the loads kept (pi A_i^2 X = Q_i + sum_kept Q_j)."""
+    Q = {1: Q1, 2: Q2}
+    return tuple(math.sqrt((Q[i] + sum(n * Q[j] for _, n, j in two_level_neighbours(i, l, D))) / (math.pi * X))
+                 for i in (1, 2))
+
+
+def two_level_creep(l, dh, pbar0, J, D=2, distributed=False, guess=(0.25, 0.1), frozen=True):
+    """(a1, a2) at creep-scaled pressure pbar0 J of an immediate point: the radii frozen at
+    their t = 0 values (section 5, eq 9.18: the elastic state at pbar0), or following the
+    loads (frozen=False)."""
+    a1, a2, Q1, Q2 = two_level(l, dh, pbar0, D, distributed, guess)
+    radii = nominal_radii(l, pbar0, D, Q1, Q2) if frozen else None
+    for X in pbar0 * np.geomspace(1.0, J, 12)[1:]:  # continuation in X from the t = 0 state
+        a1, a2, Q1, Q2 = two_level(l, dh, X, D, distributed, (a1, a2), radii)
+    return a1, a2
+
+
 def bem(binary, l, X, N=512):
     cmd = [binary, "reference", "--l", str(l), "--dh", "5", "--T", "1", "--pbar", str(X), "--s", str(S),
            "--bem-grid", str(N), "--times", "0", "--format", "json"]
     out = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
     return {"l": l, "X": X, "N": N, "a1": out["series"]["a1"][0], "h": out["series"]["h"][0],
+            "command": " ".join(cmd[1:])}
+
+
+def bem_creep(binary, l, dh, X, N=512):
+    cmd = [binary, "reference", "--l", str(l), "--dh", str(dh), "--T", str(T_CREEP), "--pbar", str(X), "--s", str(S),
+           "--bem-grid", str(N), "--times", f"0,{T_AT:g}", "--format", "json"]
+    out = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
+    series = out["series"]
+    return {"l": l, "dh": dh, "X": X, "N": N, "T": T_CREEP, "t": T_AT, "a1": series["a1"][1], "a2": series["a2"][1],
             "command": " ".join(cmd[1:])}
 
 
@@ -209,6 +241,7 @@ def main(argv):
     if args.binary:
         CACHE.write_text(json.dumps([bem(args.binary, l, X) for l, X in POINTS], indent=1) + "\n")
         CACHE_TWO.write_text(json.dumps([bem_two(args.binary, *point) for point in POINTS_TWO], indent=1) + "\n")
+        CACHE_CREEP.write_text(json.dumps([bem_creep(args.binary, *point) for point in POINTS_TWO[:3]], indent=1) + "\n")
     Ks = [int(k) for k in args.K.split(",")]
     print("Single level, h (and a1) against the BEM:\n")
     print("| l [R] | X [E0*] | a1/l | h BEM [R] | paper (K = 1, point loads) | "
@@ -232,6 +265,21 @@ def main(argv):
         for D, dist in [(2, False)] + [(d, True) for d in Ds]:
             a1, a2, _, _ = two_level(l, dh, X, D, dist, guess=(ref["a1"], ref["a2"]))
             cells.append(f"{100 * (a2 / ref['a2'] - 1):+.1f}% (a1 {100 * (a1 / ref['a1'] - 1):+.2f}%)")
+        print(f"| {l} | {dh} | {X} | {ref['a1']:.4f}, {ref['a2']:.4f} | " + " | ".join(cells) + " |", flush=True)
+    J = T_CREEP - (T_CREEP - 1) * math.exp(-T_AT)  # the SLS creep function, J(0) = 1
+    print(f"\nTwo levels under creep (SLS T = {T_CREEP:g}, t = {T_AT:g}), a2 (and a1) against the BEM, radii "
+          "frozen at t = 0 (eq 9.18) or following the loads:\n")
+    print("| l [R] | dh [R] | pbar0 [E0*] | a1, a2 BEM [R] | " + " | ".join(
+        f"D = {d}{', distributed' if d > 2 else ', point'}, {kind}" for d in (2, 60, 200) for kind in ("frozen", "free"))
+          + " |")
+    print("|---" * 10 + "|")
+    for ref in json.loads(CACHE_CREEP.read_text()):
+        l, dh, X = ref["l"], ref["dh"], ref["X"]
+        cells = []
+        for D in (2, 60, 200):
+            for frozen in (True, False):
+                a1, a2 = two_level_creep(l, dh, X, J, D, D > 2, guess=(0.28, 0.06), frozen=frozen)
+                cells.append(f"{100 * (a2 / ref['a2'] - 1):+.1f}% (a1 {100 * (a1 / ref['a1'] - 1):+.2f}%)")
         print(f"| {l} | {dh} | {X} | {ref['a1']:.4f}, {ref['a2']:.4f} | " + " | ".join(cells) + " |", flush=True)
 
 
