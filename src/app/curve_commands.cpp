@@ -72,9 +72,9 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
        "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
       ("localization", po::value<std::string>()->value_name("L")->default_value("paper"),
-       "the localization model (docs/model.md, section 11): paper (one shell of point loads, "
-       "eqs 9.5/9.10), shells:K (K shells of neighbours spread over their own spots) or "
-       "point-shells:K; 1 <= K <= 1000")
+       "the localization model (docs/model.md, section 11): paper (eqs 9.5/9.10; = "
+       "point-shells:2), shells:D (the level-1 punches within the D nearest distances of "
+       "either level, spread over their own spots) or point-shells:D; 1 <= D <= 1000")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or csv");
   const po::variables_map vm = parse_command(args, opts, "single-level");
   if (vm.count("help")) {

@@ -13,11 +13,11 @@ namespace punchsweep::model {
 /// the level-1 punches of the kept neighbourhood of a punch (kept_neighbours: either level
 /// within the D = localization.shells nearest distances; n_k at rho_k) and of the square
 /// centre M (n_m at r_m), each as a point load or spread over its own spot, and the nominal
-/// pressure X beyond A_K (pi A_K^2 = (1 + sum n_k) l^2) and A_M (pi A_M^2 = sum n_m l^2).
+/// pressure X beyond A (pi A^2 = (1 + sum n_k) l^2) and A_M (pi A_M^2 = sum n_m l^2).
 /// The same neighbourhoods as TwoLevelShells, so that the two join at touchdown. With
 /// P = X l^2:
-///   balance  P = K_P a^(s+1) + P sum_k n_k <w(a, .)>_k + 2X (A_K^2 asin(a/A_K) - a sqrt(A_K^2 - a^2))
-///   h = K_d a^s + P sum_k n_k <1/(pi sqrt(.^2 - a^2))>_k - 2X sqrt(A_K^2 - a^2)
+///   balance  P = K_P a^(s+1) + P sum_k n_k <w(a, .)>_k + 2X (A^2 asin(a/A) - a sqrt(A^2 - a^2))
+///   h = K_d a^s + P sum_k n_k <1/(pi sqrt(.^2 - a^2))>_k - 2X sqrt(A^2 - a^2)
 ///       - (P sum_m n_m <1/(pi .)>_m - 2X A_M).
 /// The paper's localization (D = 2, point loads) is SingleLevel's eqs 9.5/9.10, which
 /// this reproduces to rounding; the engine's sweeps use SingleLevel. The same public face
@@ -62,7 +62,7 @@ class SingleLevelShells {
   double K_d_;
   std::vector<DistanceShell> around_punch_;   ///< distances in R
   std::vector<DistanceShell> around_centre_;  ///< distances in R
-  double A_;   ///< A_K
+  double A_;   ///< A, about the punch
   double A_M_;
   SpotAverage spot_;
   double a_limit_ = 0.0;
