@@ -19,6 +19,15 @@ struct RetardationSeries {
   std::vector<Term> terms;  ///< at least one
 };
 
+/// An exponential term exp(-t/tau) is forgotten from t = kForgetting tau on: exp(-40) < 1e-17
+/// of its weight (a law's relaxation memory, the time a load settles), and 1 - exp(-40) is
+/// 1 in double precision (exp(-40) < 2^-54).
+inline constexpr double kForgetting = 40.0;
+/// From t = kNegligibleDecay tau on a term is left out of E and E' altogether (exp(-50) <
+/// 2e-22): history integrals evaluate them at every age, and libm's exp is slowest where it
+/// underflows.
+inline constexpr double kNegligibleDecay = 50.0;
+
 /// A relaxation function written as a generalized Maxwell (Prony) series,
 ///   E(t) = E(inf) + sum_k E_k exp(-t / tau_k),
 /// which lets a load-history integral treat each term by itself: a term that relaxes

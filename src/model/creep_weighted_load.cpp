@@ -35,7 +35,7 @@ double CreepWeightedLoad::settled_time() const {
   if (!series) return std::numeric_limits<double>::infinity();
   double longest = 0.0;
   for (const RetardationSeries::Term& term : series->terms) longest = std::max(longest, term.lambda);
-  return shape_.rise_time() + 40.0 * longest;
+  return shape_.rise_time() + kForgetting * longest;
 }
 
 double CreepWeightedLoad::time_at_response(double g) const {

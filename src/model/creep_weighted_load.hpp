@@ -40,8 +40,8 @@ class CreepWeightedLoad {
   }
   /// g(inf) = J(inf) (phi ends at 1); +infinity for unlimited creep.
   double response_final() const { return creep_.creep_final(); }
-  /// A time after which g(t) = g(inf) to rounding: the end of the load's rise plus 40 of
-  /// the law's longest retardation time (exp(-40) < 1e-17); +infinity for a law that is not
+  /// A time after which g(t) = g(inf) to rounding: the end of the load's rise plus
+  /// kForgetting of the law's longest retardation time; +infinity for a law that is not
   /// a retardation series (unlimited creep, a power law).
   double settled_time() const;
   /// The t > 0 with g(t) = g for g in (g(0+), g(inf)); non-decreasing g makes it a root.

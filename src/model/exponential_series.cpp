@@ -7,15 +7,6 @@
 #include "model/root_finding.hpp"
 
 namespace punchsweep::model {
-namespace {
-
-// A term decayed by exp(-50) < 2e-22 is left out of E and E' (history integrals evaluate
-// them at every age, and libm's exp is slowest where it underflows).
-constexpr double kNegligibleDecay = 50.0;
-// 1 - exp(-40) is 1 in double precision (exp(-40) < 2^-54): J's term has settled.
-constexpr double kSettledDecay = 40.0;
-
-}  // namespace
 
 std::string ExponentialSeriesLaw::out_of_range(std::string_view law, const std::string& what, double value,
                                                const std::string& range) {
@@ -62,11 +53,11 @@ void ExponentialSeriesLaw::set_creep_final() {
 
 double ExponentialSeriesLaw::creep(double t) const {
   // J(0) + sum J_k (1 - e^(-t/lambda_k)): exact at t = 0, no cancellation at small t. A
-  // term past kSettledDecay is J_k exactly (-expm1(-x) rounds to 1 from x = 37.43 on).
+  // term past kForgetting is J_k exactly (-expm1(-x) rounds to 1 from x = 37.43 on).
   double crept = phi_ > 0.0 ? phi_ * t : 0.0;
   for (std::size_t k = 0; k < J_.size(); ++k) {
     const double x = t / lambda_[k];
-    crept += x < kSettledDecay ? J_[k] * -std::expm1(-x) : J_[k];
+    crept += x < kForgetting ? J_[k] * -std::expm1(-x) : J_[k];
   }
   return 1.0 + crept;
 }

@@ -29,8 +29,8 @@ class ExponentialSeriesLaw : public CreepLaw {
   double time_at_creep(double J) const override;
   double relaxation_time_scale() const override { return tau_.front(); }
   double creep_time_scale() const override { return lambda_.front(); }
-  /// exp(-40) < 1e-17: every term of dE/dt is negligible after 40 of the longest tau.
-  double relaxation_memory() const override { return 40.0 * tau_.back(); }
+  /// Every term of dE/dt is negligible after kForgetting of the longest tau.
+  double relaxation_memory() const override { return kForgetting * tau_.back(); }
   /// The creep series; empty with a dashpot (J(inf) is not finite).
   std::optional<RetardationSeries> retardation_series() const override;
   /// The relaxation series (with a dashpot too: E(inf) = 0 then).

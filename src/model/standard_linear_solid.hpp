@@ -28,8 +28,8 @@ class StandardLinearSolid final : public CreepLaw {
   double creep_time_scale() const override { return 1.0; }
   /// J(t) = T - (T - 1) exp(-t): one term, J_1 = T - 1, lambda_1 = 1 (T_eps).
   std::optional<RetardationSeries> retardation_series() const override;
-  /// exp(-40) < 1e-17: dE/dt is negligible after 40 relaxation times T_sigma = 1/T.
-  double relaxation_memory() const override { return 40.0 / T_; }
+  /// dE/dt is negligible after kForgetting relaxation times T_sigma = 1/T.
+  double relaxation_memory() const override { return kForgetting / T_; }
   std::string describe() const override;
 
   double creep_ratio() const { return T_; }
