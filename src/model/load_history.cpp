@@ -30,20 +30,32 @@ class SeriesTail {
   }
   double relaxation_time_scale() const { return terms_[first_].tau; }
   double creep_time_scale() const { return creep_time_scale_; }
-  /// exp(-40) < 1e-17, as ExponentialSeriesLaw::relaxation_memory.
-  double relaxation_memory() const { return 40.0 * terms_.back().tau; }
+  /// As ExponentialSeriesLaw::relaxation_memory.
+  double relaxation_memory() const { return kForgetting * terms_.back().tau; }
   bool singular_at_zero() const { return false; }
 
  private:
-  /// exp(-age/tau_k), left out (0) below exp(-50), as ExponentialSeriesLaw leaves it out.
+  /// exp(-age/tau_k), left out (0) from kNegligibleDecay on, as ExponentialSeriesLaw does.
   double decay(double age, std::size_t k) const {
     const double x = age / terms_[k].tau;
-    return x < 50.0 ? std::exp(-x) : 0.0;
+    return x < kNegligibleDecay ? std::exp(-x) : 0.0;
   }
   const std::vector<RelaxationSeries::Term>& terms_;
   std::size_t first_;
   double creep_time_scale_;
 };
+
+/// Appends panel edges after edges.back() up to `end`, each at step(previous edge). No
+/// sliver at the end: a last step under half a panel joins the one before.
+template <class Step>
+void extend_edges(std::vector<double>& edges, double end, Step&& step) {
+  while (edges.back() < end) {
+    const double v = edges.back();
+    double next = step(v);
+    if (end - next < 0.5 * (next - v)) next = end;
+    edges.push_back(next);
+  }
+}
 
 }  // namespace
 
@@ -100,12 +112,9 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
       const int uniform = std::max(1, static_cast<int>(std::ceil(u_end / width)));
       const bool graded = uniform > kMaxUniformPanels && growth * u_end > width;
       std::vector<double> u{0.0};
-      while (u.back() < u_end) {
-        const double at = u.back();
-        double next = graded ? at + std::max(width, growth * at) : at + u_end / uniform;
-        if (u_end - next < 0.5 * (next - at)) next = u_end;
-        u.push_back(next);
-      }
+      extend_edges(u, u_end, [&](double at) {
+        return graded ? at + std::max(width, growth * at) : at + u_end / uniform;
+      });
       stretch.edges.push_back(v_kink);
       for (std::size_t k = 1; k + 1 < u.size(); ++k) stretch.edges.push_back(std::sqrt(v_kink * v_kink + u[k] * u[k]));
       stretch.edges.push_back(edges[j + 1]);
@@ -118,13 +127,7 @@ LoadHistory::LoadHistory(const CreepWeightedLoad& load, double level1_load, doub
         const double first = std::min(width, edges[1]);
         for (int k = kSingularLevels; k >= 0; --k) stretch.edges.push_back(first * std::pow(0.25, k));
       }
-      while (stretch.edges.back() < edges[j + 1]) {
-        const double v = stretch.edges.back();
-        double next = v + std::max(width, growth * v);
-        // No sliver at the end: a last step under half a panel joins the one before.
-        if (edges[j + 1] - next < 0.5 * (next - v)) next = edges[j + 1];
-        stretch.edges.push_back(next);
-      }
+      extend_edges(stretch.edges, edges[j + 1], [&](double v) { return v + std::max(width, growth * v); });
       stretch.panels = static_cast<int>(stretch.edges.size()) - 1;
     }
     panels_ += stretch.panels;
@@ -291,7 +294,7 @@ bool LoadHistory::load_kernel(const Kernel& creep, const Kernel& on_panels, doub
   Eigen::Vector2d sum(E0 * Q1_at_t, E0 * Q2_at_t);
 
   // Single-level phase [0, t0): Q1 = L g(tau), Q2 = 0, smooth in tau between the kinks.
-  for_each_piece(tau_min, std::min(t0_, t), [&](double a, double b) {
+  for_each_piece(kinks_, tau_min, std::min(t0_, t), [&](double a, double b) {
     sum[0] += level1_load_ * relaxation_integral(
                                  creep, t, a, b, [&](double tau) { return load_.response(tau); }, 0.0);
   });
@@ -325,7 +328,7 @@ bool LoadHistory::load_near(const Kernel& creep, const Kernel& on_panels, double
   const Eigen::Vector2d at_t(Q1_at_t, Q2_at_t);
 
   // Single-level part of the window, [tau_min, t0): Q1 = L g(tau), Q2 = 0.
-  for_each_piece(tau_min, std::min(t0_, t), [&](double a, double b) {
+  for_each_piece(kinks_, tau_min, std::min(t0_, t), [&](double a, double b) {
     sum += relaxation_integral(
         creep, t, a, b,
         [&](double tau) { return (Eigen::Vector2d(level1_load_ * load_.response(tau), 0.0) - at_t).eval(); },
@@ -338,7 +341,7 @@ bool LoadHistory::load_near(const Kernel& creep, const Kernel& on_panels, double
   bool ok = true;
   std::vector<double> q1(static_cast<std::size_t>(n_));
   std::vector<double> q2(q1.size());
-  for_each_piece(std::max(tau_min, t0_), t, [&](double a, double b) {
+  for_each_piece(kinks_, std::max(tau_min, t0_), t, [&](double a, double b) {
     const double v_a = std::sqrt(std::max(a - t0_, 0.0));
     const double v_b = a == std::max(tau_min, t0_) && b == t ? v_t : std::sqrt(b - t0_);
     if (!ok || !(v_b > v_a)) return;

@@ -123,19 +123,6 @@ class LoadHistory {
   /// nodes, the loads P_i of the four shipped materials agree to 6e-15 E0* R^2 at 0.3, as
   /// at 0.2 (1.5e-14); at 0.4 the 24-term epoxy's are 4e-13 off.)
   static constexpr double kPanelGrowth = 0.3;
-  /// Calls f(a, b) for the pieces of [lo, hi] between the load's kinks (nothing if hi <= lo).
-  template <class F>
-  void for_each_piece(double lo, double hi, F&& f) const {
-    if (!(hi > lo)) return;
-    double a = lo;
-    for (const double k : kinks_) {
-      if (k > a && k < hi) {
-        f(a, k);
-        a = k;
-      }
-    }
-    f(a, hi);
-  }
   /// The stretch panel `panel` lies in.
   const Stretch& stretch_of(int panel) const;
   /// The panel that holds v (the last one for v beyond the end).

@@ -58,6 +58,21 @@ class LoadShape {
   std::shared_ptr<const std::vector<Segment>> segments_;  ///< null for the step
 };
 
+/// Calls f(a, b) for the pieces of [lo, hi] between `kinks` (ascending, LoadShape::kinks):
+/// a quadrature of anything that follows the load ends its pieces there. Nothing if hi <= lo.
+template <class F>
+void for_each_piece(const std::vector<double>& kinks, double lo, double hi, F&& f) {
+  if (!(hi > lo)) return;
+  double a = lo;
+  for (const double k : kinks) {
+    if (k > a && k < hi) {
+      f(a, k);
+      a = k;
+    }
+  }
+  f(a, hi);
+}
+
 struct Parameter;
 /// ramp_time, the rise time of a ramp load (model/parameters.hpp), in the law's time unit.
 const Parameter& ramp_time_parameter();

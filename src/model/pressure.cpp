@@ -85,17 +85,13 @@ double Level1Pressure::at(double r, double t) const {
     const double X = load_(tau_r + v * v);
     return creep_scaled(r, single_.contact_radius(X), X);
   };
-  const double v_hi = std::sqrt(std::max(t - tau_r, 0.0));
   // q has a kink wherever the load does: the quadrature ends its pieces there.
-  double v_lo = std::sqrt(std::max(tau_min - tau_r, 0.0));
   double p = creep_.relaxation(0.0) * creep_scaled(r, a_t, X_t);
-  for (const double kink : problem_.loading.kinks()) {
-    if (!(kink > tau_min && kink < t)) continue;
-    const double v_kink = std::sqrt(kink - tau_r);
-    p += relaxation_integral_sqrt(creep_, t, tau_r, v_lo, v_kink, q_at, 0.0);
-    v_lo = v_kink;
-  }
-  return p + relaxation_integral_sqrt(creep_, t, tau_r, v_lo, v_hi, q_at, 0.0);
+  for_each_piece(problem_.loading.kinks(), tau_min, t, [&](double a, double b) {
+    p += relaxation_integral_sqrt(creep_, t, tau_r, std::sqrt(std::max(a - tau_r, 0.0)),
+                                  std::sqrt(std::max(b - tau_r, 0.0)), q_at, 0.0);
+  });
+  return p;
 }
 
 double Level1Pressure::total_load(double t) const {
