@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 
 namespace punchsweep::model {
 
@@ -52,6 +53,19 @@ RootResult newton_bisect_increasing(F&& f, double lo, double hi, double guess, d
   }
   result.x = x;
   return result;
+}
+
+/// Plain bisection for where a predicate stops holding: `below(x)` holds on [lo, x_root)
+/// and fails on (x_root, hi]. Halves the bracket until hi - lo <= relative_tol hi, or for
+/// at most max_iterations; returns the final bracket (lo, hi).
+template <class Below>
+std::pair<double, double> bisect_boundary(Below&& below, double lo, double hi, double relative_tol,
+                                          int max_iterations = 1100) {
+  for (int i = 0; i < max_iterations && hi - lo > relative_tol * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (below(mid) ? lo : hi) = mid;
+  }
+  return {lo, hi};
 }
 
 }  // namespace punchsweep::model

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "model/integer_power.hpp"
+#include "model/root_finding.hpp"
 
 namespace punchsweep::model {
 namespace {
@@ -38,18 +39,9 @@ SingleLevelShells::SingleLevelShells(double l, Shape shape, Localization localiz
   A_M_ = l * std::sqrt(kept_centre / kPi);
   // The radius limit: spread neighbours reach the spot at a = l/2 (point loads at the
   // nearest distance, l); below, the first zero of the balance's capacity.
-  const double hard = localization.distributed ? 0.5 * l : std::min(l, A_);
-  double lo = 0.0;
-  double hi = hard * (1.0 - 1e-12);
-  if (capacity(hi, sums(hi)) > 0.0) {
-    a_limit_ = hi;
-  } else {
-    while (hi - lo > 1e-15 * hi) {
-      const double mid = 0.5 * (lo + hi);
-      (capacity(mid, sums(mid)) > 0.0 ? lo : hi) = mid;
-    }
-    a_limit_ = lo;
-  }
+  const double hard = (localization.distributed ? 0.5 * l : std::min(l, A_)) * (1.0 - 1e-12);
+  const auto holds = [&](double a) { return capacity(a, sums(a)) > 0.0; };
+  a_limit_ = holds(hard) ? hard : bisect_boundary(holds, 0.0, hard, 1e-15).first;
 }
 
 SingleLevelShells::Sums SingleLevelShells::sums(double a) const {
@@ -98,12 +90,8 @@ double SingleLevelShells::displacement_difference_rate(double a1) const {
 double SingleLevelShells::contact_radius(double X) const {
   if (!(X > 0.0)) return 0.0;
   if (std::isinf(X)) return a_limit_;
-  double lo = 0.0;
-  double hi = a_limit_;
-  while (hi - lo > 1e-15 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (creep_scaled_pressure(mid) < X ? lo : hi) = mid;
-  }
+  const auto below = [&](double a) { return creep_scaled_pressure(a) < X; };
+  const auto [lo, hi] = bisect_boundary(below, 0.0, a_limit_, 1e-15);
   return 0.5 * (lo + hi);
 }
 

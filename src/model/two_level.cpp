@@ -13,6 +13,7 @@
 #include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
 #include "model/ring_loads.hpp"
+#include "model/root_finding.hpp"
 #include "model/single_level.hpp"
 
 namespace punchsweep::model {
@@ -270,12 +271,8 @@ TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {
     const double a1 = a1_of(a2);
     return K_P_ * (ipow(a1, s + 1) + ipow(a2, s + 1)) - load;
   };
-  double lo = 0.0;
-  double hi = std::pow(load / K_P_, 1.0 / (s + 1));
-  for (int i = 0; i < 200 && hi - lo > 1e-16 * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (excess(mid) > 0.0 ? hi : lo) = mid;
-  }
+  const auto [lo, hi] = bisect_boundary([&](double a2) { return !(excess(a2) > 0.0); }, 0.0,
+                                         std::pow(load / K_P_, 1.0 / (s + 1)), 1e-16, 200);
   const double a2 = 0.5 * (lo + hi);
   const double a1 = a1_of(a2);
   const TwoLevelSolve start = solve(X_start, TwoLevelState{a1, a2, 0.0, 0.0});
