@@ -13,6 +13,7 @@
 #include "model/creep_law.hpp"
 #include "model/prony_series.hpp"
 #include "model/standard_linear_solid.hpp"
+#include "model/test_series_hidden.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
@@ -47,26 +48,6 @@ class MaxwellFluid final : public model::CreepLaw {
   double eta_;
 };
 
-/// The standard linear solid without its retardation series (so the convolution form).
-class OpaqueCreep final : public model::CreepLaw {
- public:
-  explicit OpaqueCreep(const model::CreepLaw& law) : law_(law) {}
-  double creep(double t) const override { return law_.creep(t); }
-  double creep_rate(double t) const override { return law_.creep_rate(t); }
-  double creep_integral(double u, double d) const override { return law_.creep_integral(u, d); }
-  double relaxation(double t) const override { return law_.relaxation(t); }
-  double relaxation_rate(double t) const override { return law_.relaxation_rate(t); }
-  double creep_initial() const override { return law_.creep_initial(); }
-  double creep_final() const override { return law_.creep_final(); }
-  double time_at_creep(double J) const override { return law_.time_at_creep(J); }
-  double relaxation_time_scale() const override { return law_.relaxation_time_scale(); }
-  double creep_time_scale() const override { return law_.creep_time_scale(); }
-  double relaxation_memory() const override { return law_.relaxation_memory(); }
-  std::string describe() const override { return law_.describe(); }
-
- private:
-  const model::CreepLaw& law_;
-};
 
 int pressed_nodes(std::span<const double> p) {
   return static_cast<int>(std::count_if(p.begin(), p.end(), [](double v) { return v > 0.0; }));
@@ -142,7 +123,7 @@ TEST(ViscoelasticStepper, natural_form_is_exponential_for_sls_and_convolution_ot
   const PeriodicGrid g = PeriodicGrid::square(8, 1.0);
   const std::vector<double> f(g.size(), 0.0);
   const model::StandardLinearSolid sls(2.0);
-  const OpaqueCreep opaque(sls);
+  const model::testing::SeriesHidden opaque(sls);  // the SLS without its series: the convolution form
   EXPECT_EQ(ViscoelasticStepper(g, f, 0.1, sls).form(), CreepHistoryForm::exponential);
   EXPECT_EQ(ViscoelasticStepper(g, f, 0.1, opaque).form(), CreepHistoryForm::convolution);
   EXPECT_THROW(ViscoelasticStepper(g, f, 0.1, opaque, {}, CreepHistoryForm::exponential),
