@@ -265,7 +265,7 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     // unchanged X (the load settled) do not enter it.
     std::array<TwoLevelState, 3> last{out.start, out.start, out.start};  // newest first
     std::array<double, 3> X_last{out.X_start, out.X_start, out.X_start};
-    int known = 1;  // distinct X among last
+    int known = 1;  // distinct X among last, at most 3
     history.emplace(load, level1_load, t_start, t_max, options.quadrature,
                     [&](double tau, double* Q1, double* Q2) {
                       const double X = load(tau);
@@ -273,15 +273,15 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                       if (known >= 2) {
                         // Lagrange weights of the known points at X.
                         std::array<double, 3> w{};
-                        for (int i = 0; i < known && i < 3; ++i) {
+                        for (int i = 0; i < known; ++i) {
                           w[i] = 1.0;
-                          for (int j = 0; j < known && j < 3; ++j) {
+                          for (int j = 0; j < known; ++j) {
                             if (j != i) w[i] *= (X - X_last[j]) / (X_last[i] - X_last[j]);
                           }
                         }
                         double a1 = 0.0;
                         double z = 0.0;
-                        for (int i = 0; i < known && i < 3; ++i) {
+                        for (int i = 0; i < known; ++i) {
                           a1 += w[i] * last[i].a1;
                           z += w[i] * last[i].a2 * last[i].a2;
                         }
