@@ -206,30 +206,42 @@ def two_level_creep(l, dh, pbar0, J, D=2, distributed=False, guess=(0.25, 0.1), 
     return a1, a2
 
 
-def bem(binary, l, X, N=512):
-    cmd = [binary, "reference", "--l", str(l), "--dh", "5", "--T", "1", "--pbar", str(X), "--s", str(S),
-           "--bem-grid", str(N), "--times", "0", "--format", "json"]
+def reference(binary, l, dh, T, X, times, N=512):
+    """`punchsweep reference` at one point: its series, and the command without the binary."""
+    cmd = [binary, "reference", "--l", str(l), "--dh", str(dh), "--T", str(T), "--pbar", str(X), "--s", str(S),
+           "--bem-grid", str(N), "--times", times, "--format", "json"]
     out = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
-    return {"l": l, "X": X, "N": N, "a1": out["series"]["a1"][0], "h": out["series"]["h"][0],
-            "command": " ".join(cmd[1:])}
+    return out["series"], " ".join(cmd[1:])
+
+
+def bem(binary, l, X, N=512):
+    series, command = reference(binary, l, 5, 1, X, "0", N)
+    return {"l": l, "X": X, "N": N, "a1": series["a1"][0], "h": series["h"][0], "command": command}
 
 
 def bem_creep(binary, l, dh, X, N=512):
-    cmd = [binary, "reference", "--l", str(l), "--dh", str(dh), "--T", str(T_CREEP), "--pbar", str(X), "--s", str(S),
-           "--bem-grid", str(N), "--times", f"0,{T_AT:g}", "--format", "json"]
-    out = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
-    series = out["series"]
+    series, command = reference(binary, l, dh, T_CREEP, X, f"0,{T_AT:g}", N)
     return {"l": l, "dh": dh, "X": X, "N": N, "T": T_CREEP, "t": T_AT, "a1": series["a1"][1], "a2": series["a2"][1],
-            "command": " ".join(cmd[1:])}
+            "command": command}
 
 
 def bem_two(binary, l, dh, X, N=512):
-    cmd = [binary, "reference", "--l", str(l), "--dh", str(dh), "--T", "1", "--pbar", str(X), "--s", str(S),
-           "--bem-grid", str(N), "--times", "0", "--format", "json"]
-    out = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
-    series = out["series"]
+    series, command = reference(binary, l, dh, 1, X, "0", N)
     return {"l": l, "dh": dh, "X": X, "N": N, "a1": series["a1"][0], "a2": series["a2"][0], "P1": series["P1"][0],
-            "P2": series["P2"][0], "command": " ".join(cmd[1:])}
+            "P2": series["P2"][0], "command": command}
+
+
+def print_table(title, header, rows):
+    """A Markdown table under `title`; rows are (leading cells, compared cells), printed as made."""
+    print(title + "\n")
+    print("| " + " | ".join(header) + " |")
+    print("|---" * len(header) + "|")
+    for lead, cells in rows:
+        print("| " + " | ".join(lead + list(cells)) + " |", flush=True)
+
+
+def error(value, ref, digits):
+    return f"{100 * (value / ref - 1):+.{digits}f}%"
 
 
 def main(argv):
@@ -243,44 +255,47 @@ def main(argv):
         CACHE_TWO.write_text(json.dumps([bem_two(args.binary, *point) for point in POINTS_TWO], indent=1) + "\n")
         CACHE_CREEP.write_text(json.dumps([bem_creep(args.binary, *point) for point in POINTS_TWO[:3]], indent=1) + "\n")
     Ks = [int(k) for k in args.K.split(",")]
-    print("Single level, h (and a1) against the BEM:\n")
-    print("| l [R] | X [E0*] | a1/l | h BEM [R] | paper (K = 1, point loads) | "
-          + " | ".join(f"K = {k}, distributed" for k in Ks) + " |")
-    print("|---" * (5 + len(Ks)) + "|")
-    for ref in json.loads(CACHE.read_text()):
-        l, X = ref["l"], ref["X"]
-        cells = []
-        for K, dist in [(1, False)] + [(k, True) for k in Ks]:
-            a, h = single_level(l, X, K, dist)
-            cells.append(f"{100 * (h / ref['h'] - 1):+.2f}% (a1 {100 * (a / ref['a1'] - 1):+.2f}%)")
-        print(f"| {l} | {X} | {ref['a1'] / l:.3f} | {ref['h']:.6f} | " + " | ".join(cells) + " |", flush=True)
+
+    def single_rows():
+        for ref in json.loads(CACHE.read_text()):
+            l, X = ref["l"], ref["X"]
+            cells = (f"{error(h, ref['h'], 2)} (a1 {error(a, ref['a1'], 2)})"
+                     for a, h in (single_level(l, X, K, dist) for K, dist in [(1, False)] + [(k, True) for k in Ks]))
+            yield [str(l), str(X), f"{ref['a1'] / l:.3f}", f"{ref['h']:.6f}"], cells
+
+    print_table("Single level, h (and a1) against the BEM:",
+                ["l [R]", "X [E0*]", "a1/l", "h BEM [R]", "paper (K = 1, point loads)"]
+                + [f"K = {k}, distributed" for k in Ks], single_rows())
     Ds = [int(d) for d in args.D.split(",")]
-    print("\nTwo levels, a2 (and a1) against the BEM:\n")
-    print("| l [R] | dh [R] | X [E0*] | a1, a2 BEM [R] | paper (D = 2, point loads) | "
-          + " | ".join(f"D = {d}, distributed" for d in Ds) + " |")
-    print("|---" * (5 + len(Ds)) + "|")
-    for ref in json.loads(CACHE_TWO.read_text()):
-        l, dh, X = ref["l"], ref["dh"], ref["X"]
-        cells = []
-        for D, dist in [(2, False)] + [(d, True) for d in Ds]:
-            a1, a2, _, _ = two_level(l, dh, X, D, dist, guess=(ref["a1"], ref["a2"]))
-            cells.append(f"{100 * (a2 / ref['a2'] - 1):+.1f}% (a1 {100 * (a1 / ref['a1'] - 1):+.2f}%)")
-        print(f"| {l} | {dh} | {X} | {ref['a1']:.4f}, {ref['a2']:.4f} | " + " | ".join(cells) + " |", flush=True)
+
+    def two_rows():
+        for ref in json.loads(CACHE_TWO.read_text()):
+            l, dh, X = ref["l"], ref["dh"], ref["X"]
+            states = (two_level(l, dh, X, D, dist, guess=(ref["a1"], ref["a2"]))
+                      for D, dist in [(2, False)] + [(d, True) for d in Ds])
+            cells = (f"{error(a2, ref['a2'], 1)} (a1 {error(a1, ref['a1'], 2)})" for a1, a2, _, _ in states)
+            yield [str(l), str(dh), str(X), f"{ref['a1']:.4f}, {ref['a2']:.4f}"], cells
+
+    print()
+    print_table("Two levels, a2 (and a1) against the BEM:",
+                ["l [R]", "dh [R]", "X [E0*]", "a1, a2 BEM [R]", "paper (D = 2, point loads)"]
+                + [f"D = {d}, distributed" for d in Ds], two_rows())
     J = T_CREEP - (T_CREEP - 1) * math.exp(-T_AT)  # the SLS creep function, J(0) = 1
-    print(f"\nTwo levels under creep (SLS T = {T_CREEP:g}, t = {T_AT:g}), a2 (and a1) against the BEM, radii "
-          "frozen at t = 0 (eq 9.18) or following the loads:\n")
-    print("| l [R] | dh [R] | pbar0 [E0*] | a1, a2 BEM [R] | " + " | ".join(
-        f"D = {d}{', distributed' if d > 2 else ', point'}, {kind}" for d in (2, 60, 200) for kind in ("frozen", "free"))
-          + " |")
-    print("|---" * 10 + "|")
-    for ref in json.loads(CACHE_CREEP.read_text()):
-        l, dh, X = ref["l"], ref["dh"], ref["X"]
-        cells = []
-        for D in (2, 60, 200):
-            for frozen in (True, False):
-                a1, a2 = two_level_creep(l, dh, X, J, D, D > 2, guess=(0.28, 0.06), frozen=frozen)
-                cells.append(f"{100 * (a2 / ref['a2'] - 1):+.1f}% (a1 {100 * (a1 / ref['a1'] - 1):+.2f}%)")
-        print(f"| {l} | {dh} | {X} | {ref['a1']:.4f}, {ref['a2']:.4f} | " + " | ".join(cells) + " |", flush=True)
+    variants = [(d, frozen) for d in (2, 60, 200) for frozen in (True, False)]
+
+    def creep_rows():
+        for ref in json.loads(CACHE_CREEP.read_text()):
+            l, dh, X = ref["l"], ref["dh"], ref["X"]
+            states = (two_level_creep(l, dh, X, J, D, D > 2, guess=(0.28, 0.06), frozen=frozen) for D, frozen in variants)
+            cells = (f"{error(a2, ref['a2'], 1)} (a1 {error(a1, ref['a1'], 2)})" for a1, a2 in states)
+            yield [str(l), str(dh), str(X), f"{ref['a1']:.4f}, {ref['a2']:.4f}"], cells
+
+    print()
+    print_table(f"Two levels under creep (SLS T = {T_CREEP:g}, t = {T_AT:g}), a2 (and a1) against the BEM, radii "
+                "frozen at t = 0 (eq 9.18) or following the loads:",
+                ["l [R]", "dh [R]", "pbar0 [E0*]", "a1, a2 BEM [R]"]
+                + [f"D = {d}{', distributed' if d > 2 else ', point'}, {'frozen' if frozen else 'free'}"
+                   for d, frozen in variants], creep_rows())
 
 
 if __name__ == "__main__":
