@@ -205,13 +205,13 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
     if (!localization.is_paper()) {
       // The family's state from the paper's; where level 2 does not touch in the paper's
       // model there is no start, and the row is null, not converged.
-      model::TwoLevelShells::State s;
-      if (r.level2_touches && r.converged) {
-        s = model::TwoLevelShells(problem, localization).solve(problem.pbar0 / E, r.state.a1, r.state.a2);
-      }
+      model::TwoLevelSolve s;
+      const model::TwoLevelShells shells(problem, localization);
+      const double X = problem.pbar0 / E;
+      if (r.level2_touches && r.converged) s = shells.solve(X, model::TwoLevelState{r.state.a1, r.state.a2, 0.0, 0.0});
       constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-      r.state = s.converged ? model::TwoLevelState{s.a1, s.a2, s.Q1, s.Q2} : model::TwoLevelState{kNaN, kNaN, kNaN, kNaN};
-      r.radii = s.converged ? model::NominalRadii{s.A1, s.A2} : model::NominalRadii{kNaN, kNaN};
+      r.state = s.converged ? s.state : model::TwoLevelState{kNaN, kNaN, kNaN, kNaN};
+      r.radii = s.converged ? shells.radii(s.state, X) : model::NominalRadii{kNaN, kNaN};
       r.converged = s.converged;
     }
     P1.push_back(E * r.state.Q1);  // P = E Q

@@ -17,26 +17,14 @@ constexpr double kPi = std::numbers::pi;
 SingleLevelShells::SingleLevelShells(double l, Shape shape, Localization localization)
     : l_(l),
       shape_(shape),
-      localization_(localization),
       K_P_(load_coefficient(shape)),
       K_d_(depth_coefficient(shape)),
-      spot_(shape.s) {
-  // The level-1 punches of the kept neighbourhoods: about the punch, and about the square
-  // centre (a level-2 site, so that the phase joins the two-level one at touchdown).
-  int kept = 1;
-  for (const DistanceShell& shell : kept_neighbours(1, localization.shells)) {
-    if (shell.level != 1) continue;
-    around_punch_.push_back({shell.distance * l, shell.count, 1});
-    kept += shell.count;
-  }
-  int kept_centre = 0;
-  for (const DistanceShell& shell : kept_neighbours(2, localization.shells)) {
-    if (shell.level != 1) continue;
-    around_centre_.push_back({shell.distance * l, shell.count, 1});
-    kept_centre += shell.count;
-  }
-  A_ = l * std::sqrt(kept / kPi);
-  A_M_ = l * std::sqrt(kept_centre / kPi);
+      sums_(&shell_sums(shape.s, localization)) {
+  // The level-1 punches of the kept neighbourhoods: about the punch (the same-level sum),
+  // and about the square centre (a level-2 site: the cross sum about a bare site), so that
+  // the phase joins the two-level one at touchdown.
+  A_ = l * std::sqrt((1 + sums_->same_count()) / kPi);
+  A_M_ = l * std::sqrt(sums_->cross_count() / kPi);
   // The radius limit: spread neighbours reach the spot at a = l/2 (point loads at the
   // nearest distance, l); below, the first zero of the balance's capacity.
   const double hard = (localization.distributed ? 0.5 * l : std::min(l, A_)) * (1.0 - 1e-12);
@@ -45,17 +33,8 @@ SingleLevelShells::SingleLevelShells(double l, Shape shape, Localization localiz
 }
 
 SingleLevelShells::Sums SingleLevelShells::sums(double a) const {
-  const auto carried = [a](double r) { return 2.0 / kPi * (a / std::sqrt(r * r - a * a) - std::asin(a / r)); };
-  const auto depth = [a](double r) { return 1.0 / (kPi * std::sqrt(r * r - a * a)); };
-  const auto centre = [](double r) { return 1.0 / (kPi * r); };
-  const auto mean = [&](const auto& f, double rho) { return localization_.distributed ? spot_(f, rho, a) : f(rho); };
-  Sums s;
-  for (const DistanceShell& shell : around_punch_) {
-    s.carried += shell.count * mean(carried, shell.distance);
-    s.depth += shell.count * mean(depth, shell.distance);
-  }
-  for (const DistanceShell& shell : around_centre_) s.centre += shell.count * mean(centre, shell.distance);
-  return s;
+  const ShellSums::Sums punch = sums_->same(a / l_);
+  return {punch.carried, punch.depth / l_, sums_->cross(0.0, a / l_).depth / l_};
 }
 
 double SingleLevelShells::capacity(double a, const Sums& s) const {

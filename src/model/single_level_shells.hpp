@@ -5,7 +5,7 @@
 #include "model/lattice.hpp"
 #include "model/localization.hpp"
 #include "model/shape.hpp"
-#include "model/spot_average.hpp"
+#include "model/shell_sums.hpp"
 
 namespace punchsweep::model {
 
@@ -57,14 +57,11 @@ class SingleLevelShells {
 
   double l_;
   Shape shape_;
-  Localization localization_;
   double K_P_;
   double K_d_;
-  std::vector<DistanceShell> around_punch_;   ///< distances in R
-  std::vector<DistanceShell> around_centre_;  ///< distances in R
-  double A_;   ///< A, about the punch
+  const ShellSums* sums_;  ///< the kept neighbourhoods' sums (shared, scaled by l)
+  double A_;               ///< A, about the punch
   double A_M_;
-  SpotAverage spot_;
   double a_limit_ = 0.0;
 };
 

@@ -7,11 +7,25 @@
 
 namespace punchsweep::model {
 
-SpotAverage::SpotAverage(int s) : near_(make_rule(s, 24, 48)), far_(make_rule(s, 24, 16)) {}
+SpotAverage::SpotAverage(int s) {
+  // n angles reach 1e-16 up to a/d = 1e-16^(1/(2n)).
+  for (int angles = 16; angles <= kMaxAngles; angles = angles == 16 ? 48 : 2 * angles) {
+    const double limit = angles == kMaxAngles ? 2.0 : std::pow(1e-16, 0.5 / angles);
+    rules_.push_back(make_rule(s, kRadialNodes, angles, limit));
+  }
+}
 
-SpotAverage::Rule SpotAverage::make_rule(int s, int radial, int angular) {
+const SpotAverage::Rule& SpotAverage::pick(double ratio) const {
+  for (const Rule& rule : rules_) {
+    if (ratio <= rule.ratio_limit) return rule;
+  }
+  return rules_.back();
+}
+
+SpotAverage::Rule SpotAverage::make_rule(int s, int radial, int angular, double ratio_limit) {
   constexpr double kPi = std::numbers::pi;
   Rule rule;
+  rule.ratio_limit = ratio_limit;
   // Radial: r' = a sin(phi), phi in [0, pi/2], dA = r' dr' dtheta: the load at a node is
   // p(r') r' a cos(phi) dphi (a = 1 here; the shape scales out), normalized to sum 1.
   const GaussRule& g = gauss_legendre(radial);
@@ -25,11 +39,8 @@ SpotAverage::Rule SpotAverage::make_rule(int s, int radial, int angular) {
   }
   for (double& w : rule.weight) w /= total;
   // Angle: the integrand is even and 2 pi-periodic in it, so the midpoint rule converges
-  // geometrically, as (a/rho)^(2 angular).
-  for (int j = 0; j < angular; ++j) {
-    rule.cos_angle.push_back(std::cos(kPi * (j + 0.5) / angular));
-    rule.angle_weight.push_back(1.0 / angular);
-  }
+  // geometrically, as (a/d)^(2 angular).
+  for (int j = 0; j < angular; ++j) rule.cos_angle.push_back(std::cos(kPi * (j + 0.5) / angular));
   return rule;
 }
 

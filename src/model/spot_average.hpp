@@ -9,40 +9,47 @@ namespace punchsweep::model {
 /// a neighbour whose contact of radius a carries the isolated punch's pressure p_(k,m)
 /// (eq 9.1, exponent s), centred at distance rho,
 ///   <f> = (1/P) int f(|x'|) p(x' - rho e) dA',
-/// the mean of f over the distances of the spot's points, weighted by their load: 24
-/// Gauss-Legendre nodes in phi (r' = a sin(phi)) by 48 midpoint angles on [0, pi] (the
-/// integrand is even and periodic in the angle, so the rule converges as (a/rho)^96) near
-/// the punch; from rho >= kFarDistance a on, 16 angles (the two agree to 1e-13 there,
-/// `single_level_shells_test.cpp`).
+/// the mean of f over the distances of the spot's points, weighted by their load: Gauss-
+/// Legendre nodes in phi (r' = a sin(phi)) by midpoint angles on [0, pi]. The integrand is
+/// even and periodic in the angle, so n angles converge as (a/d)^(2n), d the distance from
+/// the spot's centre to the nearest singularity of f; the kernels of the localization are
+/// singular on the punch's own contact circle, |x'| = reach, so d = rho - reach. The rule
+/// takes the fewest angles (16, 48, then doubling up to kMaxAngles) with (a/d)^(2n) <=
+/// 1e-16, and kRadialNodes radial nodes in every rule, so that the rule's radial error (1e-8
+/// for the cone's log-singular pressure, s = 1) is a smooth function of the geometry.
+/// Near and far rules agree to 1e-13 at their thresholds (`single_level_shells_test.cpp`).
 class SpotAverage {
  public:
   explicit SpotAverage(int s);
 
-  static constexpr double kFarDistance = 4.0;
+  static constexpr int kMaxAngles = 6144;
+  static constexpr int kRadialNodes = 48;
 
   template <class F>
-  double operator()(F&& f, double rho, double a) const {
-    const Rule& rule = rho < kFarDistance * a ? near_ : far_;
+  double operator()(F&& f, double rho, double a, double reach = 0.0) const {
+    const Rule& rule = pick(a / (rho - reach));
     double sum = 0.0;
     for (std::size_t i = 0; i < rule.sin.size(); ++i) {
       const double r = a * rule.sin[i];
+      double ring = 0.0;
       for (std::size_t j = 0; j < rule.cos_angle.size(); ++j) {
-        sum += rule.weight[i] * rule.angle_weight[j] * f(std::sqrt(rho * rho + r * r + 2.0 * rho * r * rule.cos_angle[j]));
+        ring += f(std::sqrt(rho * rho + r * r + 2.0 * rho * r * rule.cos_angle[j]));
       }
+      sum += rule.weight[i] * ring;
     }
-    return sum;
+    return sum / static_cast<double>(rule.cos_angle.size());
   }
 
  private:
   struct Rule {
+    double ratio_limit = 0.0;          ///< a/d up to which the rule is used
     std::vector<double> sin;           ///< r'/a at the radial nodes
     std::vector<double> weight;        ///< load share of each radial node (sum 1)
-    std::vector<double> cos_angle;     ///< at the angular nodes on [0, pi]
-    std::vector<double> angle_weight;  ///< sum 1
+    std::vector<double> cos_angle;     ///< at the angular nodes on [0, pi], equal weights
   };
-  static Rule make_rule(int s, int radial, int angular);
-  Rule near_;
-  Rule far_;
+  static Rule make_rule(int s, int radial, int angular, double ratio_limit);
+  const Rule& pick(double ratio) const;
+  std::vector<Rule> rules_;  ///< by ratio_limit, increasing
 };
 
 }  // namespace punchsweep::model

@@ -228,27 +228,7 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
 
 TwoLevelSolve TwoLevelSystem::continue_to(const TwoLevelState& from, double X_from,
                                           double X_to) const {
-  TwoLevelSolve current{from, true};
-  double X = X_from;
-  double step = X_to - X_from;
-  const double min_step = std::abs(step) * 0x1p-20;
-  while (X != X_to) {
-    const bool last = std::abs(X_to - X) <= std::abs(step);
-    const double X_next = last ? X_to : X + step;
-    const TwoLevelSolve trial = solve(X_next, current.state);
-    if (trial.converged) {
-      current = trial;
-      X = X_next;
-      step *= 2.0;
-    } else {
-      step *= 0.5;
-      if (std::abs(step) < min_step) {
-        current.converged = false;
-        return current;
-      }
-    }
-  }
-  return current;
+  return continue_branch(*this, from, X_from, X_to);
 }
 
 TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {

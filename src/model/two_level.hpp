@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include "model/contact_problem.hpp"
@@ -116,5 +117,32 @@ class TwoLevelSystem {
   double inv_A2_;
 };
 
+/// Follows a two-level system's solution branch from a known solution `from` at X_from to
+/// X_to, halving the step in X where its Newton fails and doubling it where it succeeds
+/// (at most 2^20 steps); shared by every system with solve(X, guess).
+template <class System>
+TwoLevelSolve continue_branch(const System& system, const TwoLevelState& from, double X_from, double X_to) {
+  TwoLevelSolve current{from, true};
+  double X = X_from;
+  double step = X_to - X_from;
+  const double min_step = std::abs(step) * 0x1p-20;
+  while (X != X_to) {
+    const bool last = std::abs(X_to - X) <= std::abs(step);
+    const double X_next = last ? X_to : X + step;
+    const TwoLevelSolve trial = system.solve(X_next, current.state);
+    if (trial.converged) {
+      current = trial;
+      X = X_next;
+      step *= 2.0;
+    } else {
+      step *= 0.5;
+      if (std::abs(step) < min_step) {
+        current.converged = false;
+        return current;
+      }
+    }
+  }
+  return current;
+}
 
 }  // namespace punchsweep::model

@@ -1,0 +1,235 @@
+#include "model/shell_sums.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <utility>
+
+#include "model/chebyshev.hpp"
+
+namespace punchsweep::model {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+/// The nearest other-level punch, at l/sqrt(2): spots of radii x and y touch at x + y = this.
+constexpr double kCrossReach = 1.0 / std::numbers::sqrt2;
+/// Shells nearer than this (in l) are tabulated piecewise; beyond it x + y <= 1 is at most
+/// a third of the distance and the sums are smooth (one piece).
+constexpr double kNearDistance = 3.0;
+/// The tables' range: radii up to half the pitch (beyond it same-level spots overlap), and t
+/// = x / (kCrossReach - y) up to just short of touching.
+constexpr double kRadiusReach = 0.5;
+constexpr double kTouchEdge = 0.98;
+constexpr double kSameEdge = 0.5 * kTouchEdge;
+/// Interpolation nodes: per patch along the piecewise variable, along y (two intervals),
+/// and of the far shells' smooth piece.
+constexpr int kPatchNodes = 16;
+constexpr int kCrossNodes = 16;
+constexpr std::array<double, 5> kCrossIntervals{0.0, 0.125, 0.25, 0.375, kRadiusReach};
+constexpr int kFarNodes = 16;
+/// The first patches halve toward the touching edge this many times.
+constexpr int kGradedPatches = 6;
+/// Narrower patches are accepted as they are (the functions are continuous at the edge).
+constexpr double kMinPatch = 1e-4;
+
+bool within(const ShellSums::Sums& table, const ShellSums::Sums& exact, double scale) {
+  return std::abs(table.carried - exact.carried) <= scale * ShellSums::kTableTolerance &&
+         std::abs(table.depth - exact.depth) <= scale * ShellSums::kTableTolerance * (1.0 + std::abs(exact.depth));
+}
+
+/// Values (carried, depth) on a tensor grid, [j_t][interval][j_u][value] -> coefficients
+/// [k_t][interval][k_u][value], both directions transformed.
+std::vector<double> tensor_coefficients(const std::vector<double>& values, int nt, int intervals, int nu) {
+  const int columns = intervals * nu * 2;
+  std::vector<double> along_t(values.size());
+  for (int col = 0; col < columns; ++col) {
+    const std::vector<double> c = chebyshev::coefficients(values.data() + col, nt, columns);
+    for (int k = 0; k < nt; ++k) along_t[k * columns + col] = c[k];
+  }
+  if (nu == 1) return along_t;
+  std::vector<double> out(values.size());
+  for (int k = 0; k < nt; ++k) {
+    for (int iv = 0; iv < intervals; ++iv) {
+      for (int v = 0; v < 2; ++v) {
+        const int base = (k * intervals + iv) * nu * 2 + v;
+        const std::vector<double> c = chebyshev::coefficients(along_t.data() + base, nu, 2);
+        for (int m = 0; m < nu; ++m) out[base + m * 2] = c[m];
+      }
+    }
+  }
+  return out;
+}
+
+/// The tensor interpolant at (unit t, interval, unit u).
+ShellSums::Sums tensor_value(const std::vector<double>& c, int nt, int intervals, int nu, double t, int interval,
+                             double u) {
+  double inner[2][64];
+  for (int k = 0; k < nt; ++k) {
+    const double* row = c.data() + (k * intervals + interval) * nu * 2;
+    for (int v = 0; v < 2; ++v) inner[v][k] = nu == 1 ? row[v] : chebyshev::clenshaw(row + v, nu, u, 2);
+  }
+  return {chebyshev::clenshaw(inner[0], nt, t), chebyshev::clenshaw(inner[1], nt, t)};
+}
+
+}  // namespace
+
+ShellSums::ShellSums(int s, Localization localization) : localization_(localization), spot_(s) {
+  for (const DistanceShell& shell : kept_neighbours(1, localization.shells)) {
+    const bool near = shell.distance < kNearDistance;
+    if (shell.level == 1) {
+      (near ? same_near_ : same_far_).push_back(shell);
+      same_count_ += shell.count;
+    } else {
+      (near ? cross_near_ : cross_far_).push_back(shell);
+      cross_count_ += shell.count;
+    }
+  }
+  if (!localization.distributed) return;
+
+  // The far shells: one smooth piece in x (same) and in (x, y) (cross).
+  const std::vector<double> xf = chebyshev::nodes(kFarNodes, 0.0, kRadiusReach);
+  {
+    std::vector<double> values;
+    for (const double x : xf) {
+      const Sums v = direct(same_far_, x, x);
+      values.insert(values.end(), {v.carried, v.depth});
+    }
+    same_far_table_ = tensor_coefficients(values, kFarNodes, 1, 1);
+  }
+  {
+    std::vector<double> values;
+    for (const double x : xf) {
+      for (const double y : xf) {
+        const Sums v = direct(cross_far_, x, y);
+        values.insert(values.end(), {v.carried, v.depth});
+      }
+    }
+    cross_far_table_ = tensor_coefficients(values, kFarNodes, 1, kFarNodes);
+  }
+
+  // The near shells: patches along the variable in which the nearest spots touch, split
+  // until the interpolant meets the direct sums at points between its nodes.
+  std::vector<double> u_nodes;
+  for (int iv = 0; iv + 1 < static_cast<int>(kCrossIntervals.size()); ++iv) {
+    for (const double y : chebyshev::nodes(kCrossNodes, kCrossIntervals[iv], kCrossIntervals[iv + 1])) {
+      u_nodes.push_back(y);
+    }
+  }
+  const int intervals = static_cast<int>(kCrossIntervals.size()) - 1;
+  const auto build = [&](double lo, double hi, bool cross, std::vector<Patch>* patches) {
+    const int nu = cross ? kCrossNodes : 1;
+    // Values at one t over all y nodes (cross) or at x = t (same).
+    const auto column = [&](double t, std::vector<double>* values) {
+      if (!cross) {
+        const Sums v = direct(same_near_, t, t);
+        values->insert(values->end(), {v.carried, v.depth});
+        return;
+      }
+      for (const double y : u_nodes) {
+        const Sums v = direct(cross_near_, t * (kCrossReach - y), y);
+        values->insert(values->end(), {v.carried, v.depth});
+      }
+    };
+    std::function<void(double, double)> refine = [&](double a, double b) {
+      std::vector<double> values;
+      for (const double t : chebyshev::nodes(kPatchNodes, a, b)) column(t, &values);
+      Patch patch{a, b, tensor_coefficients(values, kPatchNodes, cross ? intervals : 1, nu)};
+      bool good = true;
+      for (const double share : {0.25, 0.5, 0.75}) {
+        const double t = a + share * (b - a);
+        std::vector<double> exact;
+        column(t, &exact);
+        for (int col = 0; good && col < static_cast<int>(exact.size()) / 2; ++col) {
+          const int iv = col / nu;
+          const double u = cross ? chebyshev::unit(u_nodes[col], kCrossIntervals[iv], kCrossIntervals[iv + 1]) : 0.0;
+          const Sums table =
+              tensor_value(patch.coefficients, kPatchNodes, cross ? intervals : 1, nu, chebyshev::unit(t, a, b), iv, u);
+          good = within(table, Sums{exact[2 * col], exact[2 * col + 1]}, 0.1);
+        }
+      }
+      if (good || b - a < kMinPatch) {
+        patches->push_back(std::move(patch));
+        return;
+      }
+      refine(a, 0.5 * (a + b));
+      refine(0.5 * (a + b), b);
+    };
+    // Start from patches halving toward the edge, where the nearest spots would touch (the
+    // refinement would split there anyway).
+    double a = lo;
+    for (int k = 1; k <= kGradedPatches; ++k) {
+      const double b = k == kGradedPatches ? hi : lo + (hi - lo) * (1.0 - std::ldexp(1.0, -k));
+      refine(a, b);
+      a = b;
+    }
+  };
+  build(0.0, kSameEdge, false, &same_patches_);
+  build(0.0, kTouchEdge, true, &cross_patches_);
+  tabulated_ = true;
+}
+
+ShellSums::Sums ShellSums::direct(const std::vector<DistanceShell>& shells, double x, double y) const {
+  const auto carried = [x](double r) { return 2.0 / kPi * (x / std::sqrt(r * r - x * x) - std::asin(x / r)); };
+  const auto depth = [x](double r) { return 1.0 / (kPi * std::sqrt(r * r - x * x)); };
+  const bool spread = localization_.distributed && y > 0.0;
+  Sums out;
+  for (const DistanceShell& shell : shells) {
+    out.carried += shell.count * (spread ? spot_(carried, shell.distance, y, x) : carried(shell.distance));
+    out.depth += shell.count * (spread ? spot_(depth, shell.distance, y, x) : depth(shell.distance));
+  }
+  return out;
+}
+
+ShellSums::Sums ShellSums::same_direct(double x) const {
+  const Sums near = direct(same_near_, x, x);
+  const Sums far = direct(same_far_, x, x);
+  return {near.carried + far.carried, near.depth + far.depth};
+}
+
+ShellSums::Sums ShellSums::cross_direct(double x, double y) const {
+  const Sums near = direct(cross_near_, x, y);
+  const Sums far = direct(cross_far_, x, y);
+  return {near.carried + far.carried, near.depth + far.depth};
+}
+
+ShellSums::Sums ShellSums::same(double x) const {
+  if (!tabulated_ || !(x >= 0.0 && x <= kSameEdge)) return same_direct(x);
+  const auto patch = std::upper_bound(same_patches_.begin(), same_patches_.end(), x,
+                                      [](double v, const Patch& p) { return v < p.hi; });
+  const Patch& p = patch == same_patches_.end() ? same_patches_.back() : *patch;
+  const Sums near = tensor_value(p.coefficients, kPatchNodes, 1, 1, chebyshev::unit(x, p.lo, p.hi), 0, 0.0);
+  const Sums far = tensor_value(same_far_table_, kFarNodes, 1, 1, chebyshev::unit(x, 0.0, kRadiusReach), 0, 0.0);
+  return {near.carried + far.carried, near.depth + far.depth};
+}
+
+ShellSums::Sums ShellSums::cross(double x, double y) const {
+  const double t = x / (kCrossReach - y);
+  if (!tabulated_ || !(x >= 0.0 && x <= kRadiusReach && y > 0.0 && y <= kRadiusReach && t <= kTouchEdge)) {
+    return cross_direct(x, y);
+  }
+  const auto patch = std::upper_bound(cross_patches_.begin(), cross_patches_.end(), t,
+                                      [](double v, const Patch& p) { return v < p.hi; });
+  const Patch& p = patch == cross_patches_.end() ? cross_patches_.back() : *patch;
+  const int iv = std::min(static_cast<int>(y / kCrossIntervals[1]), static_cast<int>(kCrossIntervals.size()) - 2);
+  const int intervals = static_cast<int>(kCrossIntervals.size()) - 1;
+  const Sums near = tensor_value(p.coefficients, kPatchNodes, intervals, kCrossNodes, chebyshev::unit(t, p.lo, p.hi),
+                                 iv, chebyshev::unit(y, kCrossIntervals[iv], kCrossIntervals[iv + 1]));
+  const Sums far = tensor_value(cross_far_table_, kFarNodes, 1, kFarNodes, chebyshev::unit(x, 0.0, kRadiusReach), 0,
+                                chebyshev::unit(y, 0.0, kRadiusReach));
+  return {near.carried + far.carried, near.depth + far.depth};
+}
+
+const ShellSums& shell_sums(int s, Localization localization) {
+  static std::mutex mutex;
+  static std::map<std::tuple<int, int, bool>, std::unique_ptr<const ShellSums>> built;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& entry = built[{s, localization.shells, localization.distributed}];
+  if (!entry) entry = std::make_unique<const ShellSums>(s, localization);
+  return *entry;
+}
+
+}  // namespace punchsweep::model
