@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
   const io::MapLayout layout = run::map_layout(config, tiling, std::nullopt, 0.0);
   io::TileEncoder encoder(layout);
   std::ostringstream log;
-  run::MapRun sink(config, layout, io::MapAttributes{}, run::Start::fresh, tiling, log);
+  const io::MapAttributes attributes;
+  run::MapRun sink(config, layout, attributes, run::Start::fresh, tiling, log);
   map::TileData data;
   std::printf("tile,points,compute_s,sink_s,bytes\n");
   for (std::size_t t = 0; t < tiling.tiles(); ++t) {

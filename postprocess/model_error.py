@@ -120,12 +120,15 @@ def report(ds, result: dict, valid_result: dict) -> str:
     lines.append(f"agreement: {100 * result['agreement']:.1f}% of {result['sampled']} points "
                  f"({100 * valid_result['agreement']:.1f}% of the {valid_result['sampled']} the model flags valid)")
     lines.append("")
-    t = result["t_star"]
+    t, tv = result["t_star"], valid_result["t_star"]
     lines.append(f"t* relative error where both are delayed: median {100 * t['median']:.1f}%, worst "
-                 f"{100 * t['worst']:.1f}% over {t['count']} points (t* in T_eps)")
+                 f"{100 * t['worst']:.1f}% over {t['count']} points (t* in T_eps); where the model is valid: median "
+                 f"{100 * tv['median']:.1f}%, worst {100 * tv['worst']:.1f}% over {tv['count']}")
     for name, stat in result["radii"].items():
+        sv = valid_result["radii"][name]
         lines.append(f"{name} relative error at the snapshot times: median {100 * stat['median']:.1f}%, worst "
-                     f"{100 * stat['worst']:.1f}% over {stat['count']} values (radii in R)")
+                     f"{100 * stat['worst']:.1f}% over {stat['count']} values (radii in R); where the model is "
+                     f"valid: median {100 * sv['median']:.1f}%, worst {100 * sv['worst']:.1f}% over {sv['count']}")
     lines.append("")
     lines.append("t* relative error by axis value (median / worst, points):")
     for name, rows in result["t_star_by_axis"].items():
@@ -135,7 +138,9 @@ def report(ds, result: dict, valid_result: dict) -> str:
     return "\n".join(lines)
 
 
-def errors_plot(ds, result: dict, path: Path) -> None:
+def errors_plot(ds, result: dict, valid_result: dict, path: Path) -> None:
+    """t* errors against each axis: points the model flags (hollow, grey) and valid ones
+    (filled), with the valid points' median."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -151,10 +156,13 @@ def errors_plot(ds, result: dict, path: Path) -> None:
         shape = [1] * t_err.ndim
         shape[axis_index] = len(values)
         x = np.broadcast_to(values.reshape(shape), t_err.shape)
-        ok = np.isfinite(t_err)
-        ax.scatter(x[ok], 100 * t_err[ok], s=8, alpha=0.5, color="tab:blue")
-        medians = [s["median"] for _, s in result["t_star_by_axis"][name]]
-        ax.plot(values, 100 * np.array(medians), color="k", marker="o", ms=3, label="median")
+        valid = np.isfinite(valid_result["t_star_errors"])
+        flagged = np.isfinite(t_err) & ~valid
+        ax.scatter(x[flagged], 100 * t_err[flagged], s=10, facecolors="none", edgecolors="0.55", linewidths=0.7,
+                   label="flagged by the model")
+        ax.scatter(x[valid], 100 * t_err[valid], s=8, alpha=0.6, color="tab:blue", label="valid")
+        medians = [s["median"] for _, s in valid_result["t_star_by_axis"][name]]
+        ax.plot(values, 100 * np.array(medians), color="k", marker="o", ms=3, label="median (valid)")
         if pm.is_log(ds, name):
             ax.set_xscale("log")
         if categorical:  # one column per label
@@ -163,7 +171,8 @@ def errors_plot(ds, result: dict, path: Path) -> None:
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("|t*$_{model}$ - t*$_{BEM}$| / t*$_{BEM}$ [%]")
     axes[0].legend()
-    fig.suptitle("t* of the localization model against the periodic BEM (points delayed in both)")
+    fig.suptitle(f"t* of the localization model ({ds.attrs.get('localization', 'paper')}) against the periodic BEM "
+                 "(points delayed in both)")
     pm.save_figure(fig, path)
 
 
@@ -235,9 +244,10 @@ def main(argv: list[str]) -> int:
         y = pm.parse_axis(ds, args.y, "--y")
         at = pm.parse_at(args.at, ds)
         result = compare(ds)
-        print(report(ds, result, compare(ds, valid_only=True)))
+        valid_result = compare(ds, valid_only=True)
+        print(report(ds, result, valid_result))
         if args.errors_plot:
-            errors_plot(ds, result, outputs[0])
+            errors_plot(ds, result, valid_result, outputs[0])
             print(f"model_error.py: wrote {outputs[0]}")
         if args.slice_plot:
             for message in slice_plot(ds, x, y, at, outputs[-1]):

@@ -124,6 +124,27 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
   return problem;
 }
 
+void add_localization_option(po::options_description& opts) {
+  opts.add_options()(
+      "localization", po::value<std::string>()->value_name("L")->default_value("paper"),
+      ("the localization model (docs/model.md, section 11): paper (the paper's eqs 9.5-9.19, "
+       "= point-shells:2), refined (= shells:" +
+       std::to_string(model::Localization::kRefinedShells) +
+       ", the member closest to the periodic BEM), shells:D (the punches of both levels within the D nearest "
+       "distances, spread over their own spots, with nominal-pressure radii that follow the loads) or "
+       "point-shells:D (as point loads); 1 <= D <= " +
+       std::to_string(model::Localization::kMaxShells))
+          .c_str());
+}
+
+model::Localization read_localization(const po::variables_map& vm) {
+  try {
+    return model::parse_localization(vm["localization"].as<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--localization: ") + e.what());
+  }
+}
+
 std::optional<double> read_physical_pressure(const po::variables_map& vm, const model::Material* material) {
   if (!vm.count("pressure")) return std::nullopt;
   const std::string text = vm["pressure"].as<std::string>();
@@ -276,6 +297,7 @@ std::string PointInputs::describe() const {
     }
   }
   if (!load_text.empty()) text += ", load table " + load_text + " (t in " + time_unit + ": fraction of pbar)";
+  if (!problem.localization.is_paper()) text += ", localization " + problem.localization.spelling();
   return text;
 }
 

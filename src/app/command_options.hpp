@@ -50,6 +50,12 @@ void add_point_options(boost::program_options::options_description& opts,
 /// --l, --dh, --pbar, --s and --C as a ContactProblem, each range-checked.
 model::ContactProblem read_problem(const boost::program_options::variables_map& vm);
 
+/// --localization L: paper (the default), refined, shells:D or point-shells:D
+/// (docs/model.md, section 11).
+void add_localization_option(boost::program_options::options_description& opts);
+/// --localization as read, refused as a usage error (exit 2) naming its valid forms.
+model::Localization read_localization(const boost::program_options::variables_map& vm);
+
 /// The material file `path` read and parsed. Throws UsageError with the file's message
 /// (file, key, value, valid range) when it cannot be read or is refused.
 /// `option` ("--material") starts the message of a file that cannot be opened; empty where

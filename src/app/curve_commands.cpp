@@ -42,14 +42,6 @@ std::string json_array(const std::vector<double>& values) {
 
 bool positive(double v) { return v > 0.0; }
 
-/// --localization, refused as a usage error (exit 2) naming its valid forms.
-model::Localization read_localization(const po::variables_map& vm) {
-  try {
-    return model::parse_localization(vm["localization"].as<std::string>());
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--localization: ") + e.what());
-  }
-}
 
 }  // namespace
 
@@ -71,11 +63,8 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   opts.add_options()
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
        "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
-      ("localization", po::value<std::string>()->value_name("L")->default_value("paper"),
-       "the localization model (docs/model.md, section 11): paper (eqs 9.5/9.10; = "
-       "point-shells:2), shells:D (the level-1 punches within the D nearest distances of "
-       "either level, spread over their own spots) or point-shells:D; 1 <= D <= 1000")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or csv");
+  add_localization_option(opts);
   const po::variables_map vm = parse_command(args, opts, "single-level");
   if (vm.count("help")) {
     out << "usage: punchsweep single-level --l L --s S [--C C] [--pbar P --T T] [options]\n\n" << opts << "\n";
@@ -181,12 +170,8 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
       ("E", po::value<std::string>()->value_name("LIST")->default_value("1"),
        "moduli E, comma-separated, in E0* (1 instantaneous, 1/T long-term); each > 0")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"),
-       "output format: json or markdown (a table like Table 9.1)")
-      ("localization", po::value<std::string>()->value_name("L")->default_value("paper"),
-       "the localization model (docs/model.md, section 11): paper (eqs 9.12-9.15), "
-       "shells:D (the punches of both levels within the D nearest distances, spread over "
-       "their own spots; the paper keeps D = 2) or point-shells:D; 1 <= D <= 1000; started "
-       "from the paper's state, where level 2 touches");
+       "output format: json or markdown (a table like Table 9.1)");
+  add_localization_option(opts);
   const po::variables_map vm = parse_command(args, opts, "elastic");
   if (vm.count("help")) {
     out << "usage: punchsweep elastic --l L --dh DH --pbar P --s S [--C C] [--E LIST] [--format FMT]\n\n" << opts << "\n";
@@ -199,20 +184,14 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
 
   const model::Localization localization = read_localization(vm);
 
+  problem.localization = localization;
   std::vector<double> P1, P2, a1, a2, A1, A2, touches, converged;
   for (const double E : moduli) {
-    model::ElasticTwoLevel r = model::solve_elastic_two_level(problem, E);
-    if (!localization.is_paper()) {
-      // The family's state from the paper's; where level 2 does not touch in the paper's
-      // model there is no start, and the row is null, not converged.
-      model::TwoLevelSolve s;
-      const model::TwoLevelShells shells(problem, localization);
-      const double X = problem.pbar0 / E;
-      if (r.level2_touches && r.converged) s = shells.solve(X, model::TwoLevelState{r.state.a1, r.state.a2, 0.0, 0.0});
+    model::ElasticTwoLevel r = model::solve_elastic(problem, E);
+    if (!r.converged) {
       constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-      r.state = s.converged ? s.state : model::TwoLevelState{kNaN, kNaN, kNaN, kNaN};
-      r.radii = s.converged ? shells.radii(s.state, X) : model::NominalRadii{kNaN, kNaN};
-      r.converged = s.converged;
+      r.state = model::TwoLevelState{kNaN, kNaN, kNaN, kNaN};
+      r.radii = model::NominalRadii{kNaN, kNaN};
     }
     P1.push_back(E * r.state.Q1);  // P = E Q
     P2.push_back(E * r.state.Q2);

@@ -25,6 +25,7 @@ po::options_description point_options(const PointMaterial& material) {
       "time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
   add_point_options(opts, material.spec);
   add_material_options(opts);
+  add_localization_option(opts);
   opts.add_options()
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
@@ -44,7 +45,8 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
   }
 
-  const PointInputs inputs = read_point_inputs(vm, material);
+  PointInputs inputs = read_point_inputs(vm, material);
+  inputs.problem.localization = read_localization(vm);
 
   model::EvaluationOptions options;
   options.times = read_times(vm);

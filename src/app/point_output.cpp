@@ -44,6 +44,10 @@ std::string series_array(const QuantitySpec* q, const model::PointResult& r) {
 
 void write_json(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
   out << "{\n";
+  // The model, where it is not the paper's (whose output keeps its form).
+  if (!inputs.problem.localization.is_paper()) {
+    out << "  \"localization\": " << json_string(inputs.problem.localization.spelling()) << ",\n";
+  }
   for (const QuantitySpec& q : kQuantities) {
     if (!is_point(q)) continue;
     if (q.flags == map::Flags::validity) {
@@ -109,7 +113,8 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
     }
     out << "  " << name << value << "\n";
     if (q.flags == map::Flags::validity) {
-      out << "  A1, A2 (frozen)     " << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n";
+      out << (inputs.problem.localization.is_paper() ? "  A1, A2 (frozen)     " : "  A1, A2 at the start ")
+          << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n";
     }
   }
   // The series' columns: each head with its unit, 12 wide (15 for a long head).

@@ -38,7 +38,7 @@ constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output"
 // resolved_text, after the [grid] keys.
 enum class Fixed {
   none,  // a [grid] key: a model parameter's axis
-  model_C, model_creep_law, model_material, model_load_table, time_times, output_file, output_quantities,
+  model_C, model_creep_law, model_material, model_load_table, model_localization, time_times, output_file, output_quantities,
   run_chunk, run_quiet, run_resume, run_overwrite,
   reference_method, reference_grid, reference_sample, reference_seed
 };
@@ -86,6 +86,14 @@ std::vector<KeySpec> make_keys() {
                   "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time in T_eps "
                   "or the material's unit), from 0:phi0 to t_n:1; empty: a step (a ramp: grid.ramp_time)",
                   "empty, or points from 0:phi0 to t_n:1 with phi non-decreasing in [0, 1]", Fixed::model_load_table});
+  keys.push_back({"model", "localization", "L", "paper",
+                  "the localization model (docs/model.md, section 11): paper (the paper's eqs 9.5-9.19), refined "
+                  "(= shells:" + std::to_string(model::Localization::kRefinedShells) +
+                      ", the member closest to the periodic BEM), shells:D (the punches of both levels within the D "
+                      "nearest distances, spread over their own spots, radii that follow the loads) or point-shells:D",
+                  "paper, refined, shells:D or point-shells:D with 1 <= D <= " +
+                      std::to_string(model::Localization::kMaxShells),
+                  Fixed::model_localization});
   keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5",
                   "snapshot times of the stored time series, in T_eps (or the material's time_unit)",
                   kTimesRange, Fixed::time_times});
@@ -544,6 +552,14 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
             problem = e.what();
           }
           break;
+        case Fixed::model_localization:
+          try {
+            config.localization = model::parse_localization(text);
+          } catch (const std::invalid_argument& e) {
+            const std::string what = e.what();
+            problem = what.substr(0, what.find(';'));
+          }
+          break;
         case Fixed::model_load_table:
           config.load_text = text;
           config.loading = model::LoadShape{};
@@ -724,6 +740,8 @@ std::string resolved_value(Fixed key, const std::string& text, const sweep::Swee
   switch (key) {
     case Fixed::model_C:
       return map::format_axis_value(config.C);
+    case Fixed::model_localization:
+      return config.localization.spelling();
     case Fixed::model_creep_law:
       return std::string(config.material_spec ? model::creep_laws().front().name : config.creep_law->name);
     case Fixed::run_chunk:
@@ -789,6 +807,8 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
     lines.push_back("model.material = " + material->name() + " (file crc32 " + hex + ")");
   }
   if (!config.load_text.empty()) lines.push_back("model.load_table = " + config.load_text);
+  // The paper's model leaves no line, so that maps made before the choice existed resume.
+  if (!config.localization.is_paper()) lines.push_back("model.localization = " + config.localization.spelling());
   lines.push_back("time.times = " + map::format_axis_values(config.times));
   lines.push_back(std::string("output.quantities = ") +
                   (config.quantities == map::Quantities::full ? "full" : "regime"));

@@ -132,6 +132,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   write_string_attribute(file_, "identity", attributes.identity, in);
   write_string_attribute(file_, "creep_law", attributes.creep_law, in);
   write_double_attribute(file_, "C", attributes.C, in);
+  write_string_attribute(file_, "localization", attributes.localization, in);
   write_string_attribute(file_, "time_unit", attributes.time_unit, in);
   if (!attributes.material.name.empty()) {
     write_string_attribute(file_, "material", attributes.material.name, in);

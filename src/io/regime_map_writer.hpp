@@ -38,6 +38,7 @@ struct MapAttributes {
     double E0_star_Pa = 0.0;
     double poisson = 0.0;
   } material;
+  std::string localization = "paper";  ///< the localization model's spelling (model/localization.hpp)
 };
 
 /// Writes a regime map: an HDF5 file laid out as a netCDF-4/CF-1.8 dataset, which

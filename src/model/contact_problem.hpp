@@ -3,6 +3,7 @@
 #include <string>
 
 #include "model/load_shape.hpp"
+#include "model/localization.hpp"
 #include "model/shape.hpp"
 
 namespace punchsweep::model {
@@ -15,6 +16,9 @@ struct ContactProblem {
   double pbar0 = 0.06;  ///< nominal pressure (held after the rise), in E0*; pbar0 > 0
   Shape shape{};
   LoadShape loading{};  ///< pbar(t) = pbar0 phi(t); the step by default
+  /// Which localization model stands in for the lattice (docs/model.md, section 11); the
+  /// paper's by default. The periodic reference (BEM) has no use for it.
+  Localization localization{};
 };
 
 /// Empty when every field is in range, else one sentence naming the first bad field,

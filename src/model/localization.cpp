@@ -11,10 +11,12 @@ std::string Localization::spelling() const {
 }
 
 Localization parse_localization(std::string_view text) {
-  const std::string valid = "valid: paper (= point-shells:2), shells:D (the neighbours within the D nearest "
+  const std::string valid = "valid: paper (= point-shells:2), refined (= shells:" +
+                            std::to_string(Localization::kRefinedShells) + "), shells:D (the neighbours within the D nearest "
                             "distances, spread over their spots) or point-shells:D (as point loads), 1 <= D <= " +
                             std::to_string(Localization::kMaxShells);
   if (text == "paper") return {};
+  if (text == "refined") return Localization{Localization::kRefinedShells, true};
   for (const auto& [prefix, distributed] : {std::pair{std::string_view("shells:"), true},
                                             std::pair{std::string_view("point-shells:"), false}}) {
     if (text.substr(0, prefix.size()) != prefix) continue;

@@ -18,8 +18,19 @@ struct Localization {
   /// the punch); false: point loads at their distances, the paper's choice.
   bool distributed = false;
 
+  /// Distributed neighbours count as merged spots within this share of touching: the
+  /// family needs separate spots for its ring averages (which cost ever more quadrature as
+  /// a gap closes, and whose error grows there: docs/model.md, section 11), so its states
+  /// keep 2 a_i < kMergeMargin l and a1 + a2 < kMergeMargin l/sqrt(2), and the validity
+  /// rules apply with these limits. 1 for point loads and the paper's model.
+  static constexpr double kMergeMargin = 0.98;
+  double merge_margin() const { return distributed ? kMergeMargin : 1.0; }
+
   /// The most shells a model may keep.
   static constexpr int kMaxShells = 1000;
+  /// "refined": the family's member whose measured accuracy against the periodic BEM is
+  /// best (docs/model.md, section 11): the neighbours within this many distances, spread.
+  static constexpr int kRefinedShells = 200;
 
   /// The spelling "paper": the engine's own eqs 9.5/9.10 and 9.12-9.19.
   bool is_paper() const { return shells == 2 && !distributed; }
@@ -27,8 +38,9 @@ struct Localization {
   std::string spelling() const;
 };
 
-/// Parses "paper", "shells:D" (D distances of distributed neighbours) or "point-shells:D"
-/// (of point loads), 1 <= D <= kMaxShells. Throws std::invalid_argument naming the valid forms.
+/// Parses "paper", "refined" (= shells:kRefinedShells), "shells:D" (D distances of
+/// distributed neighbours) or "point-shells:D" (of point loads), 1 <= D <= kMaxShells.
+/// Throws std::invalid_argument naming the valid forms.
 Localization parse_localization(std::string_view text);
 
 }  // namespace punchsweep::model

@@ -10,13 +10,16 @@
 #include <sstream>
 
 #include "model/lattice.hpp"
-#include "model/single_level.hpp"
+#include "model/single_level_phase.hpp"
+#include "model/two_level_shells.hpp"
 
 namespace punchsweep::model {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// A branch that stops within this share of the merge margin stopped because its spots merge.
+constexpr double kMergeNear = 1e-3;
 
 /// Which rule of docs/model.md, section 7 a state breaks, if any.
 struct Violation {
@@ -25,11 +28,12 @@ struct Violation {
   double limit = 0.0;
 };
 
-Violation check_state(double a1, double a2, double l) {
+/// `margin`: the share of touching at which spots count as merged (Localization::merge_margin).
+Violation check_state(double a1, double a2, double l, double margin = 1.0) {
   const double widest = 2.0 * std::max(a1, a2);
-  if (widest >= l) return {Validity::same_level_overlap, widest, l};
-  if (a1 + a2 >= l / std::numbers::sqrt2) {
-    return {Validity::cross_level_overlap, a1 + a2, l / std::numbers::sqrt2};
+  if (widest >= margin * l) return {Validity::same_level_overlap, widest, margin * l};
+  if (a1 + a2 >= margin * l / std::numbers::sqrt2) {
+    return {Validity::cross_level_overlap, a1 + a2, margin * l / std::numbers::sqrt2};
   }
   return {};
 }
@@ -68,6 +72,13 @@ std::string PointSummary::reason(std::string_view time_unit) const {
     else text << "at t = " << t << " " << time_unit;
     return text.str();
   };
+  // "l = " for the paper's rule, "0.98 l = " under the refined model's merge margin.
+  const auto margin_text = [this](std::string_view limit) {
+    std::ostringstream text;
+    if (merge_margin < 1.0) text << merge_margin << " ";
+    text << limit << " = ";
+    return text.str();
+  };
   switch (validity) {
     case Validity::same_level_overlap:
       if (std::isinf(violation_value)) {
@@ -75,12 +86,14 @@ std::string PointSummary::reason(std::string_view time_unit) const {
                "localization does not hold in the long term (t* and the states before the spots reach l/2 do)";
         break;
       }
-      out << "spots of one level merge " << when(invalid_at) << ": 2 a_i = " << violation_value
-          << " R >= l = " << violation_limit << " R (localization needs separate spots)";
+      out << "spots of one level merge " << when(invalid_at) << ": 2 a_i = " << violation_value << " R >= "
+          << margin_text("l") << violation_limit << " R (localization needs separate spots"
+          << (merge_margin < 1.0 ? "; the refined model's ring averages hold only with gaps of at least 2%)" : ")");
       break;
     case Validity::cross_level_overlap:
-      out << "level-1 and level-2 spots merge " << when(invalid_at) << ": a1 + a2 = " << violation_value
-          << " R >= l/sqrt(2) = " << violation_limit << " R (localization needs separate spots)";
+      out << "level-1 and level-2 spots merge " << when(invalid_at) << ": a1 + a2 = " << violation_value << " R >= "
+          << margin_text("l/sqrt(2)") << violation_limit << " R (localization needs separate spots"
+          << (merge_margin < 1.0 ? "; the refined model's ring averages hold only with gaps of at least 2%)" : ")");
       break;
     case Validity::no_solution:
       out << "the two-level equations have no admissible solution " << when(invalid_at);
@@ -121,13 +134,14 @@ std::string PointSummary::reason(std::string_view time_unit) const {
 
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single) {
-  const SingleLevel single(problem.l, problem.shape);
   const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
   const double X0 = load.initial();
   const double X_inf = load.final();
-  *h_0 = single.displacement_difference(single.contact_radius(X0), X0);
-  *a1_inf_single = single.contact_radius(X_inf);
-  *h_inf = std::isfinite(X_inf) ? single.displacement_difference(*a1_inf_single, X_inf) : kInf;
+  visit_single_level(problem, [&](const auto& single) {
+    *h_0 = single.displacement_difference(single.contact_radius(X0), X0);
+    *a1_inf_single = single.contact_radius(X_inf);
+    *h_inf = std::isfinite(X_inf) ? single.displacement_difference(*a1_inf_single, X_inf) : kInf;
+  });
 }
 
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
@@ -139,6 +153,8 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   out.h_0 = parts.h_0;
   out.h_inf = parts.h_inf;
   const double l = problem.l;
+  const double margin = problem.localization.merge_margin();
+  out.merge_margin = margin;
   const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
   const double X_inf = load.final();
 
@@ -150,7 +166,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
     out.a1_inf = parts.a1_inf_single;
     out.a2_inf = 0.0;
     out.start = TwoLevelState{0.0, 0.0, 0.0, 0.0};
-    const Violation v = check_state(out.a1_inf, 0.0, l);
+    const Violation v = check_state(out.a1_inf, 0.0, l, margin);
     if (v.code != Validity::valid) flag(out, v, kInf);
   } else {
     if (c.elastic_start) {
@@ -161,30 +177,49 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
       out.t_start = c.t_star;
       out.X_start = c.X_star;
       out.start = TwoLevelState{c.a1_star, 0.0, l * l * c.X_star, 0.0};
+      if (!problem.localization.is_paper()) {
+        out.radii = TwoLevelShells(problem, problem.localization).radii(out.start, c.X_star);
+      }
     }
     // Newton from the guide's guess (else by continuation from the start), whatever times a
     // caller samples: the long-term state is the same function of the point in a regime map
     // and in `punchsweep point`.
     TwoLevelSolve r{out.start, false};
     if (out.start_ok && std::isfinite(X_inf)) {
-      const TwoLevelSystem system(problem, out.radii);
-      if (const std::optional<TwoLevelState> guess = parts.guide->guess(X_inf, out.radii)) r = system.solve(X_inf, *guess);
-      if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
+      if (problem.localization.is_paper()) {
+        const TwoLevelSystem system(problem, out.radii);
+        if (const std::optional<TwoLevelState> guess = parts.guide->guess(X_inf, out.radii)) {
+          r = system.solve(X_inf, *guess);
+        }
+        if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
+      } else {
+        // The family's radii follow the loads: Newton from the start state, else the branch.
+        const TwoLevelShells system(problem, problem.localization);
+        r = system.solve(X_inf, out.start);
+        if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
+      }
     }
     out.a1_inf = r.converged ? r.state.a1 : kNaN;
     out.a2_inf = r.converged ? r.state.a2 : kNaN;
-    const Violation at_start = check_state(out.start.a1, out.start.a2, l);
+    const Violation at_start = check_state(out.start.a1, out.start.a2, l, margin);
+    // Where a solve of the family fails, its branch ends where its spots merge (its states
+    // keep the margin) or it has no solution: the last state it reached shows which.
+    const auto stopped = [&](const TwoLevelState& last) {
+      Violation v = check_state(last.a1, last.a2, l, margin * (1.0 - kMergeNear));
+      v.limit /= 1.0 - kMergeNear;
+      return margin < 1.0 && v.code != Validity::valid ? v : Violation{Validity::no_solution, kNaN, kNaN};
+    };
     if (!out.start_ok) {
-      flag(out, {Validity::no_solution, kNaN, kNaN}, out.t_start);
+      flag(out, stopped(out.start), out.t_start);
     } else if (at_start.code != Validity::valid) {
       flag(out, at_start, out.t_start);
     } else if (!std::isfinite(X_inf)) {
       // Unlimited creep: X grows without bound, and with it the spots, until they merge.
       flag(out, {Validity::same_level_overlap, kInf, l}, kInf);
     } else if (!r.converged) {
-      flag(out, {Validity::no_solution, kNaN, kNaN}, kInf);
+      flag(out, stopped(r.state), kInf);
     } else {
-      const Violation v = check_state(out.a1_inf, out.a2_inf, l);
+      const Violation v = check_state(out.a1_inf, out.a2_inf, l, margin);
       if (v.code != Validity::valid) flag(out, v, kInf);
     }
   }
@@ -204,11 +239,11 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 }
 
 ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide) {
-  if (problem.loading.is_step()) return solve_elastic_two_level(problem, 1.0 / creep.creep_initial(), guide);
+  if (problem.loading.is_step()) return solve_elastic(problem, 1.0 / creep.creep_initial(), guide);
   ContactProblem at_once = problem;
   at_once.pbar0 = problem.pbar0 * problem.loading.jump();
   at_once.loading = LoadShape{};
-  return solve_elastic_two_level(at_once, 1.0 / creep.creep_initial(), guide);
+  return solve_elastic(at_once, 1.0 / creep.creep_initial(), guide);
 }
 
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
@@ -230,16 +265,19 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
   return evaluate_point(problem, creep, options, summarize_point(problem, creep));
 }
 
-PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
-                           const EvaluationOptions& options, const PointSummary& summary) {
+namespace {
+
+/// The series of evaluate_point, with the two-level `system` of the problem's localization
+/// (TwoLevelSystem at the frozen radii, or TwoLevelShells) and its single-level phase.
+template <class System, class Single>
+PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep, const EvaluationOptions& options,
+                            const PointSummary& summary, const System& system, const Single& single) {
   PointResult out;
   static_cast<PointSummary&>(out) = summary;
-  const SingleLevel single(problem.l, problem.shape);
   const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
   const double level1_load = problem.pbar0 * problem.l * problem.l;  // L: Q1 = L g before touchdown
   const bool two_level = out.regime != Regime::never;
   const double t_start = out.t_start;
-  const TwoLevelSystem system(problem, out.radii);
 
   std::vector<std::size_t> order(options.times.size());
   std::iota(order.begin(), order.end(), 0);
@@ -368,11 +406,23 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
     }
     // The summary decided validity; a snapshot only tells how early a break is visible.
     if (!out.valid() && snap.t < out.first_seen && std::isfinite(snap.a1) &&
-        check_state(snap.a1, snap.a2, problem.l).code != Validity::valid) {
+        check_state(snap.a1, snap.a2, problem.l, problem.localization.merge_margin()).code != Validity::valid) {
       out.first_seen = snap.t;
     }
   }
   return out;
+}
+
+}  // namespace
+
+PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep, const EvaluationOptions& options,
+                           const PointSummary& summary) {
+  return visit_single_level(problem, [&](const auto& single) {
+    if (problem.localization.is_paper()) {
+      return evaluate_series(problem, creep, options, summary, TwoLevelSystem(problem, summary.radii), single);
+    }
+    return evaluate_series(problem, creep, options, summary, TwoLevelShells(problem, problem.localization), single);
+  });
 }
 
 }  // namespace punchsweep::model

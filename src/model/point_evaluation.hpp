@@ -50,7 +50,10 @@ struct PointSummary {
   Validity validity = Validity::valid;
   double invalid_at = 0.0;       ///< time of the state that breaks it, in T_eps (inf = long term)
   double violation_value = 0.0;  ///< the offending 2 a_i or a1 + a2 there, in R
-  double violation_limit = 0.0;  ///< l or l/sqrt(2), in R
+  double violation_limit = 0.0;  ///< l or l/sqrt(2) (times merge_margin), in R
+  /// The share of touching at which spots count as merged: 1, or Localization::kMergeMargin
+  /// under a model with distributed neighbours.
+  double merge_margin = 1.0;
   double first_seen = 0.0;       ///< earliest computed time that shows a break, in T_eps
   /// For Validity::inaccurate: which invariant broke (violation_value and violation_limit
   /// hold its numbers, invalid_at its time).

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "model/single_level.hpp"
+#include "model/single_level_phase.hpp"
 
 namespace punchsweep::model {
 
@@ -17,11 +17,8 @@ std::string_view regime_name(Regime regime) {
   return "unknown";
 }
 
-Touchdown touchdown(const SingleLevel& single, double dh) {
-  Touchdown t;
-  t.a1_star = single.contact_radius_at_gap(dh);
-  t.X_star = t.a1_star > 0.0 ? single.creep_scaled_pressure(t.a1_star) : 0.0;
-  return t;
+Touchdown touchdown(const ContactProblem& problem) {
+  return visit_single_level(problem, [&](const auto& single) { return touchdown(single, problem.dh); });
 }
 
 Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
@@ -45,8 +42,7 @@ Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
 }
 
 Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
-  const SingleLevel single(problem.l, problem.shape);
-  return classify(touchdown(single, problem.dh), CreepWeightedLoad(creep, problem.pbar0, problem.loading));
+  return classify(touchdown(problem), CreepWeightedLoad(creep, problem.pbar0, problem.loading));
 }
 
 }  // namespace punchsweep::model

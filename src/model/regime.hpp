@@ -44,9 +44,20 @@ struct Touchdown {
   double X_star = 0.0;   ///< in E0*
 };
 
-class SingleLevel;
-/// The touchdown point of `single` (its l and shape) for height difference dh.
-Touchdown touchdown(const SingleLevel& single, double dh);
+/// The touchdown point of a single-level phase `single` (SingleLevel or SingleLevelShells:
+/// its l, shape and localization) for height difference dh. X* is +infinity where h never
+/// reaches dh before the spots reach their limit (only under a refined localization, whose
+/// h stays finite as spots merge).
+template <class Single>
+Touchdown touchdown(const Single& single, double dh) {
+  Touchdown t;
+  t.a1_star = single.contact_radius_at_gap(dh);
+  t.X_star = t.a1_star > 0.0 ? single.creep_scaled_pressure(t.a1_star) : 0.0;
+  return t;
+}
+
+/// The touchdown point of the problem under its localization.
+Touchdown touchdown(const ContactProblem& problem);
 
 /// Classifies from a touchdown point: cheap (no root).
 Classification classify(const Touchdown& touch, const CreepWeightedLoad& load);

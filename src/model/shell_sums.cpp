@@ -20,11 +20,15 @@ constexpr double kCrossReach = 1.0 / std::numbers::sqrt2;
 /// Shells nearer than this (in l) are tabulated piecewise; beyond it x + y <= 1 is at most
 /// a third of the distance and the sums are smooth (one piece).
 constexpr double kNearDistance = 3.0;
-/// The tables' range: radii up to half the pitch (beyond it same-level spots overlap), and t
-/// = x / (kCrossReach - y) up to just short of touching.
+/// The tables' range: the family's states keep their spots apart by Localization::kMergeMargin,
+/// same-level radii x <= kSameEdge and x + y <= kCrossEdge; t = x / (kCrossEdge - y) in [0, 1].
 constexpr double kRadiusReach = 0.5;
-constexpr double kTouchEdge = 0.98;
-constexpr double kSameEdge = 0.5 * kTouchEdge;
+constexpr double kSameEdge = 0.5 * Localization::kMergeMargin;
+constexpr double kCrossEdge = Localization::kMergeMargin * kCrossReach;
+/// How far past their edges the tables are read (extrapolated): a Newton solve's difference
+/// steps from a state at the margin. The sums are analytic well beyond (the spots touch a
+/// further 1 - kMergeMargin away).
+constexpr double kEdgeSlack = 1e-3;
 /// Interpolation nodes: per patch along the piecewise variable, along y (two intervals),
 /// and of the far shells' smooth piece.
 constexpr int kPatchNodes = 16;
@@ -130,7 +134,7 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
         return;
       }
       for (const double y : u_nodes) {
-        const Sums v = direct(cross_near_, t * (kCrossReach - y), y);
+        const Sums v = direct(cross_near_, t * (kCrossEdge - y), y);
         values->insert(values->end(), {v.carried, v.depth});
       }
     };
@@ -168,7 +172,7 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
     }
   };
   build(0.0, kSameEdge, false, &same_patches_);
-  build(0.0, kTouchEdge, true, &cross_patches_);
+  build(0.0, 1.0, true, &cross_patches_);
   tabulated_ = true;
 }
 
@@ -197,7 +201,7 @@ ShellSums::Sums ShellSums::cross_direct(double x, double y) const {
 }
 
 ShellSums::Sums ShellSums::same(double x) const {
-  if (!tabulated_ || !(x >= 0.0 && x <= kSameEdge)) return same_direct(x);
+  if (!tabulated_ || !(x >= 0.0 && x <= kSameEdge * (1.0 + kEdgeSlack))) return same_direct(x);
   const auto patch = std::upper_bound(same_patches_.begin(), same_patches_.end(), x,
                                       [](double v, const Patch& p) { return v < p.hi; });
   const Patch& p = patch == same_patches_.end() ? same_patches_.back() : *patch;
@@ -207,8 +211,8 @@ ShellSums::Sums ShellSums::same(double x) const {
 }
 
 ShellSums::Sums ShellSums::cross(double x, double y) const {
-  const double t = x / (kCrossReach - y);
-  if (!tabulated_ || !(x >= 0.0 && x <= kRadiusReach && y > 0.0 && y <= kRadiusReach && t <= kTouchEdge)) {
+  const double t = x / (kCrossEdge - y);
+  if (!tabulated_ || !(x >= 0.0 && x <= kRadiusReach && y >= 0.0 && y <= kRadiusReach && t <= 1.0 + kEdgeSlack)) {
     return cross_direct(x, y);
   }
   const auto patch = std::upper_bound(cross_patches_.begin(), cross_patches_.end(), t,

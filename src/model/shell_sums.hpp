@@ -27,8 +27,9 @@ namespace punchsweep::model {
 /// For distributed neighbours the sums are tabulated at construction (Chebyshev interpolants:
 /// the near shells piecewise toward the radii at which the nearest spots would touch, the far
 /// ones in one smooth piece), because a sum over D = 200 distances costs a million kernel
-/// evaluations; the tables agree with the direct sums to kTableTolerance (tested), and a
-/// radius beyond a table's reach is summed directly. Point loads are summed directly.
+/// evaluations; the tables agree with the direct sums to kTableTolerance (tested). They
+/// reach as far as the family's states do (spots apart by Localization::kMergeMargin); a
+/// radius beyond is summed directly. Point loads are summed directly.
 class ShellSums {
  public:
   struct Sums {
@@ -73,7 +74,7 @@ class ShellSums {
   int cross_count_ = 0;
   bool tabulated_ = false;
   std::vector<Patch> same_patches_;   ///< in x
-  std::vector<Patch> cross_patches_;  ///< in t = x / (1/sqrt(2) - y), by y
+  std::vector<Patch> cross_patches_;  ///< in t = x / (kMergeMargin/sqrt(2) - y), by y
   std::vector<double> same_far_table_;   ///< in x
   std::vector<double> cross_far_table_;  ///< in (x, y)
 };

@@ -25,9 +25,10 @@ SingleLevelShells::SingleLevelShells(double l, Shape shape, Localization localiz
   // the phase joins the two-level one at touchdown.
   A_ = l * std::sqrt((1 + sums_->same_count()) / kPi);
   A_M_ = l * std::sqrt(sums_->cross_count() / kPi);
-  // The radius limit: spread neighbours reach the spot at a = l/2 (point loads at the
-  // nearest distance, l); below, the first zero of the balance's capacity.
-  const double hard = (localization.distributed ? 0.5 * l : std::min(l, A_)) * (1.0 - 1e-12);
+  // The radius limit: spread neighbours count as merged with the spot at a = l/2 within
+  // the merge margin (point loads reach it at the nearest distance, l); below, the first
+  // zero of the balance's capacity.
+  const double hard = localization.distributed ? 0.5 * Localization::kMergeMargin * l : std::min(l, A_) * (1.0 - 1e-12);
   const auto holds = [&](double a) { return capacity(a, sums(a)) > 0.0; };
   a_limit_ = holds(hard) ? hard : bisect_boundary(holds, 0.0, hard, 1e-15).first;
 }
@@ -70,6 +71,14 @@ double SingleLevelShells::contact_radius(double X) const {
   if (!(X > 0.0)) return 0.0;
   if (std::isinf(X)) return a_limit_;
   const auto below = [&](double a) { return creep_scaled_pressure(a) < X; };
+  const auto [lo, hi] = bisect_boundary(below, 0.0, a_limit_, 1e-15);
+  return 0.5 * (lo + hi);
+}
+
+double SingleLevelShells::contact_radius_at_gap(double dh) const {
+  if (!(dh > 0.0)) return 0.0;
+  const auto below = [&](double a) { return displacement_difference(a) < dh; };
+  if (below(a_limit_)) return a_limit_;
   const auto [lo, hi] = bisect_boundary(below, 0.0, a_limit_, 1e-15);
   return 0.5 * (lo + hi);
 }

@@ -39,8 +39,11 @@ class SingleLevelShells {
   double displacement_difference_rate(double a1) const;
   /// The contact radius at X (bisection to 1e-15 relative), in (0, radius_limit()).
   double contact_radius(double X) const;
-  /// Where the balance needs X -> infinity, or where spread neighbours would reach the
-  /// spot (a = l/2), whichever is first.
+  /// The contact radius at which h(a1) = dh along the solution curve (bisection to 1e-15
+  /// relative; h grows with a1); 0 for dh <= 0, radius_limit() where h stays below dh.
+  double contact_radius_at_gap(double dh) const;
+  /// Where the balance needs X -> infinity, or where spread neighbours count as merged with
+  /// the spot (a = Localization::kMergeMargin l/2), whichever is first.
   double radius_limit() const { return a_limit_; }
 
  private:

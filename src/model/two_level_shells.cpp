@@ -20,7 +20,8 @@ TwoLevelShells::TwoLevelShells(const ContactProblem& problem, Localization local
     : problem_(problem),
       K_P_(load_coefficient(problem.shape)),
       K_d_(depth_coefficient(problem.shape)),
-      sums_(&shell_sums(problem.shape.s, localization)) {}
+      sums_(&shell_sums(problem.shape.s, localization)),
+      margin_(localization.merge_margin()) {}
 
 NominalRadii TwoLevelShells::radii(const TwoLevelState& state, double X) const {
   const double n_same = sums_->same_count();
@@ -29,7 +30,16 @@ NominalRadii TwoLevelShells::radii(const TwoLevelState& state, double X) const {
           std::sqrt(((1.0 + n_same) * state.Q2 + n_cross * state.Q1) / (kPi * X))};
 }
 
+TwoLevelShells::Sums TwoLevelShells::sums(double a1, double a2) const {
+  const double l = problem_.l;
+  return {{sums_->same(a1 / l), sums_->same(a2 / l)}, {sums_->cross(a1 / l, a2 / l), sums_->cross(a2 / l, a1 / l)}};
+}
+
 std::array<double, 4> TwoLevelShells::residuals(double X, const std::array<double, 4>& z) const {
+  return residuals(X, z, sums(z[0], z[1]));
+}
+
+std::array<double, 4> TwoLevelShells::residuals(double X, const std::array<double, 4>& z, const Sums& sums) const {
   const double l = problem_.l;
   const double a[2] = {z[0], z[1]};
   const double Q[2] = {z[2], z[3]};
@@ -42,8 +52,8 @@ std::array<double, 4> TwoLevelShells::residuals(double X, const std::array<doubl
     const int j = 1 - i;
     const double ai = a[i];
     const double Ai = i == 0 ? A.A1 : A.A2;
-    const ShellSums::Sums same = sums_->same(ai / l);
-    const ShellSums::Sums cross = sums_->cross(ai / l, a[j] / l);
+    const ShellSums::Sums& same = sums.same[i];
+    const ShellSums::Sums& cross = sums.cross[i];
     const double S = std::sqrt(Ai * Ai - ai * ai);
     r[i] = (K_P_ * ipow(ai, s + 1) + Q[i] * same.carried + Q[j] * cross.carried +
             2.0 * X * (Ai * Ai * std::asin(ai / Ai) - ai * S) - Q[i]) *
@@ -66,10 +76,12 @@ TwoLevelSolve TwoLevelShells::solve(double X, const TwoLevelState& guess, int ma
   Eigen::Vector4d v(guess.a1, squared ? guess.a2 * guess.a2 : guess.a2, split ? guess.Q1 : 0.9 * load,
                     split ? guess.Q2 : 0.1 * load);
   const auto physical = [&](const Eigen::Vector4d& u) { return std::array<double, 4>{u[0], a2_of(u[1]), u[2], u[3]}; };
+  // The spots stay apart by the merge margin (the family's domain, ShellSums' reach).
+  const double reach = margin_ * l;
   const auto admissible = [&](const Eigen::Vector4d& u) {
     const double b = a2_of(u[1]);
-    return u[0] > 0.0 && u[1] >= 0.0 && 2.0 * u[0] < l && 2.0 * b < l && u[0] + b < l / std::numbers::sqrt2 &&
-           u[2] > 0.0 && u[3] >= 0.0;
+    return u[0] > 0.0 && u[1] >= 0.0 && 2.0 * u[0] < reach && 2.0 * b < reach &&
+           u[0] + b < reach / std::numbers::sqrt2 && u[2] > 0.0 && u[3] >= 0.0;
   };
   const auto norm = [](const std::array<double, 4>& r) {
     return std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
@@ -77,7 +89,8 @@ TwoLevelSolve TwoLevelShells::solve(double X, const TwoLevelState& guess, int ma
   // Forward differences, each step small against its variable's scale and kept inside the
   // domain (z and Q2 step upward from 0 at touchdown).
   const double steps[4] = {1e-7 * l, 1e-7 * (squared ? l * l : l), 1e-7 * load, 1e-7 * load};
-  std::array<double, 4> r = residuals(X, physical(v));
+  Sums at = sums(v[0], a2_of(v[1]));
+  std::array<double, 4> r = residuals(X, physical(v), at);
   double current = norm(r);
   if (!std::isfinite(current)) current = std::numeric_limits<double>::infinity();
   for (int it = 0; it < max_iterations && current > kConvergedResidual; ++it) {
@@ -86,7 +99,9 @@ TwoLevelSolve TwoLevelShells::solve(double X, const TwoLevelState& guess, int ma
       Eigen::Vector4d shifted = v;
       const double h = c == 0 ? -steps[c] : steps[c];  // a1 steps inward
       shifted[c] += h;
-      const std::array<double, 4> rs = residuals(X, physical(shifted));
+      // The loads leave the sums as they are (they depend on the radii alone).
+      const std::array<double, 4> rs =
+          c >= 2 ? residuals(X, physical(shifted), at) : residuals(X, physical(shifted));
       for (int k = 0; k < 4; ++k) J(k, c) = (rs[k] - r[k]) / h;
     }
     const Eigen::Vector4d step = J.partialPivLu().solve(-Eigen::Vector4d(r[0], r[1], r[2], r[3]));
@@ -98,11 +113,13 @@ TwoLevelSolve TwoLevelShells::solve(double X, const TwoLevelState& guess, int ma
       trial[1] = std::max(trial[1], 0.0);
       trial[3] = std::max(trial[3], 0.0);
       if (!admissible(trial)) continue;
-      const std::array<double, 4> rt = residuals(X, physical(trial));
+      const Sums trial_sums = sums(trial[0], a2_of(trial[1]));
+      const std::array<double, 4> rt = residuals(X, physical(trial), trial_sums);
       const double n = norm(rt);
       if (std::isfinite(n) && n < current) {
         v = trial;
         r = rt;
+        at = trial_sums;
         current = n;
         accepted = true;
       }

@@ -48,9 +48,18 @@ class TwoLevelShells {
   std::array<double, 4> residuals(double X, const std::array<double, 4>& z) const;
 
  private:
+  /// The neighbourhood sums about a level-1 and a level-2 punch: what the radii fix.
+  struct Sums {
+    ShellSums::Sums same[2];
+    ShellSums::Sums cross[2];
+  };
+  Sums sums(double a1, double a2) const;
+  std::array<double, 4> residuals(double X, const std::array<double, 4>& z, const Sums& sums) const;
+
   ContactProblem problem_;
   double K_P_, K_d_;
   const ShellSums* sums_;  ///< shared, scaled by l
+  double margin_;          ///< Localization::merge_margin: the spots stay this far from touching
 };
 
 }  // namespace punchsweep::model

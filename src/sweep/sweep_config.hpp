@@ -12,6 +12,7 @@
 #include "map/grid.hpp"
 #include "map/quantities.hpp"
 #include "model/creep_laws.hpp"
+#include "model/localization.hpp"
 #include "model/material.hpp"
 
 namespace punchsweep::sweep {
@@ -70,6 +71,8 @@ struct SweepConfig {
   /// text as given in load_text; empty: a step).
   model::LoadShape loading{};
   std::string load_text;
+  /// [model] localization: the localization model (paper by default).
+  model::Localization localization{};
   /// The unit of every time: the material's time_unit, or T_eps.
   std::string time_unit() const { return materials.empty() ? "T_eps" : materials.front()->time_unit(); }
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps

@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "model/point_evaluation.hpp"
-#include "model/single_level.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::sweep {
@@ -61,7 +60,7 @@ std::size_t require_axis(const map::Grid& grid, std::string_view name) {
 
 TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C,
                              std::vector<double> times, map::Quantities quantities, const ReferenceConfig& reference,
-                             model::LoadShape loading)
+                             model::LoadShape loading, model::Localization localization)
     : grid_(grid),
       law_(law),
       C_(C),
@@ -71,7 +70,8 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
       dh_(require_axis(grid, model::kHeightDifference)),
       pbar_(require_axis(grid, model::kPressure)),
       s_(require_axis(grid, model::kExponent)),
-      loading_(std::move(loading)) {
+      loading_(std::move(loading)),
+      localization_(localization) {
   for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
   law_axes_ = material_.size();
   if (const std::size_t ramp = grid.find(model::ramp_time_parameter().name); ramp < grid.rank()) {
@@ -150,17 +150,17 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
       model::ContactProblem problem;
       problem.l = value(l_, il);
       problem.shape = model::Shape{static_cast<int>(value(s_, is)), C_};
-      const model::SingleLevel single(problem.l, problem.shape);
+      problem.localization = localization_;
       const std::size_t gl = box.start[l_] + il;
       const std::size_t gs = box.start[s_] + is;
       for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
         Touch scratch;
         Touch& t = cache_ ? touch_[(gl * n[s_] + gs) * n[dh_] + box.start[dh_] + idh] : scratch;
         if (!t.ready) {
-          const model::Touchdown computed = model::touchdown(single, value(dh_, idh));
           model::ContactProblem at_dh = problem;
           at_dh.dh = value(dh_, idh);
-          t = Touch{computed, std::make_shared<const model::LongTermGuide>(at_dh), true};
+          const bool paper = localization_.is_paper();
+          t = Touch{model::touchdown(at_dh), paper ? std::make_shared<const model::LongTermGuide>(at_dh) : nullptr, true};
         }
         touch[idh] = t.touchdown;
         guide[idh] = t.guide;
@@ -229,6 +229,7 @@ model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vecto
   problem.dh = value(dh_);
   problem.pbar0 = value(pbar_);
   problem.shape = model::Shape{static_cast<int>(value(s_)), C_};
+  problem.localization = localization_;
   law_values->clear();
   for (std::size_t k = 0; k < law_axes_; ++k) law_values->push_back(value(material_[k]));
   problem.loading = material_.size() > law_axes_ ? model::LoadShape::ramp(value(material_.back())) : loading_;

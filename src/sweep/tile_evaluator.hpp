@@ -35,10 +35,11 @@ class TileEvaluator {
  public:
   /// Throws std::invalid_argument when the grid's axes are not model::sweep_axes of `law`
   /// or the reference sample does not fit the grid.
-  /// `loading` is the load's shape where the grid has no ramp_time axis (a step by default).
+  /// `loading` is the load's shape where the grid has no ramp_time axis (a step by default);
+  /// `localization` the model's (the paper's by default).
   TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C, std::vector<double> times,
                 map::Quantities quantities, const ReferenceConfig& reference = {},
-                model::LoadShape loading = {});
+                model::LoadShape loading = {}, model::Localization localization = {});
 
   /// Whether evaluate() also runs the BEM reference (when this evaluator has one).
   enum class Reference { evaluated, skipped };
@@ -68,7 +69,7 @@ class TileEvaluator {
   };
   struct Touch {
     model::Touchdown touchdown;
-    std::shared_ptr<const model::LongTermGuide> guide;  ///< built with the touchdown
+    std::shared_ptr<const model::LongTermGuide> guide;  ///< built with the touchdown (the paper's model only)
     bool ready = false;
   };
 
@@ -83,6 +84,7 @@ class TileEvaluator {
   std::vector<std::size_t> material_;
   std::size_t law_axes_ = 0;               ///< how many of material_ are the law's
   model::LoadShape loading_;               ///< without a ramp_time axis
+  model::Localization localization_;
   std::optional<ReferenceSample> sample_;
   reference::ReferenceOptions reference_options_;
   bool cache_ = false;                 ///< the run-wide caches fit (else: per tile)

@@ -164,7 +164,7 @@ TEST(SpotAverage, agrees_with_a_fine_quadrature_up_to_nearly_touching_spots) {
 }
 
 TEST(ShellSums, the_tables_equal_the_direct_sums) {
-  // Random radii over the tables' reach (x + y up to 0.98 of touching), both sums, for the
+  // Random radii over the tables. reach (x + y up to the merge margin), both sums, for the
   // refined default's D and a small one, s = 1 and 2.
   std::mt19937_64 random(12);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -177,7 +177,7 @@ TEST(ShellSums, the_tables_equal_the_direct_sums) {
       EXPECT_NEAR(table.carried, exact.carried, ShellSums::kTableTolerance) << "x = " << x;
       EXPECT_NEAR(table.depth, exact.depth, ShellSums::kTableTolerance * (1.0 + exact.depth)) << "x = " << x;
       const double y = 0.5 * unit(random);
-      const double x2 = std::min(0.5, 0.98 * unit(random) * (1.0 / std::numbers::sqrt2 - y));
+      const double x2 = std::min(0.5, unit(random) * (Localization::kMergeMargin / std::numbers::sqrt2 - y));
       const ShellSums::Sums cross = sums.cross(x2, y);
       const ShellSums::Sums cross_exact = sums.cross_direct(x2, y);
       EXPECT_NEAR(cross.carried, cross_exact.carried, ShellSums::kTableTolerance) << "x = " << x2 << ", y = " << y;
@@ -195,12 +195,14 @@ TEST(Localization, parses_its_spellings_and_refuses_others) {
   EXPECT_TRUE(k.distributed);
   EXPECT_EQ(k.spelling(), "shells:30");
   EXPECT_FALSE(parse_localization("point-shells:3").distributed);
-  for (const char* bad : {"shells:0", "shells:", "shells:3x", "shells:1001", "refined", ""}) {
+  const Localization refined = parse_localization("refined");
+  EXPECT_EQ(refined.spelling(), "shells:" + std::to_string(Localization::kRefinedShells));
+  for (const char* bad : {"shells:0", "shells:", "shells:3x", "shells:1001", "refine", ""}) {
     try {
       parse_localization(bad);
       ADD_FAILURE() << bad;
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("valid: paper (= point-shells:2), shells:D"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("valid: paper (= point-shells:2), refined (= shells:200), shells:D"), std::string::npos) << e.what();
     }
   }
 }

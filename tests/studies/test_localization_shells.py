@@ -108,7 +108,7 @@ def test_the_engines_distributed_shells_meet_the_bem_through_the_cli():
 def test_a_bad_localization_is_refused_with_the_valid_forms():
     done = single_level_cli("--l", "0.75", "--s", "2", "--localization", "shells:0")
     assert done.returncode == 2 and done.stdout == ""
-    assert "valid: paper (= point-shells:2), shells:D" in done.stderr
+    assert "valid: paper (= point-shells:2), refined (= shells:200), shells:D" in done.stderr
 
 
 def test_the_engines_two_level_family_meets_the_bem_through_the_cli():
@@ -148,3 +148,36 @@ def test_under_creep_distributed_neighbours_need_radii_that_follow_the_loads():
         a1, a2 = study.two_level_creep(ref["l"], ref["dh"], ref["X"], J_AT, D=60, distributed=True,
                                        guess=(0.28, 0.06), frozen=False)
         assert abs(a2 / ref["a2"] - 1) < 6e-3 and abs(a1 / ref["a1"] - 1) < 2e-3, (ref, a1, a2)
+
+
+def point_cli(l, dh, pbar, times, localization):
+    return json.loads(subprocess.run([BINARY, "point", "--l", str(l), "--dh", str(dh), "--pbar", str(pbar), "--T",
+                                      str(study.T_CREEP), "--s", "2", "--times", times, "--localization",
+                                      localization, "--format", "json"], check=True, capture_output=True,
+                                     text=True).stdout)
+
+
+def test_the_refined_point_meets_the_bem_under_creep():
+    # `punchsweep point --localization refined` (D = 200 distances of distributed neighbours,
+    # nominal-pressure radii that follow the loads) at t = 5 (SLS T = 2.5) against the BEM at
+    # N = 512: a2 within 0.5% and a1 within 0.3%, where the paper's model is 3-7% small in a2
+    # and 1.4-3.0% large in a1 (docs/model.md, section 11; the study's free radii: 0.2%, 0.11%).
+    for ref in BEM_CREEP:
+        refined = point_cli(ref["l"], ref["dh"], ref["X"], f"{study.T_AT:g}", "refined")
+        assert refined["localization"] == "shells:200" and refined["valid"] is True
+        a1, a2 = refined["series"]["a1"][0], refined["series"]["a2"][0]
+        assert abs(a2 / ref["a2"] - 1) < 5e-3 and abs(a1 / ref["a1"] - 1) < 3e-3, (ref, a1, a2)
+        paper = point_cli(ref["l"], ref["dh"], ref["X"], f"{study.T_AT:g}", "paper")["series"]
+        assert abs(paper["a2"][0] / ref["a2"] - 1) > 2.5e-2, ref
+
+
+def test_the_refined_t_star_meets_the_bems_where_spots_are_apart():
+    # The paper's delayed point l = 0.75, dh = 0.05, pbar0 = 0.025 (SLS T = 2.5): the BEM at
+    # N = 512 touches at t* = 1.0360 T_eps (bracketed to 1e-3); the paper's model at 1.2726
+    # (+22.8%), the refined one within 1%. At pbar0 = 0.06, dh = 0.075 level 2 touches where
+    # the spots nearly touch (a1 = 0.44 l), the dense-contact error of section 11: the
+    # refined model is early there by 5% (BEM 0.8736), the paper's late by 17.6%.
+    refined = point_cli(0.75, 0.05, 0.025, "0", "refined")
+    assert refined["regime"] == "delayed" and abs(refined["t_star"] / 1.0360 - 1) < 1e-2, refined["t_star"]
+    dense = point_cli(0.75, 0.075, 0.06, "0", "refined")
+    assert dense["regime"] == "delayed" and -0.06 < dense["t_star"] / 0.8736 - 1 < -0.04, dense["t_star"]

@@ -18,6 +18,8 @@ refused "grid.s" "$PUNCHSWEEP" sweep "${small[@]}" --grid.s 2.5 --output x.h5
 refused "grid.dh" "$PUNCHSWEEP" sweep "${small[@]}" --grid.dh -0.1 --output x.h5
 refused "grid.pbar" "$PUNCHSWEEP" sweep "${small[@]}" --grid.pbar 0 --output x.h5
 refused "model.C" "$PUNCHSWEEP" sweep "${small[@]}" --model.C 0 --output x.h5
+refused "model.localization = shells:0: localization 'shells:0' is not one; valid range: paper, refined, shells:D or point-shells:D with 1 <= D <= 1000" \
+  "$PUNCHSWEEP" sweep "${small[@]}" --model.localization shells:0 --output x.h5
 refused "time.times" "$PUNCHSWEEP" sweep "${small[@]}" --time.times 0,-1 --output x.h5
 refused "output.quantities" "$PUNCHSWEEP" sweep "${small[@]}" --quantities lots --output x.h5
 refused "grid.bogus" "$PUNCHSWEEP" sweep "${small[@]}" --grid.bogus 3 --output x.h5
@@ -43,6 +45,8 @@ refused "the finished map keep/done.h5 was made with another configuration" \
 echo "not hdf5" > junk.h5
 refused "junk.h5 is not an HDF5 file" "$PUNCHSWEEP" sweep "${small[@]}" --output junk.h5 --resume
 rm junk.h5
+# The localization model is part of what a map is: a paper map is not resumed as refined.
+refused "model.localization" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume --model.localization refined
 refused "give only one" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume --overwrite
 # An output that cannot become a regular file is refused before any work.
 mkdir adir.h5
