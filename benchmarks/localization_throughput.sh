@@ -5,7 +5,7 @@
 # exponent s, are built inside it).
 # Targets (issue 12): the refined model >= 5e5 points/s per rank with --quantities regime
 # and >= 1e4 points/s per rank in full mode.
-# Grids: the default grid's ranges, coarser: 8 x 23 x 9 x 24 x 3 = 119,232 points (regime),
+# Grids: the default grid's ranges, coarser: 4 x 23 x 5 x 24 x 3 = 33,120 points (regime),
 # 4 x 10 x 5 x 12 x 3 = 7,200 points (full, times 0, 0.5, 1, 2, 5).
 # Usage: bash benchmarks/localization_throughput.sh [punchsweep-binary] [repeats]
 set -euo pipefail
@@ -15,7 +15,7 @@ repeats=${2:-2}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-regime=(--grid.l 'linspace(0.5, 1.25, 8)' --grid.dh 'linspace(0.01, 0.12, 23)' --grid.T 'linspace(2, 10, 9)'
+regime=(--grid.l 'linspace(0.5, 1.25, 4)' --grid.dh 'linspace(0.01, 0.12, 23)' --grid.T 'linspace(2, 10, 5)'
         --grid.pbar 'logspace(0.005, 0.08, 24)' --grid.s 1,2,3 --quantities regime)
 full=(--grid.l 'linspace(0.5, 1.25, 4)' --grid.dh 'linspace(0.01, 0.12, 10)' --grid.T 'linspace(2, 10, 5)'
       --grid.pbar 'logspace(0.005, 0.08, 12)' --grid.s 1,2,3 --time.times '0, 0.5, 1, 2, 5' --quantities full)

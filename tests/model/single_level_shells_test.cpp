@@ -15,6 +15,7 @@
 #include "model/lattice.hpp"
 #include "model/localization.hpp"
 #include "model/pressure.hpp"
+#include "model/regime.hpp"
 #include "model/shell_sums.hpp"
 #include "model/single_level.hpp"
 #include "model/elastic_two_level.hpp"
@@ -107,19 +108,19 @@ TEST(SingleLevelShells, joins_the_two_level_family_at_touchdown) {
     const double l = 0.75;
     const double dh = 0.05;
     const SingleLevelShells single(l, sphere, loc);
-    double lo = 1e-4, hi = 1.0;  // X* by bisection on h(X) = dh
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (single.displacement_difference(single.contact_radius(mid), mid) < dh ? lo : hi) = mid;
-    }
-    const double X_star = 0.5 * (lo + hi);
-    const double a1_star = single.contact_radius(X_star);
+    // X* where h(a1) = dh along the solution curve (h and X grow with a1 up to the radius
+    // limit; past it the phase has no state, so X is not bisected beyond).
+    const Touchdown touch = touchdown(single, dh);
+    const double X_star = touch.X_star;
+    const double a1_star = touch.a1_star;
+    ASSERT_NEAR(single.displacement_difference(a1_star), dh, 1e-12);
     double a2[2];
     double a1_gap[2];
     for (int k = 0; k < 2; ++k) {
       const double X = X_star * (1.0 + (k == 0 ? 1e-2 : 1e-4));
       const ContactProblem p{l, dh, X, sphere};
-      const TwoLevelSolve r = TwoLevelShells(p, loc).solve(X, TwoLevelState{a1_star, 0.02 * l, 0.0, 0.0});
+      // From the touchdown state (the single-level loads), as the point evaluation starts.
+      const TwoLevelSolve r = TwoLevelShells(p, loc).solve(X, TwoLevelState{a1_star, 0.02 * l, X * l * l, 0.0});
       ASSERT_TRUE(r.converged) << loc.spelling() << ", X/X* - 1 = " << X / X_star - 1;
       a2[k] = r.state.a2;
       a1_gap[k] = std::abs(r.state.a1 / a1_star - 1.0);
