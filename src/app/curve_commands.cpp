@@ -42,7 +42,6 @@ std::string json_array(const std::vector<double>& values) {
 
 bool positive(double v) { return v > 0.0; }
 
-
 }  // namespace
 
 int run_single_level_command(const std::vector<std::string>& args, std::ostream& out) {
@@ -182,9 +181,7 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
   const std::vector<double> moduli = read_real_list(vm, "E", "E > 0 (in E0*)", positive);
   const std::string format = read_choice(vm, "format", {"json", "markdown"});
 
-  const model::Localization localization = read_localization(vm);
-
-  problem.localization = localization;
+  problem.localization = read_localization(vm);
   std::vector<double> P1, P2, a1, a2, A1, A2, touches, converged;
   for (const double E : moduli) {
     model::ElasticTwoLevel r = model::solve_elastic(problem, E);

@@ -1,9 +1,5 @@
 #include "model/elastic_two_level.hpp"
 
-#include "model/regime.hpp"
-#include "model/single_level_phase.hpp"
-#include "model/two_level_shells.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -17,6 +13,8 @@
 #include "model/regime.hpp"
 #include "model/ring_loads.hpp"
 #include "model/single_level.hpp"
+#include "model/single_level_phase.hpp"
+#include "model/two_level_shells.hpp"
 
 namespace punchsweep::model {
 

@@ -72,13 +72,18 @@ std::string PointSummary::reason(std::string_view time_unit) const {
     else text << "at t = " << t << " " << time_unit;
     return text.str();
   };
-  // "l = " for the paper's rule, "0.98 l = " under the refined model's merge margin.
+  // "l = " for the paper's rule, "0.98 l = " under the refined model's merge margin, and
+  // why the rule is there.
   const auto margin_text = [this](std::string_view limit) {
     std::ostringstream text;
     if (merge_margin < 1.0) text << merge_margin << " ";
     text << limit << " = ";
     return text.str();
   };
+  const std::string separate_spots =
+      merge_margin < 1.0 ? " R (localization needs separate spots; the refined model's ring averages hold only with "
+                           "gaps of at least 2%)"
+                         : " R (localization needs separate spots)";
   switch (validity) {
     case Validity::same_level_overlap:
       if (std::isinf(violation_value)) {
@@ -87,13 +92,11 @@ std::string PointSummary::reason(std::string_view time_unit) const {
         break;
       }
       out << "spots of one level merge " << when(invalid_at) << ": 2 a_i = " << violation_value << " R >= "
-          << margin_text("l") << violation_limit << " R (localization needs separate spots"
-          << (merge_margin < 1.0 ? "; the refined model's ring averages hold only with gaps of at least 2%)" : ")");
+          << margin_text("l") << violation_limit << separate_spots;
       break;
     case Validity::cross_level_overlap:
       out << "level-1 and level-2 spots merge " << when(invalid_at) << ": a1 + a2 = " << violation_value << " R >= "
-          << margin_text("l/sqrt(2)") << violation_limit << " R (localization needs separate spots"
-          << (merge_margin < 1.0 ? "; the refined model's ring averages hold only with gaps of at least 2%)" : ")");
+          << margin_text("l/sqrt(2)") << violation_limit << separate_spots;
       break;
     case Validity::no_solution:
       out << "the two-level equations have no admissible solution " << when(invalid_at);
@@ -406,7 +409,7 @@ PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep
     }
     // The summary decided validity; a snapshot only tells how early a break is visible.
     if (!out.valid() && snap.t < out.first_seen && std::isfinite(snap.a1) &&
-        check_state(snap.a1, snap.a2, problem.l, problem.localization.merge_margin()).code != Validity::valid) {
+        check_state(snap.a1, snap.a2, problem.l, out.merge_margin).code != Validity::valid) {
       out.first_seen = snap.t;
     }
   }

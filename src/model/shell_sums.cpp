@@ -1,12 +1,14 @@
 #include "model/shell_sums.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <tuple>
 #include <utility>
 
 #include "model/chebyshev.hpp"
@@ -29,11 +31,12 @@ constexpr double kCrossEdge = Localization::kMergeMargin * kCrossReach;
 /// steps from a state at the margin. The sums are analytic well beyond (the spots touch a
 /// further 1 - kMergeMargin away).
 constexpr double kEdgeSlack = 1e-3;
-/// Interpolation nodes: per patch along the piecewise variable, along y (two intervals),
-/// and of the far shells' smooth piece.
+/// Interpolation nodes: per patch along the piecewise variable, along y (in kIntervals
+/// equal intervals of [0, kRadiusReach]), and of the far shells' smooth piece.
 constexpr int kPatchNodes = 16;
 constexpr int kCrossNodes = 16;
-constexpr std::array<double, 5> kCrossIntervals{0.0, 0.125, 0.25, 0.375, kRadiusReach};
+constexpr int kIntervals = 4;
+constexpr double kIntervalWidth = kRadiusReach / kIntervals;
 constexpr int kFarNodes = 16;
 /// The first patches halve toward the touching edge this many times.
 constexpr int kGradedPatches = 6;
@@ -118,12 +121,11 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
   // The near shells: patches along the variable in which the nearest spots touch, split
   // until the interpolant meets the direct sums at points between its nodes.
   std::vector<double> u_nodes;
-  for (int iv = 0; iv + 1 < static_cast<int>(kCrossIntervals.size()); ++iv) {
-    for (const double y : chebyshev::nodes(kCrossNodes, kCrossIntervals[iv], kCrossIntervals[iv + 1])) {
+  for (int iv = 0; iv < kIntervals; ++iv) {
+    for (const double y : chebyshev::nodes(kCrossNodes, iv * kIntervalWidth, (iv + 1) * kIntervalWidth)) {
       u_nodes.push_back(y);
     }
   }
-  const int intervals = static_cast<int>(kCrossIntervals.size()) - 1;
   const auto build = [&](double lo, double hi, bool cross, std::vector<Patch>* patches) {
     const int nu = cross ? kCrossNodes : 1;
     // Values at one t over all y nodes (cross) or at x = t (same).
@@ -141,7 +143,7 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
     std::function<void(double, double)> refine = [&](double a, double b) {
       std::vector<double> values;
       for (const double t : chebyshev::nodes(kPatchNodes, a, b)) column(t, &values);
-      Patch patch{a, b, tensor_coefficients(values, kPatchNodes, cross ? intervals : 1, nu)};
+      Patch patch{a, b, tensor_coefficients(values, kPatchNodes, cross ? kIntervals : 1, nu)};
       bool good = true;
       for (const double share : {0.25, 0.5, 0.75}) {
         const double t = a + share * (b - a);
@@ -149,9 +151,9 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
         column(t, &exact);
         for (int col = 0; good && col < static_cast<int>(exact.size()) / 2; ++col) {
           const int iv = col / nu;
-          const double u = cross ? chebyshev::unit(u_nodes[col], kCrossIntervals[iv], kCrossIntervals[iv + 1]) : 0.0;
+          const double u = cross ? chebyshev::unit(u_nodes[col], iv * kIntervalWidth, (iv + 1) * kIntervalWidth) : 0.0;
           const Sums table =
-              tensor_value(patch.coefficients, kPatchNodes, cross ? intervals : 1, nu, chebyshev::unit(t, a, b), iv, u);
+              tensor_value(patch.coefficients, kPatchNodes, cross ? kIntervals : 1, nu, chebyshev::unit(t, a, b), iv, u);
           good = within(table, Sums{exact[2 * col], exact[2 * col + 1]}, 0.1);
         }
       }
@@ -189,15 +191,11 @@ ShellSums::Sums ShellSums::direct(const std::vector<DistanceShell>& shells, doub
 }
 
 ShellSums::Sums ShellSums::same_direct(double x) const {
-  const Sums near = direct(same_near_, x, x);
-  const Sums far = direct(same_far_, x, x);
-  return {near.carried + far.carried, near.depth + far.depth};
+  return direct(same_near_, x, x) + direct(same_far_, x, x);
 }
 
 ShellSums::Sums ShellSums::cross_direct(double x, double y) const {
-  const Sums near = direct(cross_near_, x, y);
-  const Sums far = direct(cross_far_, x, y);
-  return {near.carried + far.carried, near.depth + far.depth};
+  return direct(cross_near_, x, y) + direct(cross_far_, x, y);
 }
 
 ShellSums::Sums ShellSums::same(double x) const {
@@ -205,9 +203,8 @@ ShellSums::Sums ShellSums::same(double x) const {
   const auto patch = std::upper_bound(same_patches_.begin(), same_patches_.end(), x,
                                       [](double v, const Patch& p) { return v < p.hi; });
   const Patch& p = patch == same_patches_.end() ? same_patches_.back() : *patch;
-  const Sums near = tensor_value(p.coefficients, kPatchNodes, 1, 1, chebyshev::unit(x, p.lo, p.hi), 0, 0.0);
-  const Sums far = tensor_value(same_far_table_, kFarNodes, 1, 1, chebyshev::unit(x, 0.0, kRadiusReach), 0, 0.0);
-  return {near.carried + far.carried, near.depth + far.depth};
+  return tensor_value(p.coefficients, kPatchNodes, 1, 1, chebyshev::unit(x, p.lo, p.hi), 0, 0.0) +
+         tensor_value(same_far_table_, kFarNodes, 1, 1, chebyshev::unit(x, 0.0, kRadiusReach), 0, 0.0);
 }
 
 ShellSums::Sums ShellSums::cross(double x, double y) const {
@@ -218,13 +215,11 @@ ShellSums::Sums ShellSums::cross(double x, double y) const {
   const auto patch = std::upper_bound(cross_patches_.begin(), cross_patches_.end(), t,
                                       [](double v, const Patch& p) { return v < p.hi; });
   const Patch& p = patch == cross_patches_.end() ? cross_patches_.back() : *patch;
-  const int iv = std::min(static_cast<int>(y / kCrossIntervals[1]), static_cast<int>(kCrossIntervals.size()) - 2);
-  const int intervals = static_cast<int>(kCrossIntervals.size()) - 1;
-  const Sums near = tensor_value(p.coefficients, kPatchNodes, intervals, kCrossNodes, chebyshev::unit(t, p.lo, p.hi),
-                                 iv, chebyshev::unit(y, kCrossIntervals[iv], kCrossIntervals[iv + 1]));
-  const Sums far = tensor_value(cross_far_table_, kFarNodes, 1, kFarNodes, chebyshev::unit(x, 0.0, kRadiusReach), 0,
-                                chebyshev::unit(y, 0.0, kRadiusReach));
-  return {near.carried + far.carried, near.depth + far.depth};
+  const int iv = std::min(static_cast<int>(y / kIntervalWidth), kIntervals - 1);
+  return tensor_value(p.coefficients, kPatchNodes, kIntervals, kCrossNodes, chebyshev::unit(t, p.lo, p.hi), iv,
+                      chebyshev::unit(y, iv * kIntervalWidth, (iv + 1) * kIntervalWidth)) +
+         tensor_value(cross_far_table_, kFarNodes, 1, kFarNodes, chebyshev::unit(x, 0.0, kRadiusReach), 0,
+                      chebyshev::unit(y, 0.0, kRadiusReach));
 }
 
 const ShellSums& shell_sums(int s, Localization localization) {

@@ -35,6 +35,7 @@ class ShellSums {
   struct Sums {
     double carried = 0.0;  ///< dimensionless
     double depth = 0.0;    ///< in 1/l
+    Sums operator+(const Sums& other) const { return {carried + other.carried, depth + other.depth}; }
   };
 
   /// Agreement of the tables with the direct sums: carried to this, depth to this times

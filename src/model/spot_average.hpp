@@ -17,7 +17,8 @@ namespace punchsweep::model {
 /// takes the fewest angles (16, 48, then doubling up to kMaxAngles) with (a/d)^(2n) <=
 /// 1e-16, and kRadialNodes radial nodes in every rule, so that the rule's radial error (1e-8
 /// for the cone's log-singular pressure, s = 1) is a smooth function of the geometry.
-/// Near and far rules agree to 1e-13 at their thresholds (`single_level_shells_test.cpp`).
+/// It agrees with a 2000 x 20000 midpoint sum to 1e-8 up to a gap of a hundredth of the
+/// spot's radius (`single_level_shells_test.cpp`).
 class SpotAverage {
  public:
   explicit SpotAverage(int s);
