@@ -45,6 +45,13 @@ inline double clenshaw(const double* c, int n, double u, int stride = 1) {
   return u * b1 - b2 + c[0];
 }
 
+/// T_0(u) .. T_(n-1)(u) into T (n >= 1), by T_(k+1) = 2u T_k - T_(k-1).
+inline void polynomials(double u, int n, double* T) {
+  T[0] = 1.0;
+  if (n > 1) T[1] = u;
+  for (int k = 2; k < n; ++k) T[k] = 2.0 * u * T[k - 1] - T[k - 2];
+}
+
 /// [lo, hi] -> [-1, 1].
 inline double unit(double x, double lo, double hi) { return (2.0 * x - lo - hi) / (hi - lo); }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -52,6 +53,73 @@ RootResult newton_bisect_increasing(F&& f, double lo, double hi, double guess, d
     }
   }
   result.x = x;
+  return result;
+}
+
+/// Brent's method (van Wijngaarden-Dekker-Brent: inverse quadratic interpolation, secant
+/// and bisection, as zeroin) for a root of a continuous f in [lo, hi], f(lo) <= 0 <= f(hi)
+/// the caller's promise (fa, fb: those values). Superlinear where f is smooth, never slower
+/// than bisection by much. Stops when the bracket is below x_tol + 4 eps |x|.
+template <class F>
+RootResult brent(F&& f, double lo, double hi, double f_lo, double f_hi, double x_tol, int max_iterations = 200) {
+  constexpr double kEps = 0x1p-52;
+  double a = lo, b = hi, c = hi;
+  double fa = f_lo, fb = f_hi, fc = f_hi;
+  double d = 0.0, e = 0.0;
+  RootResult result;
+  for (int it = 1; it <= max_iterations; ++it) {
+    result.iterations = it;
+    if ((fb > 0.0 && fc > 0.0) || (fb < 0.0 && fc < 0.0)) {
+      c = a;
+      fc = fa;
+      e = d = b - a;
+    }
+    if (std::abs(fc) < std::abs(fb)) {
+      a = b;
+      b = c;
+      c = a;
+      fa = fb;
+      fb = fc;
+      fc = fa;
+    }
+    const double tol = 2.0 * kEps * std::abs(b) + 0.5 * x_tol;
+    const double xm = 0.5 * (c - b);
+    if (std::abs(xm) <= tol || fb == 0.0) {
+      result.x = b;
+      result.converged = true;
+      return result;
+    }
+    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
+      const double s = fb / fa;
+      double p, q;
+      if (a == c) {
+        p = 2.0 * xm * s;
+        q = 1.0 - s;
+      } else {
+        const double qa = fa / fc;
+        const double r = fb / fc;
+        p = s * (2.0 * xm * qa * (qa - r) - (b - a) * (r - 1.0));
+        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+      }
+      if (p > 0.0) q = -q;
+      p = std::abs(p);
+      if (2.0 * p < std::min(3.0 * xm * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = xm;
+        e = d;
+      }
+    } else {
+      d = xm;
+      e = d;
+    }
+    a = b;
+    fa = fb;
+    b += std::abs(d) > tol ? d : std::copysign(tol, xm);
+    fb = f(b);
+  }
+  result.x = b;
   return result;
 }
 

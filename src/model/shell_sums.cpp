@@ -71,15 +71,28 @@ std::vector<double> tensor_coefficients(const std::vector<double>& values, int n
   return out;
 }
 
-/// The tensor interpolant at (unit t, interval, unit u).
+/// The tensor interpolant at (unit t, interval, unit u): sum_k T_k(t) sum_m T_m(u) c[k][m],
+/// summed over k first for every (m, value) at once (independent lanes that vectorize,
+/// where nested Clenshaw recurrences wait on each other).
 ShellSums::Sums tensor_value(const std::vector<double>& c, int nt, int intervals, int nu, double t, int interval,
                              double u) {
-  double inner[2][64];
+  constexpr int kMax = 64;
+  double Tt[kMax];
+  double Tu[kMax];
+  chebyshev::polynomials(t, nt, Tt);
+  chebyshev::polynomials(u, nu, Tu);
+  double along_u[2 * kMax] = {};  // [m][value]
   for (int k = 0; k < nt; ++k) {
     const double* row = c.data() + (k * intervals + interval) * nu * 2;
-    for (int v = 0; v < 2; ++v) inner[v][k] = nu == 1 ? row[v] : chebyshev::clenshaw(row + v, nu, u, 2);
+    const double w = Tt[k];
+    for (int j = 0; j < 2 * nu; ++j) along_u[j] += w * row[j];
   }
-  return {chebyshev::clenshaw(inner[0], nt, t), chebyshev::clenshaw(inner[1], nt, t)};
+  ShellSums::Sums out;
+  for (int m = 0; m < nu; ++m) {
+    out.carried += Tu[m] * along_u[2 * m];
+    out.depth += Tu[m] * along_u[2 * m + 1];
+  }
+  return out;
 }
 
 }  // namespace

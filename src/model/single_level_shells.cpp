@@ -70,17 +70,28 @@ double SingleLevelShells::displacement_difference_rate(double a1) const {
 double SingleLevelShells::contact_radius(double X) const {
   if (!(X > 0.0)) return 0.0;
   if (std::isinf(X)) return a_limit_;
-  const auto below = [&](double a) { return creep_scaled_pressure(a) < X; };
-  const auto [lo, hi] = bisect_boundary(below, 0.0, a_limit_, 1e-15);
-  return 0.5 * (lo + hi);
+  // The balance as K_P a^(s+1) - X capacity(a): increasing, and smooth where X(a) has its
+  // pole, so Brent's method meets 1e-15 in about ten evaluations (bisection took fifty).
+  const auto f = [&](double a) { return K_P_ * ipow(a, shape_.s + 1) - X * capacity(a, sums(a)); };
+  const double hi = a_limit_ * (1.0 - 1e-15);
+  const double f_hi = f(hi);
+  if (!(f_hi > 0.0)) return hi;
+  return brent(f, 0.0, hi, f(0.0), f_hi, 1e-15 * a_limit_).x;
 }
 
 double SingleLevelShells::contact_radius_at_gap(double dh) const {
   if (!(dh > 0.0)) return 0.0;
-  const auto below = [&](double a) { return displacement_difference(a) < dh; };
-  if (below(a_limit_)) return a_limit_;
-  const auto [lo, hi] = bisect_boundary(below, 0.0, a_limit_, 1e-15);
-  return 0.5 * (lo + hi);
+  const auto f = [&](double a) { return displacement_difference(a) - dh; };
+  const double hi = a_limit_ * (1.0 - 1e-15);
+  const double f_hi = f(hi);
+  if (f_hi < 0.0) return hi;
+  if (!std::isfinite(f_hi)) {
+    // h without bound at the limit (point loads): bisection, which needs no finite end.
+    const auto below = [&](double a) { return f(a) < 0.0; };
+    const auto [lo, up] = bisect_boundary(below, 0.0, a_limit_, 1e-15);
+    return 0.5 * (lo + up);
+  }
+  return brent(f, 0.0, hi, -dh, f_hi, 1e-15 * a_limit_).x;
 }
 
 }  // namespace punchsweep::model

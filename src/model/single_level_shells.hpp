@@ -37,10 +37,11 @@ class SingleLevelShells {
   /// dh/da1 along the solution curve (Richardson-extrapolated central differences, to
   /// about 1e-10); NaN within 1e-3 a1 of radius_limit().
   double displacement_difference_rate(double a1) const;
-  /// The contact radius at X (bisection to 1e-15 relative), in (0, radius_limit()).
+  /// The contact radius at X (Brent's method to 1e-15 of radius_limit()), in (0, radius_limit()).
   double contact_radius(double X) const;
-  /// The contact radius at which h(a1) = dh along the solution curve (bisection to 1e-15
-  /// relative; h grows with a1); 0 for dh <= 0, radius_limit() where h stays below dh.
+  /// The contact radius at which h(a1) = dh along the solution curve (Brent's method to
+  /// 1e-15 of radius_limit(); h grows with a1); 0 for dh <= 0, radius_limit() where h stays
+  /// below dh.
   double contact_radius_at_gap(double dh) const;
   /// Where the balance needs X -> infinity, or where spread neighbours count as merged with
   /// the spot (a = Localization::kMergeMargin l/2), whichever is first.
