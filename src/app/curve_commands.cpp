@@ -15,7 +15,6 @@
 #include "model/localization.hpp"
 #include "model/single_level.hpp"
 #include "model/single_level_shells.hpp"
-#include "model/two_level_shells.hpp"
 #include "model/two_level.hpp"
 
 namespace po = boost::program_options;

@@ -14,7 +14,7 @@
 #include "model/ring_loads.hpp"
 #include "model/single_level.hpp"
 #include "model/single_level_phase.hpp"
-#include "model/two_level_shells.hpp"
+#include "model/shells_branch.hpp"
 
 namespace punchsweep::model {
 
@@ -150,30 +150,25 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
   return out;
 }
 
-ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide) {
+ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide,
+                              const ShellsBranch* branch) {
   if (problem.localization.is_paper()) return solve_elastic_two_level(problem, E, guide);
+  std::optional<ShellsBranch> own;
+  if (branch == nullptr) branch = &own.emplace(problem, touchdown(problem));
   ElasticTwoLevel out;
   const double X = problem.pbar0 / E;
-  const Touchdown touch = touchdown(problem);
-  out.level2_touches = touch.X_star <= X;
-  const TwoLevelShells system(problem, problem.localization);
+  out.level2_touches = branch->X_star() <= X;
   if (!out.level2_touches) {
     // Level 2 does not touch: the family's single-level state.
     const double a1 = visit_single_level(problem, [&](const auto& single) { return single.contact_radius(X); });
     out.state = TwoLevelState{a1, 0.0, problem.l * problem.l * X, 0.0};
-    out.radii = system.radii(out.state, X);
     out.converged = true;
-    return out;
+  } else {
+    const TwoLevelSolve r = branch->at(X);
+    out.state = r.state;
+    out.converged = r.converged;
   }
-  TwoLevelSolve r{TwoLevelState{}, false};
-  if (const ElasticTwoLevel paper = solve_elastic_two_level(problem, E); paper.converged && paper.level2_touches) {
-    r = system.solve(X, TwoLevelState{paper.state.a1, paper.state.a2, 0.0, 0.0});
-  }
-  const double l = problem.l;
-  if (!r.converged) r = system.continue_to(TwoLevelState{touch.a1_star, 0.0, l * l * touch.X_star, 0.0}, touch.X_star, X);
-  out.state = r.state;
-  out.radii = system.radii(r.state, X);
-  out.converged = r.converged;
+  out.radii = branch->radii(out.state, X);
   return out;
 }
 

@@ -34,10 +34,13 @@ std::optional<ElasticTwoLevel> solve_elastic_jointly(const ContactProblem& probl
 ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
                                         const LongTermGuide* guide = nullptr);
 
+class ShellsBranch;
+
 /// The elastic two-level state under the problem's localization: solve_elastic_two_level
-/// for the paper's; for the family of docs/model.md, section 11 (TwoLevelShells, radii from
-/// the loads) Newton from the paper's state, else the branch from the family's own
-/// touchdown. `guide` serves the paper's only.
-ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide = nullptr);
+/// for the paper's; for the family of docs/model.md, section 11 (radii from the loads) the
+/// state of its branch at X = pbar/E (ShellsBranch, built here if null). `guide` serves
+/// the paper's only, `branch` the family's.
+ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide = nullptr,
+                              const ShellsBranch* branch = nullptr);
 
 }  // namespace punchsweep::model

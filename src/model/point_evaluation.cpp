@@ -11,7 +11,6 @@
 
 #include "model/lattice.hpp"
 #include "model/single_level_phase.hpp"
-#include "model/two_level_shells.hpp"
 
 namespace punchsweep::model {
 namespace {
@@ -180,9 +179,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
       out.t_start = c.t_star;
       out.X_start = c.X_star;
       out.start = TwoLevelState{c.a1_star, 0.0, l * l * c.X_star, 0.0};
-      if (!problem.localization.is_paper()) {
-        out.radii = TwoLevelShells(problem, problem.localization).radii(out.start, c.X_star);
-      }
+      if (!problem.localization.is_paper()) out.radii = parts.branch->radii(out.start, c.X_star);
     }
     // Newton from the guide's guess (else by continuation from the start), whatever times a
     // caller samples: the long-term state is the same function of the point in a regime map
@@ -196,10 +193,8 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
         }
         if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
       } else {
-        // The family's radii follow the loads: Newton from the start state, else the branch.
-        const TwoLevelShells system(problem, problem.localization);
-        r = system.solve(X_inf, out.start);
-        if (!r.converged) r = system.continue_to(out.start, out.X_start, X_inf);
+        // The family's radii follow the loads: its state is its branch's at X(inf).
+        r = parts.branch->at(X_inf);
       }
     }
     out.a1_inf = r.converged ? r.state.a1 : kNaN;
@@ -241,37 +236,58 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   return out;
 }
 
-ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide) {
-  if (problem.loading.is_step()) return solve_elastic(problem, 1.0 / creep.creep_initial(), guide);
+ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide,
+                                    const ShellsBranch* branch) {
+  if (problem.loading.is_step()) return solve_elastic(problem, 1.0 / creep.creep_initial(), guide, branch);
   ContactProblem at_once = problem;
   at_once.pbar0 = problem.pbar0 * problem.loading.jump();
   at_once.loading = LoadShape{};
-  return solve_elastic(at_once, 1.0 / creep.creep_initial(), guide);
+  return solve_elastic(at_once, 1.0 / creep.creep_initial(), guide, branch);
 }
 
-PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
-  const LongTermGuide guide(problem);
+namespace {
+
+/// The summary, computing every part, with the localization's guide or branch.
+PointSummary summarize_with(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide,
+                            const ShellsBranch* branch) {
   SummaryParts parts;
-  parts.guide = &guide;
+  parts.guide = guide;
+  parts.branch = branch;
   parts.classification = classify(problem, creep);
   single_level_ends(problem, creep, &parts.h_0, &parts.h_inf, &parts.a1_inf_single);
   std::optional<ElasticTwoLevel> elastic;
   if (parts.classification.elastic_start) {
-    elastic = solve_elastic_start(problem, creep, &guide);
+    elastic = solve_elastic_start(problem, creep, guide, branch);
     parts.elastic = &*elastic;
   }
   return summarize_point(problem, creep, parts);
 }
 
+}  // namespace
+
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
+  if (problem.localization.is_paper()) {
+    const LongTermGuide guide(problem);
+    return summarize_with(problem, creep, &guide, nullptr);
+  }
+  const ShellsBranch branch(problem, touchdown(problem));
+  return summarize_with(problem, creep, nullptr, &branch);
+}
+
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options) {
-  return evaluate_point(problem, creep, options, summarize_point(problem, creep));
+  if (problem.localization.is_paper()) {
+    const LongTermGuide guide(problem);
+    return evaluate_point(problem, creep, options, summarize_with(problem, creep, &guide, nullptr));
+  }
+  const ShellsBranch branch(problem, touchdown(problem));
+  return evaluate_point(problem, creep, options, summarize_with(problem, creep, nullptr, &branch), &branch);
 }
 
 namespace {
 
 /// The series of evaluate_point, with the two-level `system` of the problem's localization
-/// (TwoLevelSystem at the frozen radii, or TwoLevelShells) and its single-level phase.
+/// (TwoLevelSystem at the frozen radii, or the family's ShellsBranch) and its single-level phase.
 template <class System, class Single>
 PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep, const EvaluationOptions& options,
                             const PointSummary& summary, const System& system, const Single& single) {
@@ -419,12 +435,13 @@ PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep
 }  // namespace
 
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep, const EvaluationOptions& options,
-                           const PointSummary& summary) {
+                           const PointSummary& summary, const ShellsBranch* branch) {
   return visit_single_level(problem, [&](const auto& single) {
     if (problem.localization.is_paper()) {
       return evaluate_series(problem, creep, options, summary, TwoLevelSystem(problem, summary.radii), single);
     }
-    return evaluate_series(problem, creep, options, summary, TwoLevelShells(problem, problem.localization), single);
+    if (branch != nullptr) return evaluate_series(problem, creep, options, summary, *branch, single);
+    return evaluate_series(problem, creep, options, summary, ShellsBranch(problem, touchdown(problem)), single);
   });
 }
 

@@ -11,6 +11,7 @@
 #include "model/load_history.hpp"
 #include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
+#include "model/shells_branch.hpp"
 #include "model/two_level.hpp"
 #include "model/validity.hpp"
 
@@ -91,7 +92,8 @@ struct SummaryParts {
   double a1_inf_single = 0.0;      ///< single-level radius at J(inf): the same subset
   /// solve_elastic_start(), per (l, s, C, dh, pbar); required when classification.elastic_start
   const ElasticTwoLevel* elastic = nullptr;
-  const LongTermGuide* guide = nullptr;      ///< per (l, s, C, dh); required
+  const LongTermGuide* guide = nullptr;      ///< per (l, s, C, dh); required under the paper's localization
+  const ShellsBranch* branch = nullptr;      ///< per (l, s, C, dh); required under the family's
 };
 
 /// h(0), h(inf) and the single-level radius at J(inf) (eq 9.5, 9.10).
@@ -99,8 +101,10 @@ void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, dou
                        double* h_inf, double* a1_inf_single);
 
 /// The elastic two-level state at t = 0+ (eqs 9.12-9.15): modulus 1/J(0) under the nominal
-/// pressure applied at once, pbar(0+) = pbar0 phi(0+). `guide` may be null.
-ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide);
+/// pressure applied at once, pbar(0+) = pbar0 phi(0+). `guide` (the paper's) and `branch`
+/// (the family's; built here if null) may be null.
+ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide,
+                                    const ShellsBranch* branch = nullptr);
 
 /// The summary from its parts (`elastic` must be set when classification.elastic_start).
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
@@ -117,8 +121,10 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options = {});
 
-/// The same, from a summary already computed by summarize_point() for this point.
+/// The same, from a summary already computed by summarize_point() for this point; under a
+/// localization of the family its two-level branch (built here if null).
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
-                           const EvaluationOptions& options, const PointSummary& summary);
+                           const EvaluationOptions& options, const PointSummary& summary,
+                           const ShellsBranch* branch = nullptr);
 
 }  // namespace punchsweep::model

@@ -140,6 +140,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
 
   std::vector<model::Touchdown> touch(c[dh_]);
   std::vector<std::shared_ptr<const model::LongTermGuide>> guide(c[dh_]);
+  std::vector<std::shared_ptr<const model::ShellsBranch>> branch(c[dh_]);
   std::vector<Ends> ends(materials * c[pbar_]);
   // The elastic start at t = 0 has modulus 1/J(0) = 1 E0* for every material (the unit of
   // pressure), so it is shared across the material axes.
@@ -159,11 +160,16 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
         if (!t.ready) {
           model::ContactProblem at_dh = problem;
           at_dh.dh = value(dh_, idh);
-          const bool paper = localization_.is_paper();
-          t = Touch{model::touchdown(at_dh), paper ? std::make_shared<const model::LongTermGuide>(at_dh) : nullptr, true};
+          const model::Touchdown touchdown = model::touchdown(at_dh);
+          if (localization_.is_paper()) {
+            t = Touch{touchdown, std::make_shared<const model::LongTermGuide>(at_dh), nullptr, true};
+          } else {
+            t = Touch{touchdown, nullptr, std::make_shared<const model::ShellsBranch>(at_dh, touchdown), true};
+          }
         }
         touch[idh] = t.touchdown;
         guide[idh] = t.guide;
+        branch[idh] = t.branch;
       }
       for (std::size_t m = 0; m < materials; ++m) {
         for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
@@ -198,9 +204,10 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
             parts.h_inf = e.h_inf;
             parts.a1_inf_single = e.a1_inf_single;
             parts.guide = guide[idh].get();
+            parts.branch = branch[idh].get();
             if (parts.classification.elastic_start) {
               auto& cached = elastic[idh * c[pbar_] + ip];
-              if (!cached) cached = model::solve_elastic_start(problem, law, guide[idh].get());
+              if (!cached) cached = model::solve_elastic_start(problem, law, parts.guide, parts.branch);
               parts.elastic = &*cached;
             }
             const model::PointSummary summary = model::summarize_point(problem, law, parts);
@@ -208,7 +215,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
             const std::size_t i =
                 il * stride[l_] + idh * stride[dh_] + material_offset[m] + ip * stride[pbar_] + is * stride[s_];
             if (full) {
-              const model::PointResult r = model::evaluate_point(problem, law, options, summary);
+              const model::PointResult r = model::evaluate_point(problem, law, options, summary, parts.branch);
               store_point<map::Source::model>(r, i, out, kAll);  // a series solve may flag the point
               store_series<map::Source::model>(r.series, i, out, kAll);
             } else {

@@ -70,6 +70,7 @@ class TileEvaluator {
   struct Touch {
     model::Touchdown touchdown;
     std::shared_ptr<const model::LongTermGuide> guide;  ///< built with the touchdown (the paper's model only)
+    std::shared_ptr<const model::ShellsBranch> branch;  ///< likewise (the family's only)
     bool ready = false;
   };
 
