@@ -192,13 +192,17 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
 }
 
 ShellSums::Sums ShellSums::direct(const std::vector<DistanceShell>& shells, double x, double y) const {
-  const auto carried = [x](double r) { return 2.0 / kPi * (x / std::sqrt(r * r - x * x) - std::asin(x / r)); };
-  const auto depth = [x](double r) { return 1.0 / (kPi * std::sqrt(r * r - x * x)); };
+  // The two kernels at distance r share sqrt(r^2 - x^2).
+  const auto kernels = [x](double r) {
+    const double root = std::sqrt(r * r - x * x);
+    return std::array<double, 2>{2.0 / kPi * (x / root - std::asin(x / r)), 1.0 / (kPi * root)};
+  };
   const bool spread = localization_.distributed && y > 0.0;
   Sums out;
   for (const DistanceShell& shell : shells) {
-    out.carried += shell.count * (spread ? spot_(carried, shell.distance, y, x) : carried(shell.distance));
-    out.depth += shell.count * (spread ? spot_(depth, shell.distance, y, x) : depth(shell.distance));
+    const std::array<double, 2> k = spread ? spot_.both(kernels, shell.distance, y, x) : kernels(shell.distance);
+    out.carried += shell.count * k[0];
+    out.depth += shell.count * k[1];
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -28,17 +29,28 @@ class SpotAverage {
 
   template <class F>
   double operator()(F&& f, double rho, double a, double reach = 0.0) const {
+    return both([&f](double d) { return std::array<double, 1>{f(d)}; }, rho, a, reach)[0];
+  }
+
+  /// The averages of several kernels at once: f(d) returns std::array<double, N>, one value
+  /// per kernel (the distances, and whatever the kernels share, computed once). Each
+  /// average is the same sum, in the same order, as operator() of that kernel alone.
+  template <class F>
+  auto both(F&& f, double rho, double a, double reach = 0.0) const {
+    using Values = decltype(f(1.0));
     const Rule& rule = pick(a / (rho - reach));
-    double sum = 0.0;
+    Values sum{};
     for (std::size_t i = 0; i < rule.sin.size(); ++i) {
       const double r = a * rule.sin[i];
-      double ring = 0.0;
+      Values ring{};
       for (std::size_t j = 0; j < rule.cos_angle.size(); ++j) {
-        ring += f(std::sqrt(rho * rho + r * r + 2.0 * rho * r * rule.cos_angle[j]));
+        const Values v = f(std::sqrt(rho * rho + r * r + 2.0 * rho * r * rule.cos_angle[j]));
+        for (std::size_t k = 0; k < v.size(); ++k) ring[k] += v[k];
       }
-      sum += rule.weight[i] * ring;
+      for (std::size_t k = 0; k < ring.size(); ++k) sum[k] += rule.weight[i] * ring[k];
     }
-    return sum / static_cast<double>(rule.cos_angle.size());
+    for (double& value : sum) value /= static_cast<double>(rule.cos_angle.size());
+    return sum;
   }
 
  private:
