@@ -7,6 +7,7 @@
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/sweep_command.hpp"
+#include "app/table_cache.hpp"
 #include "app/usage_error.hpp"
 #include "app/version.hpp"
 
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
+    punchsweep::app::use_table_cache();
     if (args[0] == "point") return punchsweep::app::run_point_command(rest, std::cout);
     if (args[0] == "sweep") return punchsweep::app::run_sweep_command(rest);
     if (args[0] == "single-level") return punchsweep::app::run_single_level_command(rest, std::cout);

@@ -97,7 +97,9 @@ ShellSums::Sums tensor_value(const std::vector<double>& c, int nt, int intervals
 
 }  // namespace
 
-ShellSums::ShellSums(int s, Localization localization) : localization_(localization), spot_(s) {
+ShellSums::ShellSums(int s, Localization localization) : ShellSums(s, localization, true) {}
+
+ShellSums::ShellSums(int s, Localization localization, bool build) : localization_(localization), s_(s), spot_(s) {
   for (const DistanceShell& shell : kept_neighbours(1, localization.shells)) {
     const bool near = shell.distance < kNearDistance;
     if (shell.level == 1) {
@@ -108,8 +110,10 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
       cross_count_ += shell.count;
     }
   }
-  if (!localization.distributed) return;
+  if (localization.distributed && build) build_tables();
+}
 
+void ShellSums::build_tables() {
   // The far shells: one smooth piece in x (same) and in (x, y) (cross).
   const std::vector<double> xf = chebyshev::nodes(kFarNodes, 0.0, kRadiusReach);
   {
@@ -191,6 +195,102 @@ ShellSums::ShellSums(int s, Localization localization) : localization_(localizat
   tabulated_ = true;
 }
 
+std::vector<double> ShellSums::header() const {
+  // Format 1. Whatever the construction depends on besides the code: a change of any of
+  // these makes saved tables stale (and from_tables checks the direct sums as well).
+  return {1.0,
+          static_cast<double>(s_),
+          static_cast<double>(localization_.shells),
+          localization_.distributed ? 1.0 : 0.0,
+          kPatchNodes,
+          kCrossNodes,
+          kIntervals,
+          kFarNodes,
+          kGradedPatches,
+          kMinPatch,
+          kNearDistance,
+          kEdgeSlack,
+          kTableTolerance,
+          Localization::kMergeMargin,
+          SpotAverage::kRadialNodes,
+          SpotAverage::kMaxAngles};
+}
+
+std::vector<double> ShellSums::tables() const {
+  if (!tabulated_) return {};
+  std::vector<double> out = header();
+  for (const std::vector<Patch>* patches : {&same_patches_, &cross_patches_}) {
+    out.push_back(static_cast<double>(patches->size()));
+    for (const Patch& p : *patches) {
+      out.insert(out.end(), {p.lo, p.hi, static_cast<double>(p.coefficients.size())});
+      out.insert(out.end(), p.coefficients.begin(), p.coefficients.end());
+    }
+  }
+  for (const std::vector<double>* table : {&same_far_table_, &cross_far_table_}) {
+    out.push_back(static_cast<double>(table->size()));
+    out.insert(out.end(), table->begin(), table->end());
+  }
+  return out;
+}
+
+std::optional<ShellSums> ShellSums::from_tables(int s, Localization localization, const std::vector<double>& tables) {
+  if (!localization.distributed) return std::nullopt;
+  ShellSums out(s, localization, false);
+  const std::vector<double> header = out.header();
+  if (tables.size() < header.size() || !std::equal(header.begin(), header.end(), tables.begin())) return std::nullopt;
+  std::size_t at = header.size();
+  // A count at `at`, no larger than what is left and than `most`.
+  const auto count = [&](std::size_t most) -> std::optional<std::size_t> {
+    if (at >= tables.size()) return std::nullopt;
+    const double n = tables[at++];
+    if (!(n >= 0.0 && n <= static_cast<double>(std::min(most, tables.size() - at)) && n == std::floor(n))) {
+      return std::nullopt;
+    }
+    return static_cast<std::size_t>(n);
+  };
+  const auto take = [&](std::size_t n, std::vector<double>* into) {
+    into->assign(tables.begin() + static_cast<std::ptrdiff_t>(at), tables.begin() + static_cast<std::ptrdiff_t>(at + n));
+    at += n;
+  };
+  const std::size_t patch_sizes[2] = {2 * kPatchNodes, 2 * kPatchNodes * kIntervals * kCrossNodes};
+  std::vector<Patch>* patches[2] = {&out.same_patches_, &out.cross_patches_};
+  for (int k = 0; k < 2; ++k) {
+    const std::optional<std::size_t> n = count(tables.size());
+    if (!n || *n == 0) return std::nullopt;
+    for (std::size_t i = 0; i < *n; ++i) {
+      if (at + 3 > tables.size()) return std::nullopt;
+      Patch p{tables[at], tables[at + 1], {}};
+      at += 2;
+      const std::optional<std::size_t> size = count(patch_sizes[k]);
+      if (!size || *size != patch_sizes[k]) return std::nullopt;
+      take(*size, &p.coefficients);
+      patches[k]->push_back(std::move(p));
+    }
+  }
+  const std::size_t far_sizes[2] = {2 * kFarNodes, 2 * kFarNodes * kFarNodes};
+  std::vector<double>* far[2] = {&out.same_far_table_, &out.cross_far_table_};
+  for (int k = 0; k < 2; ++k) {
+    const std::optional<std::size_t> size = count(far_sizes[k]);
+    if (!size || *size != far_sizes[k]) return std::nullopt;
+    take(*size, far[k]);
+  }
+  if (at != tables.size()) return std::nullopt;
+  out.tabulated_ = true;
+  // The tables must still be the sums this build computes (three radii, within the
+  // tables' tolerance).
+  if (!within(out.same(0.2), out.same_direct(0.2), 1.0) || !within(out.cross(0.2, 0.15), out.cross_direct(0.2, 0.15), 1.0) ||
+      !within(out.cross(0.3, 0.3), out.cross_direct(0.3, 0.3), 1.0)) {
+    return std::nullopt;
+  }
+  return out;
+}
+
+std::string ShellSums::table_name(int s, Localization localization) {
+  std::string name = "shell_sums-s" + std::to_string(s) + "-" + localization.spelling();
+  std::replace(name.begin(), name.end(), ':', '_');
+  return name;
+}
+
 ShellSums::Sums ShellSums::direct(const std::vector<DistanceShell>& shells, double x, double y) const {
   // The two kernels at distance r share sqrt(r^2 - x^2).
   const auto kernels = [x](double r) {
@@ -239,12 +339,40 @@ ShellSums::Sums ShellSums::cross(double x, double y) const {
                       chebyshev::unit(y, 0.0, kRadiusReach));
 }
 
-const ShellSums& shell_sums(int s, Localization localization) {
+namespace {
+
+std::mutex& registry_mutex() {
   static std::mutex mutex;
+  return mutex;
+}
+
+ShellSumsStore& store() {
+  static ShellSumsStore store;
+  return store;
+}
+
+}  // namespace
+
+void set_shell_sums_store(ShellSumsStore s) {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  store() = std::move(s);
+}
+
+const ShellSums& shell_sums(int s, Localization localization) {
   static std::map<std::tuple<int, int, bool>, std::unique_ptr<const ShellSums>> built;
-  const std::lock_guard<std::mutex> lock(mutex);
+  const std::lock_guard<std::mutex> lock(registry_mutex());
   auto& entry = built[{s, localization.shells, localization.distributed}];
-  if (!entry) entry = std::make_unique<const ShellSums>(s, localization);
+  if (entry) return *entry;
+  const std::string name = ShellSums::table_name(s, localization);
+  const bool stored = localization.distributed && store().load && store().save;
+  if (stored) {
+    if (std::optional<ShellSums> saved = ShellSums::from_tables(s, localization, store().load(name))) {
+      entry = std::make_unique<const ShellSums>(std::move(*saved));
+      return *entry;
+    }
+  }
+  entry = std::make_unique<const ShellSums>(s, localization);
+  if (stored) store().save(name, entry->tables());
   return *entry;
 }
 

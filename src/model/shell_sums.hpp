@@ -1,6 +1,9 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "model/lattice.hpp"
@@ -44,6 +47,18 @@ class ShellSums {
 
   ShellSums(int s, Localization localization);
 
+  /// The tables as numbers, for a cache on disk (the layers above own files): a header that
+  /// names the table's construction (format, s, D, spread, node counts, tolerances, the
+  /// spot rule), then every patch and piece. Empty for point loads (nothing tabulated).
+  std::vector<double> tables() const;
+  /// Tables from tables() of an earlier process, if their header matches this build's
+  /// construction of (s, localization) and they meet the direct sums at three radii; else
+  /// empty (the caller builds them). Bit for bit the tables that were saved.
+  static std::optional<ShellSums> from_tables(int s, Localization localization, const std::vector<double>& tables);
+
+  /// A file name for the tables of (s, localization): shell_sums-s<s>-<spelling>.
+  static std::string table_name(int s, Localization localization);
+
   Sums same(double x) const;
   Sums cross(double x, double y) const;
 
@@ -58,6 +73,11 @@ class ShellSums {
   const Localization& localization() const { return localization_; }
 
  private:
+  /// The shells of (s, localization), tables not built (build_tables() or from_tables()).
+  ShellSums(int s, Localization localization, bool build);
+  void build_tables();
+  /// The header of tables(): what the tables' construction depends on.
+  std::vector<double> header() const;
   Sums direct(const std::vector<DistanceShell>& shells, double x, double y) const;
 
   /// A piecewise Chebyshev table of the near shells' sums in one variable over patches of
@@ -68,6 +88,7 @@ class ShellSums {
   };
 
   Localization localization_;
+  int s_;
   SpotAverage spot_;
   std::vector<DistanceShell> same_near_, same_far_;    ///< distances in l
   std::vector<DistanceShell> cross_near_, cross_far_;  ///< distances in l
@@ -80,7 +101,17 @@ class ShellSums {
   std::vector<double> cross_far_table_;  ///< in (x, y)
 };
 
-/// The sums of (s, localization), built on first use and shared (thread-safe).
+/// Where the tables of a distributed localization may be kept between processes: load
+/// returns what save stored under a name (empty if nothing). The application sets one
+/// (a cache folder); without one every process builds its tables.
+struct ShellSumsStore {
+  std::function<std::vector<double>(const std::string& name)> load;
+  std::function<void(const std::string& name, const std::vector<double>& tables)> save;
+};
+void set_shell_sums_store(ShellSumsStore store);
+
+/// The sums of (s, localization), on first use read from the store (if set and its tables
+/// pass from_tables) or else built (and given to the store), then shared (thread-safe).
 const ShellSums& shell_sums(int s, Localization localization);
 
 }  // namespace punchsweep::model

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <functional>
 #include <stdexcept>
@@ -186,6 +187,43 @@ TEST(ShellSums, the_tables_equal_the_direct_sums) {
           << "x = " << x2 << ", y = " << y;
     }
   }
+}
+
+TEST(ShellSums, saved_tables_read_back_bit_for_bit_and_stale_ones_are_refused) {
+  // The tables a cache keeps between processes (tables() / from_tables()): read back they
+  // give the same bits; another construction's, a damaged or a cut table is refused.
+  const Localization six{6, true};
+  const ShellSums built(1, six);
+  const std::vector<double> saved = built.tables();
+  ASSERT_FALSE(saved.empty());
+  const std::optional<ShellSums> read = ShellSums::from_tables(1, six, saved);
+  ASSERT_TRUE(read.has_value());
+  EXPECT_EQ(read->tables(), saved);
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 0.34);
+  for (int k = 0; k < 50; ++k) {
+    const double x = unit(random);
+    const double y = unit(random);
+    EXPECT_EQ(read->same(x).carried, built.same(x).carried);
+    EXPECT_EQ(read->same(x).depth, built.same(x).depth);
+    EXPECT_EQ(read->cross(x, y).carried, built.cross(x, y).carried);
+    EXPECT_EQ(read->cross(x, y).depth, built.cross(x, y).depth);
+  }
+  EXPECT_FALSE(ShellSums::from_tables(2, six, saved).has_value());                 // another s
+  EXPECT_FALSE(ShellSums::from_tables(1, Localization{7, true}, saved).has_value());  // another D
+  EXPECT_FALSE(ShellSums::from_tables(1, Localization{6, false}, saved).has_value()); // point loads
+  std::vector<double> cut(saved.begin(), saved.end() - 1);
+  EXPECT_FALSE(ShellSums::from_tables(1, six, cut).has_value());
+  std::vector<double> longer = saved;
+  longer.push_back(0.0);
+  EXPECT_FALSE(ShellSums::from_tables(1, six, longer).has_value());
+  // The far table's constant term (the last 512 numbers are the cross far table) off by
+  // 1e-6: the sums no longer meet the direct ones.
+  std::vector<double> damaged = saved;
+  damaged[damaged.size() - 512] += 1e-6;
+  EXPECT_FALSE(ShellSums::from_tables(1, six, damaged).has_value());
+  EXPECT_FALSE(ShellSums::from_tables(1, six, {}).has_value());
+  EXPECT_EQ(ShellSums::table_name(2, parse_localization("refined")), "shell_sums-s2-shells_200");
 }
 
 TEST(Localization, parses_its_spellings_and_refuses_others) {
