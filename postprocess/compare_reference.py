@@ -59,6 +59,8 @@ def main(argv: list[str]) -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--bem-grid", type=int, default=256, help="BEM grid nodes per side N (even; default 256)")
     p.add_argument("--no-convergence", action="store_true", help="skip the 2N x 2N runs")
+    p.add_argument("--localization", help="the model's localization: paper, refined, shells:D or point-shells:D "
+                                          "(default: the engine's, refined)")
     p.add_argument("--binary", help="punchsweep executable (default: PATH or build/)")
     args = p.parse_args(argv)
     if args.bem_grid < 16 or args.bem_grid % 2:
@@ -70,7 +72,7 @@ def main(argv: list[str]) -> int:
           f"| a2(0) | a1(5) | a2(5) | largest model-BEM difference | BEM change {n} -> {2 * n} |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for label, l, dh, pbar in CASES:
-        model = run(binary, "point", l, dh, pbar, [])
+        model = run(binary, "point", l, dh, pbar, ["--localization", args.localization] if args.localization else [])
         bem = run(binary, "reference", l, dh, pbar, ["--bem-grid", str(n)])
         m, b = quantities(model), quantities(bem)
         diffs = [rel(m[k], b[k]) for k in m if b[k] not in (None, 0.0) and m[k] not in (None, 0.0)]

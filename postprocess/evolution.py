@@ -42,6 +42,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     point.add_argument("--C", type=float, help="shape constant (> 0; default 0.5)")
     point.add_argument("--t-max", type=float, help="last time, in T_eps (default 5)")
     point.add_argument("--samples", type=int, help="number of times (default 101)")
+    point.add_argument("--localization", help="paper, refined, shells:D or point-shells:D (default: the "
+                                              "engine's, refined)")
     point.add_argument("--binary", help="punchsweep executable (default: $PUNCHSWEEP, PATH or build/)")
     from_map = p.add_argument_group("map mode (reads a --quantities full regime map)")
     from_map.add_argument("--map", metavar="MAP.h5",
@@ -79,7 +81,7 @@ def from_engine(args: argparse.Namespace) -> tuple[dict, str]:
     times = list(np.linspace(0.0, args.t_max, args.samples))
     try:
         result = run_point(find_binary(args.binary), args.l, args.dh, args.T, args.pbar, args.s,
-                           args.C, times)
+                           args.C, times, args.localization)
     except (ValueError, FileNotFoundError) as e:
         raise pm.MapError(str(e)) from None
     title = f"l = {args.l} R, dh = {args.dh} R, T = {args.T}, pbar0 = {args.pbar}, s = {args.s}"

@@ -23,12 +23,16 @@ def find_binary(explicit: str | None = None) -> str:
 
 
 def run_point(binary: str, l: float, dh: float, T: float, pbar: float, s: int,
-              C: float = 0.5, times: list[float] | None = None) -> dict:
-    """Evaluate one point; returns the parsed JSON (keys: regime, t_star, h_0, ..., series)."""
+              C: float = 0.5, times: list[float] | None = None, localization: str | None = None) -> dict:
+    """Evaluate one point; returns the parsed JSON (keys: regime, t_star, h_0, ..., series,
+    and localization first unless it is the paper's). `localization`: paper, refined,
+    shells:D or point-shells:D; None for the engine's default (refined)."""
     args = [binary, "point", "--l", repr(l), "--dh", repr(dh), "--T", repr(T),
             "--pbar", repr(pbar), "--s", str(s), "--C", repr(C), "--format", "json"]
     if times:
         args += ["--times", ",".join(repr(t) for t in times)]
+    if localization:
+        args += ["--localization", localization]
     done = subprocess.run(args, capture_output=True, text=True)
     if done.returncode != 0:
         raise ValueError(done.stderr.strip())

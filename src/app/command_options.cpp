@@ -124,9 +124,9 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
   return problem;
 }
 
-void add_localization_option(po::options_description& opts) {
+void add_localization_option(po::options_description& opts, const std::string& fallback) {
   opts.add_options()(
-      "localization", po::value<std::string>()->value_name("L")->default_value("paper"),
+      "localization", po::value<std::string>()->value_name("L")->default_value(fallback),
       ("the localization model (docs/model.md, section 11): paper (the paper's eqs 9.5-9.19, "
        "= point-shells:2), refined (= shells:" +
        std::to_string(model::Localization::kRefinedShells) +

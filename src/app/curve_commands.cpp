@@ -62,7 +62,7 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
       ("a1-points", po::value<std::string>()->value_name("N")->default_value("101"),
        "points of the h(a1) curve, evenly spaced in a1 from 0 to l/2; an integer in [2, 100000]")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or csv");
-  add_localization_option(opts);
+  add_localization_option(opts, "paper");
   const po::variables_map vm = parse_command(args, opts, "single-level");
   if (vm.count("help")) {
     out << "usage: punchsweep single-level --l L --s S [--C C] [--pbar P --T T] [options]\n\n" << opts << "\n";
@@ -169,7 +169,7 @@ int run_elastic_command(const std::vector<std::string>& args, std::ostream& out)
        "moduli E, comma-separated, in E0* (1 instantaneous, 1/T long-term); each > 0")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"),
        "output format: json or markdown (a table like Table 9.1)");
-  add_localization_option(opts);
+  add_localization_option(opts, "paper");
   const po::variables_map vm = parse_command(args, opts, "elastic");
   if (vm.count("help")) {
     out << "usage: punchsweep elastic --l L --dh DH --pbar P --s S [--C C] [--E LIST] [--format FMT]\n\n" << opts << "\n";

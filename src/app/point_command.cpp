@@ -25,7 +25,7 @@ po::options_description point_options(const PointMaterial& material) {
       "time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
   add_point_options(opts, material.spec);
   add_material_options(opts);
-  add_localization_option(opts);
+  add_localization_option(opts, "refined");
   opts.add_options()
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");

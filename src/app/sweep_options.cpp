@@ -86,7 +86,7 @@ std::vector<KeySpec> make_keys() {
                   "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time in T_eps "
                   "or the material's unit), from 0:phi0 to t_n:1; empty: a step (a ramp: grid.ramp_time)",
                   "empty, or points from 0:phi0 to t_n:1 with phi non-decreasing in [0, 1]", Fixed::model_load_table});
-  keys.push_back({"model", "localization", "L", "paper",
+  keys.push_back({"model", "localization", "L", "refined",
                   "the localization model (docs/model.md, section 11): paper (the paper's eqs 9.5-9.19), refined "
                   "(= shells:" + std::to_string(model::Localization::kRefinedShells) +
                       ", the member closest to the periodic BEM), shells:D (the punches of both levels within the D "

@@ -83,11 +83,17 @@ TEST(Cli, times_must_increase_strictly_and_have_no_empty_item_as_in_a_sweep) {
   EXPECT_NE(r.out.find("\n1.5,"), std::string::npos) << "linspace() is accepted as in a sweep";
 }
 TEST(Cli, a_point_beyond_double_precision_is_flagged_not_valid) {
-  const CliRun r = run_cli("point --l 1e308 --dh 0.05 --T 2.5 --pbar 0.06 --s 2 --format json");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("\"h_0\": null"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\"valid\": false"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("not finite"), std::string::npos) << r.out;
+  for (const char* localization : {"paper", "refined"}) {
+    const CliRun r = run_cli("point --l 1e308 --dh 0.05 --T 2.5 --pbar 0.06 --s 2 --format json --localization " +
+                             std::string(localization));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("\"h_0\": null"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"valid\": false"), std::string::npos) << r.out;
+    // The paper's closed forms overflow; the refined model finds no admissible state.
+    EXPECT_NE(r.out.find(std::string(localization) == "paper" ? "not finite" : "no admissible solution"),
+              std::string::npos)
+        << r.out;
+  }
 }
 TEST(Cli, stray_argument_is_named) {
   const CliRun r = run_cli("point " + kGood + " extra");
@@ -129,8 +135,14 @@ TEST(Cli, help_names_every_option_with_its_unit_and_range) {
 }
 
 TEST(Cli, json_output_has_the_contract_keys_and_the_model_numbers) {
-  const CliRun r = run_cli("point " + kGood + " --format json");
+  // The default is the refined model, which names itself first.
+  const CliRun refined = run_cli("point " + kGood + " --format json");
+  ASSERT_EQ(refined.exit_code, 0) << refined.err;
+  EXPECT_EQ(refined.out.rfind("{\n  \"localization\": \"shells:200\",\n  \"regime\": ", 0), 0u) << refined.out;
+  // The paper's model: its numbers (docs/model.md, section 9), and no localization key.
+  const CliRun r = run_cli("point " + kGood + " --format json --localization paper");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("localization"), std::string::npos) << r.out;
   for (const char* key : {"\"regime\": \"delayed\"", "\"t_star\": ", "\"h_0\": ", "\"h_inf\": ",
                           "\"valid\": true", "\"reason\": \"\"", "\"a1_inf\": ", "\"a2_inf\": ",
                           "\"area_fraction_inf\": ", "\"series\": {", "\"t\": [0, 0.5, 1, 2, 5]",

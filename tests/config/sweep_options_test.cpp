@@ -431,20 +431,25 @@ TEST(SweepOptions, resolved_text_reads_back_to_the_same_config) {
 
 TEST(SweepOptions, identity_lists_the_content_keys_in_shortest_decimals) {
   const SweepConfig c = parse({"--output", "elsewhere.h5", "--quiet"});
-  ASSERT_EQ(c.identity.size(), 14u);
+  ASSERT_EQ(c.identity.size(), 15u);
   EXPECT_EQ(c.identity[0], "grid.l = 0.5, 0.625, 0.75, 0.875, 1, 1.125, 1.25");
   EXPECT_EQ(c.identity[2], "grid.T = 2, 3, 4, 5, 6, 7, 8, 9, 10");
   EXPECT_EQ(c.identity[3].rfind("grid.pbar = 0.005, ", 0), 0u) << c.identity[3];
   EXPECT_EQ(c.identity[4], "grid.s = 1, 2, 3");
   EXPECT_EQ(c.identity[5], "model.C = 0.5");
   EXPECT_EQ(c.identity[6], "model.creep_law = standard_linear_solid");
-  EXPECT_EQ(c.identity[7], "time.times = 0, 0.5, 1, 2, 5");
-  EXPECT_EQ(c.identity[8], "output.quantities = full");
-  EXPECT_EQ(c.identity[9], "run.chunk = 4096");
-  EXPECT_EQ(c.identity[10], "reference.method = none");
-  EXPECT_EQ(c.identity[11], "reference.grid = 128");
-  EXPECT_EQ(c.identity[12], "reference.sample = all");
-  EXPECT_EQ(c.identity[13], "reference.seed = 1");
+  EXPECT_EQ(c.identity[7], "model.localization = shells:200");  // the default, refined
+  EXPECT_EQ(c.identity[8], "time.times = 0, 0.5, 1, 2, 5");
+  EXPECT_EQ(c.identity[9], "output.quantities = full");
+  EXPECT_EQ(c.identity[10], "run.chunk = 4096");
+  EXPECT_EQ(c.identity[11], "reference.method = none");
+  EXPECT_EQ(c.identity[12], "reference.grid = 128");
+  EXPECT_EQ(c.identity[13], "reference.sample = all");
+  EXPECT_EQ(c.identity[14], "reference.seed = 1");
+  // The paper's model leaves no line (maps made when it was the default resume).
+  const SweepConfig paper = parse({"--model.localization", "paper"});
+  ASSERT_EQ(paper.identity.size(), 14u);
+  EXPECT_EQ(paper.identity[7], "time.times = 0, 0.5, 1, 2, 5");
   EXPECT_EQ(c.identity, parse({}).identity);  // where the map goes does not change what it holds
 }
 

@@ -25,9 +25,11 @@ def paper_points():
 
 
 def test_json_contract_keys_and_types():
-    r = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2)
-    assert set(r) == {"regime", "t_star", "h_0", "h_inf", "valid", "reason", "a1_inf", "a2_inf",
-                      "area_fraction_inf", "series"}
+    keys = {"regime", "t_star", "h_0", "h_inf", "valid", "reason", "a1_inf", "a2_inf", "area_fraction_inf", "series"}
+    refined = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2)  # the default names its model
+    assert set(refined) == keys | {"localization"} and refined["localization"] == "shells:200"
+    r = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2, localization="paper")
+    assert set(r) == keys
     assert set(r["series"]) == {"t", "a1", "a2", "P1", "P2", "area_fraction"}
     assert r["regime"] == "delayed" and isinstance(r["valid"], bool)
     assert abs(r["t_star"] - 1.027595) < 1e-6  # docs/model.md, section 9

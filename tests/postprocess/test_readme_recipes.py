@@ -29,5 +29,5 @@ def test_csv_recipe_reads_the_point_output(tmp_path, monkeypatch):
     assert list(frame.columns) == ["t", "a1", "a2", "P1", "P2", "area_fraction"]
     assert table.shape == (5, 6)
     assert (table[:, 0] == [0, 0.5, 1, 2, 5]).all()
-    # The level-1 load before touchdown is pbar0 l^2 exactly (t* = 1.03 > 1).
-    assert table[0, 3] == 0.06 * 0.75 * 0.75 and frame["P1"][2] == table[2, 3]
+    # The level-1 load before touchdown is pbar0 l^2 exactly (refined t* = 0.83 > 0.5).
+    assert table[1, 3] == 0.06 * 0.75 * 0.75 and frame["P1"][1] == table[1, 3]

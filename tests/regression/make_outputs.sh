@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Writes the regression outputs of one punchsweep binary into OUTDIR (see README.md):
+# Writes the regression outputs of one punchsweep binary into OUTDIR (see README.md), all
+# under the paper's localization (the default before issue 12; pinned outputs of its path):
 #   default.h5        the embedded default grid, full quantities, one process
 #   fig9_5.h5         sweeps/paper/fig9_5.ini, full quantities (101 snapshot times), one process
 #   production_slice.h5  a regime-only slice of sweeps/production.ini (368,640 points), 2 ranks
@@ -37,7 +38,7 @@ step() {  # step NAME COMMAND...: runs it and reports its wall time on stderr
 all0=$(date +%s.%N)
 
 # a) The default grid (104,328 points), full quantities, one process.
-step default "$bin" sweep --output "$out/default.h5" --quiet
+step default "$bin" sweep --model.localization paper --output "$out/default.h5" --quiet
 
 # b) Fig. 9.5 of the paper: 18 points, full quantities at 101 snapshot times, as the ini says.
 step fig9_5 "$bin" sweep --config "$root/sweeps/paper/fig9_5.ini" --output "$out/fig9_5.h5" --quiet
@@ -45,12 +46,12 @@ step fig9_5 "$bin" sweep --config "$root/sweeps/paper/fig9_5.ini" --output "$out
 # c) A regime-only slice of the production grid on 2 ranks: production's dh (120), pbar (128)
 #    and s (4) axes, with l and T cut to 3 and 2 values: 368,640 points, 24 tiles of 16384 (12 per rank).
 step production_slice mpirun --oversubscribe -np 2 "$bin" sweep --config "$root/sweeps/production.ini" \
-  --quantities regime --grid.l 'linspace(0.4, 1.6, 3)' --grid.T 'logspace(1.25, 20, 2)' --chunk 16384 \
+  --model.localization paper --quantities regime --grid.l 'linspace(0.4, 1.6, 3)' --grid.T 'logspace(1.25, 20, 2)' --chunk 16384 \
   --output "$out/production_slice.h5" --quiet
 
 # d) The BEM reference beside the model: 48 points, the BEM at a random sample of 10 of them
 #    (seed 1), on a 32 x 32 grid, tiles of 4 points, 2 ranks.
-step bem mpirun --oversubscribe -np 2 "$bin" sweep --grid.l 0.75,1 --grid.dh 0.05,0.075,0.1 --grid.T 2.5,6 \
+step bem mpirun --oversubscribe -np 2 "$bin" sweep --model.localization paper --grid.l 0.75,1 --grid.dh 0.05,0.075,0.1 --grid.T 2.5,6 \
   --grid.pbar 0.025,0.06 --grid.s 1,2 --time.times 0,0.5,1,2,5 \
   --reference bem --bem-grid 32 --reference.sample 10 --reference.seed 1 --chunk 4 \
   --output "$out/bem.h5" --quiet
@@ -69,8 +70,9 @@ point_all() {
   for p in "${points[@]}"; do
     read -r pbar l dh T s <<<"$p"
     name="point_pbar${pbar}_l${l}_dh${dh}_T${T}_s${s}"
-    "$bin" point --pbar "$pbar" --l "$l" --dh "$dh" --T "$T" --s "$s" --format json > "$out/$name.json"
-    "$bin" point --pbar "$pbar" --l "$l" --dh "$dh" --T "$T" --s "$s" --times 0,0.5,1,2,5,10 \
+    "$bin" point --localization paper --pbar "$pbar" --l "$l" --dh "$dh" --T "$T" --s "$s" --format json \
+      > "$out/$name.json"
+    "$bin" point --localization paper --pbar "$pbar" --l "$l" --dh "$dh" --T "$T" --s "$s" --times 0,0.5,1,2,5,10 \
       --format json > "$out/${name}_times.json"
   done
 }

@@ -65,8 +65,8 @@ def test_two_level_neighbours_of_the_paper_are_its_eight():
 @pytest.mark.parametrize("l, dh, X", [(0.75, 0.05, 0.06), (1.25, 0.05, 0.025), (1.0, 0.02, 0.06)])
 def test_two_level_paper_model_is_the_engines_elastic_two_level_state(l, dh, X):
     out = json.loads(subprocess.run([BINARY, "point", "--l", str(l), "--dh", str(dh), "--pbar", str(X), "--T", "1",
-                                     "--s", "2", "--times", "0", "--format", "json"], check=True, capture_output=True,
-                                    text=True).stdout)["series"]
+                                     "--s", "2", "--times", "0", "--localization", "paper", "--format", "json"],
+                                    check=True, capture_output=True, text=True).stdout)["series"]
     a1, a2, Q1, Q2 = study.two_level(l, dh, X, D=2, distributed=False, guess=(out["a1"][0], out["a2"][0]))
     assert a1 == pytest.approx(out["a1"][0], rel=1e-9)
     assert a2 == pytest.approx(out["a2"][0], rel=1e-9)
@@ -133,8 +133,8 @@ def test_under_creep_the_papers_frozen_radii_are_the_engines_point():
     for ref in BEM_CREEP:
         out = json.loads(subprocess.run([BINARY, "point", "--l", str(ref["l"]), "--dh", str(ref["dh"]), "--pbar",
                                          str(ref["X"]), "--T", str(study.T_CREEP), "--s", "2", "--times",
-                                         f"{study.T_AT:g}", "--format", "json"], check=True, capture_output=True,
-                                        text=True).stdout)["series"]
+                                         f"{study.T_AT:g}", "--localization", "paper", "--format", "json"],
+                                        check=True, capture_output=True, text=True).stdout)["series"]
         a1, a2 = study.two_level_creep(ref["l"], ref["dh"], ref["X"], J_AT, D=2, distributed=False,
                                        guess=(0.28, 0.06), frozen=True)
         assert a1 == pytest.approx(out["a1"][0], rel=1e-8) and a2 == pytest.approx(out["a2"][0], rel=1e-7), ref

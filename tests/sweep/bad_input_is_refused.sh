@@ -45,8 +45,9 @@ refused "the finished map keep/done.h5 was made with another configuration" \
 echo "not hdf5" > junk.h5
 refused "junk.h5 is not an HDF5 file" "$PUNCHSWEEP" sweep "${small[@]}" --output junk.h5 --resume
 rm junk.h5
-# The localization model is part of what a map is: a paper map is not resumed as refined.
-refused "model.localization" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume --model.localization refined
+# The localization model is part of what a map is: a refined map (the default) is not
+# resumed as the paper's.
+refused "model.localization" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume --model.localization paper
 refused "give only one" "$PUNCHSWEEP" sweep "${small[@]}" --output keep/done.h5 --resume --overwrite
 # An output that cannot become a regular file is refused before any work.
 mkdir adir.h5
