@@ -69,7 +69,8 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
     out << "punchsweep reference: " << inputs.describe() << "; grid " << options.n << " x " << options.n << " (h = "
         << json_number(r.spacing) << " R)\n  regime " << regime << ", t_star "
         << (r.t_star ? json_number(*r.t_star) + " " + inputs.time_unit : "none") << ", converged " << (r.converged ? "yes" : "no")
-        << ", " << r.steps << " steps, " << r.solves << " solves, " << json_number(seconds) << " s\n"
+        << " (" << r.cg_iterations << " CG iterations, largest residual " << json_number(r.max_residual) << "), "
+        << r.steps << " steps, " << r.solves << " solves, " << json_number(seconds) << " s\n"
         << "   t [" << inputs.time_unit << "]      a1 [R]      a2 [R]   P1 [R^2 E0*]   P2 [R^2 E0*]  area_fraction\n";
     for (const auto& s : r.series) {
       std::snprintf(line, sizeof line, "%12.4f%12.7f%12.7f%15.9f%15.9f%15.7f\n", s.t, s.a1, s.a2, s.P1, s.P2,
@@ -81,6 +82,7 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
   out << "{\n  \"regime\": \"" << regime << "\",\n  \"t_star\": " << (r.t_star ? json_number(*r.t_star) : "null")
       << ",\n  \"t_star_lower\": " << json_number(r.t_star_lower) << ",\n  \"t_star_upper\": "
       << json_number(r.t_star_upper) << ",\n  \"converged\": " << (r.converged ? "true" : "false")
+      << ",\n  \"cg_iterations\": " << r.cg_iterations << ",\n  \"max_residual\": " << json_number(r.max_residual)
       << ",\n  \"bem_grid\": " << options.n << ",\n  \"spacing\": " << json_number(r.spacing)
       << ",\n  \"steps\": " << r.steps << ",\n  \"solves\": " << r.solves << ",\n  \"seconds\": " << json_number(seconds)
       << ",\n  \"series\": {\n    \"t\": " << series_array(r, [](const auto& s) { return s.t; })

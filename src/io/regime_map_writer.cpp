@@ -36,6 +36,9 @@ FlagSet flag_set(map::Flags flags) {
     for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
       add(static_cast<std::int8_t>(r), model::regime_name(r));
     }
+  } else if (flags == map::Flags::convergence) {
+    add(0, "not_converged");
+    add(1, "converged");
   } else {
     for (const model::Validity v : model::kValidities) {
       add(static_cast<std::int8_t>(v), model::validity_name(v));

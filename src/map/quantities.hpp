@@ -27,7 +27,7 @@ enum class Extent { point, series };  ///< over the grid, or over the grid and t
 enum class Source { model, bem };     ///< the localization model, or the periodic BEM reference
 
 /// The flag sets a flag quantity takes its codes from (the map's flag_values/flag_meanings).
-enum class Flags { none, regime, validity };
+enum class Flags { none, regime, validity, convergence };
 
 struct QuantitySpec {
   std::string_view name;
@@ -64,11 +64,15 @@ inline double a2(const model::Snapshot& s) { return s.a2; }
 inline double P1(const model::Snapshot& s) { return s.P1; }
 inline double P2(const model::Snapshot& s) { return s.P2; }
 inline double area_fraction(const model::Snapshot& s) { return s.area_fraction; }
+/// Flags::convergence codes: 0 not_converged, 1 converged.
+inline std::int8_t converged(const model::PointSummary& s) { return s.solver.converged ? 1 : 0; }
+inline double iterations(const model::PointSummary& s) { return s.solver.iterations; }
+inline double residual(const model::PointSummary& s) { return s.solver.residual; }
 }  // namespace quantity_access
 
 /// The quantities in the order the map creates its variables, the journal stores a tile's
 /// chunks and the point command prints them.
-inline constexpr std::array<QuantitySpec, 20> kQuantities{{
+inline constexpr std::array<QuantitySpec, 23> kQuantities{{
     {"regime", Kind::flag, Extent::point, Source::model, Flags::regime, "", "contact regime of the level-2 punches",
      "immediate: level 2 touches by the end of the load's rise (at once for a step load); delayed: later, while "
      "the load is held; never: not at all", quantity_access::regime},
@@ -102,6 +106,19 @@ inline constexpr std::array<QuantitySpec, 20> kQuantities{{
     {"bem_regime", Kind::flag, Extent::point, Source::bem, Flags::regime, "",
      "periodic BEM reference: contact regime of the level-2 punches",
      "not_computed at grid points outside the reference sample", quantity_access::regime},
+    {"bem_converged", Kind::flag, Extent::point, Source::bem, Flags::convergence, "",
+     "periodic BEM reference: whether every contact solve of the point met its tolerance",
+     "not_converged: a conjugate-gradient solve stopped at its iteration limit above the tolerance (its numbers "
+     "are kept, and are not to be trusted); not_computed outside the reference sample",
+     quantity_access::converged},
+    {"bem_iterations", Kind::real, Extent::point, Source::bem, Flags::none, "1",
+     "periodic BEM reference: conjugate-gradient iterations over all contact solves of the point",
+     "NaN outside the reference sample", nullptr, quantity_access::iterations},
+    {"bem_residual", Kind::real, Extent::point, Source::bem, Flags::none, "1",
+     "periodic BEM reference: largest final residual of the point's contact solves",
+     "max(|gap| over the contact, penetration elsewhere) divided by the displacement range; the solves stop at "
+     "1e-10. NaN outside the reference sample",
+     nullptr, quantity_access::residual},
     {"bem_t_star", Kind::real, Extent::point, Source::bem, Flags::none, "T_eps",
      "periodic BEM reference: time at which the level-2 punches touch",
      "0 for the immediate regime; NaN for never, for delayed beyond the last snapshot time, and outside the "

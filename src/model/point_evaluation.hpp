@@ -72,6 +72,17 @@ struct PointSummary {
   TwoLevelState start;
   bool start_ok = true;
 
+  /// How an iterative full solution behind this result fared (set for the periodic BEM
+  /// reference by reference::as_point_result, over all its contact solves; the model's
+  /// own results leave it as is): whether every solve met its tolerance, their
+  /// conjugate-gradient iterations, and the largest final residual (relative to the
+  /// displacement range).
+  struct SolverReport {
+    bool converged = true;
+    double iterations = 0.0;
+    double residual = 0.0;
+  } solver;
+
   bool valid() const { return validity == Validity::valid; }
   /// One sentence telling why the result is flagged, with the numbers; "" when valid.
   std::string reason(std::string_view time_unit = "T_eps") const;

@@ -260,6 +260,7 @@ model::PointResult as_point_result(const ReferenceResult& result) {
   model::PointResult point;
   point.regime = result.regime;
   point.t_star = result.t_star;
+  point.solver = {result.converged, static_cast<double>(result.cg_iterations), result.max_residual};
   point.series.reserve(result.series.size());
   for (const ReferenceSnapshot& snap : result.series) {
     point.series.push_back(model::Snapshot{snap.t, snap.a1, snap.a2, snap.P1, snap.P2, snap.area_fraction});

@@ -86,8 +86,9 @@ struct ReferenceResult {
   double spacing = 0.0;       ///< grid spacing l / n, in R
 };
 
-/// The reference's answer in the model's terms: its regime, t* and, per snapshot, t, a1,
-/// a2, P1, P2 and the area fraction (what map::kQuantities reads for the bem_* variables).
+/// The reference's answer in the model's terms: its regime, t*, its solver's report
+/// (converged, CG iterations, largest residual) and, per snapshot, t, a1, a2, P1, P2 and
+/// the area fraction (what map::kQuantities reads for the bem_* variables).
 model::PointResult as_point_result(const ReferenceResult& result);
 
 /// Measures a contact state of a two-level cell (pressure p and displacement u on its grid).

@@ -103,11 +103,11 @@ std::vector<std::byte> expected_chunk(const MapLayout& layout, const map::TileBo
 }
 
 TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
-  // (quantities, BEM reference, chunks per tile): the model's 8 + 5 series, the reference's 2 + 5.
+  // (quantities, BEM reference, chunks per tile): the model's 8 + 5 series, the reference's 5 + 5.
   for (const auto& [quantities, bem, chunks] : {std::tuple{map::Quantities::regime, false, 8U},
                                                 std::tuple{map::Quantities::full, false, 13U},
-                                                std::tuple{map::Quantities::regime, true, 15U},
-                                                std::tuple{map::Quantities::full, true, 20U}}) {
+                                                std::tuple{map::Quantities::regime, true, 18U},
+                                                std::tuple{map::Quantities::full, true, 23U}}) {
     const MapLayout layout = test_layout(quantities, bem);
     TileEncoder encoder(layout);
     const double nan = std::numeric_limits<double>::quiet_NaN();

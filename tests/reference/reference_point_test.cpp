@@ -84,6 +84,36 @@ TEST(ReferencePoint, loads_sum_to_nominal_load_and_snapshots_keep_requested_orde
   EXPECT_GT(r.series[0].P2, r.series[1].P2);
 }
 
+TEST(ReferencePoint, converges_near_and_at_full_contact) {
+  // Polonsky-Keer CG is known to slow down as the contact area fraction nears 1. Here
+  // (l = 0.5, dh = 0.01, SLS T = 2.5) the area fraction is 0.82-0.95 at t = 0 and 0.99-1.0
+  // at t = 5: every solve still meets the tolerance, and as_point_result carries the
+  // report to the map (bem_converged, bem_iterations, bem_residual).
+  const model::StandardLinearSolid sls(2.5);
+  for (const double pbar : {0.1, 0.2}) {
+    const model::ContactProblem problem{0.5, 0.01, pbar, {2, 0.5}};
+    const ReferenceResult r = evaluate_reference_point(problem, sls, options_with(64, {0.0, 5.0}));
+    EXPECT_GT(r.series[0].area_fraction, 0.8) << pbar;
+    EXPECT_GT(r.series[1].area_fraction, 0.98) << pbar;
+    EXPECT_TRUE(r.converged) << pbar;
+    EXPECT_LE(r.max_residual, 1e-10) << pbar;
+    EXPECT_GT(r.cg_iterations, r.solves) << pbar;
+    const model::PointResult point = as_point_result(r);
+    EXPECT_TRUE(point.solver.converged);
+    EXPECT_EQ(point.solver.iterations, static_cast<double>(r.cg_iterations));
+    EXPECT_EQ(point.solver.residual, r.max_residual);
+  }
+  EXPECT_GT(evaluate_reference_point({0.5, 0.01, 0.2, {2, 0.5}}, sls, options_with(64, {0.0})).series[0].area_fraction,
+            0.9);
+  // A solver held to 5 CG iterations stops short: the report says so.
+  ReferenceOptions starved = options_with(64, {0.0});
+  starved.solver.max_iterations = 5;
+  const ReferenceResult r = evaluate_reference_point({0.5, 0.01, 0.2, {2, 0.5}}, sls, starved);
+  EXPECT_FALSE(r.converged);
+  EXPECT_GT(r.max_residual, 1e-10);
+  EXPECT_FALSE(as_point_result(r).solver.converged);
+}
+
 TEST(ReferencePoint, paper_regimes_immediate_delayed_never_are_reproduced) {
   // docs/model.md section 9: dh = 0.05 immediate, 0.075 delayed (localization t* = 1.03),
   // 0.1 never. The grid's h(0) = 0.0553 and h(inf) = 0.087 bracket the same way.

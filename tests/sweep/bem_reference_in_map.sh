@@ -20,7 +20,8 @@ fail() { echo "FAIL: $*"; exit 1; }
 run_ranks 0 sweep "${grid[@]}" "${bem[@]}" --output one.h5 2> one.log || { cat one.log; exit 1; }
 grep -q "^  bem: 24 points (immediate [0-9]*, delayed [0-9]*, never [0-9]*; regime agreement with the model" \
   one.log || { cat one.log; fail "no bem line in the summary"; }
-for v in bem_regime bem_t_star bem_a1 bem_a2 bem_P1 bem_P2 bem_area_fraction; do
+for v in bem_regime bem_converged bem_iterations bem_residual bem_t_star bem_a1 bem_a2 bem_P1 bem_P2 \
+         bem_area_fraction; do
   h5ls "one.h5/$v" >/dev/null || fail "one.h5 has no $v"
 done
 test "$(attribute one.h5 bem_grid)" = 32 || fail "bem_grid is $(attribute one.h5 bem_grid)"
@@ -33,6 +34,15 @@ test "$(grep -cv '^-1$' regime.txt)" = 24 || fail "$(grep -cv '^-1$' regime.txt)
 # Not sampled: NaN everywhere; sampled: a radius at every time.
 paste regime.txt t_star.txt | awk '$1 == -1 && $2 != "nan" { exit 1 }' || fail "bem_t_star outside the sample"
 test "$(values one.h5 bem_a1 | grep -cv '^nan$')" = $((24 * 5)) || fail "bem_a1 is not set at exactly the sample"
+# The solver's report: converged (1) with some CG iterations and a residual at most the
+# solves' 1e-10 at every sampled point; not_computed (-1) and NaN elsewhere.
+values one.h5 bem_converged > converged.txt
+values one.h5 bem_iterations > iterations.txt
+values one.h5 bem_residual > residual.txt
+paste regime.txt converged.txt iterations.txt residual.txt |
+  awk '($1 == -1) != ($2 == -1) || ($1 == -1 && ($3 != "nan" || $4 != "nan")) ||
+       ($1 != -1 && ($2 != 1 || $3 + 0 < 1 || $4 + 0 > 1e-10 || $4 + 0 < 0)) { print "line " NR ": " $0; bad = 1 }
+       END { exit bad }' || fail "bem_converged, bem_iterations, bem_residual do not match the sample"
 # Without the reference, no bem_* variable.
 run_ranks 0 sweep "${grid[@]}" --quantities regime --quiet --output plain.h5
 h5ls plain.h5/bem_regime >/dev/null 2>&1 && fail "bem_regime in a map without the reference"
@@ -63,6 +73,13 @@ grep -q '"regime": "delayed"' point.json || fail "reference says $(grep regime p
 want=$(sed -n 's/^ *"t_star": \(.*\),$/\1/p' point.json)
 got=$(sed -n "$((g + 1))p" t_star.txt)
 awk -v a="$got" -v b="$want" 'BEGIN { exit !(a + 0 == b + 0) }' || fail "bem_t_star $got, reference $want"
+# ... and its solver report: the same CG iterations and residual.
+want=$(sed -n 's/^ *"cg_iterations": \(.*\),$/\1/p' point.json)
+got=$(sed -n "$((g + 1))p" iterations.txt)
+awk -v a="$got" -v b="$want" 'BEGIN { exit !(a + 0 == b + 0 && b + 0 > 0) }' || fail "bem_iterations $got, reference $want"
+want=$(sed -n 's/^ *"max_residual": \(.*\),$/\1/p' point.json)
+got=$(sed -n "$((g + 1))p" residual.txt)
+awk -v a="$got" -v b="$want" 'BEGIN { exit !(a + 0 == b + 0) }' || fail "bem_residual $got, reference $want"
 
 # 4) The dry run estimates the reference's cost.
 "$PUNCHSWEEP" sweep "${grid[@]}" "${bem[@]}" --dry-run > dry.txt
