@@ -116,6 +116,7 @@ double calibrate_reference(const sweep::SweepConfig& config, const sweep::TileEv
   constexpr std::uint64_t kMaxPoints = 5;
   const std::uint64_t tries = std::min<std::uint64_t>(kMaxPoints, sample.size());
   *measured = 0;
+  if (tries == 0) return 0.0;  // an empty sample (no point the rule picks)
   for (std::uint64_t k = 0; k < tries && (k == 0 || elapsed < 1.0); ++k) {
     // The one point, as a tile.
     const map::TileBox box = map::TileBox::point(config.grid.position(sample.at(sample.size() / tries * k)));
@@ -147,7 +148,7 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   if (layout.bem) {
     std::printf("\n  reference: periodic BEM on a %d x %d grid at %lld of %zu points (sample %s, seed %lld)",
                 layout.bem->grid, layout.bem->grid, static_cast<long long>(layout.bem->sample), points,
-                config.reference.sample ? "random" : "all", static_cast<long long>(layout.bem->seed));
+                layout.bem->sample_rule.c_str(), static_cast<long long>(layout.bem->seed));
   }
   const double bytes = static_cast<double>(points) * static_cast<double>(io::uncompressed_bytes_per_point(layout));
   const run::DiskEstimate disk = run::estimate_disk(tiling, evaluator, layout, 0.5);

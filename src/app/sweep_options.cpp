@@ -126,9 +126,12 @@ std::vector<KeySpec> make_keys() {
                   "--dry-run measures it)",
                   "an even integer in [16, 2048]", Fixed::reference_grid});
   keys.push_back({"reference", "sample", "K", "all",
-                  "the grid points that get the reference: all, or K distinct points drawn uniformly at random (a "
-                  "pure function of the grid's shape, K and reference.seed); the others read not_computed",
-                  "all, or an integer in [1, the grid's point count]", Fixed::reference_sample});
+                  "the grid points that get the reference: all; K distinct points drawn uniformly at random (a "
+                  "pure function of the grid's shape, K and reference.seed); invalid: the points the model flags "
+                  "invalid (where it has no answer); boundary: the points whose model regime differs from a grid "
+                  "neighbour's (one step along any axis: where a regime is least sure); the others read "
+                  "not_computed",
+                  "all, invalid, boundary, or an integer in [1, the grid's point count]", Fixed::reference_sample});
   keys.push_back({"reference", "seed", "SEED", "1", "seed of the random sample of reference.sample = K",
                   "an integer in [0, 9223372036854775807]", Fixed::reference_seed});
   return keys;
@@ -466,8 +469,11 @@ std::string check_bem_grid(const std::string& text, int& grid) {
   return {};
 }
 
-std::string check_sample(const std::string& text, std::optional<std::uint64_t>& sample) {
-  if (text == "all") {
+std::string check_sample(const std::string& text, sweep::ReferenceConfig& reference) {
+  using Rule = sweep::ReferenceConfig::SampleRule;
+  std::optional<std::uint64_t>& sample = reference.sample;
+  reference.rule = text == "invalid" ? Rule::invalid : text == "boundary" ? Rule::boundary : Rule::count;
+  if (text == "all" || reference.rule != Rule::count) {
     sample.reset();
     return {};
   }
@@ -616,7 +622,7 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
           problem = check_bem_grid(text, config.reference.grid);
           break;
         case Fixed::reference_sample:
-          problem = check_sample(text, config.reference.sample);
+          problem = check_sample(text, config.reference);
           break;
         case Fixed::reference_seed:
           // The map stores the seed as an int64 attribute.
@@ -719,6 +725,8 @@ std::string reference_value(Fixed key, const sweep::ReferenceConfig& reference) 
     case Fixed::reference_grid:
       return std::to_string(reference.grid);
     case Fixed::reference_sample:
+      if (reference.rule == sweep::ReferenceConfig::SampleRule::invalid) return "invalid";
+      if (reference.rule == sweep::ReferenceConfig::SampleRule::boundary) return "boundary";
       return reference.sample ? std::to_string(*reference.sample) : "all";
     default:
       return std::to_string(reference.seed);
@@ -730,8 +738,9 @@ std::string sample_size_problem(const sweep::SweepConfig& config, const std::str
   const std::size_t points = config.grid.points();
   if (!config.reference.sample || *config.reference.sample <= points) return {};
   return dotted(Fixed::reference_sample) + " = " + text + ": value " + text + " is more than the grid's " +
-         std::to_string(points) + (points == 1 ? " point" : " points") + "; valid range: all, or an integer in [1, " +
-         std::to_string(points) + "] (the grid's point count)";
+         std::to_string(points) + (points == 1 ? " point" : " points") +
+         "; valid range: all, invalid, boundary, or an integer in [1, " + std::to_string(points) +
+         "] (the grid's point count)";
 }
 
 // The final value of each key as it goes into resolved_text: axes keep their given form

@@ -21,6 +21,7 @@ struct BemSetup {
   std::int64_t sample = 0;   ///< number of grid points evaluated
   std::int64_t seed = 0;     ///< seed of the random sample
   std::string method;        ///< one line naming the method
+  std::string sample_rule = "all";  ///< how the points were picked: all, random, invalid or boundary
 };
 
 /// What a regime map holds: its grid, snapshot times, quantities, chunk shape and reference.

@@ -73,7 +73,7 @@ struct MapAttributes {
 /// - Global attributes: Conventions "CF-1.8", title, source, history, config, identity, creep_law,
 ///   C, time_unit, for a material map material, material_file (its text), E0_Pa, E0_star_Pa
 ///   (the pressure scale) and poisson, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
-///   bem_seed (int64), bem_method (string), then completed (int8, 0 until finish() sets 1),
+///   bem_seed (int64), bem_method (string), bem_sample_rule (string: all, random, invalid or boundary), then completed (int8, 0 until finish() sets 1),
 ///   and from finish(): ranks, wall_seconds, points_per_second.
 ///
 /// All strings are scalar variable-length UTF-8 attributes (one-character fixed-length

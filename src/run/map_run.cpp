@@ -73,13 +73,28 @@ void MapRun::finish(int ranks) {
   progress_.print_summary(ranks);
 }
 
+namespace {
+
+/// How the reference's points were picked, as the map names it.
+std::string sample_rule(const sweep::ReferenceConfig& reference) {
+  switch (reference.rule) {
+    case sweep::ReferenceConfig::SampleRule::invalid: return "invalid";
+    case sweep::ReferenceConfig::SampleRule::boundary: return "boundary";
+    case sweep::ReferenceConfig::SampleRule::count: break;
+  }
+  return reference.sample ? "random" : "all";
+}
+
+}  // namespace
+
 io::MapLayout map_layout(const sweep::SweepConfig& config, const map::Tiling& tiling,
                          const std::optional<std::uint64_t>& reference_points, double reference_tolerance) {
   io::MapLayout layout{config.grid, config.times, config.quantities, tiling.chunk(), std::nullopt};
   if (reference_points) {
     layout.bem = io::BemSetup{config.reference.grid, reference_tolerance, static_cast<std::int64_t>(*reference_points),
                               static_cast<std::int64_t>(config.reference.seed),
-                              "periodic BEM, FFT influence, Polonsky-Keer CG, viscoelastic creep stepping"};
+                              "periodic BEM, FFT influence, Polonsky-Keer CG, viscoelastic creep stepping",
+                              sample_rule(config.reference)};
   }
   return layout;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
+#include <utility>
 
 namespace punchsweep::sweep {
 namespace {
@@ -40,6 +41,16 @@ ReferenceSample::ReferenceSample(std::uint64_t points, std::optional<std::uint64
   }
   chosen_.assign(chosen.begin(), chosen.end());
   std::sort(chosen_.begin(), chosen_.end());
+}
+
+ReferenceSample::ReferenceSample(std::uint64_t points, std::vector<std::uint64_t> chosen)
+    : points_(points), all_(false), chosen_(std::move(chosen)) {
+  if (!std::is_sorted(chosen_.begin(), chosen_.end()) ||
+      std::adjacent_find(chosen_.begin(), chosen_.end()) != chosen_.end() ||
+      (!chosen_.empty() && chosen_.back() >= points)) {
+    throw std::invalid_argument("reference sample: the chosen points must be distinct, increasing and below " +
+                                std::to_string(points));
+  }
 }
 
 bool ReferenceSample::contains(std::uint64_t point) const {

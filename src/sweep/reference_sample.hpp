@@ -17,6 +17,8 @@ class ReferenceSample {
   /// All `points` points when `sample` is empty, else `*sample` of them drawn with `seed`.
   /// Throws std::invalid_argument when *sample is 0 or more than `points`.
   ReferenceSample(std::uint64_t points, std::optional<std::uint64_t> sample, std::uint64_t seed);
+  /// The points listed in `chosen` (flat indices below `points`, increasing; may be none).
+  ReferenceSample(std::uint64_t points, std::vector<std::uint64_t> chosen);
 
   /// Whether grid point `point` (flat index) is in the sample.
   bool contains(std::uint64_t point) const;

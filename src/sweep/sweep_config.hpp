@@ -35,7 +35,10 @@ inline bool is_bem_grid(double n) {
 struct ReferenceConfig {
   ReferenceMethod method = ReferenceMethod::none;  ///< method
   int grid = 128;                                  ///< grid: BEM nodes per side, is_bem_grid
-  /// sample: the number K of grid points drawn at random for the reference; empty for all.
+  /// sample: which grid points get the reference. `count`: all of them (`sample` empty) or
+  /// `sample` = K drawn at random; `invalid`: those the model flags invalid; `boundary`:
+  /// those whose model regime differs from a grid neighbour's (one step along any axis).
+  enum class SampleRule { count, invalid, boundary } rule = SampleRule::count;
   std::optional<std::uint64_t> sample;
   std::uint64_t seed = 1;  ///< seed: of the random sample, at most INT64_MAX
 

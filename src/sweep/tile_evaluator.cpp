@@ -81,7 +81,11 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
     throw std::invalid_argument("sweep: the grid has axes beyond the model's and the creep law's parameters");
   }
   if (reference.on()) {
-    sample_.emplace(grid.points(), reference.sample, reference.seed);
+    if (reference.rule == ReferenceConfig::SampleRule::count) {
+      sample_.emplace(grid.points(), reference.sample, reference.seed);
+    } else {
+      sample_.emplace(grid.points(), chosen_by_model(reference.rule));
+    }
     reference_options_.n = reference.grid;
     reference_options_.times = times_;
     use_reproducible_fft_plans();
@@ -227,6 +231,47 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
     }
   }
   if (bem) evaluate_reference(box, out);
+}
+
+std::vector<std::uint64_t> TileEvaluator::chosen_by_model(ReferenceConfig::SampleRule rule) const {
+  // The model alone, regime quantities, one slab of the first axis at a time.
+  const TileEvaluator model(grid_, law_, C_, {}, map::Quantities::regime, {}, loading_, localization_);
+  const map::Index n = grid_.shape();
+  const std::size_t points = grid_.points();
+  const std::size_t slab = points / n[0];
+  std::vector<std::int8_t> regime(points);
+  std::vector<std::int8_t> valid(points);
+  map::TileData data;
+  for (std::size_t i = 0; i < n[0]; ++i) {
+    map::TileBox box{map::Index(n.size(), 0), n};
+    box.start[0] = i;
+    box.count[0] = 1;
+    model.evaluate(box, &data, Reference::skipped);
+    std::copy(data.codes[map::quantity("regime")].begin(), data.codes[map::quantity("regime")].end(),
+              regime.begin() + static_cast<std::ptrdiff_t>(i * slab));
+    std::copy(data.codes[map::quantity("valid")].begin(), data.codes[map::quantity("valid")].end(),
+              valid.begin() + static_cast<std::ptrdiff_t>(i * slab));
+  }
+  std::vector<std::uint64_t> chosen;
+  if (rule == ReferenceConfig::SampleRule::invalid) {
+    for (std::size_t p = 0; p < points; ++p) {
+      if (valid[p] != static_cast<std::int8_t>(model::Validity::valid)) chosen.push_back(p);
+    }
+    return chosen;
+  }
+  // Row-major strides; a point is on a boundary if a neighbour along any axis has another regime.
+  map::Index stride(n.size(), 1);
+  for (std::size_t a = n.size() - 1; a-- > 0;) stride[a] = stride[a + 1] * n[a + 1];
+  for (std::size_t p = 0; p < points; ++p) {
+    bool boundary = false;
+    for (std::size_t a = 0; a < n.size() && !boundary; ++a) {
+      const std::size_t index = p / stride[a] % n[a];
+      boundary = (index > 0 && regime[p - stride[a]] != regime[p]) ||
+                 (index + 1 < n[a] && regime[p + stride[a]] != regime[p]);
+    }
+    if (boundary) chosen.push_back(p);
+  }
+  return chosen;
 }
 
 model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vector<double>* law_values) const {

@@ -28,7 +28,9 @@ namespace punchsweep::sweep {
 /// With a BEM reference it also evaluates reference::evaluate_reference_point (as
 /// `punchsweep reference` does: grid N, the snapshot times, the default step control and
 /// solver) at every point of the tile that is in the reference sample, into the bem_*
-/// arrays. That is a pure function of the point too, because the constructor makes FFTW's
+/// arrays. The sample is all points, K at random, or picked from the model's own answers
+/// (reference.sample = invalid or boundary: chosen_by_model, a model-only pass over the grid
+/// in the constructor, the same on every rank). That is a pure function of the point too, because the constructor makes FFTW's
 /// plans reproducible for the process (use_reproducible_fft_plans).
 /// Not thread-safe (one evaluator per rank).
 class TileEvaluator {
@@ -55,6 +57,9 @@ class TileEvaluator {
   const reference::ReferenceOptions& reference_options() const { return reference_options_; }
 
  private:
+  /// The grid points (flat, increasing) the model picks for the reference: those it flags
+  /// invalid, or those whose regime differs from a neighbour's one step along an axis.
+  std::vector<std::uint64_t> chosen_by_model(ReferenceConfig::SampleRule rule) const;
   /// The reference at the sampled points of `box` into out's bem_* arrays (sized already).
   void evaluate_reference(const map::TileBox& box, map::TileData* out) const;
   /// The contact problem and the creep law's parameter values at grid position `at`.

@@ -231,8 +231,18 @@ TEST(SweepOptions, reference_sample_may_not_exceed_the_grid) {
   EXPECT_EQ(parse(args).reference.sample, 12u);  // every point, drawn at random
   args.back() = "13";
   EXPECT_EQ(refusal(args),
-            "reference.sample = 13: value 13 is more than the grid's 12 points; valid range: all, or an integer "
-            "in [1, 12] (the grid's point count)");
+            "reference.sample = 13: value 13 is more than the grid's 12 points; valid range: all, invalid, "
+            "boundary, or an integer in [1, 12] (the grid's point count)");
+  // The rules that pick points from the model's answers.
+  args.back() = "invalid";
+  EXPECT_EQ(parse(args).reference.rule, punchsweep::sweep::ReferenceConfig::SampleRule::invalid);
+  EXPECT_FALSE(parse(args).reference.sample.has_value());
+  EXPECT_NE(std::find(parse(args).identity.begin(), parse(args).identity.end(), "reference.sample = invalid"),
+            parse(args).identity.end());
+  args.back() = "boundary";
+  EXPECT_EQ(parse(args).reference.rule, punchsweep::sweep::ReferenceConfig::SampleRule::boundary);
+  args.back() = "12";
+  EXPECT_EQ(parse(args).reference.rule, punchsweep::sweep::ReferenceConfig::SampleRule::count);
   // Checked whether or not the reference is on, like every other key.
   args = grid;
   args.insert(args.end(), {"--reference.sample", "100"});
@@ -337,10 +347,10 @@ TEST(SweepOptions, each_bad_value_gives_one_line_with_key_value_and_range) {
       {{"--reference.grid", "99999999999"}, "reference.grid = 99999999999: value 99999999999 is too large",
        "an even integer in [16, 2048]"},
       {{"--reference.sample", "0"}, "reference.sample = 0: value 0 is outside its range",
-       "all, or an integer in [1, the grid's point count]"},
+       "all, invalid, boundary, or an integer in [1, the grid's point count]"},
       {{"--reference.sample", "some"}, "reference.sample = some: 'some' is not a whole number",
-       "all, or an integer in [1, the grid's point count]"},
-      {{"--reference.sample", "-5"}, "reference.sample = -5: ", "all, or an integer in [1,"},
+       "all, invalid, boundary, or an integer in [1, the grid's point count]"},
+      {{"--reference.sample", "-5"}, "reference.sample = -5: ", "all, invalid, boundary, or an integer in [1,"},
       {{"--reference.seed", "-1"}, "reference.seed = -1: '-1' is not a whole number",
        "an integer in [0, 9223372036854775807]"},
       {{"--reference.seed", "9223372036854775808"}, "reference.seed = 9223372036854775808: value "

@@ -769,15 +769,16 @@ TEST_F(RegimeMapWriterTest, write_encoded_refuses_a_tile_that_does_not_fit) {
 }
 
 
-const std::vector<std::string> kBemVariables{"bem_regime", "bem_t_star", "bem_a1",           "bem_a2",
-                                             "bem_P1",     "bem_P2",     "bem_area_fraction"};
+const std::vector<std::string> kBemVariables{"bem_regime", "bem_converged", "bem_iterations", "bem_residual",
+                                             "bem_t_star", "bem_a1",        "bem_a2",         "bem_P1",
+                                             "bem_P2",     "bem_area_fraction"};
 
 TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
   make_map(map::Quantities::full);
   {
     const Handle file = open_file(path_);
     for (const std::string& name : kBemVariables) EXPECT_EQ(H5Lexists(file, name.c_str(), H5P_DEFAULT), 0) << name;
-    for (const char* name : {"bem_grid", "bem_tolerance", "bem_sample", "bem_seed", "bem_method"})
+    for (const char* name : {"bem_grid", "bem_tolerance", "bem_sample", "bem_seed", "bem_method", "bem_sample_rule"})
       EXPECT_EQ(H5Aexists(file, name), 0) << name;
   }
   // With the regime quantities the reference keeps its series (over the time coordinate).
@@ -798,13 +799,13 @@ TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_
   const Handle file = open_file(path_);
   std::vector<Handle> coordinates;
   for (const std::string& name : kCoordinates) coordinates.push_back(open_dataset(file, name));
-  const std::vector<std::string> units{"", "T_eps", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", "1"};
+  const std::vector<std::string> units{"", "", "1", "1", "T_eps", "R", "R", "R^2 E0/(1-nu^2)", "R^2 E0/(1-nu^2)", "1"};
   for (std::size_t v = 0; v < kBemVariables.size(); ++v) {
     const std::string& name = kBemVariables[v];
     const Handle dataset = open_dataset(file, name);
     const Handle space(H5Dget_space(dataset), H5Sclose, "get space");
     const int rank = H5Sget_simple_extent_ndims(space);
-    EXPECT_EQ(rank, v < 2 ? 5 : 6) << name;
+    EXPECT_EQ(rank, v < 5 ? 5 : 6) << name;  // the per-point ones, then the series
     for (int d = 0; d < rank; ++d) {
       EXPECT_GT(H5DSis_attached(dataset, coordinates[static_cast<std::size_t>(d)], static_cast<unsigned>(d)), 0)
           << name << " dim " << d;
@@ -824,6 +825,9 @@ TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_
   EXPECT_EQ(read_attribute<std::int8_t>(regime, "flag_values", H5T_NATIVE_INT8),
             (std::vector<std::int8_t>{0, 1, 2, -1}));
   EXPECT_EQ(read_string_attribute(regime, "flag_meanings"), "immediate delayed never not_computed");
+  const Handle converged = open_dataset(file, "bem_converged");
+  EXPECT_EQ(read_attribute<std::int8_t>(converged, "flag_values", H5T_NATIVE_INT8), (std::vector<std::int8_t>{0, 1, -1}));
+  EXPECT_EQ(read_string_attribute(converged, "flag_meanings"), "not_converged converged not_computed");
   EXPECT_EQ(H5Aexists(regime, "_FillValue"), 0);
   const Handle regime_dcpl(H5Dget_create_plist(regime), H5Pclose, "get dcpl");
   std::int8_t code_fill = 0;
@@ -849,6 +853,7 @@ TEST_F(RegimeMapWriterTest, map_with_a_reference_records_its_grid_tolerance_samp
   EXPECT_TRUE(attribute_type_is(file, "bem_seed", H5T_STD_I64LE));
   EXPECT_EQ(read_attribute<std::int64_t>(file, "bem_seed", H5T_NATIVE_INT64), std::vector<std::int64_t>{bem.seed});
   EXPECT_EQ(read_string_attribute(file, "bem_method"), bem.method);
+  EXPECT_EQ(read_string_attribute(file, "bem_sample_rule"), bem.sample_rule);
 }
 
 TEST_F(RegimeMapWriterTest, bem_values_read_back_bit_exactly_and_unsampled_cells_as_not_computed) {

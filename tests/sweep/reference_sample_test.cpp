@@ -78,3 +78,15 @@ TEST(ReferenceSample, sample_larger_than_the_grid_or_empty_is_refused) {
   EXPECT_THROW(ReferenceSample(10, 11, 1), std::invalid_argument);
   EXPECT_THROW(ReferenceSample(10, 0, 1), std::invalid_argument);
 }
+
+TEST(ReferenceSample, an_explicit_list_is_the_sample_and_a_bad_one_is_refused) {
+  // The points a rule of the model picked (reference.sample = invalid or boundary).
+  const ReferenceSample picked(10, std::vector<std::uint64_t>{1, 4, 9});
+  EXPECT_EQ(picked.size(), 3u);
+  EXPECT_EQ(picked.at(1), 4u);
+  for (std::uint64_t p = 0; p < 10; ++p) EXPECT_EQ(picked.contains(p), p == 1 || p == 4 || p == 9) << p;
+  EXPECT_EQ(ReferenceSample(10, std::vector<std::uint64_t>{}).size(), 0u);  // a rule may pick none
+  EXPECT_THROW(ReferenceSample(10, std::vector<std::uint64_t>{4, 1}), std::invalid_argument);
+  EXPECT_THROW(ReferenceSample(10, std::vector<std::uint64_t>{1, 1}), std::invalid_argument);
+  EXPECT_THROW(ReferenceSample(10, std::vector<std::uint64_t>{1, 10}), std::invalid_argument);
+}
