@@ -4,7 +4,9 @@ t*, or never.
 
 Each grid point is one cell, coloured by its regime (fixed colours: immediate blue, delayed
 orange, never green). Points the localization method flags as invalid (valid != 0: spots
-overlap, or no solution) are drawn in a paler shade of their regime colour and hatched;
+overlap, or no solution) are drawn in a paler shade of their regime colour and hatched,
+unless the map holds the periodic BEM's answer there (sweep --reference bem, e.g.
+--reference.sample invalid): then the BEM's regime is drawn, in full colour and dotted;
 points never computed (an interrupted map) are dark grey. Contour lines of t* (in T_eps,
 the creep time) run over the delayed region. A log-spaced axis (attribute spacing = "log")
 is drawn on a log scale.
@@ -181,17 +183,26 @@ def few_and_apart(values: np.ndarray, edges: np.ndarray) -> bool:
 
 
 def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed]):
-    """(facet value or None, regime, valid, t*) with arrays shaped (ny, nx); a facet value is
-    a float, or a label on a categorical axis."""
+    """(facet value or None, regime, valid, t*, BEM regime) with arrays shaped (ny, nx); a
+    facet value is a float, or a label on a categorical axis. The BEM regime is the map's
+    bem_regime (not_computed outside its sample), all not_computed in a map without it."""
     sel = {name: f.index for name, f in fixed.items()}
     order = ([facet] if facet else []) + [y, x]
     regime = ds["regime"].isel(sel).transpose(*order).values
     valid = ds["valid"].isel(sel).transpose(*order).values
     t_star = (ds["t_star"].isel(sel).transpose(*order).values if "t_star" in ds
               else np.full(regime.shape, np.nan))
+    bem = (ds["bem_regime"].isel(sel).transpose(*order).values if "bem_regime" in ds
+           else np.full(regime.shape, pm.flags(ds, "regime").code(pm.NOT_COMPUTED)))
     if facet is None:
-        return [(None, regime, valid, t_star)]
-    return [(v, regime[k], valid[k], t_star[k]) for k, v in enumerate(pm.grid_values(ds, facet))]
+        return [(None, regime, valid, t_star, bem)]
+    return [(v, regime[k], valid[k], t_star[k], bem[k]) for k, v in enumerate(pm.grid_values(ds, facet))]
+
+
+def bem_answers(ds, valid: np.ndarray, bem: np.ndarray) -> np.ndarray:
+    """Cells the model cannot answer (flagged invalid) where the map has the BEM's regime."""
+    ok = np.asarray(valid) == pm.flags(ds, "valid").code(pm.VALID)
+    return ~ok & (np.asarray(bem) != pm.flags(ds, "regime").code(pm.NOT_COMPUTED))
 
 
 def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = None,
@@ -214,7 +225,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
     cmap = ListedColormap(colours)
     norm = BoundaryNorm(np.arange(len(colours) + 1) - 0.5, len(colours))
     all_t = np.concatenate([np.where(r == codes.code("delayed"), t, np.nan).ravel()
-                            for _, r, _, t in data])
+                            for _, r, _, t, _ in data])
     levels = contour_levels(all_t) if contours else []
 
     n = len(data)
@@ -225,15 +236,27 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
     grid = fig.add_gridspec(nrows, ncols + 1,
                             width_ratios=[PANEL_SIZE[0]] * ncols + [LEGEND_WIDTH])
     panels: list[Panel] = []
-    any_invalid = any_missing = any_contour = False
+    any_invalid = any_missing = any_contour = any_bem = False
     first = None
-    for k, (fval, regime, valid, t_star) in enumerate(data):
+    for k, (fval, regime, valid, t_star, bem) in enumerate(data):
         row, col = divmod(k, ncols)
         ax = fig.add_subplot(grid[row, col], sharex=first, sharey=first)
         first = first or ax
         cat = pm.categories(ds, regime, valid)
+        # Where the model has no answer and the BEM has one, the BEM's regime, in its full
+        # colour, dotted (the model's pale hatched cell is not drawn there).
+        answered = bem_answers(ds, valid, bem)
+        if answered.any():
+            bem_cat = pm.categories(ds, bem, np.full(bem.shape, pm.flags(ds, "valid").code(pm.VALID)))
+            cat = np.where(answered, bem_cat, cat)
+            any_bem = True
         ax.pcolormesh(xe, ye, cat, cmap=cmap, norm=norm, shading="flat", antialiased=False,
                       edgecolors="none")
+        if answered.any():
+            rects = [Rectangle((xe[i], ye[j]), xe[i + 1] - xe[i], ye[j + 1] - ye[j])
+                     for j, i in zip(*np.nonzero(answered))]
+            ax.add_collection(PatchCollection(rects, facecolor="none", edgecolor="0.15",
+                                              hatch="..", linewidth=0))
         bad = (cat >= 3) & (cat < pm.CATEGORY_NOT_COMPUTED)
         any_invalid |= bool(bad.any())
         any_missing |= bool((cat == pm.CATEGORY_NOT_COMPUTED).any())
@@ -263,12 +286,19 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         title = pm.format_value(ds, facet, fval, tex=True) if facet else ""
         if title:
             ax.set_title(title, fontsize=10)
-        panels.append(Panel(ax, xv, yv, pm.regime_colour_grid(ds, regime, valid), title))
+        panel_colours = pm.regime_colour_grid(ds, regime, valid)
+        if answered.any():
+            bem_colours = pm.regime_colour_grid(ds, bem, np.full(bem.shape, pm.flags(ds, "valid").code(pm.VALID)))
+            panel_colours = np.where(answered[..., None], bem_colours, panel_colours)
+        panels.append(Panel(ax, xv, yv, panel_colours, title))
 
     handles = [Patch(facecolor=pm.REGIME_COLOURS[m], label=m) for m in pm.DRAWN_REGIMES]
     if any_invalid:
         handles.append(Patch(facecolor=pm.invalid_colour("delayed"), edgecolor="0.35", hatch="///",
                              linewidth=0, label="invalid (overlap or\nno solution): paler,\nhatched"))
+    if any_bem:
+        handles.append(Patch(facecolor=pm.REGIME_COLOURS["delayed"], edgecolor="0.15", hatch="..",
+                             linewidth=0, label="model invalid, the\nBEM's regime: full\ncolour, dotted"))
     if any_missing:
         handles.append(Patch(facecolor=pm.REGIME_COLOURS[pm.NOT_COMPUTED], label="not computed"))
     if any_contour:

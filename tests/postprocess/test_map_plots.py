@@ -131,6 +131,32 @@ def test_regime_map_png_shows_the_stored_regime_at_every_valid_cell_centre(maps,
     assert panel.ax.get_yscale() == "linear"
 
 
+def test_regime_map_draws_the_bem_regime_where_the_model_has_no_answer(tmp_path):
+    # sweep --reference.sample invalid: at every cell the model flags, the BEM's regime in
+    # its full colour (dotted, and named in the legend); elsewhere the model's colours.
+    path = tmp_path / "invalid.h5"
+    done = subprocess.run([BINARY, "sweep", "--grid.l", "0.75", "--grid.dh", "linspace(0.02,0.12,6)", "--grid.T", "5",
+                           "--grid.pbar", "logspace(0.01,0.08,6)", "--grid.s", "2", "--reference", "bem",
+                           "--bem-grid", "32", "--reference.sample", "invalid", "--quiet", "--output", str(path)],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    with pm.open_map(path) as ds:
+        fig, (panel,) = regime_map.render(ds, "pbar", "dh", fixed_at(ds, l=0.75, T=5, s=2), contours=False)
+        regime = ds.regime.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
+        valid = ds.valid.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
+        bem = ds.bem_regime.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
+    flagged = valid != 0
+    assert flagged.any() and (~flagged).any()
+    assert np.array_equal(bem != -1, flagged)  # the BEM ran exactly where the model has no answer
+    colours = {0: "immediate", 1: "delayed", 2: "never"}  # README's codes
+    for j, i in zip(*np.nonzero(flagged)):
+        assert np.array_equal(panel.colours[j, i], pm.rgba(pm.REGIME_COLOURS[colours[int(bem[j, i])]]))
+    for j, i in zip(*np.nonzero(~flagged)):
+        assert np.array_equal(panel.colours[j, i], pm.rgba(pm.REGIME_COLOURS[colours[int(regime[j, i])]]))
+    labels = [t.get_text() for t in fig.axes[-1].get_legend().get_texts()]
+    assert any("BEM" in text for text in labels), labels
+
+
 def test_regime_map_draws_cells_not_computed_in_their_own_colour(maps, tmp_path):
     import matplotlib.image as mpimg
 
