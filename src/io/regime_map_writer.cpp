@@ -39,6 +39,10 @@ FlagSet flag_set(map::Flags flags) {
   } else if (flags == map::Flags::convergence) {
     add(0, "not_converged");
     add(1, "converged");
+  } else if (flags == map::Flags::source) {
+    add(0, "model");
+    add(1, "bem");
+    add(2, "none");
   } else {
     for (const model::Validity v : model::kValidities) {
       add(static_cast<std::int8_t>(v), model::validity_name(v));

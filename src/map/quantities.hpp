@@ -24,10 +24,12 @@ enum class Quantities { regime, full };
 
 enum class Kind { flag, real };       ///< int8 code, or float64
 enum class Extent { point, series };  ///< over the grid, or over the grid and the times
-enum class Source { model, bem };     ///< the localization model, or the periodic BEM reference
+/// The localization model, the periodic BEM reference, or the answer merged from both (the
+/// BEM's where it ran, else the model's where it is valid; TileEvaluator fills it).
+enum class Source { model, bem, answer };
 
 /// The flag sets a flag quantity takes its codes from (the map's flag_values/flag_meanings).
-enum class Flags { none, regime, validity, convergence };
+enum class Flags { none, regime, validity, convergence, source };
 
 struct QuantitySpec {
   std::string_view name;
@@ -72,7 +74,7 @@ inline double residual(const model::PointSummary& s) { return s.solver.residual;
 
 /// The quantities in the order the map creates its variables, the journal stores a tile's
 /// chunks and the point command prints them.
-inline constexpr std::array<QuantitySpec, 23> kQuantities{{
+inline constexpr std::array<QuantitySpec, 26> kQuantities{{
     {"regime", Kind::flag, Extent::point, Source::model, Flags::regime, "", "contact regime of the level-2 punches",
      "immediate: level 2 touches by the end of the load's rise (at once for a step load); delayed: later, while "
      "the load is held; never: not at all", quantity_access::regime},
@@ -141,6 +143,17 @@ inline constexpr std::array<QuantitySpec, 23> kQuantities{{
     {"bem_area_fraction", Kind::real, Extent::series, Source::bem, Flags::none, "1",
      "periodic BEM reference: contact area fraction", "NaN outside the reference sample", nullptr, nullptr,
      quantity_access::area_fraction},
+    {"answer_regime", Kind::flag, Extent::point, Source::answer, Flags::regime, "",
+     "contact regime of the level-2 punches, the best answer at the point",
+     "the periodic BEM's where it ran, else the model's where the model is valid; not_computed where neither "
+     "answers (answer_source says which)"},
+    {"answer_t_star", Kind::real, Extent::point, Source::answer, Flags::none, "T_eps",
+     "time at which the level-2 punches touch, the best answer at the point",
+     "from the same solution as answer_regime; NaN for never and where neither answers"},
+    {"answer_source", Kind::flag, Extent::point, Source::answer, Flags::source, "",
+     "which solution answer_regime and answer_t_star come from",
+     "model: the localization model, valid there and no BEM run; bem: the periodic BEM reference; none: the "
+     "model is invalid there and the BEM did not run"},
 }};
 
 inline constexpr std::size_t kQuantityCount = kQuantities.size();
@@ -156,7 +169,7 @@ constexpr std::size_t quantity(std::string_view name) {
 
 /// Whether a map of `quantities`, with or without a BEM reference, stores quantity `q`.
 constexpr bool is_stored(const QuantitySpec& q, Quantities quantities, bool bem) {
-  if (q.source == Source::bem) return bem;
+  if (q.source == Source::bem || q.source == Source::answer) return bem;
   return q.extent == Extent::point || quantities == Quantities::full;
 }
 

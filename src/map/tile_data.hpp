@@ -29,8 +29,8 @@ struct TileData {
 
   /// Sizes the array of every quantity a map of `quantities` (with or without a BEM
   /// reference) stores, for `points` points and `times` snapshot times: flags at -1 (not
-  /// computed), the model's reals at 0 (every one is overwritten), the BEM's at NaN (only
-  /// sampled points are written). The others are left empty.
+  /// computed), the model's reals at 0 (every one is overwritten), the BEM's and the
+  /// answer's at NaN (only some points are written). The others are left empty.
   void resize(std::size_t points, std::size_t times, Quantities quantities, bool bem) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t q = 0; q < kQuantityCount; ++q) {
@@ -42,7 +42,7 @@ struct TileData {
         codes[q].assign(n, -1);
         reals[q].clear();
       } else {
-        reals[q].assign(n, spec.source == Source::bem ? kNaN : 0.0);
+        reals[q].assign(n, spec.source == Source::model ? 0.0 : kNaN);
         codes[q].clear();
       }
     }

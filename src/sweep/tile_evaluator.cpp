@@ -50,6 +50,35 @@ void store_series(const std::vector<model::Snapshot>& series, std::size_t i, map
 
 constexpr auto kAll = std::make_index_sequence<map::kQuantityCount>{};
 
+// The answer at each point (map::Source::answer): the BEM's where it ran, else the model's
+// where the model is valid, else none.
+void merge_answers(map::TileData* out) {
+  using map::quantity;
+  const std::vector<std::int8_t>& regime = out->codes[quantity("regime")];
+  const std::vector<std::int8_t>& valid = out->codes[quantity("valid")];
+  const std::vector<std::int8_t>& bem_regime = out->codes[quantity("bem_regime")];
+  const std::vector<double>& t_star = out->reals[quantity("t_star")];
+  const std::vector<double>& bem_t_star = out->reals[quantity("bem_t_star")];
+  std::vector<std::int8_t>& answer = out->codes[quantity("answer_regime")];
+  std::vector<double>& answer_t_star = out->reals[quantity("answer_t_star")];
+  std::vector<std::int8_t>& source = out->codes[quantity("answer_source")];
+  constexpr std::int8_t kModel = 0, kBem = 1, kNone = 2;
+  constexpr std::int8_t kNotComputed = -1;
+  for (std::size_t i = 0; i < regime.size(); ++i) {
+    if (bem_regime[i] != kNotComputed) {
+      answer[i] = bem_regime[i];
+      answer_t_star[i] = bem_t_star[i];
+      source[i] = kBem;
+    } else if (valid[i] == static_cast<std::int8_t>(model::Validity::valid)) {
+      answer[i] = regime[i];
+      answer_t_star[i] = t_star[i];
+      source[i] = kModel;
+    } else {
+      source[i] = kNone;  // answer_regime stays not_computed, answer_t_star NaN
+    }
+  }
+}
+
 std::size_t require_axis(const map::Grid& grid, std::string_view name) {
   const std::size_t a = grid.find(name);
   if (a == grid.rank()) throw std::invalid_argument("sweep: the grid has no axis " + std::string(name));
@@ -230,7 +259,10 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
       }
     }
   }
-  if (bem) evaluate_reference(box, out);
+  if (bem) {
+    evaluate_reference(box, out);
+    merge_answers(out);
+  }
 }
 
 std::vector<std::uint64_t> TileEvaluator::chosen_by_model(ReferenceConfig::SampleRule rule) const {

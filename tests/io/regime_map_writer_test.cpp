@@ -772,6 +772,7 @@ TEST_F(RegimeMapWriterTest, write_encoded_refuses_a_tile_that_does_not_fit) {
 const std::vector<std::string> kBemVariables{"bem_regime", "bem_converged", "bem_iterations", "bem_residual",
                                              "bem_t_star", "bem_a1",        "bem_a2",         "bem_P1",
                                              "bem_P2",     "bem_area_fraction"};
+const std::vector<std::string> kAnswerVariables{"answer_regime", "answer_t_star", "answer_source"};
 
 TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
   make_map(map::Quantities::full);
@@ -791,6 +792,7 @@ TEST_F(RegimeMapWriterTest, bem_variables_are_stored_only_with_a_reference) {
   std::vector<std::string> expected = kCoordinates;
   expected.insert(expected.end(), kAxisVariables.begin(), kAxisVariables.end());
   expected.insert(expected.end(), kBemVariables.begin(), kBemVariables.end());
+  expected.insert(expected.end(), kAnswerVariables.begin(), kAnswerVariables.end());
   EXPECT_EQ(names, expected);
 }
 
@@ -828,6 +830,9 @@ TEST_F(RegimeMapWriterTest, bem_variables_carry_units_flags_dimensions_and_fill_
   const Handle converged = open_dataset(file, "bem_converged");
   EXPECT_EQ(read_attribute<std::int8_t>(converged, "flag_values", H5T_NATIVE_INT8), (std::vector<std::int8_t>{0, 1, -1}));
   EXPECT_EQ(read_string_attribute(converged, "flag_meanings"), "not_converged converged not_computed");
+  const Handle source = open_dataset(file, "answer_source");
+  EXPECT_EQ(read_attribute<std::int8_t>(source, "flag_values", H5T_NATIVE_INT8), (std::vector<std::int8_t>{0, 1, 2, -1}));
+  EXPECT_EQ(read_string_attribute(source, "flag_meanings"), "model bem none not_computed");
   EXPECT_EQ(H5Aexists(regime, "_FillValue"), 0);
   const Handle regime_dcpl(H5Dget_create_plist(regime), H5Pclose, "get dcpl");
   std::int8_t code_fill = 0;

@@ -23,7 +23,7 @@ same_maps() {  # same_maps A B: every variable bit-identical (h5diff exact, NaN 
   local a=$1 b=$2 v status=0
   for v in regime valid t_star h_0 h_inf a1_inf a2_inf area_fraction_inf a1 a2 P1 P2 area_fraction \
            bem_regime bem_converged bem_iterations bem_residual bem_t_star bem_a1 bem_a2 bem_P1 bem_P2 \
-           bem_area_fraction; do
+           bem_area_fraction answer_regime answer_t_star answer_source; do
     if h5ls "$a/$v" >/dev/null 2>&1; then
       if ! h5diff "$a" "$b" "/$v" "/$v" >/dev/null; then
         echo "FAIL: /$v differs between $a and $b"; status=1

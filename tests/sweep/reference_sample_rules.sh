@@ -24,6 +24,11 @@ assert want.any() and not want.all(), "the grid should have valid and invalid po
 assert np.array_equal(got, want), f"invalid: {int(got.sum())} picked, {int(want.sum())} invalid"
 assert f.attrs["bem_sample_rule"] == "invalid" and f.attrs["bem_sample"] == want.sum()
 assert np.isfinite(f["bem_iterations"][...][want]).all() and (f["bem_converged"][...][want] == 1).all()
+# The merged answer: the BEM where it ran (here: every invalid point), the model elsewhere.
+source, answer, t_answer = f["answer_source"][...], f["answer_regime"][...], f["answer_t_star"][...]
+assert np.array_equal(source, np.where(want, 1, 0)), "answer_source: bem exactly where the model is invalid"
+assert np.array_equal(answer, np.where(want, f["bem_regime"][...], f["regime"][...]))
+assert np.array_equal(t_answer, np.where(want, f["bem_t_star"][...], f["t_star"][...]), equal_nan=True)
 
 f, got = picked("boundary.h5")
 regime = f["regime"][...]
@@ -39,6 +44,12 @@ for axis in range(regime.ndim):
 assert want.any() and not want.all(), "the grid should have regime boundaries and interiors"
 assert np.array_equal(got, want), f"boundary: {int(got.sum())} picked, {int(want.sum())} on a boundary"
 assert f.attrs["bem_sample_rule"] == "boundary" and f.attrs["bem_sample"] == want.sum()
+# The merged answer: the BEM at the boundary points, the model where it is valid, none else.
+valid = f["valid"][...] == 0
+source = f["answer_source"][...]
+assert np.array_equal(source, np.where(want, 1, np.where(valid, 0, 2)))
+assert np.array_equal(f["answer_regime"][...], np.where(want, f["bem_regime"][...], np.where(valid, regime, -1)))
+assert (source == 2).any(), "some invalid point off the boundary is answered by neither"
 print(f"invalid and boundary samples: ok ({int(want.sum())} boundary points)")
 PY
 # The rule is part of what the map is: a map of one rule is not resumed under another.
