@@ -233,7 +233,8 @@ po::options_description command_line_options() {
        "integer >= 1; default 4096")
       ("reference", po::value<std::string>()->value_name("METHOD"),
        "same as --reference.method: bem evaluates the periodic BEM reference at every grid point (or at "
-       "--reference.sample K random ones) into the bem_* variables; none or bem; default none")
+       "--reference.sample K random ones, or the invalid or boundary points of the model) into the bem_* "
+       "variables; none or bem; default none")
       ("bem-grid", po::value<std::string>()->value_name("N"),
        "same as --reference.grid: BEM nodes per side of the l x l cell; an even integer in [16, 2048]; "
        "default 128");
