@@ -31,7 +31,7 @@ void BM_InfluenceApply(benchmark::State& state) {
     benchmark::DoNotOptimize(u.data());
   }
 }
-BENCHMARK(BM_InfluenceApply)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_InfluenceApply)->Arg(128)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
 /// One elastic contact solve from the uniform first guess to the default tolerance (1e-10).
 void elastic_solve(benchmark::State& state, const PeriodicGrid& g, const std::vector<double>& f,
@@ -53,7 +53,7 @@ void BM_ElasticSolve_TwoLevel(benchmark::State& state) {
       make_two_level_cell(paper_point(0.05), static_cast<int>(state.range(0)));
   elastic_solve(state, cell.grid, cell.profile, 0.06);
 }
-BENCHMARK(BM_ElasticSolve_TwoLevel)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ElasticSolve_TwoLevel)->Arg(128)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
 
 // A Hertz spot (a = L/8) in an L = 2 cell.
 void BM_ElasticSolve_Hertz(benchmark::State& state) {
