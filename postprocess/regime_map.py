@@ -242,14 +242,13 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         row, col = divmod(k, ncols)
         ax = fig.add_subplot(grid[row, col], sharex=first, sharey=first)
         first = first or ax
-        cat = pm.categories(ds, regime, valid)
-        # Where the model has no answer and the BEM has one, the BEM's regime, in its full
-        # colour, dotted (the model's pale hatched cell is not drawn there).
+        # Where the model has no answer and the BEM has one, the BEM's regime, drawn as a
+        # valid one (full colour), dotted (the model's pale hatched cell is not drawn there).
         answered = bem_answers(ds, valid, bem)
-        if answered.any():
-            bem_cat = pm.categories(ds, bem, np.full(bem.shape, pm.flags(ds, "valid").code(pm.VALID)))
-            cat = np.where(answered, bem_cat, cat)
-            any_bem = True
+        any_bem |= bool(answered.any())
+        shown_regime = np.where(answered, bem, regime)
+        shown_valid = np.where(answered, pm.flags(ds, "valid").code(pm.VALID), valid)
+        cat = pm.categories(ds, shown_regime, shown_valid)
         ax.pcolormesh(xe, ye, cat, cmap=cmap, norm=norm, shading="flat", antialiased=False,
                       edgecolors="none")
         if answered.any():
@@ -286,11 +285,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         title = pm.format_value(ds, facet, fval, tex=True) if facet else ""
         if title:
             ax.set_title(title, fontsize=10)
-        panel_colours = pm.regime_colour_grid(ds, regime, valid)
-        if answered.any():
-            bem_colours = pm.regime_colour_grid(ds, bem, np.full(bem.shape, pm.flags(ds, "valid").code(pm.VALID)))
-            panel_colours = np.where(answered[..., None], bem_colours, panel_colours)
-        panels.append(Panel(ax, xv, yv, panel_colours, title))
+        panels.append(Panel(ax, xv, yv, pm.regime_colour_grid(ds, shown_regime, shown_valid), title))
 
     handles = [Patch(facecolor=pm.REGIME_COLOURS[m], label=m) for m in pm.DRAWN_REGIMES]
     if any_invalid:

@@ -11,7 +11,7 @@
 namespace punchsweep::io {
 
 /// What never-written cells of the flag variables read as (the HDF5 fill value).
-inline constexpr std::int8_t kNotComputed = -1;
+inline constexpr std::int8_t kNotComputed = map::kNotComputed;
 
 /// Deflate level of every variable: level 1, because the sweep must write > 2e6 points/s.
 inline constexpr unsigned kDeflateLevel = 1;

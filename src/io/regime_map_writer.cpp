@@ -37,12 +37,9 @@ FlagSet flag_set(map::Flags flags) {
       add(static_cast<std::int8_t>(r), model::regime_name(r));
     }
   } else if (flags == map::Flags::convergence) {
-    add(0, "not_converged");
-    add(1, "converged");
+    for (const map::Convergence c : map::kConvergences) add(static_cast<std::int8_t>(c), map::flag_meaning(c));
   } else if (flags == map::Flags::source) {
-    add(0, "model");
-    add(1, "bem");
-    add(2, "none");
+    for (const map::AnswerSource s : map::kAnswerSources) add(static_cast<std::int8_t>(s), map::flag_meaning(s));
   } else {
     for (const model::Validity v : model::kValidities) {
       add(static_cast<std::int8_t>(v), model::validity_name(v));

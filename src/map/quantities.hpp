@@ -31,6 +31,24 @@ enum class Source { model, bem, answer };
 /// The flag sets a flag quantity takes its codes from (the map's flag_values/flag_meanings).
 enum class Flags { none, regime, validity, convergence, source };
 
+/// The code of a point a tile or map has not computed, in every flag set.
+inline constexpr std::int8_t kNotComputed = -1;
+
+/// Flags::convergence: whether every contact solve of a BEM point met its tolerance.
+enum class Convergence : std::int8_t { not_converged = 0, converged = 1 };
+inline constexpr std::array<Convergence, 2> kConvergences{Convergence::not_converged, Convergence::converged};
+constexpr std::string_view flag_meaning(Convergence c) {
+  return c == Convergence::converged ? "converged" : "not_converged";
+}
+
+/// Flags::source: which solution a point's merged answer comes from.
+enum class AnswerSource : std::int8_t { model = 0, bem = 1, none = 2 };
+inline constexpr std::array<AnswerSource, 3> kAnswerSources{AnswerSource::model, AnswerSource::bem,
+                                                            AnswerSource::none};
+constexpr std::string_view flag_meaning(AnswerSource s) {
+  return s == AnswerSource::model ? "model" : s == AnswerSource::bem ? "bem" : "none";
+}
+
 struct QuantitySpec {
   std::string_view name;
   Kind kind;
@@ -66,8 +84,9 @@ inline double a2(const model::Snapshot& s) { return s.a2; }
 inline double P1(const model::Snapshot& s) { return s.P1; }
 inline double P2(const model::Snapshot& s) { return s.P2; }
 inline double area_fraction(const model::Snapshot& s) { return s.area_fraction; }
-/// Flags::convergence codes: 0 not_converged, 1 converged.
-inline std::int8_t converged(const model::PointSummary& s) { return s.solver.converged ? 1 : 0; }
+inline std::int8_t converged(const model::PointSummary& s) {
+  return static_cast<std::int8_t>(s.solver.converged ? Convergence::converged : Convergence::not_converged);
+}
 inline double iterations(const model::PointSummary& s) { return s.solver.iterations; }
 inline double residual(const model::PointSummary& s) { return s.solver.residual; }
 }  // namespace quantity_access

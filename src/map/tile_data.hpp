@@ -39,7 +39,7 @@ struct TileData {
                             : spec.extent == Extent::series ? points * times
                                                             : points;
       if (spec.kind == Kind::flag) {
-        codes[q].assign(n, -1);
+        codes[q].assign(n, kNotComputed);
         reals[q].clear();
       } else {
         reals[q].assign(n, spec.source == Source::model ? 0.0 : kNaN);

@@ -247,13 +247,14 @@ ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLa
 
 namespace {
 
-/// The summary, computing every part, with the localization's guide or branch.
-PointSummary summarize_with(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide,
-                            const ShellsBranch* branch) {
+/// The summary, computing every part, from the problem's touchdown and the localization's
+/// guide or branch.
+PointSummary summarize_with(const ContactProblem& problem, const CreepLaw& creep, const Touchdown& touch,
+                            const LongTermGuide* guide, const ShellsBranch* branch) {
   SummaryParts parts;
   parts.guide = guide;
   parts.branch = branch;
-  parts.classification = classify(problem, creep);
+  parts.classification = classify(touch, CreepWeightedLoad(creep, problem.pbar0, problem.loading));
   single_level_ends(problem, creep, &parts.h_0, &parts.h_inf, &parts.a1_inf_single);
   std::optional<ElasticTwoLevel> elastic;
   if (parts.classification.elastic_start) {
@@ -266,22 +267,24 @@ PointSummary summarize_with(const ContactProblem& problem, const CreepLaw& creep
 }  // namespace
 
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
+  const Touchdown touch = touchdown(problem);
   if (problem.localization.is_paper()) {
     const LongTermGuide guide(problem);
-    return summarize_with(problem, creep, &guide, nullptr);
+    return summarize_with(problem, creep, touch, &guide, nullptr);
   }
-  const ShellsBranch branch(problem, touchdown(problem));
-  return summarize_with(problem, creep, nullptr, &branch);
+  const ShellsBranch branch(problem, touch);
+  return summarize_with(problem, creep, touch, nullptr, &branch);
 }
 
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options) {
+  const Touchdown touch = touchdown(problem);
   if (problem.localization.is_paper()) {
     const LongTermGuide guide(problem);
-    return evaluate_point(problem, creep, options, summarize_with(problem, creep, &guide, nullptr));
+    return evaluate_point(problem, creep, options, summarize_with(problem, creep, touch, &guide, nullptr));
   }
-  const ShellsBranch branch(problem, touchdown(problem));
-  return evaluate_point(problem, creep, options, summarize_with(problem, creep, nullptr, &branch), &branch);
+  const ShellsBranch branch(problem, touch);
+  return evaluate_point(problem, creep, options, summarize_with(problem, creep, touch, nullptr, &branch), &branch);
 }
 
 namespace {

@@ -50,8 +50,7 @@ TwoLevelState ShellsBranch::state_of(const Piece& piece, double v) const {
   const double X = X_of(v);
   const double z = std::max(chebyshev::clenshaw(piece.z, kNodes, t), 0.0);
   const double Q1 = chebyshev::clenshaw(piece.q1, kNodes, t) * X * l2_;
-  return TwoLevelState{chebyshev::clenshaw(piece.a1, kNodes, t), problem_.shape.s >= 2 ? std::sqrt(z) : z, Q1,
-                       X * l2_ - Q1};
+  return TwoLevelState{chebyshev::clenshaw(piece.a1, kNodes, t), a2_of(z), Q1, X * l2_ - Q1};
 }
 
 TwoLevelState ShellsBranch::predict(double X, const Root& last, const Root* before) const {
@@ -64,13 +63,11 @@ TwoLevelState ShellsBranch::predict(double X, const Root& last, const Root* befo
   const double v1 = std::sqrt(last.X - X_star_);
   const double v0 = std::sqrt(before->X - X_star_);
   const double w = (v - v1) / (v1 - v0);
-  const bool squared = problem_.shape.s >= 2;
-  const auto z = [squared](const TwoLevelState& st) { return squared ? st.a2 * st.a2 : st.a2; };
   const auto q = [this](const Root& r) { return r.state.Q1 / (r.X * l2_); };
   const double a1 = p.a1 + w * (p.a1 - before->state.a1);
-  const double zz = std::max(z(p) + w * (z(p) - z(before->state)), 0.0);
+  const double z = std::max(z_of(p.a2) + w * (z_of(p.a2) - z_of(before->state.a2)), 0.0);
   const double q1 = q(last) + w * (q(last) - q(*before));
-  const TwoLevelState linear{a1, squared ? std::sqrt(zz) : zz, q1 * X * l2_, (1.0 - q1) * X * l2_};
+  const TwoLevelState linear{a1, a2_of(z), q1 * X * l2_, (1.0 - q1) * X * l2_};
   // Not past the merge margin (where the sums leave their tables).
   return gap(linear) > 0.0 ? linear : plain;
 }
@@ -119,7 +116,7 @@ bool ShellsBranch::build_pieces(double v_lo, double v_hi, int depth, Failure* fa
     before = previous;
     previous = Root{X, r.state, gap(r.state)};
     values[0][j] = r.state.a1;
-    values[1][j] = problem_.shape.s >= 2 ? r.state.a2 * r.state.a2 : r.state.a2;
+    values[1][j] = z_of(r.state.a2);
     values[2][j] = r.state.Q1 / (X * l2_);
   }
   for (int k = 0; k < 3; ++k) {
@@ -133,10 +130,8 @@ bool ShellsBranch::build_pieces(double v_lo, double v_hi, int depth, Failure* fa
     const TwoLevelState guess = state_of(piece, v);
     const TwoLevelSolve r = root(X, guess, start, nullptr);
     if (!r.converged) return failed(X, start, std::nullopt);
-    const double z = problem_.shape.s >= 2 ? r.state.a2 * r.state.a2 : r.state.a2;
-    const double z_guess = problem_.shape.s >= 2 ? guess.a2 * guess.a2 : guess.a2;
     good = good && std::abs(guess.a1 - r.state.a1) <= kTolerance * problem_.l &&
-           std::abs(z_guess - z) <= kTolerance * z_scale_ &&
+           std::abs(z_of(guess.a2) - z_of(r.state.a2)) <= kTolerance * z_scale_ &&
            std::abs(guess.Q1 - r.state.Q1) <= kTolerance * X * l2_;
   }
   if (!good && depth < kMaxDepth) {

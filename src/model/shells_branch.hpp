@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -10,7 +11,7 @@
 
 namespace punchsweep::model {
 
-/// The two-level branch of a localization of the family (docs/model.md, section 11.3) for
+/// The two-level branch of a localization of the family (docs/model.md, section 11.1) for
 /// one (l, s, C, dh), tabulated. Its radii follow the loads, so its state is a function of
 /// X alone, from touchdown (X*, a1*, a2 = 0) to where its spots reach the merge margin or
 /// its equations stop having a solution (X_end): one curve that every pbar, material and
@@ -20,7 +21,7 @@ namespace punchsweep::model {
 /// although a2 ~ sqrt(X - X*) at touchdown: segment j covers X in [X* 2^j, X* 2^(j+1)]
 /// (segment 0 from X* itself), each in pieces of kNodes Chebyshev nodes in v, every node a
 /// TwoLevelShells Newton root. A piece is halved until the interpolant agrees with Newton
-/// roots at three points between its nodes to kTolerance (a1/l, z/l^z_power and
+/// roots at four points between its nodes to kTolerance (a1/l, z/l^z_power and
 /// q1 = Q1/(X l^2)); Q2 = X l^2 - Q1 exactly, so the loads sum to the nominal load.
 /// Segments are built on first use, each from the end of the one before, so the curve is a
 /// pure function of (l, s, C, dh, localization): a sweep and `punchsweep point` read the
@@ -89,6 +90,9 @@ class ShellsBranch {
   double gap(const TwoLevelState& state) const;
   TwoLevelState state_of(const Piece& piece, double v) const;
   double X_of(double v) const { return X_star_ + v * v; }
+  /// The curve's smooth variable z = a2^2 (s >= 2) or a2 (s = 1), as TwoLevelShells' Newton's.
+  double z_of(double a2) const { return problem_.shape.s >= 2 ? a2 * a2 : a2; }
+  double a2_of(double z) const { return problem_.shape.s >= 2 ? std::sqrt(z) : z; }
 
   ContactProblem problem_;
   TwoLevelShells system_;

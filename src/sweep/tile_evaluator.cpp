@@ -62,19 +62,18 @@ void merge_answers(map::TileData* out) {
   std::vector<std::int8_t>& answer = out->codes[quantity("answer_regime")];
   std::vector<double>& answer_t_star = out->reals[quantity("answer_t_star")];
   std::vector<std::int8_t>& source = out->codes[quantity("answer_source")];
-  constexpr std::int8_t kModel = 0, kBem = 1, kNone = 2;
-  constexpr std::int8_t kNotComputed = -1;
+  const auto code = [](map::AnswerSource s) { return static_cast<std::int8_t>(s); };
   for (std::size_t i = 0; i < regime.size(); ++i) {
-    if (bem_regime[i] != kNotComputed) {
+    if (bem_regime[i] != map::kNotComputed) {
       answer[i] = bem_regime[i];
       answer_t_star[i] = bem_t_star[i];
-      source[i] = kBem;
+      source[i] = code(map::AnswerSource::bem);
     } else if (valid[i] == static_cast<std::int8_t>(model::Validity::valid)) {
       answer[i] = regime[i];
       answer_t_star[i] = t_star[i];
-      source[i] = kModel;
+      source[i] = code(map::AnswerSource::model);
     } else {
-      source[i] = kNone;  // answer_regime stays not_computed, answer_t_star NaN
+      source[i] = code(map::AnswerSource::none);  // answer_regime stays not_computed, answer_t_star NaN
     }
   }
 }
