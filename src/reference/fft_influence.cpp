@@ -97,36 +97,257 @@ FftwBuffer<T>& FftwBuffer<T>::operator=(FftwBuffer&& other) noexcept {
 template class FftwBuffer<double>;
 template class FftwBuffer<std::complex<double>>;
 
-PeriodicInfluence::PeriodicInfluence(const PeriodicGrid& grid)
-    : grid_(grid),
-      plans_(fft_plans(grid.nx, grid.ny)),
-      kernel_(static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(grid.ny / 2 + 1)),
-      real_(grid.size()),
-      spectrum_(kernel_.size()) {
-  if (const std::string e = grid_error(grid); !e.empty()) throw std::invalid_argument(e);
-  const int nyc = grid.ny / 2 + 1;
-  const double two_pi = 2.0 * std::numbers::pi;
-  const double normalisation = 1.0 / static_cast<double>(grid.size());
-  for (int i = 0; i < grid.nx; ++i) {
-    const int fi = i <= grid.nx / 2 ? i : i - grid.nx;  // signed frequency index
-    const double kx = two_pi * fi / grid.Lx;
-    for (int j = 0; j < nyc; ++j) {
-      const double ky = two_pi * j / grid.Ly;
-      const double k = std::hypot(kx, ky);
-      kernel_[static_cast<std::size_t>(i) * nyc + j] = k > 0.0 ? 2.0 / k * normalisation : 0.0;
+/// The lines of one axis are transformed this many at a time.
+constexpr int kCosineBlock = 8;
+
+/// A many-transform r2c plan for `lines` lines of m values (x_0 .. x_K, K = m - 1), and
+/// how it makes their cosine sums. For even K, a real transform of length K of
+///   y_0 = x_0 + x_K,  y_K/2 = 2 x_K/2,  y_j, y_K-j = (x_j + x_K-j) -+ 2 sin(pi j/K) (x_j - x_K-j)
+/// gives the even sums as its real parts, X_2k = Re Y_k, and the odd ones by the running
+/// sum X_1 = x_0 - x_K + 2 sum_j cos(pi j/K) (x_j - x_K-j), X_2k+1 = X_2k-1 - Im Y_k
+/// (Press et al., Numerical Recipes, 2nd ed., section 12.3, cosft1, for FFTW's sign
+/// and REDFT00's factor 2): half the transform of the even extension, which odd K takes.
+struct CosineTransform::RowPlan {
+  RowPlan(int m, int lines)
+      : m(m), halved((m - 1) % 2 == 0), length(halved ? m - 1 : 2 * (m - 1)), spectrum(length / 2 + 1), lines(lines) {
+    if (halved) {
+      const int K = m - 1;
+      for (int j = 0; j < K / 2; ++j) {
+        sine.push_back(2.0 * std::sin(std::numbers::pi * j / K));
+        cosine.push_back(2.0 * std::cos(std::numbers::pi * j / K));
+      }
+    }
+    FftwBuffer<double> pad(static_cast<std::size_t>(lines) * length);
+    FftwBuffer<std::complex<double>> spec(static_cast<std::size_t>(lines) * spectrum);
+    const std::lock_guard<std::mutex> lock(planner_mutex());
+    plan = fftw_plan_many_dft_r2c(1, &length, lines, pad.data(), nullptr, 1, length,
+                                  reinterpret_cast<fftw_complex*>(spec.data()), nullptr, 1, spectrum,
+                                  FFTW_MEASURE | FFTW_DESTROY_INPUT);
+    if (plan == nullptr) throw std::runtime_error("FFTW could not plan the cosine transform");
+  }
+  ~RowPlan() {
+    const std::lock_guard<std::mutex> lock(planner_mutex());
+    fftw_destroy_plan(plan);
+  }
+  RowPlan(const RowPlan&) = delete;
+  RowPlan& operator=(const RowPlan&) = delete;
+
+  int m;
+  bool halved;   ///< K even: the length-K transform; else the even extension's, 2K
+  int length;    ///< of each line's real transform
+  int spectrum;  ///< complex values of each line's transform
+  int lines;
+  std::vector<double> sine, cosine;  ///< 2 sin(pi j/K), 2 cos(pi j/K), j < K/2 (halved)
+  fftw_plan plan = nullptr;
+};
+
+namespace {
+
+std::shared_ptr<const CosineTransform::RowPlan> cosine_rows(int m, int lines) {
+  // The planner's mutex is made first, so that it outlives the cache (plans lock it when
+  // destroyed); the cache has its own, as making a plan takes the planner's.
+  planner_mutex();
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, std::shared_ptr<const CosineTransform::RowPlan>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = cache[{m, lines}];
+  if (!slot) slot = std::make_shared<const CosineTransform::RowPlan>(m, lines);
+  return slot;
+}
+
+}  // namespace
+
+CosineTransform::CosineTransform(int mx, int my)
+    : mx_(mx), my_(my) {
+  if (mx < 2 || my < 2) throw std::invalid_argument("a cosine transform needs at least 2 x 2 values");
+  // Along y there are mx lines, along x my: full blocks, and a plan for the rest.
+  along_y_ = {cosine_rows(my, kCosineBlock), mx % kCosineBlock ? cosine_rows(my, mx % kCosineBlock) : nullptr};
+  along_x_ = {cosine_rows(mx, kCosineBlock), my % kCosineBlock ? cosine_rows(mx, my % kCosineBlock) : nullptr};
+  const std::size_t length = static_cast<std::size_t>(std::max(along_y_.block->length, along_x_.block->length));
+  pad_ = FftwBuffer<double>(kCosineBlock * length);
+  spec_ = FftwBuffer<std::complex<double>>(kCosineBlock * (length / 2 + 1));
+  middle_ = FftwBuffer<double>(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my));
+}
+
+namespace {
+
+/// The halved transform's preparation of one block: line b's values x(b, j), j = 0 .. K,
+/// become its row of `pad` (length K) and its odd seed odd[b]. Rows (the y axis, each line
+/// contiguous) go line by line, columns (the x axis, lines side by side) value by value, so
+/// that the inner loop reads memory in order.
+template <bool kColumns, class Value>
+void halve_lines(const Value& x, int block, int K, const std::vector<double>& sine,
+                 const std::vector<double>& cosine, double* pad, double* odd) {
+  const auto prepare = [&](int b, int j) {
+    double* e = pad + static_cast<std::ptrdiff_t>(b) * K;
+    const double sum = x(b, j) + x(b, K - j), difference = x(b, j) - x(b, K - j);
+    e[j] = sum - sine[j] * difference;
+    e[K - j] = sum + sine[j] * difference;
+    odd[b] += cosine[j] * difference;
+  };
+  for (int b = 0; b < block; ++b) {
+    double* e = pad + static_cast<std::ptrdiff_t>(b) * K;
+    odd[b] = x(b, 0) - x(b, K);
+    e[0] = x(b, 0) + x(b, K);
+    e[K / 2] = 2.0 * x(b, K / 2);
+  }
+  if constexpr (kColumns) {
+    for (int j = 1; j < K / 2; ++j) {
+      for (int b = 0; b < block; ++b) prepare(b, j);
+    }
+  } else {
+    for (int b = 0; b < block; ++b) {
+      for (int j = 1; j < K / 2; ++j) prepare(b, j);
     }
   }
 }
 
+/// The halved transform's cosine sums of one block from the spectra (spectrum values a
+/// line) and the odd seeds, into y(b, j) = value.
+template <bool kColumns, class Put>
+void unhalve_lines(const Put& put, int block, int K, const std::complex<double>* spec,
+                   std::ptrdiff_t spectrum, double* odd) {
+  const auto finish = [&](int b, int k) {
+    const std::complex<double> c = spec[b * spectrum + k];
+    put(b, 2 * k, c.real());
+    odd[b] -= c.imag();
+    put(b, 2 * k + 1, odd[b]);
+  };
+  for (int b = 0; b < block; ++b) {
+    put(b, 0, spec[b * spectrum].real());
+    put(b, 1, odd[b]);
+    put(b, K, spec[b * spectrum + K / 2].real());
+  }
+  if constexpr (kColumns) {
+    for (int k = 1; k < K / 2; ++k) {
+      for (int b = 0; b < block; ++b) finish(b, k);
+    }
+  } else {
+    for (int b = 0; b < block; ++b) {
+      for (int k = 1; k < K / 2; ++k) finish(b, k);
+    }
+  }
+}
+
+}  // namespace
+
+template <bool kColumns>
+void CosineTransform::lines(const Axis& axis, const double* in, double* out, int count) {
+  const RowPlan& shape = *axis.block;
+  const int m = shape.m;
+  const int K = m - 1;
+  // Rows: my values a line, lines my apart; columns: mx values my apart, lines side by side.
+  const std::ptrdiff_t line = kColumns ? 1 : my_;
+  const std::ptrdiff_t step = kColumns ? my_ : 1;
+  const std::ptrdiff_t length = shape.length;
+  const std::ptrdiff_t spectrum = shape.spectrum;
+  double* pad = pad_.data();
+  std::complex<double>* spec = spec_.data();
+  double odd[kCosineBlock];  // halved: the running odd sums of each line
+  for (int first = 0; first < count; first += kCosineBlock) {
+    const int block = std::min(kCosineBlock, count - first);
+    const double* x = in + first * line;
+    double* y = out + first * line;
+    const auto at = [&](int b, int j) { return x[b * line + j * step]; };
+    const auto put = [&](int b, int j, double v) { y[b * line + j * step] = v; };
+    if (shape.halved) {
+      halve_lines<kColumns>(at, block, K, shape.sine, shape.cosine, pad, odd);
+    } else {  // the even extension x_0 .. x_K, x_K-1 .. x_1
+      for (int b = 0; b < block; ++b) {
+        double* e = pad + b * length;
+        for (int j = 0; j < m; ++j) e[j] = at(b, j);
+        for (int j = 1; j < K; ++j) e[length - j] = e[j];
+      }
+    }
+    const RowPlan& plan = block == kCosineBlock ? *axis.block : *axis.rest;
+    fftw_execute_dft_r2c(plan.plan, pad, reinterpret_cast<fftw_complex*>(spec));
+    if (shape.halved) {
+      unhalve_lines<kColumns>(put, block, K, spec, spectrum, odd);
+    } else {  // an even line's spectrum is real: its cosine sums
+      for (int b = 0; b < block; ++b) {
+        for (int j = 0; j < m; ++j) put(b, j, spec[b * spectrum + j].real());
+      }
+    }
+  }
+}
+
+void CosineTransform::execute(const double* in, double* out) {
+  // Along y (the rows), then along x (the columns, a column's values my apart).
+  lines<false>(along_y_, in, middle_.data(), mx_);
+  lines<true>(along_x_, middle_.data(), out, my_);
+}
+
+namespace {
+
+/// The half-space kernel 2/|k| times `normalisation` (0 at k = 0) at signed wave numbers.
+double kernel_value(int fi, int fj, const PeriodicGrid& grid, double normalisation) {
+  const double two_pi = 2.0 * std::numbers::pi;
+  const double k = std::hypot(two_pi * fi / grid.Lx, two_pi * fj / grid.Ly);
+  return k > 0.0 ? 2.0 / k * normalisation : 0.0;
+}
+
+}  // namespace
+
+PeriodicInfluence::PeriodicInfluence(const PeriodicGrid& grid) : grid_(grid) {
+  if (const std::string e = grid_error(grid); !e.empty()) throw std::invalid_argument(e);
+  const double normalisation = 1.0 / static_cast<double>(grid.nodes());
+  if (grid.mirrored()) {
+    // The quarter's cosine coefficients sit at wave numbers 0 .. nx/2 and 0 .. ny/2.
+    const int mx = grid.stored_nx(), my = grid.stored_ny();
+    cosine_ = std::make_unique<CosineTransform>(mx, my);
+    kernel_.resize(grid.size());
+    for (int i = 0; i < mx; ++i) {
+      for (int j = 0; j < my; ++j) kernel_[grid.index(i, j)] = kernel_value(i, j, grid, normalisation);
+    }
+    cosines_ = FftwBuffer<double>(grid.size());
+    return;
+  }
+  plans_ = fft_plans(grid.nx, grid.ny);
+  const int nyc = grid.ny / 2 + 1;
+  kernel_.resize(static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(nyc));
+  for (int i = 0; i < grid.nx; ++i) {
+    const int fi = i <= grid.nx / 2 ? i : i - grid.nx;  // signed frequency index
+    for (int j = 0; j < nyc; ++j) {
+      kernel_[static_cast<std::size_t>(i) * nyc + j] = kernel_value(fi, j, grid, normalisation);
+    }
+  }
+  real_ = FftwBuffer<double>(grid.size());
+  spectrum_ = FftwBuffer<std::complex<double>>(kernel_.size());
+}
+
 void PeriodicInfluence::apply(std::span<const double> p, std::span<double> u, double scale) {
+  convolve(p, u, kernel_, scale);
+}
+
+void PeriodicInfluence::apply_stiffness(std::span<const double> p, std::span<double> u, double scale) {
+  if (stiffness_.empty()) {
+    // |k|/2 / (nx ny) from kernel_ = 2/|k| / (nx ny): the inverse on every mode but k = 0.
+    const double nodes = static_cast<double>(grid_.nodes());
+    stiffness_.resize(kernel_.size());
+    for (std::size_t i = 0; i < kernel_.size(); ++i) {
+      stiffness_[i] = kernel_[i] > 0.0 ? 1.0 / (kernel_[i] * nodes * nodes) : 0.0;
+    }
+  }
+  convolve(p, u, stiffness_, scale);
+}
+
+void PeriodicInfluence::convolve(std::span<const double> p, std::span<double> u,
+                                 const std::vector<double>& kernel, double scale) {
   const std::size_t n = grid_.size();
   if (p.size() != n || u.size() != n) {
-    throw std::invalid_argument("PeriodicInfluence::apply: array size differs from the grid");
+    throw std::invalid_argument("PeriodicInfluence: array size differs from the grid");
+  }
+  if (grid_.mirrored()) {
+    double* cosines = cosines_.data();
+    cosine_->execute(p.data(), cosines);
+    for (std::size_t i = 0; i < n; ++i) cosines[i] *= kernel[i] * scale;
+    cosine_->execute(cosines, u.data());
+    return;
   }
   std::copy(p.begin(), p.end(), real_.data());
   plans_->forward(real_.data(), spectrum_.data());
   std::complex<double>* spectrum = spectrum_.data();
-  for (std::size_t i = 0; i < kernel_.size(); ++i) spectrum[i] *= kernel_[i] * scale;
+  for (std::size_t i = 0; i < kernel.size(); ++i) spectrum[i] *= kernel[i] * scale;
   plans_->backward(spectrum_.data(), real_.data());
   std::copy(real_.data(), real_.data() + n, u.begin());
 }

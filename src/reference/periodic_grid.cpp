@@ -14,6 +14,8 @@ std::string grid_error(const PeriodicGrid& grid) {
   std::ostringstream out;
   if (grid.nx < 1 || grid.ny < 1) {
     out << "grid " << grid.nx << " x " << grid.ny << " is outside its range: nx, ny >= 1";
+  } else if (grid.mirrored() && (grid.nx % 2 != 0 || grid.ny % 2 != 0)) {
+    out << "mirrored grid " << grid.nx << " x " << grid.ny << " is outside its range: nx, ny even";
   } else if (!(std::isfinite(grid.Lx) && grid.Lx > 0.0 && std::isfinite(grid.Ly) &&
                grid.Ly > 0.0)) {
     out << "cell " << grid.Lx << " x " << grid.Ly << " is outside its range: Lx, Ly > 0";
@@ -25,10 +27,19 @@ double periodic_offset(double d, double L) { return d - L * std::nearbyint(d / L
 
 std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& shape, double cx,
                                   double cy) {
+  if (grid.mirrored()) {
+    const auto mirror_point = [](double c, double L) {
+      const double d = std::abs(periodic_offset(c, L));
+      return d == 0.0 || d == 0.5 * L;
+    };
+    if (!mirror_point(cx, grid.Lx) || !mirror_point(cy, grid.Ly)) {
+      throw std::invalid_argument("punch_profile: a mirrored grid needs a centre at 0 or half the cell");
+    }
+  }
   std::vector<double> f(grid.size());
-  for (int i = 0; i < grid.nx; ++i) {
+  for (int i = 0; i < grid.stored_nx(); ++i) {
     const double dx = periodic_offset(grid.x(i) - cx, grid.Lx);
-    for (int j = 0; j < grid.ny; ++j) {
+    for (int j = 0; j < grid.stored_ny(); ++j) {
       const double dy = periodic_offset(grid.y(j) - cy, grid.Ly);
       f[grid.index(i, j)] = shape.C * model::ipow(std::hypot(dx, dy), shape.s);
     }
@@ -44,10 +55,10 @@ std::string two_level_grid_error(int n) {
   return out.str();
 }
 
-TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n) {
+TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Symmetry symmetry) {
   if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
   TwoLevelCell cell;
-  cell.grid = PeriodicGrid::square(n, problem.l);
+  cell.grid = PeriodicGrid::square(n, problem.l, symmetry);
   const PeriodicGrid& g = cell.grid;
   const double half = 0.5 * problem.l;
   const std::vector<double> f1 = punch_profile(g, problem.shape, 0.0, 0.0);

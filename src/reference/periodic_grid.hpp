@@ -12,31 +12,61 @@
 
 namespace punchsweep::reference {
 
+/// Which nodes of a periodic grid carry the fields.
+enum class Symmetry {
+  /// All nx x ny nodes.
+  none,
+  /// Fields even in x and in y about node (0, 0), hence also about (nx/2, ny/2): only the
+  /// quarter 0 <= i <= nx/2, 0 <= j <= ny/2 is stored ((nx/2 + 1)(ny/2 + 1) nodes, nx and ny
+  /// even). Node (i, j) stands for its mirror images: multiplicity() of them. The two-level
+  /// cell is such a field (its punches sit at (0, 0) and (l/2, l/2)).
+  mirror,
+};
+
 /// A periodic nx x ny grid of collocation nodes on the Lx x Ly cell. Node (i, j) sits at
-/// (i hx, j hy) and is stored row-major at index i ny + j. A node stands for the hx x hy
-/// cell centred on it (pressure piecewise constant, contact area = nodes x cell area).
+/// (i hx, j hy) and is stored row-major at index i stored_ny() + j. A node stands for the
+/// hx x hy cell centred on it (pressure piecewise constant, contact area = nodes x cell
+/// area); under Symmetry::mirror for that cell and its mirror images.
 struct PeriodicGrid {
   int nx = 0;
   int ny = 0;
   double Lx = 1.0;  ///< cell length along x, in R
   double Ly = 1.0;  ///< cell length along y, in R
+  Symmetry symmetry = Symmetry::none;
 
   /// The n x n grid of a length x length square cell.
-  static PeriodicGrid square(int n, double length) { return {n, n, length, length}; }
+  static PeriodicGrid square(int n, double length, Symmetry symmetry = Symmetry::none) {
+    return {n, n, length, length, symmetry};
+  }
 
   double hx() const { return Lx / nx; }
   double hy() const { return Ly / ny; }
   double cell_area() const { return hx() * hy(); }
-  std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
+  bool mirrored() const { return symmetry == Symmetry::mirror; }
+  int stored_nx() const { return mirrored() ? nx / 2 + 1 : nx; }  ///< rows i = 0 .. stored_nx() - 1
+  int stored_ny() const { return mirrored() ? ny / 2 + 1 : ny; }  ///< columns j likewise
+  /// Stored nodes: the length of every field on the grid.
+  std::size_t size() const { return static_cast<std::size_t>(stored_nx()) * static_cast<std::size_t>(stored_ny()); }
+  /// Nodes of the whole periodic cell, nx ny: what a mean over the cell divides by.
+  std::size_t nodes() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
   std::size_t index(int i, int j) const {
-    return static_cast<std::size_t>(i) * static_cast<std::size_t>(ny) + static_cast<std::size_t>(j);
+    return static_cast<std::size_t>(i) * static_cast<std::size_t>(stored_ny()) + static_cast<std::size_t>(j);
   }
   double x(int i) const { return i * hx(); }
   double y(int j) const { return j * hy(); }
+  /// How many nodes of the whole cell stored node `k` stands for: 1 without symmetry; under
+  /// mirror 1, 2 or 4 (nodes on the lines i = 0, nx/2 or j = 0, ny/2 are their own images).
+  /// Sums over the cell are sums over the stored nodes weighted by it.
+  double multiplicity(std::size_t k) const {
+    if (!mirrored()) return 1.0;
+    const int i = static_cast<int>(k / static_cast<std::size_t>(stored_ny()));
+    const int j = static_cast<int>(k % static_cast<std::size_t>(stored_ny()));
+    return ((i == 0 || 2 * i == nx) ? 1.0 : 2.0) * ((j == 0 || 2 * j == ny) ? 1.0 : 2.0);
+  }
 };
 
-/// Empty when the grid is usable (nx, ny >= 1, finite positive lengths), else a sentence
-/// naming the bad field and its range.
+/// Empty when the grid is usable (nx, ny >= 1, even under Symmetry::mirror, finite positive
+/// lengths), else a sentence naming the bad field and its range.
 std::string grid_error(const PeriodicGrid& grid);
 
 /// d wrapped into [-L/2, L/2]: the offset to the nearest periodic image.
@@ -44,6 +74,8 @@ double periodic_offset(double d, double L);
 
 /// Profile of one punch centred at (cx, cy), f(r) = C r^s / R^(s-1) with R = 1 (docs/model.md,
 /// section 2), r the distance to the nearest periodic image of the centre.
+/// On a mirrored grid the centre must be a mirror point, 0 or half the cell along each axis
+/// (else std::invalid_argument: the profile would not be even).
 std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& shape, double cx,
                                   double cy);
 
@@ -73,7 +105,10 @@ inline constexpr int kMinTwoLevelNodes = 4;
 std::string two_level_grid_error(int n);
 
 /// The two-level cell of `problem` on an n x n grid (n even, so both tips are nodes; the
-/// problem must satisfy model::problem_error() == "").
-TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n);
+/// problem must satisfy model::problem_error() == ""), stored whole or, under
+/// Symmetry::mirror, as its quarter [0, l/2]^2 (the same discrete problem, a quarter of the
+/// unknowns).
+TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n,
+                                 Symmetry symmetry = Symmetry::none);
 
 }  // namespace punchsweep::reference

@@ -1,7 +1,10 @@
 // The periodic influence operator: exact on a harmonic, symmetric and positive, planned once.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -85,4 +88,50 @@ TEST(PeriodicInfluence, self_influence_matches_love_uniform_square_patch) {
       u[g.index(n / 2, n / 2)] - u[g.index(n / 2 + far, n / 2)] + g.cell_area() / (pi * r);
   const double love = 4.0 * std::log(1.0 + std::sqrt(2.0)) * g.hx() / pi;
   EXPECT_NEAR(self / love, 1.0, 0.02);
+}
+
+TEST(PeriodicInfluence, mirrored_quarter_gives_the_whole_grids_displacement) {
+  // An even field (here a two-punch profile-like field plus even harmonics) stored as its
+  // quarter: the cosine-transform operator must give the quarter of the whole grid's K p.
+  // Quarter sizes K + 1 with K even (the halved transform) and odd (the even extension).
+  for (const auto& [nx, ny] : {std::pair{32, 32}, std::pair{48, 20}, std::pair{34, 30}, std::pair{36, 6}}) {
+    const PeriodicGrid whole{nx, ny, 1.5, 1.0};
+    const PeriodicGrid quarter{nx, ny, 1.5, 1.0, Symmetry::mirror};
+    ASSERT_EQ(quarter.size(), static_cast<std::size_t>((nx / 2 + 1) * (ny / 2 + 1)));
+    std::vector<double> p(whole.size()), u(whole.size());
+    for (int i = 0; i < nx; ++i) {
+      for (int j = 0; j < ny; ++j) {
+        const double cx = std::cos(2 * pi * i / nx), cy = std::cos(2 * pi * 2 * j / ny);
+        const double r1 = std::hypot(std::min(i, nx - i) / double(nx), std::min(j, ny - j) / double(ny));
+        p[whole.index(i, j)] = 1.0 + 0.5 * cx * cy + std::exp(-20 * r1 * r1);
+      }
+    }
+    PeriodicInfluence K(whole);
+    K.apply(p, u, 1.7);
+    std::vector<double> pq(quarter.size()), uq(quarter.size());
+    for (int i = 0; i < quarter.stored_nx(); ++i) {
+      for (int j = 0; j < quarter.stored_ny(); ++j) pq[quarter.index(i, j)] = p[whole.index(i, j)];
+    }
+    PeriodicInfluence Kq(quarter);
+    Kq.apply(pq, uq, 1.7);
+    double range = 0.0;
+    for (const double v : u) range = std::max(range, std::abs(v));
+    for (int i = 0; i < quarter.stored_nx(); ++i) {
+      for (int j = 0; j < quarter.stored_ny(); ++j) {
+        EXPECT_NEAR(uq[quarter.index(i, j)], u[whole.index(i, j)], 1e-13 * range) << i << ", " << j;
+      }
+    }
+    // Multiplicities count every node of the whole cell once.
+    double count = 0.0;
+    for (std::size_t k = 0; k < quarter.size(); ++k) count += quarter.multiplicity(k);
+    EXPECT_EQ(count, static_cast<double>(whole.nodes()));
+  }
+}
+
+TEST(PeriodicInfluence, mirrored_grid_needs_even_sizes_and_mirror_point_centres) {
+  EXPECT_NE(grid_error(PeriodicGrid{31, 32, 1.0, 1.0, Symmetry::mirror}), "");
+  EXPECT_EQ(grid_error(PeriodicGrid{31, 32, 1.0, 1.0}), "");
+  const PeriodicGrid g = PeriodicGrid::square(16, 1.0, Symmetry::mirror);
+  EXPECT_NO_THROW(punch_profile(g, {2, 0.5}, 0.5, 0.0));
+  EXPECT_THROW(punch_profile(g, {2, 0.5}, 0.25, 0.0), std::invalid_argument);
 }
