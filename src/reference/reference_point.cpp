@@ -19,6 +19,54 @@ double tip2_gap(const TwoLevelCell& cell, const ViscoelasticStepper& stepper) {
   return cell.profile[cell.tip2] + stepper.displacement()[cell.tip2] - stepper.approach();
 }
 
+/// The step lengths of StepControl: the fixed ladder, or steps of equal growth of the creep
+/// compliance.
+class StepSizer {
+ public:
+  StepSizer(const StepControl& control, const model::CreepLaw& creep, double rise_time)
+      : control_(control), creep_(creep), rise_(rise_time), ladder_(control.first_step) {}
+
+  /// The length of the step from t (a caller may shorten it to land on a snapshot or a kink).
+  double step(double t) const {
+    if (control_.creep_growth == 0.0) return ladder_;
+    // Under a held load the contact set at t is the elastic one at J(t): steps of equal
+    // growth of log J are steps of equal change of the contact. J is non-decreasing, so
+    // the step is found by doubling, then halving, on it.
+    const double target = creep_.creep(t) * (1.0 + control_.creep_growth);
+    double h = control_.first_step;
+    while (h < control_.max_step && creep_.creep(t + 2.0 * h) <= target) h *= 2.0;
+    double lo = h, hi = 2.0 * h;
+    for (int k = 0; k < 8 && creep_.creep(lo) <= target; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (creep_.creep(t + mid) <= target ? lo : hi) = mid;
+    }
+    h = std::min(lo, control_.max_step);
+    // While the load rises the contact is not J's alone: the ladder's lengths bound it.
+    return t < rise_ ? std::min(h, ladder_) : h;
+  }
+
+  /// The end of the step from t towards `end` (a snapshot time or a kink of the load): a
+  /// step of step(t), or `end` itself when it is at most 1.25 steps away, or half the way
+  /// when it is at most two (no sliver of a step before a snapshot). The ladder keeps its
+  /// lengths and only ever shortens a step to land.
+  double next(double t, double end) const {
+    const double h = step(t);
+    const double remaining = end - t;
+    if (control_.creep_growth == 0.0) return std::min(t + h, end);
+    if (remaining <= 1.25 * h) return end;
+    return remaining < 2.0 * h ? t + 0.5 * remaining : t + h;
+  }
+
+  /// A step was taken: the ladder grows.
+  void accepted() { ladder_ = std::min(ladder_ * control_.growth, control_.max_step); }
+
+ private:
+  StepControl control_;
+  const model::CreepLaw& creep_;
+  double rise_;
+  double ladder_;
+};
+
 /// Bookkeeping of the solves of one point.
 struct SolveLog {
   ReferenceResult* result;
@@ -66,12 +114,13 @@ ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double
   ReferenceSnapshot s;
   s.t = t;
   for (std::size_t i = 0; i < p.size(); ++i) {
+    const double m = cell.grid.multiplicity(i);  // 1 on a whole grid: the plain sums
     const double w2 = cell.level2_weight[i];
-    s.P1 += (1.0 - w2) * p[i];
-    s.P2 += w2 * p[i];
+    s.P1 += m * ((1.0 - w2) * p[i]);
+    s.P2 += m * (w2 * p[i]);
     if (p[i] > 0.0) {
-      s.area1 += 1.0 - w2;
-      s.area2 += w2;
+      s.area1 += m * (1.0 - w2);
+      s.area2 += m * w2;
     }
   }
   s.P1 *= cell_area;
@@ -114,7 +163,7 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
     throw std::invalid_argument(e);
   if (const std::string e = options_error(options); !e.empty()) throw std::invalid_argument(e);
 
-  const TwoLevelCell cell = make_two_level_cell(problem, options.n);
+  const TwoLevelCell cell = make_two_level_cell(problem, options.n, options.symmetry);
   ReferenceResult result;
   result.spacing = cell.grid.hx();
   const SolveLog log{&result};
@@ -141,7 +190,8 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
     result.t_star = 0.0;
     result.t_star_upper = 0.0;
   }
-  // The last two states with level 2 free, (t, tip gap), for extrapolating t*.
+  // The last two states with level 2 free, (t, tip gap): their secant extrapolates t*
+  // (a parabola through three aimed the trials no better, measured).
   double t_a = 0.0, g_a = 0.0;
   double t_b = 0.0, g_b = tip2_gap(cell, stepper);
   bool have_a = false;
@@ -152,59 +202,78 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
     t_b = stepper.time();
     g_b = tip2_gap(cell, stepper);
   };
+  const auto secant_ready = [&]() { return have_a && g_a > g_b && t_b > t_a; };
+  const auto aim = [&]() { return t_b + g_b * (t_b - t_a) / (g_a - g_b); };
 
-  double dt = options.steps.first_step;
+  StepSizer sizer(options.steps, creep, problem.loading.rise_time());
   for (const double target : targets) {
     while (stepper.time() < target) {
-      const double t_next = std::min({stepper.time() + dt, target, next_kink(stepper.time())});
+      const double t_next = sizer.next(stepper.time(), std::min(target, next_kink(stepper.time())));
       if (touched) {
         log(stepper.advance(t_next));
         ++result.steps;
-      } else {
-        ViscoelasticStepper::Checkpoint free_state = stepper.checkpoint();
-        log(stepper.advance(t_next));
-        ++result.steps;
-        if (level2_loaded(cell, stepper.pressure())) {
-          // Bisect the step that first loads level 2, keeping the states with level 2 free.
-          double lo = free_state.t;
-          double hi = t_next;
-          while (hi - lo > options.t_star_resolution) {
-            const double mid = 0.5 * (lo + hi);
-            if (stepper.time() != lo) stepper.rewind(free_state);
-            log(stepper.advance(mid));
-            if (level2_loaded(cell, stepper.pressure())) {
-              hi = mid;
-            } else {
-              lo = mid;
-              ++result.steps;
-              remember_free_state();
-              free_state = stepper.checkpoint();
-            }
-          }
-          // A state at hi was reached from the latest free state in one step: keep it. Only
-          // when the last trial left level 2 free is the step to hi taken again.
-          if (stepper.time() == lo) log(stepper.advance(hi));
-          touched = level2_loaded(cell, stepper.pressure());
-          if (touched) {
-            result.t_star_lower = lo;
-            result.t_star_upper = hi;
-            double t_star = 0.5 * (lo + hi);
-            if (have_a && g_a > g_b && t_b > t_a) {
-              t_star = t_b + g_b * (t_b - t_a) / (g_a - g_b);  // secant on the tip gap
-            }
-            result.t_star = std::clamp(t_star, lo, hi);
-            // As the model says it (model/regime.hpp): touching while the load still rises
-            // is immediate, during the hold delayed.
-            const double rise = problem.loading.rise_time();
-            result.regime = rise > 0.0 && *result.t_star <= rise ? model::Regime::immediate : model::Regime::delayed;
-          } else {
-            remember_free_state();
-          }
+        sizer.accepted();
+        continue;
+      }
+      ViscoelasticStepper::Checkpoint free_state = stepper.checkpoint();
+      log(stepper.advance(t_next));
+      ++result.steps;
+      if (!level2_loaded(cell, stepper.pressure())) {
+        remember_free_state();
+        sizer.accepted();
+        continue;
+      }
+      // The step first loads level 2: narrow it, keeping the states with level 2 free. A
+      // trial aims just short of the touchdown that the tip gap extrapolates to, until the
+      // latest free state is that close, then just past it, so that the bracket usually
+      // closes on a loaded state (nothing to take again); an aim that misses its side
+      // makes the next trial the midpoint.
+      double lo = free_state.t;
+      double hi = t_next;
+      const double offset = 0.45 * options.t_star_resolution;
+      bool halve = false;
+      while (hi - lo > options.t_star_resolution) {
+        double trial = 0.5 * (lo + hi);
+        bool aim_above = true;  // a midpoint's outcome is no miss either way
+        if (!halve && secant_ready()) {
+          const double predicted = aim();
+          aim_above = predicted - offset - lo <= 0.1 * options.t_star_resolution;
+          const double margin = std::min(0.1 * options.t_star_resolution, 0.25 * (hi - lo));
+          trial = std::clamp(predicted + (aim_above ? offset : -offset), lo + margin, hi - margin);
+        }
+        if (stepper.time() != lo) stepper.rewind(free_state);
+        log(stepper.advance(trial));
+        const bool loaded = level2_loaded(cell, stepper.pressure());
+        halve = !halve && loaded != aim_above;  // the aim missed its side
+        if (loaded) {
+          hi = trial;
         } else {
+          lo = trial;
+          ++result.steps;
           remember_free_state();
+          free_state = stepper.checkpoint();
         }
       }
-      dt = std::min(dt * options.steps.growth, options.steps.max_step);
+      // A state at hi was reached from the latest free state in one step: keep it. Only
+      // when the last trial left level 2 free is the step to hi taken again.
+      if (stepper.time() == lo) log(stepper.advance(hi));
+      touched = level2_loaded(cell, stepper.pressure());
+      if (touched) {
+        result.t_star_lower = lo;
+        result.t_star_upper = hi;
+        double t_star = 0.5 * (lo + hi);
+        if (secant_ready()) {
+          t_star = t_b + g_b * (t_b - t_a) / (g_a - g_b);  // secant on the tip gap
+        }
+        result.t_star = std::clamp(t_star, lo, hi);
+        // As the model says it (model/regime.hpp): touching while the load still rises
+        // is immediate, during the hold delayed.
+        const double rise = problem.loading.rise_time();
+        result.regime = rise > 0.0 && *result.t_star <= rise ? model::Regime::immediate : model::Regime::delayed;
+      } else {
+        remember_free_state();
+      }
+      sizer.accepted();
     }
     at_target.push_back(measure_state(cell, stepper.pressure(), stepper.displacement(), target));
   }

@@ -20,31 +20,45 @@
 
 namespace punchsweep::reference {
 
-/// The time steps: geometric growth from `first_step` to `max_step`, each step shortened
-/// where needed to land on a snapshot time. Scaling all three step lengths by k scales the
-/// time-discretisation error by about k^2 (second order; tested).
+/// The time steps. Under a held load the contact set at t is the elastic one at J(t)
+/// (the extended correspondence principle), so the contact changes as J does: each step
+/// grows J by the factor 1 + creep_growth (J's doubling-then-halving inverse, to 1/256 of
+/// the step), and is at least `first_step` and at most `max_step`. While the load still
+/// rises, and for creep_growth = 0 throughout, the steps instead grow geometrically by
+/// `growth` from `first_step` to `max_step` (the fixed ladder). Steps also end on the
+/// snapshot times and the load's kinks: by J's rule, a snapshot at most 1.25 steps away is
+/// reached in one step, and one at most two away in two equal ones. Scaling the step lengths by k scales the
+/// time-discretisation error of the loads by about k^2 (second order; tested); under a
+/// held load and a retardation-series law the contact areas, hence t*, do not depend on
+/// the steps at all (ViscoelasticStepper).
 struct StepControl {
   double first_step = 0.02;  ///< in T_eps, > 0
   double growth = 1.25;      ///< >= 1
-  double max_step = 0.25;    ///< in T_eps, >= first_step
+  double max_step = 1.0;     ///< in T_eps, >= first_step
+  double creep_growth = 0.05;  ///< J(t + dt) / J(t) - 1 per step, >= 0 (0: the ladder)
 };
 
 /// The steps and t* resolution for `creep`, scaled with its retardation times lambda: first
-/// step 0.02 lambda_min, at most 0.25 lambda_max, t* to 1e-3 lambda_min (for the standard
-/// linear solid, lambda = 1 T_eps: the defaults). A spectrum over many decades is so
-/// stepped geometrically across all of them (about 10 steps a decade). A law without a
-/// retardation series uses its creep time scale for both.
+/// step 0.02 lambda_min, at most 2 lambda_max, t* to 1e-3 lambda_min (for the standard
+/// linear solid, lambda = 1 T_eps: the defaults). A law without a retardation series uses
+/// its creep time scale for both.
 struct ReferenceOptions;
 void scale_steps_to_law(const model::CreepLaw& creep, ReferenceOptions* options);
 
 /// Numerical choices of a reference point.
 struct ReferenceOptions {
   int n = 128;  ///< n x n grid on the l x l cell; even, >= kMinTwoLevelNodes
+  /// mirror: solve on the quarter cell, the same discrete problem at a quarter of the
+  /// unknowns (the cell is even in x and y); none: the whole cell (for cross-checks).
+  Symmetry symmetry = Symmetry::mirror;
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< snapshot times, in T_eps, >= 0
   StepControl steps{};
   ContactSolverOptions solver{};
-  /// The step in which level 2 first carries load is bisected until it is at most this
-  /// long (in T_eps); t* is then located inside that bracket.
+  /// The step in which level 2 first carries load is narrowed until it is at most this
+  /// long (in T_eps); t* is then located inside that bracket. The trial times aim just
+  /// either side of the touchdown that the level-2 tip gap extrapolates to (a secant on the
+  /// last two states with level 2 free), falling back to halving when an aim misses, so a
+  /// bracket usually takes two or three solves.
   double t_star_resolution = 1e-3;
 };
 
