@@ -22,6 +22,7 @@
 #include "io/crc32.hpp"
 #include "model/creep_laws.hpp"
 #include "model/parameters.hpp"
+#include "reference/reference_point.hpp"
 #include "run/text_lines.hpp"
 #include "map/axis_parser.hpp"
 
@@ -827,6 +828,8 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
                           Fixed::reference_seed}) {
     lines.push_back(dotted(key) + " = " + reference_value(key, config.reference));
   }
+  // Maps with BEM points name the solver: one made by another does not resume.
+  if (config.reference.on()) lines.push_back("reference.solver = " + std::string(reference::kSolverRevision));
   return lines;
 }
 

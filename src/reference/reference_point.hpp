@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "model/contact_problem.hpp"
@@ -44,6 +45,12 @@ struct StepControl {
 /// its creep time scale for both.
 struct ReferenceOptions;
 void scale_steps_to_law(const model::CreepLaw& creep, ReferenceOptions* options);
+
+/// What the solver is, for a map's identity: a map made by another solver (another
+/// discretisation in time, or the whole cell with the plain iteration) would mix answers
+/// that agree only to the solver's accuracy, so it does not resume.
+inline constexpr std::string_view kSolverRevision =
+    "2 (quarter cell, preconditioned conjugate gradient, steps of 5% growth of J)";
 
 /// Numerical choices of a reference point.
 struct ReferenceOptions {

@@ -461,6 +461,10 @@ TEST(SweepOptions, identity_lists_the_content_keys_in_shortest_decimals) {
   ASSERT_EQ(paper.identity.size(), 14u);
   EXPECT_EQ(paper.identity[7], "time.times = 0, 0.5, 1, 2, 5");
   EXPECT_EQ(c.identity, parse({}).identity);  // where the map goes does not change what it holds
+  // A map with BEM points names its solver, so that one made by another does not resume.
+  const SweepConfig bem = parse({"--reference", "bem"});
+  ASSERT_EQ(bem.identity.size(), 16u);
+  EXPECT_EQ(bem.identity[15].rfind("reference.solver = 2 (quarter cell", 0), 0u) << bem.identity[15];
 }
 
 TEST(SweepOptions, identity_is_equal_for_equivalent_specs) {
@@ -493,11 +497,12 @@ TEST(SweepOptions, identity_differences_name_each_differing_reference_key) {
                   .empty());
   const std::vector<std::string> differences = identity_differences(
       existing, parse({"--bem-grid", "64", "--reference.sample", "all", "--reference.seed", "2"}).identity);
-  ASSERT_EQ(differences.size(), 4u);
+  ASSERT_EQ(differences.size(), 5u);
   EXPECT_EQ(differences[0], "reference.method: the existing map has bem; this run asks for none");
   EXPECT_EQ(differences[1], "reference.grid: the existing map has 32; this run asks for 64");
   EXPECT_EQ(differences[2], "reference.sample: the existing map has 5; this run asks for all");
   EXPECT_EQ(differences[3], "reference.seed: the existing map has 1; this run asks for 2");
+  EXPECT_EQ(differences[4].rfind("reference.solver: the existing map has 2 (quarter cell", 0), 0u) << differences[4];
 }
 
 TEST(SweepOptions, identity_differences_report_keys_only_one_side_has) {
