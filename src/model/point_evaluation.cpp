@@ -245,46 +245,50 @@ ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLa
   return solve_elastic(at_once, 1.0 / creep.creep_initial(), guide, branch);
 }
 
-namespace {
+DhParts dh_parts(const ContactProblem& problem) {
+  DhParts parts;
+  parts.touchdown = touchdown(problem);
+  if (problem.localization.is_paper()) {
+    parts.guide = std::make_shared<const LongTermGuide>(problem);
+  } else {
+    parts.branch = std::make_shared<const ShellsBranch>(problem, parts.touchdown);
+  }
+  return parts;
+}
 
-/// The summary, computing every part, from the problem's touchdown and the localization's
-/// guide or branch.
-PointSummary summarize_with(const ContactProblem& problem, const CreepLaw& creep, const Touchdown& touch,
-                            const LongTermGuide* guide, const ShellsBranch* branch) {
+SingleLevelEnds single_level_ends(const ContactProblem& problem, const CreepLaw& creep) {
+  SingleLevelEnds ends;
+  single_level_ends(problem, creep, &ends.h_0, &ends.h_inf, &ends.a1_inf_single);
+  return ends;
+}
+
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep, const DhParts& dh,
+                             const SingleLevelEnds& ends, std::optional<ElasticTwoLevel>* elastic) {
   SummaryParts parts;
-  parts.guide = guide;
-  parts.branch = branch;
-  parts.classification = classify(touch, CreepWeightedLoad(creep, problem.pbar0, problem.loading));
-  single_level_ends(problem, creep, &parts.h_0, &parts.h_inf, &parts.a1_inf_single);
-  std::optional<ElasticTwoLevel> elastic;
+  parts.guide = dh.guide.get();
+  parts.branch = dh.branch.get();
+  parts.classification = classify(dh.touchdown, CreepWeightedLoad(creep, problem.pbar0, problem.loading));
+  parts.h_0 = ends.h_0;
+  parts.h_inf = ends.h_inf;
+  parts.a1_inf_single = ends.a1_inf_single;
+  std::optional<ElasticTwoLevel> own;
+  std::optional<ElasticTwoLevel>& start = elastic != nullptr ? *elastic : own;
   if (parts.classification.elastic_start) {
-    elastic = solve_elastic_start(problem, creep, guide, branch);
-    parts.elastic = &*elastic;
+    if (!start) start = solve_elastic_start(problem, creep, parts.guide, parts.branch);
+    parts.elastic = &*start;
   }
   return summarize_point(problem, creep, parts);
 }
 
-}  // namespace
-
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep) {
-  const Touchdown touch = touchdown(problem);
-  if (problem.localization.is_paper()) {
-    const LongTermGuide guide(problem);
-    return summarize_with(problem, creep, touch, &guide, nullptr);
-  }
-  const ShellsBranch branch(problem, touch);
-  return summarize_with(problem, creep, touch, nullptr, &branch);
+  return summarize_point(problem, creep, dh_parts(problem), single_level_ends(problem, creep));
 }
 
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options) {
-  const Touchdown touch = touchdown(problem);
-  if (problem.localization.is_paper()) {
-    const LongTermGuide guide(problem);
-    return evaluate_point(problem, creep, options, summarize_with(problem, creep, touch, &guide, nullptr));
-  }
-  const ShellsBranch branch(problem, touch);
-  return evaluate_point(problem, creep, options, summarize_with(problem, creep, touch, nullptr, &branch), &branch);
+  const DhParts dh = dh_parts(problem);
+  return evaluate_point(problem, creep, options, summarize_point(problem, creep, dh, single_level_ends(problem, creep)),
+                        dh.branch.get());
 }
 
 namespace {

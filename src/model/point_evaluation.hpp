@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -110,6 +111,31 @@ struct SummaryParts {
 /// h(0), h(inf) and the single-level radius at J(inf) (eq 9.5, 9.10).
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single);
+
+/// What a point's summary needs that depends only on (l, s, C, dh) and the localization:
+/// its touchdown, and its long-term guide (the paper's model) or its two-level branch (the
+/// family's). A sweep or a batch of points builds it once per such subset.
+struct DhParts {
+  Touchdown touchdown;
+  std::shared_ptr<const LongTermGuide> guide;
+  std::shared_ptr<const ShellsBranch> branch;
+};
+DhParts dh_parts(const ContactProblem& problem);  ///< pbar0 and the loading are not read
+
+/// What it needs per (l, s, C, pbar0, creep law, loading): the single-level ends.
+struct SingleLevelEnds {
+  double h_0 = 0.0;
+  double h_inf = 0.0;
+  double a1_inf_single = 0.0;
+};
+SingleLevelEnds single_level_ends(const ContactProblem& problem, const CreepLaw& creep);
+
+/// The summary from its shared parts: the classification by the creep-weighted load, the
+/// elastic start where the point needs it (kept in *elastic, which may already hold the one
+/// of this (l, s, C, dh, pbar0): it is the same for every creep law, at modulus 1/J(0) = 1),
+/// then summarize_point(problem, creep, SummaryParts).
+PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep, const DhParts& dh,
+                             const SingleLevelEnds& ends, std::optional<ElasticTwoLevel>* elastic = nullptr);
 
 /// The elastic two-level state at t = 0+ (eqs 9.12-9.15): modulus 1/J(0) under the nominal
 /// pressure applied at once, pbar(0+) = pbar0 phi(0+). `guide` (the paper's) and `branch`

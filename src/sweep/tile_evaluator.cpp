@@ -170,9 +170,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
   for (const std::size_t a : material_) materials_global *= n[a];
   const model::EvaluationOptions options{times_, {}};
 
-  std::vector<model::Touchdown> touch(c[dh_]);
-  std::vector<std::shared_ptr<const model::LongTermGuide>> guide(c[dh_]);
-  std::vector<std::shared_ptr<const model::ShellsBranch>> branch(c[dh_]);
+  std::vector<model::DhParts> touch(c[dh_]);
   std::vector<Ends> ends(materials * c[pbar_]);
   // The elastic start at t = 0 has modulus 1/J(0) = 1 E0* for every material (the unit of
   // pressure), so it is shared across the material axes.
@@ -192,16 +190,9 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
         if (!t.ready) {
           model::ContactProblem at_dh = problem;
           at_dh.dh = value(dh_, idh);
-          const model::Touchdown touchdown = model::touchdown(at_dh);
-          if (localization_.is_paper()) {
-            t = Touch{touchdown, std::make_shared<const model::LongTermGuide>(at_dh), nullptr, true};
-          } else {
-            t = Touch{touchdown, nullptr, std::make_shared<const model::ShellsBranch>(at_dh, touchdown), true};
-          }
+          t = Touch{model::dh_parts(at_dh), true};
         }
-        touch[idh] = t.touchdown;
-        guide[idh] = t.guide;
-        branch[idh] = t.branch;
+        touch[idh] = t.parts;
       }
       for (std::size_t m = 0; m < materials; ++m) {
         for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
@@ -214,7 +205,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
           }
           problem.pbar0 = value(pbar_, ip);
           problem.loading = loading[m];
-          model::single_level_ends(problem, *creep[m], &e.h_0, &e.h_inf, &e.a1_inf_single);
+          e.ends = model::single_level_ends(problem, *creep[m]);
           e.ready = true;
           if (cache_) ends_[g] = e;
         }
@@ -228,26 +219,13 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
           problem.loading = loading[m];
           for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
             problem.pbar0 = value(pbar_, ip);
-            const Ends& e = ends[m * c[pbar_] + ip];
-            model::SummaryParts parts;
-            parts.classification =
-                model::classify(touch[idh], model::CreepWeightedLoad(law, problem.pbar0, problem.loading));
-            parts.h_0 = e.h_0;
-            parts.h_inf = e.h_inf;
-            parts.a1_inf_single = e.a1_inf_single;
-            parts.guide = guide[idh].get();
-            parts.branch = branch[idh].get();
-            if (parts.classification.elastic_start) {
-              auto& cached = elastic[idh * c[pbar_] + ip];
-              if (!cached) cached = model::solve_elastic_start(problem, law, parts.guide, parts.branch);
-              parts.elastic = &*cached;
-            }
-            const model::PointSummary summary = model::summarize_point(problem, law, parts);
+            const model::PointSummary summary = model::summarize_point(
+                problem, law, touch[idh], ends[m * c[pbar_] + ip].ends, &elastic[idh * c[pbar_] + ip]);
 
             const std::size_t i =
                 il * stride[l_] + idh * stride[dh_] + material_offset[m] + ip * stride[pbar_] + is * stride[s_];
             if (full) {
-              const model::PointResult r = model::evaluate_point(problem, law, options, summary, parts.branch);
+              const model::PointResult r = model::evaluate_point(problem, law, options, summary, touch[idh].branch.get());
               store_point<map::Source::model>(r, i, out, kAll);  // a series solve may flag the point
               store_series<map::Source::model>(r.series, i, out, kAll);
             } else {

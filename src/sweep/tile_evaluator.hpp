@@ -67,15 +67,11 @@ class TileEvaluator {
 
   /// The single-level ends of eq 9.5/9.10 at one (l, s, material, pbar).
   struct Ends {
-    double h_0 = 0.0;
-    double h_inf = 0.0;
-    double a1_inf_single = 0.0;
+    model::SingleLevelEnds ends;
     bool ready = false;
   };
   struct Touch {
-    model::Touchdown touchdown;
-    std::shared_ptr<const model::LongTermGuide> guide;  ///< built with the touchdown (the paper's model only)
-    std::shared_ptr<const model::ShellsBranch> branch;  ///< likewise (the family's only)
+    model::DhParts parts;  ///< touchdown, and the paper's guide or the family's branch
     bool ready = false;
   };
 
