@@ -34,6 +34,19 @@ po::options_description point_options(const PointMaterial& material) {
 
 }  // namespace
 
+namespace {
+
+/// The point's inputs read and checked, in the command's order (the first bad one is the
+/// one reported), with the snapshot times.
+PointRun read_point(const po::variables_map& vm, const PointMaterial& material, model::EvaluationOptions* options) {
+  PointRun run{read_point_inputs(vm, material), {}};
+  run.inputs.problem.localization = read_localization(vm);
+  options->times = read_times(vm);
+  return run;
+}
+
+}  // namespace
+
 int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
   const PointMaterial material = find_point_material(args);
   const po::options_description opts = point_options(material);
@@ -44,20 +57,23 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
         << "Exit codes: 0 success (a flagged point is still a success: see 'valid'), 2 bad input.\n";
     return 0;
   }
-
-  PointInputs inputs = read_point_inputs(vm, material);
-  inputs.problem.localization = read_localization(vm);
-
   model::EvaluationOptions options;
-  options.times = read_times(vm);
+  PointRun run = read_point(vm, material, &options);
   const std::string format_text = read_choice(vm, "format", {"table", "json", "csv"});
   const OutputFormat format = format_text == "json"  ? OutputFormat::json
                               : format_text == "csv" ? OutputFormat::csv
                                                      : OutputFormat::table;
-
-  const model::PointResult result = model::evaluate_point(inputs.problem, *inputs.creep, options);
-  write_point(out, format, inputs, result);
+  run.result = model::evaluate_point(run.inputs.problem, *run.inputs.creep, options);
+  write_point(out, format, run.inputs, run.result);
   return 0;
+}
+
+PointRun evaluate_point_command(const std::vector<std::string>& args) {
+  const PointMaterial material = find_point_material(args);
+  model::EvaluationOptions options;
+  PointRun run = read_point(parse_command(args, point_options(material), "point"), material, &options);
+  run.result = model::evaluate_point(run.inputs.problem, *run.inputs.creep, options);
+  return run;
 }
 
 }  // namespace punchsweep::app

@@ -4,10 +4,24 @@
 #include <string>
 #include <vector>
 
+#include "app/command_options.hpp"
+#include "model/point_evaluation.hpp"
+
 namespace punchsweep::app {
 
 /// `punchsweep point ...`: evaluates one parameter point and prints it.
 /// Returns the exit code; throws UsageError for bad input (before printing anything).
 int run_point_command(const std::vector<std::string>& args, std::ostream& out);
+
+/// One point as `punchsweep point ARGS` evaluates it: its inputs and its result.
+struct PointRun {
+  PointInputs inputs;
+  model::PointResult result;
+};
+
+/// The point of `punchsweep point ARGS` (without --help and --format), evaluated: the same
+/// options, checks and evaluation, so the numbers are the command's bit for bit. Throws
+/// UsageError (its message is the command's) for bad input.
+PointRun evaluate_point_command(const std::vector<std::string>& args);
 
 }  // namespace punchsweep::app

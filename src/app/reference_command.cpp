@@ -24,9 +24,7 @@ std::string series_array(const reference::ReferenceResult& r, Field field) {
   return text + "]";
 }
 
-}  // namespace
-
-int run_reference_command(const std::vector<std::string>& args, std::ostream& out) {
+po::options_description reference_options(const PointMaterial& material) {
   po::options_description opts(
       "punchsweep reference: one parameter point solved by the periodic boundary-element\n"
       "reference solver (the full two-level contact problem on an N x N grid of the l x l\n"
@@ -35,13 +33,45 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
       "Units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps\n"
       "(or the --material file's time_unit).\n\n"
       "Options");
-  const PointMaterial material = find_point_material(args);
   add_point_options(opts, material.spec);
   add_material_options(opts);
   opts.add_options()
       ("bem-grid", po::value<std::string>()->value_name("N")->default_value("128"),
        "grid nodes per side N (the cell spacing is l/N); an even integer in [16, 2048]")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("json"), "output format: json or table");
+  return opts;
+}
+
+/// The point's inputs and the solver's options, read and checked in the command's order.
+ReferenceRun read_reference(const po::variables_map& vm, const PointMaterial& material) {
+  ReferenceRun run{read_point_inputs(vm, material), {}, {}, 0.0};
+  reference::scale_steps_to_law(*run.inputs.creep, &run.options);
+  run.options.times = read_times(vm);
+  run.options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
+                                             [](double v) { return sweep::is_bem_grid(v); }));
+  return run;
+}
+
+void solve(ReferenceRun* run) {
+  // As in `punchsweep sweep --reference bem`, so that a point gives the same bits in both.
+  sweep::use_reproducible_fft_plans();
+  const auto start = std::chrono::steady_clock::now();
+  run->result = reference::evaluate_reference_point(run->inputs.problem, *run->inputs.creep, run->options);
+  run->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+ReferenceRun evaluate_reference_command(const std::vector<std::string>& args) {
+  const PointMaterial material = find_point_material(args);
+  ReferenceRun run = read_reference(parse_command(args, reference_options(material), "reference"), material);
+  solve(&run);
+  return run;
+}
+
+int run_reference_command(const std::vector<std::string>& args, std::ostream& out) {
+  const PointMaterial material = find_point_material(args);
+  const po::options_description opts = reference_options(material);
   const po::variables_map vm = parse_command(args, opts, "reference");
   if (vm.count("help")) {
     out << "usage: punchsweep reference --l L --dh DH --T T --pbar P --s S [--bem-grid N] [options]\n\n" << opts
@@ -49,20 +79,13 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
            "order one grid spacing (about 1% needs a/h >= 15).\n";
     return 0;
   }
-  const PointInputs inputs = read_point_inputs(vm, material);
-  const model::ContactProblem& problem = inputs.problem;
-  reference::ReferenceOptions options;
-  reference::scale_steps_to_law(*inputs.creep, &options);
-  options.times = read_times(vm);
-  options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
-                                         [](double v) { return sweep::is_bem_grid(v); }));
+  ReferenceRun run = read_reference(vm, material);
   const std::string format = read_choice(vm, "format", {"json", "table"});
-
-  // As in `punchsweep sweep --reference bem`, so that a point gives the same bits in both.
-  sweep::use_reproducible_fft_plans();
-  const auto start = std::chrono::steady_clock::now();
-  const reference::ReferenceResult r = reference::evaluate_reference_point(problem, *inputs.creep, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  solve(&run);
+  const PointInputs& inputs = run.inputs;
+  const reference::ReferenceOptions& options = run.options;
+  const reference::ReferenceResult& r = run.result;
+  const double seconds = run.seconds;
   const std::string regime(model::regime_name(r.regime));
   if (format == "table") {
     char line[200];
