@@ -12,7 +12,7 @@ packages=(
   libboost-program-options-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib python3-xarray python3-h5netcdf
-  python3-pytest
+  python3-pytest python3-scipy python3-dev pybind11-dev
   udunits-bin
 )
 

@@ -12,6 +12,7 @@ declare -A allowed=(
   [sweep]="sweep map model reference"
   [run]="run io sweep map model reference"
   [app]="app run io sweep map model reference"
+  [python]="python app run io sweep map model reference"
 )
 
 status=0

@@ -1,0 +1,264 @@
+// The compiled part of the Python package `punchsweep` (punchsweep._core): the engine's
+// point, reference and regime evaluation, called in-process. `point` and `reference` take
+// the command line's own arguments, read and checked by the commands' own code, so their
+// numbers are `punchsweep point|reference --format json`'s bit for bit and their errors
+// the commands' messages; `classify` evaluates arrays of points as a sweep does, sharing
+// the parts of a summary between points (model::DhParts, model::SingleLevelEnds).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "app/command_options.hpp"
+#include "app/point_command.hpp"
+#include "app/reference_command.hpp"
+#include "app/usage_error.hpp"
+#include "map/quantities.hpp"
+#include "model/contact_problem.hpp"
+#include "model/creep_laws.hpp"
+#include "model/parameters.hpp"
+#include "model/point_evaluation.hpp"
+#include "model/regime.hpp"
+#include "model/validity.hpp"
+
+namespace py = pybind11;
+using namespace punchsweep;
+
+namespace {
+
+/// A number as the JSON output has it: None where the JSON writes null (not computed).
+py::object json_value(double v) { return std::isfinite(v) ? py::object(py::float_(v)) : py::none(); }
+
+py::array_t<double> array(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  if (!values.empty()) std::memcpy(out.mutable_data(), values.data(), values.size() * sizeof(double));
+  return out;
+}
+
+bool is_point_quantity(const map::QuantitySpec& q) {
+  return q.source == map::Source::model && q.extent == map::Extent::point;
+}
+bool is_series_quantity(const map::QuantitySpec& q) {
+  return q.source == map::Source::model && q.extent == map::Extent::series;
+}
+
+/// The keys of `punchsweep point --format json`, from the same declaration (map::kQuantities):
+/// the flags as names (valid as a bool with its reason), the reals as floats (None where the
+/// JSON has null), and the series as arrays (NaN where the JSON has null).
+py::dict point_dict(const model::PointResult& r, const std::string& time_unit) {
+  py::dict out;
+  for (const map::QuantitySpec& q : map::kQuantities) {
+    if (!is_point_quantity(q)) continue;
+    const std::string name(q.name);
+    if (q.flags == map::Flags::validity) {
+      out[name.c_str()] = r.valid();
+      out["reason"] = r.reason(time_unit);
+    } else if (q.flags == map::Flags::regime) {
+      out[name.c_str()] = std::string(model::regime_name(r.regime));
+    } else if (q.kind == map::Kind::real) {
+      out[name.c_str()] = json_value(q.value(r));
+    }
+  }
+  py::dict series;
+  std::vector<double> column(r.series.size());
+  for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
+  series["t"] = array(column);
+  for (const map::QuantitySpec& q : map::kQuantities) {
+    if (!is_series_quantity(q)) continue;
+    for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = q.series_value(r.series[i]);
+    series[std::string(q.name).c_str()] = array(column);
+  }
+  out["series"] = series;
+  return out;
+}
+
+py::dict point_command(const std::vector<std::string>& args) {
+  const app::PointRun run = app::evaluate_point_command(args);
+  py::dict out = point_dict(run.result, run.inputs.time_unit);
+  out["localization"] = run.inputs.problem.localization.spelling();
+  out["time_unit"] = run.inputs.time_unit;
+  return out;
+}
+
+/// `punchsweep reference --format json`'s keys, with the model's point keys it has.
+py::dict reference_command(const std::vector<std::string>& args) {
+  py::gil_scoped_release release;
+  const app::ReferenceRun run = app::evaluate_reference_command(args);
+  py::gil_scoped_acquire acquire;
+  const reference::ReferenceResult& r = run.result;
+  py::dict out;
+  out["regime"] = std::string(model::regime_name(r.regime));
+  out["t_star"] = r.t_star ? py::object(py::float_(*r.t_star)) : py::none();
+  out["t_star_lower"] = json_value(r.t_star_lower);
+  out["t_star_upper"] = json_value(r.t_star_upper);
+  out["converged"] = r.converged;
+  out["cg_iterations"] = r.cg_iterations;
+  out["max_residual"] = json_value(r.max_residual);
+  out["bem_grid"] = run.options.n;
+  out["spacing"] = json_value(r.spacing);
+  out["steps"] = r.steps;
+  out["solves"] = r.solves;
+  out["seconds"] = run.seconds;
+  out["time_unit"] = run.inputs.time_unit;
+  py::dict series;
+  const auto column = [&](auto field) {
+    std::vector<double> v;
+    for (const auto& s : r.series) v.push_back(field(s));
+    return array(v);
+  };
+  series["t"] = column([](const auto& s) { return s.t; });
+  series["a1"] = column([](const auto& s) { return s.a1; });
+  series["a2"] = column([](const auto& s) { return s.a2; });
+  series["P1"] = column([](const auto& s) { return s.P1; });
+  series["P2"] = column([](const auto& s) { return s.P2; });
+  series["area_fraction"] = column([](const auto& s) { return s.area_fraction; });
+  series["h"] = column([](const auto& s) { return s.h; });
+  out["series"] = series;
+  return out;
+}
+
+/// A value as point() hands it to the command line, so that classify's message is the
+/// command's for the same keyword: Python's repr of a float (shortest exact digits, ".0"
+/// on a whole number), a whole number as an integer for an integer parameter.
+std::string value_text(double v, bool integer) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (integer && v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  std::string text = app::json_number(v);
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
+
+/// The command line's message for a value of `p` outside its range, else empty.
+std::string check(const model::Parameter& p, double value) {
+  if (p.admits(value)) return {};
+  return "--" + std::string(p.name) + " = " + value_text(value, p.integer) + " is outside its range: " +
+         std::string(p.range);
+}
+
+using Key = std::tuple<double, double, double, double>;
+
+/// The regime, t*, h(0), h(inf) and validity of n points of the standard linear solid (the
+/// map's codes and units), each a pure function of its point, with the parts that depend
+/// on fewer coordinates computed once per distinct value (as a sweep's tile does).
+py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast> l,
+                  py::array_t<double, py::array::c_style | py::array::forcecast> dh,
+                  py::array_t<double, py::array::c_style | py::array::forcecast> T,
+                  py::array_t<double, py::array::c_style | py::array::forcecast> pbar,
+                  py::array_t<double, py::array::c_style | py::array::forcecast> s, double C,
+                  const std::string& localization) {
+  const py::ssize_t n = l.size();
+  for (const auto* a : {&dh, &T, &pbar, &s}) {
+    if (a->size() != n) throw std::invalid_argument("classify: the arrays must have the same size (broadcast first)");
+  }
+  model::ContactProblem base;
+  try {
+    base.localization = model::parse_localization(localization);
+  } catch (const std::invalid_argument& e) {
+    throw app::UsageError(std::string("--localization: ") + e.what());  // as read_localization says it
+  }
+  const model::CreepLawSpec& law = model::creep_laws().front();  // the standard linear solid
+  if (const std::string e = check(*model::find_parameter(model::kShapeConstant), C); !e.empty()) {
+    throw app::UsageError(e);
+  }
+  // The first value outside its range, axis by axis in the command line's order.
+  const std::pair<const model::Parameter*, const double*> axes[] = {
+      {model::find_parameter(model::kPitch), l.data()},
+      {model::find_parameter(model::kHeightDifference), dh.data()},
+      {&law.parameters.front(), T.data()},
+      {model::find_parameter(model::kPressure), pbar.data()},
+      {model::find_parameter(model::kExponent), s.data()}};
+  for (const auto& [parameter, values] : axes) {
+    for (py::ssize_t i = 0; i < n; ++i) {
+      if (const std::string e = check(*parameter, values[i]); !e.empty()) throw app::UsageError(e);
+    }
+  }
+  const double* L = l.data();
+  const double* DH = dh.data();
+  const double* TT = T.data();
+  const double* P = pbar.data();
+  const double* S = s.data();
+
+  py::array_t<std::int8_t> regime(n);
+  py::array_t<bool> valid(n);
+  py::array_t<double> t_star(n), h_0(n), h_inf(n);
+  std::int8_t* R = regime.mutable_data();
+  bool* V = valid.mutable_data();
+  double* TS = t_star.mutable_data();
+  double* H0 = h_0.mutable_data();
+  double* HI = h_inf.mutable_data();
+  {
+    py::gil_scoped_release release;
+    std::map<std::tuple<double, double, double>, std::shared_ptr<const model::DhParts>> dh_cache;  // (l, s, dh)
+    std::map<Key, model::SingleLevelEnds> ends_cache;                     // (l, s, pbar, T)
+    std::map<double, std::unique_ptr<model::CreepLaw>> laws;             // T
+    for (py::ssize_t i = 0; i < n; ++i) {
+      model::ContactProblem problem = base;
+      problem.l = L[i];
+      problem.dh = DH[i];
+      problem.pbar0 = P[i];
+      problem.shape = model::Shape{static_cast<int>(S[i]), C};
+      auto& creep = laws[TT[i]];
+      if (!creep) {
+        const double value = TT[i];
+        creep = model::make_creep_law(law, std::span<const double>(&value, 1));
+      }
+      auto& parts = dh_cache[{L[i], S[i], DH[i]}];
+      if (!parts) parts = std::make_shared<const model::DhParts>(model::dh_parts(problem));
+      auto [it, fresh] = ends_cache.try_emplace({L[i], S[i], P[i], TT[i]});
+      if (fresh) it->second = model::single_level_ends(problem, *creep);
+      const model::PointSummary summary = model::summarize_point(problem, *creep, *parts, it->second);
+      R[i] = map::quantity_access::regime(summary);
+      V[i] = summary.valid();
+      TS[i] = map::quantity_access::t_star(summary);
+      H0[i] = summary.h_0;
+      HI[i] = summary.h_inf;
+    }
+  }
+  py::dict out;
+  out["regime"] = regime;
+  out["t_star"] = t_star;
+  out["h_0"] = h_0;
+  out["h_inf"] = h_inf;
+  out["valid"] = valid;
+  return out;
+}
+
+/// The map's regime codes and names (model::Regime), for decoding classify's codes.
+py::dict regime_codes() {
+  py::dict out;
+  for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
+    out[py::int_(static_cast<int>(r))] = std::string(model::regime_name(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "punchsweep's engine (the compiled part of the package punchsweep; use the package's functions)";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const app::UsageError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def("point", &point_command, py::arg("args"),
+        "punchsweep point ARGS, evaluated in-process: a dict of its JSON keys");
+  m.def("reference", &reference_command, py::arg("args"),
+        "punchsweep reference ARGS, solved in-process: a dict of its JSON keys");
+  m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("T"), py::arg("pbar"), py::arg("s"),
+        py::arg("C"), py::arg("localization"),
+        "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points (the GIL released)");
+  m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
+}

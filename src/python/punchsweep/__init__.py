@@ -1,0 +1,217 @@
+"""punchsweep from Python: the engine in-process, for notebooks and design loops.
+
+    >>> import punchsweep
+    >>> r = punchsweep.point(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2)
+    >>> r.regime, r.t_star
+    ('delayed', 0.87...)
+    >>> c = punchsweep.classify(0.75, [0.05, 0.075, 0.1], 2.5, 0.06, 2)
+    >>> c["regime"], c["t_star"]
+
+Units as everywhere in punchsweep: lengths in R (the punch's size), pressures in
+E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_unit).
+
+- point(...) and reference(...) take the options of `punchsweep point` and `punchsweep
+  reference` as keywords (l=, dh=, T=, pbar=, s=, C=, times=, material=, temperature=,
+  pressure=, ramp=, load_table=, localization=, bem_grid=) and run the commands' own code:
+  the numbers equal `--format json`'s bit for bit, and bad input raises ValueError with the
+  command's message (the option, its value and its valid range).
+- classify(l, dh, T, pbar, s, C=0.5) broadcasts its inputs like numpy and returns the
+  regime codes, t*, h(0), h(inf) and validity of every point of a standard linear solid,
+  without the Python interpreter lock held.
+- open_map(path) opens a regime map as an xarray.Dataset with its flags decoded.
+"""
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["point", "reference", "classify", "open_map", "PointResult", "ReferenceResult",
+           "Classification", "REGIMES"]
+
+#: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
+REGIMES: dict[int, str] = {int(k): v for k, v in _core.regime_codes().items()}
+
+
+def _option_text(value: Any) -> str:
+    """A keyword's value as the command line reads it: floats in their shortest exact form
+    (repr), sequences comma-separated, text as given."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError("a punchsweep option takes a number or text, not a bool")
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))
+    if isinstance(value, Iterable):
+        return ",".join(_option_text(v) for v in value)
+    return str(value)
+
+
+def _arguments(options: dict[str, Any]) -> list[str]:
+    """Keywords as command-line arguments: name -> --name (underscores as dashes); None is
+    left out (the command's default)."""
+    args: list[str] = []
+    for name, value in options.items():
+        if value is None:
+            continue
+        args += ["--" + name.replace("_", "-"), _option_text(value)]
+    return args
+
+
+def _series(raw: Mapping[str, Any]) -> dict[str, np.ndarray]:
+    return {k: np.asarray(v, dtype=float) for k, v in raw.items()}
+
+
+@dataclass(frozen=True)
+class PointResult:
+    """One point as `punchsweep point` evaluates it (docs/model.md).
+
+    regime: 'immediate', 'delayed' or 'never'; t_star: the time level 2 touches (None for
+    never); h_0, h_inf: the gap of the level-2 tips at t = 0 and as t -> infinity, in R;
+    valid and reason: whether the localization model holds there and why not; a1_inf,
+    a2_inf, area_fraction_inf: the long-term radii (R) and contact area fraction; series:
+    numpy arrays t, a1, a2, P1, P2, area_fraction at the requested times (NaN where not
+    computed). Numbers the engine could not compute are None, as the JSON's null."""
+    regime: str
+    t_star: float | None
+    h_0: float | None
+    h_inf: float | None
+    valid: bool
+    reason: str
+    a1_inf: float | None
+    a2_inf: float | None
+    area_fraction_inf: float | None
+    series: dict[str, np.ndarray]
+    localization: str
+    time_unit: str
+
+    @classmethod
+    def _from(cls, raw: dict) -> "PointResult":
+        fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series"}
+        return cls(series=_series(raw["series"]), **fields)
+
+
+@dataclass(frozen=True)
+class ReferenceResult:
+    """One point as `punchsweep reference` solves it (the periodic BEM: docs/model.md,
+    section 13): regime, t_star (None for never or beyond the last time) in its bracket
+    [t_star_lower, t_star_upper], the solver's report (converged, cg_iterations,
+    max_residual), the grid (bem_grid nodes a side, spacing in R), steps, solves, seconds,
+    and the series t, a1, a2, P1, P2, area_fraction, h."""
+    regime: str
+    t_star: float | None
+    t_star_lower: float | None
+    t_star_upper: float | None
+    converged: bool
+    cg_iterations: int
+    max_residual: float | None
+    bem_grid: int
+    spacing: float | None
+    steps: int
+    solves: int
+    seconds: float
+    series: dict[str, np.ndarray]
+    time_unit: str
+
+    @classmethod
+    def _from(cls, raw: dict) -> "ReferenceResult":
+        fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series"}
+        return cls(series=_series(raw["series"]), **fields)
+
+
+def point(l: float | None = None, dh: float | None = None, T: float | None = None,
+          pbar: float | None = None, s: int | None = None, C: float | None = None,
+          times: Iterable[float] | str | None = None, *, material: str | None = None,
+          temperature: float | str | None = None, pressure: str | None = None,
+          ramp: float | None = None, load_table: str | None = None,
+          localization: str | None = None, **options: Any) -> PointResult:
+    """`punchsweep point` in-process. Keywords are its options (None: the command's default:
+    C = 0.5, times 0, 0.5, 1, 2, 5, the refined localization); a material file's own
+    parameters go in **options. ValueError with the command's message for bad input."""
+    args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
+                           temperature=temperature, pressure=pressure, ramp=ramp,
+                           load_table=load_table, localization=localization, **options))
+    return PointResult._from(_core.point(args))
+
+
+def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
+              pbar: float | None = None, s: int | None = None, C: float | None = None,
+              times: Iterable[float] | str | None = None, *, bem_grid: int | None = None,
+              material: str | None = None, temperature: float | str | None = None,
+              pressure: str | None = None, ramp: float | None = None,
+              load_table: str | None = None, **options: Any) -> ReferenceResult:
+    """`punchsweep reference` in-process (the periodic BEM on a bem_grid x bem_grid grid of
+    the cell, default 128), without the interpreter lock held while it solves."""
+    args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, bem_grid=bem_grid,
+                           material=material, temperature=temperature, pressure=pressure,
+                           ramp=ramp, load_table=load_table, **options))
+    return ReferenceResult._from(_core.reference(args))
+
+
+@dataclass(frozen=True)
+class Classification(Mapping):
+    """classify's arrays, all of the broadcast shape: regime (int8, the map's codes: see
+    REGIMES), t_star (float64 in T_eps, NaN for never), h_0 and h_inf (float64, in R), valid
+    (bool). Reads like a dict; regime_names() gives the regimes as text."""
+    arrays: dict[str, np.ndarray] = field(repr=False)
+
+    def __getitem__(self, key: str) -> np.ndarray:
+        return self.arrays[key]
+
+    def __iter__(self):
+        return iter(self.arrays)
+
+    def __len__(self) -> int:
+        return len(self.arrays)
+
+    def regime_names(self) -> np.ndarray:
+        """The regimes as text ('immediate', 'delayed', 'never'), of the same shape."""
+        names = np.array([REGIMES[k] for k in sorted(REGIMES)])
+        return names[self.arrays["regime"]]
+
+
+def classify(l, dh, T, pbar, s, C: float = 0.5, localization: str = "refined") -> Classification:
+    """The regime, t*, h(0), h(inf) and validity of every point of a standard linear solid,
+    broadcasting l, dh, T, pbar and s (numbers or arrays) like numpy. The same numbers as
+    point() at each point. Points that share (l, s, dh) share the model's per-pitch work (a
+    grid is fast: over 1e6 points/s; scattered pitches and dh cost a curve each under the
+    refined model). ValueError with the command line's message for a value out of range."""
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, T, pbar, s)))
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+    raw = _core.classify(*flat, float(C), str(localization))
+    return Classification({k: np.asarray(v).reshape(shape) for k, v in raw.items()})
+
+
+def open_map(path) -> "xarray.Dataset":  # noqa: F821
+    """A regime map (from `punchsweep sweep`) as an xarray.Dataset: every flag variable
+    (regime, valid, bem_regime, answer_regime, ...) decoded to its meanings as text
+    ('immediate', 'delayed', ..., 'not_computed'), its codes kept as NAME_code; every
+    variable and coordinate with a `units` attribute (the scale it is measured in: R,
+    T_eps, E0/(1-nu^2), R^2 E0/(1-nu^2), or 1)."""
+    import xarray as xr
+
+    ds = xr.open_dataset(path, engine="h5netcdf")
+    ds.load()
+    for name in list(ds.variables):
+        attrs = ds[name].attrs
+        if "flag_values" in attrs and "flag_meanings" in attrs:
+            meanings = attrs["flag_meanings"]
+            meanings = (meanings.decode() if isinstance(meanings, bytes) else str(meanings)).split()
+            codes = [int(v) for v in np.atleast_1d(attrs["flag_values"])]
+            lookup = dict(zip(codes, meanings))
+            raw = ds[name].values
+            decoded = np.vectorize(lambda c: lookup.get(int(c), f"code_{int(c)}"), otypes=[object])(raw)
+            ds[name + "_code"] = ds[name].copy()
+            ds[name + "_code"].attrs["units"] = "1"
+            ds[name] = (ds[name].dims, decoded.astype(str), {**attrs, "units": "1"})
+        else:
+            units = attrs.get("scaled_by", attrs.get("units", "1"))
+            ds[name].attrs["units"] = units.decode() if isinstance(units, bytes) else str(units)
+    return ds

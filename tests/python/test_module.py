@@ -1,0 +1,220 @@
+"""The Python module punchsweep (issue 14) against the command line it wraps: point and
+reference equal their --format json bit for bit, classify equals point, inputs broadcast,
+bad input raises the command's message, open_map decodes a real map, the examples run."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+
+
+def cli(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([BINARY, *args], capture_output=True, text=True)
+
+
+def cli_json(command: str, options: list[str]) -> dict:
+    done = cli(command, *options, "--format", "json")
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def same_bits(a, b) -> bool:
+    """Equal to the bit: the same values, NaN where the other has NaN, the same signs."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and np.array_equal(a, b, equal_nan=True) and np.array_equal(np.signbit(a), np.signbit(b))
+
+
+def from_json_array(values) -> np.ndarray:
+    return np.array([np.nan if v is None else v for v in values], dtype=float)
+
+
+MATERIAL = str(REPO / "materials" / "nbr_linder2011.ini")
+POINTS = [
+    dict(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2),                                    # delayed
+    dict(l=0.75, dh=0.05, T=2.5, pbar=0.06, s=2, localization="paper"),               # immediate, the paper's model
+    dict(l=1.25, dh=0.12, T=2.0, pbar=0.005, s=1, C=0.4),                             # never, a cone
+    dict(l=0.5, dh=0.01, T=5.0, pbar=0.08, s=3, times=[0.0, 0.25, 1.0, 10.0]),        # flagged invalid
+    dict(l=0.75, dh=0.02, pbar=0.005, s=2, material=MATERIAL, times=[0, 100, 10000], ramp=20.0),
+]
+
+
+def options_of(kw: dict) -> list[str]:
+    args = []
+    for k, v in kw.items():
+        text = ",".join(repr(float(t)) for t in v) if isinstance(v, list) else (v if isinstance(v, str) else repr(v))
+        args += ["--" + k.replace("_", "-"), text]
+    return args
+
+
+@pytest.mark.parametrize("kw", POINTS, ids=lambda kw: ",".join(f"{k}={v}" for k, v in kw.items() if k != "material"))
+def test_point_equals_the_cli_json_bit_for_bit(kw):
+    expected = cli_json("point", options_of(kw))
+    got = punchsweep.point(**kw)
+    for key, value in expected.items():
+        if key == "series":
+            assert set(value) == set(got.series)
+            for name, column in value.items():
+                assert same_bits(got.series[name], from_json_array(column)), name
+        elif key == "localization":
+            assert got.localization == value
+        elif isinstance(value, float) or value is None:
+            g = getattr(got, key)
+            assert (g is None and value is None) or (g is not None and same_bits(g, value)), key
+        else:
+            assert getattr(got, key) == value, key
+    assert got.localization == expected.get("localization", "paper")
+
+
+def test_reference_equals_the_cli_json_bit_for_bit():
+    kw = dict(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2, bem_grid=32)
+    expected = cli_json("reference", options_of(kw))
+    got = punchsweep.reference(**kw)
+    for key, value in expected.items():
+        if key == "seconds":
+            continue
+        if key == "series":
+            for name, column in value.items():
+                assert same_bits(got.series[name], from_json_array(column)), name
+        elif isinstance(value, float) or value is None:
+            g = getattr(got, key)
+            assert (g is None and value is None) or same_bits(g, value), key
+        else:
+            assert getattr(got, key) == value, key
+
+
+def random_points(count: int, seed: int) -> dict[str, np.ndarray]:
+    rng = np.random.default_rng(seed)
+    return dict(l=rng.uniform(0.5, 1.25, count), dh=rng.uniform(0.005, 0.12, count), T=rng.uniform(1.5, 10, count),
+                pbar=np.exp(rng.uniform(np.log(0.005), np.log(0.08), count)), s=rng.integers(1, 4, count).astype(float))
+
+
+@pytest.mark.parametrize("localization", ["refined", "paper"])
+def test_classify_equals_point_on_random_points(localization):
+    count = 10_000 if localization == "refined" else 2_000
+    p = random_points(count, seed=14)
+    c = punchsweep.classify(p["l"], p["dh"], p["T"], p["pbar"], p["s"], localization=localization)
+    assert all(c[k].shape == (count,) for k in ("regime", "t_star", "h_0", "h_inf", "valid"))
+    assert c["regime"].dtype == np.int8 and c["valid"].dtype == np.bool_
+    names = c.regime_names()
+    mismatches = []
+    for i in range(count):
+        r = punchsweep.point(l=p["l"][i], dh=p["dh"][i], T=p["T"][i], pbar=p["pbar"][i], s=int(p["s"][i]),
+                             times=[0.0], localization=localization)
+        row = (names[i], c["t_star"][i], c["h_0"][i], c["h_inf"][i], bool(c["valid"][i]))
+        want = (r.regime, np.nan if r.t_star is None else r.t_star, r.h_0, r.h_inf, r.valid)
+        if not (row[0] == want[0] and all(same_bits(a, b) for a, b in zip(row[1:4], want[1:4])) and row[4] == want[4]):
+            mismatches.append((i, row, want))
+    assert not mismatches, mismatches[:5]
+    # The sample covers every regime and both validity flags.
+    assert set(names) == {"immediate", "delayed", "never"}
+    assert c["valid"].any() and not c["valid"].all()
+
+
+def test_classify_broadcasts_like_numpy():
+    l = np.array([0.5, 0.75, 1.0])[:, None, None]
+    dh = np.linspace(0.01, 0.1, 4)[None, :, None]
+    pbar = np.array([0.01, 0.02, 0.04, 0.06, 0.08])[None, None, :]
+    c = punchsweep.classify(l, dh, 2.5, pbar, 2)
+    for key in ("regime", "t_star", "h_0", "h_inf", "valid"):
+        assert c[key].shape == (3, 4, 5)
+    flat = punchsweep.classify(np.broadcast_to(l, (3, 4, 5)).ravel(), np.broadcast_to(dh, (3, 4, 5)).ravel(),
+                               np.full(60, 2.5), np.broadcast_to(pbar, (3, 4, 5)).ravel(), np.full(60, 2.0))
+    for key in ("regime", "t_star", "h_0", "h_inf", "valid"):
+        assert same_bits(c[key].ravel(), flat[key])
+    scalar = punchsweep.classify(0.75, 0.075, 2.5, 0.06, 2)
+    assert scalar["regime"].shape == () and punchsweep.REGIMES[int(scalar["regime"])] == "delayed"
+    # h_0 and h_inf do not depend on dh: the same along that axis.
+    assert same_bits(c["h_0"][:, 0, :], c["h_0"][:, 3, :])
+
+
+def cli_message(options: list[str]) -> str:
+    done = cli("point", *options)
+    assert done.returncode == 2
+    line = done.stderr.strip().splitlines()[0]
+    return line.split(": ", 1)[1] if line.startswith("punchsweep") else line
+
+
+@pytest.mark.parametrize("bad, options", [
+    (dict(l=-0.5), ["--l", "-0.5"]),
+    (dict(s=0), ["--s", "0"]),
+    (dict(T=0.5), ["--T", "0.5"]),
+    (dict(pbar=0.0), ["--pbar", "0.0"]),
+    (dict(localization="shells:x"), ["--localization", "shells:x"]),
+])
+def test_bad_input_raises_the_command_lines_message(bad, options):
+    base = dict(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2)
+    expected = cli_message(options_of({**base, **{k: v for k, v in bad.items()}}))
+    with pytest.raises(ValueError) as point_error:
+        punchsweep.point(**{**base, **bad})
+    assert str(point_error.value) == expected
+    # classify says the same for the same value (the arrays' other values admissible).
+    if "localization" in bad:
+        with pytest.raises(ValueError) as error:
+            punchsweep.classify(0.75, 0.075, 2.5, 0.06, 2, localization=bad["localization"])
+    else:
+        arrays = {k: np.array([v, bad.get(k, v)]) for k, v in base.items()}
+        with pytest.raises(ValueError) as error:
+            punchsweep.classify(arrays["l"], arrays["dh"], arrays["T"], arrays["pbar"], arrays["s"])
+    assert str(error.value) == expected
+
+
+def test_point_rejects_a_missing_option_and_a_bad_material_as_the_cli_does():
+    with pytest.raises(ValueError) as error:
+        punchsweep.point(l=0.75, dh=0.075, T=2.5, s=2)
+    assert str(error.value) == cli_message(["--l", "0.75", "--dh", "0.075", "--T", "2.5", "--s", "2"])
+    with pytest.raises(ValueError, match="no_such.ini"):
+        punchsweep.point(l=0.75, dh=0.02, pbar=0.005, s=2, material="no_such.ini")
+
+
+def test_open_map_decodes_a_real_map(tmp_path):
+    path = tmp_path / "map.h5"
+    done = cli("sweep", "--grid.l", "0.5,0.75", "--grid.dh", "0.01,0.05,0.1", "--grid.T", "2.5", "--grid.pbar",
+               "0.02,0.06", "--grid.s", "2", "--quantities", "full", "--quiet", "--output", str(path))
+    assert done.returncode == 0, done.stderr
+    ds = punchsweep.open_map(path)
+    import h5py
+    with h5py.File(path) as f:
+        codes = f["regime"][...]
+        valid = f["valid"][...]
+        t_star = f["t_star"][...]
+    assert ds["regime"].shape == codes.shape
+    assert np.array_equal(ds["regime_code"].values, codes)
+    lookup = punchsweep.REGIMES
+    assert all(ds["regime"].values.ravel()[i] == lookup[int(c)] for i, c in enumerate(codes.ravel()))
+    with h5py.File(path) as f:
+        meanings = f["valid"].attrs["flag_meanings"]
+        meanings = (meanings.decode() if isinstance(meanings, bytes) else str(meanings)).split()
+        values = [int(v) for v in f["valid"].attrs["flag_values"]]
+    decoded = dict(zip(values, meanings))
+    assert all(ds["valid"].values.ravel()[i] == decoded[int(c)] for i, c in enumerate(valid.ravel()))
+    assert "valid" in set(ds["valid"].values.ravel()) and len(set(ds["valid"].values.ravel())) > 1
+    assert np.array_equal(ds["valid_code"].values, valid)
+    assert same_bits(ds["t_star"].values, t_star)
+    assert all("units" in ds[name].attrs for name in ds.variables)
+    assert ds["t_star"].attrs["units"] == "T_eps" and ds["l"].attrs["units"] == "R"
+    assert ds["a1"].attrs["units"] == "R" and ds["P1"].attrs["units"] == "R^2 E0/(1-nu^2)"
+    # Decoded values equal classify's at the map's own points.
+    L, DH, P = np.meshgrid(ds["l"].values, ds["dh"].values, ds["pbar"].values, indexing="ij")
+    c = punchsweep.classify(L, DH, 2.5, P, 2)
+    assert np.array_equal(c["regime"], codes[:, :, 0, :, 0])
+
+
+@pytest.mark.parametrize("script", sorted(p.name for p in (REPO / "examples").glob("*.py")))
+def test_examples_run(script, tmp_path):
+    picture = tmp_path / "picture.png"
+    env = {**os.environ, "MPLBACKEND": "Agg"}
+    done = subprocess.run([sys.executable, str(REPO / "examples" / script), "--output", str(picture)],
+                          capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert picture.stat().st_size > 10_000
+    print(done.stdout)
