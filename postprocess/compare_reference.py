@@ -12,13 +12,11 @@ Example:  postprocess/compare_reference.py --bem-grid 256 > comparison.md
 from __future__ import annotations
 
 import argparse
-import json
-import subprocess
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from punchsweep_point import find_binary  # noqa: E402
+from punchsweep_point import find_binary, run_command  # noqa: E402
 
 # (label, l, dh, pbar): Table 9.1 is the first Fig. 9.5b case.
 CASES = [
@@ -31,13 +29,8 @@ CASES = [
 ]
 
 
-def run(binary: str, command: str, l: float, dh: float, pbar: float, extra: list[str]) -> dict:
-    args = [binary, command, "--l", repr(l), "--dh", repr(dh), "--T", "2.5", "--pbar", repr(pbar), "--s", "2",
-            "--times", "0,5", "--format", "json", *extra]
-    done = subprocess.run(args, capture_output=True, text=True)
-    if done.returncode != 0:
-        raise RuntimeError(done.stderr.strip())
-    return json.loads(done.stdout)
+def run(binary: str, command: str, l: float, dh: float, pbar: float, extra: dict) -> dict:
+    return run_command(binary, command, dict(l=l, dh=dh, T=2.5, pbar=pbar, s=2, times=[0.0, 5.0], **extra))
 
 
 def quantities(r: dict) -> dict:
@@ -72,13 +65,13 @@ def main(argv: list[str]) -> int:
           f"| a2(0) | a1(5) | a2(5) | largest model-BEM difference | BEM change {n} -> {2 * n} |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for label, l, dh, pbar in CASES:
-        model = run(binary, "point", l, dh, pbar, ["--localization", args.localization] if args.localization else [])
-        bem = run(binary, "reference", l, dh, pbar, ["--bem-grid", str(n)])
+        model = run(binary, "point", l, dh, pbar, {"localization": args.localization})
+        bem = run(binary, "reference", l, dh, pbar, {"bem_grid": n})
         m, b = quantities(model), quantities(bem)
         diffs = [rel(m[k], b[k]) for k in m if b[k] not in (None, 0.0) and m[k] not in (None, 0.0)]
         change = "-"
         if not args.no_convergence:
-            fine = quantities(run(binary, "reference", l, dh, pbar, ["--bem-grid", str(2 * n)]))
+            fine = quantities(run(binary, "reference", l, dh, pbar, {"bem_grid": 2 * n}))
             changes = [rel(b[k], fine[k]) for k in b if fine[k] not in (None, 0.0) and b[k] is not None]
             change = f"{100 * max(changes):.2f}%"
         cells = [f"{fmt(m[k])} / {fmt(b[k])}" for k in ("t_star", "a1_0", "a2_0", "a1_5", "a2_5")]

@@ -1,10 +1,13 @@
-"""Run `punchsweep point --format json` and read its result (the JSON contract)."""
+"""One point of `punchsweep point` or `reference` as its --format json dict (the JSON
+contract): through the Python module punchsweep where it is built, else the binary."""
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
@@ -22,18 +25,64 @@ def find_binary(explicit: str | None = None) -> str:
                             "or pass --binary / set $PUNCHSWEEP")
 
 
-def run_point(binary: str, l: float, dh: float, T: float, pbar: float, s: int,
-              C: float = 0.5, times: list[float] | None = None, localization: str | None = None) -> dict:
-    """Evaluate one point; returns the parsed JSON (keys: regime, t_star, h_0, ..., series,
-    and localization first unless it is the paper's). `localization`: paper, refined,
-    shells:D or point-shells:D; None for the engine's default (refined)."""
-    args = [binary, "point", "--l", repr(l), "--dh", repr(dh), "--T", repr(T),
-            "--pbar", repr(pbar), "--s", str(s), "--C", repr(C), "--format", "json"]
-    if times:
-        args += ["--times", ",".join(repr(t) for t in times)]
-    if localization:
-        args += ["--localization", localization]
+def engine_module():
+    """The Python module punchsweep (src/python), importable from PYTHONPATH or the build
+    folders; None where it was not built (then the binary runs per point)."""
+    try:
+        import punchsweep
+        return punchsweep
+    except ImportError:
+        pass
+    for folder in (REPO / "build" / "python", REPO / "build-ci" / "python"):
+        if (folder / "punchsweep").is_dir():
+            sys.path.insert(0, str(folder))
+            try:
+                import punchsweep
+                return punchsweep
+            except ImportError:
+                sys.path.remove(str(folder))
+    return None
+
+
+def _json_form(result) -> dict:
+    """A module result in the command's JSON form: its fields, the series as lists, NaN as
+    None (the JSON's null); `localization` first and only where it is not the paper's."""
+    out = {}
+    fields = dict(vars(result))
+    if fields.pop("localization", "paper") != "paper":
+        out["localization"] = result.localization
+    fields.pop("time_unit", None)
+    for k, v in fields.items():
+        if k == "series":
+            out[k] = {name: [None if math.isnan(x) else float(x) for x in column] for name, column in v.items()}
+        else:
+            out[k] = v
+    return out
+
+
+def run_command(binary: str, command: str, options: dict) -> dict:
+    """`punchsweep point|reference` of one point as its --format json dict: through the
+    module where it is built (in-process, the same numbers), else by running the binary.
+    `options` are the command's (name -> value; None: its default)."""
+    module = engine_module()
+    options = {k: v for k, v in options.items() if v is not None}
+    if module is not None:
+        return _json_form(getattr(module, command)(**options))
+    args = [binary, command, "--format", "json"]
+    for name, value in options.items():
+        text = ",".join(repr(float(t)) for t in value) if isinstance(value, (list, tuple)) else \
+            (value if isinstance(value, str) else repr(value))
+        args += ["--" + name.replace("_", "-"), text]
     done = subprocess.run(args, capture_output=True, text=True)
     if done.returncode != 0:
         raise ValueError(done.stderr.strip())
     return json.loads(done.stdout)
+
+
+def run_point(binary: str, l: float, dh: float, T: float, pbar: float, s: int,
+              C: float = 0.5, times: list[float] | None = None, localization: str | None = None) -> dict:
+    """Evaluate one point; returns the JSON dict (keys: regime, t_star, h_0, ..., series,
+    and localization first unless it is the paper's). `localization`: paper, refined,
+    shells:D or point-shells:D; None for the engine's default (refined)."""
+    return run_command(binary, "point", dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times or None,
+                                             localization=localization))
