@@ -134,16 +134,22 @@ std::string PointSummary::reason(std::string_view time_unit) const {
   return out.str();
 }
 
+SingleLevelState single_level_at(const ContactProblem& problem, double X) {
+  SingleLevelState state;
+  visit_single_level(problem, [&](const auto& single) {
+    state.a1 = single.contact_radius(X);
+    state.h = std::isfinite(X) ? single.displacement_difference(state.a1, X) : kInf;
+  });
+  return state;
+}
+
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single) {
   const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
-  const double X0 = load.initial();
-  const double X_inf = load.final();
-  visit_single_level(problem, [&](const auto& single) {
-    *h_0 = single.displacement_difference(single.contact_radius(X0), X0);
-    *a1_inf_single = single.contact_radius(X_inf);
-    *h_inf = std::isfinite(X_inf) ? single.displacement_difference(*a1_inf_single, X_inf) : kInf;
-  });
+  *h_0 = single_level_at(problem, load.initial()).h;
+  const SingleLevelState end = single_level_at(problem, load.final());
+  *a1_inf_single = end.a1;
+  *h_inf = end.h;
 }
 
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,

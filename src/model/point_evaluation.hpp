@@ -108,7 +108,17 @@ struct SummaryParts {
   const ShellsBranch* branch = nullptr;      ///< per (l, s, C, dh); required under the family's
 };
 
-/// h(0), h(inf) and the single-level radius at J(inf) (eq 9.5, 9.10).
+/// The single-level phase at creep-weighted load X (eq 9.5): the level-1 radius a1(X) and
+/// the level-2 tip gap h(X) (infinite for infinite X). A function of (l, s, C, the
+/// localization) and X alone.
+struct SingleLevelState {
+  double a1 = 0.0;
+  double h = 0.0;
+};
+SingleLevelState single_level_at(const ContactProblem& problem, double X);
+
+/// h(0), h(inf) and the single-level radius at J(inf) (eq 9.5, 9.10): single_level_at at
+/// X(0) and X(inf).
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single);
 
