@@ -8,23 +8,26 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <map>
+#include <unordered_map>
 #include <memory>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "app/command_options.hpp"
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
+#include "app/table_cache.hpp"
 #include "app/usage_error.hpp"
 #include "map/quantities.hpp"
 #include "model/contact_problem.hpp"
 #include "model/creep_laws.hpp"
+#include "model/creep_weighted_load.hpp"
 #include "model/parameters.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
@@ -145,11 +148,28 @@ std::string check(const model::Parameter& p, double value) {
          std::string(p.range);
 }
 
-using Key = std::tuple<double, double, double, double>;
+/// Exact-value keys of the per-subset caches: the coordinates' bits, hashed (an unordered
+/// map: a grid's 4e6 points look their parts up in O(1)).
+template <std::size_t N>
+using Key = std::array<double, N>;
+struct KeyHash {
+  template <std::size_t N>
+  std::size_t operator()(const Key<N>& key) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+    for (const double v : key) {
+      std::uint64_t x = std::bit_cast<std::uint64_t>(v) + h;  // splitmix64 of each coordinate, chained
+      x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+      h = x ^ (x >> 31);
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
 
 /// The regime, t*, h(0), h(inf) and validity of n points of the standard linear solid (the
 /// map's codes and units), each a pure function of its point, with the parts that depend
-/// on fewer coordinates computed once per distinct value (as a sweep's tile does).
+/// on fewer coordinates computed once per distinct value (as a sweep's tile does): the
+/// touchdown and the guide or branch per (l, s, dh), the single-level state per (l, s, X).
 py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast> l,
                   py::array_t<double, py::array::c_style | py::array::forcecast> dh,
                   py::array_t<double, py::array::c_style | py::array::forcecast> T,
@@ -198,25 +218,33 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
   double* HI = h_inf.mutable_data();
   {
     py::gil_scoped_release release;
-    std::map<std::tuple<double, double, double>, std::shared_ptr<const model::DhParts>> dh_cache;  // (l, s, dh)
-    std::map<Key, model::SingleLevelEnds> ends_cache;                     // (l, s, pbar, T)
-    std::map<double, std::unique_ptr<model::CreepLaw>> laws;             // T
+    std::unordered_map<Key<3>, std::shared_ptr<const model::DhParts>, KeyHash> dh_cache;  // (l, s, dh)
+    // The single-level state depends on (l, s) and X alone: h(0) at X(0) = pbar J(0) is
+    // shared across T, h(inf) at X(inf) = pbar J(inf) is not.
+    std::unordered_map<Key<3>, model::SingleLevelState, KeyHash> single_cache;         // (l, s, X)
+    std::unordered_map<Key<1>, std::unique_ptr<model::CreepLaw>, KeyHash> laws;          // T
     for (py::ssize_t i = 0; i < n; ++i) {
       model::ContactProblem problem = base;
       problem.l = L[i];
       problem.dh = DH[i];
       problem.pbar0 = P[i];
       problem.shape = model::Shape{static_cast<int>(S[i]), C};
-      auto& creep = laws[TT[i]];
+      auto& creep = laws[Key<1>{TT[i]}];
       if (!creep) {
         const double value = TT[i];
         creep = model::make_creep_law(law, std::span<const double>(&value, 1));
       }
-      auto& parts = dh_cache[{L[i], S[i], DH[i]}];
+      auto& parts = dh_cache[Key<3>{L[i], S[i], DH[i]}];
       if (!parts) parts = std::make_shared<const model::DhParts>(model::dh_parts(problem));
-      auto [it, fresh] = ends_cache.try_emplace({L[i], S[i], P[i], TT[i]});
-      if (fresh) it->second = model::single_level_ends(problem, *creep);
-      const model::PointSummary summary = model::summarize_point(problem, *creep, *parts, it->second);
+      const model::CreepWeightedLoad load(*creep, problem.pbar0, problem.loading);
+      const auto single_at = [&](double X) -> const model::SingleLevelState& {
+        auto [it, fresh] = single_cache.try_emplace(Key<3>{L[i], S[i], X});
+        if (fresh) it->second = model::single_level_at(problem, X);
+        return it->second;
+      };
+      const model::SingleLevelState& end = single_at(load.final());
+      const model::SingleLevelEnds ends{single_at(load.initial()).h, end.h, end.a1};
+      const model::PointSummary summary = model::summarize_point(problem, *creep, *parts, ends);
       R[i] = map::quantity_access::regime(summary);
       V[i] = summary.valid();
       TS[i] = map::quantity_access::t_star(summary);
@@ -246,6 +274,9 @@ py::dict regime_codes() {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "punchsweep's engine (the compiled part of the package punchsweep; use the package's functions)";
+  // The refined model's tables from the same cache as the command line's ($PUNCHSWEEP_CACHE,
+  // $XDG_CACHE_HOME/punchsweep, ~/.cache/punchsweep; off turns it off).
+  app::use_table_cache();
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
