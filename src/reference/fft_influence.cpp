@@ -9,6 +9,7 @@
 #include <new>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace punchsweep::reference {
@@ -22,6 +23,20 @@ std::mutex& planner_mutex() {
 }
 
 fftw_plan as_plan(void* p) { return static_cast<fftw_plan>(p); }
+
+/// The plan of type Plan made from `args`, made at the first request for them and shared
+/// until exit (a sweep revisits the same few sizes). Plans are made under the planner's
+/// mutex, which is made before the cache so that it outlives it (plans lock it when
+/// destroyed).
+template <class Plan, class... Args>
+std::shared_ptr<const Plan> shared_plan(Args... args) {
+  std::mutex& mutex = planner_mutex();
+  static std::map<std::tuple<Args...>, std::shared_ptr<const Plan>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = cache[{args...}];
+  if (!slot) slot = std::make_shared<const Plan>(args...);
+  return slot;
+}
 
 }  // namespace
 
@@ -56,16 +71,7 @@ void FftPlans::backward(std::complex<double>* in, double* out) const {
   fftw_execute_dft_c2r(as_plan(backward_), reinterpret_cast<fftw_complex*>(in), out);
 }
 
-std::shared_ptr<const FftPlans> fft_plans(int nx, int ny) {
-  // Plans live until exit: a sweep revisits the same few grid sizes.
-  // The mutex is made first so that it outlives the cache (plans lock it when destroyed).
-  std::mutex& mutex = planner_mutex();
-  static std::map<std::pair<int, int>, std::shared_ptr<const FftPlans>> cache;
-  const std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{nx, ny}];
-  if (!slot) slot = std::make_shared<const FftPlans>(nx, ny);
-  return slot;
-}
+std::shared_ptr<const FftPlans> fft_plans(int nx, int ny) { return shared_plan<FftPlans>(nx, ny); }
 
 template <class T>
 FftwBuffer<T>::FftwBuffer(std::size_t n) : size_(n) {
@@ -107,9 +113,10 @@ constexpr int kCosineBlock = 8;
 /// sum X_1 = x_0 - x_K + 2 sum_j cos(pi j/K) (x_j - x_K-j), X_2k+1 = X_2k-1 - Im Y_k
 /// (Press et al., Numerical Recipes, 2nd ed., section 12.3, cosft1, for FFTW's sign
 /// and REDFT00's factor 2): half the transform of the even extension, which odd K takes.
+/// Made under the planner's mutex (shared_plan).
 struct CosineTransform::RowPlan {
   RowPlan(int m, int lines)
-      : m(m), halved((m - 1) % 2 == 0), length(halved ? m - 1 : 2 * (m - 1)), spectrum(length / 2 + 1), lines(lines) {
+      : m(m), halved((m - 1) % 2 == 0), length(halved ? m - 1 : 2 * (m - 1)), spectrum(length / 2 + 1) {
     if (halved) {
       const int K = m - 1;
       for (int j = 0; j < K / 2; ++j) {
@@ -119,7 +126,6 @@ struct CosineTransform::RowPlan {
     }
     FftwBuffer<double> pad(static_cast<std::size_t>(lines) * length);
     FftwBuffer<std::complex<double>> spec(static_cast<std::size_t>(lines) * spectrum);
-    const std::lock_guard<std::mutex> lock(planner_mutex());
     plan = fftw_plan_many_dft_r2c(1, &length, lines, pad.data(), nullptr, 1, length,
                                   reinterpret_cast<fftw_complex*>(spec.data()), nullptr, 1, spectrum,
                                   FFTW_MEASURE | FFTW_DESTROY_INPUT);
@@ -136,33 +142,17 @@ struct CosineTransform::RowPlan {
   bool halved;   ///< K even: the length-K transform; else the even extension's, 2K
   int length;    ///< of each line's real transform
   int spectrum;  ///< complex values of each line's transform
-  int lines;
   std::vector<double> sine, cosine;  ///< 2 sin(pi j/K), 2 cos(pi j/K), j < K/2 (halved)
   fftw_plan plan = nullptr;
 };
-
-namespace {
-
-std::shared_ptr<const CosineTransform::RowPlan> cosine_rows(int m, int lines) {
-  // The planner's mutex is made first, so that it outlives the cache (plans lock it when
-  // destroyed); the cache has its own, as making a plan takes the planner's.
-  planner_mutex();
-  static std::mutex mutex;
-  static std::map<std::pair<int, int>, std::shared_ptr<const CosineTransform::RowPlan>> cache;
-  const std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{m, lines}];
-  if (!slot) slot = std::make_shared<const CosineTransform::RowPlan>(m, lines);
-  return slot;
-}
-
-}  // namespace
 
 CosineTransform::CosineTransform(int mx, int my)
     : mx_(mx), my_(my) {
   if (mx < 2 || my < 2) throw std::invalid_argument("a cosine transform needs at least 2 x 2 values");
   // Along y there are mx lines, along x my: full blocks, and a plan for the rest.
-  along_y_ = {cosine_rows(my, kCosineBlock), mx % kCosineBlock ? cosine_rows(my, mx % kCosineBlock) : nullptr};
-  along_x_ = {cosine_rows(mx, kCosineBlock), my % kCosineBlock ? cosine_rows(mx, my % kCosineBlock) : nullptr};
+  const auto rows = [](int m, int lines) { return shared_plan<RowPlan>(m, lines); };
+  along_y_ = {rows(my, kCosineBlock), mx % kCosineBlock ? rows(my, mx % kCosineBlock) : nullptr};
+  along_x_ = {rows(mx, kCosineBlock), my % kCosineBlock ? rows(mx, my % kCosineBlock) : nullptr};
   const std::size_t length = static_cast<std::size_t>(std::max(along_y_.block->length, along_x_.block->length));
   pad_ = FftwBuffer<double>(kCosineBlock * length);
   spec_ = FftwBuffer<std::complex<double>>(kCosineBlock * (length / 2 + 1));
