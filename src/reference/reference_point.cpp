@@ -36,7 +36,7 @@ class StepSizer {
     double h = control_.first_step;
     while (h < control_.max_step && creep_.creep(t + 2.0 * h) <= target) h *= 2.0;
     double lo = h, hi = 2.0 * h;
-    for (int k = 0; k < 8 && creep_.creep(lo) <= target; ++k) {
+    for (int k = 0; k < 8 && creep_.creep(t + lo) <= target; ++k) {  // (none when first_step overshoots)
       const double mid = 0.5 * (lo + hi);
       (creep_.creep(t + mid) <= target ? lo : hi) = mid;
     }
@@ -203,7 +203,7 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
     g_b = tip2_gap(cell, stepper);
   };
   const auto secant_ready = [&]() { return have_a && g_a > g_b && t_b > t_a; };
-  const auto aim = [&]() { return t_b + g_b * (t_b - t_a) / (g_a - g_b); };
+  const auto aim = [&]() { return t_b + g_b * (t_b - t_a) / (g_a - g_b); };  // the secant's zero
 
   StepSizer sizer(options.steps, creep, problem.loading.rise_time());
   for (const double target : targets) {
@@ -262,9 +262,7 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
         result.t_star_lower = lo;
         result.t_star_upper = hi;
         double t_star = 0.5 * (lo + hi);
-        if (secant_ready()) {
-          t_star = t_b + g_b * (t_b - t_a) / (g_a - g_b);  // secant on the tip gap
-        }
+        if (secant_ready()) t_star = aim();  // secant on the tip gap
         result.t_star = std::clamp(t_star, lo, hi);
         // As the model says it (model/regime.hpp): touching while the load still rises
         // is immediate, during the hold delayed.
