@@ -74,6 +74,10 @@ void add_parameter_option(po::options_description& opts, const model::Parameter&
   opts.add_options()(name.c_str(), value, help.c_str());
 }
 
+std::string out_of_range(const model::Parameter& parameter, const std::string& text) {
+  return "--" + std::string(parameter.name) + " = " + text + " is outside its range: " + std::string(parameter.range);
+}
+
 double read_parameter(const po::variables_map& vm, const model::Parameter& parameter) {
   const std::string name(parameter.name);
   const std::string option = "--" + name;
@@ -86,10 +90,10 @@ double read_parameter(const po::variables_map& vm, const model::Parameter& param
   try {
     value = parameter.integer ? parse_integer(text, option) : parse_real(text, option);
   } catch (const UsageError& e) {
-    if (parameter.integer) throw UsageError(option + " = " + text + " is outside its range: " + range);
+    if (parameter.integer) throw UsageError(out_of_range(parameter, text));
     throw UsageError(std::string(e.what()) + "; valid range: " + range);
   }
-  if (!parameter.admits(value)) throw UsageError(option + " = " + text + " is outside its range: " + range);
+  if (!parameter.admits(value)) throw UsageError(out_of_range(parameter, text));
   return value;
 }
 

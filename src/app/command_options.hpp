@@ -34,6 +34,9 @@ double read_real(const boost::program_options::variables_map& vm, const char* na
 void add_parameter_option(boost::program_options::options_description& opts, const model::Parameter& parameter,
                           const std::string& requirement = {});
 
+/// "--NAME = TEXT is outside its range: RANGE": the message for `parameter` given as `text`.
+std::string out_of_range(const model::Parameter& parameter, const std::string& text);
+
 /// The value of --NAME for `parameter`. Throws UsageError naming the option, its value
 /// and its valid range (or "missing required option") when it is not admissible.
 double read_parameter(const boost::program_options::variables_map& vm, const model::Parameter& parameter);

@@ -34,13 +34,31 @@ std::string flag_text(const QuantitySpec& q, const model::PointResult& r) {
   return std::string(model::validity_name(r.validity));
 }
 
-std::string series_array(const QuantitySpec* q, const model::PointResult& r) {
+std::string series_array(const std::vector<double>& values) {
   std::string text = "[";
-  for (std::size_t i = 0; i < r.series.size(); ++i) {
-    text += (i > 0 ? ", " : "") + number(q ? q->series_value(r.series[i]) : r.series[i].t);
-  }
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i > 0 ? ", " : "") + number(values[i]);
   return text + "]";
 }
+
+/// The JSON object's lines: the point's fields, then its series in a "series" object.
+struct JsonFields final : PointFields {
+  std::ostream& out;
+  bool in_series = false;
+  explicit JsonFields(std::ostream& o) : out(o) {}
+  void text(std::string_view name, const std::string& value) override {
+    out << "  \"" << name << "\": " << json_string(value) << ",\n";
+  }
+  void boolean(std::string_view name, bool value) override {
+    out << "  \"" << name << "\": " << (value ? "true" : "false") << ",\n";
+  }
+  void number(std::string_view name, double value) override {
+    out << "  \"" << name << "\": " << punchsweep::app::json_number(value) << ",\n";
+  }
+  void series(std::string_view name, const std::vector<double>& values) override {
+    out << (in_series ? ",\n    \"" : "  \"series\": {\n    \"") << name << "\": " << series_array(values);
+    in_series = true;
+  }
+};
 
 void write_json(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
   out << "{\n";
@@ -48,23 +66,36 @@ void write_json(std::ostream& out, const PointInputs& inputs, const model::Point
   if (!inputs.problem.localization.is_paper()) {
     out << "  \"localization\": " << json_string(inputs.problem.localization.spelling()) << ",\n";
   }
+  JsonFields fields(out);
+  visit_point(r, inputs.time_unit, fields);
+  out << "\n  }\n}\n";
+}
+
+}  // namespace
+
+void visit_point(const model::PointResult& r, std::string_view time_unit, PointFields& fields) {
   for (const QuantitySpec& q : kQuantities) {
     if (!is_point(q)) continue;
     if (q.flags == map::Flags::validity) {
-      out << "  \"" << q.name << "\": " << (r.valid() ? "true" : "false") << ",\n"
-          << "  \"reason\": " << json_string(r.reason(inputs.time_unit)) << ",\n";
+      fields.boolean(q.name, r.valid());
+      fields.text("reason", r.reason(time_unit));
     } else if (q.kind == map::Kind::flag) {
-      out << "  \"" << q.name << "\": " << json_string(flag_text(q, r)) << ",\n";
+      fields.text(q.name, flag_text(q, r));
     } else {
-      out << "  \"" << q.name << "\": " << number(q.value(r)) << ",\n";
+      fields.number(q.name, q.value(r));
     }
   }
-  out << "  \"series\": {\n    \"t\": " << series_array(nullptr, r);
+  std::vector<double> column(r.series.size());
+  for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
+  fields.series("t", column);
   for (const QuantitySpec& q : kQuantities) {
-    if (is_series(q)) out << ",\n    \"" << q.name << "\": " << series_array(&q, r);
+    if (!is_series(q)) continue;
+    for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = q.series_value(r.series[i]);
+    fields.series(q.name, column);
   }
-  out << "\n  }\n}\n";
 }
+
+namespace {
 
 // Units as people read them in the table and the CSV comments.
 std::string display_units(const QuantitySpec& q, const std::string& time_unit) {

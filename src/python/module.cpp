@@ -21,6 +21,7 @@
 
 #include "app/command_options.hpp"
 #include "app/point_command.hpp"
+#include "app/point_output.hpp"
 #include "app/reference_command.hpp"
 #include "app/table_cache.hpp"
 #include "app/usage_error.hpp"
@@ -47,41 +48,24 @@ py::array_t<double> array(const std::vector<double>& values) {
   return out;
 }
 
-bool is_point_quantity(const map::QuantitySpec& q) {
-  return q.source == map::Source::model && q.extent == map::Extent::point;
-}
-bool is_series_quantity(const map::QuantitySpec& q) {
-  return q.source == map::Source::model && q.extent == map::Extent::series;
-}
+/// The keys of `punchsweep point --format json`, read through the same visitor as the JSON
+/// writer (app::visit_point): flags as names, valid as a bool, reals as floats (None where
+/// the JSON has null), and the series as arrays (NaN where the JSON has null).
+struct DictFields final : app::PointFields {
+  py::dict out, columns;
+  void text(std::string_view name, const std::string& value) override { out[py::str(name)] = value; }
+  void boolean(std::string_view name, bool value) override { out[py::str(name)] = value; }
+  void number(std::string_view name, double value) override { out[py::str(name)] = json_value(value); }
+  void series(std::string_view name, const std::vector<double>& values) override {
+    columns[py::str(name)] = array(values);
+  }
+};
 
-/// The keys of `punchsweep point --format json`, from the same declaration (map::kQuantities):
-/// the flags as names (valid as a bool with its reason), the reals as floats (None where the
-/// JSON has null), and the series as arrays (NaN where the JSON has null).
 py::dict point_dict(const model::PointResult& r, const std::string& time_unit) {
-  py::dict out;
-  for (const map::QuantitySpec& q : map::kQuantities) {
-    if (!is_point_quantity(q)) continue;
-    const std::string name(q.name);
-    if (q.flags == map::Flags::validity) {
-      out[name.c_str()] = r.valid();
-      out["reason"] = r.reason(time_unit);
-    } else if (q.flags == map::Flags::regime) {
-      out[name.c_str()] = std::string(model::regime_name(r.regime));
-    } else if (q.kind == map::Kind::real) {
-      out[name.c_str()] = json_value(q.value(r));
-    }
-  }
-  py::dict series;
-  std::vector<double> column(r.series.size());
-  for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
-  series["t"] = array(column);
-  for (const map::QuantitySpec& q : map::kQuantities) {
-    if (!is_series_quantity(q)) continue;
-    for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = q.series_value(r.series[i]);
-    series[std::string(q.name).c_str()] = array(column);
-  }
-  out["series"] = series;
-  return out;
+  DictFields fields;
+  app::visit_point(r, time_unit, fields);
+  fields.out["series"] = fields.columns;
+  return fields.out;
 }
 
 py::dict point_command(const std::vector<std::string>& args) {
@@ -144,8 +128,7 @@ std::string value_text(double v, bool integer) {
 /// The command line's message for a value of `p` outside its range, else empty.
 std::string check(const model::Parameter& p, double value) {
   if (p.admits(value)) return {};
-  return "--" + std::string(p.name) + " = " + value_text(value, p.integer) + " is outside its range: " +
-         std::string(p.range);
+  return app::out_of_range(p, value_text(value, p.integer));
 }
 
 /// Exact-value keys of the per-subset caches: the coordinates' bits, hashed (an unordered

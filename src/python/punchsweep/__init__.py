@@ -64,8 +64,10 @@ def _arguments(options: dict[str, Any]) -> list[str]:
     return args
 
 
-def _series(raw: Mapping[str, Any]) -> dict[str, np.ndarray]:
-    return {k: np.asarray(v, dtype=float) for k, v in raw.items()}
+def _result(cls, raw: dict):
+    """A result dataclass from the engine's dict: its fields, the series as float arrays."""
+    fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series"}
+    return cls(series={k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}, **fields)
 
 
 @dataclass(frozen=True)
@@ -91,10 +93,6 @@ class PointResult:
     localization: str
     time_unit: str
 
-    @classmethod
-    def _from(cls, raw: dict) -> "PointResult":
-        fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series"}
-        return cls(series=_series(raw["series"]), **fields)
 
 
 @dataclass(frozen=True)
@@ -119,10 +117,6 @@ class ReferenceResult:
     series: dict[str, np.ndarray]
     time_unit: str
 
-    @classmethod
-    def _from(cls, raw: dict) -> "ReferenceResult":
-        fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series"}
-        return cls(series=_series(raw["series"]), **fields)
 
 
 def point(l: float | None = None, dh: float | None = None, T: float | None = None,
@@ -137,7 +131,7 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
                            temperature=temperature, pressure=pressure, ramp=ramp,
                            load_table=load_table, localization=localization, **options))
-    return PointResult._from(_core.point(args))
+    return _result(PointResult, _core.point(args))
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
@@ -151,7 +145,7 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
     args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, bem_grid=bem_grid,
                            material=material, temperature=temperature, pressure=pressure,
                            ramp=ramp, load_table=load_table, **options))
-    return ReferenceResult._from(_core.reference(args))
+    return _result(ReferenceResult, _core.reference(args))
 
 
 @dataclass(frozen=True)
