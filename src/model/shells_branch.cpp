@@ -79,9 +79,20 @@ double ShellsBranch::gap(const TwoLevelState& state) const {
   return std::min({reach - 2.0 * x1, reach - 2.0 * x2, reach / std::numbers::sqrt2 - x1 - x2});
 }
 
+TwoLevelSolve ShellsBranch::newton(double X, const TwoLevelState& guess) const {
+  if (solves_ >= kMaxSolves) return {guess, false};
+  ++solves_;
+  return system_.solve(X, guess);
+}
+
+TwoLevelSolve ShellsBranch::continuation(const Root& from, double X) const {
+  if (solves_ >= kMaxSolves) return {from.state, false};
+  return system_.continue_to(from.state, from.X, X, std::min(kMaxContinuationSolves, kMaxSolves - solves_), &solves_);
+}
+
 TwoLevelSolve ShellsBranch::root(double X, const TwoLevelState& guess, const Root& from, const Root* before) const {
   ++roots_;
-  TwoLevelSolve r = system_.solve(X, guess);
+  TwoLevelSolve r = newton(X, guess);
   if (r.converged) return r;
   // Continuation from `from`, unless the spots' gap, extrapolated from the two roots before,
   // closes before X: then the curve has ended (the end search finds where), and following
@@ -90,7 +101,7 @@ TwoLevelSolve ShellsBranch::root(double X, const TwoLevelState& guess, const Roo
     const double slope = (from.gap - before->gap) / (from.X - before->X);
     if (from.gap + slope * (X - from.X) < 0.0) return r;
   }
-  return system_.continue_to(from.state, from.X, X);
+  return continuation(from, X);
 }
 
 bool ShellsBranch::build_pieces(double v_lo, double v_hi, int depth, Failure* failure, const Root* end_root) const {
@@ -173,10 +184,10 @@ bool ShellsBranch::build_next() const {
       if (secant > good.X && secant < X_bad) X = secant;
     }
     ++roots_;
-    TwoLevelSolve r = system_.solve(X, predict(X, good, under.gap >= 0.0 ? &under : nullptr));
+    TwoLevelSolve r = newton(X, predict(X, good, under.gap >= 0.0 ? &under : nullptr));
     // A long step may fail where the curve goes on: follow it there (near the end, where the
     // steps are short, a failure is the end).
-    if (!r.converged && X - good.X > kLongStep * X) r = system_.continue_to(good.state, good.X, X);
+    if (!r.converged && X - good.X > kLongStep * X) r = continuation(good, X);
     if (r.converged) {
       under = good;
       good = Root{X, r.state, gap(r.state)};

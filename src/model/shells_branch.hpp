@@ -32,6 +32,11 @@ class ShellsBranch {
   /// Agreement of the interpolant with the Newton roots (relative, see above).
   static constexpr double kTolerance = 1e-10;
   static constexpr int kNodes = 12;
+  /// Newton solves one curve may spend, continuations included (a curve usually takes a few
+  /// hundred): where its roots can only be reached in ever shorter steps the curve ends
+  /// where its pieces do, and the points beyond have no solution (Validity::no_solution),
+  /// rather than the build crawling on for minutes.
+  static constexpr int kMaxSolves = 6000;
 
   /// `touch`: the family's touchdown of the problem (touchdown(problem)).
   ShellsBranch(const ContactProblem& problem, const Touchdown& touch);
@@ -54,6 +59,9 @@ class ShellsBranch {
 
   /// How many Newton roots the curve has cost so far (nodes and checks).
   int roots() const { return roots_; }
+  /// How many Newton solves they took, continuations included (at most kMaxSolves: the
+  /// curve ends where its budget does).
+  int solves() const { return solves_; }
 
  private:
   struct Piece {
@@ -83,6 +91,10 @@ class ShellsBranch {
   /// Newton root at X from `guess`, else by continuation from `from` (not where the gap,
   /// extrapolated from `before` through `from`, has closed by X).
   TwoLevelSolve root(double X, const TwoLevelState& guess, const Root& from, const Root* before) const;
+  /// Newton at X from `guess`, and continuation from `from` to X, within the curve's budget
+  /// of solves (not converged once it is spent).
+  TwoLevelSolve newton(double X, const TwoLevelState& guess) const;
+  TwoLevelSolve continuation(const Root& from, double X) const;
   /// A guess at X from the last root (and linearly in v through the one before, if any).
   TwoLevelState predict(double X, const Root& last, const Root* before) const;
   /// How far a state's spots are from merging, in l: the least of 0.98 - 2 a_i/l and
@@ -107,6 +119,7 @@ class ShellsBranch {
   mutable double X_last_ = 0.0;
   mutable TwoLevelState end_state_;  ///< the root at X_end_
   mutable int roots_ = 0;
+  mutable int solves_ = 0;
 };
 
 }  // namespace punchsweep::model

@@ -226,9 +226,9 @@ TwoLevelSolve TwoLevelSystem::solve(double X, const TwoLevelState& guess, int ma
   return out;
 }
 
-TwoLevelSolve TwoLevelSystem::continue_to(const TwoLevelState& from, double X_from,
-                                          double X_to) const {
-  return continue_branch(*this, from, X_from, X_to);
+TwoLevelSolve TwoLevelSystem::continue_to(const TwoLevelState& from, double X_from, double X_to, int max_solves,
+                                          int* solves) const {
+  return continue_branch(*this, from, X_from, X_to, max_solves, solves);
 }
 
 TwoLevelSolve TwoLevelSystem::solve_from_touchdown(double X) const {

@@ -32,6 +32,10 @@ struct TwoLevelSolve {
   bool converged = false;
 };
 
+/// Newton solves a continuation may spend (continue_branch): a branch that Newton only
+/// follows in ever shorter steps is taken as ending there, not crawled along.
+inline constexpr int kMaxContinuationSolves = 100;
+
 /// The algebraic two-level system at fixed nominal radii, eqs (9.16), (9.17), (9.19):
 /// unknowns a1, a2, Q1, Q2 at a given X. For fixed (a1, a2) the load equations are linear
 /// in Q (a 2x2 solve), leaving two residuals: load balance Q1 + Q2 = l^2 X, and the
@@ -60,9 +64,10 @@ class TwoLevelSystem {
   /// (converged reports whether the residual tolerance is met when it stops).
   TwoLevelSolve solve(double X, const TwoLevelState& guess, int max_iterations = kMaxIterations) const;
 
-  /// Follows the solution branch from a known solution `from` at X_from to X_to,
-  /// halving the step in X where Newton fails (at most 2^20 steps).
-  TwoLevelSolve continue_to(const TwoLevelState& from, double X_from, double X_to) const;
+  /// Follows the solution branch from a known solution `from` at X_from to X_to
+  /// (continue_branch, at most `max_solves` Newton solves).
+  TwoLevelSolve continue_to(const TwoLevelState& from, double X_from, double X_to,
+                            int max_solves = kMaxContinuationSolves, int* solves = nullptr) const;
 
   /// The branch at X >= X*, started from the moment level 2 touches. With the delayed-phase
   /// radii (A1 = sqrt(5/pi) l, A2 = 2l/sqrt(pi)) the single-level solution at h = dh is an
@@ -118,18 +123,27 @@ class TwoLevelSystem {
 };
 
 /// Follows a two-level system's solution branch from a known solution `from` at X_from to
-/// X_to, halving the step in X where its Newton fails and doubling it where it succeeds
-/// (at most 2^20 steps); shared by every system with solve(X, guess).
+/// X_to, halving the step in X where its Newton fails and doubling it where it succeeds;
+/// shared by every system with solve(X, guess). Bounded: not converged once a step falls
+/// below 2^-20 of the whole or after `max_solves` Newton solves (`*solves`, if given, adds
+/// the solves spent), with the last state reached.
 template <class System>
-TwoLevelSolve continue_branch(const System& system, const TwoLevelState& from, double X_from, double X_to) {
+TwoLevelSolve continue_branch(const System& system, const TwoLevelState& from, double X_from, double X_to,
+                              int max_solves = kMaxContinuationSolves, int* solves = nullptr) {
   TwoLevelSolve current{from, true};
   double X = X_from;
   double step = X_to - X_from;
   const double min_step = std::abs(step) * 0x1p-20;
+  int spent = 0;
   while (X != X_to) {
+    if (spent >= max_solves) {
+      current.converged = false;
+      break;
+    }
     const bool last = std::abs(X_to - X) <= std::abs(step);
     const double X_next = last ? X_to : X + step;
     const TwoLevelSolve trial = system.solve(X_next, current.state);
+    ++spent;
     if (trial.converged) {
       current = trial;
       X = X_next;
@@ -138,10 +152,11 @@ TwoLevelSolve continue_branch(const System& system, const TwoLevelState& from, d
       step *= 0.5;
       if (std::abs(step) < min_step) {
         current.converged = false;
-        return current;
+        break;
       }
     }
   }
+  if (solves != nullptr) *solves += spent;
   return current;
 }
 

@@ -132,8 +132,9 @@ TwoLevelSolve TwoLevelShells::solve(double X, const TwoLevelState& guess, int ma
   return out;
 }
 
-TwoLevelSolve TwoLevelShells::continue_to(const TwoLevelState& from, double X_from, double X_to) const {
-  return continue_branch(*this, from, X_from, X_to);
+TwoLevelSolve TwoLevelShells::continue_to(const TwoLevelState& from, double X_from, double X_to, int max_solves,
+                                          int* solves) const {
+  return continue_branch(*this, from, X_from, X_to, max_solves, solves);
 }
 
 }  // namespace punchsweep::model

@@ -37,8 +37,10 @@ class TwoLevelShells {
 
   /// Newton from `guess` at X (guess.Q1 + guess.Q2 <= 0: a 9:1 split of X l^2 is tried).
   TwoLevelSolve solve(double X, const TwoLevelState& guess, int max_iterations = kMaxIterations) const;
-  /// Follows the branch from `from` at X_from to X_to (continue_branch).
-  TwoLevelSolve continue_to(const TwoLevelState& from, double X_from, double X_to) const;
+  /// Follows the branch from `from` at X_from to X_to (continue_branch, at most
+  /// `max_solves` Newton solves).
+  TwoLevelSolve continue_to(const TwoLevelState& from, double X_from, double X_to,
+                            int max_solves = kMaxContinuationSolves, int* solves = nullptr) const;
 
   /// The nominal-pressure radii A1, A2 (in R) of a state at X.
   NominalRadii radii(const TwoLevelState& state, double X) const;

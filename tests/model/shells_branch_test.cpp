@@ -11,6 +11,8 @@
 #include <random>
 
 #include "model/localization.hpp"
+#include "model/point_evaluation.hpp"
+#include "model/standard_linear_solid.hpp"
 #include "model/regime.hpp"
 #include "model/root_finding.hpp"
 #include "model/shells_branch.hpp"
@@ -140,4 +142,29 @@ TEST(Brent, finds_roots_to_rounding_in_few_evaluations) {
     EXPECT_NEAR(r.x, c.root, 2e-15);
     EXPECT_LE(calls, c.max_calls);
   }
+}
+
+// The probe's hang (issue 22): s = 3 with dh < 0.004 R, where TwoLevelShells' roots can
+// only be followed in ever shorter steps, once crawled for minutes inside
+// build_pieces -> root -> continue_to. Every curve is now built within its budget of Newton
+// solves, and a point beyond where it ends has no solution instead of no answer.
+TEST(ShellsBranch, every_curve_is_built_within_its_solve_budget) {
+  for (const double l : {0.5, 0.75, 1.0, 1.5}) {
+    for (const double dh : {0.0003, 0.001, 0.003}) {
+      const ContactProblem p = refined(l, dh, 3);
+      const Touchdown touch = touchdown(p);
+      const ShellsBranch branch(p, touch);
+      EXPECT_FALSE(branch.at(1e3 * touch.X_star + 10.0).converged);  // builds the whole curve
+      EXPECT_LE(branch.solves(), ShellsBranch::kMaxSolves) << "l " << l << " dh " << dh;
+      EXPECT_GE(branch.X_end(), touch.X_star) << "l " << l << " dh " << dh;
+    }
+  }
+}
+
+TEST(ShellsBranch, the_probes_hanging_point_ends_flagged_no_solution) {
+  ContactProblem p{0.75, 0.0003, 0.005, Shape{3, 0.5}};
+  p.localization = parse_localization("refined");
+  const PointResult r = evaluate_point(p, StandardLinearSolid(2.0), EvaluationOptions{{0.0}, {}});
+  EXPECT_EQ(r.validity, Validity::no_solution) << r.reason();
+  for (const Snapshot& sample : r.series) EXPECT_TRUE(std::isnan(sample.a2));
 }
