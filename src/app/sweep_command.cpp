@@ -197,11 +197,16 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   }
 }
 
-/// What every rank computes: a tile evaluated and encoded into the map's chunks, packed.
+/// What every rank computes: a tile evaluated and encoded into the map's chunks, packed;
+/// nothing (an empty buffer) for a tile given up on a stop signal.
 sweep::TileWork tile_work(const map::Tiling& tiling, const sweep::TileEvaluator& evaluator, io::TileEncoder& encoder) {
   return [&tiling, &evaluator, &encoder, data = map::TileData()](std::uint64_t tile) mutable {
     const map::TileBox box = tiling.box(tile);
-    evaluator.evaluate(box, &data);
+    try {
+      evaluator.evaluate(box, &data, sweep::TileEvaluator::Reference::evaluated, model::StopRequest(&g_stop_signal));
+    } catch (const model::Stopped&) {
+      return std::vector<std::byte>{};
+    }
     return io::pack_encoded_tile(encoder.encode(tile, box, data));
   };
 }

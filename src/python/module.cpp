@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
@@ -213,7 +214,15 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
     const bool share_elastic = base.localization.is_paper();
     std::unordered_map<Key<4>, std::optional<model::ElasticTwoLevel>, KeyHash> elastic_cache;
     constexpr std::size_t kElasticCacheLimit = 1 << 20;
+    // Ctrl-C: Python's handler only sets a flag that the interpreter looks at; every 0.1 s
+    // (a point takes at most a curve's budgeted build) the loop takes the GIL and asks.
+    auto last_check = std::chrono::steady_clock::now();
     for (py::ssize_t i = 0; i < n; ++i) {
+      if ((i & 15) == 0 && std::chrono::steady_clock::now() - last_check > std::chrono::milliseconds(100)) {
+        last_check = std::chrono::steady_clock::now();
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      }
       model::ContactProblem problem = base;
       problem.l = L[i];
       problem.dh = DH[i];

@@ -23,6 +23,9 @@ double tip2_gap(const TwoLevelCell& cell, const ViscoelasticStepper& stepper) {
 /// compliance.
 class StepSizer {
  public:
+  static constexpr double kSaturated = 1e-3;
+  static constexpr double kSettled = 40.0;
+
   StepSizer(const StepControl& control, const model::CreepLaw& creep, double rise_time)
       : control_(control), creep_(creep), rise_(rise_time), ladder_(control.first_step) {}
 
@@ -32,15 +35,26 @@ class StepSizer {
     // Under a held load the contact set at t is the elastic one at J(t): steps of equal
     // growth of log J are steps of equal change of the contact. J is non-decreasing, so
     // the step is found by doubling, then halving, on it.
-    const double target = creep_.creep(t) * (1.0 + control_.creep_growth);
+    const double J = creep_.creep(t);
+    const double target = J * (1.0 + control_.creep_growth);
+    // Once J is within a thousandth of a step's growth of J(inf), the contact set is the
+    // long-term one to far better than a step's accuracy and no longer changes: one step
+    // to the end, however far (to t = 1e12 as cheaply as to t = 10).
+    if (t >= rise_ && creep_.creep_final() <= J * (1.0 + kSaturated * control_.creep_growth)) {
+      return std::numeric_limits<double>::infinity();
+    }
+    // The cap resolves the retardation times; once they have died out (t beyond
+    // kSettled max_step, max_step being the longest of them) only J's own growth (a
+    // dashpot's, a power law's) sizes the steps, so their number grows as log t.
+    const double cap = t > kSettled * control_.max_step ? std::numeric_limits<double>::infinity() : control_.max_step;
     double h = control_.first_step;
-    while (h < control_.max_step && creep_.creep(t + 2.0 * h) <= target) h *= 2.0;
+    while (h < cap && creep_.creep(t + 2.0 * h) <= target) h *= 2.0;
     double lo = h, hi = 2.0 * h;
     for (int k = 0; k < 8 && creep_.creep(t + lo) <= target; ++k) {  // (none when first_step overshoots)
       const double mid = 0.5 * (lo + hi);
       (creep_.creep(t + mid) <= target ? lo : hi) = mid;
     }
-    h = std::min(lo, control_.max_step);
+    h = std::min(lo, cap);
     // While the load rises the contact is not J's alone: the ladder's lengths bound it.
     return t < rise_ ? std::min(h, ladder_) : h;
   }
@@ -208,6 +222,7 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
   StepSizer sizer(options.steps, creep, problem.loading.rise_time());
   for (const double target : targets) {
     while (stepper.time() < target) {
+      options.stop.throw_if_requested();
       const double t_next = sizer.next(stepper.time(), std::min(target, next_kink(stepper.time())));
       if (touched) {
         log(stepper.advance(t_next));

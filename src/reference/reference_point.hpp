@@ -16,6 +16,7 @@
 #include "model/creep_law.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
+#include "model/stop_request.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 
@@ -24,7 +25,10 @@ namespace punchsweep::reference {
 /// The time steps. Under a held load the contact set at t is the elastic one at J(t)
 /// (the extended correspondence principle), so the contact changes as J does: each step
 /// grows J by the factor 1 + creep_growth (J's doubling-then-halving inverse, to 1/256 of
-/// the step), and is at least `first_step` and at most `max_step`. While the load still
+/// the step), and is at least `first_step` and at most `max_step` (the cap lifts once t is
+/// past 40 max_step, where the retardation terms have died out; and once J is within 1e-3
+/// of a step's growth of J(inf) the next step goes to the end, however far: the number of
+/// steps grows as log t, not as t). While the load still
 /// rises, and for creep_growth = 0 throughout, the steps instead grow geometrically by
 /// `growth` from `first_step` to `max_step` (the fixed ladder). Steps also end on the
 /// snapshot times and the load's kinks: by J's rule, a snapshot at most 1.25 steps away is
@@ -67,6 +71,9 @@ struct ReferenceOptions {
   /// last two states with level 2 free), falling back to halving when an aim misses, so a
   /// bracket usually takes two or three solves.
   double t_star_resolution = 1e-3;
+  /// Not a numerical choice: checked between time steps, so that a sweep's stop signal
+  /// ends a long point within a step (model::Stopped is thrown).
+  model::StopRequest stop{};
 };
 
 /// Empty when the options are usable, else a sentence naming the first bad field.

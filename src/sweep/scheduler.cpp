@@ -86,7 +86,9 @@ void work(MPI_Comm comm, const TileWork& compute, const volatile std::sig_atomic
       check(MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &status), "iprobe");
     }
     if (stop || requested || pending.empty()) continue;
-    outbox.send(compute(pending.pop_front()), comm);
+    std::vector<std::byte> result = compute(pending.pop_front());
+    if (result.empty()) continue;  // given up on a stop signal: the loop's top reports it
+    outbox.send(std::move(result), comm);
     outbox.release_finished();
   }
   outbox.wait_all();
@@ -153,7 +155,9 @@ class Manager {
   }
 
   void compute_one() {
-    sink_(compute_(queue_.pop_front()));
+    const std::vector<std::byte> result = compute_(queue_.pop_front());
+    if (result.empty()) return;  // given up on a stop signal (run() takes the signal next)
+    sink_(result);
     ++result_.tiles_done;
   }
 

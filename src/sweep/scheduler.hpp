@@ -14,7 +14,8 @@
 namespace punchsweep::sweep {
 
 /// Computes one tile, by its index, into the bytes that travel to rank 0 (the sweep packs
-/// its encoded chunks: io::pack_encoded_tile). Called on every rank.
+/// its encoded chunks: io::pack_encoded_tile), or into none when it gave the tile up on a
+/// stop signal (the tile then stays pending). Called on every rank.
 using TileWork = std::function<std::vector<std::byte>(std::uint64_t tile)>;
 
 /// Receives each finished tile's bytes on rank 0.
@@ -39,7 +40,8 @@ struct ScheduleResult {
 /// workers there are. With one rank it simply computes every tile. When `*stop` becomes
 /// non-zero (SIGTERM, SIGUSR1, SIGINT) on rank 0, or on any worker (which tells rank 0 and
 /// starts no further tile), the manager stops handing out work, tells the workers to
-/// finish the tile in hand, and collects what was computed; untouched tiles stay pending.
+/// finish or give up the tile in hand (`work` decides: the sweep gives up within a point),
+/// and collects what was computed; untouched and given-up tiles stay pending.
 /// The scheduler knows nothing of grids, models or files.
 ///
 /// Called collectively. `pending` (rank 0 only) holds the tiles still to compute; no memory

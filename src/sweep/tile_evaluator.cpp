@@ -130,7 +130,8 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
   }
 }
 
-void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Reference reference) const {
+void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Reference reference,
+                             const model::StopRequest& stop) const {
   const bool full = quantities_ == map::Quantities::full;
   const std::size_t nt = times_.size();
   const bool bem = sample_.has_value() && reference == Reference::evaluated;
@@ -188,6 +189,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
         Touch scratch;
         Touch& t = cache_ ? touch_[(gl * n[s_] + gs) * n[dh_] + box.start[dh_] + idh] : scratch;
         if (!t.ready) {
+          stop.throw_if_requested();
           model::ContactProblem at_dh = problem;
           at_dh.dh = value(dh_, idh);
           t = Touch{model::dh_parts(at_dh), true};
@@ -213,6 +215,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
       for (auto& e : elastic) e.reset();
 
       for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
+        stop.throw_if_requested();
         problem.dh = value(dh_, idh);
         for (std::size_t m = 0; m < materials; ++m) {
           const model::CreepLaw& law = *creep[m];
@@ -237,7 +240,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
     }
   }
   if (bem) {
-    evaluate_reference(box, out);
+    evaluate_reference(box, out, stop);
     merge_answers(out);
   }
 }
@@ -297,7 +300,8 @@ model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vecto
   return problem;
 }
 
-void TileEvaluator::evaluate_reference(const map::TileBox& box, map::TileData* out) const {
+void TileEvaluator::evaluate_reference(const map::TileBox& box, map::TileData* out,
+                                       const model::StopRequest& stop) const {
   std::vector<double> law_values;
   for (std::size_t i = 0; i < box.points(); ++i) {
     const map::Index at = box.position(i);
@@ -306,6 +310,7 @@ void TileEvaluator::evaluate_reference(const map::TileBox& box, map::TileData* o
     const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(law_, law_values);
     reference::ReferenceOptions options = reference_options_;
     reference::scale_steps_to_law(*creep, &options);
+    options.stop = stop;
     const model::PointResult r =
         reference::as_point_result(reference::evaluate_reference_point(problem, *creep, options));
     store_point<map::Source::bem>(r, i, out, kAll);

@@ -10,6 +10,7 @@
 #include "model/creep_laws.hpp"
 #include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
+#include "model/stop_request.hpp"
 #include "reference/reference_point.hpp"
 #include "sweep/reference_sample.hpp"
 #include "sweep/sweep_config.hpp"
@@ -49,7 +50,10 @@ class TileEvaluator {
   /// Fills `out` (resized here), row-major over the box, time last. With
   /// Reference::skipped only the model's quantities are filled (no bem_* arrays): what a
   /// calibration or a disk estimate of the model alone needs, from the same evaluator.
-  void evaluate(const map::TileBox& box, map::TileData* out, Reference reference = Reference::evaluated) const;
+  /// `stop` is checked between the box's (l, s, dh) curves and between (and inside) its
+  /// BEM points: once requested, the tile is given up by throwing model::Stopped.
+  void evaluate(const map::TileBox& box, map::TileData* out, Reference reference = Reference::evaluated,
+                const model::StopRequest& stop = {}) const;
 
   /// The points that get the reference; empty without one.
   const std::optional<ReferenceSample>& reference_sample() const { return sample_; }
@@ -61,7 +65,7 @@ class TileEvaluator {
   /// invalid, or those whose regime differs from a neighbour's one step along an axis.
   std::vector<std::uint64_t> chosen_by_model(ReferenceConfig::SampleRule rule) const;
   /// The reference at the sampled points of `box` into out's bem_* arrays (sized already).
-  void evaluate_reference(const map::TileBox& box, map::TileData* out) const;
+  void evaluate_reference(const map::TileBox& box, map::TileData* out, const model::StopRequest& stop) const;
   /// The contact problem and the creep law's parameter values at grid position `at`.
   model::ContactProblem problem_at(const map::Index& at, std::vector<double>* law_values) const;
 

@@ -392,3 +392,30 @@ TEST(ReferencePoint, steps_by_creep_growth_keep_the_ladders_accuracy_with_fewer_
     }
   }
 }
+
+// Issue 22: the BEM's time grew without bound with the last snapshot (about one step per
+// T_eps once J had saturated: a year to t = 1e12, and a sweep's --dry-run calibration hung).
+// Once J is within 1e-3 of a step's growth of J(inf) the contact no longer changes and one
+// step goes to the end. The state there is the long-term one: by the correspondence
+// principle the elastic state at X = pbar0 J(inf) (the standard linear solid at T = 2.5
+// against an elastic solid, T = 1, at pbar0 = 0.06 x 2.5), its loads relaxed by
+// E(inf) = 1/J(inf).
+TEST(ReferencePoint, a_snapshot_at_t_1e12_takes_a_few_dozen_steps_and_is_the_long_term_state) {
+  const model::ContactProblem problem = paper_point(0.075);
+  const model::StandardLinearSolid sls(2.5);
+  const ReferenceResult r = evaluate_reference_point(problem, sls, options_with(32, {0.0, 1e12}));
+  EXPECT_LE(r.steps, 60);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.regime, model::Regime::delayed);
+  model::ContactProblem elastic_problem = problem;
+  elastic_problem.pbar0 = problem.pbar0 * 2.5;
+  const ReferenceResult elastic =
+      evaluate_reference_point(elastic_problem, model::StandardLinearSolid(1.0), options_with(32, {0.0}));
+  const ReferenceSnapshot& end = r.series[1];
+  const ReferenceSnapshot& e = elastic.series[0];
+  EXPECT_EQ(end.area1, e.area1);
+  EXPECT_EQ(end.area2, e.area2);
+  EXPECT_NEAR(end.P1, e.P1 / 2.5, 1e-7 * problem.pbar0 * problem.l * problem.l);
+  EXPECT_NEAR(end.P2, e.P2 / 2.5, 1e-7 * problem.pbar0 * problem.l * problem.l);
+  EXPECT_NEAR(end.h, e.h, 1e-7);
+}

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# A stop signal is honoured within a couple of seconds even in the middle of a long tile
+# (issue 22): one tile of 16 BEM points at N = 256 (about 0.3 s each, several seconds in
+# all) is given up inside, the journal keeps nothing of it, and --resume completes a map
+# equal to an uninterrupted run. Also: the sweep over the probe's once-hanging s = 3 points
+# (dh < 0.004 R) ends, its points flagged rather than computed forever.
+source "$(dirname "$0")/common.sh"
+grid=(--grid.l 0.75 --grid.dh 0.03,0.05,0.075,0.1 --grid.T 2.5,6 --grid.pbar 0.03,0.06 --grid.s 2
+      --reference bem --bem-grid 256 --time.times 0,1,5 --chunk 1000)
+for attempt in 1 2 3; do
+  rm -f s.h5*
+  "$PUNCHSWEEP" sweep "${grid[@]}" --output s.h5 > stop.log 2>&1 &
+  pid=$!
+  # Into the tile: its BEM points are under way once the run has printed its size.
+  while ! grep -q "points in" stop.log; do
+    kill -0 "$pid" 2>/dev/null || { echo "FAIL: the run ended before it could be signalled"; cat stop.log; exit 1; }
+    sleep 0.05
+  done
+  sleep 1.5
+  start=$(date +%s.%N)
+  kill -TERM "$pid"
+  set +e; wait "$pid"; code=$?; set -e
+  took=$(echo "$(date +%s.%N) - $start" | bc)
+  test "$code" = 3 || { echo "FAIL: exit $code after SIGTERM, expected 3"; cat stop.log; exit 1; }
+  echo "attempt $attempt: stopped ${took} s after SIGTERM"
+  if [ "$(echo "$took < 2.0" | bc)" != 1 ]; then echo "FAIL: the stop took ${took} s"; exit 1; fi
+  grep -q "with 0 of 16 points done" stop.log || { echo "FAIL: the given-up tile was counted"; cat stop.log; exit 1; }
+done
+"$PUNCHSWEEP" sweep "${grid[@]}" --output s.h5 --resume --quiet
+"$PUNCHSWEEP" sweep "${grid[@]}" --output clean.h5 --quiet
+same_maps clean.h5 s.h5
+# The probe's hang: s = 3, dh < 0.004 R (7 of 30 such points ran for minutes before).
+timeout 120 "$PUNCHSWEEP" sweep --grid.l 0.5,0.75,1,1.5 --grid.dh 'linspace(0.0001, 0.004, 12)' --grid.T 2,5 \
+  --grid.pbar 'logspace(0.001, 0.1, 8)' --grid.s 3 --output hang.h5 --quiet ||
+  { echo "FAIL: the s = 3 sweep did not end within 120 s"; exit 1; }
+/usr/bin/python3 - <<'PY'
+import h5py, numpy as np
+with h5py.File("hang.h5", "r") as f:
+    valid = f["valid"][...]
+    meanings = f["valid"].attrs["flag_meanings"].split()
+    codes = dict(zip(meanings, f["valid"].attrs["flag_values"]))
+    t = f["t_star"][...]
+bad = valid == codes["no_solution"]
+print(f"s = 3 sweep: {valid.size} points, {bad.sum()} flagged no_solution, {(valid == codes['valid']).sum()} valid")
+assert bad.sum() > 0, "the probe's points should be flagged no_solution"
+PY
+echo "PASS: a stop inside a tile ends the run within 2 s and resumes to the same map; the s = 3 sweep ends"
