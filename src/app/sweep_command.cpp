@@ -30,6 +30,7 @@
 #include "map/tiling.hpp"
 #include "run/disk_space.hpp"
 #include "run/map_run.hpp"
+#include "run/output_lock.hpp"
 #include "run/preflight.hpp"
 #include "run/text_lines.hpp"
 #include "sweep/scheduler.hpp"
@@ -276,6 +277,26 @@ int run_sweep_command(const std::vector<std::string>& args) {
     return kUsageExitCode;
   }
   if (help) return 0;
+
+  // Rank 0 claims the map's name before it looks at any of its files (a second run into
+  // the same output is refused here, naming the first); every rank learns the verdict.
+  std::optional<run::OutputLock> lock;  // rank 0's, while the run lasts
+  if (!config.dry_run) {
+    std::string refusal;
+    if (root) {
+      const run::OutputPaths paths(config.output);
+      refusal = run::output_name_problem(paths);
+      if (refusal.empty()) {
+        if (auto taken = run::OutputLock::take(paths, command_line(args), &refusal)) lock.emplace(std::move(*taken));
+      }
+    }
+    int refused = root && !lock ? 1 : 0;
+    MPI_Bcast(&refused, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (refused != 0) {
+      if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
+      return kUsageExitCode;
+    }
+  }
 
   // run.chunk = auto: rank 0 decides (from the journal when resuming), every rank follows.
   std::uint64_t chunk = config.chunk;

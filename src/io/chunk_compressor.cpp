@@ -119,4 +119,15 @@ std::span<const std::byte> ChunkCompressor::compress(const void* data, std::size
   return {compressed_.data(), static_cast<std::size_t>(out - compressed_.data())};
 }
 
+bool inflates_to(std::span<const std::byte> zlib, std::size_t size) {
+  const std::unique_ptr<libdeflate_decompressor, void (*)(libdeflate_decompressor*)> d(libdeflate_alloc_decompressor(),
+                                                                                      libdeflate_free_decompressor);
+  if (!d) throw std::runtime_error("libdeflate: cannot set up a decompressor");
+  std::vector<std::byte> out(size);
+  std::size_t actual = 0;
+  return libdeflate_zlib_decompress(d.get(), zlib.data(), zlib.size(), out.data(), out.size(), &actual) ==
+             LIBDEFLATE_SUCCESS &&
+         actual == size;
+}
+
 }  // namespace punchsweep::io

@@ -35,4 +35,8 @@ class ChunkCompressor {
   std::vector<std::byte> compressed_;
 };
 
+/// Whether `zlib` (a chunk as compress() makes it) inflates to exactly `size` bytes: what a
+/// reader of the map will do with it, checked before a chunk from a file is written.
+bool inflates_to(std::span<const std::byte> zlib, std::size_t size);
+
 }  // namespace punchsweep::io

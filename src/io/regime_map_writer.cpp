@@ -1,6 +1,10 @@
 #include "io/regime_map_writer.hpp"
 
 #include <H5DSpublic.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <array>
 #include <cmath>
@@ -125,8 +129,13 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
         "set link order " + in);
   check(H5Pset_attr_creation_order(fcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
         "set attribute order " + in);
-  file_ =
-      Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, fcpl, H5P_DEFAULT), H5Fclose, "create file " + path_);
+  // A new file, never one written through: whatever is at the path goes first (a reader
+  // that holds an old file keeps it whole), and H5F_ACC_EXCL (O_CREAT | O_EXCL) then
+  // refuses a file or symbolic link planted there meanwhile rather than follow it.
+  if (::unlink(path_.c_str()) != 0 && errno != ENOENT) {
+    throw std::runtime_error("cannot replace " + path_ + ": " + std::strerror(errno));
+  }
+  file_ = Handle(H5Fcreate(path_.c_str(), H5F_ACC_EXCL, fcpl, H5P_DEFAULT), H5Fclose, "create file " + path_);
 
   write_string_attribute(file_, "Conventions", "CF-1.8", in);
   write_string_attribute(file_, "title", attributes.title, in);

@@ -81,7 +81,8 @@ struct MapAttributes {
 /// Errors throw Hdf5Error naming the file and the operation. Not thread-safe.
 class RegimeMapWriter {
  public:
-  /// Creates (or truncates) `path` with every coordinate, variable and attribute.
+  /// Creates `path` anew (an existing file or symbolic link there is removed, never
+  /// followed or truncated) with every coordinate, variable and attribute.
   /// Throws std::invalid_argument for an empty axis, a chunk outside [1, axis length],
   /// or time series without times.
   RegimeMapWriter(const std::string& path, const MapLayout& layout, const MapAttributes& attributes);

@@ -100,4 +100,19 @@ EncodedTile TileEncoder::encode(std::uint64_t tile, const map::TileBox& box, con
   return encoded;
 }
 
+bool TileEncoder::decodes(const EncodedTile& tile, const map::TileBox& box) const {
+  if (tile.summary.points != box.points()) return false;
+  const std::vector<std::size_t> variables = stored_variables(layout_);
+  if (tile.chunks.size() != variables.size()) return false;
+  std::size_t chunk_points = 1;
+  for (const std::size_t c : layout_.chunk) chunk_points *= c;
+  for (std::size_t k = 0; k < variables.size(); ++k) {
+    const map::QuantitySpec& spec = map::kQuantities[variables[k]];
+    const std::size_t element = spec.kind == map::Kind::flag ? sizeof(std::int8_t) : sizeof(double);
+    const std::size_t inner = spec.extent == map::Extent::series ? layout_.times.size() : 1;
+    if (!inflates_to(tile.chunks[k], chunk_points * inner * element)) return false;
+  }
+  return true;
+}
+
 }  // namespace punchsweep::io

@@ -34,6 +34,11 @@ class TileEncoder {
   /// another box or arrays of the wrong length, std::runtime_error if zlib fails.
   EncodedTile encode(std::uint64_t tile, const map::TileBox& box, const map::TileData& data);
 
+  /// Whether `tile` is what encode() makes for `box`: its point count, one chunk per stored
+  /// variable, each inflating to exactly a whole chunk's bytes. A record read back from a
+  /// file is checked so before its chunks go into a map (they are written as they are).
+  bool decodes(const EncodedTile& tile, const map::TileBox& box) const;
+
   const MapLayout& layout() const { return layout_; }
 
  private:

@@ -20,7 +20,7 @@ namespace {
 
 constexpr std::array<char, 8> kFileMagic{'P', 'S', 'J', 'R', 'N', 'L', '\r', '\n'};
 // 2: records hold encoded tiles; 3: their summaries carry the BEM reference counts
-constexpr std::uint32_t kFormatVersion = 5;
+constexpr std::uint32_t kFormatVersion = 6;
 constexpr std::uint32_t kRecordMagic = 0x43525350;  // "PSRC" read as little-endian bytes
 constexpr std::size_t kHeaderFixed = kFileMagic.size() + sizeof(std::uint32_t) + sizeof(std::uint64_t);
 constexpr std::size_t kRecordHead = sizeof(std::uint32_t) + sizeof(std::uint64_t);
@@ -64,9 +64,14 @@ void write_all(int fd, const std::byte* bytes, std::size_t size, const std::stri
   }
 }
 
+/// Never through a symbolic link (O_NOFOLLOW): a link planted at the journal's name would
+/// have the run write, or cut, the file it points to.
 FileDescriptor open_file(const std::string& path, int flags) {
-  const int fd = ::open(path.c_str(), flags | O_CLOEXEC, 0666);
-  if (fd < 0) throw system_error("cannot open", path);
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC | O_NOFOLLOW, 0666);
+  if (fd < 0) {
+    if (errno == ELOOP) throw std::runtime_error("tile journal " + path + " is a symbolic link, which punchsweep does not follow");
+    throw system_error("cannot open", path);
+  }
   return FileDescriptor(fd);
 }
 
@@ -92,6 +97,7 @@ T load(const std::byte* p) {
 struct Header {
   std::string text;
   std::uint64_t end = 0;  ///< offset of the first record
+  std::uint32_t crc = 0;  ///< the header's CRC, which every record's CRC continues
 };
 
 Header parse_header(int fd, const std::string& path) {
@@ -133,16 +139,17 @@ Header parse_header(int fd, const std::string& path) {
   if (crc != stored_crc)
     throw std::runtime_error("tile journal " + path + " has a damaged header (CRC mismatch)");
   header.end = kHeaderFixed + length + kCrcSize;
+  header.crc = crc;
   return header;
 }
 
 /// Whether a record's length field and payload match `stored`, read piecewise from the file.
 bool crc_matches_in_pieces(int fd, std::uint64_t length_field_at, std::uint64_t length, std::uint32_t stored,
-                           const std::string& path) {
+                           std::uint32_t seed, const std::string& path) {
   std::vector<std::byte> piece(kPiece);
   std::uint64_t at = length_field_at;
   std::uint64_t left = sizeof(std::uint64_t) + length;
-  std::uint32_t crc = 0;
+  std::uint32_t crc = seed;
   while (left > 0) {
     const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(left, piece.size()));
     if (!read_at(fd, piece.data(), n, at, path)) return false;
@@ -155,11 +162,14 @@ bool crc_matches_in_pieces(int fd, std::uint64_t length_field_at, std::uint64_t 
 
 }  // namespace
 
-TileJournal::TileJournal(FileDescriptor fd, std::string path, std::size_t end)
-    : fd_(std::move(fd)), path_(std::move(path)), end_(end) {}
+TileJournal::TileJournal(FileDescriptor fd, std::string path, std::size_t end, std::uint32_t seed)
+    : fd_(std::move(fd)), seed_(seed), path_(std::move(path)), end_(end) {}
 
 TileJournal TileJournal::create(const std::string& path, const std::string& header_text) {
-  FileDescriptor fd = open_file(path, O_WRONLY | O_CREAT | O_TRUNC);
+  // A new file: whatever was at the path is removed (not followed, not truncated under a
+  // reader), and O_EXCL refuses anything planted there meanwhile.
+  if (::unlink(path.c_str()) != 0 && errno != ENOENT) throw system_error("cannot replace", path);
+  FileDescriptor fd = open_file(path, O_WRONLY | O_CREAT | O_EXCL);
   std::vector<std::byte> header;
   header.reserve(kHeaderFixed + header_text.size() + kCrcSize);
   for (const char c : kFileMagic) header.push_back(static_cast<std::byte>(c));
@@ -167,9 +177,10 @@ TileJournal TileJournal::create(const std::string& path, const std::string& head
   append_bytes(&header, static_cast<std::uint64_t>(header_text.size()));
   const auto* text = reinterpret_cast<const std::byte*>(header_text.data());
   header.insert(header.end(), text, text + header_text.size());
-  append_bytes(&header, crc32(header.data(), header.size()));
+  const std::uint32_t crc = crc32(header.data(), header.size());
+  append_bytes(&header, crc);
   write_all(fd.get(), header.data(), header.size(), path);
-  return TileJournal(std::move(fd), path, header.size());
+  return TileJournal(std::move(fd), path, header.size(), crc);
 }
 
 std::string TileJournal::read_header(const std::string& path) {
@@ -178,9 +189,10 @@ std::string TileJournal::read_header(const std::string& path) {
 }
 
 std::size_t TileJournal::replay(const std::string& path,
-                                const std::function<void(const EncodedTile&)>& on_tile) {
+                                const std::function<bool(const EncodedTile&)>& on_tile) {
   const FileDescriptor fd = open_file(path, O_RDONLY);
-  std::uint64_t at = parse_header(fd.get(), path).end;
+  const Header header = parse_header(fd.get(), path);
+  std::uint64_t at = header.end;
   const std::uint64_t size = file_size(fd.get(), path);
   std::vector<std::byte> buffer;  // length field + payload + CRC of the current record
   while (size - at >= kRecordHead + kCrcSize) {
@@ -193,20 +205,19 @@ std::size_t TileJournal::replay(const std::string& path,
     if (length > kVerifyInPiecesAbove) {
       std::uint32_t stored = 0;
       if (!read_at(fd.get(), &stored, kCrcSize, at + kRecordHead + length, path)) break;
-      if (!crc_matches_in_pieces(fd.get(), length_at, length, stored, path)) break;
+      if (!crc_matches_in_pieces(fd.get(), length_at, length, stored, header.crc, path)) break;
     }
     buffer.resize(sizeof(std::uint64_t) + static_cast<std::size_t>(length) + kCrcSize);
     if (!read_at(fd.get(), buffer.data(), buffer.size(), length_at, path)) break;
     const std::size_t checked = buffer.size() - kCrcSize;
-    if (crc32(buffer.data(), checked) != load<std::uint32_t>(buffer.data() + checked)) break;
+    if (crc32(buffer.data(), checked, header.crc) != load<std::uint32_t>(buffer.data() + checked)) break;
     EncodedTile tile;
     try {
       tile = unpack_encoded_tile(buffer.data() + sizeof(std::uint64_t), static_cast<std::size_t>(length));
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error("tile journal " + path + ": record at byte " + std::to_string(at) +
-                               " passes its CRC but does not decode (" + e.what() + ")");
+    } catch (const std::runtime_error&) {
+      break;  // passes its CRC but does not unpack: not to be trusted, like a damaged record
     }
-    on_tile(tile);
+    if (!on_tile(tile)) break;
     at += kRecordHead + length + kCrcSize;
   }
   return static_cast<std::size_t>(at);
@@ -214,7 +225,8 @@ std::size_t TileJournal::replay(const std::string& path,
 
 TileJournal TileJournal::open_for_append(const std::string& path, std::size_t good_end) {
   FileDescriptor fd = open_file(path, O_RDWR | O_APPEND);
-  const std::uint64_t header_end = parse_header(fd.get(), path).end;
+  const Header header = parse_header(fd.get(), path);
+  const std::uint64_t header_end = header.end;
   const std::uint64_t size = file_size(fd.get(), path);
   if (good_end < header_end || good_end > size) {
     throw std::runtime_error("tile journal " + path + ": resume offset " + std::to_string(good_end) +
@@ -223,7 +235,7 @@ TileJournal TileJournal::open_for_append(const std::string& path, std::size_t go
   }
   if (::ftruncate(fd.get(), static_cast<off_t>(good_end)) != 0)
     throw system_error("cannot cut the torn tail", path);
-  return TileJournal(std::move(fd), path, good_end);
+  return TileJournal(std::move(fd), path, good_end, header.crc);
 }
 
 void TileJournal::append(const EncodedTile& tile) { append_packed(pack_encoded_tile(tile)); }
@@ -236,7 +248,7 @@ void TileJournal::append_packed(std::span<const std::byte> payload) {
   append_bytes(&record_, static_cast<std::uint64_t>(payload.size()));
   record_.insert(record_.end(), payload.begin(), payload.end());
   append_bytes(&record_,
-               crc32(record_.data() + sizeof(std::uint32_t), record_.size() - sizeof(std::uint32_t)));
+               crc32(record_.data() + sizeof(std::uint32_t), record_.size() - sizeof(std::uint32_t), seed_));
   try {
     write_all(fd_.get(), record_.data(), record_.size(), path_);
   } catch (const std::runtime_error&) {

@@ -18,21 +18,26 @@ namespace punchsweep::io {
 /// never misread. No fsync: a killed process does not lose the page cache, and a machine
 /// crash at worst costs tiles that are then computed again.
 ///
-/// File layout (native endianness), format version 5:
+/// File layout (native endianness), format version 6:
 ///   header: 8-byte magic "PSJRNL\r\n", u32 format version, u64 text length, the header
 ///           text (the caller's configuration identity), u32 CRC-32 of all of the above;
 ///   record: u32 magic "PSRC", u64 payload length, payload (a pack_encoded_tile buffer:
-///           the tile as the map stores it), u32 CRC-32 of the length field and the payload.
+///           the tile as the map stores it, its index included), u32 CRC-32 of the length
+///           field and the payload, continued from the header's CRC: a record is bound to
+///           the journal (the run identity) it was written into, so one copied from another
+///           journal fails its check.
 /// (Version 1 records held uncompressed tiles, version 2 tiles without the BEM reference
 /// counts, version 3 chunks in the variable order before map::kQuantities, version 4 four
-/// validity counts; read_header refuses such journals.)
+/// validity counts, version 5 records not bound to their header; read_header refuses such
+/// journals.)
 ///
 /// Replay stops at the first record that is incomplete, has a wrong magic or a wrong CRC:
 /// what follows a damaged record cannot be framed reliably, so it is ignored as well, and
 /// open_for_append cuts the file there (those tiles are computed again).
 class TileJournal {
  public:
-  /// Creates (or truncates) the journal at `path` and writes its header.
+  /// Creates the journal at `path` anew (an existing file or symbolic link there is removed,
+  /// never followed) and writes its header.
   /// Throws std::runtime_error naming the path and the system error on failure.
   static TileJournal create(const std::string& path, const std::string& header_text);
 
@@ -43,9 +48,11 @@ class TileJournal {
 
   /// Calls `on_tile` for every complete, CRC-valid record in file order, holding one record
   /// in memory at a time, and returns the byte offset just past the last good record.
-  /// Throws like read_header for a bad header, and std::runtime_error for a record whose
-  /// CRC is right but whose payload does not decode (a journal of another program version).
-  static std::size_t replay(const std::string& path, const std::function<void(const EncodedTile&)>& on_tile);
+  /// A record whose CRC is right but whose payload does not unpack, or that `on_tile`
+  /// refuses (returns false: its chunks do not decode, its tile is not in the tiling), ends
+  /// the replay as a damaged one does: it and what follows are computed again, never
+  /// written into a map. Throws like read_header for a bad header.
+  static std::size_t replay(const std::string& path, const std::function<bool(const EncodedTile&)>& on_tile);
 
   /// What lies after the last good record: the bytes that replay could not use and the
   /// records that start among them (the record magics found there, read a block at a time;
@@ -74,9 +81,10 @@ class TileJournal {
   std::size_t size() const { return end_; }
 
  private:
-  TileJournal(FileDescriptor fd, std::string path, std::size_t end);
+  TileJournal(FileDescriptor fd, std::string path, std::size_t end, std::uint32_t seed);
 
   FileDescriptor fd_;
+  std::uint32_t seed_ = 0;  ///< the header's CRC, which every record's CRC continues
   std::string path_;
   std::size_t end_ = 0;
   std::vector<std::byte> record_;  ///< reused record buffer

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "io/encoded_tile.hpp"
+#include "io/tile_encoder.hpp"
 #include "run/text_lines.hpp"
 
 namespace punchsweep::run {
@@ -21,10 +22,17 @@ MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, co
   // The tiles the journal holds: memory in proportion to the work done, not to the grid.
   std::unordered_set<std::uint64_t> done;
   if (start == Start::resume) {
+    // Every record is checked before it is trusted: its tile must be one of the tiling's
+    // and its chunks must decode to that tile's box (a record that passes its CRC but does
+    // not would make the map unreadable); the first that fails ends the replay, and it and
+    // what follows are computed again.
+    const io::TileEncoder checker(layout);
     const std::size_t good_end = io::TileJournal::replay(paths_.journal, [&](const io::EncodedTile& tile) {
-      if (tile.tile >= tiling.tiles() || !done.insert(tile.tile).second) return;
+      if (tile.tile >= tiling.tiles() || !checker.decodes(tile, tiling.box(tile.tile))) return false;
+      if (!done.insert(tile.tile).second) return true;
       writer_.write_encoded(tiling.box(tile.tile), tile);
       progress_.restored(tile);
+      return true;
     });
     // A damaged record hides every later one (they cannot be framed): say how much is lost.
     const io::TileJournal::Tail tail = io::TileJournal::inspect_tail(paths_.journal, good_end);

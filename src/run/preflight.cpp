@@ -17,6 +17,23 @@ namespace fs = std::filesystem;
 
 namespace punchsweep::run {
 
+std::string output_name_problem(const OutputPaths& paths) {
+  const fs::path final_path(paths.final_path);
+  const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
+  const long limit = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  const std::size_t most = limit > 0 ? static_cast<std::size_t>(limit) : 255;
+  for (const std::string& path : {paths.journal, paths.partial, paths.lock, paths.final_path}) {
+    const std::size_t length = fs::path(path).filename().string().size();
+    if (length > most) {
+      return "output.file = " + paths.final_path + ": the name is too long: " + fs::path(path).filename().string() +
+             " would have " + std::to_string(length) + " bytes; valid: at most " + std::to_string(most) +
+             " bytes for the map's name with its longest suffix, .partial.journal (so at most " +
+             std::to_string(most - 16) + " for the map's own name)";
+    }
+  }
+  return {};
+}
+
 std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start) {
   const fs::path final_path(paths.final_path);
   const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
@@ -40,6 +57,14 @@ std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths
     if (busy) {
       return "output.file = " + paths.final_path + ": " + paths.partial +
              " is being written by another running sweep; wait for it or stop it first";
+    }
+  }
+  // No file of the map is written through a symbolic link (a link planted at one of these
+  // names would have the run overwrite, or create, the file it points to).
+  for (const std::string& path : {paths.final_path, paths.partial, paths.journal}) {
+    if (fs::is_symlink(fs::symlink_status(path, ec))) {
+      return "output.file = " + paths.final_path + ": " + path +
+             " is a symbolic link; punchsweep writes no file through a link: remove it or choose another file name";
     }
   }
   const bool final_exists = fs::exists(final_path, ec);

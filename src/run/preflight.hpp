@@ -6,22 +6,30 @@
 
 namespace punchsweep::run {
 
-/// The three files of a map: the final one, the one under construction, and the journal.
+/// The files of a map: the final one, the one under construction, the journal, and the
+/// lock that the running sweep holds (OutputLock).
 struct OutputPaths {
   std::string final_path;
   std::string partial;
   std::string journal;
+  std::string lock;
   explicit OutputPaths(const std::string& file)
-      : final_path(file), partial(file + ".partial"), journal(file + ".partial.journal") {}
+      : final_path(file), partial(file + ".partial"), journal(file + ".partial.journal"), lock(file + ".lock") {}
 };
+
+/// Whether the map's file names fit the file system: "" or the refusal naming the longest
+/// (F.h5.partial.journal) and the limit (NAME_MAX of the output's folder, usually 255
+/// bytes). Checked first, before the lock file is created.
+std::string output_name_problem(const OutputPaths& paths);
 
 /// What a run decided before any work: start fresh, resume from the journal, or nothing
 /// to do (the map is complete and --resume was given).
 enum class Start { fresh, resume, already_complete };
 
-/// The resume policy, checked before anything is created: the output's folder must exist
-/// and be writable, the map's paths must not be folders or other non-regular files, and no
-/// other sweep may be writing its .partial (HDF5's lock). Then: --overwrite starts fresh;
+/// The resume policy, checked before anything is created (and under the run's OutputLock):
+/// the output's folder must exist and be writable, the map's paths must not be symbolic
+/// links, folders or other non-regular files, and no other sweep may be writing its
+/// .partial (HDF5's lock, for a sweep of an engine before the lock file). Then: --overwrite starts fresh;
 /// --resume resumes a journal whose configuration identity equals this run's (else
 /// refuses with the differences), starts fresh when there is nothing to resume, and
 /// reports already_complete for a finished map of the same identity (a finished map of

@@ -6,9 +6,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <vector>
 
 #include "io/encoded_tile.hpp"
+#include "io/regime_map_reader.hpp"
 #include "io/scratch_dir.hpp"
 #include "io/tile_encoder.hpp"
 #include "io/tile_journal.hpp"
@@ -264,4 +267,68 @@ TEST(ResolveChunk, auto_sizes_for_the_ranks_and_a_resume_keeps_the_size_its_map_
   config.chunk = 77;
   run::resolve_chunk(config, run::OutputPaths(config.output), 64);
   EXPECT_EQ(config.chunk, 77U);
+}
+
+// Issue 22: a record whose CRC is right (written through the journal's own append) but
+// whose chunk does not inflate was written into the map, which then could not be read
+// while the run reported success; a record copied in from another run's journal was
+// believed. Both are now refused at replay: they and what follows are computed again, and
+// the map that results reads whole.
+TEST(MapRun, resume_refuses_records_that_do_not_decode_or_come_from_another_journal) {
+  SmallRun r;
+  auto& [dir, config, tiling, layout, encoder, attributes, paths] = r;
+  std::ostringstream log;
+  {
+    run::MapRun first(config, layout, attributes, run::Start::fresh, tiling, log);
+    first.accept(packed_tile(encoder, tiling, 0, 1));
+    first.interrupt();
+  }
+  {  // tile 1 with its first chunk's deflate stream cut short, appended with a valid CRC
+    io::EncodedTile bad = io::unpack_encoded_tile(packed_tile(encoder, tiling, 1, 1).data(),
+                                                  packed_tile(encoder, tiling, 1, 1).size());
+    bad.chunks[0].resize(bad.chunks[0].size() / 2);
+    EXPECT_FALSE(encoder.decodes(bad, tiling.box(1)));
+    io::TileJournal journal = io::TileJournal::open_for_append(paths.journal, std::filesystem::file_size(paths.journal));
+    journal.append(bad);
+    journal.append(io::unpack_encoded_tile(packed_tile(encoder, tiling, 2, 1).data(),
+                                           packed_tile(encoder, tiling, 2, 1).size()));
+  }
+  {
+    run::MapRun second(config, layout, attributes, run::Start::resume, tiling, log);
+    EXPECT_EQ(second.progress().points_done(), tiling.box(0).points()) << "only tile 0 is trusted";
+    EXPECT_EQ(second.pending().front(), 1U);
+    for (const std::uint64_t t : second.pending().tiles()) second.accept(packed_tile(encoder, tiling, t, 0));
+    second.finish(1);
+  }
+  EXPECT_NO_THROW(io::read_map_identity(paths.final_path));
+
+  // A journal of another run (another identity in its header): its records fail their CRC
+  // in this one, though the bytes are a valid record of the other.
+  const std::string other = dir.file("other.journal");
+  {
+    io::TileJournal journal = io::TileJournal::create(other, "grid.l = 5");
+    journal.append(io::unpack_encoded_tile(packed_tile(encoder, tiling, 3, 2).data(),
+                                           packed_tile(encoder, tiling, 3, 2).size()));
+  }
+  std::vector<char> record;
+  {
+    std::ifstream in(other, std::ios::binary);
+    const std::vector<char> all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t header = all.size() - (4 + 8 + packed_tile(encoder, tiling, 3, 2).size() + 4);
+    record.assign(all.begin() + static_cast<std::ptrdiff_t>(header), all.end());
+  }
+  {
+    run::MapRun fresh(config, layout, attributes, run::Start::fresh, tiling, log);
+    fresh.interrupt();
+  }
+  {
+    std::ofstream out(paths.journal, std::ios::binary | std::ios::app);
+    out.write(record.data(), static_cast<std::streamsize>(record.size()));
+  }
+  std::size_t replayed = 0;
+  io::TileJournal::replay(paths.journal, [&](const io::EncodedTile&) { return ++replayed, true; });
+  EXPECT_EQ(replayed, 0U) << "a record of another journal was replayed";
+  std::size_t in_other = 0;
+  io::TileJournal::replay(other, [&](const io::EncodedTile&) { return ++in_other, true; });
+  EXPECT_EQ(in_other, 1U);
 }
