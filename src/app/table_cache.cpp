@@ -1,20 +1,29 @@
 #include "app/table_cache.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <random>
 #include <system_error>
 
+#include "io/file_descriptor.hpp"
 #include "model/shell_sums.hpp"
 
 namespace punchsweep::app {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'S', 'W', 'T', 'A', 'B', '0', '1'};
+/// No table of the engine comes near this (the largest, s = 3, is about 2 MB).
+constexpr std::uint64_t kMaxEntries = std::uint64_t{1} << 24;
+constexpr std::size_t kFixedBytes = sizeof kMagic + 2 * sizeof(std::uint64_t);
 
 std::uint64_t fnv1a(const std::vector<double>& values) {
   std::uint64_t hash = 14695981039346656037ull;
@@ -26,72 +35,138 @@ std::uint64_t fnv1a(const std::vector<double>& values) {
   return hash;
 }
 
+bool owned_and_private(const struct stat& st) {
+  return (st.st_uid == ::geteuid() || st.st_uid == 0) && (st.st_mode & (S_IWGRP | S_IWOTH)) == 0;
+}
+
+std::string octal_mode(mode_t mode) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%04o", static_cast<unsigned>(mode & 07777));
+  return text;
+}
+
+bool read_exactly(int fd, void* out, std::size_t size) {
+  auto* p = static_cast<char*>(out);
+  while (size > 0) {
+    const ssize_t n = ::read(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+bool write_exactly(int fd, const void* data, std::size_t size) {
+  const auto* p = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
 }  // namespace
 
-std::optional<std::filesystem::path> table_cache_folder() {
+TableCacheFolder table_cache_folder() {
   if (const char* set = std::getenv("PUNCHSWEEP_CACHE")) {
     const std::string folder(set);
-    if (folder.empty() || folder == "off") return std::nullopt;
-    return std::filesystem::path(folder);
+    const std::string word = lowercase(folder);
+    if (word.empty() || word == "off" || word == "0" || word == "false" || word == "no" || word == "none") return {};
+    if (folder.front() != '/') {
+      return {std::nullopt, "PUNCHSWEEP_CACHE = " + folder +
+                                " is not an absolute path (the shell does not expand ~ inside quotes); the table "
+                                "cache is not used"};
+    }
+    return {std::filesystem::path(folder), {}};
   }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
-    return std::filesystem::path(xdg) / "punchsweep";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && xdg[0] == '/') {
+    return {std::filesystem::path(xdg) / "punchsweep", {}};
   }
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
-    return std::filesystem::path(home) / ".cache" / "punchsweep";
+  if (const char* home = std::getenv("HOME"); home != nullptr && home[0] == '/') {
+    return {std::filesystem::path(home) / ".cache" / "punchsweep", {}};
   }
-  return std::nullopt;
+  return {};
+}
+
+std::string untrusted_folder(const std::filesystem::path& folder) {
+  struct stat st {};
+  if (::lstat(folder.c_str(), &st) != 0) return {};  // created by write_tables, private
+  if (S_ISLNK(st.st_mode)) return "the table cache folder " + folder.string() + " is a symbolic link";
+  if (!S_ISDIR(st.st_mode)) return "the table cache folder " + folder.string() + " is not a folder";
+  if (!owned_and_private(st)) {
+    return "the table cache folder " + folder.string() + " (mode " + octal_mode(st.st_mode) + ", owner uid " +
+           std::to_string(st.st_uid) + ") can be written by other users, who could bias every result; " +
+           "make it yours and private (chmod go-w) to use it";
+  }
+  return {};
 }
 
 std::vector<double> read_tables(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
+  const int raw = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (raw < 0) return {};
+  const io::FileDescriptor fd(raw);
+  struct stat st {};
+  if (::fstat(fd.get(), &st) != 0 || !S_ISREG(st.st_mode) || !owned_and_private(st)) return {};
   char magic[8];
   std::uint64_t n = 0;
-  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 ||
-      !in.read(reinterpret_cast<char*>(&n), sizeof n) || n > (std::uint64_t{1} << 28)) {
+  if (!read_exactly(fd.get(), magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 ||
+      !read_exactly(fd.get(), &n, sizeof n) || n > kMaxEntries ||
+      static_cast<std::uint64_t>(st.st_size) != kFixedBytes + n * sizeof(double)) {
     return {};
   }
   std::vector<double> values(n);
   std::uint64_t hash = 0;
-  if (!in.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(n * sizeof(double))) ||
-      !in.read(reinterpret_cast<char*>(&hash), sizeof hash) || in.peek() != std::ifstream::traits_type::eof() ||
-      hash != fnv1a(values)) {
+  char extra = 0;
+  if (!read_exactly(fd.get(), values.data(), n * sizeof(double)) || !read_exactly(fd.get(), &hash, sizeof hash) ||
+      read_exactly(fd.get(), &extra, 1) || hash != fnv1a(values)) {
     return {};
   }
   return values;
 }
 
 void write_tables(const std::filesystem::path& file, const std::vector<double>& tables) {
-  std::error_code error;
-  std::filesystem::create_directories(file.parent_path(), error);
+  const std::filesystem::path folder = file.parent_path();
+  if (::mkdir(folder.c_str(), 0700) != 0 && errno == ENOENT) {
+    std::error_code error;
+    std::filesystem::create_directories(folder.parent_path(), error);
+    ::mkdir(folder.c_str(), 0700);
+  }
+  if (!untrusted_folder(folder).empty()) return;
   std::random_device random;
   std::filesystem::path temporary = file;
   temporary += ".part." + std::to_string(::getpid()) + "." + std::to_string(random());
+  const int raw = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (raw < 0) return;
+  bool written = false;
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    const io::FileDescriptor fd(raw);
     const std::uint64_t n = tables.size();
     const std::uint64_t hash = fnv1a(tables);
-    out.write(kMagic, sizeof kMagic);
-    out.write(reinterpret_cast<const char*>(&n), sizeof n);
-    out.write(reinterpret_cast<const char*>(tables.data()), static_cast<std::streamsize>(n * sizeof(double)));
-    out.write(reinterpret_cast<const char*>(&hash), sizeof hash);
-    if (!out.flush()) {
-      out.close();
-      std::filesystem::remove(temporary, error);
-      return;
-    }
+    written = write_exactly(fd.get(), kMagic, sizeof kMagic) && write_exactly(fd.get(), &n, sizeof n) &&
+              write_exactly(fd.get(), tables.data(), n * sizeof(double)) && write_exactly(fd.get(), &hash, sizeof hash);
   }
-  std::filesystem::rename(temporary, file, error);
-  if (error) std::filesystem::remove(temporary, error);
+  if (!written || ::rename(temporary.c_str(), file.c_str()) != 0) ::unlink(temporary.c_str());
 }
 
 void use_table_cache() {
-  const std::optional<std::filesystem::path> folder = table_cache_folder();
-  if (!folder) {
+  const TableCacheFolder cache = table_cache_folder();
+  std::string refusal = cache.not_used;
+  if (cache.folder && refusal.empty()) refusal = untrusted_folder(*cache.folder);
+  if (!cache.folder || !refusal.empty()) {
+    if (!refusal.empty()) std::fprintf(stderr, "punchsweep: %s; tables are built in memory\n", refusal.c_str());
     model::set_shell_sums_store({});
     return;
   }
-  const std::filesystem::path root = *folder;
+  const std::filesystem::path root = *cache.folder;
   model::set_shell_sums_store({[root](const std::string& name) { return read_tables(root / name); },
                                [root](const std::string& name, const std::vector<double>& tables) {
                                  write_tables(root / name, tables);

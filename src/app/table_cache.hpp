@@ -7,20 +7,43 @@
 
 namespace punchsweep::app {
 
-/// The folder where the refined localizations' neighbour tables (model::ShellSums, about
-/// 2 s to build per shape exponent) are kept between runs: $PUNCHSWEEP_CACHE if set ("off"
-/// or empty: none), else $XDG_CACHE_HOME/punchsweep, else $HOME/.cache/punchsweep.
-std::optional<std::filesystem::path> table_cache_folder();
+/// Where the engine keeps tables between runs, and whether it may: the folder, or none with
+/// the reason (empty when the cache is off on purpose).
+struct TableCacheFolder {
+  std::optional<std::filesystem::path> folder;
+  std::string not_used;  ///< why a configured folder is not used; empty otherwise
+};
+
+/// The folder where tables (the refined localizations' neighbour tables, model::ShellSums,
+/// about 2 s to build per shape exponent; and every table the engine caches later) are
+/// kept between runs: $PUNCHSWEEP_CACHE if set (off, 0, false, no, none or empty, in any
+/// case: none; otherwise an absolute path, or none), else $XDG_CACHE_HOME/punchsweep if
+/// that is absolute (the XDG rule: a relative one is ignored), else $HOME/.cache/punchsweep
+/// if $HOME is absolute. No relative path is ever used: a cache in whatever folder a run
+/// happens to start in would scatter files and could be anyone's.
+TableCacheFolder table_cache_folder();
+
+/// Why `folder` must not be trusted with tables, or "" if it may: like OpenSSH with key
+/// files, it must be a folder (not a link to one) owned by this user (or root) and not
+/// writable by group or others, since whoever can write the tables can bias every result.
+/// A folder that does not exist yet is fine (write_tables creates it, mode 0700).
+std::string untrusted_folder(const std::filesystem::path& folder);
 
 /// A file of the cache: "PSWTAB01", the count n (uint64), n doubles and their FNV-1a hash
-/// (uint64), host byte order. read_tables gives empty for a missing, short or damaged file.
+/// (uint64), host byte order. read_tables gives empty for a missing, short, damaged or
+/// oversized file, one whose size does not match its count (checked before any memory is
+/// sized by it), a symbolic link, anything but a regular file (a FIFO would block), or a
+/// file writable by group or others or owned by another user. The hash only catches
+/// accidents: the model checks what it loads against direct evaluation
+/// (model::ShellSums::from_tables).
 std::vector<double> read_tables(const std::filesystem::path& file);
-/// Written beside the file and renamed over it (ranks that save the same tables at once
-/// leave one whole file); a folder or file that cannot be written is skipped silently (the
-/// tables are then built again next time).
+/// Written to a new file beside it (O_EXCL, O_NOFOLLOW, mode 0644) and renamed over it
+/// (ranks that save the same tables at once leave one whole file); a folder or file that
+/// cannot be written is skipped silently (the tables are then built again next time).
 void write_tables(const std::filesystem::path& file, const std::vector<double>& tables);
 
-/// Gives the model a store in table_cache_folder(), if any.
+/// Gives the model a store in table_cache_folder(), if any and if trusted; otherwise says
+/// once on stderr why the cache is not used (the tables are then built in memory).
 void use_table_cache();
 
 }  // namespace punchsweep::app

@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <random>
 #include <tuple>
 #include <utility>
 
@@ -276,13 +277,34 @@ std::optional<ShellSums> ShellSums::from_tables(int s, Localization localization
   }
   if (at != tables.size()) return std::nullopt;
   out.tabulated_ = true;
-  // The tables must still be the sums this build computes (three radii, within the
-  // tables' tolerance).
+  // The tables must still be the sums this build computes: three fixed radii, and points
+  // drawn at random in this process, which no one who edits a file can know in advance.
   if (!within(out.same(0.2), out.same_direct(0.2), 1.0) || !within(out.cross(0.2, 0.15), out.cross_direct(0.2, 0.15), 1.0) ||
-      !within(out.cross(0.3, 0.3), out.cross_direct(0.3, 0.3), 1.0)) {
+      !within(out.cross(0.3, 0.3), out.cross_direct(0.3, 0.3), 1.0) || !out.spot_check(std::random_device{}())) {
     return std::nullopt;
   }
   return out;
+}
+
+bool ShellSums::spot_check(std::uint64_t seed) const {
+  if (!tabulated_) return true;
+  std::mt19937_64 rng(seed);
+  const auto in = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  // The tables meet the direct sums to kTableTolerance; a check allows ten times that, so
+  // an honest table never fails one, while an edit that moves a value by more does.
+  constexpr double kCheckScale = 10.0;
+  for (const Patch& p : same_patches_) {
+    const double x = in(p.lo, p.hi);
+    if (!within(same(x), same_direct(x), kCheckScale)) return false;
+  }
+  for (const Patch& p : cross_patches_) {
+    for (int iv = 0; iv < kIntervals; ++iv) {
+      const double y = in(iv * kIntervalWidth, (iv + 1) * kIntervalWidth);
+      const double x = in(p.lo, p.hi) * (kCrossEdge - y);
+      if (!within(cross(x, y), cross_direct(x, y), kCheckScale)) return false;
+    }
+  }
+  return true;
 }
 
 std::string ShellSums::table_name(int s, Localization localization) {

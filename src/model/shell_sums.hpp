@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -55,6 +56,12 @@ class ShellSums {
   /// construction of (s, localization) and they meet the direct sums at three radii; else
   /// empty (the caller builds them). Bit for bit the tables that were saved.
   static std::optional<ShellSums> from_tables(int s, Localization localization, const std::vector<double>& tables);
+
+  /// Whether the tables meet the direct sums (to 10 kTableTolerance) at points drawn from
+  /// `seed`: one in every near patch of each sum, in each y interval of the cross sums
+  /// (the far tables add to every value checked). from_tables draws a fresh seed in every
+  /// process, so a table edited to bias the results fails it whatever its checksum says.
+  bool spot_check(std::uint64_t seed) const;
 
   /// A file name for the tables of (s, localization): shell_sums-s<s>-<spelling>.
   static std::string table_name(int s, Localization localization);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <functional>
@@ -224,6 +225,61 @@ TEST(ShellSums, saved_tables_read_back_bit_for_bit_and_stale_ones_are_refused) {
   EXPECT_FALSE(ShellSums::from_tables(1, six, damaged).has_value());
   EXPECT_FALSE(ShellSums::from_tables(1, six, {}).has_value());
   EXPECT_EQ(ShellSums::table_name(2, parse_localization("refined")), "shell_sums-s2-shells_200");
+}
+
+namespace {
+
+/// The tables with every near patch's coefficients scaled by `factor`, except the patches
+/// that hold the three radii from_tables checks at fixed points (same: x = 0.2; cross:
+/// t = x / (0.98/sqrt 2 - y) at (0.2, 0.15) and (0.3, 0.3)): the probe's forgery of issue 22,
+/// which a recomputed checksum would let through. Layout as ShellSums::tables() writes it.
+std::vector<double> forged(std::vector<double> tables, double factor) {
+  std::size_t at = 16;  // the header
+  const double edge = Localization::kMergeMargin / std::numbers::sqrt2;
+  const double fixed[2][2] = {{0.2, 0.2}, {0.2 / (edge - 0.15), 0.3 / (edge - 0.3)}};
+  for (int k = 0; k < 2; ++k) {
+    const auto patches = static_cast<std::size_t>(tables[at++]);
+    for (std::size_t i = 0; i < patches; ++i) {
+      const double lo = tables[at], hi = tables[at + 1];
+      const auto size = static_cast<std::size_t>(tables[at + 2]);
+      at += 3;
+      const bool checked = (fixed[k][0] >= lo && fixed[k][0] <= hi) || (fixed[k][1] >= lo && fixed[k][1] <= hi);
+      if (!checked) {
+        for (std::size_t j = 0; j < size; ++j) tables[at + j] *= factor;
+      }
+      at += size;
+    }
+  }
+  return tables;
+}
+
+}  // namespace
+
+TEST(ShellSums, a_forged_table_with_a_valid_checksum_is_refused_by_random_direct_evaluation) {
+  // Issue 22: coefficients scaled by 1.002 away from the three fixed radii moved the paper
+  // point's t* from 0.8301 to 0.7748, believed. from_tables now also compares the tables
+  // with the direct sums at points drawn at random in every process, one in every patch.
+  const Localization six{6, true};
+  const ShellSums built(1, six);
+  const std::vector<double> saved = built.tables();
+  const std::vector<double> forgery = forged(saved, 1.002);
+  ASSERT_NE(forgery, saved);
+  for (int run = 0; run < 5; ++run) EXPECT_FALSE(ShellSums::from_tables(1, six, forgery).has_value());
+  // Honest tables pass the random checks whatever the draw (here 200 seeds), so a cache is
+  // never rebuilt for nothing; a forgery of 1e-6 relative fails every one of them.
+  const std::optional<ShellSums> honest = ShellSums::from_tables(1, six, saved);
+  ASSERT_TRUE(honest.has_value());
+  const std::optional<ShellSums> slight = ShellSums::from_tables(1, six, forged(saved, 1.0 + 1e-12));
+  int caught = 0;
+  const std::vector<double> small_forgery = forged(saved, 1.0 + 1e-6);
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    EXPECT_TRUE(honest->spot_check(seed)) << "seed " << seed;
+    if (slight) {
+      EXPECT_TRUE(slight->spot_check(seed)) << "seed " << seed;  // within the tables' own accuracy
+    }
+  }
+  for (int run = 0; run < 20; ++run) caught += ShellSums::from_tables(1, six, small_forgery).has_value() ? 0 : 1;
+  EXPECT_EQ(caught, 20);
 }
 
 TEST(Localization, parses_its_spellings_and_refuses_others) {
