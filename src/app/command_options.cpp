@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/text_file.hpp"
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
 #include "map/axis_parser.hpp"
@@ -217,12 +218,9 @@ PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLaw
 }
 
 std::shared_ptr<const model::Material> read_material_file(const std::string& path, const std::string& option) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError((option.empty() ? path : option + " = " + path) + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(path, option.empty() ? "material file" : option + " = material file");
   try {
-    return std::make_shared<const model::Material>(model::Material::parse(text.str(), path));
+    return std::make_shared<const model::Material>(model::Material::parse(text, path));
   } catch (const model::MaterialError& e) {
     throw UsageError(e.what());
   }

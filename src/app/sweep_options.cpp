@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "app/command_options.hpp"
+#include "app/text_file.hpp"
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
 #include "io/crc32.hpp"
@@ -288,30 +289,8 @@ std::vector<std::string> config_file_problems(const std::string& path, const std
 
 // The values the file sets, by key.
 std::map<std::string, std::string> read_config_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
   if (path.empty()) throw UsageError("--config needs a file name" + std::string(kSeeHelp));
-  if (!fs::exists(path, ec)) throw UsageError("config file " + path + " does not exist");
-  if (fs::is_directory(path, ec)) throw UsageError("config file " + path + " is a directory");
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (!in) throw UsageError("config file " + path + " cannot be read");
-  std::string text = buffer.str();
-  // A UTF-8 byte-order mark (editors on Windows write one) is no part of the first key.
-  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
-  // A binary file would be echoed back line by line: refuse it at its first control byte.
-  int line = 1;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n') ++line;
-    if ((byte < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') || byte == 0x7F) {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "0x%02X", byte);
-      throw UsageError("config file " + path + ", line " + std::to_string(line) + ": byte " + hex +
-                       " is a control character; a config file is INI text");
-    }
-  }
+  const std::string text = read_text_file(path, "config file");
 
   const std::vector<std::string> problems = config_file_problems(path, text);
   if (!problems.empty()) throw UsageError(join(problems, "\n"));

@@ -14,7 +14,8 @@ double parse_real(const std::string& text, const std::string& option) {
   char* end = nullptr;
   errno = 0;
   const double value = std::strtod(begin, &end);
-  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value)) {
+  // The whole text: a NUL inside it (possible from Python, not from a shell) is no end.
+  if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value)) {
     throw UsageError(option + " = '" + text + "' is not a finite number");
   }
   return value;
@@ -25,11 +26,19 @@ int parse_integer(const std::string& text, const std::string& option) {
   char* end = nullptr;
   errno = 0;
   const long value = std::strtol(begin, &end, 10);
-  if (text.empty() || end == begin || *end != '\0' || errno == ERANGE ||
-      value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
-    throw UsageError(option + " = '" + text + "' is not an integer");
+  if (!text.empty() && end == begin + text.size() && errno == 0 && value >= std::numeric_limits<int>::min() &&
+      value <= std::numeric_limits<int>::max()) {
+    return static_cast<int>(value);
   }
-  return static_cast<int>(value);
+  // A whole number written as a real ("2.0", "2e0": a map's s is float64, and Python's
+  // repr of 2.0) is that integer.
+  errno = 0;
+  const double real = std::strtod(begin, &end);
+  if (!text.empty() && end == begin + text.size() && errno == 0 && real == std::floor(real) &&
+      real >= std::numeric_limits<int>::min() && real <= std::numeric_limits<int>::max()) {
+    return static_cast<int>(real);
+  }
+  throw UsageError(option + " = '" + text + "' is not an integer");
 }
 
 std::vector<double> parse_real_list(const std::string& text, const std::string& option) {

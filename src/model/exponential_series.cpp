@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/number_text.hpp"
 #include "model/root_finding.hpp"
 
 namespace punchsweep::model {
@@ -35,13 +36,45 @@ void ExponentialSeriesLaw::check_terms(std::string_view law, std::string_view na
     if (!(std::isfinite(values[i]) && values[i] > 0.0)) {
       throw std::invalid_argument(out_of_range(law, v + "_" + index, values[i], v + "_i > 0"));
     }
-    if (!(std::isfinite(times[i]) && times[i] > 0.0)) {
-      throw std::invalid_argument(out_of_range(law, t + "_" + index, times[i], t + "_i > 0"));
+    if (!(std::isfinite(times[i]) && times[i] >= kMinTime && times[i] <= kMaxTime)) {
+      throw std::invalid_argument(out_of_range(law, t + "_" + index, times[i],
+                                               number_text(kMinTime, 6) + " <= " + t + "_i <= " + number_text(kMaxTime, 6) +
+                                                   " in the time unit"));
     }
     if (i > 0 && !(times[i] > times[i - 1])) {
       throw std::invalid_argument(out_of_range(law, t + "_" + index, times[i],
                                                "strictly increasing " + t + "_i (a repeated time is one term)"));
     }
+  }
+  if (!times.empty() && !(times.back() <= kMaxSpan * times.front())) {
+    throw std::invalid_argument(std::string(law) + ": " + t + "_i from " + number_text(times.front(), 6) + " to " +
+                                number_text(times.back(), 6) + " span more than " + number_text(kMaxSpan, 6) +
+                                " (the slowest over the fastest), which the interconversion cannot resolve");
+  }
+}
+
+void ExponentialSeriesLaw::check_interconversion(std::string_view law) const {
+  constexpr double kTolerance = 1e-9;
+  const auto fail = [&](const std::string& what) {
+    throw std::invalid_argument(std::string(law) + ": the interconversion between its creep and relaxation series " +
+                                "failed (" + what + "); the times span too many decades to be resolved");
+  };
+  for (std::size_t k = 0; k < J_.size(); ++k) {
+    if (!(std::isfinite(J_[k]) && J_[k] > 0.0 && std::isfinite(lambda_[k]) && lambda_[k] > 0.0)) {
+      fail("retardation term " + std::to_string(k + 1) + ": J = " + number_text(J_[k], 6) + ", lambda = " +
+           number_text(lambda_[k], 6));
+    }
+  }
+  double E0 = E_inf_;
+  for (std::size_t i = 0; i < E_.size(); ++i) {
+    if (!(std::isfinite(E_[i]) && E_[i] > 0.0 && std::isfinite(tau_[i]) && tau_[i] > 0.0)) {
+      fail("relaxation term " + std::to_string(i + 1) + ": E = " + number_text(E_[i], 6) + ", tau = " + number_text(tau_[i], 6));
+    }
+    E0 += E_[i];
+  }
+  if (!(std::abs(E0 - 1.0) <= kTolerance)) fail("J(0) E(0) = " + number_text(E0, 12) + ", not 1");
+  if (phi_ == 0.0 && !(std::abs(J_sum_ * E_inf_ - 1.0) <= kTolerance)) {
+    fail("J(inf) E_inf = " + number_text(J_sum_ * E_inf_, 12) + ", not 1");
   }
 }
 

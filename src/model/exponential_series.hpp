@@ -57,10 +57,25 @@ class ExponentialSeriesLaw : public CreepLaw {
   /// one: "LAW: N KIND NAME_i and M times TIME_i; valid: ...".
   static void check_count(std::string_view law, std::string_view kind, std::string_view name,
                           const std::vector<double>& values, std::string_view time, const std::vector<double>& times);
+  /// The times a series accepts, in its time unit: each within [kMinTime, kMaxTime], all
+  /// within kMaxSpan of each other (the slowest over the fastest). Beyond these the
+  /// interconversion's roots, 1/time apart, are no longer resolved in double precision
+  /// (a subnormal time gives an infinite rate; times 1e-200 and 1e200 gave J(inf) = 2.5
+  /// where it is 3), and no polymer's spectrum comes near them (a DMA master curve spans
+  /// some 15-20 decades).
+  static constexpr double kMinTime = 1e-30;
+  static constexpr double kMaxTime = 1e30;
+  static constexpr double kMaxSpan = 1e24;
   /// Throws std::invalid_argument naming the first term whose value is not finite and > 0,
-  /// or whose time is not finite and > 0 and above the one before it.
+  /// or whose time is not finite, within [kMinTime, kMaxTime] and above the one before it,
+  /// or the times if they span more than kMaxSpan.
   static void check_terms(std::string_view law, std::string_view name, const std::vector<double>& values,
                           std::string_view time, const std::vector<double>& times);
+  /// The interconversion's own invariants, checked before the law is used: every
+  /// retardation and relaxation term finite and positive, E(0) = E_inf + sum E_i = 1 = J(0)
+  /// and, for limited creep, J(inf) E_inf = 1, each to 1e-9. Throws std::invalid_argument
+  /// saying which failed and by how much (a series the roots cannot resolve).
+  void check_interconversion(std::string_view law) const;
   /// J(inf) = 1 + sum_k J_k as the series reaches it (so that J(t), J(inf) and the
   /// retardation series agree to the last bit), or infinity with a dashpot.
   void set_creep_final();

@@ -50,6 +50,7 @@ KelvinSeries::KelvinSeries(std::vector<double> J, std::vector<double> lambda, do
   for (std::size_t k = 0; k + 1 < n; ++k) add_root(-1.0 / lambda_[k], -1.0 / lambda_[k + 1]);
   if (phi_ > 0.0) add_root(-1.0 / lambda_[n - 1], 0.0);
   // Found from the most negative s up: tau_k increase, fastest first.
+  check_interconversion(kLaw);
 }
 
 std::string KelvinSeries::describe() const {

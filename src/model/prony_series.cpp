@@ -46,6 +46,7 @@ PronySeries::PronySeries(double E_inf, std::vector<double> E, std::vector<double
     J_.push_back(-1.0 / (s * df));  // the residue of 1/(s f(s)) at s_k is -J_k
   }
   set_creep_final();  // = E_0/E_inf to rounding
+  check_interconversion(kLaw);
 }
 
 std::string PronySeries::describe() const {

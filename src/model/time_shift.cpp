@@ -28,22 +28,29 @@ std::string TemperatureShift::error() const {
 
 bool TemperatureShift::admits(double th) const {
   if (!(std::isfinite(th) && th > -kZeroCelsius && th >= T_min && th <= T_max)) return false;
-  return !wlf_at(th) || C2 + th - T_ref > 0.0;
+  if (wlf_at(th) && !(C2 + th - T_ref > 0.0)) return false;
+  return std::abs(log10_factor(th)) <= kMaxDecades;
 }
 
 std::string TemperatureShift::range() const {
   const bool diverges = kind == Kind::wlf && !(E_a_below > 0.0);  // WLF below T_ref too
   const bool limited = T_min > -kZeroCelsius || std::isfinite(T_max);
+  // Where WLF's a_T reaches 10^kMaxDecades on its way to the divergence at T_ref - C2.
+  const double lowest = T_ref - C2 * kMaxDecades / (C1 + kMaxDecades);
   std::string r = "temperature";
-  if (T_min > -kZeroCelsius && !(diverges && T_min <= T_ref - C2)) {
+  if (T_min > -kZeroCelsius && !(diverges && T_min <= lowest)) {
     r += " >= " + number_text(T_min, 10);
   } else {
-    r += " > " + (diverges ? number_text(T_ref - C2, 10) : std::string("-273.15"));
+    r += " > " + (diverges ? number_text(lowest, 10) : std::string("-273.15"));
   }
   if (std::isfinite(T_max)) r += " and <= " + number_text(T_max, 10);
   r += " (in degC";
-  if (diverges) r += "; T_ref - C2, where WLF diverges";
+  if (diverges) {
+    r += "; below " + number_text(lowest, 10) + " the shift a_T exceeds 1e" + number_text(kMaxDecades, 3) +
+         " on its way to WLF's divergence at T_ref - C2 = " + number_text(T_ref - C2, 10);
+  }
   if (limited) r += "; T_min, T_max: the range the shift was fitted over";
+  r += "; and where |log10 a_T| <= " + number_text(kMaxDecades, 3);
   return r + ")";
 }
 

@@ -33,10 +33,17 @@ struct TemperatureShift {
   /// >= 0; T_ref above absolute zero; T_min < T_max), else a sentence naming the bad one
   /// and its range.
   std::string error() const;
+  /// The largest shift admitted, |log10 a_T| <= kMaxDecades: a_T stays finite and the
+  /// shifted times (ExponentialSeriesLaw's within 1e-30..1e30, a run's up to 1e12) stay far
+  /// from overflow; no fitted shift means anything there (1e100 s). Where WLF diverges
+  /// (toward T_ref - C2) this is reached at T_ref - C2 kMaxDecades / (C1 + kMaxDecades).
+  static constexpr double kMaxDecades = 100.0;
   /// Whether temperature th (degC) is one the shift holds at: above absolute zero, within
-  /// [T_min, T_max], and where WLF applies above T_ref - C2 (where log10 a_T diverges).
+  /// [T_min, T_max], and with |log10 a_T| <= kMaxDecades (for WLF, above the temperature
+  /// where that is reached on the way to its divergence at T_ref - C2).
   bool admits(double th) const;
-  /// The range admits() checks, as messages print it: "temperature > 54.4 degC (T_ref - C2)".
+  /// The range admits() checks, as messages print it: "temperature > 61.06 (in degC; below
+  /// 61.06 the shift a_T exceeds 1e100 on its way to WLF's divergence at T_ref - C2 = 53.4 ...)".
   std::string range() const;
   /// log10 a_T(th); th must be admitted.
   double log10_factor(double th) const;

@@ -283,15 +283,26 @@ TEST(Cli, material_inputs_are_refused_with_their_range) {
   std::ofstream(bad) << "[material]\nname = bad\nlaw = prony\nmodulus_unit = MPa\ntime_unit = s\n"
                         "poisson = 0.4\nE_inf = -1\nE_i = 2\ntau_i = 1\n";
   const std::string point = " --l 0.75 --dh 0.05 --pbar 0.03 --s 2";
-  expect_refused("--material " + wlf + point + " --temperature 40", "--temperature = 40", "temperature > 53.4");
+  expect_refused("--material " + wlf + point + " --temperature 40", "--temperature = 40", "temperature > 61.0626703");
+  // Issue 22: just above WLF's divergence (T_ref - C2 = 53.4) a_T overflows; refused by the
+  // option's own name and range, not "--time-temperature".
+  expect_refused("--material " + wlf + point + " --temperature 54", "--temperature = 54", "temperature > 61.0626703");
+  expect_refused("--material " + wlf + point + " --temperature 61", "--temperature = 61",
+                 "the shift a_T exceeds 1e100 on its way to WLF's divergence at T_ref - C2 = 53.4");
   expect_refused("--material " + bad + point, "E_inf = -1", "E_inf > 0");
-  expect_refused("--material " + dir + "/no_such_file.ini" + point, "--material", "cannot open");
+  expect_refused("--material " + dir + "/no_such_file.ini" + point, "--material", "does not exist");
+  // Not regular files: a device is not read without end, a folder is named as one.
+  expect_refused("--material /dev/zero" + point, "--material = material file /dev/zero", "not a regular file");
+  expect_refused("--material " + dir + point, "--material = material file " + dir, "is a folder");
+  const std::string binary = dir + "/punchsweep_cli_binary.ini";
+  std::ofstream(binary) << "[material]\nname = x\n\x01\x02\xff\xfe\n";
+  expect_refused("--material " + binary + point, "line 3: byte 0x01 is a control character", "INI text");
   expect_refused("--material " + wlf + point + " --T 2", "--T", "unknown option");
   expect_refused("--material " + wlf + point + " --ramp -1", "--ramp", "t_r >= 0");
   expect_refused("--material " + wlf + point + " --load-table '0:0, 5:0.9, 6:0.5, 9:1'", "--load-table",
                  "does not recede");
   expect_refused_command("reference --material " + wlf + point + " --temperature 40 --bem-grid 32",
-                         "--temperature = 40", "temperature > 53.4");
+                         "--temperature = 40", "temperature > 61.0626703");
 }
 
 // --pressure 23.532kPa is pbar = 23532 Pa / E0*, E0* = 3529.8 kPa / 0.75 from the file: 0.005.

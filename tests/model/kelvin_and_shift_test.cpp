@@ -80,8 +80,14 @@ TEST(TemperatureShift, wlf_and_arrhenius_as_written) {
   EXPECT_NEAR(wlf.log10_factor(125.0), -17.44 * 20.0 / 71.6, 1e-14);
   EXPECT_NEAR(wlf.log10_factor(95.0), 17.44 * 10.0 / 41.6, 1e-14);
   EXPECT_EQ(wlf.log10_factor(105.0), 0.0);
-  EXPECT_TRUE(wlf.admits(53.5));
-  EXPECT_FALSE(wlf.admits(53.4));  // T_ref - C2 = 53.4: log10 a_T diverges
+  // T_ref - C2 = 53.4: log10 a_T diverges, and reaches 100 (a_T = 1e100; at 54 degC it is
+  // 10^1482, which overflows) at 105 - 51.6 * 100 / 117.44 = 61.0626703.
+  EXPECT_FALSE(wlf.admits(53.4));
+  EXPECT_FALSE(wlf.admits(54.0));
+  EXPECT_FALSE(wlf.admits(61.062));
+  EXPECT_TRUE(wlf.admits(61.0627));
+  EXPECT_NEAR(wlf.log10_factor(61.0626703), 100.0, 1e-5);
+  EXPECT_NE(wlf.range().find("temperature > 61.0626703"), std::string::npos) << wlf.range();
   EXPECT_NE(wlf.range().find("53.4"), std::string::npos);
 
   TemperatureShift arrhenius;
@@ -90,8 +96,12 @@ TEST(TemperatureShift, wlf_and_arrhenius_as_written) {
   arrhenius.T_ref = 25.0;
   EXPECT_NEAR(arrhenius.log10_factor(35.0), 1e5 / 8.314462618 * (1.0 / 308.15 - 1.0 / 298.15) / std::log(10.0),
               1e-13);
-  EXPECT_TRUE(arrhenius.admits(-200.0));
+  EXPECT_TRUE(arrhenius.admits(-200.0));  // log10 a_T = 53.9
   EXPECT_FALSE(arrhenius.admits(-273.15));
+  // Near absolute zero a_T would overflow: refused past |log10 a_T| = 100, at
+  // 1 / (1/298.15 + 100 ln 10 R / E_a) - 273.15 = -228.703 degC.
+  EXPECT_FALSE(arrhenius.admits(-228.71));
+  EXPECT_TRUE(arrhenius.admits(-228.70));
 
   TemperatureShift bad = wlf;
   bad.C2 = -3.0;

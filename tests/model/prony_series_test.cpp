@@ -104,3 +104,39 @@ TEST(PronySeries, bad_series_are_refused_with_the_value_and_its_range) {
   EXPECT_NE(message([] { PronySeries(1.0, {1.0}, {1.0, 2.0}); }).find("the same number"), std::string::npos);
   EXPECT_NE(message([] { PronySeries(1.0, {1.0}, {std::nan("")}); }).find("tau_1"), std::string::npos);
 }
+
+// Issue 22: extreme relaxation times gave wrong numbers marked valid (a subnormal tau made
+// a1 = 0 at every time; tau = 1e-200, 1e200 gave J(inf) = 2.5 where E_0/E_inf = 3). They
+// are refused with the term and the range named; what is accepted keeps the invariants.
+TEST(PronySeries, times_outside_the_resolvable_range_are_refused_by_name) {
+  const auto message = [](double E_inf, std::vector<double> E, std::vector<double> tau) -> std::string {
+    try {
+      PronySeries law(E_inf, std::move(E), std::move(tau));
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message(1.0, {1.0, 1.0}, {1e-310, 20.0}).find("tau_1 = 9.9999999999999694e-311 is outside its range: 1e-30 <= tau_i <= 1e+30"),
+            std::string::npos)
+      << message(1.0, {1.0, 1.0}, {1e-310, 20.0});
+  EXPECT_NE(message(1.0, {1.0, 1.0}, {1e-200, 1e200}).find("tau_1 = 9.9999999999999998e-201 is outside its range"), std::string::npos);
+  EXPECT_NE(message(1.0, {1.0, 1.0}, {1e-20, 1e20}).find("tau_i from 1e-20 to 1e+20 span more than 1e+24"),
+            std::string::npos)
+      << message(1.0, {1.0, 1.0}, {1e-20, 1e20});
+  EXPECT_NE(message(1.0, {1.0}, {1e31}).find("tau_1 = 9.9999999999999996e+30 is outside its range"), std::string::npos);
+  EXPECT_NE(message(1.0, {1.0, 1.0}, {1e-12, 1e-12}).find("strictly increasing"), std::string::npos);
+}
+
+TEST(PronySeries, accepted_spans_keep_the_interconversions_invariants) {
+  // E_inf = 1, E_i = 1, 1: J(0) = 1, J(inf) = E_0 / E_inf = 3, over the widest spans
+  // accepted, and the interconversion identity at times across them.
+  for (const auto& tau : std::vector<std::vector<double>>{{1e-30, 1e-6}, {1e-12, 1e12}, {1.0, 1e24}, {1e6, 1e30}}) {
+    const PronySeries law(1.0, {1.0, 1.0}, tau);
+    EXPECT_EQ(law.creep(0.0), 1.0);
+    EXPECT_NEAR(law.creep_final(), 3.0, 3e-12) << tau[0] << " " << tau[1];
+    for (const double t : {tau[0], std::sqrt(tau[0] * tau[1]), tau[1]}) {
+      EXPECT_NEAR(interconversion(law, t), 1.0, 1e-9) << "t = " << t;
+    }
+  }
+}

@@ -209,6 +209,64 @@ def test_open_map_decodes_a_real_map(tmp_path):
     assert np.array_equal(c["regime"], codes[:, :, 0, :, 0])
 
 
+def test_open_map_decodes_lazily_and_slices_equal_the_whole(tmp_path):
+    """Issue 22: open_map decoded every flag at once (about 260 bytes a point: 13 GB for the
+    production map); now a flag is decoded where it is read, so opening a map
+    takes far less than decoding it (100,000 points here), and any slice equals the same
+    slice of the whole."""
+    import tracemalloc
+    path = tmp_path / "big.h5"
+    done = cli("sweep", "--grid.l", "linspace(0.5,1.5,25)", "--grid.dh", "linspace(0.01,0.12,40)", "--grid.T", "2,5",
+               "--grid.pbar", "logspace(0.005,0.08,25)", "--grid.s", "1,2", "--quantities", "regime", "--quiet",
+               "--output", str(path))
+    assert done.returncode == 0, done.stderr
+    tracemalloc.start()
+    ds = punchsweep.open_map(path)
+    opened = tracemalloc.get_traced_memory()[1]
+    whole = ds["regime"].values
+    decoded = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert whole.size == 100_000
+    assert opened < 0.1 * decoded, (opened, decoded)
+    part = ds["regime"].isel(l=slice(3, 9), T=1, s=0).values
+    assert np.array_equal(part, whole[3:9, :, 1, :, 0])
+    assert np.array_equal(ds["valid"][2, 5].values, ds["valid"].values[2, 5])
+    assert set(np.unique(whole)) <= set(punchsweep.REGIMES.values()) | {"not_computed"}
+
+
+def test_open_map_says_what_is_not_a_map(tmp_path):
+    for path, why in [(tmp_path / "none.h5", "no such file"),
+                      (tmp_path / "text.h5", "is not a punchsweep map"),
+                      (tmp_path / "plain.h5", "is not a punchsweep map")]:
+        if path.name == "text.h5":
+            path.write_text("not HDF5 at all\n")
+        if path.name == "plain.h5":
+            import h5py
+            with h5py.File(path, "w") as f:
+                f["x"] = np.arange(3.0)
+        with pytest.raises(punchsweep.NotAMapError, match=why):
+            punchsweep.open_map(path)
+    damaged = tmp_path / "damaged.h5"
+    done = cli("sweep", "--grid.l", "0.75", "--grid.dh", "0.05", "--grid.T", "2.5", "--grid.pbar", "0.06",
+               "--grid.s", "2", "--quiet", "--output", str(damaged))
+    assert done.returncode == 0, done.stderr
+    damaged.write_bytes(damaged.read_bytes()[:2000])
+    with pytest.raises(ValueError, match="is not a punchsweep map"):
+        punchsweep.open_map(damaged)
+
+
+def test_options_are_read_whole_and_whole_numbers_are_integers():
+    """Issue 22: a NUL inside an option cut it silently ('0.75\\x00junk' evaluated 0.75);
+    s=2.0 (a map's s is float64) was refused though classify took it."""
+    with pytest.raises(ValueError, match="NUL character"):
+        punchsweep.point(l="0.75\x00junk", dh=0.075, T=2.5, pbar=0.06, s=2)
+    a = punchsweep.point(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2.0, times=[0, 1])
+    b = punchsweep.point(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2, times=[0, 1])
+    assert a.t_star == b.t_star and same_bits(a.series["a1"], b.series["a1"])
+    with pytest.raises(ValueError, match="--s = 2.5"):
+        punchsweep.point(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2.5)
+
+
 @pytest.mark.parametrize("script", sorted(p.name for p in (REPO / "examples").glob("*.py")))
 def test_examples_run(script, tmp_path):
     picture = tmp_path / "picture.png"

@@ -63,6 +63,12 @@ refused "not a regular file" "$PUNCHSWEEP" sweep "${small[@]}" --output /dev/nul
 # refused at once with the limit, not with exit 1 once the journal is to be created.
 long=$(printf 'm%.0s' $(seq 1 245)).h5
 refused "the name is too long" "$PUNCHSWEEP" sweep "${small[@]}" --output "$long"
+# A relative path to --material that is a device, a folder or a binary file: exit 2 naming
+# it (a device was read without end, a binary file echoed back).
+nomaterial=(--grid.l 0.75 --grid.dh 0.05 --grid.pbar 0.06 --grid.s 2 --quiet)
+refused "/dev/zero is not a regular file" "$PUNCHSWEEP" sweep "${nomaterial[@]}" --model.material /dev/zero --output x.h5
+printf '[material]\nname = x\n\001\002\n' > binary.ini
+refused "binary.ini, line 3: byte 0x01 is a control character" "$PUNCHSWEEP" sweep "${nomaterial[@]}" --model.material binary.ini --output x.h5
 printf '[run]\nchunk = 1\n' > slow.ini
 "$PUNCHSWEEP" sweep --config slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,5 --quiet --output keep/part.h5 & pid=$!
 while [ ! -s keep/part.h5.partial.journal ]; do sleep 0.02; done

@@ -152,7 +152,7 @@ for j in (int(np.argmin(abs(T - 55))), int(np.argmin(abs(T - 75))), int(np.argmi
 assert checked > 100, checked
 PYEOF
 run_ranks 0 sweep --model.material configs/sub/missing.ini --dry-run 2> bad.log && fail "a missing material accepted"
-grep -q "^punchsweep sweep: model.material = configs/sub/missing.ini: configs/sub/missing.ini: cannot open the file" \
+grep -q "^punchsweep sweep: model.material = configs/sub/missing.ini: material file configs/sub/missing.ini does not exist" \
   bad.log || { cat bad.log; fail "missing material message"; }
 
 # --resume compares the material's content.
@@ -164,7 +164,16 @@ grep -q "model.material" resume.log || { cat resume.log; fail "the refusal does 
 
 # Bad inputs: a temperature below T_ref - C2, a bad file, creep_law beside material.
 run_ranks 0 sweep --model.material wlf.ini --grid.temperature 40 --dry-run 2> bad.log && fail "40 degC accepted"
-grep -q "grid.temperature = 40: value 40 is outside its range for test polymer.*: temperature > 53.4" bad.log || { cat bad.log; fail "temperature"; }
+grep -q "grid.temperature = 40: value 40 is outside its range for test polymer.*: temperature > 61.0626703" bad.log || { cat bad.log; fail "temperature"; }
+# Issue 22: just above the divergence (a_T overflows at 54 degC) a sweep and its dry run
+# end with exit 2 naming the value, before any work (they ended in MPI_ABORT and "internal
+# error").
+for mode in --dry-run --quiet; do
+  set +e; run_ranks 2 sweep --model.material wlf.ini --grid.temperature 54,60,105 $mode --output t54.h5 2> bad.log; code=$?; set -e
+  [ "$code" = 2 ] || { cat bad.log; fail "temperature 54 ($mode): exit $code, expected 2"; }
+  grep -q "grid.temperature = 54,60,105: value 54 is outside its range" bad.log || { cat bad.log; fail "temperature 54 message"; }
+  [ ! -e t54.h5 ] && [ ! -e t54.h5.partial ] || fail "a refused sweep wrote files"
+done
 sed 's/tau_i = 0.5, 20, 600/tau_i = 0.5, 20, 20/' wlf.ini > bad.ini
 run_ranks 0 sweep --model.material bad.ini --dry-run 2> bad.log && fail "repeated tau accepted"
 test $? -ne 0

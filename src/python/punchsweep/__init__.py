@@ -22,6 +22,7 @@ E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_un
 """
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -55,12 +56,17 @@ def _option_text(value: Any) -> str:
 
 def _arguments(options: dict[str, Any]) -> list[str]:
     """Keywords as command-line arguments: name -> --name (underscores as dashes); None is
-    left out (the command's default)."""
+    left out (the command's default). A NUL character cannot be part of a command-line
+    argument, so a value holding one is refused rather than cut there."""
     args: list[str] = []
     for name, value in options.items():
         if value is None:
             continue
-        args += ["--" + name.replace("_", "-"), _option_text(value)]
+        option = "--" + name.replace("_", "-")
+        text = _option_text(value)
+        if "\x00" in text or "\x00" in option:
+            raise ValueError(f"{option} = {text!r}: a NUL character cannot be part of an option")
+        args += [option, text]
     return args
 
 
@@ -183,28 +189,66 @@ def classify(l, dh, T, pbar, s, C: float = 0.5, localization: str = "refined") -
     return Classification({k: np.asarray(v).reshape(shape) for k, v in raw.items()})
 
 
+class NotAMapError(ValueError):
+    """open_map's error for a file that is not a (readable) punchsweep map."""
+
+
+def _decoded_flags(variable, meanings: list[str], codes: list[int]):
+    """A flag variable's codes as their meanings, decoded only where it is read (a lazily
+    indexed array): decoding a whole map at once took about 260 bytes a point."""
+    from xarray.backends import BackendArray
+    from xarray.core import indexing
+
+    table = np.array([f"code_{c - 128}" for c in range(256)], dtype=object)
+    for code, meaning in zip(codes, meanings):
+        table[int(code) + 128] = meaning
+    width = max(len(str(t)) for t in table)
+    table = table.astype(f"<U{width}")
+
+    class Decoded(BackendArray):
+        shape = variable.shape
+        dtype = table.dtype
+
+        def __getitem__(self, key):
+            return indexing.explicit_indexing_adapter(key, self.shape, indexing.IndexingSupport.OUTER, self._read)
+
+        def _read(self, key):
+            raw = np.asarray(variable[key].values, dtype=np.int16)
+            return table[raw + 128]
+
+    return indexing.LazilyIndexedArray(Decoded())
+
+
 def open_map(path) -> "xarray.Dataset":  # noqa: F821
     """A regime map (from `punchsweep sweep`) as an xarray.Dataset: every flag variable
     (regime, valid, bem_regime, answer_regime, ...) decoded to its meanings as text
     ('immediate', 'delayed', ..., 'not_computed'), its codes kept as NAME_code; every
     variable and coordinate with a `units` attribute (the scale it is measured in: R,
-    T_eps, E0/(1-nu^2), R^2 E0/(1-nu^2), or 1)."""
+    T_eps, E0/(1-nu^2), R^2 E0/(1-nu^2), or 1). Nothing is read until it is used (the
+    production map's flags would take 13 GB as text). NotAMapError (a ValueError) for a
+    file that is missing, damaged or no punchsweep map."""
     import xarray as xr
 
-    ds = xr.open_dataset(path, engine="h5netcdf")
-    ds.load()
+    text = str(path)
+    if not os.path.isfile(text):
+        raise NotAMapError(f"{text}: no such file")
+    try:
+        ds = xr.open_dataset(text, engine="h5netcdf")
+    except Exception as e:  # h5py's, h5netcdf's and xarray's errors for a file they cannot read
+        raise NotAMapError(f"{text} is not a punchsweep map (it cannot be read as HDF5/netCDF: {e})") from None
+    if "identity" not in ds.attrs or "regime" not in ds.variables:
+        ds.close()
+        raise NotAMapError(f"{text} is not a punchsweep map (no identity attribute or regime variable)")
     for name in list(ds.variables):
         attrs = ds[name].attrs
         if "flag_values" in attrs and "flag_meanings" in attrs:
             meanings = attrs["flag_meanings"]
             meanings = (meanings.decode() if isinstance(meanings, bytes) else str(meanings)).split()
             codes = [int(v) for v in np.atleast_1d(attrs["flag_values"])]
-            lookup = dict(zip(codes, meanings))
-            raw = ds[name].values
-            decoded = np.vectorize(lambda c: lookup.get(int(c), f"code_{int(c)}"), otypes=[object])(raw)
             ds[name + "_code"] = ds[name].copy()
             ds[name + "_code"].attrs["units"] = "1"
-            ds[name] = (ds[name].dims, decoded.astype(str), {**attrs, "units": "1"})
+            ds[name] = xr.Variable(ds[name].dims, _decoded_flags(ds[name].variable, meanings, codes),
+                                   {**attrs, "units": "1"})
         else:
             units = attrs.get("scaled_by", attrs.get("units", "1"))
             ds[name].attrs["units"] = units.decode() if isinstance(units, bytes) else str(units)
