@@ -23,12 +23,14 @@ fi
 
 mkdir -p "$run"
 run=$(realpath "$run")
-cp "$config" "$run/config.ini"
+# The config, and the material files it names, copied into the run folder (relative paths
+# taken from the config's own folder): the folder then runs and resumes by itself.
+"$python" "$root/jobs/record_config.py" "$config" "$run"
 {
   echo "punchsweep run: $name"
   echo "started: $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(hostname), $cores cores"
   echo "engine: $("$binary" --version)"
-  echo "config: $config (copied to config.ini)"
+  echo "config: $config (copied to config.ini, its material files to materials/)"
 } >> "$run/provenance.txt"
 
 # Root may launch MPI jobs only when it says so (containers, CI machines).
@@ -36,11 +38,10 @@ if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_RO
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
 mpirun -np "$cores" "$binary" sweep --config "$run/config.ini" --output "$run/map.h5" --resume
 
-# Pictures and the summary, from the map alone.
+# Pictures and the summary, from the map alone (the pictures fix the axes they do not show
+# at values the map has: a material map has no T).
 "$python" "$root/postprocess/summary.py" "$run/map.h5" > "$run/summary.txt"
-"$python" "$root/postprocess/regime_map.py" "$run/map.h5" --x pbar --y dh --at l=0.75 T=5 --facet s \
-  -o "$run/regime_map.png" > /dev/null
-"$python" "$root/postprocess/critical_dh.py" "$run/map.h5" --against pbar --at l=0.75 -o "$run/critical_dh.png" > /dev/null
+"$python" "$root/postprocess/run_pictures.py" "$run/map.h5" "$run" > /dev/null
 echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
 
 echo "punchsweep: map $run/map.h5"

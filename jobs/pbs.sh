@@ -22,7 +22,8 @@ export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
 if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 
 mkdir -p "$run"
-[ -f "$run/config.ini" ] || cp "$config" "$run/config.ini"
+# The config and its material files, copied once (a requeued job resumes from the copy).
+[ -f "$run/config.ini" ] || /usr/bin/python3 "$root/jobs/record_config.py" "$config" "$run"
 echo "start $(date -u +%Y-%m-%dT%H:%M:%SZ) job ${PBS_JOBID:-none} host $(hostname) ranks $ranks $("$binary" --version)" >> "$run/provenance.txt"
 
 hostfile=()

@@ -46,6 +46,22 @@ done
 grep -q "punchsweep: map $PWD/main-job/map.h5" main-job.log
 grep -q "completed: yes" main-job/summary.txt
 
+# 4b) Issue 22: the shipped material config (a material path relative to the config's own
+#     folder) into a run folder elsewhere: the map, its pictures (a material map has no T
+#     axis) and the material file recorded in the run folder; the folder resumes by itself.
+bash "$root/jobs/local.sh" "$root/sweeps/materials/nbr.ini" "$PWD/elsewhere/nbr" > nbr-job.log 2>&1 ||
+  { echo "FAIL: jobs/local.sh with sweeps/materials/nbr.ini"; cat nbr-job.log; exit 1; }
+for f in map.h5 regime_map.png critical_dh.png summary.txt config.ini materials/nbr_linder2011.ini; do
+  test -s "elsewhere/nbr/$f" || { echo "FAIL: the material job left no $f"; cat nbr-job.log; exit 1; }
+done
+cmp "$root/materials/nbr_linder2011.ini" elsewhere/nbr/materials/nbr_linder2011.ini
+bash "$root/jobs/local.sh" "$root/sweeps/materials/nbr.ini" "$PWD/elsewhere/nbr" > nbr-again.log 2>&1
+grep -q "already complete" nbr-again.log || { echo "FAIL: the material run folder did not resume"; cat nbr-again.log; exit 1; }
+SLURM_JOB_ID=6161 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/elsewhere/slurm-nbr" \
+  bash "$root/jobs/slurm.sbatch" "$root/sweeps/materials/nbr.ini" > slurm-nbr.log 2>&1 ||
+  { echo "FAIL: slurm.sbatch with sweeps/materials/nbr.ini"; cat slurm-nbr.log; exit 1; }
+test -s elsewhere/slurm-nbr/map.h5
+
 # 5) The time limit under "Slurm": USR1 to the batch script stops the sweep (exit 3), the
 #    job requeues itself, and the requeued job completes the same map as a clean run.
 cfg=$PWD/longer.ini

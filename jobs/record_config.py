@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""Copies a sweep's config into a run folder so that the folder runs, resumes and documents
+itself: RUN/config.ini, with every material file the config names ([model] material, a
+path taken from the config's own folder when relative, as the engine takes it) copied to
+RUN/materials/ and the key rewritten to those copies. A map's identity holds the materials'
+content, not their paths, so the copy resumes a map begun from the original.
+
+  jobs/record_config.py CONFIG.ini RUN_FOLDER
+
+Exit code 2, nothing written, for a config or material file that cannot be read or two
+material files of the same name (the engine labels a material axis by file name).
+"""
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+
+def fail(message: str) -> int:
+    print(f"record_config.py: error: {message}", file=sys.stderr)
+    return 2
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 2:
+        return fail("usage: record_config.py CONFIG.ini RUN_FOLDER")
+    config, run = Path(argv[0]).resolve(), Path(argv[1])
+    try:
+        lines = config.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError) as e:
+        return fail(f"cannot read the config {config}: {e}")
+    section, out, copies = "", [], {}
+    for line in lines:
+        stripped = line.strip()
+        if stripped.startswith("[") and stripped.endswith("]"):
+            section = stripped[1:-1].strip()
+        key, eq, rest = line.partition("=")
+        if section == "model" and eq and key.strip() == "material":
+            value, hash_, comment = rest.partition("#")
+            files = []
+            for item in (v.strip() for v in value.split(",")):
+                if not item:
+                    continue
+                source = Path(item).expanduser()
+                source = source if source.is_absolute() else config.parent / source
+                if not source.is_file():
+                    return fail(f"{config}: [model] material = {item}: no such file {source}")
+                name = source.name
+                if name in copies and copies[name] != source.resolve():
+                    return fail(f"{config}: two material files are named {name}")
+                copies[name] = source.resolve()
+                files.append(f"materials/{name}")
+            line = f"material = {', '.join(files)}   # copied from {value.strip()}" + (
+                f"  ({comment.strip()})" if hash_ and comment.strip() else "")
+        out.append(line)
+    run.mkdir(parents=True, exist_ok=True)
+    if copies:
+        (run / "materials").mkdir(exist_ok=True)
+        for name, source in copies.items():
+            shutil.copyfile(source, run / "materials" / name)
+    (run / "config.ini").write_text("\n".join(out) + "\n", encoding="utf-8")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""The job scripts' pictures of a run folder's map: regime_map.png (pbar across, dh up,
+a panel per s) and critical_dh.png (against pbar), for whatever axes the map has.
+
+Every axis that a picture does not show is fixed at a value that fits the map: l at 0.75 R
+and T at 5 where the map has them (the README's default picture), any other axis (a
+material's temperature, a categorical material, a ramp time) at its middle grid value (the
+first label of a categorical one), and an axis with one value at that value. What was fixed
+is printed, as regime_map.py and critical_dh.py print it.
+
+  postprocess/run_pictures.py RUN/map.h5 RUN
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import critical_dh
+import punchsweep_maps as pm
+import regime_map
+
+PREFERRED = {"l": 0.75, "T": 5.0}
+
+
+def fixed_values(ds, shown: set[str]) -> list[str]:
+    """--at items for every axis of the map with several values that is not in `shown`."""
+    items = []
+    for name in pm.axes(ds):
+        grid = pm.grid_values(ds, name)
+        if name in shown or len(grid) == 1:
+            continue
+        if pm.is_categorical(ds, name):
+            value = pm.labels(ds, name)[0]
+        elif name in PREFERRED:
+            value = PREFERRED[name]
+        else:
+            value = grid[len(grid) // 2]
+        items.append(f"{name}={value}")
+    return items
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 2:
+        raise pm.MapError("usage: run_pictures.py MAP.h5 FOLDER")
+    path, folder = argv[0], Path(argv[1])
+    with pm.open_map(path) as ds:
+        pm.require_axes(ds, ("pbar", "dh"), "run_pictures.py")
+        s_values = len(pm.grid_values(ds, "s")) if "s" in pm.axes(ds) else 1
+        facet = ["--facet", "s"] if s_values > 1 else []
+        regime_at = fixed_values(ds, {"pbar", "dh", "s"} if facet else {"pbar", "dh"})
+        chart_at = fixed_values(ds, {"pbar", "dh", critical_dh.CURVE_AXIS, critical_dh.PANEL_AXIS})
+    code = regime_map.main([path, "--x", "pbar", "--y", "dh", *(["--at", *regime_at] if regime_at else []), *facet,
+                            "-o", str(folder / "regime_map.png")])
+    if code != 0:
+        return code
+    return critical_dh.main([path, "--against", "pbar", *(["--at", *chart_at] if chart_at else []),
+                             "-o", str(folder / "critical_dh.png")])
+
+
+if __name__ == "__main__":
+    sys.exit(pm.run_cli(main, "run_pictures.py"))
