@@ -9,10 +9,55 @@
 
 namespace punchsweep::model {
 
+CreepWeightedLoad::CreepWeightedLoad(const CreepLaw& creep, double pbar0, const LoadShape& shape)
+    : creep_(creep), pbar0_(pbar0), shape_(shape) {
+  if (shape_.is_step() || shape_.segments().size() <= kDirectPieces) return;
+  std::optional<RetardationSeries> series = creep_.retardation_series();
+  if (!series) return;  // unlimited creep, a power law: the direct sums
+  auto completed = std::make_shared<CompletedPieces>();
+  const std::vector<LoadShape::Segment>& pieces = shape_.segments();
+  const std::size_t terms = series->terms.size();
+  completed->S.assign(pieces.size() * terms, 0.0);
+  double load = 0.0;
+  for (std::size_t n = 0; n < pieces.size(); ++n) {
+    const LoadShape::Segment& p = pieces[n];
+    load += p.slope * (p.t_b - p.t_a);
+    completed->ends.push_back(p.t_b);
+    completed->load.push_back(load);
+    for (std::size_t k = 0; k < terms; ++k) {
+      const double lambda = series->terms[k].lambda;
+      const double before = n == 0 ? 0.0 : std::exp(-(p.t_b - pieces[n - 1].t_b) / lambda) * completed->S[(n - 1) * terms + k];
+      completed->S[n * terms + k] = before - p.slope * std::expm1(-(p.t_b - p.t_a) / lambda);
+    }
+  }
+  completed->series = std::move(*series);
+  completed_ = std::move(completed);
+}
+
+std::size_t CreepWeightedLoad::completed_by(double t) const {
+  return static_cast<std::size_t>(std::upper_bound(completed_->ends.begin(), completed_->ends.end(), t) -
+                                  completed_->ends.begin());
+}
+
 double CreepWeightedLoad::response(double t) const {
   if (shape_.is_step()) return creep_.creep(t);
   double g = shape_.jump() > 0.0 ? shape_.jump() * creep_.creep(t) : 0.0;
-  for (const LoadShape::Segment& s : shape_.segments()) {
+  const std::vector<LoadShape::Segment>& pieces = shape_.segments();
+  std::size_t first = 0;  // the first piece not summed below
+  if (completed_) {
+    first = completed_by(t);
+    if (first > 0) {
+      const std::size_t n = first - 1;
+      const std::vector<RetardationSeries::Term>& terms = completed_->series.terms;
+      g += completed_->series.J_final * completed_->load[n];
+      const double age = t - completed_->ends[n];
+      for (std::size_t k = 0; k < terms.size(); ++k) {
+        g -= terms[k].J * terms[k].lambda * std::exp(-age / terms[k].lambda) * completed_->S[n * terms.size() + k];
+      }
+    }
+  }
+  for (std::size_t i = first; i < pieces.size(); ++i) {
+    const LoadShape::Segment& s = pieces[i];
     if (!(t > s.t_a)) break;
     g += s.slope * creep_.creep_integral(t - std::min(t, s.t_b), std::min(t, s.t_b) - s.t_a);
   }
@@ -22,7 +67,21 @@ double CreepWeightedLoad::response(double t) const {
 double CreepWeightedLoad::response_rate(double t) const {
   if (shape_.is_step()) return creep_.creep_rate(t);
   double rate = shape_.jump() > 0.0 ? shape_.jump() * creep_.creep_rate(t) : 0.0;
-  for (const LoadShape::Segment& s : shape_.segments()) {
+  const std::vector<LoadShape::Segment>& pieces = shape_.segments();
+  std::size_t first = 0;
+  if (completed_) {
+    first = completed_by(t);
+    if (first > 0) {
+      const std::size_t n = first - 1;
+      const std::vector<RetardationSeries::Term>& terms = completed_->series.terms;
+      const double age = t - completed_->ends[n];
+      for (std::size_t k = 0; k < terms.size(); ++k) {
+        rate += terms[k].J * std::exp(-age / terms[k].lambda) * completed_->S[n * terms.size() + k];
+      }
+    }
+  }
+  for (std::size_t i = first; i < pieces.size(); ++i) {
+    const LoadShape::Segment& s = pieces[i];
     if (!(t > s.t_a)) break;
     // d/dt of int_{t_a}^{min(t, t_b)} J(t - tau) dtau: J(t - t_a), less J(t - t_b) once past t_b.
     rate += s.slope * (creep_.creep(t - s.t_a) - (t > s.t_b ? creep_.creep(t - s.t_b) : 0.0));
