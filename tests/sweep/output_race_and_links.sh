@@ -7,6 +7,7 @@
 # - Links: a symbolic link at F.h5.partial, F.h5.partial.journal, F.h5 or F.h5.lock
 #   (pointing at a file, or dangling) is refused with exit 2 before anything is written:
 #   the link's target is unchanged (or still absent).
+# - A reader holding the stale .partial open does not stop --resume, nor is its file cut.
 source "$(dirname "$0")/common.sh"
 rounds=${PROBE_ROUNDS:-4}
 grid=(--grid.l 0.5,0.75,1 --grid.dh 'linspace(0.01,0.12,12)' --grid.T 2.5,5,8 --grid.pbar 'logspace(0.005,0.08,16)'
@@ -66,4 +67,36 @@ for round in $(seq "$rounds"); do
   done
 done
 echo "links: $rounds rounds of links at 4 names x (file, dangling) x (fresh, --overwrite, --resume): refused, targets untouched"
+# A reader that holds the stale .partial of a killed run open (h5py, as a user peeking at
+# it): --resume creates the map anew beside it instead of truncating it under the reader
+# (which failed with an HDF5 error and MPI_ABORT), and the reader's copy stays readable.
+for round in $(seq "$rounds"); do
+  rm -f r.h5 r.h5.*
+  # Stopped by SIGTERM (which flushes the .partial, so that it can be read).
+  "$PUNCHSWEEP" sweep "${grid[@]}" --output r.h5 --quiet > /dev/null 2>&1 & pid=$!
+  while [ ! -s r.h5.partial.journal ]; do sleep 0.02; done
+  sleep 0.3
+  kill -TERM "$pid" 2>/dev/null || true
+  wait "$pid" 2>/dev/null || true
+  if [ -e r.h5 ]; then echo "FAIL: the run finished before it could be stopped"; exit 1; fi
+  /usr/bin/python3 - <<'PY' > reader.log 2>&1 & reader=$!
+import time, h5py
+with h5py.File("r.h5.partial", "r") as f:
+    before = sorted(f.keys()), dict(f.attrs)["identity"]
+    print("open", flush=True)
+    time.sleep(4)
+    after = sorted(f.keys()), dict(f.attrs)["identity"]
+    assert before == after, "the reader's file changed under it"
+    print("read", len(after[0]), "variables", flush=True)
+PY
+  while ! grep -q open reader.log; do
+    kill -0 "$reader" 2>/dev/null || { echo "FAIL: the reader could not open the .partial"; cat reader.log; exit 1; }
+    sleep 0.05
+  done
+  "$PUNCHSWEEP" sweep "${grid[@]}" --output r.h5 --resume --quiet || { echo "FAIL: --resume beside a reader"; exit 1; }
+  wait "$reader" || { echo "FAIL: the reader's copy could not be read"; cat reader.log; exit 1; }
+  grep -q "^read" reader.log || { echo "FAIL: the reader did not read"; cat reader.log; exit 1; }
+  same_maps clean.h5 r.h5 || { echo "FAIL: the map resumed beside a reader differs"; exit 1; }
+done
+echo "reader: $rounds rounds of --resume while a reader holds the stale .partial: map equal, reader unharmed"
 echo "PASS: one run per output, and no file written through a link"
