@@ -16,7 +16,7 @@ for attempt in 1 2 3; do
     kill -0 "$pid" 2>/dev/null || { echo "FAIL: the run ended before it could be signalled"; cat stop.log; exit 1; }
     sleep 0.05
   done
-  sleep 1.5
+  sleep 0.5
   start=$(date +%s.%N)
   kill -TERM "$pid"
   set +e; wait "$pid"; code=$?; set -e
