@@ -62,9 +62,10 @@ void solve(ReferenceRun* run) {
 
 }  // namespace
 
-ReferenceRun evaluate_reference_command(const std::vector<std::string>& args) {
+ReferenceRun evaluate_reference_command(const std::vector<std::string>& args, const model::StopRequest& stop) {
   const PointMaterial material = find_point_material(args);
   ReferenceRun run = read_reference(parse_command(args, reference_options(material), "reference"), material);
+  run.options.stop = stop;
   solve(&run);
   return run;
 }

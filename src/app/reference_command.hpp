@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/command_options.hpp"
+#include "model/stop_request.hpp"
 #include "reference/reference_point.hpp"
 
 namespace punchsweep::app {
@@ -24,7 +25,8 @@ struct ReferenceRun {
 
 /// The point of `punchsweep reference ARGS` (without --help and --format), solved with the
 /// command's options, checks and FFTW plans, so the numbers are the command's bit for bit.
-/// Throws UsageError (its message is the command's) for bad input.
-ReferenceRun evaluate_reference_command(const std::vector<std::string>& args);
+/// Throws UsageError (its message is the command's) for bad input, and model::Stopped when
+/// `stop` is requested between the BEM's time steps.
+ReferenceRun evaluate_reference_command(const std::vector<std::string>& args, const model::StopRequest& stop = {});
 
 }  // namespace punchsweep::app

@@ -33,6 +33,7 @@
 #include "model/parameters.hpp"
 #include "model/point_evaluation.hpp"
 #include "model/regime.hpp"
+#include "model/stop_request.hpp"
 #include "model/validity.hpp"
 
 namespace py = pybind11;
@@ -79,9 +80,25 @@ py::dict point_command(const std::vector<std::string>& args) {
 
 /// `punchsweep reference --format json`'s keys, with the model's point keys it has.
 py::dict reference_command(const std::vector<std::string>& args) {
-  py::gil_scoped_release release;
-  const app::ReferenceRun run = app::evaluate_reference_command(args);
-  py::gil_scoped_acquire acquire;
+  // Ctrl-C between the BEM's time steps: every 0.1 s the solve takes the GIL and asks the
+  // interpreter (this is its main thread); the KeyboardInterrupt it sets is raised below.
+  auto last_check = std::chrono::steady_clock::now();
+  const model::StopRequest interrupted([&last_check] {
+    if (std::chrono::steady_clock::now() - last_check < std::chrono::milliseconds(100)) return false;
+    last_check = std::chrono::steady_clock::now();
+    py::gil_scoped_acquire acquire;
+    return PyErr_CheckSignals() != 0;
+  });
+  std::optional<app::ReferenceRun> solved;
+  {
+    py::gil_scoped_release release;
+    try {
+      solved.emplace(app::evaluate_reference_command(args, interrupted));
+    } catch (const model::Stopped&) {
+    }
+  }
+  if (!solved) throw py::error_already_set();
+  const app::ReferenceRun& run = *solved;
   const reference::ReferenceResult& r = run.result;
   py::dict out;
   out["regime"] = std::string(model::regime_name(r.regime));

@@ -209,6 +209,33 @@ def test_open_map_decodes_a_real_map(tmp_path):
     assert np.array_equal(c["regime"], codes[:, :, 0, :, 0])
 
 
+def test_reference_is_interrupted_by_ctrl_c():
+    """Ctrl-C (SIGINT) stops a long reference() between its BEM time steps with
+    KeyboardInterrupt: a point at N = 1024 (each solve about 0.4 s, the whole point tens of
+    seconds) is signalled 2 s in and must be back within 3 s."""
+    script = (
+        "import punchsweep, sys\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    punchsweep.reference(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2, times=[0, 5, 50], bem_grid=1024)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True)\n"
+        "    sys.exit(0)\n"
+        "print('finished', flush=True)\n"
+    )
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, env=dict(os.environ))
+    assert proc.stdout.readline().strip() == "started"
+    import signal
+    import time
+    time.sleep(2.0)
+    sent = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=120)
+    took = time.monotonic() - sent
+    assert out.strip() == "interrupted", out
+    assert took < 3.0, f"reference took {took:.2f} s to stop after SIGINT"
+
+
 def test_open_map_decodes_lazily_and_slices_equal_the_whole(tmp_path):
     """Issue 22: open_map decoded every flag at once (about 260 bytes a point: 13 GB for the
     production map); now a flag is decoded where it is read, so opening a map
