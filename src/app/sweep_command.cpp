@@ -285,7 +285,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     std::string refusal;
     if (root) {
       const run::OutputPaths paths(config.output);
-      refusal = run::output_name_problem(paths);
+      refusal = run::output_folder_problem(paths);
       if (refusal.empty()) {
         if (auto taken = run::OutputLock::take(paths, command_line(args), &refusal)) lock.emplace(std::move(*taken));
       }

@@ -9,7 +9,6 @@
 #include <chrono>
 #include <cstring>
 #include <ctime>
-#include <filesystem>
 #include <thread>
 
 namespace punchsweep::run {
@@ -49,19 +48,10 @@ std::optional<OutputLock> OutputLock::take(const OutputPaths& paths, const std::
   for (int attempt = 0; attempt < 8; ++attempt) {
     const int raw = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0644);
     if (raw < 0) {
-      const int error = errno;
-      const std::filesystem::path file(paths.final_path);
-      const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-      std::error_code ec;
-      if (error == ELOOP) {
-        *refusal = name + path + " is a symbolic link; punchsweep writes no file through a link: remove it or "
-                                 "choose another file name";
-      } else if (!std::filesystem::is_directory(dir, ec)) {
-        *refusal = name + "the folder " + dir.string() + " does not exist";
-      } else {
-        *refusal = name + "the folder " + dir.string() + " is not writable (the lock file " + path +
-                   " cannot be created: " + std::strerror(error) + ")";
-      }
+      // (A missing or read-only folder is run::output_folder_problem's to say, asked first.)
+      *refusal = name + (errno == ELOOP ? path + " is a symbolic link; punchsweep writes no file through a link: "
+                                                 "remove it or choose another file name"
+                                           : "cannot create the lock file " + path + ": " + std::strerror(errno));
       return std::nullopt;
     }
     io::FileDescriptor fd(raw);

@@ -17,9 +17,13 @@ namespace fs = std::filesystem;
 
 namespace punchsweep::run {
 
-std::string output_name_problem(const OutputPaths& paths) {
+std::string output_folder_problem(const OutputPaths& paths) {
   const fs::path final_path(paths.final_path);
   const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    return "output.file = " + paths.final_path + ": the folder " + dir.string() + " does not exist";
+  }
   const long limit = ::pathconf(dir.c_str(), _PC_NAME_MAX);
   const std::size_t most = limit > 0 ? static_cast<std::size_t>(limit) : 255;
   for (const std::string& path : {paths.journal, paths.partial, paths.lock, paths.final_path}) {
@@ -31,16 +35,6 @@ std::string output_name_problem(const OutputPaths& paths) {
              std::to_string(most - 16) + " for the map's own name)";
     }
   }
-  return {};
-}
-
-std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start) {
-  const fs::path final_path(paths.final_path);
-  const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    return "output.file = " + paths.final_path + ": the folder " + dir.string() + " does not exist";
-  }
   // Create-and-remove a probe: access() says yes to root even where nothing can be created.
   const std::string probe = (dir / (".punchsweep-probe-" + std::to_string(::getpid()))).string();
   const int probe_fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
@@ -49,6 +43,13 @@ std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths
   }
   ::close(probe_fd);
   ::unlink(probe.c_str());
+  return {};
+}
+
+std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths, Start* start) {
+  if (std::string problem = output_folder_problem(paths); !problem.empty()) return problem;
+  const fs::path final_path(paths.final_path);
+  std::error_code ec;
   // HDF5 holds a lock on a file it writes: if the .partial is locked, a sweep into this map
   // is still running (perhaps an orphan of a killed job).
   if (const int fd = ::open(paths.partial.c_str(), O_RDONLY); fd >= 0) {

@@ -17,17 +17,19 @@ struct OutputPaths {
       : final_path(file), partial(file + ".partial"), journal(file + ".partial.journal"), lock(file + ".lock") {}
 };
 
-/// Whether the map's file names fit the file system: "" or the refusal naming the longest
-/// (F.h5.partial.journal) and the limit (NAME_MAX of the output's folder, usually 255
-/// bytes). Checked first, before the lock file is created.
-std::string output_name_problem(const OutputPaths& paths);
+/// Whether the map can be written where it is to go: "" or the refusal naming the file
+/// and the problem: the output's folder does not exist, cannot be written (a probe file is
+/// created and removed), or a name of the map's with its suffix (F.h5.partial.journal the
+/// longest) would exceed the folder's NAME_MAX (usually 255 bytes). The sweep asks it
+/// before it creates its lock file; preflight asks it first.
+std::string output_folder_problem(const OutputPaths& paths);
 
 /// What a run decided before any work: start fresh, resume from the journal, or nothing
 /// to do (the map is complete and --resume was given).
 enum class Start { fresh, resume, already_complete };
 
 /// The resume policy, checked before anything is created (and under the run's OutputLock):
-/// the output's folder must exist and be writable, the map's paths must not be symbolic
+/// output_folder_problem, then the map's paths must not be symbolic
 /// links, folders or other non-regular files, and no other sweep may be writing its
 /// .partial (HDF5's lock, for a sweep of an engine before the lock file). Then: --overwrite starts fresh;
 /// --resume resumes a journal whose configuration identity equals this run's (else
