@@ -45,30 +45,6 @@ std::string octal_mode(mode_t mode) {
   return text;
 }
 
-bool read_exactly(int fd, void* out, std::size_t size) {
-  auto* p = static_cast<char*>(out);
-  while (size > 0) {
-    const ssize_t n = ::read(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-bool write_exactly(int fd, const void* data, std::size_t size) {
-  const auto* p = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t n = ::write(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 std::string lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;
@@ -118,16 +94,16 @@ std::vector<double> read_tables(const std::filesystem::path& file) {
   if (::fstat(fd.get(), &st) != 0 || !S_ISREG(st.st_mode) || !owned_and_private(st)) return {};
   char magic[8];
   std::uint64_t n = 0;
-  if (!read_exactly(fd.get(), magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 ||
-      !read_exactly(fd.get(), &n, sizeof n) || n > kMaxEntries ||
+  if (!io::read_fully(fd.get(), magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0 ||
+      !io::read_fully(fd.get(), &n, sizeof n) || n > kMaxEntries ||
       static_cast<std::uint64_t>(st.st_size) != kFixedBytes + n * sizeof(double)) {
     return {};
   }
   std::vector<double> values(n);
   std::uint64_t hash = 0;
   char extra = 0;
-  if (!read_exactly(fd.get(), values.data(), n * sizeof(double)) || !read_exactly(fd.get(), &hash, sizeof hash) ||
-      read_exactly(fd.get(), &extra, 1) || hash != fnv1a(values)) {
+  if (!io::read_fully(fd.get(), values.data(), n * sizeof(double)) || !io::read_fully(fd.get(), &hash, sizeof hash) ||
+      io::read_fully(fd.get(), &extra, 1) || hash != fnv1a(values)) {
     return {};
   }
   return values;
@@ -151,8 +127,8 @@ void write_tables(const std::filesystem::path& file, const std::vector<double>& 
     const io::FileDescriptor fd(raw);
     const std::uint64_t n = tables.size();
     const std::uint64_t hash = fnv1a(tables);
-    written = write_exactly(fd.get(), kMagic, sizeof kMagic) && write_exactly(fd.get(), &n, sizeof n) &&
-              write_exactly(fd.get(), tables.data(), n * sizeof(double)) && write_exactly(fd.get(), &hash, sizeof hash);
+    written = io::write_fully(fd.get(), kMagic, sizeof kMagic) && io::write_fully(fd.get(), &n, sizeof n) &&
+              io::write_fully(fd.get(), tables.data(), n * sizeof(double)) && io::write_fully(fd.get(), &hash, sizeof hash);
   }
   if (!written || ::rename(temporary.c_str(), file.c_str()) != 0) ::unlink(temporary.c_str());
 }

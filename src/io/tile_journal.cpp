@@ -51,17 +51,8 @@ bool read_at(int fd, void* out, std::size_t size, std::uint64_t offset, const st
   return true;
 }
 
-/// Writes all of `bytes`, looping over partial writes and EINTR.
 void write_all(int fd, const std::byte* bytes, std::size_t size, const std::string& path) {
-  while (size > 0) {
-    const ssize_t n = ::write(fd, bytes, size);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw system_error("write failed", path);
-    }
-    bytes += n;
-    size -= static_cast<std::size_t>(n);
-  }
+  if (!write_fully(fd, bytes, size)) throw system_error("write failed", path);
 }
 
 /// Never through a symbolic link (O_NOFOLLOW): a link planted at the journal's name would
