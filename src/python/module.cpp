@@ -41,6 +41,24 @@ using namespace punchsweep;
 
 namespace {
 
+/// Whether Ctrl-C was pressed, for work that runs without the GIL in the interpreter's main
+/// thread: Python's handler only sets a flag that the interpreter looks at, so at most every
+/// 0.1 s this takes the GIL and asks (PyErr_CheckSignals); once it says yes, the
+/// KeyboardInterrupt is set for py::error_already_set to raise (made with the GIL held).
+class CtrlC {
+ public:
+  bool pressed() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(100)) return false;
+    last_ = now;
+    py::gil_scoped_acquire acquire;
+    return PyErr_CheckSignals() != 0;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 /// A number as the JSON output has it: None where the JSON writes null (not computed).
 py::object json_value(double v) { return std::isfinite(v) ? py::object(py::float_(v)) : py::none(); }
 
@@ -80,15 +98,9 @@ py::dict point_command(const std::vector<std::string>& args) {
 
 /// `punchsweep reference --format json`'s keys, with the model's point keys it has.
 py::dict reference_command(const std::vector<std::string>& args) {
-  // Ctrl-C between the BEM's time steps: every 0.1 s the solve takes the GIL and asks the
-  // interpreter (this is its main thread); the KeyboardInterrupt it sets is raised below.
-  auto last_check = std::chrono::steady_clock::now();
-  const model::StopRequest interrupted([&last_check] {
-    if (std::chrono::steady_clock::now() - last_check < std::chrono::milliseconds(100)) return false;
-    last_check = std::chrono::steady_clock::now();
-    py::gil_scoped_acquire acquire;
-    return PyErr_CheckSignals() != 0;
-  });
+  // Ctrl-C between the BEM's time steps; the KeyboardInterrupt it sets is raised below.
+  CtrlC ctrl_c;
+  const model::StopRequest interrupted([&ctrl_c] { return ctrl_c.pressed(); });
   std::optional<app::ReferenceRun> solved;
   {
     py::gil_scoped_release release;
@@ -231,14 +243,12 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
     const bool share_elastic = base.localization.is_paper();
     std::unordered_map<Key<4>, std::optional<model::ElasticTwoLevel>, KeyHash> elastic_cache;
     constexpr std::size_t kElasticCacheLimit = 1 << 20;
-    // Ctrl-C: Python's handler only sets a flag that the interpreter looks at; every 0.1 s
-    // (a point takes at most a curve's budgeted build) the loop takes the GIL and asks.
-    auto last_check = std::chrono::steady_clock::now();
+    // Ctrl-C, asked every 16 points (a point takes at most a curve's budgeted build).
+    CtrlC ctrl_c;
     for (py::ssize_t i = 0; i < n; ++i) {
-      if ((i & 15) == 0 && std::chrono::steady_clock::now() - last_check > std::chrono::milliseconds(100)) {
-        last_check = std::chrono::steady_clock::now();
-        py::gil_scoped_acquire acquire;
-        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if ((i & 15) == 0 && ctrl_c.pressed()) {
+        py::gil_scoped_acquire acquire;  // error_already_set takes the error under the GIL
+        throw py::error_already_set();
       }
       model::ContactProblem problem = base;
       problem.l = L[i];
