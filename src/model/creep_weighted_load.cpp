@@ -34,29 +34,29 @@ CreepWeightedLoad::CreepWeightedLoad(const CreepLaw& creep, double pbar0, const 
   completed_ = std::move(completed);
 }
 
-std::size_t CreepWeightedLoad::completed_by(double t) const {
-  return static_cast<std::size_t>(std::upper_bound(completed_->ends.begin(), completed_->ends.end(), t) -
-                                  completed_->ends.begin());
+std::size_t CreepWeightedLoad::add_completed(double t, double* g, double* rate) const {
+  if (!completed_) return 0;
+  const auto pieces = static_cast<std::size_t>(
+      std::upper_bound(completed_->ends.begin(), completed_->ends.end(), t) - completed_->ends.begin());
+  if (pieces == 0) return 0;
+  const std::size_t n = pieces - 1;
+  const std::vector<RetardationSeries::Term>& terms = completed_->series.terms;
+  const double age = t - completed_->ends[n];
+  if (g != nullptr) *g += completed_->series.J_final * completed_->load[n];
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    const double decay = std::exp(-age / terms[k].lambda);
+    const double S = completed_->S[n * terms.size() + k];
+    if (g != nullptr) *g -= terms[k].J * terms[k].lambda * decay * S;
+    if (rate != nullptr) *rate += terms[k].J * decay * S;
+  }
+  return pieces;
 }
 
 double CreepWeightedLoad::response(double t) const {
   if (shape_.is_step()) return creep_.creep(t);
   double g = shape_.jump() > 0.0 ? shape_.jump() * creep_.creep(t) : 0.0;
   const std::vector<LoadShape::Segment>& pieces = shape_.segments();
-  std::size_t first = 0;  // the first piece not summed below
-  if (completed_) {
-    first = completed_by(t);
-    if (first > 0) {
-      const std::size_t n = first - 1;
-      const std::vector<RetardationSeries::Term>& terms = completed_->series.terms;
-      g += completed_->series.J_final * completed_->load[n];
-      const double age = t - completed_->ends[n];
-      for (std::size_t k = 0; k < terms.size(); ++k) {
-        g -= terms[k].J * terms[k].lambda * std::exp(-age / terms[k].lambda) * completed_->S[n * terms.size() + k];
-      }
-    }
-  }
-  for (std::size_t i = first; i < pieces.size(); ++i) {
+  for (std::size_t i = add_completed(t, &g, nullptr); i < pieces.size(); ++i) {
     const LoadShape::Segment& s = pieces[i];
     if (!(t > s.t_a)) break;
     g += s.slope * creep_.creep_integral(t - std::min(t, s.t_b), std::min(t, s.t_b) - s.t_a);
@@ -68,19 +68,7 @@ double CreepWeightedLoad::response_rate(double t) const {
   if (shape_.is_step()) return creep_.creep_rate(t);
   double rate = shape_.jump() > 0.0 ? shape_.jump() * creep_.creep_rate(t) : 0.0;
   const std::vector<LoadShape::Segment>& pieces = shape_.segments();
-  std::size_t first = 0;
-  if (completed_) {
-    first = completed_by(t);
-    if (first > 0) {
-      const std::size_t n = first - 1;
-      const std::vector<RetardationSeries::Term>& terms = completed_->series.terms;
-      const double age = t - completed_->ends[n];
-      for (std::size_t k = 0; k < terms.size(); ++k) {
-        rate += terms[k].J * std::exp(-age / terms[k].lambda) * completed_->S[n * terms.size() + k];
-      }
-    }
-  }
-  for (std::size_t i = first; i < pieces.size(); ++i) {
+  for (std::size_t i = add_completed(t, nullptr, &rate); i < pieces.size(); ++i) {
     const LoadShape::Segment& s = pieces[i];
     if (!(t > s.t_a)) break;
     // d/dt of int_{t_a}^{min(t, t_b)} J(t - tau) dtau: J(t - t_a), less J(t - t_b) once past t_b.

@@ -78,8 +78,10 @@ class CreepWeightedLoad {
   };
   /// Up to this many pieces (a ramp has one) the sums over the pieces are taken directly.
   static constexpr std::size_t kDirectPieces = 4;
-  /// The number of pieces completed by t (their ends <= t), and the piece t lies in.
-  std::size_t completed_by(double t) const;
+  /// Adds what the pieces completed by t (their ends <= t) contribute to *g (g(t)) and to
+  /// *rate (g'(t)), either may be null, and returns how many they are (0 without
+  /// CompletedPieces: the direct sums then start from piece 0).
+  std::size_t add_completed(double t, double* g, double* rate) const;
 
   const CreepLaw& creep_;
   double pbar0_;
