@@ -19,7 +19,8 @@ then one header line and one row per group, with the columns
                         points per regime (the flag_meanings of `regime`, in its order)
   fraction_immediate, fraction_delayed, fraction_never, fraction_not_computed
                         the same divided by points
-  valid, same_level_overlap, cross_level_overlap, no_solution, inaccurate
+  valid, same_level_overlap, cross_level_overlap, no_solution, inaccurate, outside_table,
+  unloading
                         points per validity (the flag_meanings of `valid` but not_computed)
   t_star_min, t_star_median, t_star_max
                         over the delayed points, in T_eps (empty when there are none)

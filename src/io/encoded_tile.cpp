@@ -12,8 +12,8 @@ namespace {
 
 constexpr std::uint32_t kMagic = 0x54455350;  // "PSET" read as little-endian bytes
 // 2: BEM reference counts in the header; 3: chunks in map::kQuantities order; 4: five
-// validity counts (code 4, inaccurate).
-constexpr std::uint32_t kVersion = 4;
+// validity counts (code 4, inaccurate); 5: seven (outside_table, unloading: the periodic model).
+constexpr std::uint32_t kVersion = 5;
 constexpr std::size_t kHeaderSize = 2 * sizeof(std::uint32_t) +
                                     (2 + std::tuple_size_v<decltype(TileSummary::regimes)> +
                                      std::tuple_size_v<decltype(TileSummary::validity)> +

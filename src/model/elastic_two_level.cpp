@@ -151,10 +151,13 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
 }
 
 ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide,
-                              const ShellsBranch* branch) {
+                              const TwoLevelBranch* branch) {
   if (problem.localization.is_paper()) return solve_elastic_two_level(problem, E, guide);
-  std::optional<ShellsBranch> own;
-  if (branch == nullptr) branch = &own.emplace(problem, touchdown(problem));
+  std::unique_ptr<const TwoLevelBranch> own;
+  if (branch == nullptr) {
+    own = make_branch(problem, touchdown(problem));
+    branch = own.get();
+  }
   ElasticTwoLevel out;
   const double X = problem.pbar0 / E;
   out.level2_touches = branch->X_star() <= X;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -17,6 +18,9 @@ struct Localization {
   /// Neighbours spread over their own spots (the m = 0 average of their pressure about
   /// the punch); false: point loads at their distances, the paper's choice.
   bool distributed = false;
+  /// "periodic": no localization at all; the elastic state of the whole periodic cell, from
+  /// its tables (docs/model.md, section 14). shells and distributed are then not read.
+  bool periodic = false;
 
   /// Distributed neighbours count as merged spots within this share of touching: the
   /// family needs separate spots for its ring averages (which cost ever more quadrature as
@@ -24,7 +28,10 @@ struct Localization {
   /// keep 2 a_i < kMergeMargin l and a1 + a2 < kMergeMargin l/sqrt(2), and the validity
   /// rules apply with these limits. 1 for point loads and the paper's model.
   static constexpr double kMergeMargin = 0.98;
-  double merge_margin() const { return distributed ? kMergeMargin : 1.0; }
+  /// The periodic model has no such limit: merged spots are part of its solution.
+  double merge_margin() const {
+    return periodic ? std::numeric_limits<double>::infinity() : distributed ? kMergeMargin : 1.0;
+  }
 
   /// The most shells a model may keep.
   static constexpr int kMaxShells = 1000;
@@ -33,12 +40,12 @@ struct Localization {
   static constexpr int kRefinedShells = 200;
 
   /// The spelling "paper": the engine's own eqs 9.5/9.10 and 9.12-9.19.
-  bool is_paper() const { return shells == 2 && !distributed; }
-  /// "paper", "shells:D" (distributed) or "point-shells:D".
+  bool is_paper() const { return shells == 2 && !distributed && !periodic; }
+  /// "paper", "periodic", "shells:D" (distributed) or "point-shells:D".
   std::string spelling() const;
 };
 
-/// Parses "paper", "refined" (= shells:kRefinedShells), "shells:D" (D distances of
+/// Parses "paper", "periodic", "refined" (= shells:kRefinedShells), "shells:D" (D distances of
 /// distributed neighbours) or "point-shells:D" (of point loads), 1 <= D <= kMaxShells.
 /// Throws std::invalid_argument naming the valid forms.
 Localization parse_localization(std::string_view text);

@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "model/lattice.hpp"
+#include "model/periodic_model.hpp"
+#include "model/shells_branch.hpp"
 #include "model/single_level_phase.hpp"
 
 namespace punchsweep::model {
@@ -56,6 +58,18 @@ bool radii_ordered(double a1, double a2) { return a2 >= 0.0 && a2 <= a1; }
 
 double area_fraction(double a1, double a2, double l) {
   return std::numbers::pi * (a1 * a1 + a2 * a2) / (l * l);
+}
+
+/// The periodic model's own rules (docs/model.md, section 14): its two-level states must lie
+/// in its tables, and the contact must not recede along the point's loads (each node's
+/// elastic pressure grows with X, the tables' record). They replace any other flag: the
+/// model has no other limit (merged spots are part of its solution).
+void flag_periodic(PointSummary& out, const PeriodicBranch& branch, double X_inf) {
+  if (out.regime != Regime::never && !branch.covered()) {
+    flag(out, {Validity::outside_table, kNaN, kNaN}, out.t_start);
+  } else if (!branch.pressure_monotone(0.0, X_inf)) {
+    flag(out, {Validity::unloading, kNaN, kNaN}, 0.0);
+  }
 }
 
 }  // namespace
@@ -128,6 +142,16 @@ std::string PointSummary::reason(std::string_view time_unit) const {
           break;
       }
       break;
+    case Validity::outside_table:
+      out << "the periodic model's tables do not reach this point's two-level states: dh / (C l^s) is above the "
+             "tables' top, 0.97 (1/sqrt(2))^s, where the level-2 spot is a sliver of the cell (the regime and t* "
+             "are exact; use --localization refined or the reference for the rest)";
+      break;
+    case Validity::unloading:
+      out << "the contact may recede along this point's loads (an elastic pressure of the cell falls as X grows, "
+             "or a level's load turns negative " << when(invalid_at) << "): the periodic model needs a contact set "
+             "that only grows; the time-stepping `punchsweep reference` answers such points";
+      break;
     case Validity::valid: break;
   }
   if (first_seen < invalid_at) out << "; already broken " << when(first_seen);
@@ -191,7 +215,8 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
     // caller samples: the long-term state is the same function of the point in a regime map
     // and in `punchsweep point`.
     TwoLevelSolve r{out.start, false};
-    if (out.start_ok && std::isfinite(X_inf)) {
+    const bool periodic = problem.localization.periodic;
+    if (out.start_ok && (std::isfinite(X_inf) || periodic)) {
       if (problem.localization.is_paper()) {
         const TwoLevelSystem system(problem, out.radii);
         if (const std::optional<TwoLevelState> guess = parts.guide->guess(X_inf, out.radii)) {
@@ -217,7 +242,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
       flag(out, stopped(out.start), out.t_start);
     } else if (at_start.code != Validity::valid) {
       flag(out, at_start, out.t_start);
-    } else if (!std::isfinite(X_inf)) {
+    } else if (!std::isfinite(X_inf) && !periodic) {
       // Unlimited creep: X grows without bound, and with it the spots, until they merge.
       flag(out, {Validity::same_level_overlap, kInf, l}, kInf);
     } else if (!r.converged) {
@@ -228,6 +253,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
     }
   }
   out.area_fraction_inf = area_fraction(out.a1_inf, out.a2_inf, l);
+  if (problem.localization.periodic) flag_periodic(out, static_cast<const PeriodicBranch&>(*parts.branch), X_inf);
   // Whatever the flags say, no number that is not finite is ever called valid.
   if (out.valid()) {
     const bool finite = std::isfinite(out.h_0) && (std::isfinite(out.h_inf) || !std::isfinite(X_inf)) &&
@@ -243,7 +269,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 }
 
 ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide,
-                                    const ShellsBranch* branch) {
+                                    const TwoLevelBranch* branch) {
   if (problem.loading.is_step()) return solve_elastic(problem, 1.0 / creep.creep_initial(), guide, branch);
   ContactProblem at_once = problem;
   at_once.pbar0 = problem.pbar0 * problem.loading.jump();
@@ -257,7 +283,7 @@ DhParts dh_parts(const ContactProblem& problem) {
   if (problem.localization.is_paper()) {
     parts.guide = std::make_shared<const LongTermGuide>(problem);
   } else {
-    parts.branch = std::make_shared<const ShellsBranch>(problem, parts.touchdown);
+    parts.branch = make_branch(problem, parts.touchdown);
   }
   return parts;
 }
@@ -434,6 +460,8 @@ PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep
         flag_inaccurate(out, PointSummary::Invariant::loads_sum, sum, nominal_load, snap.t);
       } else if (!radii_ordered(snap.a1, snap.a2)) {
         flag_inaccurate(out, PointSummary::Invariant::radii_order, snap.a2, snap.a1, snap.t);
+      } else if (problem.localization.periodic && (snap.P1 < 0.0 || snap.P2 < 0.0)) {
+        flag(out, {Validity::unloading, std::min(snap.P1, snap.P2), 0.0}, snap.t);
       }
     }
     // The summary decided validity; a snapshot only tells how early a break is visible.
@@ -448,13 +476,13 @@ PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep
 }  // namespace
 
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep, const EvaluationOptions& options,
-                           const PointSummary& summary, const ShellsBranch* branch) {
+                           const PointSummary& summary, const TwoLevelBranch* branch) {
   return visit_single_level(problem, [&](const auto& single) {
     if (problem.localization.is_paper()) {
       return evaluate_series(problem, creep, options, summary, TwoLevelSystem(problem, summary.radii), single);
     }
     if (branch != nullptr) return evaluate_series(problem, creep, options, summary, *branch, single);
-    return evaluate_series(problem, creep, options, summary, ShellsBranch(problem, touchdown(problem)), single);
+    return evaluate_series(problem, creep, options, summary, *make_branch(problem, touchdown(problem)), single);
   });
 }
 

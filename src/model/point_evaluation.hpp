@@ -12,7 +12,7 @@
 #include "model/load_history.hpp"
 #include "model/long_term_guide.hpp"
 #include "model/regime.hpp"
-#include "model/shells_branch.hpp"
+#include "model/two_level_branch.hpp"
 #include "model/two_level.hpp"
 #include "model/validity.hpp"
 
@@ -105,7 +105,8 @@ struct SummaryParts {
   /// solve_elastic_start(), per (l, s, C, dh, pbar); required when classification.elastic_start
   const ElasticTwoLevel* elastic = nullptr;
   const LongTermGuide* guide = nullptr;      ///< per (l, s, C, dh); required under the paper's localization
-  const ShellsBranch* branch = nullptr;      ///< per (l, s, C, dh); required under the family's
+  /// per (l, s, C, dh); required under the family's and the periodic model
+  const TwoLevelBranch* branch = nullptr;
 };
 
 /// The single-level phase at creep-weighted load X (eq 9.5): the level-1 radius a1(X) and
@@ -124,11 +125,11 @@ void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, dou
 
 /// What a point's summary needs that depends only on (l, s, C, dh) and the localization:
 /// its touchdown, and its long-term guide (the paper's model) or its two-level branch (the
-/// family's). A sweep or a batch of points builds it once per such subset.
+/// family's, the periodic model's). A sweep or a batch of points builds it once per such subset.
 struct DhParts {
   Touchdown touchdown;
   std::shared_ptr<const LongTermGuide> guide;
-  std::shared_ptr<const ShellsBranch> branch;
+  std::shared_ptr<const TwoLevelBranch> branch;
 };
 DhParts dh_parts(const ContactProblem& problem);  ///< pbar0 and the loading are not read
 
@@ -151,7 +152,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
 /// pressure applied at once, pbar(0+) = pbar0 phi(0+). `guide` (the paper's) and `branch`
 /// (the family's; built here if null) may be null.
 ElasticTwoLevel solve_elastic_start(const ContactProblem& problem, const CreepLaw& creep, const LongTermGuide* guide,
-                                    const ShellsBranch* branch = nullptr);
+                                    const TwoLevelBranch* branch = nullptr);
 
 /// The summary from its parts (`elastic` must be set when classification.elastic_start).
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
@@ -172,6 +173,6 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
 /// localization of the family its two-level branch (built here if null).
 PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options, const PointSummary& summary,
-                           const ShellsBranch* branch = nullptr);
+                           const TwoLevelBranch* branch = nullptr);
 
 }  // namespace punchsweep::model

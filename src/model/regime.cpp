@@ -18,7 +18,13 @@ std::string_view regime_name(Regime regime) {
 }
 
 Touchdown touchdown(const ContactProblem& problem) {
-  return visit_single_level(problem, [&](const auto& single) { return touchdown(single, problem.dh); });
+  return visit_single_level(problem, [&](const auto& single) {
+    if constexpr (requires { single.touchdown(problem.dh); }) {
+      return single.touchdown(problem.dh);  // the periodic tables: in X directly
+    } else {
+      return touchdown(single, problem.dh);
+    }
+  });
 }
 
 Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {

@@ -6,6 +6,7 @@
 
 #include "model/contact_problem.hpp"
 #include "model/regime.hpp"
+#include "model/two_level_branch.hpp"
 #include "model/two_level.hpp"
 #include "model/two_level_shells.hpp"
 
@@ -27,7 +28,7 @@ namespace punchsweep::model {
 /// pure function of (l, s, C, dh, localization): a sweep and `punchsweep point` read the
 /// same bits.
 /// Units: lengths in R, X in E0*, Q in R^2 E0*.
-class ShellsBranch {
+class ShellsBranch final : public TwoLevelBranch {
  public:
   /// Agreement of the interpolant with the Newton roots (relative, see above).
   static constexpr double kTolerance = 1e-10;
@@ -43,17 +44,12 @@ class ShellsBranch {
 
   /// The state at X: converged for X* <= X <= X_end. Beyond X_end (or if no branch exists:
   /// X* = 0 or infinite) not converged, with the last state the branch reached.
-  TwoLevelSolve at(double X) const;
-
-  /// The same face as TwoLevelSystem and TwoLevelShells (for evaluate_series): both read
-  /// the curve at X; the guess and the start are not needed.
-  TwoLevelSolve solve(double X, const TwoLevelState& /*guess*/) const { return at(X); }
-  TwoLevelSolve continue_to(const TwoLevelState& /*from*/, double /*X_from*/, double X_to) const { return at(X_to); }
+  TwoLevelSolve at(double X) const override;
 
   /// The nominal-pressure radii of a state at X (TwoLevelShells::radii).
-  NominalRadii radii(const TwoLevelState& state, double X) const { return system_.radii(state, X); }
+  NominalRadii radii(const TwoLevelState& state, double X) const override { return system_.radii(state, X); }
 
-  double X_star() const { return X_star_; }
+  double X_star() const override { return X_star_; }
   /// Where the curve ends, once a query has reached it (+infinity before).
   double X_end() const { return X_end_; }
 

@@ -9,6 +9,8 @@ std::string_view validity_name(Validity v) {
     case Validity::cross_level_overlap: return "cross_level_overlap";
     case Validity::no_solution: return "no_solution";
     case Validity::inaccurate: return "inaccurate";
+    case Validity::outside_table: return "outside_table";
+    case Validity::unloading: return "unloading";
   }
   return "unknown";
 }

@@ -16,12 +16,21 @@ enum class Validity : std::int8_t {
   /// value finite, 0 <= a2 <= a1. The numbers are not to be trusted (a point beyond what the
   /// numerics resolve, e.g. l = 1e308 R).
   inaccurate = 4,
+  /// The periodic model's tables do not reach the point's two-level states (dh / (C l^s)
+  /// above their top, where the level-2 spot is a sliver; docs/model.md, section 14).
+  outside_table = 5,
+  /// The contact may recede somewhere along the point's loads (a node's elastic pressure
+  /// falls as X grows, or a level's load turns negative): the correspondence the periodic
+  /// model rests on needs a contact set that only grows; the time-stepping `reference`
+  /// answers such points.
+  unloading = 6,
 };
 
 /// Every code, in order (for the map's flag_values and the summaries).
 inline constexpr Validity kValidities[] = {Validity::valid, Validity::same_level_overlap,
                                            Validity::cross_level_overlap, Validity::no_solution,
-                                           Validity::inaccurate};
+                                           Validity::inaccurate, Validity::outside_table,
+                                           Validity::unloading};
 
 /// Short machine-readable name ("valid", "same_level_overlap", ...).
 std::string_view validity_name(Validity v);

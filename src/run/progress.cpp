@@ -63,15 +63,20 @@ double Progress::rate() const { return static_cast<double>(computed_points_) / s
 
 void Progress::print_summary(int ranks) const {
   if (quiet_) return;
-  const std::size_t invalid = validity_[1] + validity_[2] + validity_[3] + validity_[4];
-  char line[400];
+  std::size_t invalid = 0;
+  std::string kinds;
+  for (std::size_t v = 1; v < validity_.size(); ++v) {
+    invalid += validity_[v];
+    if (v > 1) kinds += ", ";
+    kinds += std::string(model::validity_name(model::kValidities[v])) + " " + std::to_string(validity_[v]);
+  }
+  char line[600];
   std::snprintf(line, sizeof line,
                 "punchsweep sweep: %zu points (%zu computed now in %s, %.3g points/s on %d rank%s)\n"
                 "  regimes: immediate %zu, delayed %zu, never %zu\n"
-                "  invalid: %zu (same_level_overlap %zu, cross_level_overlap %zu, no_solution %zu, inaccurate %zu)\n",
+                "  invalid: %zu (%s)\n",
                 points_done(), computed_points_, duration(seconds()).c_str(), rate(), ranks,
-                ranks == 1 ? "" : "s", regimes_[0], regimes_[1], regimes_[2], invalid, validity_[1],
-                validity_[2], validity_[3], validity_[4]);
+                ranks == 1 ? "" : "s", regimes_[0], regimes_[1], regimes_[2], invalid, kinds.c_str());
   out_ << line;
   if (total_bem_ > 0) {
     const std::size_t bem = sum(bem_regimes_);

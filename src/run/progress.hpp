@@ -48,7 +48,7 @@ class Progress {
   std::size_t restored_points_ = 0;
   std::size_t computed_points_ = 0;
   std::array<std::size_t, 3> regimes_{};
-  std::array<std::size_t, 5> validity_{};
+  std::array<std::size_t, std::size(model::kValidities)> validity_{};
   std::array<std::size_t, 3> bem_regimes_{};
   std::size_t bem_agreeing_ = 0;
 };

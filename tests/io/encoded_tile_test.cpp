@@ -16,7 +16,7 @@ namespace {
 using namespace testing;
 using testing::sample_encoded_tile;
 
-constexpr std::size_t kHeaderSize = 128;  // format version 4: five validity counts
+constexpr std::size_t kHeaderSize = 144;  // format version 5: seven validity counts
 
 using testing::error_of;
 
@@ -108,7 +108,7 @@ TEST(EncodedTile, encoded_tile_rejects_summary_counts_beyond_its_points) {
   EXPECT_THROW(unpack_encoded_tile(bytes.data(), bytes.size()), std::runtime_error);
   bytes = pack_encoded_tile(tile);
   // Each count alone fits, their sum does not (nor would it in 64 bits).
-  for (std::size_t c = 0; c < 5; ++c) set_u64(&bytes, kValidityAt + 8 * c, tile.summary.points);
+  for (std::size_t c = 0; c < tile.summary.validity.size(); ++c) set_u64(&bytes, kValidityAt + 8 * c, tile.summary.points);
   EXPECT_THROW(unpack_encoded_tile(bytes.data(), bytes.size()), std::runtime_error);
 }
 
@@ -118,8 +118,8 @@ TEST(EncodedTile, encoded_tile_keeps_its_bem_counts_and_rejects_impossible_ones)
   tile.summary.bem_agreeing = 15;  // all of them
   const std::vector<std::byte> good = pack_encoded_tile(tile);
   EXPECT_EQ(unpack_encoded_tile(good.data(), good.size()).summary, tile.summary);
-  constexpr std::size_t kBemRegimesAt = 88;
-  constexpr std::size_t kBemAgreeingAt = 112;
+  constexpr std::size_t kBemRegimesAt = 104;  // after seven validity counts from 48
+  constexpr std::size_t kBemAgreeingAt = 128;
   std::vector<std::byte> bytes = good;
   set_u64(&bytes, kBemRegimesAt, tile.summary.points);  // with the others, more than the points
   EXPECT_NE(error_of([&] { unpack_encoded_tile(bytes.data(), bytes.size()); }).find("BEM counts exceed"),

@@ -324,9 +324,10 @@ TEST_F(RegimeMapWriterTest, flag_variables_carry_flag_values_and_meanings) {
   const Handle valid = open_dataset(file, "valid");
   EXPECT_TRUE(attribute_type_is(valid, "flag_values", H5T_STD_I8LE));
   EXPECT_EQ(read_attribute<std::int8_t>(valid, "flag_values", H5T_NATIVE_INT8),
-            (std::vector<std::int8_t>{0, 1, 2, 3, 4, -1}));
+            (std::vector<std::int8_t>{0, 1, 2, 3, 4, 5, 6, -1}));
   EXPECT_EQ(read_string_attribute(valid, "flag_meanings"),
-            "valid same_level_overlap cross_level_overlap no_solution inaccurate not_computed");
+            "valid same_level_overlap cross_level_overlap no_solution inaccurate outside_table unloading "
+            "not_computed");
   for (const hid_t dataset : {regime.get(), valid.get()}) {
     const Handle type(H5Dget_type(dataset), H5Tclose, "get type");
     EXPECT_GT(H5Tequal(type, H5T_STD_I8LE), 0);

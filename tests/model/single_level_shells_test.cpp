@@ -292,12 +292,18 @@ TEST(Localization, parses_its_spellings_and_refuses_others) {
   EXPECT_FALSE(parse_localization("point-shells:3").distributed);
   const Localization refined = parse_localization("refined");
   EXPECT_EQ(refined.spelling(), "shells:" + std::to_string(Localization::kRefinedShells));
-  for (const char* bad : {"shells:0", "shells:", "shells:3x", "shells:1001", "refine", ""}) {
+  const Localization periodic = parse_localization("periodic");
+  EXPECT_TRUE(periodic.periodic);
+  EXPECT_FALSE(periodic.is_paper());
+  EXPECT_EQ(periodic.spelling(), "periodic");
+  EXPECT_TRUE(std::isinf(periodic.merge_margin()));
+  for (const char* bad : {"shells:0", "shells:", "shells:3x", "shells:1001", "refine", "periodical", ""}) {
     try {
       parse_localization(bad);
       ADD_FAILURE() << bad;
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("valid: paper (= point-shells:2), refined (= shells:200), shells:D"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("paper (= point-shells:2), refined (= shells:200), shells:D"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("valid: periodic"), std::string::npos) << e.what();
     }
   }
 }

@@ -26,7 +26,8 @@ BINARY = find_binary(os.environ.get("PUNCHSWEEP"))
 GRID = ["--grid.l", "0.5,0.75,1", "--grid.dh", "linspace(0.02,0.12,11)", "--grid.T", "2,2.5,5",
         "--grid.pbar", "logspace(0.005,0.08,9)", "--grid.s", "1,2"]
 REGIMES = {"immediate": 0, "delayed": 1, "never": 2, "not_computed": -1}
-VALIDITIES = {"valid": 0, "same_level_overlap": 1, "cross_level_overlap": 2, "no_solution": 3, "inaccurate": 4}
+VALIDITIES = {"valid": 0, "same_level_overlap": 1, "cross_level_overlap": 2, "no_solution": 3, "inaccurate": 4,
+              "outside_table": 5, "unloading": 6}
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,282 @@
+#include "model/periodic_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+
+namespace punchsweep::model {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Where x falls on the uniform grid lo + i step, i = 0 .. count - 1: the interval i (clamped
+/// to [0, count - 2]) and the offset u in it (not clamped: u < 0 or > 1 past the ends).
+struct GridPosition {
+  int i = 0;
+  double u = 0.0;
+};
+GridPosition locate(double x, double lo, double hi, int count) {
+  const double step = (hi - lo) / (count - 1);
+  const double f = (x - lo) / step;
+  int i = static_cast<int>(std::floor(f));
+  i = std::clamp(i, 0, count - 2);
+  return {i, f - i};
+}
+
+/// The cubic through four equally spaced values p[-1], p[0], p[1], p[2] (Catmull-Rom's
+/// interpolating form: the Lagrange cubic on the four nodes) at offset u in [0, 1] from p[0].
+double cubic(double pm, double p0, double p1, double p2, double u) {
+  const double wm = -u * (u - 1.0) * (u - 2.0) / 6.0;
+  const double w0 = (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0;
+  const double w1 = -(u + 1.0) * u * (u - 2.0) / 2.0;
+  const double w2 = (u + 1.0) * u * (u - 1.0) / 6.0;
+  return wm * pm + w0 * p0 + w1 * p1 + w2 * p2;
+}
+
+/// The cubic through the four samples about interval i of `values` (stride `stride`,
+/// `count` >= 2 of them): nodes i - 1 .. i + 2, shifted inward at the ends (one-sided);
+/// linear for two samples, quadratic for three.
+double interpolate(const double* values, int count, int stride, GridPosition at) {
+  const auto v = [&](int k) { return values[static_cast<std::ptrdiff_t>(k) * stride]; };
+  const int i = at.i;
+  if (count == 2) return v(0) + at.u * (v(1) - v(0));
+  if (count == 3) {
+    const double x = i + at.u;  // the parabola through nodes 0, 1, 2
+    return v(0) * (x - 1.0) * (x - 2.0) / 2.0 - v(1) * x * (x - 2.0) + v(2) * x * (x - 1.0) / 2.0;
+  }
+  const int first = std::clamp(i - 1, 0, count - 4);
+  return cubic(v(first), v(first + 1), v(first + 2), v(first + 3), at.u + (i - first - 1));
+}
+
+}  // namespace
+
+double PeriodicTable::delta_hidden() const { return std::pow(2.0, -0.5 * s); }
+double PeriodicTable::xi_full_single() const { return std::pow(v_full, s + 1); }
+
+PeriodicState PeriodicTable::single(double xi) const {
+  PeriodicState out;
+  out.Q1 = xi;
+  if (!(xi > 0.0)) return out;
+  const double v = std::pow(xi, 1.0 / (s + 1));
+  if (v >= v_full) {
+    out.h = delta_hidden();
+    out.a1 = 1.0 / std::sqrt(std::numbers::pi);
+    return out;
+  }
+  const int count = static_cast<int>(h1.size());
+  const GridPosition at = locate(std::max(v, v_lo), v_lo, v_full, count);
+  out.h = interpolate(h1.data(), count, 1, at);
+  out.a1 = interpolate(a11.data(), count, 1, at);
+  return out;
+}
+
+double PeriodicTable::touchdown_v(double delta) const {
+  // h(v) increases: bisection on the interpolant, then two secant steps to round-off.
+  double lo = v_lo, hi = v_full;
+  const auto h_at = [&](double v) { return single(std::pow(v, s + 1)).h; };
+  for (int k = 0; k < 60 && hi - lo > 1e-15 * v_full; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (h_at(mid) < delta ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+std::optional<double> PeriodicTable::touchdown(double delta) const {
+  if (delta <= 0.0) return 0.0;
+  if (delta >= delta_hidden()) return kInf;
+  if (delta < h1.front()) return std::nullopt;
+  return std::pow(touchdown_v(delta), s + 1);
+}
+
+PeriodicState PeriodicTable::two_level(double xi, double delta) const {
+  PeriodicState out;
+  out.in_range = delta >= 0.0 && delta <= delta_top;
+  const double d = std::clamp(delta, 0.0, delta_top);
+  const std::optional<double> star = touchdown(d);
+  if (!star || !std::isfinite(*star)) {
+    out.in_range = false;
+    return out;
+  }
+  const GridPosition dj = locate(d, 0.0, delta_top, J);
+  const double wf = interpolate(w_full.data(), J, 1, dj);
+  const double excess = std::max(xi - *star, 0.0);
+  const double r = std::pow(excess, 1.0 / (s + 1)) / wf;
+  // The bicubic: in r along each of the four rows about delta, then across them.
+  const GridPosition rk = locate(std::min(r, 1.0), 0.0, 1.0, K);
+  const auto at = [&](const std::vector<double>& field) {
+    double rows[4];
+    const int first = std::clamp(dj.i - 1, 0, J - 4);  // J >= 4 (from_tables)
+    for (int m = 0; m < 4; ++m) rows[m] = interpolate(&field[static_cast<std::size_t>(first + m) * K], K, 1, rk);
+    return interpolate(rows, 4, 1, GridPosition{dj.i - first, dj.u});
+  };
+  out.a1 = at(a1);
+  out.a2 = at(a2);
+  out.Q2 = at(Q2);
+  if (r > 1.0) {
+    // Full contact: the areas stay, the extra load spreads evenly over the cell.
+    const double share = interpolate(share2.data(), J, 1, dj);
+    const double xi_full = *star + std::pow(wf, s + 1);
+    out.Q2 += share * (xi - xi_full);
+  }
+  out.Q1 = xi - out.Q2;
+  out.h = d;
+  return out;
+}
+
+bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, double delta) const {
+  if (xi_b <= xi_a) return true;
+  const std::optional<double> star = touchdown(std::clamp(delta, 0.0, delta_top));
+  if (star && std::isfinite(*star) && xi_b > *star) {
+    const GridPosition dj = locate(std::clamp(delta, 0.0, delta_top), 0.0, delta_top, J);
+    const double wf = interpolate(w_full.data(), J, 1, dj);
+    const auto index = [&](double xi) {
+      const double r = std::pow(std::max(xi - *star, 0.0), 1.0 / (s + 1)) / wf;
+      return std::min(static_cast<int>(std::floor(r * (K - 1))), K - 1);  // K - 1: beyond full contact
+    };
+    const int lo = index(std::max(xi_a, *star)), hi = index(xi_b);
+    for (const int j : {dj.i, dj.i + 1}) {
+      for (int k = lo; k <= hi && k < K - 1; ++k) {
+        if (!monotone2[static_cast<std::size_t>(j) * (K - 1) + k]) return false;
+      }
+    }
+    xi_b = *star;
+  }
+  if (xi_b <= xi_a) return true;
+  const int count = static_cast<int>(h1.size());
+  const auto index = [&](double xi) {
+    const double v = std::pow(xi, 1.0 / (s + 1));
+    if (v >= v_full) return count - 1;
+    return locate(std::max(v, v_lo), v_lo, v_full, count).i;
+  };
+  for (int k = index(std::max(xi_a, 1e-300)); k <= index(xi_b) && k < count - 1; ++k) {
+    if (!monotone1[static_cast<std::size_t>(k)]) return false;
+  }
+  return true;
+}
+
+std::vector<double> PeriodicTable::tables() const {
+  std::vector<double> out{kFormat, double(s), double(n), v_lo, v_full, double(h1.size()), delta_top, double(J), double(K)};
+  const auto append = [&](const auto& values) { out.insert(out.end(), values.begin(), values.end()); };
+  append(h1);
+  append(a11);
+  append(monotone1);
+  append(xi_star);
+  append(w_full);
+  append(share2);
+  append(a1);
+  append(a2);
+  append(Q2);
+  append(monotone2);
+  return out;
+}
+
+std::optional<PeriodicTable> PeriodicTable::from_tables(const std::vector<double>& numbers) {
+  constexpr std::size_t kHeader = 9;
+  if (numbers.size() < kHeader || numbers[0] != kFormat) return std::nullopt;
+  for (const double x : numbers) {
+    if (!std::isfinite(x)) return std::nullopt;
+  }
+  PeriodicTable t;
+  const auto whole = [](double x, double lo, double hi) { return x == std::floor(x) && x >= lo && x <= hi; };
+  if (!whole(numbers[1], 1, 32) || !whole(numbers[2], 4, 1 << 16) || !whole(numbers[5], 4, 1e6) ||
+      !whole(numbers[7], 4, 1e4) || !whole(numbers[8], 4, 1e4)) {
+    return std::nullopt;
+  }
+  t.s = static_cast<int>(numbers[1]);
+  t.n = static_cast<int>(numbers[2]);
+  t.v_lo = numbers[3];
+  t.v_full = numbers[4];
+  const auto K1 = static_cast<std::size_t>(numbers[5]);
+  t.delta_top = numbers[6];
+  t.J = static_cast<int>(numbers[7]);
+  t.K = static_cast<int>(numbers[8]);
+  const auto J = static_cast<std::size_t>(t.J), K = static_cast<std::size_t>(t.K);
+  const std::size_t expected = kHeader + 3 * K1 - 1 + 3 * J + 3 * J * K + J * (K - 1);
+  if (numbers.size() != expected || !(0.0 <= t.v_lo && t.v_lo < t.v_full) || !(t.delta_top > 0.0) ||
+      t.delta_top >= t.delta_hidden()) {
+    return std::nullopt;
+  }
+  std::size_t at = kHeader;
+  const auto take = [&](auto& into, std::size_t count) {
+    into.assign(numbers.begin() + static_cast<std::ptrdiff_t>(at), numbers.begin() + static_cast<std::ptrdiff_t>(at + count));
+    at += count;
+  };
+  take(t.h1, K1);
+  take(t.a11, K1);
+  take(t.monotone1, K1 - 1);
+  take(t.xi_star, J);
+  take(t.w_full, J);
+  take(t.share2, J);
+  take(t.a1, J * K);
+  take(t.a2, J * K);
+  take(t.Q2, J * K);
+  take(t.monotone2, J * (K - 1));
+  // The curves' shapes: h increases from h(v_lo) > 0, the radii are within the cell.
+  for (std::size_t k = 1; k < K1; ++k) {
+    if (!(t.h1[k] > t.h1[k - 1])) return std::nullopt;
+  }
+  if (t.h1.front() < 0.0 || t.h1.back() > t.delta_hidden()) return std::nullopt;
+  for (std::size_t k = 0; k < J * K; ++k) {
+    if (!(t.a1[k] >= 0.0 && t.a1[k] <= 1.0 && t.a2[k] >= 0.0 && t.a2[k] <= 1.0)) return std::nullopt;
+  }
+  // The rows' bookkeeping follows from the single level: each row starts at its touchdown
+  // and all end at one load, in full contact (the areas are the levels' shares there).
+  const double cap = t.xi_star[0] + std::pow(t.w_full[0], t.s + 1);
+  for (int j = 0; j < t.J; ++j) {
+    const std::optional<double> star = t.touchdown(t.delta_top * j / (t.J - 1));
+    const std::size_t end = static_cast<std::size_t>(j) * K + K - 1;
+    if (!star || std::abs(*star - t.xi_star[j]) > 1e-12 * (1.0 + *star) ||
+        std::abs(t.xi_star[j] + std::pow(t.w_full[j], t.s + 1) - cap) > 1e-9 * cap ||
+        !(t.share2[j] >= 0.0 && t.share2[j] <= 0.5) ||
+        std::abs(t.a2[end] - std::sqrt(t.share2[j] / std::numbers::pi)) > 1e-9 ||
+        std::abs(t.a1[end] - std::sqrt((1.0 - t.share2[j]) / std::numbers::pi)) > 1e-9) {
+      return std::nullopt;
+    }
+  }
+  return t;
+}
+
+std::string PeriodicTable::table_name(int s, int n) {
+  return "periodic-s" + std::to_string(s) + "-n" + std::to_string(n);
+}
+
+namespace {
+std::mutex& source_mutex() {
+  static std::mutex m;
+  return m;
+}
+PeriodicTableSource& source() {
+  static PeriodicTableSource f;
+  return f;
+}
+std::map<int, std::shared_ptr<const PeriodicTable>>& loaded() {
+  static std::map<int, std::shared_ptr<const PeriodicTable>> tables;
+  return tables;
+}
+}  // namespace
+
+void set_periodic_table_source(PeriodicTableSource f) {
+  const std::lock_guard lock(source_mutex());
+  source() = std::move(f);
+  loaded().clear();
+}
+
+const PeriodicTable& periodic_table(int s) {
+  const std::lock_guard lock(source_mutex());
+  auto& entry = loaded()[s];
+  if (!entry) {
+    if (!source()) {
+      throw std::runtime_error("the periodic model needs its tables, and this program has no source for them "
+                               "(the punchsweep command and the Python module set one)");
+    }
+    entry = source()(s);
+    if (!entry) throw std::runtime_error("no periodic tables for s = " + std::to_string(s));
+  }
+  return *entry;
+}
+
+}  // namespace punchsweep::model

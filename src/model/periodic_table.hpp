@@ -1,0 +1,99 @@
+#pragma once
+/// @file
+/// The elastic periodic solution of the two-level cell, tabulated in its scaled variables
+/// (docs/model.md, section 14): what the `periodic` model reads instead of the localization
+/// formulas. The tables are numbers only; the periodic boundary-element solver that fills
+/// them lives a layer up (reference/periodic_table_builder.hpp).
+///
+/// Scaling (docs/model.md, section 14.2). With xi = X / (C l^(s-1)) and delta = dh / (C l^s),
+/// the elastic solution at unit compliance and load X has h / (C l^s), a_i / l,
+/// Q_i / (C l^(s+1)) and the area fraction depending on (s, xi) while level 2 is free and on
+/// (s, xi, delta) once it touches. The tables hold those scaled values:
+///   single level: over v = xi^(1/(s+1)) on [v_lo, v_full] (uniform), h and a1;
+///     beyond v_full every node is in contact: h = 2^(-s/2), a1 = 1/sqrt(pi) exactly.
+///   two levels: over delta on [0, delta_top] (uniform) and r in [0, 1] (uniform), with
+///     xi = xi*(delta) + (r w_full(delta))^(s+1), xi*(delta) the touchdown load (h = delta),
+///     xi*(delta) + w_full(delta)^(s+1) = xi_cap the same for every row, 1.05 times the
+///     single level's full-contact load (the two levels fill the cell sooner): a1, a2 and Q2
+///     (Q1 = xi - Q2 exactly, the cell's load balance); beyond xi_cap the areas are the
+///     levels' shares of the cell and the extra load spreads evenly: Q2 grows by (share of
+///     level 2) dxi.
+/// a_i are equivalent radii sqrt(area_i / pi): a level's area is the nodes of its share of
+/// the cell in contact, so once spots merge they still say how much of each level touches.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace punchsweep::model {
+
+/// The elastic periodic state of one scaled point.
+struct PeriodicState {
+  double h = 0.0;       ///< u(O) - u(M), in C l^s (meaningful while level 2 is free)
+  double a1 = 0.0;      ///< equivalent radius of the level-1 contact, in l
+  double a2 = 0.0;      ///< the same for level 2, in l
+  double Q1 = 0.0;      ///< level-1 load, in C l^(s+1)
+  double Q2 = 0.0;      ///< level-2 load, in C l^(s+1); Q1 + Q2 = xi
+  bool in_range = true;  ///< false where the query lies outside what the table covers
+};
+
+class PeriodicTable {
+ public:
+  /// The file format: its version, first in tables().
+  static constexpr double kFormat = 1.0;
+
+  int s = 2;
+  int n = 512;  ///< boundary-element grid (n x n on the cell, solved on its quarter)
+  double v_lo = 0.0, v_full = 0.0;
+  std::vector<double> h1, a11;  ///< single level, by v
+  double delta_top = 0.0;
+  int J = 0, K = 0;  ///< two-level samples: J deltas, K values of r
+  std::vector<double> xi_star;     ///< touchdown load per delta (J)
+  std::vector<double> w_full;      ///< per delta (J)
+  std::vector<double> share2;      ///< level-2 share of the cell's area per delta (J)
+  std::vector<double> a1, a2, Q2;  ///< J x K, row-major by delta
+  /// Whether the pressure at every node did not decrease between consecutive samples
+  /// (single level: K1 - 1 intervals; two levels: J x (K - 1)), the sufficient condition
+  /// for the viscoelastic pressure to stay >= 0 (docs/model.md, section 14.1).
+  std::vector<std::uint8_t> monotone1, monotone2;
+
+  /// The level-2 surface hides under level 1 (it never touches) for delta >= 2^(-s/2).
+  double delta_hidden() const;
+  double xi_full_single() const;
+
+  /// Single level at xi >= 0: h, a1, Q1 = xi.
+  PeriodicState single(double xi) const;
+  /// The touchdown load xi*(delta) (h(xi*) = delta); +infinity for delta >= delta_hidden;
+  /// empty below the table (delta < h(v_lo)) unless delta == 0 (xi* = 0); v_lo is 0 in the
+  /// tables the builder makes (the first sample is the unloaded state, exactly).
+  std::optional<double> touchdown(double delta) const;
+  /// Two levels at (xi, delta), xi >= xi*(delta). in_range false for delta > delta_top.
+  PeriodicState two_level(double xi, double delta) const;
+  /// Whether the pressure grows everywhere along the path from xi_a to xi_b at delta (two
+  /// levels once past touchdown): the samples' intervals it crosses are all monotone.
+  bool pressure_monotone(double xi_a, double xi_b, double delta) const;
+
+  /// As numbers: kFormat, the header (s, n, sizes, ranges), then every array; and back,
+  /// empty for anything inconsistent (sizes, non-finite values, a bad header).
+  std::vector<double> tables() const;
+  static std::optional<PeriodicTable> from_tables(const std::vector<double>& numbers);
+
+  /// A file name: periodic-s<s>-n<n>.
+  static std::string table_name(int s, int n);
+
+ private:
+  double touchdown_v(double delta) const;
+};
+
+/// Where the model gets the tables of s: set by the application (built by the boundary
+/// elements and kept in a cache folder, see app/table_cache.hpp). Without a source the
+/// periodic model cannot be evaluated (std::runtime_error naming what is missing).
+using PeriodicTableSource = std::function<std::shared_ptr<const PeriodicTable>(int s)>;
+void set_periodic_table_source(PeriodicTableSource source);
+/// The tables of s, from the source on first use, then shared (thread-safe).
+const PeriodicTable& periodic_table(int s);
+
+}  // namespace punchsweep::model

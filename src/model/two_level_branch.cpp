@@ -1,0 +1,13 @@
+#include "model/two_level_branch.hpp"
+
+#include "model/periodic_model.hpp"
+#include "model/shells_branch.hpp"
+
+namespace punchsweep::model {
+
+std::unique_ptr<const TwoLevelBranch> make_branch(const ContactProblem& problem, const Touchdown& touch) {
+  if (problem.localization.periodic) return std::make_unique<const PeriodicBranch>(problem, touch);
+  return std::make_unique<const ShellsBranch>(problem, touch);
+}
+
+}  // namespace punchsweep::model
