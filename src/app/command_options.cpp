@@ -132,7 +132,9 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
 void add_localization_option(po::options_description& opts, const std::string& fallback) {
   opts.add_options()(
       "localization", po::value<std::string>()->value_name("L")->default_value(fallback),
-      ("the localization model (docs/model.md, section 11): paper (the paper's eqs 9.5-9.19, "
+      ("the model (docs/model.md, sections 11, 14): periodic (the whole periodic cell's elastic solution, "
+       "tabulated from the boundary elements and read at the creep-weighted load: exact where the contact "
+       "only grows, merged spots included), paper (the paper's eqs 9.5-9.19, "
        "= point-shells:2), refined (= shells:" +
        std::to_string(model::Localization::kRefinedShells) +
        ", the member closest to the periodic BEM), shells:D (the punches of both levels within the D nearest "

@@ -77,6 +77,11 @@ int run_single_level_command(const std::vector<std::string>& args, std::ostream&
   for (const model::Parameter& p : law.parameters) series = series || vm.count(std::string(p.name)) > 0;
   const std::string format = read_choice(vm, "format", {"json", "csv"});
   const model::Localization localization = read_localization(vm);
+  if (localization.periodic) {
+    throw UsageError("--localization: periodic has no h(a1) curve to draw here (its tables are in the load X: "
+                     "`punchsweep point --localization periodic` gives a1(t) and h(t)); valid here: paper, refined, "
+                     "shells:D, point-shells:D");
+  }
 
   // h(a1) up to 2 a1 = l (beyond, level-1 spots merge: the model's validity ends there);
   // null where the localization model has no solution (beyond its radius limit).

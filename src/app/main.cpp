@@ -8,6 +8,7 @@
 #include "app/reference_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/table_cache.hpp"
+#include "app/tables_command.hpp"
 #include "app/usage_error.hpp"
 #include "app/version.hpp"
 
@@ -23,7 +24,8 @@ constexpr const char* kTopHelp =
     "             regime map (mpirun -np N punchsweep sweep --config F.ini)\n"
     "  single-level  h(a1), a1(t), h(t) of the single-level phase (Figs. 9.2, 9.3)\n"
     "  elastic    the elastic two-level problem with free radii A_i (Table 9.1)\n"
-    "  reference  one point by the periodic boundary-element solver (the model's check)\n\n"
+    "  reference  one point by the periodic boundary-element solver (the model's check)\n"
+    "  tables     the periodic model's tables: shipped for s = 1, 2, 3, built and cached for others\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -52,8 +54,9 @@ int main(int argc, char** argv) {
     if (args[0] == "single-level") return punchsweep::app::run_single_level_command(rest, std::cout);
     if (args[0] == "elastic") return punchsweep::app::run_elastic_command(rest, std::cout);
     if (args[0] == "reference") return punchsweep::app::run_reference_command(rest, std::cout);
+    if (args[0] == "tables") return punchsweep::app::run_tables_command(rest, std::cout);
     throw UsageError("unknown command '" + args[0] +
-                     "' (commands: point, sweep, single-level, elastic, reference; see punchsweep --help)");
+                     "' (commands: point, sweep, single-level, elastic, reference, tables; see punchsweep --help)");
   } catch (const UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::app::kUsageExitCode;

@@ -143,7 +143,7 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
       if (const std::string u = display_units(q, inputs.time_unit); !u.empty()) value += " " + u;
     }
     out << "  " << name << value << "\n";
-    if (q.flags == map::Flags::validity) {
+    if (q.flags == map::Flags::validity && !inputs.problem.localization.periodic) {
       out << (inputs.problem.localization.is_paper() ? "  A1, A2 (frozen)     " : "  A1, A2 at the start ")
           << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n";
     }

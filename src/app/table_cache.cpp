@@ -15,7 +15,9 @@
 #include <system_error>
 
 #include "io/file_descriptor.hpp"
+#include "app/periodic_tables.hpp"
 #include "model/shell_sums.hpp"
+#include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::app {
 namespace {
@@ -140,9 +142,17 @@ void use_table_cache() {
   if (!cache.folder || !refusal.empty()) {
     if (!refusal.empty()) std::fprintf(stderr, "punchsweep: %s; tables are built in memory\n", refusal.c_str());
     model::set_shell_sums_store({});
+    model::set_periodic_table_source([](int s) {
+      sweep::use_reproducible_fft_plans();
+      return periodic_table_for(s, kPeriodicTableGrid, std::nullopt);
+    });
     return;
   }
   const std::filesystem::path root = *cache.folder;
+  model::set_periodic_table_source([root](int s) {
+    sweep::use_reproducible_fft_plans();
+    return periodic_table_for(s, kPeriodicTableGrid, root);
+  });
   model::set_shell_sums_store({[root](const std::string& name) { return read_tables(root / name); },
                                [root](const std::string& name, const std::vector<double>& tables) {
                                  write_tables(root / name, tables);

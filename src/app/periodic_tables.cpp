@@ -1,0 +1,217 @@
+#include "app/periodic_tables.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <numbers>
+#include <cstdio>
+#include <random>
+#include <span>
+#include <sstream>
+#include <vector>
+
+#include "app/table_cache.hpp"
+#include "io/file_descriptor.hpp"
+#include "reference/periodic_grid.hpp"
+
+namespace punchsweep::app {
+namespace {
+
+// The shipped tables: made by `punchsweep tables --s S --write-source F` (the provenance is
+// at the top of each file).
+#if __has_include("app/periodic_tables/periodic-s1-n512.inc")
+constexpr double kShippedS1[] = {
+#include "app/periodic_tables/periodic-s1-n512.inc"
+};
+#define PUNCHSWEEP_SHIPPED_S1 1
+#endif
+#if __has_include("app/periodic_tables/periodic-s2-n512.inc")
+constexpr double kShippedS2[] = {
+#include "app/periodic_tables/periodic-s2-n512.inc"
+};
+#define PUNCHSWEEP_SHIPPED_S2 1
+#endif
+#if __has_include("app/periodic_tables/periodic-s3-n512.inc")
+constexpr double kShippedS3[] = {
+#include "app/periodic_tables/periodic-s3-n512.inc"
+};
+#define PUNCHSWEEP_SHIPPED_S3 1
+#endif
+
+std::span<const double> shipped_numbers(int s) {
+  switch (s) {
+#ifdef PUNCHSWEEP_SHIPPED_S1
+    case 1: return kShippedS1;
+#endif
+#ifdef PUNCHSWEEP_SHIPPED_S2
+    case 2: return kShippedS2;
+#endif
+#ifdef PUNCHSWEEP_SHIPPED_S3
+    case 3: return kShippedS3;
+#endif
+    default: return {};
+  }
+}
+
+/// Agreement of a re-solved sample with the table: the loads and h to the solver's
+/// tolerance (relative); a level's contact area to one node and its mirror images (a node at
+/// the rim may tip either way between a solve warm-started along the path and one from the
+/// uniform pressure).
+constexpr double kLoadAgreement = 1e-6;
+
+bool agrees(double table, double direct, double relative, double floor) {
+  return std::abs(table - direct) <= relative * std::abs(direct) + floor;
+}
+bool same_area(double a_table, double a_direct, int n) {
+  return std::abs(std::numbers::pi * (a_table * a_table - a_direct * a_direct)) <= 4.5 / (double(n) * n);
+}
+
+/// An exclusive lock on `file` (created 0600, not followed if a link), held while alive.
+class FileLock {
+ public:
+  explicit FileLock(const std::filesystem::path& file)
+      : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600)) {
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+    }
+  }
+  ~FileLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+  }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+}  // namespace
+
+std::optional<model::PeriodicTable> shipped_periodic_table(int s, int n) {
+  if (n != kPeriodicTableGrid) return std::nullopt;
+  const std::span<const double> numbers = shipped_numbers(s);
+  if (numbers.empty()) return std::nullopt;
+  return model::PeriodicTable::from_tables(std::vector<double>(numbers.begin(), numbers.end()));
+}
+
+bool spot_check(const model::PeriodicTable& table, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  const auto draw = [&](int count) { return static_cast<int>(random() % static_cast<std::uint64_t>(count)); };
+  // Three samples of the single level (not the unloaded one, not the last: full contact).
+  const int K1 = static_cast<int>(table.h1.size());
+  for (int trial = 0; trial < 3; ++trial) {
+    const int k = 1 + draw(K1 - 2);
+    const double v = table.v_lo + (table.v_full - table.v_lo) * k / (K1 - 1);
+    const model::PeriodicState direct = reference::solve_scaled(table.s, std::pow(v, table.s + 1),
+                                                                std::numeric_limits<double>::infinity(), table.n);
+    if (!agrees(table.h1[k], direct.h, kLoadAgreement, 1e-12) || !same_area(table.a11[k], direct.a1, table.n)) {
+      return false;
+    }
+  }
+  // One sample of every two-level row, and the row's level-2 share (the cell's geometry).
+  for (int j = 0; j < table.J; ++j) {
+    const int k = 1 + draw(table.K - 1);
+    const double delta = table.delta_top * j / (table.J - 1);
+    const double xi = table.xi_star[j] + std::pow(table.w_full[j] * k / (table.K - 1), table.s + 1);
+    const model::PeriodicState direct = reference::solve_scaled(table.s, xi, delta, table.n);
+    const std::size_t at = static_cast<std::size_t>(j) * table.K + k;
+    if (!agrees(table.Q2[at], direct.Q2, kLoadAgreement, 1e-9 * xi) || !same_area(table.a1[at], direct.a1, table.n) ||
+        !same_area(table.a2[at], direct.a2, table.n)) {
+      return false;
+    }
+    model::ContactProblem cell;
+    cell.l = 1.0;
+    cell.dh = delta;
+    cell.shape = model::Shape{table.s, 1.0};
+    const reference::TwoLevelCell grid = reference::make_two_level_cell(cell, table.n, reference::Symmetry::mirror);
+    double share = 0.0;
+    for (std::size_t m = 0; m < grid.level2_weight.size(); ++m) share += grid.grid.multiplicity(m) * grid.level2_weight[m];
+    share /= static_cast<double>(grid.grid.nodes());
+    if (std::abs(share - table.share2[j]) > 1e-12) return false;
+  }
+  return true;
+}
+
+model::PeriodicTable build_periodic_table_with_progress(int s, int n, bool quiet,
+                                                       const reference::PeriodicTableOptions& options,
+                                                       const std::string& where) {
+  reference::PeriodicTableOptions build = options;
+  build.n = n;
+  const auto start = std::chrono::steady_clock::now();
+  int shown = -1;
+  if (!quiet) {
+    build.progress = [&, previous = options.progress](int done, int planned) {
+      if (previous) previous(done, planned);
+      const int percent = std::min(static_cast<int>(100.0 * done / std::max(planned, 1)), 99);
+      if (percent / 10 != shown / 10) {
+        shown = percent;
+        std::fprintf(stderr, "\rpunchsweep: building the periodic tables of s = %d (grid %d): %3d%%", s, n, percent);
+        std::fflush(stderr);
+      }
+    };
+  }
+  model::PeriodicTable table = reference::build_periodic_table(s, build);
+  if (!quiet) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "\rpunchsweep: built the periodic tables of s = %d (grid %d) in %.0f s (%s)\n", s, n, seconds,
+                 where.c_str());
+  }
+  return table;
+}
+
+std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
+                                                              const std::optional<std::filesystem::path>& folder,
+                                                              bool quiet,
+                                                              const reference::PeriodicTableOptions& options,
+                                                              TableOrigin* origin) {
+  TableOrigin ignored;
+  if (origin == nullptr) origin = &ignored;
+  *origin = TableOrigin::shipped;
+  if (std::optional<model::PeriodicTable> shipped = shipped_periodic_table(s, n)) {
+    return std::make_shared<const model::PeriodicTable>(std::move(*shipped));
+  }
+  const std::string name = model::PeriodicTable::table_name(s, n);
+  std::optional<FileLock> lock;
+  if (folder) {
+    std::error_code error;
+    std::filesystem::create_directories(*folder, error);
+    if (untrusted_folder(*folder).empty()) lock.emplace(*folder / (name + ".lock"));
+    // Under the lock: a builder before us has saved its tables by now.
+    if (std::optional<model::PeriodicTable> cached = model::PeriodicTable::from_tables(read_tables(*folder / name))) {
+      if (cached->s == s && cached->n == n && spot_check(*cached, std::random_device{}())) {
+        *origin = TableOrigin::cache;
+        return std::make_shared<const model::PeriodicTable>(std::move(*cached));
+      }
+      std::fprintf(stderr, "punchsweep: the cached periodic tables %s do not match the boundary elements; building "
+                           "them again\n", (*folder / name).c_str());
+    }
+  }
+  *origin = TableOrigin::built;
+  auto table = std::make_shared<const model::PeriodicTable>(
+      build_periodic_table_with_progress(s, n, quiet, options, folder ? "kept in the table cache" : "no table cache: built again next time"));
+  if (folder) write_tables(*folder / name, table->tables());
+  return table;
+}
+
+std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance) {
+  std::ostringstream out;
+  out << "// The periodic model's tables of s = " << table.s << " on a " << table.n << " x " << table.n
+      << " grid (docs/model.md, section 14.3).\n";
+  std::istringstream lines(provenance);
+  for (std::string line; std::getline(lines, line);) out << "// " << line << "\n";
+  const std::vector<double> numbers = table.tables();
+  char text[40];
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    std::snprintf(text, sizeof text, "%a,", numbers[i]);
+    out << text << ((i + 1) % 4 == 0 ? "\n" : " ");
+  }
+  out << "\n";
+  return out.str();
+}
+
+}  // namespace punchsweep::app

@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// Where the periodic model's tables come from (docs/model.md, section 14.3): the ones shipped
+/// with the engine (s = 1, 2, 3), else the table cache (app/table_cache.hpp, its rules), else
+/// built by the boundary elements (about a minute per s) and kept there.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "model/periodic_table.hpp"
+#include "reference/periodic_table_builder.hpp"
+
+namespace punchsweep::app {
+
+/// The grid of the tables the engine uses.
+inline constexpr int kPeriodicTableGrid = 512;
+
+/// The tables shipped in the source tree (src/app/periodic_tables/), if any for (s, n).
+std::optional<model::PeriodicTable> shipped_periodic_table(int s, int n = kPeriodicTableGrid);
+
+/// Whether loaded tables are the boundary elements' own: three single-level samples and one
+/// sample of every two-level row, drawn from `seed`, solved again (loads and h to 1e-6, areas
+/// to one node), and every row's level-2 share recomputed. A table edited as a whole or row
+/// by row fails it whatever its checksum says; one edited sample is caught with probability
+/// 1/(K - 1) per check. Costs J + 3 contact solves (about 5 s at n = 512; only tables that
+/// are not shipped are ever read from a cache).
+bool spot_check(const model::PeriodicTable& table, std::uint64_t seed);
+
+/// Builds the tables of s on an n grid, with progress on stderr (unless quiet) and a last
+/// line saying how long it took and `where` they go.
+model::PeriodicTable build_periodic_table_with_progress(int s, int n, bool quiet,
+                                                       const reference::PeriodicTableOptions& options,
+                                                       const std::string& where);
+
+/// Where periodic_table_for found the tables.
+enum class TableOrigin { shipped, cache, built };
+
+/// The tables of s on an n grid: shipped, else from `folder` (if set; spot-checked, under a
+/// lock so that concurrent builders build once), else built (progress on stderr unless
+/// quiet) and saved there. `origin`, if set, says which.
+std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
+                                                              const std::optional<std::filesystem::path>& folder,
+                                                              bool quiet = false,
+                                                              const reference::PeriodicTableOptions& options = {},
+                                                              TableOrigin* origin = nullptr);
+
+/// The tables as C++ source text (an initializer list of hex-float numbers with a header
+/// saying how they were made), what src/app/periodic_tables/ holds.
+std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance);
+
+}  // namespace punchsweep::app

@@ -1,0 +1,110 @@
+#include "app/tables_command.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <ostream>
+
+#include "app/periodic_tables.hpp"
+#include "app/table_cache.hpp"
+#include "app/usage_error.hpp"
+#include "app/value_parsing.hpp"
+#include "app/version.hpp"
+#include "model/shape.hpp"
+#include "sweep/reproducible_fft.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+po::options_description tables_options() {
+  po::options_description opts(
+      "punchsweep tables: the periodic model's tables (docs/model.md, section 14): the\n"
+      "elastic solution of the whole periodic two-level cell by the boundary elements, per\n"
+      "shape exponent s, in its scaled variables. s = 1, 2, 3 ship with the engine; others\n"
+      "are built once (about a minute each on one core) and kept in the table cache\n"
+      "($PUNCHSWEEP_CACHE, else $XDG_CACHE_HOME/punchsweep or ~/.cache/punchsweep).\n\n"
+      "Options");
+  opts.add_options()
+      ("help,h", "this text")
+      ("s", po::value<std::string>()->value_name("S")->default_value("1,2,3"),
+       "shape exponents: integers in [1, 32], separated by commas")
+      ("grid", po::value<std::string>()->value_name("N")->default_value(std::to_string(kPeriodicTableGrid)),
+       "boundary-element grid per side; the engine reads 512 (others are for convergence studies)")
+      ("write-source", po::value<std::string>()->value_name("DIR"),
+       "build afresh (not from the cache or the shipped ones) and write periodic-s<S>-n<N>.inc, "
+       "the source text the engine ships, into DIR")
+      ("quiet", po::bool_switch(), "no progress");
+  return opts;
+}
+
+}  // namespace
+
+int run_tables_command(const std::vector<std::string>& args, std::ostream& out) {
+  const po::options_description opts = tables_options();
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(opts).run(), vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw UsageError(e.what());
+  }
+  if (vm.count("help")) {
+    out << opts;
+    return 0;
+  }
+  std::vector<int> exponents;
+  for (const double s : parse_real_list(vm["s"].as<std::string>(), "--s")) {
+    if (s != std::floor(s) || s < model::Shape::kMinExponent || s > model::Shape::kMaxExponent) {
+      throw UsageError("--s: " + std::to_string(s) + " is not an integer in [1, 32]");
+    }
+    exponents.push_back(static_cast<int>(s));
+  }
+  const int n = parse_integer(vm["grid"].as<std::string>(), "--grid");
+  if (n < 16 || n > 2048 || n % 2 != 0) throw UsageError("--grid: " + std::to_string(n) + " is not an even integer in [16, 2048]");
+  const bool quiet = vm["quiet"].as<bool>();
+  sweep::use_reproducible_fft_plans();
+
+  if (vm.count("write-source")) {
+    const std::filesystem::path dir = vm["write-source"].as<std::string>();
+    if (!std::filesystem::is_directory(dir)) throw UsageError("--write-source: " + dir.string() + " is not a folder");
+    for (const int s : exponents) {
+      const auto start = std::chrono::steady_clock::now();
+      const std::shared_ptr<const model::PeriodicTable> table = std::make_shared<const model::PeriodicTable>(
+          build_periodic_table_with_progress(s, n, quiet, {}, "written as source"));
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      char provenance[400];
+      std::snprintf(provenance, sizeof provenance,
+                    "Made by `punchsweep tables --s %d --grid %d --write-source DIR` (punchsweep %s, git %s) in "
+                    "%.0f s on one core.\nSamples: %zu in v, %d x %d in (delta, r). Numbers in order of "
+                    "model::PeriodicTable::tables().",
+                    s, n, kVersion, kGitRevision, seconds, table->h1.size(), table->J, table->K);
+      const std::filesystem::path file = dir / (model::PeriodicTable::table_name(s, n) + ".inc");
+      std::ofstream(file) << periodic_table_source(*table, provenance);
+      out << "s = " << s << ": wrote " << file.string() << " (" << seconds << " s)\n";
+    }
+    return 0;
+  }
+
+  const TableCacheFolder cache = table_cache_folder();
+  std::optional<std::filesystem::path> folder = cache.folder;
+  if (folder && !untrusted_folder(*folder).empty()) folder.reset();
+  for (const int s : exponents) {
+    const auto start = std::chrono::steady_clock::now();
+    TableOrigin origin{};
+    const std::shared_ptr<const model::PeriodicTable> table = periodic_table_for(s, n, folder, quiet, {}, &origin);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out << "s = " << s << ", grid " << n << ": " << (origin == TableOrigin::shipped ? std::string("shipped with the engine")
+            : origin == TableOrigin::cache ? "read from the table cache " + folder->string()
+            : folder ? "built and kept in the table cache " + folder->string()
+                     : std::string("built (no table cache: built again next time)"))
+        << "; single level to xi = " << table->xi_full_single() << " (full contact), two levels for dh/(C l^s) up to "
+        << table->delta_top << " (" << seconds << " s)\n";
+  }
+  return 0;
+}
+
+}  // namespace punchsweep::app
