@@ -40,10 +40,10 @@ Touchdown PeriodicSingleLevel::touchdown(double dh) const {
 PeriodicBranch::PeriodicBranch(const ContactProblem& problem, const Touchdown& touch)
     : table_(&periodic_table(problem.shape.s)),
       scales_(problem),
-      delta_(problem.dh / scales_.h_unit),
+      row_(table_->row(problem.dh / scales_.h_unit)),
       X_star_(touch.X_star) {}
 
-bool PeriodicBranch::covered() const { return delta_ <= table_->delta_top || !std::isfinite(X_star_); }
+bool PeriodicBranch::covered() const { return row_.delta <= table_->delta_top || !std::isfinite(X_star_); }
 
 TwoLevelSolve PeriodicBranch::at(double X) const {
   const double l2 = scales_.l * scales_.l;
@@ -55,10 +55,10 @@ TwoLevelSolve PeriodicBranch::at(double X) const {
   if (!covered()) return {{kNaN, kNaN, kNaN, kNaN}, false};
   if (!std::isfinite(X)) {
     // Every node in contact: the areas are the levels' shares of the cell.
-    const PeriodicState full = table_->two_level(kInf, delta_);
+    const PeriodicState full = table_->two_level(kInf, row_);
     return {{scales_.l * full.a1, scales_.l * full.a2, kInf, kInf}, true};
   }
-  const PeriodicState s = table_->two_level(X / scales_.X_unit, delta_);
+  const PeriodicState s = table_->two_level(X / scales_.X_unit, row_);
   TwoLevelState state{scales_.l * s.a1, scales_.l * s.a2, 0.0, scales_.Q_unit * s.Q2};
   state.Q1 = l2 * X - state.Q2;  // the cell's load balance, exactly
   return {state, true};
@@ -66,7 +66,7 @@ TwoLevelSolve PeriodicBranch::at(double X) const {
 
 bool PeriodicBranch::pressure_monotone(double X_a, double X_b) const {
   if (!std::isfinite(X_b)) X_b = std::numeric_limits<double>::max();
-  return table_->pressure_monotone(X_a / scales_.X_unit, X_b / scales_.X_unit, delta_);
+  return table_->pressure_monotone(X_a / scales_.X_unit, X_b / scales_.X_unit, row_);
 }
 
 }  // namespace punchsweep::model

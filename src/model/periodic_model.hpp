@@ -62,7 +62,7 @@ class PeriodicBranch final : public TwoLevelBranch {
  private:
   const PeriodicTable* table_;
   PeriodicScales scales_;
-  double delta_ = 0.0;
+  PeriodicTable::Row row_;  ///< the table's row of this dh
   double X_star_ = 0.0;
 };
 

@@ -92,58 +92,68 @@ std::optional<double> PeriodicTable::touchdown(double delta) const {
   return std::pow(touchdown_v(delta), s + 1);
 }
 
-PeriodicState PeriodicTable::two_level(double xi, double delta) const {
-  PeriodicState out;
+PeriodicTable::Row PeriodicTable::row(double delta) const {
+  Row out;
+  out.delta = delta;
   out.in_range = delta >= 0.0 && delta <= delta_top;
   const double d = std::clamp(delta, 0.0, delta_top);
   const std::optional<double> star = touchdown(d);
-  if (!star || !std::isfinite(*star)) {
-    out.in_range = false;
-    return out;
-  }
+  out.xi_star = star ? *star : kInf;
+  if (!std::isfinite(out.xi_star)) out.in_range = false;
   const GridPosition dj = locate(d, 0.0, delta_top, J);
-  const double wf = interpolate(w_full.data(), J, 1, dj);
-  const double excess = std::max(xi - *star, 0.0);
-  const double r = std::pow(excess, 1.0 / (s + 1)) / wf;
-  // The bicubic: in r along each of the four rows about delta, then across them.
-  const GridPosition rk = locate(std::min(r, 1.0), 0.0, 1.0, K);
-  const auto at = [&](const std::vector<double>& field) {
-    double rows[4];
-    const int first = std::clamp(dj.i - 1, 0, J - 4);  // J >= 4 (from_tables)
-    for (int m = 0; m < 4; ++m) rows[m] = interpolate(&field[static_cast<std::size_t>(first + m) * K], K, 1, rk);
-    return interpolate(rows, 4, 1, GridPosition{dj.i - first, dj.u});
-  };
-  out.a1 = at(a1);
-  out.a2 = at(a2);
-  out.Q2 = at(Q2);
-  if (r > 1.0) {
-    // Full contact: the areas stay, the extra load spreads evenly over the cell.
-    const double share = interpolate(share2.data(), J, 1, dj);
-    const double xi_full = *star + std::pow(wf, s + 1);
-    out.Q2 += share * (xi - xi_full);
-  }
-  out.Q1 = xi - out.Q2;
-  out.h = d;
+  out.interval = dj.i;
+  out.offset = dj.u;
+  out.w_full = interpolate(w_full.data(), J, 1, dj);
+  out.share2 = interpolate(share2.data(), J, 1, dj);
   return out;
 }
 
-bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, double delta) const {
-  if (xi_b <= xi_a) return true;
-  const std::optional<double> star = touchdown(std::clamp(delta, 0.0, delta_top));
-  if (star && std::isfinite(*star) && xi_b > *star) {
-    const GridPosition dj = locate(std::clamp(delta, 0.0, delta_top), 0.0, delta_top, J);
-    const double wf = interpolate(w_full.data(), J, 1, dj);
+PeriodicState PeriodicTable::two_level(double xi, const Row& row) const {
+  PeriodicState out;
+  out.in_range = row.in_range;
+  if (!std::isfinite(row.xi_star)) return out;
+  const double excess = std::max(xi - row.xi_star, 0.0);
+  const double r = std::pow(excess, 1.0 / (s + 1)) / row.w_full;
+  // The bicubic: in r along each of the four rows about delta, then across them.
+  const GridPosition rk = locate(std::min(r, 1.0), 0.0, 1.0, K);
+  const int first = std::clamp(row.interval - 1, 0, J - 4);  // J >= 4 (from_tables)
+  const GridPosition across{row.interval - first, row.offset};
+  const auto at = [&](const std::vector<double>& field) {
+    double rows[4];
+    for (int m = 0; m < 4; ++m) rows[m] = interpolate(&field[static_cast<std::size_t>(first + m) * K], K, 1, rk);
+    return interpolate(rows, 4, 1, across);
+  };
+  out.a1 = at(a1);
+  out.a2 = std::max(at(a2), 0.0);
+  // Level 2's load is never negative; the samples' grid may leave the cubic a little below
+  // zero just after touchdown, where a coarse sample sees the tip node alone.
+  const double rate = std::max(at(q2_rate_), 0.0);
+  if (r > 1.0) {
+    // Full contact: the areas stay, the extra load spreads evenly over the cell.
+    const double excess_full = std::pow(row.w_full, s + 1);
+    out.Q2 = rate * excess_full + row.share2 * (excess - excess_full);
+  } else {
+    out.Q2 = rate * excess;
+  }
+  out.Q1 = xi - out.Q2;
+  out.h = row.delta;
+  return out;
+}
+
+bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, const Row& row) const {
+  if (all_monotone_ || xi_b <= xi_a) return true;
+  if (std::isfinite(row.xi_star) && xi_b > row.xi_star) {
     const auto index = [&](double xi) {
-      const double r = std::pow(std::max(xi - *star, 0.0), 1.0 / (s + 1)) / wf;
-      return std::min(static_cast<int>(std::floor(r * (K - 1))), K - 1);  // K - 1: beyond full contact
+      const double r = std::pow(std::max(xi - row.xi_star, 0.0), 1.0 / (s + 1)) / row.w_full;
+      return std::min(static_cast<int>(std::floor(r * (K - 1))), K - 1);  // K - 1: beyond the rows' end
     };
-    const int lo = index(std::max(xi_a, *star)), hi = index(xi_b);
-    for (const int j : {dj.i, dj.i + 1}) {
+    const int lo = index(std::max(xi_a, row.xi_star)), hi = index(xi_b);
+    for (const int j : {row.interval, row.interval + 1}) {
       for (int k = lo; k <= hi && k < K - 1; ++k) {
         if (!monotone2[static_cast<std::size_t>(j) * (K - 1) + k]) return false;
       }
     }
-    xi_b = *star;
+    xi_b = row.xi_star;
   }
   if (xi_b <= xi_a) return true;
   const int count = static_cast<int>(h1.size());
@@ -156,6 +166,20 @@ bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, double delta) co
     if (!monotone1[static_cast<std::size_t>(k)]) return false;
   }
   return true;
+}
+
+void PeriodicTable::finish() {
+  const auto all = [](const std::vector<std::uint8_t>& v) {
+    return std::all_of(v.begin(), v.end(), [](std::uint8_t m) { return m != 0; });
+  };
+  all_monotone_ = all(monotone1) && all(monotone2);
+  q2_rate_.assign(Q2.size(), 0.0);
+  for (int j = 0; j < J; ++j) {
+    double* rate = &q2_rate_[static_cast<std::size_t>(j) * K];
+    const double* load = &Q2[static_cast<std::size_t>(j) * K];
+    for (int k = 1; k < K; ++k) rate[k] = load[k] / std::pow(w_full[j] * k / (K - 1), s + 1);
+    rate[0] = 3.0 * rate[1] - 3.0 * rate[2] + rate[3];  // the parabola through k = 1, 2, 3 at 0
+  }
 }
 
 std::vector<double> PeriodicTable::tables() const {
@@ -215,6 +239,7 @@ std::optional<PeriodicTable> PeriodicTable::from_tables(const std::vector<double
   take(t.a2, J * K);
   take(t.Q2, J * K);
   take(t.monotone2, J * (K - 1));
+  t.finish();
   // The curves' shapes: h increases from h(v_lo) > 0, the radii are within the cell.
   for (std::size_t k = 1; k < K1; ++k) {
     if (!(t.h1[k] > t.h1[k - 1])) return std::nullopt;

@@ -70,11 +70,28 @@ class PeriodicTable {
   /// empty below the table (delta < h(v_lo)) unless delta == 0 (xi* = 0); v_lo is 0 in the
   /// tables the builder makes (the first sample is the unloaded state, exactly).
   std::optional<double> touchdown(double delta) const;
+  /// What the two-level queries at one delta share (its touchdown, where it falls between
+  /// the rows, the row end and level-2 share there): a caller that asks many loads at one
+  /// delta (a point's times, a sweep's pressures and materials) computes it once.
+  struct Row {
+    double delta = 0.0;
+    double xi_star = 0.0;     ///< touchdown (+infinity where level 2 hides)
+    double w_full = 0.0;      ///< the row's end, interpolated
+    double share2 = 0.0;      ///< level-2 share of the cell, interpolated
+    int interval = 0;         ///< the rows j, j + 1 about delta
+    double offset = 0.0;      ///< delta's place between them
+    bool in_range = true;     ///< delta <= delta_top
+  };
+  Row row(double delta) const;
   /// Two levels at (xi, delta), xi >= xi*(delta). in_range false for delta > delta_top.
-  PeriodicState two_level(double xi, double delta) const;
+  PeriodicState two_level(double xi, double delta) const { return two_level(xi, row(delta)); }
+  PeriodicState two_level(double xi, const Row& row) const;
   /// Whether the pressure grows everywhere along the path from xi_a to xi_b at delta (two
   /// levels once past touchdown): the samples' intervals it crosses are all monotone.
-  bool pressure_monotone(double xi_a, double xi_b, double delta) const;
+  bool pressure_monotone(double xi_a, double xi_b, const Row& row) const;
+  bool pressure_monotone(double xi_a, double xi_b, double delta) const {
+    return pressure_monotone(xi_a, xi_b, row(delta));
+  }
 
   /// As numbers: kFormat, the header (s, n, sizes, ranges), then every array; and back,
   /// empty for anything inconsistent (sizes, non-finite values, a bad header).
@@ -86,6 +103,18 @@ class PeriodicTable {
 
  private:
   double touchdown_v(double delta) const;
+  /// Whether every interval of monotone1 / monotone2 is monotone (the usual case: then
+  /// pressure_monotone needs no search). Set by from_tables and the builder's finish().
+  bool all_monotone_ = false;
+  /// Q2 / (xi - xi*) at every sample (J x K), what two_level() interpolates: Q2 grows as
+  /// (xi - xi*) from touchdown, so the ratio is smooth there and a cubic through it cannot
+  /// dip below zero as one through Q2 itself can (by 1e-6 of the load, measured). At r = 0
+  /// the limit, extrapolated from the next three samples.
+  std::vector<double> q2_rate_;
+
+ public:
+  /// Derived fields (all_monotone_) once the arrays are filled.
+  void finish();
 };
 
 /// Where the model gets the tables of s: set by the application (built by the boundary

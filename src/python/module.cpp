@@ -188,10 +188,17 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
                   py::array_t<double, py::array::c_style | py::array::forcecast> T,
                   py::array_t<double, py::array::c_style | py::array::forcecast> pbar,
                   py::array_t<double, py::array::c_style | py::array::forcecast> s, double C,
-                  const std::string& localization) {
+                  const std::string& localization, const std::string& material_file) {
   const py::ssize_t n = l.size();
   for (const auto* a : {&dh, &T, &pbar, &s}) {
     if (a->size() != n) throw std::invalid_argument("classify: the arrays must have the same size (broadcast first)");
+  }
+  // The creep law: the standard linear solid at T, or a material file's law at its one
+  // parameter (the temperature, where it has a shift; none otherwise: T is then not read).
+  std::shared_ptr<const model::Material> material;
+  if (!material_file.empty()) {
+    if (material_file.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
+    material = app::read_material_file(material_file);
   }
   model::ContactProblem base;
   try {
@@ -199,7 +206,8 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
   } catch (const std::invalid_argument& e) {
     throw app::UsageError(std::string("--localization: ") + e.what());  // as read_localization says it
   }
-  const model::CreepLawSpec& law = model::creep_laws().front();  // the standard linear solid
+  const model::CreepLawSpec law = material ? material->spec() : model::creep_laws().front();
+  const bool law_has_value = !law.parameters.empty();
   if (const std::string e = check(*model::find_parameter(model::kShapeConstant), C); !e.empty()) {
     throw app::UsageError(e);
   }
@@ -207,10 +215,11 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
   const std::pair<const model::Parameter*, const double*> axes[] = {
       {model::find_parameter(model::kPitch), l.data()},
       {model::find_parameter(model::kHeightDifference), dh.data()},
-      {&law.parameters.front(), T.data()},
+      {law_has_value ? &law.parameters.front() : nullptr, T.data()},
       {model::find_parameter(model::kPressure), pbar.data()},
       {model::find_parameter(model::kExponent), s.data()}};
   for (const auto& [parameter, values] : axes) {
+    if (parameter == nullptr) continue;
     for (py::ssize_t i = 0; i < n; ++i) {
       if (const std::string e = check(*parameter, values[i]); !e.empty()) throw app::UsageError(e);
     }
@@ -255,10 +264,10 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
       problem.dh = DH[i];
       problem.pbar0 = P[i];
       problem.shape = model::Shape{static_cast<int>(S[i]), C};
-      auto& creep = laws[Key<1>{TT[i]}];
+      auto& creep = laws[Key<1>{law_has_value ? TT[i] : 0.0}];
       if (!creep) {
         const double value = TT[i];
-        creep = model::make_creep_law(law, std::span<const double>(&value, 1));
+        creep = model::make_creep_law(law, std::span<const double>(&value, law_has_value ? 1 : 0));
       }
       auto& parts = dh_cache[Key<3>{L[i], S[i], DH[i]}];
       if (!parts) parts = std::make_shared<const model::DhParts>(model::dh_parts(problem));
@@ -289,6 +298,7 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
   out["h_0"] = h_0;
   out["h_inf"] = h_inf;
   out["valid"] = valid;
+  out["time_unit"] = material ? material->time_unit() : std::string("T_eps");
   return out;
 }
 
@@ -320,7 +330,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("reference", &reference_command, py::arg("args"),
         "punchsweep reference ARGS, solved in-process: a dict of its JSON keys");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("T"), py::arg("pbar"), py::arg("s"),
-        py::arg("C"), py::arg("localization"),
+        py::arg("C"), py::arg("localization"), py::arg("material"),
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points (the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
 }

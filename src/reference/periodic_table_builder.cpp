@@ -209,6 +209,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
                                " is not in full contact at its end, xi = " + std::to_string(cap));
     }
   }
+  t.finish();
   return t;
 }
 

@@ -256,6 +256,10 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
           const double margin = std::min(0.1 * options.t_star_resolution, 0.25 * (hi - lo));
           trial = std::clamp(predicted + (aim_above ? offset : -offset), lo + margin, hi - margin);
         }
+        // A resolution below the rounding of t (a law whose shortest time is 1e-14 s, t*
+        // near 1e-5 s) leaves no time strictly inside the bracket: it is as narrow as the
+        // times can be.
+        if (!(trial > lo && trial < hi)) break;
         if (stepper.time() != lo) stepper.rewind(free_state);
         log(stepper.advance(trial));
         const bool loaded = level2_loaded(cell, stepper.pressure());

@@ -98,7 +98,7 @@ def random_points(count: int, seed: int) -> dict[str, np.ndarray]:
                 pbar=np.exp(rng.uniform(np.log(0.005), np.log(0.08), count)), s=rng.integers(1, 4, count).astype(float))
 
 
-@pytest.mark.parametrize("localization", ["refined", "paper"])
+@pytest.mark.parametrize("localization", ["refined", "paper", "periodic"])
 def test_classify_equals_point_on_random_points(localization):
     count = 10_000 if localization == "refined" else 2_000
     p = random_points(count, seed=14)
@@ -118,6 +118,36 @@ def test_classify_equals_point_on_random_points(localization):
     # The sample covers every regime and both validity flags.
     assert set(names) == {"immediate", "delayed", "never"}
     assert c["valid"].any() and not c["valid"].all()
+
+
+@pytest.mark.parametrize("localization", ["periodic", "refined"])
+def test_classify_takes_a_material_and_its_temperature(localization):
+    """classify(material=..., temperature=...) (issue 23): a Prony series with a WLF shift at
+    scattered temperatures, and one without a shift (no temperature), equal point() with
+    --material at every point, t* in the file's time unit."""
+    pla = str(REPO / "materials" / "pla_prusament_chapuis2025.ini")
+    rng = np.random.default_rng(23)
+    n = 300
+    l, dh = rng.uniform(0.5, 1.25, n), rng.uniform(0.005, 0.12, n)
+    pbar, s = np.exp(rng.uniform(np.log(0.005), np.log(0.08), n)), rng.integers(1, 4, n).astype(float)
+    temperature = rng.uniform(66, 85, n)
+    for material, temps in ((pla, temperature), (MATERIAL, None)):
+        c = punchsweep.classify(l, dh, pbar=pbar, s=s, localization=localization, material=material,
+                                temperature=temps)
+        assert c.time_unit == "s"
+        names = c.regime_names()
+        for i in range(0, n, 3):
+            extra = {} if temps is None else {"temperature": float(temps[i])}
+            r = punchsweep.point(l=l[i], dh=dh[i], pbar=pbar[i], s=int(s[i]), times=[0.0], material=material,
+                                 localization=localization, **extra)
+            assert names[i] == r.regime, (i, names[i], r.regime)
+            assert same_bits(c["t_star"][i], np.nan if r.t_star is None else r.t_star)
+            assert same_bits(c["h_inf"][i], r.h_inf) and bool(c["valid"][i]) == r.valid
+        assert len(set(names)) >= 2
+    with pytest.raises(ValueError, match="T is the standard linear solid"):
+        punchsweep.classify(0.75, 0.05, 2.5, 0.06, 2, material=pla, temperature=75)
+    with pytest.raises(ValueError, match="temperature"):
+        punchsweep.classify(0.75, 0.05, pbar=0.06, s=2, material=pla, temperature=200)
 
 
 def test_classify_broadcasts_like_numpy():

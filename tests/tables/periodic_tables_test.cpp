@@ -218,6 +218,7 @@ TEST(PeriodicModel, unloading_tables_flag_their_points) {
   const model::PeriodicTable honest = *app::shipped_periodic_table(2);
   model::PeriodicTable receding = honest;
   for (auto& m : receding.monotone2) m = 0;
+  receding.finish();
   model::set_periodic_table_source([&](int) { return std::make_shared<const model::PeriodicTable>(receding); });
   model::ContactProblem problem{0.75, 0.075, 0.06, {2, 0.5}};
   problem.localization = model::parse_localization("periodic");
@@ -231,4 +232,23 @@ TEST(PeriodicModel, unloading_tables_flag_their_points) {
   EXPECT_TRUE(model::summarize_point(problem, stiff).valid());
   model::set_periodic_table_source([&](int) { return std::make_shared<const model::PeriodicTable>(honest); });
   EXPECT_TRUE(model::summarize_point(problem, sls).valid());
+}
+
+// A law whose shortest time is 1e-14 s (PLA at 75 C) asks the reference for t* to 1e-17 s
+// near t* = 3.4e-5 s, below the rounding of t: the bracket stops where the times do (it
+// threw "t_next <= time()" before), and t* agrees with the periodic model's.
+TEST(PeriodicModel, reference_brackets_t_star_below_the_rounding_of_time) {
+  use_shipped_tables();
+  const std::string pla = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/pla_prusament_chapuis2025.ini";
+  const std::vector<std::string> args = {"--l", "0.7944700852445717", "--dh", "0.11277609697093839", "--pbar",
+                                         "0.02485329780948323", "--s", "2", "--material", pla, "--temperature", "75",
+                                         "--times", "0,0.001,0.1,10,1000"};
+  std::vector<std::string> bem = args, periodic = args;
+  bem.insert(bem.end(), {"--bem-grid", "64"});
+  periodic.insert(periodic.end(), {"--localization", "periodic"});
+  const app::ReferenceRun b = app::evaluate_reference_command(bem);
+  const model::PointResult m = app::evaluate_point_command(periodic).result;
+  ASSERT_EQ(b.result.regime, model::Regime::delayed);
+  ASSERT_EQ(m.regime, model::Regime::delayed);
+  EXPECT_NEAR(*b.result.t_star, *m.t_star, 1e-3 * *m.t_star);
 }

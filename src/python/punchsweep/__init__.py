@@ -157,9 +157,10 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
 @dataclass(frozen=True)
 class Classification(Mapping):
     """classify's arrays, all of the broadcast shape: regime (int8, the map's codes: see
-    REGIMES), t_star (float64 in T_eps, NaN for never), h_0 and h_inf (float64, in R), valid
-    (bool). Reads like a dict; regime_names() gives the regimes as text."""
+    REGIMES), t_star (float64 in time_unit, NaN for never), h_0 and h_inf (float64, in R),
+    valid (bool). Reads like a dict; regime_names() gives the regimes as text."""
     arrays: dict[str, np.ndarray] = field(repr=False)
+    time_unit: str = "T_eps"  #: the unit of t_star: T_eps, or the material file's
 
     def __getitem__(self, key: str) -> np.ndarray:
         return self.arrays[key]
@@ -176,17 +177,34 @@ class Classification(Mapping):
         return names[self.arrays["regime"]]
 
 
-def classify(l, dh, T, pbar, s, C: float = 0.5, localization: str = "refined") -> Classification:
-    """The regime, t*, h(0), h(inf) and validity of every point of a standard linear solid,
-    broadcasting l, dh, T, pbar and s (numbers or arrays) like numpy. The same numbers as
-    point() at each point. Points that share (l, s, dh) share the model's per-pitch work (a
-    grid is fast: over 1e6 points/s; scattered pitches and dh cost a curve each under the
-    refined model). ValueError with the command line's message for a value out of range."""
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, T, pbar, s)))
+def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str = "refined", *,
+             material: str | None = None, temperature=None) -> Classification:
+    """The regime, t*, h(0), h(inf) and validity of every point, broadcasting l, dh, pbar, s and
+    the law's parameter (numbers or arrays) like numpy: T of the standard linear solid, or with
+    material=FILE (a material file, as point()'s --material) its temperature in degC where the
+    file has a shift (none otherwise; T is then not given). The same numbers as point() at each
+    point; t* in T_eps, or in the material's time unit ("time_unit" says which). Points that
+    share (l, s, dh) share the model's per-pitch work (a grid is fast: over 1e6 points/s;
+    scattered pitches and dh cost a curve each under the refined model, a table row under
+    `periodic`). ValueError with the command line's message for a value out of range."""
+    if pbar is None or s is None:
+        raise ValueError("classify: pbar and s are required")
+    if material is None:
+        if T is None or temperature is not None:
+            raise ValueError("classify: give T (the standard linear solid), or material= (and temperature= "
+                             "where the material has a shift)")
+        law = T
+    else:
+        if T is not None:
+            raise ValueError("classify: T is the standard linear solid's; a material's law has its own "
+                             "(temperature= where the file has a shift)")
+        law = 0.0 if temperature is None else temperature
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, law, pbar, s)))
     shape = arrays[0].shape
     flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-    raw = _core.classify(*flat, float(C), str(localization))
-    return Classification({k: np.asarray(v).reshape(shape) for k, v in raw.items()})
+    raw = _core.classify(*flat, float(C), str(localization), "" if material is None else os.fspath(material))
+    unit = raw.pop("time_unit")
+    return Classification({k: np.asarray(v).reshape(shape) for k, v in raw.items()}, unit)
 
 
 class NotAMapError(ValueError):
