@@ -40,7 +40,9 @@ Touchdown PeriodicSingleLevel::touchdown(double dh) const {
 PeriodicBranch::PeriodicBranch(const ContactProblem& problem, const Touchdown& touch)
     : table_(&periodic_table(problem.shape.s)),
       scales_(problem),
-      row_(table_->row(problem.dh / scales_.h_unit)),
+      row_(problem.dh / scales_.h_unit <= table_->delta_top
+               ? table_->row(problem.dh / scales_.h_unit, touch.X_star / scales_.X_unit)
+               : table_->row(problem.dh / scales_.h_unit)),
       X_star_(touch.X_star) {}
 
 bool PeriodicBranch::covered() const { return row_.delta <= table_->delta_top || !std::isfinite(X_star_); }

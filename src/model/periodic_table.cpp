@@ -75,14 +75,20 @@ PeriodicState PeriodicTable::single(double xi) const {
 }
 
 double PeriodicTable::touchdown_v(double delta) const {
-  // h(v) increases: bisection on the interpolant, then two secant steps to round-off.
-  double lo = v_lo, hi = v_full;
-  const auto h_at = [&](double v) { return single(std::pow(v, s + 1)).h; };
-  for (int k = 0; k < 60 && hi - lo > 1e-15 * v_full; ++k) {
+  // h increases from sample to sample: the interval that holds delta, then bisection on the
+  // interval's cubic (the one single() evaluates there) to the rounding of its offset.
+  const int count = static_cast<int>(h1.size());
+  const int i = std::clamp(static_cast<int>(std::upper_bound(h1.begin(), h1.end(), delta) - h1.begin()) - 1, 0,
+                           count - 2);
+  const int first = std::clamp(i - 1, 0, count - 4);  // as interpolate() picks its nodes
+  const double shift = i - first - 1;
+  double lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 56 && hi - lo > 0.0; ++k) {
     const double mid = 0.5 * (lo + hi);
-    (h_at(mid) < delta ? lo : hi) = mid;
+    if (mid == lo || mid == hi) break;
+    (cubic(h1[first], h1[first + 1], h1[first + 2], h1[first + 3], mid + shift) < delta ? lo : hi) = mid;
   }
-  return 0.5 * (lo + hi);
+  return v_lo + (v_full - v_lo) * (i + 0.5 * (lo + hi)) / (count - 1);
 }
 
 std::optional<double> PeriodicTable::touchdown(double delta) const {
@@ -93,12 +99,16 @@ std::optional<double> PeriodicTable::touchdown(double delta) const {
 }
 
 PeriodicTable::Row PeriodicTable::row(double delta) const {
+  const std::optional<double> star = touchdown(std::clamp(delta, 0.0, delta_top));
+  return row(delta, star ? *star : kInf);
+}
+
+PeriodicTable::Row PeriodicTable::row(double delta, double xi_star) const {
   Row out;
   out.delta = delta;
   out.in_range = delta >= 0.0 && delta <= delta_top;
   const double d = std::clamp(delta, 0.0, delta_top);
-  const std::optional<double> star = touchdown(d);
-  out.xi_star = star ? *star : kInf;
+  out.xi_star = xi_star;
   if (!std::isfinite(out.xi_star)) out.in_range = false;
   const GridPosition dj = locate(d, 0.0, delta_top, J);
   out.interval = dj.i;

@@ -83,6 +83,8 @@ class PeriodicTable {
     bool in_range = true;     ///< delta <= delta_top
   };
   Row row(double delta) const;
+  /// The same where touchdown(delta) is known (delta <= delta_top; else the row's end).
+  Row row(double delta, double xi_star) const;
   /// Two levels at (xi, delta), xi >= xi*(delta). in_range false for delta > delta_top.
   PeriodicState two_level(double xi, double delta) const { return two_level(xi, row(delta)); }
   PeriodicState two_level(double xi, const Row& row) const;

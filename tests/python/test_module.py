@@ -115,9 +115,13 @@ def test_classify_equals_point_on_random_points(localization):
         if not (row[0] == want[0] and all(same_bits(a, b) for a, b in zip(row[1:4], want[1:4])) and row[4] == want[4]):
             mismatches.append((i, row, want))
     assert not mismatches, mismatches[:5]
-    # The sample covers every regime and both validity flags.
+    # The sample covers every regime and, for the localization models, both validity flags;
+    # the periodic model holds at all of them (merged spots are part of its solution).
     assert set(names) == {"immediate", "delayed", "never"}
-    assert c["valid"].any() and not c["valid"].all()
+    if localization == "periodic":
+        assert c["valid"].all()
+    else:
+        assert c["valid"].any() and not c["valid"].all()
 
 
 @pytest.mark.parametrize("localization", ["periodic", "refined"])
