@@ -117,7 +117,7 @@ bool spot_check(const model::PeriodicTable& table, std::uint64_t seed) {
   for (int j = 0; j < table.J; ++j) {
     const int k = 1 + draw(table.K - 1);
     const double delta = table.delta_top * j / (table.J - 1);
-    const double xi = table.xi_star[j] + std::pow(table.w_full[j] * k / (table.K - 1), table.s + 1);
+    const double xi = table.xi_star[j] + std::pow(table.w_full[j] * k / (table.K - 1), table.row_power());
     const model::PeriodicState direct = reference::solve_scaled(table.s, xi, delta, table.n);
     const std::size_t at = static_cast<std::size_t>(j) * table.K + k;
     if (!agrees(table.Q2[at], direct.Q2, kLoadAgreement, 1e-9 * xi) || !same_area(table.a1[at], direct.a1, table.n) ||

@@ -123,7 +123,7 @@ PeriodicState PeriodicTable::two_level(double xi, const Row& row) const {
   out.in_range = row.in_range;
   if (!std::isfinite(row.xi_star)) return out;
   const double excess = std::max(xi - row.xi_star, 0.0);
-  const double r = std::pow(excess, 1.0 / (s + 1)) / row.w_full;
+  const double r = std::pow(excess, 1.0 / row_power()) / row.w_full;
   // The bicubic: in r along each of the four rows about delta, then across them.
   const GridPosition rk = locate(std::min(r, 1.0), 0.0, 1.0, K);
   const int first = std::clamp(row.interval - 1, 0, J - 4);  // J >= 4 (from_tables)
@@ -140,7 +140,7 @@ PeriodicState PeriodicTable::two_level(double xi, const Row& row) const {
   const double rate = std::max(at(q2_rate_), 0.0);
   if (r > 1.0) {
     // Full contact: the areas stay, the extra load spreads evenly over the cell.
-    const double excess_full = std::pow(row.w_full, s + 1);
+    const double excess_full = std::pow(row.w_full, row_power());
     out.Q2 = rate * excess_full + row.share2 * (excess - excess_full);
   } else {
     out.Q2 = rate * excess;
@@ -154,7 +154,7 @@ bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, const Row& row) 
   if (all_monotone_ || xi_b <= xi_a) return true;
   if (std::isfinite(row.xi_star) && xi_b > row.xi_star) {
     const auto index = [&](double xi) {
-      const double r = std::pow(std::max(xi - row.xi_star, 0.0), 1.0 / (s + 1)) / row.w_full;
+      const double r = std::pow(std::max(xi - row.xi_star, 0.0), 1.0 / row_power()) / row.w_full;
       return std::min(static_cast<int>(std::floor(r * (K - 1))), K - 1);  // K - 1: beyond the rows' end
     };
     const int lo = index(std::max(xi_a, row.xi_star)), hi = index(xi_b);
@@ -187,7 +187,7 @@ void PeriodicTable::finish() {
   for (int j = 0; j < J; ++j) {
     double* rate = &q2_rate_[static_cast<std::size_t>(j) * K];
     const double* load = &Q2[static_cast<std::size_t>(j) * K];
-    for (int k = 1; k < K; ++k) rate[k] = load[k] / std::pow(w_full[j] * k / (K - 1), s + 1);
+    for (int k = 1; k < K; ++k) rate[k] = load[k] / std::pow(w_full[j] * k / (K - 1), row_power());
     rate[0] = 3.0 * rate[1] - 3.0 * rate[2] + rate[3];  // the parabola through k = 1, 2, 3 at 0
   }
 }
@@ -260,12 +260,12 @@ std::optional<PeriodicTable> PeriodicTable::from_tables(const std::vector<double
   }
   // The rows' bookkeeping follows from the single level: each row starts at its touchdown
   // and all end at one load, in full contact (the areas are the levels' shares there).
-  const double cap = t.xi_star[0] + std::pow(t.w_full[0], t.s + 1);
+  const double cap = t.xi_star[0] + std::pow(t.w_full[0], t.row_power());
   for (int j = 0; j < t.J; ++j) {
     const std::optional<double> star = t.touchdown(t.delta_top * j / (t.J - 1));
     const std::size_t end = static_cast<std::size_t>(j) * K + K - 1;
     if (!star || std::abs(*star - t.xi_star[j]) > 1e-12 * (1.0 + *star) ||
-        std::abs(t.xi_star[j] + std::pow(t.w_full[j], t.s + 1) - cap) > 1e-9 * cap ||
+        std::abs(t.xi_star[j] + std::pow(t.w_full[j], t.row_power()) - cap) > 1e-9 * cap ||
         !(t.share2[j] >= 0.0 && t.share2[j] <= 0.5) ||
         std::abs(t.a2[end] - std::sqrt(t.share2[j] / std::numbers::pi)) > 1e-9 ||
         std::abs(t.a1[end] - std::sqrt((1.0 - t.share2[j]) / std::numbers::pi)) > 1e-9) {

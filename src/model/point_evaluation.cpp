@@ -60,6 +60,11 @@ double area_fraction(double a1, double a2, double l) {
   return std::numbers::pi * (a1 * a1 + a2 * a2) / (l * l);
 }
 
+/// A level's load below this share of the nominal load counts as negative under the periodic
+/// model: well above the tables' interpolation noise (Q2 to about 1e-7 of the load just
+/// after touchdown, where it starts from zero), well below a receding contact's.
+constexpr double kPeriodicNegativeLoad = 1e-5;
+
 /// The periodic model's own rules (docs/model.md, section 14): its two-level states must lie
 /// in its tables, and the contact must not recede along the point's loads (each node's
 /// elastic pressure grows with X, the tables' record). They replace any other flag: the
@@ -144,8 +149,8 @@ std::string PointSummary::reason(std::string_view time_unit) const {
       break;
     case Validity::outside_table:
       out << "the periodic model's tables do not reach this point's two-level states: dh / (C l^s) is above the "
-             "tables' top, 0.97 (1/sqrt(2))^s, where the level-2 spot is a sliver of the cell (the regime and t* "
-             "are exact; use --localization refined or the reference for the rest)";
+             "tables' top, " << PeriodicTable::kTopShare << " (1/sqrt(2))^s, where the level-2 spot is a sliver of "
+             "the cell (the regime and t* are exact; `punchsweep reference` answers the rest)";
       break;
     case Validity::unloading:
       out << "the contact may recede along this point's loads (an elastic pressure of the cell falls as X grows, "
@@ -460,7 +465,7 @@ PointResult evaluate_series(const ContactProblem& problem, const CreepLaw& creep
         flag_inaccurate(out, PointSummary::Invariant::loads_sum, sum, nominal_load, snap.t);
       } else if (!radii_ordered(snap.a1, snap.a2)) {
         flag_inaccurate(out, PointSummary::Invariant::radii_order, snap.a2, snap.a1, snap.t);
-      } else if (problem.localization.periodic && (snap.P1 < 0.0 || snap.P2 < 0.0)) {
+      } else if (problem.localization.periodic && std::min(snap.P1, snap.P2) < -kPeriodicNegativeLoad * nominal_load) {
         flag(out, {Validity::unloading, std::min(snap.P1, snap.P2), 0.0}, snap.t);
       }
     }

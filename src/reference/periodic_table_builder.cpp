@@ -190,7 +190,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
     // percent from one delta to the next (which node is last is a matter of the grid), so
     // rows normalised by their own full contact do not line up across delta (measured:
     // twice the error of this common end).
-    const double w_full = std::pow(cap - star, 1.0 / (s + 1));
+    const double w_full = std::pow(cap - star, 1.0 / t.row_power());
     t.w_full[j] = w_full;
     const std::size_t row = static_cast<std::size_t>(j) * t.K;
     // r = 0: the touchdown, the single-level state (a2 = 0, Q2 = 0).
@@ -198,7 +198,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
     if (star > 0.0) path.solve(star);  // the pressure to start from
     for (int k = 1; k < t.K; ++k) {
       const double r = static_cast<double>(k) / (t.K - 1);
-      const ReferenceSnapshot state = path.solve(star + std::pow(r * w_full, s + 1));
+      const ReferenceSnapshot state = path.solve(star + std::pow(r * w_full, t.row_power()));
       t.a1[row + k] = state.a1;
       t.a2[row + k] = state.a2;
       t.Q2[row + k] = state.P2;

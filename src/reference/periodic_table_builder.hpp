@@ -20,7 +20,7 @@ struct PeriodicTableOptions {
   int deltas = 33;          ///< two-level surface: values of delta on [0, delta_top]
   int r_samples = 41;       ///< ... and of r on [0, 1] per delta
   /// delta_top as a share of 2^(-s/2), where the level-2 punch hides under level 1.
-  double delta_top_share = 0.97;
+  double delta_top_share = model::PeriodicTable::kTopShare;
   ContactSolverOptions solver{};
   model::StopRequest stop{};
   /// Called after every contact solve with (solves done, solves planned).

@@ -81,7 +81,7 @@ TEST(PeriodicTable, bookkeeping_round_trips_and_balances_the_load) {
   }
   // Level 2 hides under level 1 from delta = 2^(-s/2) on: it never touches.
   EXPECT_EQ(*t.touchdown(0.5), kInf);
-  EXPECT_FALSE(t.two_level(1.0, 0.49).in_range);  // above delta_top = 0.97 / 2
+  EXPECT_FALSE(t.two_level(1.0, 0.498).in_range);  // above delta_top = 0.99 / 2
   // Edited rows fail the bookkeeping: a touchdown that is not the single level's.
   std::vector<double> numbers = t.tables();
   model::PeriodicTable edited = t;

@@ -156,7 +156,10 @@ TEST(PeriodicTableCache, concurrent_builders_build_once) {
 // (where the refined model is invalid), a Prony series with a WLF shift, a ramp, a cone.
 // Regimes agree, t* to 1e-4 (the reference brackets it to 1e-3 and extrapolates the gap),
 // loads to 1e-3 of pbar l^2, radii and area fraction to 1% (plus two grid spacings: a rim
-// moves by whole nodes).
+// moves by whole nodes). In full contact (the PLA point: rubbery at 75 C, it creeps until
+// every node touches) the loads split as the levels' shares of the cell, which a grid
+// counts node by node (a staircase of +-0.5% in delta at N = 512, the tables' shares within
+// 0.3% of N = 8192's: docs/model.md, section 14.4): there the loads are held to 3e-3.
 TEST(PeriodicModel, agrees_with_the_time_stepping_reference) {
   use_shipped_tables();
   const std::string pla = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/pla_prusament_chapuis2025.ini";
@@ -187,8 +190,9 @@ TEST(PeriodicModel, agrees_with_the_time_stepping_reference) {
       const model::Snapshot& s = m.result.series[k];
       const reference::ReferenceSnapshot& r = b.result.series[k];
       const double nominal = s.P1 + s.P2;  // = pbar(t) l^2 (checked by the model to 1e-8)
-      EXPECT_NEAR(s.P1, r.P1, 1e-3 * nominal) << text << " t " << s.t;
-      EXPECT_NEAR(s.P2, r.P2, 1e-3 * nominal) << text << " t " << s.t;
+      const double loads = (r.area_fraction >= 1.0 ? 3e-3 : 1e-3) * nominal;
+      EXPECT_NEAR(s.P1, r.P1, loads) << text << " t " << s.t;
+      EXPECT_NEAR(s.P2, r.P2, loads) << text << " t " << s.t;
       EXPECT_NEAR(s.a1, r.a1, 0.01 * r.a1 + 2.0 * l / 512) << text << " t " << s.t;
       EXPECT_NEAR(s.a2, r.a2, 0.01 * r.a2 + 2.0 * l / 512) << text << " t " << s.t;
       EXPECT_NEAR(s.area_fraction, r.area_fraction, 0.01 * r.area_fraction) << text << " t " << s.t;
