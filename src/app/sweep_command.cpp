@@ -1,9 +1,6 @@
 #include "app/sweep_command.hpp"
 
-#include <mpi.h>
-#include <unistd.h>
 #ifdef __linux__
-#include <sys/prctl.h>
 #endif
 
 #include <algorithm>
@@ -33,6 +30,7 @@
 #include "run/output_lock.hpp"
 #include "run/preflight.hpp"
 #include "run/text_lines.hpp"
+#include "sweep/mpi_session.hpp"
 #include "sweep/scheduler.hpp"
 #include "sweep/tile_evaluator.hpp"
 
@@ -44,35 +42,6 @@ namespace {
 volatile std::sig_atomic_t g_stop_signal = 0;
 
 extern "C" void on_stop_signal(int signal) { g_stop_signal = signal; }
-
-/// MPI for the life of the command.
-class MpiSession {
- public:
-  MpiSession() {
-#ifdef __linux__
-    // Under Open MPI's launcher a rank must not outlive it: after `kill -9 mpirun` orphans
-    // would go on writing the map that --resume is about to rebuild. (Only there: a
-    // singleton run may well be meant to outlive its shell.)
-    if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr) {
-      prctl(PR_SET_PDEATHSIG, SIGKILL);
-      if (getppid() == 1) std::_Exit(1);  // the launcher died before prctl took effect
-    }
-#endif
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
-  }
-  ~MpiSession() { MPI_Finalize(); }
-  MpiSession(const MpiSession&) = delete;
-  MpiSession& operator=(const MpiSession&) = delete;
-  int rank() const { return rank_; }
-  int size() const { return size_; }
-
- private:
-  int rank_ = 0;
-  int size_ = 1;
-};
 
 // The arguments as a shell would need them typed again (the resume hint is copy-pasted).
 std::string command_line(const std::vector<std::string>& args) {
@@ -241,8 +210,8 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
 
   run::MapRun map_run(config, layout, attributes, start, tiling, std::cerr);
   const sweep::ScheduleResult result =
-      sweep::run_schedule(MPI_COMM_WORLD, map_run.pending(), work,
-                          [&](std::span<const std::byte> bytes) { map_run.accept(bytes); }, &g_stop_signal);
+      sweep::run_world_schedule(map_run.pending(), work,
+                                [&](std::span<const std::byte> bytes) { map_run.accept(bytes); }, &g_stop_signal);
   if (result.interrupted) {
     map_run.interrupt();
     const int signal = result.stop_signal != 0 ? result.stop_signal : static_cast<int>(g_stop_signal);
@@ -263,7 +232,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
 }  // namespace
 
 int run_sweep_command(const std::vector<std::string>& args) {
-  MpiSession mpi;
+  sweep::MpiSession mpi;
   const bool root = mpi.rank() == 0;
   std::ostringstream discard;
   sweep::SweepConfig config;
@@ -290,8 +259,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
         if (auto taken = run::OutputLock::take(paths, command_line(args), &refusal)) lock.emplace(std::move(*taken));
       }
     }
-    int refused = root && !lock ? 1 : 0;
-    MPI_Bcast(&refused, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    const int refused = sweep::share_from_root(root && !lock ? 1 : 0);
     if (refused != 0) {
       if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
       return kUsageExitCode;
@@ -304,7 +272,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     run::resolve_chunk(config, run::OutputPaths(config.output), mpi.size());
     chunk = config.chunk;
   }
-  MPI_Bcast(&chunk, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  chunk = sweep::share_from_root(chunk);
   sweep::set_chunk(config, static_cast<std::size_t>(chunk));
 
   const map::Tiling tiling(config.grid.shape(), config.tile_points());
@@ -317,15 +285,14 @@ int run_sweep_command(const std::vector<std::string>& args) {
   run::Start start = run::Start::fresh;
   std::string refusal;
   if (root) refusal = run::preflight(config, run::OutputPaths(config.output), &start);
-  int verdict[2] = {refusal.empty() ? 0 : 1, static_cast<int>(start)};
-  MPI_Bcast(verdict, 2, MPI_INT, 0, MPI_COMM_WORLD);
-  if (verdict[0] != 0) {
+  const int refused_start = sweep::share_from_root(refusal.empty() ? 0 : 1);
+  if (refused_start != 0) {
     if (root) {
       for (const std::string& line : run::split_lines(refusal)) std::cerr << "punchsweep sweep: " << line << "\n";
     }
     return kUsageExitCode;
   }
-  start = static_cast<run::Start>(verdict[1]);
+  start = static_cast<run::Start>(sweep::share_from_root(static_cast<int>(start)));
   if (start == run::Start::already_complete) {
     if (root && !config.quiet) {
       std::cerr << "punchsweep sweep: " << config.output << " is already complete; nothing to resume\n";
@@ -351,8 +318,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
                   << (free < 0 ? std::string("free space unknown") : run::format_bytes(free) + " free") << ")\n";
       }
     }
-    int room = refusal.empty() ? 0 : 1;
-    MPI_Bcast(&room, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    const int room = sweep::share_from_root(refusal.empty() ? 0 : 1);
     if (room != 0) {
       if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
       return kUsageExitCode;
@@ -365,11 +331,11 @@ int run_sweep_command(const std::vector<std::string>& args) {
     if (root) {
       code = manage(config, args, start, tiling, work, layout, mpi.size());
     } else {
-      sweep::run_schedule(MPI_COMM_WORLD, {}, work, {}, &g_stop_signal);
+      sweep::run_world_schedule({}, work, {}, &g_stop_signal);
     }
   } catch (const std::exception& e) {
     std::cerr << "punchsweep sweep: rank " << mpi.rank() << ": " << e.what() << "\n";
-    MPI_Abort(MPI_COMM_WORLD, 1);
+    sweep::abort_all_ranks(1);
   }
   return code;
 }

@@ -1,0 +1,49 @@
+#include "sweep/mpi_session.hpp"
+
+#include <mpi.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+#include <cstdlib>
+
+namespace punchsweep::sweep {
+
+MpiSession::MpiSession() {
+#ifdef __linux__
+  // Only under the launcher: a singleton run may well be meant to outlive its shell.
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() == 1) std::_Exit(1);  // the launcher died before prctl took effect
+  }
+#endif
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() { MPI_Finalize(); }
+
+int share_from_root(int value) {
+  MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return value;
+}
+
+std::uint64_t share_from_root(std::uint64_t value) {
+  MPI_Bcast(&value, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  return value;
+}
+
+ScheduleResult run_world_schedule(const TileRanges& pending, const TileWork& work, const TileSink& sink,
+                                  const volatile std::sig_atomic_t* stop) {
+  return run_schedule(MPI_COMM_WORLD, pending, work, sink, stop);
+}
+
+void abort_all_ranks(int code) {
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::abort();  // MPI_Abort does not return; the compiler does not know it
+}
+
+}  // namespace punchsweep::sweep
