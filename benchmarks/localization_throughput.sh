@@ -27,14 +27,8 @@ production=(--grid.l 'linspace(0.4, 1.6, 2)' --grid.dh 'linspace(0.001, 0.15, 10
 full=(--grid.l 'linspace(0.5, 1.25, 4)' --grid.dh 'linspace(0.01, 0.12, 10)' --grid.T 'linspace(2, 10, 5)'
       --grid.pbar 'logspace(0.005, 0.08, 12)' --grid.s 1,2,3 --time.times '0, 0.5, 1, 2, 5' --quantities full)
 
-rate() {  # rate ARGS...: the engine's points/s of one sweep, and the command's wall seconds
-  local start end
-  start=$(date +%s.%N)
-  "$bin" sweep "$@" --quiet --overwrite --output "$work/map.h5"
-  end=$(date +%s.%N)
-  printf '%s %s' "$(h5dump -a /points_per_second "$work/map.h5" | sed -n 's/.*(0): \(.*\)/\1/p')" \
-    "$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }')"
-}
+# shellcheck source=benchmarks/sweep_rate.sh
+source "$root/benchmarks/sweep_rate.sh"
 
 printf '%-10s %-10s %-10s %-8s %-9s %s\n' grid paper refined ratio "paper s" "refined s (points/s, one rank, $repeats runs interleaved; s: wall)"
 for grid in regime production full; do

@@ -20,14 +20,8 @@ regime=(--grid.l 'linspace(0.5, 1.25, 7)' --grid.dh 'linspace(0.01, 0.12, 111)' 
         --grid.pbar 'logspace(0.005, 0.08, 200)' --grid.s 1,2,3 --quantities regime)
 full=(--config "$root/sweeps/default.ini" --quantities full)
 
-rate() {  # rate ARGS...: the engine's points/s of one sweep, and the command's wall seconds
-  local start end
-  start=$(date +%s.%N)
-  "$bin" sweep "$@" --quiet --overwrite --output "$work/map.h5"
-  end=$(date +%s.%N)
-  printf '%s %s' "$(h5dump -a /points_per_second "$work/map.h5" | sed -n 's/.*(0): \(.*\)/\1/p')" \
-    "$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }')"
-}
+# shellcheck source=benchmarks/sweep_rate.sh
+source "$root/benchmarks/sweep_rate.sh"
 
 printf '%-7s %-10s %-10s %-10s %-16s %s\n' grid paper refined periodic "periodic/paper" "wall s: paper refined periodic (points/s, one rank)"
 for grid in regime full; do

@@ -42,21 +42,8 @@ class Path {
 
   /// The state at load xi (from the last pressure; `keep` false leaves it as it was).
   ReferenceSnapshot solve(double xi, bool keep = true) {
-    options_.stop.throw_if_requested();
-    std::vector<double> p = p_, u(u_.size());
-    ContactStatus status = solver_.solve(cell_.profile, xi, 1.0, p, u);
-    if (!status.converged) {
-      // A start from a contact of a node or two can stall the iteration (small loads on a
-      // coarse grid): once more from the uniform pressure.
-      std::fill(p.begin(), p.end(), 0.0);
-      status = solver_.solve(cell_.profile, xi, 1.0, p, u);
-    }
-    if (!status.converged) {
-      throw std::runtime_error("a contact solve of the periodic tables missed its tolerance at xi = " +
-                               std::to_string(xi) + " (residual " + std::to_string(status.residual) + ")");
-    }
-    ++*done_;
-    if (options_.progress) options_.progress(*done_, planned_);
+    std::vector<double> p, u;
+    solve_fields(xi, &p, &u);
     const ReferenceSnapshot state = measure_state(cell_, p, u, 0.0);
     if (keep) {
       monotone_ = true;
@@ -71,20 +58,10 @@ class Path {
     last_full_ = std::all_of(p_.begin(), p_.end(), [](double x) { return x > 0.0; });
     return state;
   }
+  /// Whether every node is in contact at load xi (the last pressure is kept as it was).
   bool full(double xi) {
-    std::vector<double> p = p_, u(u_.size());
-    options_.stop.throw_if_requested();
-    ContactStatus status = solver_.solve(cell_.profile, xi, 1.0, p, u);
-    if (!status.converged) {
-      std::fill(p.begin(), p.end(), 0.0);
-      status = solver_.solve(cell_.profile, xi, 1.0, p, u);
-    }
-    if (!status.converged) {
-      throw std::runtime_error("a contact solve of the periodic tables missed its tolerance at xi = " +
-                               std::to_string(xi) + " (residual " + std::to_string(status.residual) + ")");
-    }
-    ++*done_;
-    if (options_.progress) options_.progress(*done_, planned_);
+    std::vector<double> p, u;
+    solve_fields(xi, &p, &u);
     return std::all_of(p.begin(), p.end(), [](double x) { return x > 0.0; });
   }
   /// Whether no node's pressure fell in the last kept solve.
@@ -100,6 +77,26 @@ class Path {
   void reset() { std::fill(p_.begin(), p_.end(), 0.0); }
 
  private:
+  /// The pressure and displacement at load xi, from the last kept pressure: a start from a
+  /// contact of a node or two can stall the iteration (small loads on a coarse grid), so
+  /// once more from the uniform pressure before giving up.
+  void solve_fields(double xi, std::vector<double>* p, std::vector<double>* u) {
+    options_.stop.throw_if_requested();
+    *p = p_;
+    u->assign(u_.size(), 0.0);
+    ContactStatus status = solver_.solve(cell_.profile, xi, 1.0, *p, *u);
+    if (!status.converged) {
+      std::fill(p->begin(), p->end(), 0.0);
+      status = solver_.solve(cell_.profile, xi, 1.0, *p, *u);
+    }
+    if (!status.converged) {
+      throw std::runtime_error("a contact solve of the periodic tables missed its tolerance at xi = " +
+                               std::to_string(xi) + " (residual " + std::to_string(status.residual) + ")");
+    }
+    ++*done_;
+    if (options_.progress) options_.progress(*done_, planned_);
+  }
+
   TwoLevelCell cell_;
   ContactSolver solver_;
   std::vector<double> p_, u_;

@@ -58,9 +58,10 @@ def test_flag_variables_carry_their_meanings_and_no_fill_value(full_map):
         assert regime.dtype == np.int8 and "_FillValue" not in regime.encoding
         assert list(regime.attrs["flag_values"]) == [0, 1, 2, -1]
         assert regime.attrs["flag_meanings"] == "immediate delayed never not_computed"
-        assert list(ds.valid.attrs["flag_values"]) == [0, 1, 2, 3, 4, -1]
+        assert list(ds.valid.attrs["flag_values"]) == [0, 1, 2, 3, 4, 5, 6, -1]
         assert ds.valid.attrs["flag_meanings"].split() == [
-            "valid", "same_level_overlap", "cross_level_overlap", "no_solution", "inaccurate", "not_computed"]
+            "valid", "same_level_overlap", "cross_level_overlap", "no_solution", "inaccurate", "outside_table",
+            "unloading", "not_computed"]
         codes = set(np.unique(regime.values))
         assert codes <= {0, 1, 2} and len(codes) == 3  # every point computed, all regimes present
 
