@@ -4,6 +4,8 @@
 #include <limits>
 #include <numbers>
 
+#include "model/integer_power.hpp"
+
 namespace punchsweep::model {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -11,9 +13,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
 PeriodicScales::PeriodicScales(const ContactProblem& problem)
-    : X_unit(problem.shape.C * std::pow(problem.l, problem.shape.s - 1)),
-      h_unit(problem.shape.C * std::pow(problem.l, problem.shape.s)),
-      Q_unit(problem.shape.C * std::pow(problem.l, problem.shape.s + 1)),
+    : X_unit(problem.shape.C * ipow(problem.l, problem.shape.s - 1)),
+      h_unit(X_unit * problem.l),
+      Q_unit(h_unit * problem.l),
       l(problem.l) {}
 
 PeriodicSingleLevel::PeriodicSingleLevel(const ContactProblem& problem)

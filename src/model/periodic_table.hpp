@@ -50,7 +50,7 @@ class PeriodicTable {
   /// samples close together after touchdown, where level 2's spot and load change fastest
   /// (measured at s = 1, 2, 3 against direct solves: a power s, with which an isolated
   /// punch's radius would grow linearly in r, left errors 3-10 times larger there).
-  double row_power() const { return s + 1; }
+  int row_power() const { return s + 1; }
 
   int s = 2;
   int n = 512;  ///< boundary-element grid (n x n on the cell, solved on its quarter)

@@ -264,22 +264,29 @@ py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast>
     // shared across T and dh, h(inf) at X(inf) = pbar J(inf) across dh. Kept per (s, l)
     // group, and only for groups of more than one dh (a grid's), where it is reused.
     std::unordered_map<double, model::SingleLevelState> single_cache;  // X, within one (s, l)
-    // The creep laws of the last values met (a grid's T axis repeats; scattered T do not).
-    constexpr std::size_t kLawCache = 64;
+    // The creep laws of the last values met: a grid's points come in runs of one T (its
+    // pressures), so the last one is tried first; scattered T miss and make their own.
+    constexpr std::size_t kLawCache = 16;
     std::vector<std::pair<double, std::unique_ptr<model::CreepLaw>>> laws;
-    std::size_t next_law = 0;
+    std::size_t next_law = 0, last_law = 0;
+    const auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
     const auto law_at = [&](double value) -> const model::CreepLaw& {
-      for (const auto& [v, creep] : laws) {
-        if (std::bit_cast<std::uint64_t>(v) == std::bit_cast<std::uint64_t>(value)) return *creep;
+      if (last_law < laws.size() && same(laws[last_law].first, value)) return *laws[last_law].second;
+      for (std::size_t k = 0; k < laws.size(); ++k) {
+        if (same(laws[k].first, value)) {
+          last_law = k;
+          return *laws[k].second;
+        }
       }
       auto made = model::make_creep_law(law, std::span<const double>(&value, law_has_value ? 1 : 0));
       if (laws.size() < kLawCache) {
         laws.emplace_back(value, std::move(made));
-        return *laws.back().second;
+        last_law = laws.size() - 1;
+      } else {
+        last_law = next_law++ % kLawCache;
+        laws[last_law] = {value, std::move(made)};
       }
-      auto& slot = laws[next_law++ % kLawCache];
-      slot = {value, std::move(made)};
-      return *slot.second;
+      return *laws[last_law].second;
     };
     // The elastic start at t = 0 has modulus 1/J(0) = 1 for every T: per (l, s, dh, pbar),
     // within a dh group. Kept for the paper's model, whose start is a Newton solve (3 us: the
