@@ -177,10 +177,8 @@ std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
   }
   const std::string name = model::PeriodicTable::table_name(s, n);
   std::optional<FileLock> lock;
-  if (folder) {
-    std::error_code error;
-    std::filesystem::create_directories(*folder, error);
-    if (untrusted_folder(*folder).empty()) lock.emplace(*folder / (name + ".lock"));
+  if (folder && make_private_folder(*folder)) {
+    lock.emplace(*folder / (name + ".lock"));
     // Under the lock: a builder before us has saved its tables by now.
     if (std::optional<model::PeriodicTable> cached = model::PeriodicTable::from_tables(read_tables(*folder / name))) {
       if (cached->s == s && cached->n == n && spot_check(*cached, std::random_device{}())) {

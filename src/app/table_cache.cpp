@@ -111,14 +111,17 @@ std::vector<double> read_tables(const std::filesystem::path& file) {
   return values;
 }
 
-void write_tables(const std::filesystem::path& file, const std::vector<double>& tables) {
-  const std::filesystem::path folder = file.parent_path();
+bool make_private_folder(const std::filesystem::path& folder) {
   if (::mkdir(folder.c_str(), 0700) != 0 && errno == ENOENT) {
     std::error_code error;
     std::filesystem::create_directories(folder.parent_path(), error);
     ::mkdir(folder.c_str(), 0700);
   }
-  if (!untrusted_folder(folder).empty()) return;
+  return untrusted_folder(folder).empty();
+}
+
+void write_tables(const std::filesystem::path& file, const std::vector<double>& tables) {
+  if (!make_private_folder(file.parent_path())) return;
   std::random_device random;
   std::filesystem::path temporary = file;
   temporary += ".part." + std::to_string(::getpid()) + "." + std::to_string(random());

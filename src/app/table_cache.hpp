@@ -29,6 +29,10 @@ TableCacheFolder table_cache_folder();
 /// A folder that does not exist yet is fine (write_tables creates it, mode 0700).
 std::string untrusted_folder(const std::filesystem::path& folder);
 
+/// Makes `folder` (mode 0700, its parents as the umask says) if it does not exist, and
+/// whether it may then be trusted with tables (untrusted_folder).
+bool make_private_folder(const std::filesystem::path& folder);
+
 /// A file of the cache: "PSWTAB01", the count n (uint64), n doubles and their FNV-1a hash
 /// (uint64), host byte order. read_tables gives empty for a missing, short, damaged or
 /// oversized file, one whose size does not match its count (checked before any memory is

@@ -91,13 +91,17 @@ TEST(ShippedTables, meet_direct_solves_between_their_samples) {
 // The cache keeps what it builds, gives it back after a spot check, refuses an edited file
 // (its checksum recomputed: what a forger would do) and builds again.
 TEST(PeriodicTableCache, keeps_checks_and_refuses_forgeries) {
-  const ScratchFolder folder;
+  const ScratchFolder scratch;
+  // A cache folder that does not exist yet is made private (0700), as write_tables makes it.
+  const std::filesystem::path folder = scratch.path / "cache";
   app::TableOrigin origin{};
-  const auto built = app::periodic_table_for(4, 32, folder.path, true, {}, &origin);
+  const auto built = app::periodic_table_for(4, 32, folder, true, {}, &origin);
   EXPECT_EQ(origin, app::TableOrigin::built);
-  const std::filesystem::path file = folder.path / model::PeriodicTable::table_name(4, 32);
+  EXPECT_EQ(std::filesystem::status(folder).permissions() & std::filesystem::perms::all,
+            std::filesystem::perms::owner_all);
+  const std::filesystem::path file = folder / model::PeriodicTable::table_name(4, 32);
   ASSERT_TRUE(std::filesystem::exists(file));
-  const auto again = app::periodic_table_for(4, 32, folder.path, true, {}, &origin);
+  const auto again = app::periodic_table_for(4, 32, folder, true, {}, &origin);
   EXPECT_EQ(origin, app::TableOrigin::cache);
   EXPECT_EQ(again->tables(), built->tables());
   // Honest tables pass the check whatever sample it draws.
@@ -118,13 +122,13 @@ TEST(PeriodicTableCache, keeps_checks_and_refuses_forgeries) {
   ASSERT_TRUE(model::PeriodicTable::from_tables(forged.tables()));
   for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_FALSE(app::spot_check(forged, seed)) << seed;
   app::write_tables(file, forged.tables());
-  const auto rebuilt = app::periodic_table_for(4, 32, folder.path, true, {}, &origin);
+  const auto rebuilt = app::periodic_table_for(4, 32, folder, true, {}, &origin);
   EXPECT_EQ(origin, app::TableOrigin::built);
   EXPECT_EQ(rebuilt->tables(), built->tables());
 
   // A damaged file (cut short) is not read either.
   std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
-  app::periodic_table_for(4, 32, folder.path, true, {}, &origin);
+  app::periodic_table_for(4, 32, folder, true, {}, &origin);
   EXPECT_EQ(origin, app::TableOrigin::built);
 }
 
