@@ -106,8 +106,7 @@ bool spot_check(const model::PeriodicTable& table, std::uint64_t seed) {
   const int K1 = static_cast<int>(table.h1.size());
   for (int trial = 0; trial < 3; ++trial) {
     const int k = 1 + draw(K1 - 2);
-    const double v = table.v_lo + (table.v_full - table.v_lo) * k / (K1 - 1);
-    const model::PeriodicState direct = reference::solve_scaled(table.s, std::pow(v, table.s + 1),
+    const model::PeriodicState direct = reference::solve_scaled(table.s, std::pow(table.sample_v(k), table.s + 1),
                                                                 std::numeric_limits<double>::infinity(), table.n);
     if (!agrees(table.h1[k], direct.h, kLoadAgreement, 1e-12) || !same_area(table.a11[k], direct.a1, table.n)) {
       return false;
@@ -116,23 +115,17 @@ bool spot_check(const model::PeriodicTable& table, std::uint64_t seed) {
   // One sample of every two-level row, and the row's level-2 share (the cell's geometry).
   for (int j = 0; j < table.J; ++j) {
     const int k = 1 + draw(table.K - 1);
-    const double delta = table.delta_top * j / (table.J - 1);
-    const double xi = table.xi_star[j] + std::pow(table.w_full[j] * k / (table.K - 1), table.row_power());
+    const double delta = table.sample_delta(j);
+    const double xi = table.xi_star[j] + table.sample_excess(j, k);
     const model::PeriodicState direct = reference::solve_scaled(table.s, xi, delta, table.n);
     const std::size_t at = static_cast<std::size_t>(j) * table.K + k;
     if (!agrees(table.Q2[at], direct.Q2, kLoadAgreement, 1e-9 * xi) || !same_area(table.a1[at], direct.a1, table.n) ||
         !same_area(table.a2[at], direct.a2, table.n)) {
       return false;
     }
-    model::ContactProblem cell;
-    cell.l = 1.0;
-    cell.dh = delta;
-    cell.shape = model::Shape{table.s, 1.0};
-    const reference::TwoLevelCell grid = reference::make_two_level_cell(cell, table.n, reference::Symmetry::mirror);
-    double share = 0.0;
-    for (std::size_t m = 0; m < grid.level2_weight.size(); ++m) share += grid.grid.multiplicity(m) * grid.level2_weight[m];
-    share /= static_cast<double>(grid.grid.nodes());
-    if (std::abs(share - table.share2[j]) > 1e-12) return false;
+    if (std::abs(reference::level2_share(reference::scaled_cell(table.s, delta, table.n)) - table.share2[j]) > 1e-12) {
+      return false;
+    }
   }
   return true;
 }

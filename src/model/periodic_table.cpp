@@ -61,21 +61,20 @@ double cubic_rate(double pm, double p0, double p1, double p2, double u) {
 }
 
 /// The cubic through the four samples about interval i of `values` (stride `stride`,
-/// `count` >= 2 of them): nodes i - 1 .. i + 2, shifted inward at the ends (one-sided);
-/// linear for two samples, quadratic for three.
+/// `count` >= 4 of them, as from_tables requires): nodes i - 1 .. i + 2, shifted inward at
+/// the ends (one-sided).
 double interpolate(const double* values, int count, int stride, GridPosition at) {
   const auto v = [&](int k) { return values[static_cast<std::ptrdiff_t>(k) * stride]; };
   const int i = at.i;
-  if (count == 2) return v(0) + at.u * (v(1) - v(0));
-  if (count == 3) {
-    const double x = i + at.u;  // the parabola through nodes 0, 1, 2
-    return v(0) * (x - 1.0) * (x - 2.0) / 2.0 - v(1) * x * (x - 2.0) + v(2) * x * (x - 1.0) / 2.0;
-  }
   const int first = std::clamp(i - 1, 0, count - 4);
   return cubic(v(first), v(first + 1), v(first + 2), v(first + 3), at.u + (i - first - 1));
 }
 
 }  // namespace
+
+double PeriodicTable::sample_excess(int j, int k) const {
+  return std::pow(static_cast<double>(k) / (K - 1) * w_full[static_cast<std::size_t>(j)], row_power());
+}
 
 double PeriodicTable::delta_hidden() const { return std::pow(2.0, -0.5 * s); }
 double PeriodicTable::xi_full_single() const { return ipow(v_full, s + 1); }
@@ -220,6 +219,8 @@ void PeriodicTable::finish() {
   for (int j = 0; j < J; ++j) {
     double* rate = &q2_rate_[static_cast<std::size_t>(j) * K];
     const double* load = &Q2[static_cast<std::size_t>(j) * K];
+    // ipow, not sample_excess()'s pow: the two differ in the last bit, and the maps made so
+    // far divided by this one.
     for (int k = 1; k < K; ++k) rate[k] = load[k] / ipow(w_full[j] * k / (K - 1), row_power());
     rate[0] = 3.0 * rate[1] - 3.0 * rate[2] + rate[3];  // the parabola through k = 1, 2, 3 at 0
   }
@@ -295,7 +296,7 @@ std::optional<PeriodicTable> PeriodicTable::from_tables(const std::vector<double
   // and all end at one load, in full contact (the areas are the levels' shares there).
   const double cap = t.xi_star[0] + ipow(t.w_full[0], t.row_power());
   for (int j = 0; j < t.J; ++j) {
-    const std::optional<double> star = t.touchdown(t.delta_top * j / (t.J - 1));
+    const std::optional<double> star = t.touchdown(t.sample_delta(j));
     const std::size_t end = static_cast<std::size_t>(j) * K + K - 1;
     if (!star || std::abs(*star - t.xi_star[j]) > 1e-12 * (1.0 + *star) ||
         std::abs(t.xi_star[j] + ipow(t.w_full[j], t.row_power()) - cap) > 1e-9 * cap ||

@@ -46,6 +46,11 @@ class PeriodicTable {
   static constexpr double kFormat = 1.0;
   /// The rows reach delta_top = kTopShare 2^(-s/2), just short of where level 2 hides.
   static constexpr double kTopShare = 0.99;
+  /// Where the samples sit: v of single-level sample k, delta of row j, and xi - xi* of
+  /// sample k of row j (what the builder solves at and the spot check solves again).
+  double sample_v(int k) const { return v_lo + (v_full - v_lo) * k / (static_cast<int>(h1.size()) - 1); }
+  double sample_delta(int j) const { return delta_top * j / (J - 1); }
+  double sample_excess(int j, int k) const;
   /// The power p of the rows' variable: xi - xi*(delta) = (r w_full)^p. s + 1 puts the
   /// samples close together after touchdown, where level 2's spot and load change fastest
   /// (measured at s = 1, 2, 3 against direct solves: a power s, with which an isolated

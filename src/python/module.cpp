@@ -9,7 +9,6 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
 #include <chrono>
@@ -163,24 +162,6 @@ std::string check(const model::Parameter& p, double value) {
   if (p.admits(value)) return {};
   return app::out_of_range(p, value_text(value, p.integer));
 }
-
-/// Exact-value keys of the per-subset caches: the coordinates' bits, hashed (an unordered
-/// map: a grid's 4e6 points look their parts up in O(1)).
-template <std::size_t N>
-using Key = std::array<double, N>;
-struct KeyHash {
-  template <std::size_t N>
-  std::size_t operator()(const Key<N>& key) const {
-    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-    for (const double v : key) {
-      std::uint64_t x = std::bit_cast<std::uint64_t>(v) + h;  // splitmix64 of each coordinate, chained
-      x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-      h = x ^ (x >> 31);
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
 
 /// The regime, t*, h(0), h(inf) and validity of n points of the standard linear solid (the
 /// map's codes and units), each a pure function of its point, with the parts that depend

@@ -78,4 +78,10 @@ TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Sy
   return cell;
 }
 
+double level2_share(const TwoLevelCell& cell) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < cell.level2_weight.size(); ++k) sum += cell.grid.multiplicity(k) * cell.level2_weight[k];
+  return sum / static_cast<double>(cell.grid.nodes());
+}
+
 }  // namespace punchsweep::reference

@@ -95,6 +95,10 @@ struct TwoLevelCell {
   std::size_t tip2 = 0;  ///< node of the level-2 tip M = (l/2, l/2)
 };
 
+/// The level-2 share of the cell's area: the nodes' level2_weight, each times its
+/// multiplicity, over the cell's nodes.
+double level2_share(const TwoLevelCell& cell);
+
 /// Relative difference under which the two punch surfaces count as tied at a node.
 inline constexpr double kProfileTieTolerance = 1e-12;
 

@@ -17,17 +17,6 @@ namespace {
 /// The two-level rows end at this multiple of the single level's full-contact load.
 constexpr double kCapShare = 1.05;
 
-/// The cell of the scaled problem (l = 1, C = 1) at height difference delta; for the single
-/// level delta = 2, beyond any 2^(-s/2): the level-2 surface is never the lower one.
-TwoLevelCell scaled_cell(int s, double delta, int n) {
-  model::ContactProblem problem;
-  problem.l = 1.0;
-  problem.dh = delta;
-  problem.pbar0 = 1.0;
-  problem.shape = model::Shape{s, 1.0};
-  return make_two_level_cell(problem, n, Symmetry::mirror);
-}
-
 /// One cell's solves along increasing loads, each from the last one's pressure.
 class Path {
  public:
@@ -69,11 +58,7 @@ class Path {
   /// Whether every node is in contact in the last kept solve.
   bool last_full() const { return last_full_; }
   /// The level-2 share of the cell's area.
-  double share2() const {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < cell_.level2_weight.size(); ++k) sum += cell_.grid.multiplicity(k) * cell_.level2_weight[k];
-    return sum / static_cast<double>(cell_.grid.nodes());
-  }
+  double share2() const { return level2_share(cell_); }
   void reset() { std::fill(p_.begin(), p_.end(), 0.0); }
 
  private:
@@ -125,6 +110,15 @@ double full_contact_load(Path& path, double from) {
 
 }  // namespace
 
+TwoLevelCell scaled_cell(int s, double delta, int n) {
+  model::ContactProblem problem;
+  problem.l = 1.0;
+  problem.dh = delta;
+  problem.pbar0 = 1.0;
+  problem.shape = model::Shape{s, 1.0};
+  return make_two_level_cell(problem, n, Symmetry::mirror);
+}
+
 model::PeriodicState solve_scaled(int s, double xi, double delta, int n, const ContactSolverOptions& solver) {
   const TwoLevelCell cell = scaled_cell(s, std::isfinite(delta) ? delta : 2.0, n);
   ContactSolver contact(cell.grid, solver);
@@ -158,7 +152,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
   t.a11.assign(K1, 0.0);
   t.monotone1.assign(K1 - 1, 1);
   for (int k = 1; k < K1; ++k) {
-    const double v = t.v_full * k / (K1 - 1);
+    const double v = t.sample_v(k);
     const ReferenceSnapshot state = single.solve(std::pow(v, s + 1));
     t.h1[k] = k == K1 - 1 ? t.delta_hidden() : state.h;
     t.a11[k] = k == K1 - 1 ? 1.0 / std::sqrt(std::numbers::pi) : state.a1;
@@ -177,7 +171,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
   t.Q2.assign(JK, 0.0);
   t.monotone2.assign(static_cast<std::size_t>(t.J) * (t.K - 1), 1);
   for (int j = 0; j < t.J; ++j) {
-    const double delta = t.delta_top * j / (t.J - 1);
+    const double delta = t.sample_delta(j);
     const double star = *t.touchdown(delta);
     t.xi_star[j] = star;
     Path path(s, delta, options.n, options, &done, planned);
@@ -194,8 +188,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
     t.a1[row] = t.single(star).a1;
     if (star > 0.0) path.solve(star);  // the pressure to start from
     for (int k = 1; k < t.K; ++k) {
-      const double r = static_cast<double>(k) / (t.K - 1);
-      const ReferenceSnapshot state = path.solve(star + std::pow(r * w_full, t.row_power()));
+      const ReferenceSnapshot state = path.solve(star + t.sample_excess(j, k));
       t.a1[row + k] = state.a1;
       t.a2[row + k] = state.a2;
       t.Q2[row + k] = state.P2;

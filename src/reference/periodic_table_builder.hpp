@@ -9,6 +9,7 @@
 #include "model/periodic_table.hpp"
 #include "model/stop_request.hpp"
 #include "reference/contact_solver.hpp"
+#include "reference/periodic_grid.hpp"
 
 namespace punchsweep::reference {
 
@@ -26,6 +27,11 @@ struct PeriodicTableOptions {
   /// Called after every contact solve with (solves done, solves planned).
   std::function<void(int, int)> progress;
 };
+
+/// The cell of the scaled problem (l = 1, C = 1, quarter stored) at height difference delta;
+/// for the single level delta = 2, beyond any 2^(-s/2): the level-2 surface is never the
+/// lower one.
+TwoLevelCell scaled_cell(int s, double delta, int n);
 
 /// Builds the tables of shape exponent s (1 <= s <= 32). Throws model::Stopped on a stop
 /// request and std::runtime_error when a contact solve misses its tolerance.
