@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <ostream>
+#include <stdexcept>
 
 #include "app/periodic_tables.hpp"
 #include "app/table_cache.hpp"
@@ -83,7 +84,10 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
                     "model::PeriodicTable::tables().",
                     s, n, kVersion, kGitRevision, seconds, table->h1.size(), table->J, table->K);
       const std::filesystem::path file = dir / (model::PeriodicTable::table_name(s, n) + ".inc");
-      std::ofstream(file) << periodic_table_source(*table, provenance);
+      std::ofstream text(file);
+      text << periodic_table_source(*table, provenance);
+      text.close();
+      if (!text) throw std::runtime_error("could not write " + file.string());
       out << "s = " << s << ": wrote " << file.string() << " (" << seconds << " s)\n";
     }
     return 0;
