@@ -9,12 +9,10 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -37,6 +35,7 @@
 #include "model/regime.hpp"
 #include "model/stop_request.hpp"
 #include "model/validity.hpp"
+#include "sweep/batch_evaluator.hpp"
 
 namespace py = pybind11;
 using namespace punchsweep;
@@ -163,165 +162,134 @@ std::string check(const model::Parameter& p, double value) {
   return app::out_of_range(p, value_text(value, p.integer));
 }
 
-/// The regime, t*, h(0), h(inf) and validity of n points of the standard linear solid (the
-/// map's codes and units), each a pure function of its point, with the parts that depend
-/// on fewer coordinates computed once per distinct value (as a sweep's tile does): the
-/// touchdown and the guide or branch per (l, s, dh), the single-level state per (l, s, X).
-py::dict classify(py::array_t<double, py::array::c_style | py::array::forcecast> l,
-                  py::array_t<double, py::array::c_style | py::array::forcecast> dh,
-                  py::array_t<double, py::array::c_style | py::array::forcecast> T,
-                  py::array_t<double, py::array::c_style | py::array::forcecast> pbar,
-                  py::array_t<double, py::array::c_style | py::array::forcecast> s, double C,
-                  const std::string& localization, const std::string& material_file) {
+using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// The regime, t*, h(0), h(inf) and validity of n points (the map's codes and units), each
+/// a pure function of its point: sweep::BatchEvaluator, as a sweep's tile evaluates its
+/// points, over the points sorted by (s, l, dh) so that the parts those share are computed
+/// once. `law` holds the creep law's parameters (the standard linear solid's T, or a
+/// material file's temperature where it has a shift), `ramp_time` the load's rise time
+/// (empty: a step).
+py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<Column>& law, Column ramp_time,
+                  double C, const std::string& localization, const std::string& material_file) {
   const py::ssize_t n = l.size();
-  for (const auto* a : {&dh, &T, &pbar, &s}) {
-    if (a->size() != n) throw std::invalid_argument("classify: the arrays must have the same size (broadcast first)");
-  }
-  // The creep law: the standard linear solid at T, or a material file's law at its one
-  // parameter (the temperature, where it has a shift; none otherwise: T is then not read).
+  const bool ramp = ramp_time.size() > 0;
+  bool equal = dh.size() == n && pbar.size() == n && s.size() == n && (!ramp || ramp_time.size() == n);
+  for (const Column& c : law) equal = equal && c.size() == n;
+  if (!equal) throw std::invalid_argument("classify: the arrays must have the same size (broadcast first)");
   std::shared_ptr<const model::Material> material;
   if (!material_file.empty()) {
     if (material_file.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
     material = app::read_material_file(material_file);
   }
-  model::ContactProblem base;
+  model::Localization model_localization;
   try {
-    base.localization = model::parse_localization(localization);
+    model_localization = model::parse_localization(localization);
   } catch (const std::invalid_argument& e) {
     throw app::UsageError(std::string("--localization: ") + e.what());  // as read_localization says it
   }
-  const model::CreepLawSpec law = material ? material->spec() : model::creep_laws().front();
-  const bool law_has_value = !law.parameters.empty();
+  const model::CreepLawSpec spec = material ? material->spec() : model::creep_laws().front();
+  // A law's parameters left out take the point command's defaults (a material's T_ref).
+  std::vector<std::vector<double>> defaults;
+  std::vector<const double*> law_values;
+  for (const Column& c : law) law_values.push_back(c.data());
+  if (law.empty()) {
+    for (const model::Parameter& p : spec.parameters) {
+      if (p.point_default.empty()) throw app::UsageError("classify: " + std::string(p.name) + " is required");
+      defaults.emplace_back(static_cast<std::size_t>(n), std::stod(std::string(p.point_default)));
+      law_values.push_back(defaults.back().data());
+    }
+  }
+  if (law_values.size() != spec.parameters.size()) {
+    throw app::UsageError(material ? "classify: the material " + material_file + " has no temperature shift, so "
+                                         "it takes no temperature"
+                                   : "classify: the creep law " + std::string(spec.name) + " takes " +
+                                         std::to_string(spec.parameters.size()) + " parameters");
+  }
   if (const std::string e = check(*model::find_parameter(model::kShapeConstant), C); !e.empty()) {
     throw app::UsageError(e);
   }
   // The first value outside its range, axis by axis in the command line's order.
-  const std::pair<const model::Parameter*, const double*> axes[] = {
-      {model::find_parameter(model::kPitch), l.data()},
-      {model::find_parameter(model::kHeightDifference), dh.data()},
-      {law_has_value ? &law.parameters.front() : nullptr, T.data()},
-      {model::find_parameter(model::kPressure), pbar.data()},
-      {model::find_parameter(model::kExponent), s.data()}};
+  std::vector<std::pair<const model::Parameter*, const double*>> axes{
+      {model::find_parameter(model::kPitch), l.data()}, {model::find_parameter(model::kHeightDifference), dh.data()}};
+  for (std::size_t j = 0; j < law_values.size(); ++j) axes.emplace_back(&spec.parameters[j], law_values[j]);
+  axes.emplace_back(model::find_parameter(model::kPressure), pbar.data());
+  axes.emplace_back(model::find_parameter(model::kExponent), s.data());
+  if (ramp) axes.emplace_back(&model::ramp_time_parameter(), ramp_time.data());
   for (const auto& [parameter, values] : axes) {
-    if (parameter == nullptr) continue;
     for (py::ssize_t i = 0; i < n; ++i) {
       if (const std::string e = check(*parameter, values[i]); !e.empty()) throw app::UsageError(e);
     }
   }
-  const double* L = l.data();
-  const double* DH = dh.data();
-  const double* TT = T.data();
-  const double* P = pbar.data();
-  const double* S = s.data();
 
   py::array_t<std::int8_t> regime(n);
   py::array_t<bool> valid(n);
   py::array_t<double> t_star(n), h_0(n), h_inf(n);
-  std::int8_t* R = regime.mutable_data();
-  bool* V = valid.mutable_data();
-  double* TS = t_star.mutable_data();
-  double* H0 = h_0.mutable_data();
-  double* HI = h_inf.mutable_data();
   {
     py::gil_scoped_release release;
-    // The points in order of (s, l, dh), each group of equal (s, l, dh) sharing its touchdown
-    // and guide or branch: no table of them to look up, so scattered points (every group of
-    // one) cost no more than their own work (issue 23: 6.1e4 points/s with a hash table per
-    // part, 200,000 scattered points under the periodic model).
-    struct Entry {
-      double s, l, dh;
-      py::ssize_t i;
-    };
-    std::vector<Entry> entries(static_cast<std::size_t>(n));
-    for (py::ssize_t i = 0; i < n; ++i) entries[static_cast<std::size_t>(i)] = {S[i], L[i], DH[i], i};
-    // Stable: within a group the points keep their order (a grid's then runs over its later axes).
-    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-      return std::tie(a.s, a.l, a.dh) < std::tie(b.s, b.l, b.dh);
+    // The points sorted by (s, l, dh), their columns copied in that order: each (s, l, dh)
+    // is then one run that shares its touchdown and branch, and the evaluator reads and
+    // this writes memory in order (scattered points went at 5.6e5 points/s read through
+    // the permutation, 6.6e5 sorted; issue 23).
+    const auto N = static_cast<std::size_t>(n);
+    std::vector<std::size_t> order(N);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const double* S = s.data();
+    const double* L = l.data();
+    const double* DH = dh.data();
+    // Stable: within a run the points keep their order (a grid's then runs over its later axes).
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::tie(S[a], L[a], DH[a]) < std::tie(S[b], L[b], DH[b]);
     });
-    std::vector<py::ssize_t> order(static_cast<std::size_t>(n));
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = entries[k].i;
-    std::vector<Entry>().swap(entries);
-    // The single-level state depends on (l, s) and X alone: h(0) at X(0) = pbar J(0) is
-    // shared across T and dh, h(inf) at X(inf) = pbar J(inf) across dh. Kept per (s, l)
-    // group, and only for groups of more than one dh (a grid's), where it is reused.
-    std::unordered_map<double, model::SingleLevelState> single_cache;  // X, within one (s, l)
-    // The creep laws of the last values met: a grid's points come in runs of one T (its
-    // pressures), so the last one is tried first; scattered T miss and make their own.
-    constexpr std::size_t kLawCache = 16;
-    std::vector<std::pair<double, std::unique_ptr<model::CreepLaw>>> laws;
-    std::size_t next_law = 0, last_law = 0;
-    const auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
-    const auto law_at = [&](double value) -> const model::CreepLaw& {
-      if (last_law < laws.size() && same(laws[last_law].first, value)) return *laws[last_law].second;
-      for (std::size_t k = 0; k < laws.size(); ++k) {
-        if (same(laws[k].first, value)) {
-          last_law = k;
-          return *laws[k].second;
-        }
+    const std::size_t width = 4 + law_values.size() + (ramp ? 1 : 0);
+    std::vector<double> sorted(width * N);
+    std::vector<const double*> sources{L, DH, pbar.data(), S};
+    sources.insert(sources.end(), law_values.begin(), law_values.end());
+    if (ramp) sources.push_back(ramp_time.data());
+    for (std::size_t j = 0; j < width; ++j) {
+      for (std::size_t k = 0; k < N; ++k) sorted[j * N + k] = sources[j][order[k]];
+    }
+    const auto column = [&](std::size_t j) { return std::span<const double>(&sorted[j * N], N); };
+    sweep::PointColumns points{column(0), column(1), column(2), column(3), {}, {}};
+    for (std::size_t j = 0; j < law_values.size(); ++j) points.law.push_back(column(4 + j));
+    if (ramp) points.ramp_time = column(width - 1);
+
+    // The answers in sorted order, then put back in the points' order.
+    struct Answers final : sweep::BatchSink {
+      std::vector<std::int8_t> regime;
+      std::vector<std::uint8_t> valid;
+      std::vector<double> t_star, h_0, h_inf;
+      explicit Answers(std::size_t count) : regime(count), valid(count), t_star(count), h_0(count), h_inf(count) {}
+      void take(const sweep::BatchPoint& p) override {
+        regime[p.k] = map::quantity_access::regime(p.summary);
+        valid[p.k] = p.summary.valid() ? 1 : 0;
+        t_star[p.k] = map::quantity_access::t_star(p.summary);
+        h_0[p.k] = p.summary.h_0;
+        h_inf[p.k] = p.summary.h_inf;
       }
-      auto made = model::make_creep_law(law, std::span<const double>(&value, law_has_value ? 1 : 0));
-      if (laws.size() < kLawCache) {
-        laws.emplace_back(value, std::move(made));
-        last_law = laws.size() - 1;
-      } else {
-        last_law = next_law++ % kLawCache;
-        laws[last_law] = {value, std::move(made)};
-      }
-      return *laws[last_law].second;
-    };
-    // The elastic start at t = 0 has modulus 1/J(0) = 1 for every T: per (l, s, dh, pbar),
-    // within a dh group. Kept for the paper's model, whose start is a Newton solve (3 us: the
-    // cache doubled its rate); the others read their branch, no dearer than the lookup.
-    const bool share_elastic = base.localization.is_paper();
-    std::unordered_map<double, std::optional<model::ElasticTwoLevel>> elastic_cache;  // pbar, within one dh group
-    // Ctrl-C, asked every 16 points (a point takes at most a curve's budgeted build).
+    } answers(N);
+    // Ctrl-C between runs and every 64 points; the KeyboardInterrupt it sets is raised below.
     CtrlC ctrl_c;
-    std::size_t done = 0;
-    for (std::size_t g = 0; g < order.size();) {
-      // The (s, l) group [g, sl_end) and, inside it, dh groups.
-      const py::ssize_t first = order[g];
-      std::size_t sl_end = g;
-      while (sl_end < order.size() && S[order[sl_end]] == S[first] && L[order[sl_end]] == L[first]) ++sl_end;
-      single_cache.clear();
-      const bool reuse_single = DH[order[sl_end - 1]] != DH[first];  // more than one dh
-      for (std::size_t d = g; d < sl_end;) {
-        const py::ssize_t head = order[d];
-        std::size_t dh_end = d;
-        while (dh_end < sl_end && DH[order[dh_end]] == DH[head]) ++dh_end;
-        model::ContactProblem problem = base;
-        problem.l = L[head];
-        problem.dh = DH[head];
-        problem.shape = model::Shape{static_cast<int>(S[head]), C};
-        const model::DhParts parts = model::dh_parts(problem);
-        elastic_cache.clear();
-        for (std::size_t k = d; k < dh_end; ++k, ++done) {
-          const py::ssize_t i = order[k];
-          if ((done & 15) == 0 && ctrl_c.pressed()) {
-            py::gil_scoped_acquire acquire;  // error_already_set takes the error under the GIL
-            throw py::error_already_set();
-          }
-          problem.pbar0 = P[i];
-          const model::CreepLaw& creep = law_at(law_has_value ? TT[i] : 0.0);
-          const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
-          const auto single_at = [&](double X) {
-            if (!reuse_single) return model::single_level_at(problem, X);
-            auto [it, fresh] = single_cache.try_emplace(X);
-            if (fresh) it->second = model::single_level_at(problem, X);
-            return it->second;
-          };
-          const model::SingleLevelState end = single_at(load.final());
-          const model::SingleLevelEnds ends{single_at(load.initial()).h, end.h, end.a1};
-          std::optional<model::ElasticTwoLevel>* elastic = share_elastic ? &elastic_cache[P[i]] : nullptr;
-          const model::PointSummary summary = model::summarize_point(problem, creep, parts, ends, elastic);
-          R[i] = map::quantity_access::regime(summary);
-          V[i] = summary.valid();
-          TS[i] = map::quantity_access::t_star(summary);
-          H0[i] = summary.h_0;
-          HI[i] = summary.h_inf;
-        }
-        d = dh_end;
-      }
-      g = sl_end;
+    const model::StopRequest interrupted([&ctrl_c] { return ctrl_c.pressed(); });
+    sweep::BatchEvaluator evaluator(spec, C, model_localization, {}, sweep::BatchEvaluator::Memory::call);
+    try {
+      evaluator.summarize(points, answers, interrupted);
+    } catch (const model::Stopped&) {
+      py::gil_scoped_acquire acquire;  // error_already_set takes the error under the GIL
+      throw py::error_already_set();
+    }
+    std::int8_t* R = regime.mutable_data();
+    bool* V = valid.mutable_data();
+    double* TS = t_star.mutable_data();
+    double* H0 = h_0.mutable_data();
+    double* HI = h_inf.mutable_data();
+    for (std::size_t k = 0; k < N; ++k) {
+      const std::size_t i = order[k];
+      R[i] = answers.regime[k];
+      V[i] = answers.valid[k] != 0;
+      TS[i] = answers.t_star[k];
+      H0[i] = answers.h_0[k];
+      HI[i] = answers.h_inf[k];
     }
   }
   py::dict out;
@@ -361,8 +329,9 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep point ARGS, evaluated in-process: a dict of its JSON keys");
   m.def("reference", &reference_command, py::arg("args"),
         "punchsweep reference ARGS, solved in-process: a dict of its JSON keys");
-  m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("T"), py::arg("pbar"), py::arg("s"),
-        py::arg("C"), py::arg("localization"), py::arg("material"),
-        "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points (the GIL released)");
+  m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
+        py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"),
+        "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "
+        "as a list of such arrays, ramp_time empty for a step (the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
 }

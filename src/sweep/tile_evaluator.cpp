@@ -13,9 +13,6 @@
 namespace punchsweep::sweep {
 namespace {
 
-// Above this many entries the run-wide caches would cost more memory than they save.
-constexpr std::size_t kMaxCacheEntries = std::size_t{1} << 24;
-
 // Stores the per-point quantities of `source` that `summary` gives, at point i. Unrolled
 // over kQuantities at compile time, so each is a direct (inlined) read of the result.
 template <map::Source source, std::size_t... Q>
@@ -99,7 +96,8 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
       pbar_(require_axis(grid, model::kPressure)),
       s_(require_axis(grid, model::kExponent)),
       loading_(std::move(loading)),
-      localization_(localization) {
+      localization_(localization),
+      batch_(law, C, localization, loading_) {
   for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
   law_axes_ = material_.size();
   if (const std::size_t ramp = grid.find(model::ramp_time_parameter().name); ramp < grid.rank()) {
@@ -118,127 +116,93 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
     reference_options_.times = times_;
     use_reproducible_fft_plans();
   }
-  const map::Index n = grid.shape();
-  std::size_t materials = 1;
-  for (const std::size_t a : material_) materials *= n[a];
-  const std::size_t ends = n[l_] * n[s_] * materials * n[pbar_];
-  const std::size_t touch = n[l_] * n[s_] * n[dh_];
-  cache_ = ends <= kMaxCacheEntries && touch <= kMaxCacheEntries;
-  if (cache_) {
-    ends_.resize(ends);
-    touch_.resize(touch);
-  }
 }
+
+namespace {
+
+// Stores each evaluated point of a tile at its place in the tile (index[k] for the k-th
+// point of the columns): the summary's quantities, or in full mode the point's series too.
+class TileSink final : public BatchSink {
+ public:
+  TileSink(map::TileData* out, const std::vector<std::size_t>& index, const model::EvaluationOptions* full)
+      : out_(out), index_(index), full_(full) {}
+  void take(const BatchPoint& p) override {
+    const std::size_t i = index_[p.k];
+    if (full_ != nullptr) {
+      const model::PointResult r = model::evaluate_point(p.problem, p.creep, *full_, p.summary, p.parts.branch.get());
+      store_point<map::Source::model>(r, i, out_, kAll);  // a series solve may flag the point
+      store_series<map::Source::model>(r.series, i, out_, kAll);
+    } else {
+      store_point<map::Source::model>(p.summary, i, out_, kAll);
+    }
+  }
+
+ private:
+  map::TileData* out_;
+  const std::vector<std::size_t>& index_;
+  const model::EvaluationOptions* full_;
+};
+
+}  // namespace
 
 void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Reference reference,
                              const model::StopRequest& stop) const {
   const bool full = quantities_ == map::Quantities::full;
-  const std::size_t nt = times_.size();
   const bool bem = sample_.has_value() && reference == Reference::evaluated;
-  out->resize(box.points(), nt, quantities_, bem);
+  out->resize(box.points(), times_.size(), quantities_, bem);
   const map::Index& c = box.count;
   const auto value = [&](std::size_t axis, std::size_t i) { return grid_.axes[axis].values[box.start[axis] + i]; };
 
-  // Row-major strides of the box, and the material combinations of the box (the creep law
-  // at each), numbered row-major over the law's axes.
+  // The box's points as columns, in the order (l, s, dh, the material axes, pbar), so that
+  // each (s, l, dh) is one run for the batch evaluator; index maps them to the tile's
+  // row-major positions.
   map::Index stride(c.size(), 1);
   for (std::size_t a = c.size() - 1; a-- > 0;) stride[a] = stride[a + 1] * c[a + 1];
-  const map::Index n = grid_.shape();
   std::size_t materials = 1;
   for (const std::size_t a : material_) materials *= c[a];
-  std::vector<std::unique_ptr<model::CreepLaw>> creep(materials);
-  std::vector<model::LoadShape> loading(materials, loading_);
+  std::vector<double> material_values(materials * material_.size());
   std::vector<std::size_t> material_offset(materials);  // in the box, from the strides
-  std::vector<std::size_t> material_global(materials);  // row-major over the grid's law axes
-  std::vector<double> law_values(material_.size());
   for (std::size_t m = 0; m < materials; ++m) {
     std::size_t rest = m;
-    std::size_t scale = 1;  // of the grid's law axes, row-major
     material_offset[m] = 0;
-    material_global[m] = 0;
     for (std::size_t k = material_.size(); k-- > 0; rest /= c[material_[k]]) {
       const std::size_t a = material_[k];
-      const std::size_t i = rest % c[a];  // the position on law axis a within the box
+      const std::size_t i = rest % c[a];  // the position on material axis a within the box
       material_offset[m] += i * stride[a];
-      material_global[m] += (box.start[a] + i) * scale;
-      scale *= n[a];
-      law_values[k] = value(a, i);
+      material_values[m * material_.size() + k] = value(a, i);
     }
-    creep[m] = model::make_creep_law(law_, std::span<const double>(law_values).first(law_axes_));
-    if (material_.size() > law_axes_) loading[m] = model::LoadShape::ramp(law_values.back());
   }
-  std::size_t materials_global = 1;
-  for (const std::size_t a : material_) materials_global *= n[a];
-  const model::EvaluationOptions options{times_, {}};
-
-  std::vector<model::DhParts> touch(c[dh_]);
-  std::vector<Ends> ends(materials * c[pbar_]);
-  // The elastic start at t = 0 has modulus 1/J(0) = 1 E0* for every material (the unit of
-  // pressure), so it is shared across the material axes.
-  std::vector<std::optional<model::ElasticTwoLevel>> elastic(c[dh_] * c[pbar_]);
-
+  const std::size_t points = box.points();
+  const std::size_t columns = 4 + material_.size();
+  columns_.resize(points * columns);
+  index_.resize(points);
+  const auto column = [&](std::size_t j) { return std::span<double>(&columns_[j * points], points); };
+  const std::span<double> l = column(0), dh = column(1), pbar = column(2), s = column(3);
+  std::size_t k = 0;
   for (std::size_t il = 0; il < c[l_]; ++il) {
     for (std::size_t is = 0; is < c[s_]; ++is) {
-      model::ContactProblem problem;
-      problem.l = value(l_, il);
-      problem.shape = model::Shape{static_cast<int>(value(s_, is)), C_};
-      problem.localization = localization_;
-      const std::size_t gl = box.start[l_] + il;
-      const std::size_t gs = box.start[s_] + is;
       for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
-        Touch scratch;
-        Touch& t = cache_ ? touch_[(gl * n[s_] + gs) * n[dh_] + box.start[dh_] + idh] : scratch;
-        if (!t.ready) {
-          stop.throw_if_requested();
-          model::ContactProblem at_dh = problem;
-          at_dh.dh = value(dh_, idh);
-          t = Touch{model::dh_parts(at_dh), true};
-        }
-        touch[idh] = t.parts;
-      }
-      for (std::size_t m = 0; m < materials; ++m) {
-        for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
-          Ends& e = ends[m * c[pbar_] + ip];
-          const std::size_t g =
-              ((gl * n[s_] + gs) * materials_global + material_global[m]) * n[pbar_] + box.start[pbar_] + ip;
-          if (cache_ && ends_[g].ready) {
-            e = ends_[g];
-            continue;
-          }
-          problem.pbar0 = value(pbar_, ip);
-          problem.loading = loading[m];
-          e.ends = model::single_level_ends(problem, *creep[m]);
-          e.ready = true;
-          if (cache_) ends_[g] = e;
-        }
-      }
-      for (auto& e : elastic) e.reset();
-
-      for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
-        stop.throw_if_requested();
-        problem.dh = value(dh_, idh);
         for (std::size_t m = 0; m < materials; ++m) {
-          const model::CreepLaw& law = *creep[m];
-          problem.loading = loading[m];
-          for (std::size_t ip = 0; ip < c[pbar_]; ++ip) {
-            problem.pbar0 = value(pbar_, ip);
-            const model::PointSummary summary = model::summarize_point(
-                problem, law, touch[idh], ends[m * c[pbar_] + ip].ends, &elastic[idh * c[pbar_] + ip]);
-
-            const std::size_t i =
-                il * stride[l_] + idh * stride[dh_] + material_offset[m] + ip * stride[pbar_] + is * stride[s_];
-            if (full) {
-              const model::PointResult r = model::evaluate_point(problem, law, options, summary, touch[idh].branch.get());
-              store_point<map::Source::model>(r, i, out, kAll);  // a series solve may flag the point
-              store_series<map::Source::model>(r.series, i, out, kAll);
-            } else {
-              store_point<map::Source::model>(summary, i, out, kAll);
+          for (std::size_t ip = 0; ip < c[pbar_]; ++ip, ++k) {
+            l[k] = value(l_, il);
+            s[k] = value(s_, is);
+            dh[k] = value(dh_, idh);
+            pbar[k] = value(pbar_, ip);
+            for (std::size_t j = 0; j < material_.size(); ++j) {
+              columns_[(4 + j) * points + k] = material_values[m * material_.size() + j];
             }
+            index_[k] = il * stride[l_] + idh * stride[dh_] + material_offset[m] + ip * stride[pbar_] + is * stride[s_];
           }
         }
       }
     }
   }
+  PointColumns batch{l, dh, pbar, s, {}, {}};
+  for (std::size_t j = 0; j < law_axes_; ++j) batch.law.push_back(column(4 + j));
+  if (material_.size() > law_axes_) batch.ramp_time = column(4 + law_axes_);
+  const model::EvaluationOptions options{times_, {}};
+  TileSink sink(out, index_, full ? &options : nullptr);
+  batch_.summarize(batch, sink, stop);
   if (bem) {
     evaluate_reference(box, out, stop);
     merge_answers(out);

@@ -12,6 +12,7 @@
 #include "model/regime.hpp"
 #include "model/stop_request.hpp"
 #include "reference/reference_point.hpp"
+#include "sweep/batch_evaluator.hpp"
 #include "sweep/reference_sample.hpp"
 #include "sweep/sweep_config.hpp"
 
@@ -20,11 +21,11 @@ namespace punchsweep::sweep {
 /// Evaluates every point of a tile with the model (the same functions as
 /// `punchsweep point`). The grid's axes are the model's parameters by name
 /// (model::sweep_axes): l, dh, pbar, s and the creep law's own (for the standard linear
-/// solid T), and ramp_time when the load is a ramp. Sub-results that depend on fewer coordinates are computed once: the touchdown
-/// and long-term guide per (l, s, dh) and the single-level ends per (l, s, material, pbar)
-/// for the whole run of this process, the elastic start per (l, s, dh, pbar) per tile.
-/// Each is a pure function of its coordinates, so no value depends on the tiling or the
-/// rank count. What a point stores is read off its result through map::kQuantities.
+/// solid T), and ramp_time when the load is a ramp. The points go through the
+/// BatchEvaluator (as Python's classify does), which keeps the parts that depend on fewer
+/// coordinates for the whole run of this process; each is a pure function of its
+/// coordinates, so no value depends on the tiling or the rank count. What a point stores is
+/// read off its result through map::kQuantities.
 ///
 /// With a BEM reference it also evaluates reference::evaluate_reference_point (as
 /// `punchsweep reference` does: grid N, the snapshot times, the default step control and
@@ -69,16 +70,6 @@ class TileEvaluator {
   /// The contact problem and the creep law's parameter values at grid position `at`.
   model::ContactProblem problem_at(const map::Index& at, std::vector<double>* law_values) const;
 
-  /// The single-level ends of eq 9.5/9.10 at one (l, s, material, pbar).
-  struct Ends {
-    model::SingleLevelEnds ends;
-    bool ready = false;
-  };
-  struct Touch {
-    model::DhParts parts;  ///< touchdown, and the paper's guide or the family's branch
-    bool ready = false;
-  };
-
   map::Grid grid_;
   const model::CreepLawSpec& law_;
   double C_;
@@ -93,9 +84,10 @@ class TileEvaluator {
   model::Localization localization_;
   std::optional<ReferenceSample> sample_;
   reference::ReferenceOptions reference_options_;
-  bool cache_ = false;                 ///< the run-wide caches fit (else: per tile)
-  mutable std::vector<Ends> ends_;     ///< by global (l, s, material, pbar)
-  mutable std::vector<Touch> touch_;   ///< by global (l, s, dh)
+  /// The model's points, with the parts they share kept for the run.
+  mutable BatchEvaluator batch_;
+  mutable std::vector<double> columns_;     ///< a box's points as columns (scratch)
+  mutable std::vector<std::size_t> index_;  ///< their positions in the tile (scratch)
 };
 
 }  // namespace punchsweep::sweep

@@ -353,3 +353,43 @@ def test_classify_is_interrupted_by_ctrl_c():
         "rng = np.random.default_rng(1); n = 400_000; punchsweep.classify(rng.uniform(0.5, 1.5, n), "
         "rng.uniform(0.005, 0.15, n), rng.uniform(1.5, 8, n), rng.uniform(0.002, 0.1, n), 2)", after=1.5)
     assert took < 2.0, f"classify took {took:.2f} s to stop after SIGINT"
+
+
+@pytest.mark.parametrize("localization", ["periodic", "paper"])
+def test_classify_takes_a_ramp_and_a_material_at_its_reference_temperature(localization):
+    """classify(..., ramp_time=...) (issue 23: one batch evaluator for the sweep and classify,
+    so the load that a sweep's ramp_time axis takes works here too) equals point() with
+    --ramp at scattered points, for the standard linear solid and for a material with a
+    shift, whose temperature left out is its reference temperature, as point()'s."""
+    pla = str(REPO / "materials" / "pla_prusament_chapuis2025.ini")
+    rng = np.random.default_rng(7)
+    n = 120
+    l, dh = rng.uniform(0.5, 1.25, n), rng.uniform(0.005, 0.12, n)
+    pbar, s = np.exp(rng.uniform(np.log(0.005), np.log(0.08), n)), rng.integers(1, 4, n).astype(float)
+    ramp = rng.choice([0.0, 0.4, 3.0, 50.0], n)
+    T = rng.uniform(1.5, 8.0, n)
+    for material in (None, pla):
+        if material is None:
+            c = punchsweep.classify(l, dh, T, pbar, s, localization=localization, ramp_time=ramp)
+        else:
+            c = punchsweep.classify(l, dh, pbar=pbar, s=s, localization=localization, material=material,
+                                    ramp_time=ramp)
+        names = c.regime_names()
+        for i in range(0, n, 2):
+            law = {"T": float(T[i])} if material is None else {"material": material}
+            r = punchsweep.point(l=l[i], dh=dh[i], pbar=pbar[i], s=int(s[i]), times=[0.0], ramp=float(ramp[i]),
+                                 localization=localization, **law)
+            assert names[i] == r.regime, (material, i, names[i], r.regime)
+            assert same_bits(c["t_star"][i], np.nan if r.t_star is None else r.t_star), (material, i)
+            assert same_bits(c["h_0"][i], r.h_0) and same_bits(c["h_inf"][i], r.h_inf)
+            assert bool(c["valid"][i]) == r.valid
+        assert len(set(names)) >= 2
+    # A ramp only delays: every t* under a ramp is at least the step's.
+    step = punchsweep.classify(l, dh, T, pbar, s, localization=localization)
+    ramped = punchsweep.classify(l, dh, T, pbar, s, localization=localization, ramp_time=ramp)
+    both = np.isfinite(step["t_star"]) & np.isfinite(ramped["t_star"])
+    assert both.sum() > 10 and np.all(ramped["t_star"][both] >= step["t_star"][both])
+    with pytest.raises(ValueError, match="ramp"):
+        punchsweep.classify(0.75, 0.05, 2.5, 0.06, 2, ramp_time=-1.0)
+    with pytest.raises(ValueError, match="no temperature shift"):
+        punchsweep.classify(0.75, 0.05, pbar=0.06, s=2, material=MATERIAL, temperature=30.0)

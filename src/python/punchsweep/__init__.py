@@ -178,11 +178,13 @@ class Classification(Mapping):
 
 
 def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str = "refined", *,
-             material: str | None = None, temperature=None) -> Classification:
+             material: str | None = None, temperature=None, ramp_time=None) -> Classification:
     """The regime, t*, h(0), h(inf) and validity of every point, broadcasting l, dh, pbar, s and
     the law's parameter (numbers or arrays) like numpy: T of the standard linear solid, or with
     material=FILE (a material file, as point()'s --material) its temperature in degC where the
-    file has a shift (none otherwise; T is then not given). The same numbers as point() at each
+    file has a shift (its reference temperature when left out; none without a shift). With
+    ramp_time the load rises linearly to pbar over that time (T_eps, or the material's time
+    unit), as point()'s --ramp; a step without. The same numbers as point() at each
     point; t* in T_eps, or in the material's time unit ("time_unit" says which). Points that
     share (l, s, dh) share the model's per-pitch work (a grid is fast: over 1e6 points/s;
     scattered pitches and dh cost a curve each under the refined model, a table row under
@@ -193,16 +195,18 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
         if T is None or temperature is not None:
             raise ValueError("classify: give T (the standard linear solid), or material= (and temperature= "
                              "where the material has a shift)")
-        law = T
+        law = [T]
     else:
         if T is not None:
             raise ValueError("classify: T is the standard linear solid's; a material's law has its own "
                              "(temperature= where the file has a shift)")
-        law = 0.0 if temperature is None else temperature
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, law, pbar, s)))
+        law = [] if temperature is None else [temperature]
+    ramp = [] if ramp_time is None else [ramp_time]
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, pbar, s, *law, *ramp)))
     shape = arrays[0].shape
     flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-    raw = _core.classify(*flat, float(C), str(localization), "" if material is None else os.fspath(material))
+    raw = _core.classify(*flat[:4], flat[4:4 + len(law)], flat[4 + len(law)] if ramp else np.empty(0),
+                         float(C), str(localization), "" if material is None else os.fspath(material))
     unit = raw.pop("time_unit")
     return Classification({k: np.asarray(v).reshape(shape) for k, v in raw.items()}, unit)
 

@@ -1,0 +1,94 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "model/contact_problem.hpp"
+#include "model/creep_law.hpp"
+#include "model/creep_laws.hpp"
+#include "model/point_evaluation.hpp"
+#include "model/stop_request.hpp"
+#include "sweep/value_cache.hpp"
+
+namespace punchsweep::sweep {
+
+/// Points as columns of equal length: the problem's coordinates, the creep law's
+/// parameters (in its order, model::CreepLawSpec::parameters) and, where the load is a
+/// ramp of its own at each point, ramp_time (model::ramp_time_parameter()).
+struct PointColumns {
+  std::span<const double> l, dh, pbar, s;
+  std::vector<std::span<const double>> law;
+  std::span<const double> ramp_time;  ///< empty: every point has the evaluator's loading
+  std::size_t size() const { return l.size(); }
+};
+
+/// One evaluated point, as the batch evaluator hands it on.
+struct BatchPoint {
+  std::size_t k;                         ///< its position in the columns
+  const model::ContactProblem& problem;
+  const model::CreepLaw& creep;
+  const model::DhParts& parts;           ///< its touchdown, guide or branch (for evaluate_point)
+  const model::PointSummary& summary;
+};
+
+/// Where the evaluated points go (a tile's arrays, classify's).
+class BatchSink {
+ public:
+  virtual ~BatchSink() = default;
+  virtual void take(const BatchPoint& point) = 0;
+};
+
+/// The model's summary of many points (model::summarize_point, the same numbers as
+/// `punchsweep point`), with every part that depends on fewer coordinates than a point
+/// computed once per distinct value of those coordinates: the touchdown and the guide or
+/// branch per (s, l, dh), the single-level state per (s, l, X) at the creep-weighted
+/// load's ends X(0) and X(inf), the creep law and its loading per value of the law's
+/// parameters (and ramp_time), and the paper's elastic start per (s, l, dh, pbar). It
+/// serves a sweep's tiles and Python's classify alike, so a model, a creep law or an axis
+/// added once works in both. Each part is a pure function of its coordinates, so no value
+/// depends on the order of the points, how they are cut into batches, or what the caches
+/// hold. The points should come in runs of equal (s, l, dh) (a tile's order, or sorted):
+/// a run shares its parts without a lookup. Not thread-safe (one evaluator per rank).
+class BatchEvaluator {
+ public:
+  /// How long the parts are kept. run: for the evaluator's life, bounded (a sweep's tiles
+  /// meet the same (s, l, dh) again); call: for one summarize() only, where the caller
+  /// sorted its points so that every (s, l, dh) is one run (scattered points would only
+  /// fill the caches).
+  enum class Memory { run, call };
+
+  /// `loading` is every point's load where the columns have no ramp_time.
+  BatchEvaluator(const model::CreepLawSpec& law, double C, model::Localization localization,
+                 model::LoadShape loading = {}, Memory memory = Memory::run);
+
+  /// Hands every point of `points` to `sink`, in the columns' order. `stop` is checked
+  /// before each run of equal (s, l, dh) and every 64 points within one (model::Stopped).
+  /// Throws std::invalid_argument when the columns do not fit the law (a missing or extra
+  /// parameter, unequal lengths).
+  void summarize(const PointColumns& points, BatchSink& sink, const model::StopRequest& stop = {});
+
+ private:
+  /// A creep law at one value of its parameters, with its load.
+  struct Material {
+    std::unique_ptr<model::CreepLaw> creep;
+    model::LoadShape loading;
+  };
+  const Material& material_at(const PointColumns& points, std::size_t k);
+  model::SingleLevelState single_at(const model::ContactProblem& problem, double X, bool cached);
+
+  const model::CreepLawSpec& law_;
+  double C_;
+  model::Localization localization_;
+  model::LoadShape loading_;
+  Memory memory_;
+  ValueCache<model::DhParts> touch_;                   ///< (s, l, dh)
+  ValueCache<model::SingleLevelState> single_;         ///< (s, l, X)
+  ValueCache<Material> materials_;                     ///< the law's values (and ramp_time)
+  ValueCache<std::optional<model::ElasticTwoLevel>> elastic_;  ///< pbar, within one (s, l, dh)
+  std::vector<double> key_;                            ///< scratch
+};
+
+}  // namespace punchsweep::sweep

@@ -1,0 +1,217 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/creep_laws.hpp"
+#include "model/load_shape.hpp"
+#include "model/material.hpp"
+#include "model/point_evaluation.hpp"
+#include "sweep/batch_evaluator.hpp"
+
+using namespace punchsweep;
+using sweep::BatchEvaluator;
+
+namespace {
+
+bool bits_equal(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Every field a map or classify stores, compared bit for bit.
+void expect_same(const model::PointSummary& a, const model::PointSummary& b, const std::string& where) {
+  EXPECT_EQ(a.regime, b.regime) << where;
+  EXPECT_EQ(a.validity, b.validity) << where;
+  EXPECT_EQ(a.t_star.has_value(), b.t_star.has_value()) << where;
+  if (a.t_star && b.t_star) {
+    EXPECT_TRUE(bits_equal(*a.t_star, *b.t_star)) << where;
+  }
+  for (const auto& [x, y] : {std::pair{a.h_0, b.h_0}, {a.h_inf, b.h_inf}, {a.a1_inf, b.a1_inf}, {a.a2_inf, b.a2_inf},
+                             {a.area_fraction_inf, b.area_fraction_inf}, {a.start.a1, b.start.a1},
+                             {a.start.a2, b.start.a2}, {a.start.Q1, b.start.Q1}, {a.start.Q2, b.start.Q2},
+                             {a.invalid_at, b.invalid_at}}) {
+    EXPECT_TRUE(bits_equal(x, y)) << where << ": " << x << " against " << y;
+  }
+}
+
+/// A creep law under test: the registry's (the standard linear solid) or a shipped material's.
+struct Law {
+  std::string name;
+  model::CreepLawSpec spec;
+  std::vector<std::vector<double>> values;  ///< per parameter, the values to draw from
+  double ramp = 1.0;                        ///< a ramp time of the law's time scale
+};
+
+std::vector<model::Material>& materials() {
+  static std::vector<model::Material> kept;
+  return kept;
+}
+
+/// Every law the engine knows: the registry's and each shipped material (materials/*.ini:
+/// a Prony series with a WLF shift, a Kelvin series, a power law ...), so that a law added
+/// to either is covered here.
+std::vector<Law> every_law() {
+  std::vector<Law> laws;
+  for (const model::CreepLawSpec& spec : model::creep_laws()) {
+    Law law{std::string(spec.name), spec, {}, 1.0};
+    for (std::size_t p = 0; p < spec.parameters.size(); ++p) law.values.push_back({1.0, 2.5, 6.0});
+    laws.push_back(law);
+  }
+  const std::filesystem::path folder = std::filesystem::path(PUNCHSWEEP_SOURCE_DIR) / "materials";
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() == ".ini") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  materials().reserve(files.size());  // the specs refer to the materials
+  for (const std::filesystem::path& file : files) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    const model::Material& m = materials().emplace_back(model::Material::parse(text.str(), file.string()));
+    Law law{file.filename().string(), m.spec(), {}, 10.0};
+    for (const model::Parameter& p : law.spec.parameters) {
+      const double T_ref = std::stod(std::string(p.point_default));
+      law.values.push_back({T_ref, T_ref + 5.0, T_ref + 12.0});
+    }
+    laws.push_back(law);
+  }
+  return laws;
+}
+
+struct Points {
+  std::vector<double> l, dh, pbar, s, ramp;
+  std::vector<std::vector<double>> law;
+  sweep::PointColumns columns() const {
+    sweep::PointColumns c{l, dh, pbar, s, {}, ramp};
+    for (const std::vector<double>& v : law) c.law.push_back(v);
+    return c;
+  }
+  std::size_t size() const { return l.size(); }
+};
+
+/// n points over a few values of each coordinate (so that parts repeat), in random order.
+Points draw(const Law& law, std::size_t n, bool ramp, std::mt19937& rng) {
+  const auto pick = [&](const std::vector<double>& v) { return v[rng() % v.size()]; };
+  Points p;
+  p.law.resize(law.values.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    p.l.push_back(pick({0.6, 0.75, 1.0}));
+    p.dh.push_back(pick({0.0, 0.02, 0.05, 0.09}));
+    p.pbar.push_back(pick({0.01, 0.03, 0.06}));
+    p.s.push_back(pick({1.0, 2.0, 3.0}));
+    for (std::size_t k = 0; k < law.values.size(); ++k) p.law[k].push_back(pick(law.values[k]));
+    if (ramp) p.ramp.push_back(pick({0.0, 0.3 * law.ramp, 3.0 * law.ramp}));
+  }
+  return p;
+}
+
+/// What the model says at point i, computing every part itself.
+model::PointSummary alone(const Law& law, const Points& p, std::size_t i, model::Localization localization,
+                          const model::LoadShape& loading) {
+  model::ContactProblem problem;
+  problem.l = p.l[i];
+  problem.dh = p.dh[i];
+  problem.pbar0 = p.pbar[i];
+  problem.shape = model::Shape{static_cast<int>(p.s[i]), 0.5};
+  problem.localization = localization;
+  problem.loading = p.ramp.empty() ? loading : model::LoadShape::ramp(p.ramp[i]);
+  std::vector<double> values;
+  for (const std::vector<double>& v : p.law) values.push_back(v[i]);
+  return model::summarize_point(problem, *model::make_creep_law(law.spec, values));
+}
+
+struct Collect final : sweep::BatchSink {
+  std::vector<model::PointSummary> out;
+  std::size_t offset = 0;
+  void take(const sweep::BatchPoint& p) override { out[offset + p.k] = p.summary; }
+};
+
+}  // namespace
+
+TEST(BatchEvaluator, every_law_and_model_equals_summarize_point_in_any_order_and_batching) {
+  std::mt19937 rng(23);
+  const std::vector<Law> laws = every_law();
+  ASSERT_GE(laws.size(), 5u);  // the standard linear solid and the shipped materials
+  for (const Law& law : laws) {
+    for (const char* name : {"paper", "refined"}) {
+      const model::Localization localization = model::parse_localization(name);
+      for (const bool ramp : {false, true}) {
+        const model::LoadShape step;
+        const Points p = draw(law, 40, ramp, rng);
+        std::vector<model::PointSummary> expected;
+        for (std::size_t i = 0; i < p.size(); ++i) expected.push_back(alone(law, p, i, localization, step));
+        for (const BatchEvaluator::Memory memory : {BatchEvaluator::Memory::run, BatchEvaluator::Memory::call}) {
+          // In random order (runs of one), and sorted by (s, l, dh) in batches of 1 to 50
+          // through one evaluator: its caches carry over from batch to batch.
+          BatchEvaluator evaluator(law.spec, 0.5, localization, step, memory);
+          Collect all;
+          all.out.resize(p.size());
+          evaluator.summarize(p.columns(), all);
+          std::vector<std::size_t> order(p.size());
+          std::iota(order.begin(), order.end(), std::size_t{0});
+          std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return std::tie(p.s[a], p.l[a], p.dh[a]) < std::tie(p.s[b], p.l[b], p.dh[b]);
+          });
+          Points sorted;
+          sorted.law.resize(p.law.size());
+          for (const std::size_t i : order) {
+            sorted.l.push_back(p.l[i]);
+            sorted.dh.push_back(p.dh[i]);
+            sorted.pbar.push_back(p.pbar[i]);
+            sorted.s.push_back(p.s[i]);
+            if (ramp) sorted.ramp.push_back(p.ramp[i]);
+            for (std::size_t k = 0; k < p.law.size(); ++k) sorted.law[k].push_back(p.law[k][i]);
+          }
+          Collect batched;
+          batched.out.resize(p.size());
+          const sweep::PointColumns columns = sorted.columns();
+          for (std::size_t begin = 0; begin < p.size();) {
+            const std::size_t count = std::min<std::size_t>(1 + rng() % 50, p.size() - begin);
+            sweep::PointColumns part{columns.l.subspan(begin, count), columns.dh.subspan(begin, count),
+                                     columns.pbar.subspan(begin, count), columns.s.subspan(begin, count), {}, {}};
+            for (const auto column : columns.law) part.law.push_back(column.subspan(begin, count));
+            if (ramp) part.ramp_time = columns.ramp_time.subspan(begin, count);
+            batched.offset = begin;
+            evaluator.summarize(part, batched);
+            begin += count;
+          }
+          for (std::size_t i = 0; i < p.size(); ++i) {
+            const std::string where = law.name + " " + name + (ramp ? " ramp" : " step") + " point ";
+            expect_same(all.out[i], expected[i], where + std::to_string(i) + " (random order)");
+            expect_same(batched.out[i], expected[order[i]], where + std::to_string(order[i]) + " (sorted, in batches)");
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(BatchEvaluator, refuses_columns_that_do_not_fit_the_law) {
+  const model::CreepLawSpec& sls = model::creep_laws().front();
+  BatchEvaluator evaluator(sls, 0.5, model::Localization{});
+  const std::vector<double> one{0.75}, two{0.05, 0.06};
+  Collect sink;
+  sink.out.resize(2);
+  EXPECT_THROW(evaluator.summarize(sweep::PointColumns{one, one, one, one, {}, {}}, sink), std::invalid_argument);
+  EXPECT_THROW(evaluator.summarize(sweep::PointColumns{one, two, one, one, {one}, {}}, sink), std::invalid_argument);
+}
+
+TEST(BatchEvaluator, stops_on_request_between_points) {
+  const model::CreepLawSpec& sls = model::creep_laws().front();
+  BatchEvaluator evaluator(sls, 0.5, model::Localization{});
+  const std::vector<double> l(1000, 0.75), T(1000, 2.5), s(1000, 2.0);
+  std::vector<double> dh(1000), pbar(1000, 0.03);
+  for (std::size_t i = 0; i < dh.size(); ++i) dh[i] = 0.01 + 1e-4 * static_cast<double>(i);
+  Collect sink;
+  sink.out.resize(1000);
+  int asked = 0;
+  const model::StopRequest stop([&] { return ++asked > 3; });
+  EXPECT_THROW(evaluator.summarize(sweep::PointColumns{l, dh, pbar, s, {T}, {}}, sink, stop), model::Stopped);
+  EXPECT_EQ(asked, 4);
+}
