@@ -153,7 +153,7 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
 ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide,
                               const TwoLevelBranch* branch) {
   if (problem.localization.is_paper()) return solve_elastic_two_level(problem, E, guide);
-  std::unique_ptr<const TwoLevelBranch> own;
+  std::shared_ptr<const TwoLevelBranch> own;
   if (branch == nullptr) {
     own = make_branch(problem, touchdown(problem));
     branch = own.get();

@@ -1,6 +1,8 @@
 #include "model/periodic_table.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -9,6 +11,7 @@
 #include <stdexcept>
 
 #include "model/integer_power.hpp"
+#include "model/shape.hpp"
 
 namespace punchsweep::model {
 namespace {
@@ -41,34 +44,32 @@ GridPosition locate(double x, double lo, double hi, int count) {
   return {i, f - i};
 }
 
-/// The cubic through four equally spaced values p[-1], p[0], p[1], p[2] (Catmull-Rom's
-/// interpolating form: the Lagrange cubic on the four nodes) at offset u in [0, 1] from p[0].
-double cubic(double pm, double p0, double p1, double p2, double u) {
-  const double wm = -u * (u - 1.0) * (u - 2.0) / 6.0;
-  const double w0 = (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0;
-  const double w1 = -(u + 1.0) * u * (u - 2.0) / 2.0;
-  const double w2 = (u + 1.0) * u * (u - 1.0) / 6.0;
-  return wm * pm + w0 * p0 + w1 * p1 + w2 * p2;
+/// The weights of the cubic through four equally spaced values p[-1], p[0], p[1], p[2]
+/// (Catmull-Rom's interpolating form: the Lagrange cubic on the four nodes) at offset u in
+/// [0, 1] from p[0].
+struct CubicWeights {
+  double wm, w0, w1, w2;
+  double apply(double pm, double p0, double p1, double p2) const { return wm * pm + w0 * p0 + w1 * p1 + w2 * p2; }
+};
+CubicWeights cubic_weights(double u) {
+  return {-u * (u - 1.0) * (u - 2.0) / 6.0, (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0,
+          -(u + 1.0) * u * (u - 2.0) / 2.0, (u + 1.0) * u * (u - 1.0) / 6.0};
 }
 
-/// The derivative of cubic() in u.
-double cubic_rate(double pm, double p0, double p1, double p2, double u) {
-  const double wm = -(3.0 * u * u - 6.0 * u + 2.0) / 6.0;
-  const double w0 = (3.0 * u * u - 4.0 * u - 1.0) / 2.0;
-  const double w1 = -(3.0 * u * u - 2.0 * u - 2.0) / 2.0;
-  const double w2 = (3.0 * u * u - 1.0) / 6.0;
-  return wm * pm + w0 * p0 + w1 * p1 + w2 * p2;
-}
-
-/// The cubic through the four samples about interval i of `values` (stride `stride`,
-/// `count` >= 4 of them, as from_tables requires): nodes i - 1 .. i + 2, shifted inward at
-/// the ends (one-sided).
-double interpolate(const double* values, int count, int stride, GridPosition at) {
-  const auto v = [&](int k) { return values[static_cast<std::ptrdiff_t>(k) * stride]; };
-  const int i = at.i;
-  const int first = std::clamp(i - 1, 0, count - 4);
-  return cubic(v(first), v(first + 1), v(first + 2), v(first + 3), at.u + (i - first - 1));
-}
+/// The cubic through the four samples about interval `at.i` of `count` (>= 4, as
+/// from_tables requires): nodes i - 1 .. i + 2, shifted inward at the ends (one-sided). Its
+/// weights serve every field sampled on the same nodes (a table's fields share them).
+struct Stencil {
+  int first;
+  CubicWeights w;
+  Stencil(GridPosition at, int count)
+      : first(std::clamp(at.i - 1, 0, count - 4)), w(cubic_weights(at.u + (at.i - first - 1))) {}
+  /// At `values` with stride 1.
+  double operator()(const double* values) const {
+    const double* v = values + first;
+    return w.apply(v[0], v[1], v[2], v[3]);
+  }
+};
 
 }  // namespace
 
@@ -76,7 +77,13 @@ double PeriodicTable::sample_excess(int j, int k) const {
   return std::pow(static_cast<double>(k) / (K - 1) * w_full[static_cast<std::size_t>(j)], row_power());
 }
 
-double PeriodicTable::delta_hidden() const { return std::pow(2.0, -0.5 * s); }
+double PeriodicTable::delta_hidden() const {
+  // 2^(-s/2) without pow (a point asks for it several times): sqrt(2) 2^(-(s+1)/2) for odd
+  // s, the power of two by exact halvings.
+  double out = s % 2 != 0 ? std::numbers::sqrt2 : 1.0;
+  for (int k = 0; k < (s + 1) / 2; ++k) out *= 0.5;
+  return out;
+}
 double PeriodicTable::xi_full_single() const { return ipow(v_full, s + 1); }
 
 PeriodicState PeriodicTable::single(double xi) const {
@@ -90,31 +97,45 @@ PeriodicState PeriodicTable::single(double xi) const {
     return out;
   }
   const int count = static_cast<int>(h1.size());
-  const GridPosition at = locate(std::max(v, v_lo), v_lo, v_full, count);
-  out.h = interpolate(h1.data(), count, 1, at);
-  out.a1 = interpolate(a11.data(), count, 1, at);
+  const Stencil at(locate(std::max(v, v_lo), v_lo, v_full, count), count);
+  out.h = at(h1.data());
+  out.a1 = at(a11.data());
   return out;
 }
 
 double PeriodicTable::touchdown_v(double delta) const {
   // h increases from sample to sample: the interval that holds delta, then the root of the
-  // interval's cubic (the one single() evaluates there) to the rounding of its offset.
+  // interval's cubic (the one single() evaluates there).
   const int count = static_cast<int>(h1.size());
+  // Past the last sample level 2 touches only as level 1 makes full contact.
+  if (delta >= h1.back()) return v_full;
   const int i = std::clamp(static_cast<int>(std::upper_bound(h1.begin(), h1.end(), delta) - h1.begin()) - 1, 0,
                            count - 2);
-  const int first = std::clamp(i - 1, 0, count - 4);  // as interpolate() picks its nodes
-  const double shift = i - first - 1;
-  // Newton on the cubic, kept inside a bracket that every step narrows (bisection where a
-  // step would leave it): five or six evaluations instead of fifty.
+  const int first = std::clamp(i - 1, 0, count - 4);  // as Stencil picks its nodes
+  const double shift = i - first - 1;                 // the interval is x in [shift, shift + 1]
+  // The cubic through (-1, p0), (0, p1), (1, p2), (2, p3) in powers of x (cubic_weights()
+  // expanded), for Newton steps of a few operations each.
   const double* p = &h1[static_cast<std::size_t>(first)];
-  double lo = 0.0, hi = 1.0, u = 0.5;
+  const double c3 = (p[3] - p[0]) / 6.0 + (p[1] - p[2]) / 2.0;
+  const double c2 = (p[0] + p[2]) / 2.0 - p[1];
+  const double c1 = p[2] - p[0] / 3.0 - p[1] / 2.0 - p[3] / 6.0;
+  const double c0 = p[1] - delta;
+  // Newton from the chord's root, kept inside a bracket that every step narrows (bisection
+  // where a step would leave it): three or four steps. A step of 1e-12 leaves an error of
+  // its square; a tolerance at the rounding of u is not reached where the cubic's own
+  // rounding moves f (it took 12 steps on average).
+  const double chord = h1[static_cast<std::size_t>(i) + 1] - h1[static_cast<std::size_t>(i)];
+  double lo = 0.0, hi = 1.0;
+  double u = chord > 0.0 ? std::clamp((delta - h1[static_cast<std::size_t>(i)]) / chord, 0.0, 1.0) : 0.5;
   for (int k = 0; k < 60; ++k) {
-    const double f = cubic(p[0], p[1], p[2], p[3], u + shift) - delta;
+    const double x = u + shift;
+    const double f = ((c3 * x + c2) * x + c1) * x + c0;
+    if (f == 0.0) break;  // the root to the last bit (a bisection from here went astray for 30 steps)
     (f < 0.0 ? lo : hi) = u;
-    const double rate = cubic_rate(p[0], p[1], p[2], p[3], u + shift);
+    const double rate = (3.0 * c3 * x + 2.0 * c2) * x + c1;
     double next = rate > 0.0 ? u - f / rate : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - u) <= 1e-15 || next == lo || next == hi) {
+    if (std::abs(next - u) <= 1e-12 || next == lo || next == hi) {
       u = next;
       break;
     }
@@ -145,8 +166,9 @@ PeriodicTable::Row PeriodicTable::row(double delta, double xi_star) const {
   const GridPosition dj = locate(d, 0.0, delta_top, J);
   out.interval = dj.i;
   out.offset = dj.u;
-  out.w_full = interpolate(w_full.data(), J, 1, dj);
-  out.share2 = interpolate(share2.data(), J, 1, dj);
+  const Stencil across(dj, J);
+  out.w_full = across(w_full.data());
+  out.share2 = across(share2.data());
   return out;
 }
 
@@ -157,13 +179,13 @@ PeriodicState PeriodicTable::two_level(double xi, const Row& row) const {
   const double excess = std::max(xi - row.xi_star, 0.0);
   const double r = root(excess, row_power()) / row.w_full;
   // The bicubic: in r along each of the four rows about delta, then across them.
-  const GridPosition rk = locate(std::min(r, 1.0), 0.0, 1.0, K);
+  const Stencil along(locate(std::min(r, 1.0), 0.0, 1.0, K), K);
   const int first = std::clamp(row.interval - 1, 0, J - 4);  // J >= 4 (from_tables)
-  const GridPosition across{row.interval - first, row.offset};
+  const Stencil across(GridPosition{row.interval - first, row.offset}, 4);
   const auto at = [&](const std::vector<double>& field) {
     double rows[4];
-    for (int m = 0; m < 4; ++m) rows[m] = interpolate(&field[static_cast<std::size_t>(first + m) * K], K, 1, rk);
-    return interpolate(rows, 4, 1, across);
+    for (int m = 0; m < 4; ++m) rows[m] = along(&field[static_cast<std::size_t>(first + m) * K]);
+    return across(rows);
   };
   out.a1 = at(a1);
   out.a2 = std::max(at(a2), 0.0);
@@ -326,15 +348,28 @@ std::map<int, std::shared_ptr<const PeriodicTable>>& loaded() {
   static std::map<int, std::shared_ptr<const PeriodicTable>> tables;
   return tables;
 }
+// The loaded tables by s, read without the lock: a point looks its tables up several times
+// (the touchdown, the branch, each single-level state), and the lock cost 0.1-0.2 us of the
+// 1.8 us a scattered point took (issue 23). Set under the lock, after the table is whole.
+constexpr int kFastExponents = Shape::kMaxExponent + 1;  // s in [0, kMaxExponent]
+std::array<std::atomic<const PeriodicTable*>, kFastExponents>& ready() {
+  static std::array<std::atomic<const PeriodicTable*>, kFastExponents> tables{};
+  return tables;
+}
 }  // namespace
 
 void set_periodic_table_source(PeriodicTableSource f) {
   const std::lock_guard lock(source_mutex());
   source() = std::move(f);
+  for (auto& table : ready()) table.store(nullptr, std::memory_order_release);
   loaded().clear();
 }
 
 const PeriodicTable& periodic_table(int s) {
+  const bool fast = s >= 0 && s < kFastExponents;
+  if (fast) {
+    if (const PeriodicTable* table = ready()[static_cast<std::size_t>(s)].load(std::memory_order_acquire)) return *table;
+  }
   const std::lock_guard lock(source_mutex());
   auto& entry = loaded()[s];
   if (!entry) {
@@ -345,6 +380,7 @@ const PeriodicTable& periodic_table(int s) {
     entry = source()(s);
     if (!entry) throw std::runtime_error("no periodic tables for s = " + std::to_string(s));
   }
+  if (fast) ready()[static_cast<std::size_t>(s)].store(entry.get(), std::memory_order_release);
   return *entry;
 }
 

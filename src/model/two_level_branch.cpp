@@ -5,9 +5,9 @@
 
 namespace punchsweep::model {
 
-std::unique_ptr<const TwoLevelBranch> make_branch(const ContactProblem& problem, const Touchdown& touch) {
-  if (problem.localization.periodic) return std::make_unique<const PeriodicBranch>(problem, touch);
-  return std::make_unique<const ShellsBranch>(problem, touch);
+std::shared_ptr<const TwoLevelBranch> make_branch(const ContactProblem& problem, const Touchdown& touch) {
+  if (problem.localization.periodic) return std::make_shared<const PeriodicBranch>(problem, touch);
+  return std::make_shared<const ShellsBranch>(problem, touch);
 }
 
 }  // namespace punchsweep::model

@@ -32,7 +32,8 @@ class TwoLevelBranch {
 
 /// The branch of the problem's localization from its touchdown: the periodic tables'
 /// (PeriodicBranch) or the refined family's (ShellsBranch). Not for the paper's model, whose
-/// radii are frozen (TwoLevelSystem).
-std::unique_ptr<const TwoLevelBranch> make_branch(const ContactProblem& problem, const Touchdown& touch);
+/// radii are frozen (TwoLevelSystem). Shared: a sweep's and classify's points share one per
+/// (l, s, C, dh) (model::DhParts), and make_shared allocates it with its count at once.
+std::shared_ptr<const TwoLevelBranch> make_branch(const ContactProblem& problem, const Touchdown& touch);
 
 }  // namespace punchsweep::model
