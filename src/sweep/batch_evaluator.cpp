@@ -1,7 +1,10 @@
 #include "sweep/batch_evaluator.hpp"
 
+#include <array>
 #include <bit>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -16,7 +19,13 @@ namespace {
 // guide each (a few kB); the others are small.
 constexpr std::size_t kMaxParts = std::size_t{1} << 16;
 constexpr std::size_t kMaxStates = std::size_t{1} << 18;
+constexpr std::size_t kMaxRuns = std::size_t{1} << 10;
+constexpr int kLog2Elastic = 12;  // the paper's elastic starts: one per pbar of a run
 constexpr std::size_t kMaxMaterials = std::size_t{1} << 12;
+// Points between two questions to a StopRequest (the Python module's reads the clock), and
+// before building a run's parts.
+constexpr std::size_t kStopEvery = 64;
+constexpr std::size_t kStopBeforeParts = 8;
 
 bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
@@ -32,7 +41,8 @@ BatchEvaluator::BatchEvaluator(const model::CreepLawSpec& law, double C, model::
       touch_(3, kMaxParts),
       single_(3, kMaxStates),
       materials_(law.parameters.size() + 1, kMaxMaterials),
-      elastic_(1, kMaxStates) {}
+      elastic_(kLog2Elastic),
+      runs_(5 + law.parameters.size(), kMaxRuns) {}
 
 const BatchEvaluator::Material& BatchEvaluator::material_at(const PointColumns& points, std::size_t k) {
   key_.clear();
@@ -50,6 +60,13 @@ model::SingleLevelState BatchEvaluator::single_at(const model::ContactProblem& p
   const double key[] = {static_cast<double>(problem.shape.s), problem.l, X};
   if (const model::SingleLevelState* found = single_.find(key)) return *found;
   return single_.insert(key, model::single_level_at(problem, X));
+}
+
+model::SingleLevelEnds BatchEvaluator::ends_at(const model::ContactProblem& problem, const model::CreepLaw& creep,
+                                               bool cached) {
+  const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
+  const model::SingleLevelState final_state = single_at(problem, load.final(), cached);
+  return {single_at(problem, load.initial(), cached).h, final_state.h, final_state.a1};
 }
 
 void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, const model::StopRequest& stop) {
@@ -78,32 +95,59 @@ void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, cons
     return points.ramp_time.empty() || same(points.ramp_time[a], points.ramp_time[b]);
   };
   bool cache_single = run_memory;
+  const std::size_t width = 2 + points.law.size();  // a point's keys in Run::keys
   model::DhParts own;
+  std::size_t unchecked = kStopEvery;  // points since `stop` was last asked
   for (std::size_t begin = 0; begin < n;) {
-    stop.throw_if_requested();
     const double s = points.s[begin], l = points.l[begin], dh = points.dh[begin];
     std::size_t end = begin + 1;
     while (end < n && same(points.s[end], s) && same(points.l[end], l) && same(points.dh[end], dh)) ++end;
     if (!run_memory && (begin == 0 || !same(points.s[begin - 1], s) || !same(points.l[begin - 1], l))) {
       // A new (s, l): its single-level states are met again only if another dh follows.
-      single_.clear();
       cache_single = end < n && same(points.s[end], s) && same(points.l[end], l);
     }
     problem.l = l;
     problem.dh = dh;
     problem.shape = model::Shape{static_cast<int>(s), C_};
+    // Building the parts can take milliseconds (the refined model's curves): ask before
+    // that as well, every few runs.
+    const auto build = [&] {
+      if (unchecked >= kStopBeforeParts) {
+        stop.throw_if_requested();
+        unchecked = 0;
+      }
+      return model::dh_parts(problem);
+    };
     const model::DhParts* parts = &own;
     if (run_memory) {
       const double key[] = {s, l, dh};
       parts = touch_.find(key);
-      if (parts == nullptr) parts = &touch_.insert(key, model::dh_parts(problem));
+      if (parts == nullptr) parts = &touch_.insert(key, build());
     } else {
-      own = model::dh_parts(problem);
+      own = build();
     }
-    if (paper) elastic_.clear();
 
+    Run* run = nullptr;
+    if (cache_single) {
+      // A run is known by its (s, l), its first point and its length: a sweep's tiles that
+      // cut the law's axes or pbar into parts make runs of several kinds in one (s, l).
+      point_key_.assign({s, l, points.pbar[begin]});
+      for (const std::span<const double> column : points.law) point_key_.push_back(column[begin]);
+      point_key_.push_back(points.ramp_time.empty() ? 0.0 : points.ramp_time[begin]);
+      point_key_.push_back(static_cast<double>(end - begin));
+      run = runs_.find(point_key_);
+      if (run == nullptr) run = &runs_.insert(point_key_, Run{});
+      if (run->ends.size() < end - begin) {
+        run->keys.resize((end - begin) * width, std::numeric_limits<double>::quiet_NaN());  // matches no point
+        run->ends.resize(end - begin);
+      }
+    }
+    point_key_.resize(width);
     for (std::size_t k = begin; k < end; ++k) {
-      if (((k - begin) & 63) == 63) stop.throw_if_requested();
+      if (++unchecked >= kStopEvery) {
+        stop.throw_if_requested();
+        unchecked = 0;
+      }
       if (material == nullptr || !same_material(k, material_k)) {
         material = &material_at(points, k);
         material_k = k;
@@ -111,18 +155,35 @@ void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, cons
       }
       const model::CreepLaw& creep = *material->creep;
       problem.pbar0 = points.pbar[k];
-      const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
-      const model::SingleLevelState final_state = single_at(problem, load.final(), cache_single);
-      const model::SingleLevelEnds ends{single_at(problem, load.initial(), cache_single).h, final_state.h,
-                                        final_state.a1};
+      // The ends: the last run of this (s, l)'s at this position where it had this
+      // point's pbar and law, else through single_ (and kept there for the next run).
+      model::SingleLevelEnds ends;
+      if (run != nullptr) {
+        const std::size_t j = k - begin;
+        point_key_[0] = problem.pbar0;
+        for (std::size_t q = 0; q < points.law.size(); ++q) point_key_[1 + q] = points.law[q][k];
+        point_key_[width - 1] = points.ramp_time.empty() ? 0.0 : points.ramp_time[k];
+        double* stored = &run->keys[j * width];
+        bool known = true;
+        for (std::size_t q = 0; q < width && known; ++q) known = same(point_key_[q], stored[q]);
+        if (known) {
+          ends = run->ends[j];
+        } else {
+          ends = ends_at(problem, creep, true);
+          std::copy(point_key_.begin(), point_key_.end(), stored);
+          run->ends[j] = ends;
+        }
+      } else {
+        ends = ends_at(problem, creep, false);
+      }
       // The elastic start at t = 0 has modulus 1/J(0) = 1 E0* for every creep law (the unit
-      // of pressure): per pbar within the run. Kept for the paper's model, whose start is a
+      // of pressure): per (s, l, dh, pbar). Kept for the paper's model, whose start is a
       // Newton solve (3 us); the others read their branch, no dearer than the lookup.
       std::optional<model::ElasticTwoLevel>* elastic = nullptr;
       if (paper) {
-        const double key[] = {problem.pbar0};
+        const std::array<double, 4> key{s, l, dh, problem.pbar0};
         elastic = elastic_.find(key);
-        if (elastic == nullptr) elastic = &elastic_.insert(key, std::nullopt);
+        if (elastic == nullptr) elastic = &elastic_.put(key, std::nullopt);
       }
       const model::PointSummary summary = model::summarize_point(problem, creep, *parts, ends, elastic);
       sink.take(BatchPoint{k, problem, creep, *parts, summary});
