@@ -31,6 +31,12 @@ double PeriodicSingleLevel::displacement_difference(double /*a1*/, double X) con
   return scales_.h_unit * table_->single(X / scales_.X_unit).h;
 }
 
+PeriodicSingleLevel::State PeriodicSingleLevel::state(double X) const {
+  if (!std::isfinite(X)) return {contact_radius(X), kInf};
+  const PeriodicState s = table_->single(X / scales_.X_unit);
+  return {scales_.l * s.a1, scales_.h_unit * s.h};
+}
+
 Touchdown PeriodicSingleLevel::touchdown(double dh) const {
   Touchdown t;
   const std::optional<double> xi = table_->touchdown(dh / scales_.h_unit);

@@ -33,6 +33,13 @@ class PeriodicSingleLevel {
   double contact_radius(double X) const;
   /// h at X (the first argument, the radius, is not needed: the table is in X).
   double displacement_difference(double /*a1*/, double X) const;
+  /// Both from one reading of the curve (h infinite for infinite X): what a point's
+  /// single-level states need, at half the cost of the two calls.
+  struct State {
+    double a1 = 0.0;
+    double h = 0.0;
+  };
+  State state(double X) const;
   /// Where level 2 touches: h(X*) = dh; X* = +infinity when the level-2 surface hides under
   /// level 1 (dh >= C (l/sqrt(2))^s).
   Touchdown touchdown(double dh) const;

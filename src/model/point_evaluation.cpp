@@ -166,8 +166,14 @@ std::string PointSummary::reason(std::string_view time_unit) const {
 SingleLevelState single_level_at(const ContactProblem& problem, double X) {
   SingleLevelState state;
   visit_single_level(problem, [&](const auto& single) {
-    state.a1 = single.contact_radius(X);
-    state.h = std::isfinite(X) ? single.displacement_difference(state.a1, X) : kInf;
+    if constexpr (requires { single.state(X); }) {
+      const auto both = single.state(X);  // the periodic tables: one reading
+      state.a1 = both.a1;
+      state.h = both.h;
+    } else {
+      state.a1 = single.contact_radius(X);
+      state.h = std::isfinite(X) ? single.displacement_difference(state.a1, X) : kInf;
+    }
   });
   return state;
 }

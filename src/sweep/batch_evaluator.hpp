@@ -88,7 +88,8 @@ class BatchEvaluator {
   Memory memory_;
   ValueCache<model::DhParts> touch_;                   ///< (s, l, dh)
   ValueCache<model::SingleLevelState> single_;         ///< (s, l, X)
-  ValueCache<Material> materials_;                     ///< the law's values (and ramp_time)
+  ValueCache<Material> materials_;                     ///< the law's values (and ramp_time), Memory::run
+  Material last_;                                      ///< the last one made, Memory::call
   DirectCache<std::optional<model::ElasticTwoLevel>, 4> elastic_;  ///< (s, l, dh, pbar)
   std::vector<double> key_;                            ///< scratch of material_at()
   std::vector<double> point_key_;                      ///< scratch: a point's key in Run::keys
