@@ -316,6 +316,72 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   return out;
 }
 
+/// A material file as the engine reads it (app::read_material_file: its checks, its
+/// messages), for punchsweep.Material.
+struct MaterialHandle {
+  std::shared_ptr<const model::Material> material;
+
+  /// The file's description and constants: name, law, time unit, E_0 and E0* in Pa, nu,
+  /// the shift's description and T_ref (None without a shift).
+  py::dict info() const {
+    const model::Material& m = *material;
+    py::dict out;
+    out["name"] = m.name();
+    out["law"] = m.law();
+    out["time_unit"] = m.time_unit();
+    out["E0_Pa"] = m.instantaneous_modulus_Pa();
+    out["plane_strain_modulus_Pa"] = m.plane_strain_modulus_Pa();
+    out["poisson"] = m.poisson();
+    out["description"] = m.describe();
+    out["shift"] = m.shift() ? py::object(py::str(m.shift()->describe())) : py::none();
+    out["reference_temperature"] = m.shift() ? py::object(py::float_(m.shift()->T_ref)) : py::none();
+    return out;
+  }
+
+  /// The law at `temperature` (degC; NaN: the file's own, at T_ref where it has a shift).
+  std::unique_ptr<model::CreepLaw> law_at(double temperature) const {
+    const model::Material& m = *material;
+    if (std::isnan(temperature) || m.parameters().empty()) {
+      if (!std::isnan(temperature)) {
+        throw app::UsageError("the material " + m.name() + " has no temperature shift, so it takes no temperature");
+      }
+      std::vector<double> values;
+      for (const model::Parameter& p : m.parameters()) values.push_back(std::stod(std::string(p.point_default)));
+      return m.make(values);
+    }
+    const double values[] = {temperature};
+    try {
+      return m.make(values);
+    } catch (const std::invalid_argument& e) {
+      throw app::UsageError(e.what());
+    }
+  }
+
+  /// J(t) (in 1/E0*, as the engine holds it) or E(t) (in E0*) at times t in the file's unit.
+  py::array_t<double> evaluate(Column t, double temperature, bool relaxation) const {
+    const std::unique_ptr<model::CreepLaw> law = law_at(temperature);
+    py::array_t<double> out(t.size());
+    const double* in = t.data();
+    double* values = out.mutable_data();
+    for (py::ssize_t i = 0; i < t.size(); ++i) {
+      if (!(in[i] >= 0.0)) throw app::UsageError("material: times must be >= 0 (in the file's time unit)");
+      values[i] = relaxation ? law->relaxation(in[i]) : law->creep(in[i]);
+    }
+    return out;
+  }
+
+  /// log10 a_T(temperature); ValueError naming the shift's range outside it.
+  double log10_shift(double temperature) const {
+    const model::Material& m = *material;
+    if (!m.shift()) throw app::UsageError("the material " + m.name() + " has no temperature shift");
+    if (!m.shift()->admits(temperature)) {
+      throw app::UsageError("temperature = " + app::json_number(temperature) + " is outside the shift's range: " +
+                            m.shift()->range());
+    }
+    return m.shift()->log10_factor(temperature);
+  }
+};
+
 /// The map's regime codes and names (model::Regime), for decoding classify's codes.
 py::dict regime_codes() {
   py::dict out;
@@ -348,4 +414,15 @@ PYBIND11_MODULE(_core, m) {
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "
         "as a list of such arrays, ramp_time empty for a step (the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
+  py::class_<MaterialHandle>(m, "MaterialFile", "a material file as the engine reads it (use punchsweep.Material)")
+      .def("info", &MaterialHandle::info)
+      .def("evaluate", &MaterialHandle::evaluate, py::arg("t"), py::arg("temperature"), py::arg("relaxation"))
+      .def("log10_shift", &MaterialHandle::log10_shift, py::arg("temperature"));
+  m.def(
+      "material",
+      [](const std::string& path) {
+        if (path.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
+        return MaterialHandle{app::read_material_file(path)};
+      },
+      py::arg("path"), "reads a material file (ValueError with the engine's message)");
 }

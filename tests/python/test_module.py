@@ -393,3 +393,62 @@ def test_classify_takes_a_ramp_and_a_material_at_its_reference_temperature(local
         punchsweep.classify(0.75, 0.05, 2.5, 0.06, 2, ramp_time=-1.0)
     with pytest.raises(ValueError, match="no temperature shift"):
         punchsweep.classify(0.75, 0.05, pbar=0.06, s=2, material=MATERIAL, temperature=30.0)
+
+
+def _prony_constants(path):
+    """E_inf, E_i, tau_i in Pa and the file's time unit, and its [shift], read here with
+    configparser (independently of the engine)."""
+    import configparser
+    cp = configparser.ConfigParser(inline_comment_prefixes=("#",))
+    cp.read(path)
+    scale = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9}[cp["material"]["modulus_unit"]]
+    numbers = lambda key: np.array([float(x) for x in cp["material"][key].split(",")])  # noqa: E731
+    shift = {k: float(v) for k, v in cp["shift"].items() if k != "kind"} if cp.has_section("shift") else None
+    return float(cp["material"]["E_inf"]) * scale, numbers("E_i") * scale, numbers("tau_i"), shift
+
+
+def test_material_gives_its_moduli_compliance_and_shift():
+    """punchsweep.Material (issue 24's materials in Python, begun with issue 23's classify):
+    E(t) equals the file's Prony series; J(t) is its interconverse (checked in the Laplace
+    domain, s^2 J^(s) E^(s) = 1, by quadrature here); a_T is the file's WLF; a temperature
+    rescales time by a_T; and the object goes wherever a material file goes."""
+    path = REPO / "materials" / "pla_prusament_chapuis2025.ini"
+    m = punchsweep.Material(path)
+    E_inf, E_i, tau_i, shift = _prony_constants(path)
+    assert m.time_unit == "s" and m.poisson == 0.35 and m.reference_temperature == shift["t_ref"]
+    assert m.E0_Pa == pytest.approx(E_inf + E_i.sum(), rel=1e-12)
+    assert m.plane_strain_modulus_Pa == pytest.approx(m.E0_Pa / (1 - 0.35 ** 2), rel=1e-12)
+    t = np.geomspace(1e-15, 1e4, 60)
+    expected = E_inf + (E_i[None, :] * np.exp(-t[:, None] / tau_i[None, :])).sum(axis=1)
+    assert np.allclose(m.E(t), expected, rtol=1e-10, atol=0)
+    assert m.J(0.0) == pytest.approx(1 / m.E0_Pa, rel=1e-12)
+    assert m.J(1e12) == pytest.approx(1 / E_inf, rel=1e-9)
+    u = np.linspace(np.log(1e-18), np.log(1e9), 400_001)
+    for s in (1e-3, 1.0, 1e3):
+        x = np.exp(u)
+        keep = s * x < 60
+        J_hat = np.trapz((m.J(x[keep]) * np.exp(-s * x[keep]) * x[keep]), u[keep])
+        E_hat = E_inf / s + (E_i * tau_i / (1 + s * tau_i)).sum()
+        assert s * s * J_hat * E_hat == pytest.approx(1.0, rel=1e-4), s
+    C1, C2, T_ref = shift["c1"], shift["c2"], shift["t_ref"]
+    for T in (70.0, 85.0):
+        a = 10 ** (-C1 * (T - T_ref) / (C2 + T - T_ref))
+        assert m.a_T(T) == pytest.approx(a, rel=1e-12)
+        assert np.allclose(m.J(t, temperature=T), m.J(t / a), rtol=1e-12, atol=0)
+    assert m.a_T([65.0, 75.0]).shape == (2,)
+    with pytest.raises(ValueError, match="outside the shift's range"):
+        m.a_T(200)
+    # Wherever a material file goes: point(), classify().
+    c = punchsweep.classify(0.75, [0.005, 0.02], pbar=5.187e-4, s=2, material=m, temperature=75,
+                            localization="periodic")
+    for i, dh in enumerate((0.005, 0.02)):
+        r = punchsweep.point(l=0.75, dh=dh, pbar=5.187e-4, s=2, material=m, temperature=75, times=[0.0],
+                             localization="periodic")
+        assert c.regime_names()[i] == r.regime
+        assert same_bits(c["t_star"][i], np.nan if r.t_star is None else r.t_star)
+    nbr = punchsweep.Material(MATERIAL)
+    assert nbr.reference_temperature is None and nbr.shift is None
+    with pytest.raises(ValueError, match="no temperature shift"):
+        nbr.J(1.0, temperature=30)
+    with pytest.raises(ValueError):
+        punchsweep.Material(REPO / "README.md")

@@ -31,7 +31,7 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["point", "reference", "classify", "open_map", "PointResult", "ReferenceResult",
+__all__ = ["point", "reference", "classify", "open_map", "Material", "PointResult", "ReferenceResult",
            "Classification", "REGIMES"]
 
 #: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
@@ -134,6 +134,7 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     """`punchsweep point` in-process. Keywords are its options (None: the command's default:
     C = 0.5, times 0, 0.5, 1, 2, 5, the refined localization); a material file's own
     parameters go in **options. ValueError with the command's message for bad input."""
+    material = None if material is None else os.fspath(material)  # a path or a Material
     args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
                            temperature=temperature, pressure=pressure, ramp=ramp,
                            load_table=load_table, localization=localization, **options))
@@ -148,6 +149,7 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
               load_table: str | None = None, **options: Any) -> ReferenceResult:
     """`punchsweep reference` in-process (the periodic BEM on a bem_grid x bem_grid grid of
     the cell, default 128), without the interpreter lock held while it solves."""
+    material = None if material is None else os.fspath(material)  # a path or a Material
     args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, bem_grid=bem_grid,
                            material=material, temperature=temperature, pressure=pressure,
                            ramp=ramp, load_table=load_table, **options))
@@ -175,6 +177,55 @@ class Classification(Mapping):
         """The regimes as text ('immediate', 'delayed', 'never'), of the same shape."""
         names = np.array([REGIMES[k] for k in sorted(REGIMES)])
         return names[self.arrays["regime"]]
+
+
+class Material:
+    """A material file (materials/*.ini; docs/materials) as the engine reads it, with its
+    creep compliance, relaxation modulus and temperature shift. Pass it wherever a material
+    file goes (`point(material=...)`, `classify(material=...)`; it is os.PathLike).
+
+    Attributes: path, name, law ("prony", "kelvin", "power_law"), time_unit (of every t),
+    E0_Pa (the instantaneous modulus E_0), poisson (nu), plane_strain_modulus_Pa
+    (E0* = E_0/(1 - nu^2), the unit of the engine's pressures), description, shift (its
+    description, or None), reference_temperature (degC, or None without a shift).
+    ValueError with the engine's message for a file it refuses."""
+
+    def __init__(self, path):
+        self.path = os.fspath(path)
+        self._file = _core.material(self.path)
+        for key, value in self._file.info().items():
+            setattr(self, key, value)
+
+    def __fspath__(self) -> str:
+        return self.path
+
+    def __repr__(self) -> str:
+        return f"Material({self.path!r}: {self.description})"
+
+    def _at(self, t, temperature, relaxation: bool) -> np.ndarray:
+        times = np.asarray(t, dtype=float)
+        flat = np.ascontiguousarray(times).reshape(-1)
+        T = float("nan") if temperature is None else float(temperature)
+        return self._file.evaluate(flat, T, relaxation).reshape(times.shape)
+
+    def J(self, t, temperature=None) -> np.ndarray:
+        """The uniaxial creep compliance J(t) in 1/Pa at times t (in time_unit, >= 0) and the
+        temperature in degC (the reference temperature when left out; only a file with a
+        shift takes one): J(t/a_T) of the file's law, J(0) = 1/E0_Pa."""
+        return self._at(t, temperature, False) / self.E0_Pa
+
+    def E(self, t, temperature=None) -> np.ndarray:
+        """The uniaxial relaxation modulus E(t) in Pa, as J (the engine's interconversion:
+        int_0^t E(t - s) dJ(s) = 1); E(0) = E0_Pa."""
+        return self._at(t, temperature, True) * self.E0_Pa
+
+    def a_T(self, temperature):
+        """The shift factor a_T at `temperature` (degC; numbers or an array): times at the
+        temperature are times at the reference one times a_T. ValueError outside the
+        shift's range, or for a file without a shift."""
+        T = np.asarray(temperature, dtype=float)
+        values = np.array([10.0 ** self._file.log10_shift(float(x)) for x in T.reshape(-1)]).reshape(T.shape)
+        return float(values) if values.shape == () else values
 
 
 def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str = "refined", *,
