@@ -452,3 +452,40 @@ def test_material_gives_its_moduli_compliance_and_shift():
         nbr.J(1.0, temperature=30)
     with pytest.raises(ValueError):
         punchsweep.Material(REPO / "README.md")
+
+
+def test_material_from_arrays_equals_its_file(tmp_path):
+    """Material.prony(...) from the PLA file's own constants (read here with configparser)
+    is the file's material: the same J, E and a_T bit for bit and the same classify answers;
+    its temporary file goes with it; the engine's checks apply to arrays too."""
+    import gc
+    import configparser
+    path = REPO / "materials" / "pla_prusament_chapuis2025.ini"
+    _, _, tau_i, shift = _prony_constants(path)
+    cp = configparser.ConfigParser(inline_comment_prefixes=("#",))
+    cp.read(path)
+    E_inf = float(cp["material"]["E_inf"])  # in the file's unit, MPa: the same numbers as the file
+    E_i = [float(x) for x in cp["material"]["E_i"].split(",")]
+    wlf = dict(kind="wlf", C1=shift["c1"], C2=shift["c2"], T_ref=shift["t_ref"], E_a_below=shift["e_a_below"],
+               T_min=shift["t_min"], T_max=shift["t_max"])
+    from_file = punchsweep.Material(path)
+    made = punchsweep.Material.prony(E_inf, E_i, tau_i, 0.35, modulus_unit="MPa", shift=wlf)
+    t = np.geomspace(1e-15, 1e4, 40)
+    for T in (None, 70.0):
+        assert same_bits(made.J(t, temperature=T), from_file.J(t, temperature=T))
+        assert same_bits(made.E(t, temperature=T), from_file.E(t, temperature=T))
+    assert made.a_T(80.0) == from_file.a_T(80.0)
+    rng = np.random.default_rng(3)
+    dh, T = rng.uniform(0.002, 0.07, 50), rng.uniform(25, 85, 50)
+    a = punchsweep.classify(0.75, dh, pbar=5.187e-4, s=2, material=made, temperature=T, localization="periodic")
+    b = punchsweep.classify(0.75, dh, pbar=5.187e-4, s=2, material=path, temperature=T, localization="periodic")
+    assert same_bits(a["t_star"], b["t_star"]) and (a["regime"] == b["regime"]).all()
+    folder = os.path.dirname(made.path)
+    assert os.path.isfile(made.path) and (os.stat(folder).st_mode & 0o777) == 0o700
+    del made
+    gc.collect()
+    assert not os.path.exists(folder)
+    kept = punchsweep.Material.prony(2e6, [1e6, 5e5], [0.1, 10.0], 0.45, path=tmp_path / "mine.ini")
+    assert punchsweep.Material(tmp_path / "mine.ini").E0_Pa == 3.5e6 and kept.shift is None
+    with pytest.raises(ValueError, match="tau_i"):
+        punchsweep.Material.prony(2e6, [1e6, 5e5], [0.1], 0.45)

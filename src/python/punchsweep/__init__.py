@@ -23,8 +23,10 @@ E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_un
 from __future__ import annotations
 
 import os
+import shutil
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -198,6 +200,42 @@ class Material:
 
     def __fspath__(self) -> str:
         return self.path
+
+    @classmethod
+    def prony(cls, E_inf: float, E_i, tau_i, poisson: float, *, time_unit: str = "s", modulus_unit: str = "Pa",
+              name: str = "a Prony series given in Python", shift: Mapping[str, Any] | None = None,
+              path=None) -> "Material":
+        """A material from arrays: E(t) = E_inf + sum_i E_i exp(-t / tau_i) (moduli in
+        modulus_unit: Pa, kPa, MPa or GPa; times in time_unit: s, min or h), Poisson's ratio,
+        and optionally a temperature shift as the file's [shift] keys (e.g. dict(kind="wlf",
+        C1=17.4, C2=51.6, T_ref=65)). It is written as a material file, to `path` when given
+        (to keep or share it), else to a private temporary file removed with the object, and
+        read back by the engine, whose checks and messages apply (ValueError)."""
+        numbers = lambda values: ", ".join(repr(float(v)) for v in np.atleast_1d(values))  # noqa: E731
+        lines = ["[material]", f"name = {name}", "law = prony", f"modulus_unit = {modulus_unit}",
+                 f"time_unit = {time_unit}", f"poisson = {float(poisson)!r}", f"E_inf = {float(E_inf)!r}",
+                 f"E_i = {numbers(E_i)}", f"tau_i = {numbers(tau_i)}"]
+        if shift:
+            lines.append("[shift]")
+            lines += [f"{key} = {value if isinstance(value, str) else repr(float(value))}" for key, value in shift.items()]
+        text = "\n".join(lines) + "\n"
+        if "\n" in name or "\x00" in text:
+            raise ValueError("Material.prony: the name must be one line")
+        if path is not None:
+            Path(path).write_text(text)
+            return cls(path)
+        import tempfile
+        import weakref
+        folder = tempfile.mkdtemp(prefix="punchsweep-material-")  # 0700, this user's
+        file = os.path.join(folder, "material.ini")
+        Path(file).write_text(text)
+        try:
+            made = cls(file)
+        except BaseException:
+            shutil.rmtree(folder, ignore_errors=True)
+            raise
+        weakref.finalize(made, shutil.rmtree, folder, True)
+        return made
 
     def __repr__(self) -> str:
         return f"Material({self.path!r}: {self.description})"
