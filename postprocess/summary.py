@@ -3,11 +3,12 @@
 never, overall and per value of each axis; t* statistics of the delayed points; invalid
 points per validity reason; points not computed; whether the map is complete.
 
-Fractions are of all points in the group (not computed ones included). t* is in T_eps (the
-creep time); the axis values are in their units (l, dh in R; pbar in E0/(1-nu^2); T, s
-dimensionless). The axes, their units and the regime and validity codes and their names are
-read from the map (the dimensions of `regime`, the coordinates' attributes, the flag
-variables' flag_values/flag_meanings), whichever axes the map has.
+Fractions are of all points in the group (not computed ones included). t* is in the map's
+time unit: T_eps (the creep time), or a material map's own (s, min or h); the axis values
+are in their units (l, dh in R; pbar in E0/(1-nu^2); T, s dimensionless). The axes,
+their units and the regime and validity codes and their names are read from the map (the
+dimensions of `regime`, the coordinates' attributes, the flag variables'
+flag_values/flag_meanings), whichever axes the map has.
 
 CSV (--csv): first '# key = value' comment lines (map, completed, points, t_star_units),
 then one header line and one row per group, with the columns
@@ -162,12 +163,13 @@ def write_table(ds, path: str, groups: list[Group], out) -> None:
     out.write(f"{'regime':<22}{'points':>10}{'fraction':>11}\n")
     for m in regimes(ds):
         out.write(f"{m:<22}{whole.regimes[m]:>10d}{whole.fraction(m):>10.2%}\n")
+    t_unit = pm.units(ds, "t_star") or "T_eps"  # a material map's is its time unit (s, min, h)
     if whole.t_star:
         lo, med, hi = whole.t_star
-        out.write(f"\nt* of the delayed points [T_eps]: min {lo:.4g}, median {med:.4g}, "
+        out.write(f"\nt* of the delayed points [{t_unit}]: min {lo:.4g}, median {med:.4g}, "
                   f"max {hi:.4g} ({whole.regimes['delayed']} points)\n")
     else:
-        out.write("\nt* of the delayed points [T_eps]: no delayed points\n")
+        out.write(f"\nt* of the delayed points [{t_unit}]: no delayed points\n")
     out.write(f"\n{'validity':<22}{'points':>10}{'fraction':>11}\n")
     computed = whole.points - not_computed
     for m in validities(ds):
@@ -183,7 +185,7 @@ def write_table(ds, path: str, groups: list[Group], out) -> None:
             current = g.axis
             unit = pm.units(ds, g.axis)
             out.write(f"\nby {g.axis}" + (f" [{unit}]" if unit not in ("", "1") else "")
-                      + ": points per regime (fraction), invalid points, t* of delayed [T_eps]\n")
+                      + f": points per regime (fraction), invalid points, t* of delayed [{t_unit}]\n")
             out.write(header + "\n")
         cells = "".join(f"{g.regimes[m]:>8d} ({g.fraction(m):>5.1%})" for m in shown)
         t = "".join(f"{v:>11.4g}" for v in g.t_star) if g.t_star else f"{'-':>11}" * 3

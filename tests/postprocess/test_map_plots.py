@@ -391,3 +391,21 @@ def test_evolution_from_map_refuses_a_point_not_computed(maps, tmp_path):
     rc, _, err = call(evolution, "--map", maps["partial"], "--at", "l=1", "dh=0.1", "T=2.5",
                       "pbar=0.01", "s=2", "-o", out)
     assert rc == 2 and "was not computed" in err and not out.exists()
+
+
+def test_summary_gives_t_star_in_the_maps_time_unit(tmp_path):
+    """A material map's t* is in the material's time unit (issue 24: summary.py said
+    "[T_eps]" for seconds): the headings name the unit the map's t_star carries."""
+    path = tmp_path / "pla.h5"
+    done = subprocess.run([BINARY, "sweep", "--config", str(REPO / "sweeps" / "materials" / "pla.ini"),
+                           "--grid.dh", "0.005,0.02", "--grid.temperature", "70,80", "--quiet",
+                           "--output", str(path)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    with h5py.File(path) as f:
+        assert f["t_star"].attrs["units"] == "s"
+    out = run("summary.py", path)
+    assert out.returncode == 0, out.stderr
+    assert "t* of the delayed points [s]" in out.stdout and "T_eps" not in out.stdout
+    assert "t* of delayed [s]" in out.stdout
+    out = run("summary.py", sweep(tmp_path / "sls.h5", "--quantities", "regime"))
+    assert "t* of the delayed points [T_eps]" in out.stdout
