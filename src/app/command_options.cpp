@@ -1,5 +1,6 @@
 #include "app/command_options.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,32 @@ namespace po = boost::program_options;
 
 namespace punchsweep::app {
 
+namespace {
+
+/// Why an option that names a creep law's parameter is not one here: a law's parameter
+/// (--T of the standard linear solid) beside --material, whose law is the file's, or a
+/// material's --temperature without one (issue 24: "unknown option --T" alone left the user
+/// to guess). Empty for any other option.
+std::string law_hint(const std::string& option, const std::vector<std::string>& args) {
+  const bool material = std::find(args.begin(), args.end(), "--material") != args.end() ||
+                        std::any_of(args.begin(), args.end(), [](const std::string& a) { return a.rfind("--material=", 0) == 0; });
+  for (const model::CreepLawSpec& law : model::creep_laws()) {
+    for (const model::Parameter& p : law.parameters) {
+      if (option != "--" + std::string(p.name)) continue;
+      return " (" + std::string(p.long_name) + ") of the " + std::string(law.name) + " law" +
+             (material ? "; with --material the law is the file's, which takes --temperature where the file has a "
+                         "[shift] and no other parameter"
+                       : "");
+    }
+  }
+  if (option == "--" + std::string(model::temperature_parameter().name) && !material) {
+    return " (a material's temperature: give --material FILE, a material file with a [shift])";
+  }
+  return {};
+}
+
+}  // namespace
+
 po::variables_map parse_command(const std::vector<std::string>& args, const po::options_description& opts,
                                 const std::string& command) {
   po::variables_map vm;
@@ -33,7 +60,7 @@ po::variables_map parse_command(const std::vector<std::string>& args, const po::
     po::store(po::command_line_parser(args).options(all).style(style).positional(stray).run(), vm);
     po::notify(vm);
   } catch (const po::unknown_option& e) {
-    throw UsageError("unknown option " + e.get_option_name() + " (" + see + ")");
+    throw UsageError("unknown option " + e.get_option_name() + law_hint(e.get_option_name(), args) + " (" + see + ")");
   } catch (const po::error& e) {
     throw UsageError(std::string(e.what()) + " (" + see + ")");
   }

@@ -297,7 +297,12 @@ TEST(Cli, material_inputs_are_refused_with_their_range) {
   const std::string binary = dir + "/punchsweep_cli_binary.ini";
   std::ofstream(binary) << "[material]\nname = x\n\x01\x02\xff\xfe\n";
   expect_refused("--material " + binary + point, "line 3: byte 0x01 is a control character", "INI text");
-  expect_refused("--material " + wlf + point + " --T 2", "--T", "unknown option");
+  // Issue 24: a law's parameter beside --material says whose it is and what the file takes.
+  expect_refused("--material " + wlf + point + " --T 2",
+                 "unknown option --T (creep ratio T_eps/T_sigma) of the standard_linear_solid law",
+                 "with --material the law is the file's, which takes --temperature");
+  expect_refused(point + " --T 2 --temperature 40", "unknown option --temperature",
+                 "(a material's temperature: give --material FILE");
   expect_refused("--material " + wlf + point + " --ramp -1", "--ramp", "t_r >= 0");
   expect_refused("--material " + wlf + point + " --load-table '0:0, 5:0.9, 6:0.5, 9:1'", "--load-table",
                  "does not recede");
