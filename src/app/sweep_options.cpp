@@ -207,8 +207,9 @@ const KeySpec* find_key(const std::string& key) {
 po::options_description key_options(const char* caption) {
   po::options_description opts(caption);
   for (const KeySpec& spec : keys()) {
-    const std::string description =
-        std::string(spec.meaning) + "; " + spec.range + "; default " + spec.default_text;
+    const bool stated = spec.parameter != nullptr && !spec.parameter->default_meaning.empty();
+    const std::string description = std::string(spec.meaning) + "; " + spec.range + "; default " +
+                                    (stated ? std::string(spec.parameter->default_meaning) : spec.default_text);
     opts.add_options()(dotted(spec).c_str(), po::value<std::string>()->value_name(spec.value_name),
                        description.c_str());
   }

@@ -201,7 +201,8 @@ const Parameter& temperature_parameter() {
                                       [](double v) { return v > -kZeroCelsius; },
                                       false,
                                       {},
-                                      "20"};
+                                      "20",
+                                      "the material's reference temperature (its [shift] T_ref)"};
   return kTemperature;
 }
 

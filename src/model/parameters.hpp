@@ -30,6 +30,9 @@ struct Parameter {
   /// The values a sweep takes when a config leaves the axis out; empty when the parameter
   /// is not an axis but one value per sweep (a [model] key).
   std::string_view sweep_default = {};
+  /// How help texts state the default where the input decides it (temperature: the
+  /// material's T_ref); empty: sweep_default as written.
+  std::string_view default_meaning = {};
 
   /// Whether `value` is admissible: finite, whole if `integer`, and in range.
   bool admits(double value) const;

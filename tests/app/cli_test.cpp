@@ -346,3 +346,28 @@ TEST(Cli, single_level_under_an_sls_ramp_follows_its_closed_form) {
     EXPECT_NEAR(a1, single.contact_radius(0.02 * g), 1e-13) << "t = " << t;
   }
 }
+
+// Issue 24: `sweep --help` said the temperature defaults to 20 while a material's run takes
+// its shift's T_ref (65 C for the PLA file, from its [shift] T_ref = 65).
+TEST(Cli, sweep_help_states_the_materials_reference_temperature_as_the_default) {
+  const CliRun help = run_cli("sweep --help");
+  EXPECT_EQ(help.exit_code, 0);
+  const std::size_t at = help.out.find("--grid.temperature");
+  ASSERT_NE(at, std::string::npos);
+  std::string entry = help.out.substr(at, help.out.find("--grid.", at + 5) - at);
+  std::string words;  // the entry with its line breaks and indentation as single spaces
+  for (const char c : entry) {
+    if (c == '\n' || c == ' ') {
+      if (!words.empty() && words.back() != ' ') words += ' ';
+    } else {
+      words += c;
+    }
+  }
+  EXPECT_NE(words.find("default the material's reference temperature (its [shift] T_ref)"), std::string::npos) << words;
+  EXPECT_EQ(words.find("default 20"), std::string::npos) << words;
+  const std::string pla = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/pla_prusament_chapuis2025.ini";
+  const CliRun dry = run_cli("sweep --dry-run --model.material " + pla +
+                             " --grid.l 0.75 --grid.dh 0.05 --grid.pbar 0.01 --grid.s 2");
+  EXPECT_EQ(dry.exit_code, 0) << dry.err;
+  EXPECT_NE(dry.out.find("temperature    1 values  65 "), std::string::npos) << dry.out;
+}
