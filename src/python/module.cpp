@@ -16,6 +16,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -164,6 +165,28 @@ std::string check(const model::Parameter& p, double value) {
 
 using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
+/// A material file read by the engine's reader (its checks and messages), for classify's
+/// material= and punchsweep.Material.
+std::shared_ptr<const model::Material> read_material(const std::string& path) {
+  if (path.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
+  return app::read_material_file(path);
+}
+
+/// The message for a temperature given to a material (`who`: its file or name) without a [shift].
+std::string no_shift(const std::string& who) {
+  return "the material " + who + " has no temperature shift, so it takes no temperature";
+}
+
+/// A law's parameters at the point command's defaults (a material's T_ref).
+std::vector<double> point_defaults(std::span<const model::Parameter> parameters) {
+  std::vector<double> values;
+  for (const model::Parameter& p : parameters) {
+    if (p.point_default.empty()) throw app::UsageError(std::string(p.name) + " is required");
+    values.push_back(std::stod(std::string(p.point_default)));
+  }
+  return values;
+}
+
 /// The regime, t*, h(0), h(inf) and validity of n points (the map's codes and units), each
 /// a pure function of its point: sweep::BatchEvaluator, as a sweep's tile evaluates its
 /// points, over the points sorted by (s, l, dh) so that the parts those share are computed
@@ -178,10 +201,7 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   for (const Column& c : law) equal = equal && c.size() == n;
   if (!equal) throw std::invalid_argument("classify: the arrays must have the same size (broadcast first)");
   std::shared_ptr<const model::Material> material;
-  if (!material_file.empty()) {
-    if (material_file.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
-    material = app::read_material_file(material_file);
-  }
+  if (!material_file.empty()) material = read_material(material_file);
   model::Localization model_localization;
   try {
     model_localization = model::parse_localization(localization);
@@ -194,15 +214,13 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   std::vector<const double*> law_values;
   for (const Column& c : law) law_values.push_back(c.data());
   if (law.empty()) {
-    for (const model::Parameter& p : spec.parameters) {
-      if (p.point_default.empty()) throw app::UsageError("classify: " + std::string(p.name) + " is required");
-      defaults.emplace_back(static_cast<std::size_t>(n), std::stod(std::string(p.point_default)));
+    for (const double v : point_defaults(spec.parameters)) {
+      defaults.emplace_back(static_cast<std::size_t>(n), v);
       law_values.push_back(defaults.back().data());
     }
   }
   if (law_values.size() != spec.parameters.size()) {
-    throw app::UsageError(material ? "classify: the material " + material_file + " has no temperature shift, so "
-                                         "it takes no temperature"
+    throw app::UsageError(material ? "classify: " + no_shift(material_file)
                                    : "classify: the creep law " + std::string(spec.name) + " takes " +
                                          std::to_string(spec.parameters.size()) + " parameters");
   }
@@ -282,7 +300,8 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
         h_inf[p.k] = p.summary.h_inf;
       }
     } answers(N);
-    // Ctrl-C between runs and every 64 points; the KeyboardInterrupt it sets is raised below.
+    // Ctrl-C as the batch evaluator asks (every 64 points, and before building a run's
+    // parts); the KeyboardInterrupt it sets is raised below.
     CtrlC ctrl_c;
     const model::StopRequest interrupted([&ctrl_c] { return ctrl_c.pressed(); });
     sweep::BatchEvaluator evaluator(spec, C, model_localization, {}, sweep::BatchEvaluator::Memory::call);
@@ -342,12 +361,8 @@ struct MaterialHandle {
   std::unique_ptr<model::CreepLaw> law_at(double temperature) const {
     const model::Material& m = *material;
     if (std::isnan(temperature) || m.parameters().empty()) {
-      if (!std::isnan(temperature)) {
-        throw app::UsageError("the material " + m.name() + " has no temperature shift, so it takes no temperature");
-      }
-      std::vector<double> values;
-      for (const model::Parameter& p : m.parameters()) values.push_back(std::stod(std::string(p.point_default)));
-      return m.make(values);
+      if (!std::isnan(temperature)) throw app::UsageError(no_shift(m.name()));
+      return m.make(point_defaults(m.parameters()));
     }
     const double values[] = {temperature};
     try {
@@ -420,9 +435,6 @@ PYBIND11_MODULE(_core, m) {
       .def("log10_shift", &MaterialHandle::log10_shift, py::arg("temperature"));
   m.def(
       "material",
-      [](const std::string& path) {
-        if (path.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
-        return MaterialHandle{app::read_material_file(path)};
-      },
+      [](const std::string& path) { return MaterialHandle{read_material(path)}; },
       py::arg("path"), "reads a material file (ValueError with the engine's message)");
 }

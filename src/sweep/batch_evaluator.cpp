@@ -29,6 +29,13 @@ constexpr std::size_t kStopBeforeParts = 8;
 
 bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
+// Appends what tells point k's material from another's: its creep-law values, then its
+// ramp_time (0 where every point has the evaluator's loading).
+void append_material_key(const PointColumns& points, std::size_t k, std::vector<double>* key) {
+  for (const std::span<const double> column : points.law) key->push_back(column[k]);
+  key->push_back(points.ramp_time.empty() ? 0.0 : points.ramp_time[k]);
+}
+
 }  // namespace
 
 BatchEvaluator::BatchEvaluator(const model::CreepLawSpec& law, double C, model::Localization localization,
@@ -46,21 +53,19 @@ BatchEvaluator::BatchEvaluator(const model::CreepLawSpec& law, double C, model::
 
 const BatchEvaluator::Material& BatchEvaluator::material_at(const PointColumns& points, std::size_t k) {
   key_.clear();
-  for (const std::span<const double> column : points.law) key_.push_back(column[k]);
-  const bool ramp = !points.ramp_time.empty();
-  key_.push_back(ramp ? points.ramp_time[k] : 0.0);
-  if (memory_ == Memory::call) {
-    // One call's points come sorted by (s, l, dh): a grid's repeat a law run after run (a
-    // pbar's worth of points each), scattered points never, and there keeping each in the
-    // cache cost 5% of the call.
-    last_ = Material{model::make_creep_law(law_, std::span<const double>(key_).first(points.law.size())),
-                     ramp ? model::LoadShape::ramp(key_.back()) : loading_};
-    return last_;
+  append_material_key(points, k, &key_);
+  const bool cached = memory_ == Memory::run;
+  if (cached) {
+    if (Material* found = materials_.find(key_)) return *found;
   }
-  if (Material* found = materials_.find(key_)) return *found;
   Material made{model::make_creep_law(law_, std::span<const double>(key_).first(points.law.size())),
-                ramp ? model::LoadShape::ramp(key_.back()) : loading_};
-  return materials_.insert(key_, std::move(made));
+                points.ramp_time.empty() ? loading_ : model::LoadShape::ramp(key_.back())};
+  if (cached) return materials_.insert(key_, std::move(made));
+  // One call's points come sorted by (s, l, dh): a grid's repeat a law run after run (a
+  // pbar's worth of points each), scattered points never, and there keeping each in the
+  // cache cost 5% of the call.
+  last_ = std::move(made);
+  return last_;
 }
 
 model::SingleLevelState BatchEvaluator::single_at(const model::ContactProblem& problem, double X, bool cached) {
@@ -140,8 +145,7 @@ void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, cons
       // A run is known by its (s, l), its first point and its length: a sweep's tiles that
       // cut the law's axes or pbar into parts make runs of several kinds in one (s, l).
       point_key_.assign({s, l, points.pbar[begin]});
-      for (const std::span<const double> column : points.law) point_key_.push_back(column[begin]);
-      point_key_.push_back(points.ramp_time.empty() ? 0.0 : points.ramp_time[begin]);
+      append_material_key(points, begin, &point_key_);
       point_key_.push_back(static_cast<double>(end - begin));
       run = runs_.find(point_key_);
       if (run == nullptr) run = &runs_.insert(point_key_, Run{});
@@ -150,7 +154,6 @@ void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, cons
         run->ends.resize(end - begin);
       }
     }
-    point_key_.resize(width);
     for (std::size_t k = begin; k < end; ++k) {
       if (++unchecked >= kStopEvery) {
         stop.throw_if_requested();
@@ -168,9 +171,8 @@ void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, cons
       model::SingleLevelEnds ends;
       if (run != nullptr) {
         const std::size_t j = k - begin;
-        point_key_[0] = problem.pbar0;
-        for (std::size_t q = 0; q < points.law.size(); ++q) point_key_[1 + q] = points.law[q][k];
-        point_key_[width - 1] = points.ramp_time.empty() ? 0.0 : points.ramp_time[k];
+        point_key_.assign(1, problem.pbar0);
+        append_material_key(points, k, &point_key_);
         double* stored = &run->keys[j * width];
         bool known = true;
         for (std::size_t q = 0; q < width && known; ++q) known = same(point_key_[q], stored[q]);
