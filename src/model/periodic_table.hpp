@@ -43,7 +43,7 @@ struct PeriodicState {
 class PeriodicTable {
  public:
   /// The file format: its version, first in tables().
-  static constexpr double kFormat = 1.0;
+  static constexpr double kFormat = 2.0;
   /// The rows reach delta_top = kTopShare 2^(-s/2), just short of where level 2 hides.
   static constexpr double kTopShare = 0.99;
   /// Where the samples sit: v of single-level sample k, delta of row j, and xi - xi* of

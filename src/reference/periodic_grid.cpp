@@ -55,6 +55,40 @@ std::string two_level_grid_error(int n) {
   return out.str();
 }
 
+namespace {
+
+/// The part of the hx x hy square about (x, y) where the level-2 surface is the lower one
+/// (ties count half): 0 or 1 where the two surfaces do not cross within the square (checked
+/// at its corners, edge midpoints and centre), else counted on kSubsamples^2 points.
+double level2_fraction(const PeriodicGrid& g, const model::ContactProblem& problem, double x, double y) {
+  constexpr int kSubsamples = 16;
+  const double half = 0.5 * problem.l;
+  const auto owner = [&](double px, double py) {  // 1 level 2, 0 level 1, 0.5 tie
+    const double f1 = problem.shape.C * model::ipow(std::hypot(periodic_offset(px, g.Lx), periodic_offset(py, g.Ly)),
+                                                    problem.shape.s);
+    const double lower2 = problem.shape.C * model::ipow(std::hypot(periodic_offset(px - half, g.Lx),
+                                                                   periodic_offset(py - half, g.Ly)),
+                                                        problem.shape.s) + problem.dh;
+    const double tie = kProfileTieTolerance * std::max(f1, lower2);
+    return std::abs(f1 - lower2) <= tie ? 0.5 : (lower2 < f1 ? 1.0 : 0.0);
+  };
+  const double centre = owner(x, y);
+  bool uniform = centre != 0.5;
+  for (int a = -1; a <= 1 && uniform; ++a) {
+    for (int b = -1; b <= 1 && uniform; ++b) uniform = owner(x + 0.5 * a * g.hx(), y + 0.5 * b * g.hy()) == centre;
+  }
+  if (uniform) return centre;
+  double sum = 0.0;
+  for (int a = 0; a < kSubsamples; ++a) {
+    for (int b = 0; b < kSubsamples; ++b) {
+      sum += owner(x + ((a + 0.5) / kSubsamples - 0.5) * g.hx(), y + ((b + 0.5) / kSubsamples - 0.5) * g.hy());
+    }
+  }
+  return sum / (kSubsamples * kSubsamples);
+}
+
+}  // namespace
+
 TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Symmetry symmetry) {
   if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
   TwoLevelCell cell;
@@ -64,13 +98,19 @@ TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Sy
   const std::vector<double> f1 = punch_profile(g, problem.shape, 0.0, 0.0);
   const std::vector<double> f2 = punch_profile(g, problem.shape, half, half);
   cell.profile.resize(g.size());
+  cell.level2_node.resize(g.size());
   cell.level2_weight.resize(g.size());
-  for (std::size_t k = 0; k < g.size(); ++k) {
-    const double lower2 = f2[k] + problem.dh;
-    cell.profile[k] = std::min(f1[k], lower2);
-    // The surface belongs to the punch that is lower there; ties (dh = 0 on the bisector) split.
-    const double tie = kProfileTieTolerance * std::max(f1[k], lower2);
-    cell.level2_weight[k] = std::abs(f1[k] - lower2) <= tie ? 0.5 : (lower2 < f1[k] ? 1.0 : 0.0);
+  for (int i = 0; i < g.stored_nx(); ++i) {
+    for (int j = 0; j < g.stored_ny(); ++j) {
+      const std::size_t k = g.index(i, j);
+      const double lower2 = f2[k] + problem.dh;
+      cell.profile[k] = std::min(f1[k], lower2);
+      // The node itself belongs to the punch that is lower there; ties (dh = 0 on the
+      // bisector) to both.
+      const double tie = kProfileTieTolerance * std::max(f1[k], lower2);
+      cell.level2_node[k] = std::abs(f1[k] - lower2) <= tie || lower2 < f1[k];
+      cell.level2_weight[k] = level2_fraction(g, problem, g.x(i), g.y(j));
+    }
   }
   const int m = n / 2;
   cell.tip1 = g.index(0, 0);

@@ -86,11 +86,16 @@ struct TwoLevelCell {
   PeriodicGrid grid;
   /// Initial separation at zero approach, min(f(r1), f(r2) + dh), in R.
   std::vector<double> profile;
-  /// Share of each node in the level-2 punch: 1 where the level-2 surface f(r2) + dh is the
-  /// lower of the two, 0 where the level-1 one is, 1/2 on ties (within
-  /// kProfileTieTolerance). Loads and areas of a level are sums over its share; this is
-  /// not the equidistant (Voronoi) split, which a taller level-1 spot crosses.
+  /// Share of each node's square in the level-2 punch: the part of it where the level-2
+  /// surface f(r2) + dh is the lower of the two (ties, within kProfileTieTolerance, count
+  /// half), so 1 or 0 away from where the surfaces cross and a fraction on that line. Loads
+  /// and areas of a level are sums over its share, so a level's share of the cell converges
+  /// as the line's length times hx hy, not node by node; this is not the equidistant
+  /// (Voronoi) split, which a taller level-1 spot crosses.
   std::vector<double> level2_weight;
+  /// Whether the node itself is level 2's: its level-2 surface is the lower one or tied.
+  /// Level 2 has touched once such a node carries pressure.
+  std::vector<char> level2_node;
   std::size_t tip1 = 0;  ///< node of the level-1 tip O = (0, 0)
   std::size_t tip2 = 0;  ///< node of the level-2 tip M = (l/2, l/2)
 };

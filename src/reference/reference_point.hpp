@@ -82,7 +82,7 @@ std::string options_error(const ReferenceOptions& options);
 /// The contact state at one snapshot time, measured on the grid.
 struct ReferenceSnapshot {
   double t = 0.0;      ///< in T_eps
-  double area1 = 0.0;  ///< contact area of one level-1 punch (nodes in contact x cell area), in R^2
+  double area1 = 0.0;  ///< contact area of one level-1 punch (contact_areas), in R^2
   double area2 = 0.0;  ///< contact area of one level-2 punch, in R^2
   double a1 = 0.0;     ///< equivalent radius sqrt(area1 / pi), in R
   double a2 = 0.0;     ///< equivalent radius sqrt(area2 / pi), in R
@@ -119,11 +119,26 @@ struct ReferenceResult {
 /// the area fraction (what map::kQuantities reads for the bem_* variables).
 model::PointResult as_point_result(const ReferenceResult& result);
 
+/// The contact areas of the two levels of a cell, in R^2.
+struct ContactAreas {
+  double level1 = 0.0;
+  double level2 = 0.0;
+};
+
+/// The contact areas under pressure p (docs/model.md, section 13.1): each node in contact
+/// counts its square, split between the levels by level2_weight, with the square's sides
+/// moved, where the next node is free, to the edge that p^2 extrapolated linearly from the
+/// last two nodes places between them (the square-root fall of a smooth contact's pressure
+/// at its edge), averaged over the rows' and the columns' estimates. Counting nodes alone
+/// leaves an error of order one node per rim node, O(1/n) in radius: on a Hertzian spot
+/// 12 nodes wide (s = 2, xi = 0.002, n = 128) 1.4% against this estimate's 0.06%.
+ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p);
+
 /// Measures a contact state of a two-level cell (pressure p and displacement u on its grid).
 ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double> p,
                                 std::span<const double> u, double t);
 
-/// Whether level 2 carries load: some node of its share (ties included) is pressed.
+/// Whether level 2 carries load: some node of its own (level2_node, ties included) is pressed.
 bool level2_loaded(const TwoLevelCell& cell, std::span<const double> p);
 
 /// Evaluates one point: a time-stepped viscoelastic contact solve under the constant

@@ -76,7 +76,7 @@ TEST(PeriodicTable, bookkeeping_round_trips_and_balances_the_load) {
       const model::PeriodicState s = t.two_level(xi, delta);
       EXPECT_DOUBLE_EQ(s.Q1 + s.Q2, xi);
       EXPECT_TRUE(s.in_range);
-      EXPECT_GE(s.a1, s.a2);
+      EXPECT_GE(s.a1, s.a2 * (1.0 - 1e-12));  // equal at delta = 0, to round-off
     }
   }
   // Level 2 hides under level 1 from delta = 2^(-s/2) on: it never touches.

@@ -322,8 +322,8 @@ TEST(ReferencePoint, bad_input_is_rejected_with_a_sentence) {
 
 TEST(ReferencePoint, quarter_cell_gives_the_whole_cells_answer) {
   // The default quarter-cell solve against the whole cell: the same regime, the same t*
-  // bracket (the contact sets agree node for node), radii equal, loads within the solver
-  // tolerance's reach.
+  // bracket (the contact sets agree node for node), radii equal to round-off, loads within
+  // the solver tolerance's reach.
   const model::StandardLinearSolid sls(2.5);
   for (const double dh : {0.05, 0.075, 0.2}) {
     ReferenceOptions quarter = options_with(32);
@@ -345,8 +345,9 @@ TEST(ReferencePoint, quarter_cell_gives_the_whole_cells_answer) {
     }
     ASSERT_EQ(q.series.size(), w.series.size());
     for (std::size_t k = 0; k < q.series.size(); ++k) {
-      EXPECT_EQ(q.series[k].a1, w.series[k].a1);
-      EXPECT_EQ(q.series[k].a2, w.series[k].a2);
+      // The same areas, summed in another order.
+      EXPECT_NEAR(q.series[k].a1, w.series[k].a1, 1e-12 * w.series[k].a1);
+      EXPECT_NEAR(q.series[k].a2, w.series[k].a2, 1e-12 * w.series[k].a2);
       EXPECT_NEAR(q.series[k].P2, w.series[k].P2, 1e-8 * w.series[k].P1);
     }
   }
@@ -357,8 +358,8 @@ TEST(ReferencePoint, steps_by_creep_growth_keep_the_ladders_accuracy_with_fewer_
   // both measured against a ladder 16 times finer (N = 32, tolerance 1e-12). Measured when
   // written: the immediate point's P2 within 5.7e-4 (ladder 1.0e-3) in 24 solves (29); the
   // delayed point's within 1.4e-2 at t = 1, just after touchdown, as the ladder's, 4.4e-3
-  // at t = 2 (ladder 1.9e-3), in 30 solves (36). t* and the radii do not depend on the
-  // steps under a held load, so they agree to the bracket and exactly.
+  // at t = 2 (ladder 1.9e-3), in 30 solves (36). t* does not depend on the steps
+  // under a held load, so it agrees to the bracket.
   const model::StandardLinearSolid sls(2.5);
   for (const double dh : {0.05, 0.075}) {
     ReferenceOptions fine = options_with(32);
@@ -379,8 +380,15 @@ TEST(ReferencePoint, steps_by_creep_growth_keep_the_ladders_accuracy_with_fewer_
       EXPECT_NEAR(*c.t_star, *f.t_star, by_creep.t_star_resolution);
     }
     for (std::size_t k = 0; k < f.series.size(); ++k) {
-      EXPECT_EQ(c.series[k].a2, f.series[k].a2);
-      EXPECT_EQ(c.series[k].a1, f.series[k].a1);
+      // The contact sets agree node for node; the radii read the rims' pressures
+      // (contact_areas), so they carry the steps' error as the loads do.
+      for (const auto radius : {&ReferenceSnapshot::a1, &ReferenceSnapshot::a2}) {
+        if (f.series[k].*radius == 0.0) continue;
+        const double error = std::abs(c.series[k].*radius / f.series[k].*radius - 1.0);
+        const double ladder_error = std::abs(l.series[k].*radius / f.series[k].*radius - 1.0);
+        EXPECT_LT(error, std::max(3.0 * ladder_error, 1e-3)) << "dh " << dh << " t " << f.series[k].t;
+        EXPECT_LT(error, 2e-2);
+      }
       if (f.series[k].P2 == 0.0) {
         EXPECT_EQ(c.series[k].P2, 0.0);
         continue;
@@ -413,8 +421,9 @@ TEST(ReferencePoint, a_snapshot_at_t_1e12_takes_a_few_dozen_steps_and_is_the_lon
       evaluate_reference_point(elastic_problem, model::StandardLinearSolid(1.0), options_with(32, {0.0}));
   const ReferenceSnapshot& end = r.series[1];
   const ReferenceSnapshot& e = elastic.series[0];
-  EXPECT_EQ(end.area1, e.area1);
-  EXPECT_EQ(end.area2, e.area2);
+  // The areas read the rims' pressures (contact_areas), which agree as the loads do.
+  EXPECT_NEAR(end.area1, e.area1, 1e-6 * e.area1);
+  EXPECT_NEAR(end.area2, e.area2, 1e-6 * e.area2);
   EXPECT_NEAR(end.P1, e.P1 / 2.5, 1e-7 * problem.pbar0 * problem.l * problem.l);
   EXPECT_NEAR(end.P2, e.P2 / 2.5, 1e-7 * problem.pbar0 * problem.l * problem.l);
   EXPECT_NEAR(end.h, e.h, 1e-7);
