@@ -33,7 +33,7 @@ class Path {
   ReferenceSnapshot solve(double xi, bool keep = true) {
     std::vector<double> p, u;
     solve_fields(xi, &p, &u);
-    const ReferenceSnapshot state = measure_state(cell_, p, u, 0.0);
+    const ReferenceSnapshot state = measure_state(cell_, p, p, u, 0.0);
     if (keep) {
       monotone_ = true;
       double top = 0.0;
@@ -124,7 +124,7 @@ model::PeriodicState solve_scaled(int s, double xi, double delta, int n, const C
   ContactSolver contact(cell.grid, solver);
   std::vector<double> p(cell.grid.size(), 0.0), u(cell.grid.size());
   contact.solve(cell.profile, xi, 1.0, p, u);
-  const ReferenceSnapshot state = measure_state(cell, p, u, 0.0);
+  const ReferenceSnapshot state = measure_state(cell, p, p, u, 0.0);
   return {state.h, state.a1, state.a2, state.P1, state.P2, true};
 }
 

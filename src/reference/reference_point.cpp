@@ -146,7 +146,7 @@ int neighbour(int i, int step, int n, bool mirrored) {
 
 }  // namespace
 
-ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p) {
+ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p, std::span<const double> rims) {
   const PeriodicGrid& g = cell.grid;
   const bool mirrored = g.mirrored();
   ContactAreas a;
@@ -159,10 +159,10 @@ ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p) 
       double nodes = 1.0;
       for (const int step : {-1, 1}) {
         if (!(p[g.index(neighbour(i, step, g.nx, mirrored), j)] > 0.0)) {
-          nodes += 0.5 * (edge_offset(p[k], p[g.index(neighbour(i, -step, g.nx, mirrored), j)]) - 0.5);
+          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(neighbour(i, -step, g.nx, mirrored), j)]) - 0.5);
         }
         if (!(p[g.index(i, neighbour(j, step, g.ny, mirrored))] > 0.0)) {
-          nodes += 0.5 * (edge_offset(p[k], p[g.index(i, neighbour(j, -step, g.ny, mirrored))]) - 0.5);
+          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(i, neighbour(j, -step, g.ny, mirrored))]) - 0.5);
         }
       }
       const double m = g.multiplicity(k) * nodes;
@@ -176,7 +176,7 @@ ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p) 
 }
 
 ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double> p,
-                                std::span<const double> u, double t) {
+                                std::span<const double> rims, std::span<const double> u, double t) {
   ReferenceSnapshot s;
   s.t = t;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -187,7 +187,7 @@ ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double
   }
   s.P1 *= cell.grid.cell_area();
   s.P2 *= cell.grid.cell_area();
-  const ContactAreas areas = contact_areas(cell, p);
+  const ContactAreas areas = contact_areas(cell, p, rims);
   s.area1 = areas.level1;
   s.area2 = areas.level2;
   s.a1 = std::sqrt(s.area1 / std::numbers::pi);
@@ -341,7 +341,8 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
       }
       sizer.accepted();
     }
-    at_target.push_back(measure_state(cell, stepper.pressure(), stepper.displacement(), target));
+    at_target.push_back(
+        measure_state(cell, stepper.pressure(), stepper.creep_pressure(), stepper.displacement(), target));
   }
 
   if (!touched) {

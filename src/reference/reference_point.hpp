@@ -125,18 +125,24 @@ struct ContactAreas {
   double level2 = 0.0;
 };
 
-/// The contact areas under pressure p (docs/model.md, section 13.1): each node in contact
-/// counts its square, split between the levels by level2_weight, with the square's sides
-/// moved, where the next node is free, to the edge that p^2 extrapolated linearly from the
-/// last two nodes places between them (the square-root fall of a smooth contact's pressure
-/// at its edge), averaged over the rows' and the columns' estimates. Counting nodes alone
-/// leaves an error of order one node per rim node, O(1/n) in radius: on a Hertzian spot
-/// 12 nodes wide (s = 2, xi = 0.002, n = 128) 1.4% against this estimate's 0.06%.
-ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p);
+/// The contact areas of the contact set {p > 0} (docs/model.md, section 13.1): each node in
+/// contact counts its square, split between the levels by level2_weight, with the square's
+/// sides moved, where the next node is free, to the edge that rims^2 extrapolated linearly
+/// from the last two nodes places between them, averaged over the rows' and the columns'
+/// estimates. `rims` is a field that falls as the square root of the distance to a smooth
+/// contact's edge: the pressure of an elastic solve, and under creep the creep-scaled
+/// pressure w = int J dp (the elastic pressure at the creep-weighted load, while the
+/// contact grows), not p, whose rim is a history of such falls. Against Hertz on spots of
+/// radius a = 4 to 32 grid spacings h (tests/reference), counting the pressed nodes is off
+/// by 0.11-0.27 h/a and jumps as the rim crosses nodes; this estimate by 0.03-0.13 h/a
+/// (the grid's pressure itself departs from the square root at the last node or two), and
+/// moves smoothly with the load, which is what tables interpolated between loads need.
+ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p, std::span<const double> rims);
 
-/// Measures a contact state of a two-level cell (pressure p and displacement u on its grid).
+/// Measures a contact state of a two-level cell: pressure p, the field that locates the
+/// rims (contact_areas) and displacement u on its grid, at time t.
 ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double> p,
-                                std::span<const double> u, double t);
+                                std::span<const double> rims, std::span<const double> u, double t);
 
 /// Whether level 2 carries load: some node of its own (level2_node, ties included) is pressed.
 bool level2_loaded(const TwoLevelCell& cell, std::span<const double> p);

@@ -50,7 +50,7 @@ TEST(PeriodicScaling, one_scaled_solution_serves_every_pitch_and_shape_constant)
       ContactSolver solver(cell.grid);
       std::vector<double> p(cell.grid.size(), 0.0), u(cell.grid.size());
       ASSERT_TRUE(solver.solve(cell.profile, X, 1.0, p, u).converged);
-      const ReferenceSnapshot real = measure_state(cell, p, u, 0.0);
+      const ReferenceSnapshot real = measure_state(cell, p, p, u, 0.0);
       const model::PeriodicState scaled =
           solve_scaled(s, X / (C * std::pow(l, s - 1)), dh / (C * std::pow(l, s)), 64);
       EXPECT_NEAR(real.a1 / l, scaled.a1, 1e-12) << "s " << s << " l " << l << " C " << C;

@@ -17,6 +17,8 @@
 #include "model/regime.hpp"
 #include "model/prony_series.hpp"
 #include "model/standard_linear_solid.hpp"
+#include "reference/closed_forms.hpp"
+#include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 #include "reference/reference_point.hpp"
 
@@ -57,6 +59,42 @@ TEST(TwoLevelCell, nodes_belong_to_the_lower_punch_and_tips_sit_on_nodes) {
   EXPECT_DOUBLE_EQ(std::accumulate(even.level2_weight.begin(), even.level2_weight.end(), 0.0),
                    0.5 * even.grid.size());
   EXPECT_THROW(make_two_level_cell(problem, 31), std::invalid_argument);
+}
+
+// The areas from the rims' pressures against Hertz (with the images' correction,
+// hertz_periodic) and against counting the pressed nodes: the spot of
+// hertz_small_spot_in_large_cell (R = 1, a = L/8; level 2 hidden at dh = 2) on N = 32 .. 256,
+// 4 to 32 nodes across its radius. The grid's own pressure is off the square-root profile
+// near the rim, so the estimate keeps an error of order h, with a smaller constant than
+// counting and without its node-by-node noise. Measured when written, in h/a: counting
+// 0.11-0.27 (mean 0.19), the rims' estimate 0.03-0.13 (mean 0.07).
+TEST(TwoLevelCell, areas_from_the_rims_pressures_meet_hertz_closer_than_counted_nodes) {
+  const double L = 2.0, P = 4.0 / 3.0 * 0.25 * 0.25 * 0.25;
+  const HertzContact exact = hertz_periodic(P, 1.0, L);
+  model::ContactProblem problem{L, 2.0, P / (L * L), {2, 0.5}};
+  double counted_sum = 0.0, rims_sum = 0.0;
+  for (const int n : {32, 48, 64, 96, 128, 192, 256}) {
+    const TwoLevelCell cell = make_two_level_cell(problem, n, Symmetry::mirror);
+    ContactSolver solver(cell.grid, {1e-10, 5000});
+    std::vector<double> p(cell.grid.size(), 0.0), u(cell.grid.size(), 0.0);
+    ASSERT_TRUE(solver.solve(cell.profile, problem.pbar0, 1.0, p, u).converged);
+    const ContactAreas areas = contact_areas(cell, p, p);
+    EXPECT_EQ(areas.level2, 0.0);
+    double pressed = 0.0;
+    for (std::size_t k = 0; k < p.size(); ++k) pressed += p[k] > 0.0 ? cell.grid.multiplicity(k) : 0.0;
+    const double h_over_a = cell.grid.hx() / exact.a;
+    const double counted = std::sqrt(pressed * cell.grid.cell_area() / std::numbers::pi) / exact.a - 1.0;
+    const double rims = std::sqrt(areas.level1 / std::numbers::pi) / exact.a - 1.0;
+    std::printf("Hertz N = %d: counted %+.2e (%.3f h/a), rims %+.2e (%.3f h/a)\n", n, counted,
+                std::abs(counted) / h_over_a, rims, std::abs(rims) / h_over_a);
+    EXPECT_LE(std::abs(rims), 0.15 * h_over_a) << "N = " << n;
+    if (n >= 128) {
+      EXPECT_LE(std::abs(rims), 0.05 * h_over_a) << "N = " << n;
+    }
+    counted_sum += std::abs(counted) / h_over_a;
+    rims_sum += std::abs(rims) / h_over_a;
+  }
+  EXPECT_LT(rims_sum, 0.5 * counted_sum);
 }
 
 TEST(ReferencePoint, loads_sum_to_nominal_load_and_snapshots_keep_requested_order) {
@@ -358,8 +396,8 @@ TEST(ReferencePoint, steps_by_creep_growth_keep_the_ladders_accuracy_with_fewer_
   // both measured against a ladder 16 times finer (N = 32, tolerance 1e-12). Measured when
   // written: the immediate point's P2 within 5.7e-4 (ladder 1.0e-3) in 24 solves (29); the
   // delayed point's within 1.4e-2 at t = 1, just after touchdown, as the ladder's, 4.4e-3
-  // at t = 2 (ladder 1.9e-3), in 30 solves (36). t* does not depend on the steps
-  // under a held load, so it agrees to the bracket.
+  // at t = 2 (ladder 1.9e-3), in 30 solves (36). t* and the radii do not depend on
+  // the steps under a held load, so they agree to the bracket and to the solver's tolerance.
   const model::StandardLinearSolid sls(2.5);
   for (const double dh : {0.05, 0.075}) {
     ReferenceOptions fine = options_with(32);
@@ -380,15 +418,10 @@ TEST(ReferencePoint, steps_by_creep_growth_keep_the_ladders_accuracy_with_fewer_
       EXPECT_NEAR(*c.t_star, *f.t_star, by_creep.t_star_resolution);
     }
     for (std::size_t k = 0; k < f.series.size(); ++k) {
-      // The contact sets agree node for node; the radii read the rims' pressures
-      // (contact_areas), so they carry the steps' error as the loads do.
-      for (const auto radius : {&ReferenceSnapshot::a1, &ReferenceSnapshot::a2}) {
-        if (f.series[k].*radius == 0.0) continue;
-        const double error = std::abs(c.series[k].*radius / f.series[k].*radius - 1.0);
-        const double ladder_error = std::abs(l.series[k].*radius / f.series[k].*radius - 1.0);
-        EXPECT_LT(error, std::max(3.0 * ladder_error, 1e-3)) << "dh " << dh << " t " << f.series[k].t;
-        EXPECT_LT(error, 2e-2);
-      }
+      // The contact sets agree node for node, and the creep-scaled pressure that places the
+      // rims (contact_areas) has no time-step error under a held load.
+      EXPECT_NEAR(c.series[k].a2, f.series[k].a2, 1e-9 * f.series[k].a2);
+      EXPECT_NEAR(c.series[k].a1, f.series[k].a1, 1e-9 * f.series[k].a1);
       if (f.series[k].P2 == 0.0) {
         EXPECT_EQ(c.series[k].P2, 0.0);
         continue;
@@ -421,9 +454,10 @@ TEST(ReferencePoint, a_snapshot_at_t_1e12_takes_a_few_dozen_steps_and_is_the_lon
       evaluate_reference_point(elastic_problem, model::StandardLinearSolid(1.0), options_with(32, {0.0}));
   const ReferenceSnapshot& end = r.series[1];
   const ReferenceSnapshot& e = elastic.series[0];
-  // The areas read the rims' pressures (contact_areas), which agree as the loads do.
-  EXPECT_NEAR(end.area1, e.area1, 1e-6 * e.area1);
-  EXPECT_NEAR(end.area2, e.area2, 1e-6 * e.area2);
+  // The areas read the creep-scaled pressure's rims (contact_areas): J(inf) times the
+  // elastic pressure, to the solver's tolerance.
+  EXPECT_NEAR(end.area1, e.area1, 1e-9 * e.area1);
+  EXPECT_NEAR(end.area2, e.area2, 1e-9 * e.area2);
   EXPECT_NEAR(end.P1, e.P1 / 2.5, 1e-7 * problem.pbar0 * problem.l * problem.l);
   EXPECT_NEAR(end.P2, e.P2 / 2.5, 1e-7 * problem.pbar0 * problem.l * problem.l);
   EXPECT_NEAR(end.h, e.h, 1e-7);
