@@ -57,34 +57,50 @@ std::string two_level_grid_error(int n) {
 
 namespace {
 
-/// The part of the hx x hy square about (x, y) where the level-2 surface is the lower one
-/// (ties count half): 0 or 1 where the two surfaces do not cross within the square (checked
-/// at its corners, edge midpoints and centre), else counted on kSubsamples^2 points.
+/// The part of the hx x hy square about (x, y) where the level-2 surface is the lower one:
+/// 0 or 1 where the two surfaces do not cross within the square (checked at its corners,
+/// edge midpoints and centre; ties count half), else the midpoint rule over kRows rows,
+/// each cut where the surfaces cross (found by bisection to round-off). Exact where the
+/// line of crossing is straight (s = 2), O((h / kRows)^2 / radius of curvature) otherwise;
+/// counting points on a lattice instead would err alike along a straight line, adding
+/// up to O(h / kRows) over the cell.
 double level2_fraction(const PeriodicGrid& g, const model::ContactProblem& problem, double x, double y) {
-  constexpr int kSubsamples = 16;
+  constexpr int kRows = 16;
   const double half = 0.5 * problem.l;
-  const auto owner = [&](double px, double py) {  // 1 level 2, 0 level 1, 0.5 tie
+  const auto excess = [&](double px, double py) {  // f1 - (f2 + dh): > 0 where level 2 is lower
     const double f1 = problem.shape.C * model::ipow(std::hypot(periodic_offset(px, g.Lx), periodic_offset(py, g.Ly)),
                                                     problem.shape.s);
     const double lower2 = problem.shape.C * model::ipow(std::hypot(periodic_offset(px - half, g.Lx),
                                                                    periodic_offset(py - half, g.Ly)),
                                                         problem.shape.s) + problem.dh;
     const double tie = kProfileTieTolerance * std::max(f1, lower2);
-    return std::abs(f1 - lower2) <= tie ? 0.5 : (lower2 < f1 ? 1.0 : 0.0);
+    return std::abs(f1 - lower2) <= tie ? 0.0 : f1 - lower2;
   };
-  const double centre = owner(x, y);
+  const auto owner = [](double e) { return e > 0.0 ? 1.0 : e < 0.0 ? 0.0 : 0.5; };
+  const double centre = owner(excess(x, y));
   bool uniform = centre != 0.5;
   for (int a = -1; a <= 1 && uniform; ++a) {
-    for (int b = -1; b <= 1 && uniform; ++b) uniform = owner(x + 0.5 * a * g.hx(), y + 0.5 * b * g.hy()) == centre;
+    for (int b = -1; b <= 1 && uniform; ++b) uniform = owner(excess(x + 0.5 * a * g.hx(), y + 0.5 * b * g.hy())) == centre;
   }
   if (uniform) return centre;
   double sum = 0.0;
-  for (int a = 0; a < kSubsamples; ++a) {
-    for (int b = 0; b < kSubsamples; ++b) {
-      sum += owner(x + ((a + 0.5) / kSubsamples - 0.5) * g.hx(), y + ((b + 0.5) / kSubsamples - 0.5) * g.hy());
+  const double left = x - 0.5 * g.hx(), right = x + 0.5 * g.hx();
+  for (int b = 0; b < kRows; ++b) {
+    const double row = y + ((b + 0.5) / kRows - 0.5) * g.hy();
+    const double e_left = excess(left, row), e_right = excess(right, row);
+    if ((e_left > 0.0) == (e_right > 0.0) && (e_left < 0.0) == (e_right < 0.0)) {
+      sum += owner(e_left);
+      continue;
     }
+    double lo = left, hi = right;  // keeps the sign of e_left at lo
+    for (int k = 0; k < 60 && hi - lo > 1e-15 * g.Lx; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      ((excess(mid, row) > 0.0) == (e_left > 0.0) ? lo : hi) = mid;
+    }
+    const double cut = (0.5 * (lo + hi) - left) / g.hx();
+    sum += e_left > 0.0 ? cut : e_right > 0.0 ? 1.0 - cut : 0.5;
   }
-  return sum / (kSubsamples * kSubsamples);
+  return sum / kRows;
 }
 
 }  // namespace
