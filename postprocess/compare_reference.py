@@ -52,8 +52,8 @@ def main(argv: list[str]) -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--bem-grid", type=int, default=256, help="BEM grid nodes per side N (even; default 256)")
     p.add_argument("--no-convergence", action="store_true", help="skip the 2N x 2N runs")
-    p.add_argument("--localization", help="the model's localization: paper, refined, shells:D or point-shells:D "
-                                          "(default: the engine's, refined)")
+    p.add_argument("--localization", help="the model: periodic, paper, refined, shells:D or point-shells:D "
+                                          "(default: the engine's, periodic)")
     p.add_argument("--binary", help="punchsweep executable (default: PATH or build/)")
     args = p.parse_args(argv)
     if args.bem_grid < 16 or args.bem_grid % 2:

@@ -42,8 +42,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     point.add_argument("--C", type=float, help="shape constant (> 0; default 0.5)")
     point.add_argument("--t-max", type=float, help="last time, in T_eps (default 5)")
     point.add_argument("--samples", type=int, help="number of times (default 101)")
-    point.add_argument("--localization", help="paper, refined, shells:D or point-shells:D (default: the "
-                                              "engine's, refined)")
+    point.add_argument("--localization", help="periodic, paper, refined, shells:D or point-shells:D (default: "
+                                              "the engine's, periodic)")
     point.add_argument("--binary", help="punchsweep executable (default: $PUNCHSWEEP, PATH or build/)")
     from_map = p.add_argument_group("map mode (reads a --quantities full regime map)")
     from_map.add_argument("--map", metavar="MAP.h5",

@@ -82,7 +82,7 @@ def run_command(binary: str, command: str, options: dict) -> dict:
 def run_point(binary: str, l: float, dh: float, T: float, pbar: float, s: int,
               C: float = 0.5, times: list[float] | None = None, localization: str | None = None) -> dict:
     """Evaluate one point; returns the JSON dict (keys: regime, t_star, h_0, ..., series,
-    and localization first unless it is the paper's). `localization`: paper, refined,
-    shells:D or point-shells:D; None for the engine's default (refined)."""
+    and localization first unless it is the paper's). `localization`: periodic, paper,
+    refined, shells:D or point-shells:D; None for the engine's default (periodic)."""
     return run_command(binary, "point", dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times or None,
                                              localization=localization))

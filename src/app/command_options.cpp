@@ -157,18 +157,8 @@ model::ContactProblem read_problem(const po::variables_map& vm) {
 }
 
 void add_localization_option(po::options_description& opts, const std::string& fallback) {
-  opts.add_options()(
-      "localization", po::value<std::string>()->value_name("L")->default_value(fallback),
-      ("the model (docs/model.md, sections 11, 14): periodic (the whole periodic cell's elastic solution, "
-       "tabulated from the boundary elements and read at the creep-weighted load: exact where the contact "
-       "only grows, merged spots included), paper (the paper's eqs 9.5-9.19, "
-       "= point-shells:2), refined (= shells:" +
-       std::to_string(model::Localization::kRefinedShells) +
-       ", the member closest to the periodic BEM), shells:D (the punches of both levels within the D nearest "
-       "distances, spread over their own spots, with nominal-pressure radii that follow the loads) or "
-       "point-shells:D (as point loads); 1 <= D <= " +
-       std::to_string(model::Localization::kMaxShells))
-          .c_str());
+  opts.add_options()("localization", po::value<std::string>()->value_name("L")->default_value(fallback),
+                     ("the model (docs/model.md, sections 11, 14): " + model::localization_spellings()).c_str());
 }
 
 model::Localization read_localization(const po::variables_map& vm) {

@@ -53,9 +53,10 @@ void add_point_options(boost::program_options::options_description& opts,
 /// --l, --dh, --pbar, --s and --C as a ContactProblem, each range-checked.
 model::ContactProblem read_problem(const boost::program_options::variables_map& vm);
 
-/// --localization L: paper, refined, shells:D or point-shells:D (docs/model.md, section
-/// 11), default `fallback`: refined where the answers are (point, sweep), paper for the
-/// commands that draw the paper's curves and table (single-level, elastic).
+/// --localization L: any spelling of model::localization_spellings() (docs/model.md,
+/// sections 11, 14), default `fallback`: model::kDefaultLocalization where the answers are
+/// (point, sweep), paper for the commands that draw the paper's curves and table
+/// (single-level, elastic).
 void add_localization_option(boost::program_options::options_description& opts, const std::string& fallback);
 /// --localization as read, refused as a usage error (exit 2) naming its valid forms.
 model::Localization read_localization(const boost::program_options::variables_map& vm);

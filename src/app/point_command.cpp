@@ -7,6 +7,7 @@
 #include "app/command_options.hpp"
 #include "app/point_output.hpp"
 #include "app/usage_error.hpp"
+#include "model/localization.hpp"
 #include "model/point_evaluation.hpp"
 
 namespace po = boost::program_options;
@@ -25,7 +26,7 @@ po::options_description point_options(const PointMaterial& material) {
       "time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
   add_point_options(opts, material.spec);
   add_material_options(opts);
-  add_localization_option(opts, "refined");
+  add_localization_option(opts, std::string(model::kDefaultLocalization));
   opts.add_options()
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");

@@ -21,6 +21,7 @@
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
 #include "io/crc32.hpp"
+#include "model/localization.hpp"
 #include "model/creep_laws.hpp"
 #include "model/parameters.hpp"
 #include "reference/reference_point.hpp"
@@ -88,13 +89,8 @@ std::vector<KeySpec> make_keys() {
                   "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time in T_eps "
                   "or the material's unit), from 0:phi0 to t_n:1; empty: a step (a ramp: grid.ramp_time)",
                   "empty, or points from 0:phi0 to t_n:1 with phi non-decreasing in [0, 1]", Fixed::model_load_table});
-  keys.push_back({"model", "localization", "L", "refined",
-                  "the localization model (docs/model.md, section 11): paper (the paper's eqs 9.5-9.19), refined "
-                  "(= shells:" + std::to_string(model::Localization::kRefinedShells) +
-                      ", the member closest to the periodic BEM), shells:D (the punches of both levels within the D "
-                      "nearest distances, spread over their own spots, radii that follow the loads) or point-shells:D",
-                  "paper, refined, shells:D or point-shells:D with 1 <= D <= " +
-                      std::to_string(model::Localization::kMaxShells),
+  keys.push_back({"model", "localization", "L", std::string(model::kDefaultLocalization),
+                  "the model (docs/model.md, sections 11, 14)", model::localization_spellings(),
                   Fixed::model_localization});
   keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5",
                   "snapshot times of the stored time series, in T_eps (or the material's time_unit)",

@@ -11,11 +11,17 @@ std::string Localization::spelling() const {
   return std::string(distributed ? "shells:" : "point-shells:") + std::to_string(shells);
 }
 
+std::string localization_spellings() {
+  return "periodic (the whole periodic cell's elastic solution, tabulated from the boundary elements and read at "
+         "the creep-weighted load: exact where the contact only grows, merged spots included), paper (the paper's "
+         "eqs 9.5-9.19, = point-shells:2), refined (= shells:" +
+         std::to_string(Localization::kRefinedShells) +
+         ", the localization closest to the periodic solution), shells:D (the punches of both levels within the D "
+         "nearest distances, spread over their own spots) or point-shells:D (as point loads), 1 <= D <= " +
+         std::to_string(Localization::kMaxShells);
+}
+
 Localization parse_localization(std::string_view text) {
-  const std::string valid = "valid: periodic (the whole cell's elastic solution, tabulated), paper (= point-shells:2), refined (= shells:" +
-                            std::to_string(Localization::kRefinedShells) + "), shells:D (the neighbours within the D nearest "
-                            "distances, spread over their spots) or point-shells:D (as point loads), 1 <= D <= " +
-                            std::to_string(Localization::kMaxShells);
   if (text == "paper") return {};
   if (text == "periodic") {
     Localization periodic;
@@ -34,7 +40,8 @@ Localization parse_localization(std::string_view text) {
     }
     return Localization{D, distributed};
   }
-  throw std::invalid_argument("localization '" + std::string(text) + "' is not one; " + valid);
+  throw std::invalid_argument("localization '" + std::string(text) + "' is not one; valid: " +
+                              localization_spellings());
 }
 
 }  // namespace punchsweep::model

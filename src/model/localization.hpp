@@ -45,6 +45,16 @@ struct Localization {
   std::string spelling() const;
 };
 
+/// The model of a point, a sweep and Python's classify when none is named: the periodic
+/// cell's tabulated solution (docs/model.md, section 14), exact wherever the contact only
+/// grows and valid where spots merge.
+inline constexpr std::string_view kDefaultLocalization = "periodic";
+
+/// What parse_localization accepts, each spelling with a few words on it, for help texts
+/// and errors: "periodic (...), paper (...), refined (...), shells:D (...) or
+/// point-shells:D (...), 1 <= D <= kMaxShells".
+std::string localization_spellings();
+
 /// Parses "paper", "periodic", "refined" (= shells:kRefinedShells), "shells:D" (D distances of
 /// distributed neighbours) or "point-shells:D" (of point loads), 1 <= D <= kMaxShells.
 /// Throws std::invalid_argument naming the valid forms.

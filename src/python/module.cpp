@@ -29,6 +29,7 @@
 #include "app/usage_error.hpp"
 #include "map/quantities.hpp"
 #include "model/contact_problem.hpp"
+#include "model/localization.hpp"
 #include "model/creep_laws.hpp"
 #include "model/creep_weighted_load.hpp"
 #include "model/parameters.hpp"
@@ -429,6 +430,7 @@ PYBIND11_MODULE(_core, m) {
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "
         "as a list of such arrays, ramp_time empty for a step (the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
+  m.attr("default_localization") = std::string(model::kDefaultLocalization);
   py::class_<MaterialHandle>(m, "MaterialFile", "a material file as the engine reads it (use punchsweep.Material)")
       .def("info", &MaterialHandle::info)
       .def("evaluate", &MaterialHandle::evaluate, py::arg("t"), py::arg("temperature"), py::arg("relaxation"))

@@ -135,8 +135,11 @@ TEST(Cli, help_names_every_option_with_its_unit_and_range) {
 }
 
 TEST(Cli, json_output_has_the_contract_keys_and_the_model_numbers) {
-  // The default is the refined model, which names itself first.
-  const CliRun refined = run_cli("point " + kGood + " --format json");
+  // The default is the periodic model, which names itself first, as refined does.
+  const CliRun periodic = run_cli("point " + kGood + " --format json");
+  ASSERT_EQ(periodic.exit_code, 0) << periodic.err;
+  EXPECT_EQ(periodic.out.rfind("{\n  \"localization\": \"periodic\",\n  \"regime\": ", 0), 0u) << periodic.out;
+  const CliRun refined = run_cli("point " + kGood + " --format json --localization refined");
   ASSERT_EQ(refined.exit_code, 0) << refined.err;
   EXPECT_EQ(refined.out.rfind("{\n  \"localization\": \"shells:200\",\n  \"regime\": ", 0), 0u) << refined.out;
   // The paper's model: its numbers (docs/model.md, section 9), and no localization key.
@@ -167,10 +170,16 @@ TEST(Cli, never_regime_prints_null_t_star) {
 }
 
 TEST(Cli, flagged_point_reports_reason) {
-  const CliRun r = run_cli("point --l 0.3 --dh 0.2 --T 5 --pbar 0.3 --s 2 --format json");
+  // Spots that merge: the localization models flag the point, the periodic model (the
+  // default) solves it.
+  const std::string merged = "point --l 0.3 --dh 0.2 --T 5 --pbar 0.3 --s 2 --format json";
+  const CliRun r = run_cli(merged + " --localization refined");
   ASSERT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("\"valid\": false"), std::string::npos);
   EXPECT_NE(r.out.find("spots of one level merge"), std::string::npos);
+  const CliRun periodic = run_cli(merged);
+  ASSERT_EQ(periodic.exit_code, 0);
+  EXPECT_NE(periodic.out.find("\"valid\": true"), std::string::npos) << periodic.out;
 }
 
 TEST(Cli, csv_and_table_show_the_series) {

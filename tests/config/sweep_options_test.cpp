@@ -448,7 +448,7 @@ TEST(SweepOptions, identity_lists_the_content_keys_in_shortest_decimals) {
   EXPECT_EQ(c.identity[4], "grid.s = 1, 2, 3");
   EXPECT_EQ(c.identity[5], "model.C = 0.5");
   EXPECT_EQ(c.identity[6], "model.creep_law = standard_linear_solid");
-  EXPECT_EQ(c.identity[7], "model.localization = shells:200");  // the default, refined
+  EXPECT_EQ(c.identity[7], "model.localization = periodic");  // the default
   EXPECT_EQ(c.identity[8], "time.times = 0, 0.5, 1, 2, 5");
   EXPECT_EQ(c.identity[9], "output.quantities = full");
   EXPECT_EQ(c.identity[10], "run.chunk = 4096");

@@ -26,7 +26,9 @@ def paper_points():
 
 def test_json_contract_keys_and_types():
     keys = {"regime", "t_star", "h_0", "h_inf", "valid", "reason", "a1_inf", "a2_inf", "area_fraction_inf", "series"}
-    refined = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2)  # the default names its model
+    periodic = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2)  # the default names its model
+    assert set(periodic) == keys | {"localization"} and periodic["localization"] == "periodic"
+    refined = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2, localization="refined")
     assert set(refined) == keys | {"localization"} and refined["localization"] == "shells:200"
     r = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2, localization="paper")
     assert set(r) == keys

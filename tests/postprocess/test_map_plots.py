@@ -133,10 +133,12 @@ def test_regime_map_png_shows_the_stored_regime_at_every_valid_cell_centre(maps,
 
 def test_regime_map_draws_the_bem_regime_where_the_model_has_no_answer(tmp_path):
     # sweep --reference.sample invalid: at every cell the model flags, the BEM's regime in
-    # its full colour (dotted, and named in the legend); elsewhere the model's colours.
+    # its full colour (dotted, and named in the legend); elsewhere the model's colours. The
+    # refined model, which flags cells.
     path = tmp_path / "invalid.h5"
     done = subprocess.run([BINARY, "sweep", "--grid.l", "0.75", "--grid.dh", "linspace(0.02,0.12,6)", "--grid.T", "5",
-                           "--grid.pbar", "logspace(0.01,0.08,6)", "--grid.s", "2", "--reference", "bem",
+                           "--grid.pbar", "logspace(0.01,0.08,6)", "--grid.s", "2", "--model.localization", "refined",
+                           "--reference", "bem",
                            "--bem-grid", "32", "--reference.sample", "invalid", "--quiet", "--output", str(path)],
                           capture_output=True, text=True)
     assert done.returncode == 0, done.stderr

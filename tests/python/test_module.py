@@ -212,8 +212,10 @@ def test_point_rejects_a_missing_option_and_a_bad_material_as_the_cli_does():
 
 def test_open_map_decodes_a_real_map(tmp_path):
     path = tmp_path / "map.h5"
+    # The refined model, whose map has flagged points to decode.
     done = cli("sweep", "--grid.l", "0.5,0.75", "--grid.dh", "0.01,0.05,0.1", "--grid.T", "2.5", "--grid.pbar",
-               "0.02,0.06", "--grid.s", "2", "--quantities", "full", "--quiet", "--output", str(path))
+               "0.02,0.06", "--grid.s", "2", "--quantities", "full", "--model.localization", "refined", "--quiet",
+               "--output", str(path))
     assert done.returncode == 0, done.stderr
     ds = punchsweep.open_map(path)
     import h5py
@@ -239,7 +241,7 @@ def test_open_map_decodes_a_real_map(tmp_path):
     assert ds["a1"].attrs["units"] == "R" and ds["P1"].attrs["units"] == "R^2 E0/(1-nu^2)"
     # Decoded values equal classify's at the map's own points.
     L, DH, P = np.meshgrid(ds["l"].values, ds["dh"].values, ds["pbar"].values, indexing="ij")
-    c = punchsweep.classify(L, DH, 2.5, P, 2)
+    c = punchsweep.classify(L, DH, 2.5, P, 2, localization="refined")
     assert np.array_equal(c["regime"], codes[:, :, 0, :, 0])
 
 
@@ -348,10 +350,12 @@ def seconds_to_interrupt(call: str, after: float) -> float:
 def test_classify_is_interrupted_by_ctrl_c():
     """Ctrl-C (SIGINT) stops a long classify within about a second with KeyboardInterrupt
     (issue 22: it was ignored while the loop ran without the GIL). 400,000 scattered
-    points, each with a curve of its own, take minutes; the signal comes after 1.5 s."""
+    points under the refined model, each with a curve of its own, take minutes; the signal
+    comes after 1.5 s."""
     took = seconds_to_interrupt(
         "rng = np.random.default_rng(1); n = 400_000; punchsweep.classify(rng.uniform(0.5, 1.5, n), "
-        "rng.uniform(0.005, 0.15, n), rng.uniform(1.5, 8, n), rng.uniform(0.002, 0.1, n), 2)", after=1.5)
+        "rng.uniform(0.005, 0.15, n), rng.uniform(1.5, 8, n), rng.uniform(0.002, 0.1, n), 2, "
+        "localization='refined')", after=1.5)
     assert took < 2.0, f"classify took {took:.2f} s to stop after SIGINT"
 
 

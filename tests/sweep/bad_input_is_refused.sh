@@ -21,7 +21,7 @@ refused "grid.s" "$PUNCHSWEEP" sweep "${small[@]}" --grid.s 2.5 --output x.h5
 refused "grid.dh" "$PUNCHSWEEP" sweep "${small[@]}" --grid.dh -0.1 --output x.h5
 refused "grid.pbar" "$PUNCHSWEEP" sweep "${small[@]}" --grid.pbar 0 --output x.h5
 refused "model.C" "$PUNCHSWEEP" sweep "${small[@]}" --model.C 0 --output x.h5
-refused "model.localization = shells:0: localization 'shells:0' is not one; valid range: paper, refined, shells:D or point-shells:D with 1 <= D <= 1000" \
+refused "model.localization = shells:0: localization 'shells:0' is not one; valid range: periodic (" \
   "$PUNCHSWEEP" sweep "${small[@]}" --model.localization shells:0 --output x.h5
 refused "time.times" "$PUNCHSWEEP" sweep "${small[@]}" --time.times 0,-1 --output x.h5
 refused "output.quantities" "$PUNCHSWEEP" sweep "${small[@]}" --quantities lots --output x.h5

@@ -10,8 +10,10 @@
 # - A reader holding the stale .partial open does not stop --resume, nor is its file cut.
 source "$(dirname "$0")/common.sh"
 rounds=${PROBE_ROUNDS:-4}
+# The refined model: the kill needs a sweep still running 0.6 s after its start (the periodic
+# model finishes this grid in less).
 grid=(--grid.l 0.5,0.75,1 --grid.dh 'linspace(0.01,0.12,12)' --grid.T 2.5,5,8 --grid.pbar 'logspace(0.005,0.08,16)'
-      --grid.s 1,2,3 --chunk 100)
+      --grid.s 1,2,3 --chunk 100 --model.localization refined)
 run_ranks 0 sweep "${grid[@]}" --quiet --output clean.h5
 
 # Runs A and B at once into r.h5 with the extra options given; both must end, one with 0

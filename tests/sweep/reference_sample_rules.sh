@@ -5,7 +5,8 @@
 # The map records the rule and the count; 1 and 2 ranks give the same map.
 source "$(dirname "$0")/common.sh"
 grid=(--grid.l 0.5,0.75,1 --grid.dh 'linspace(0.02, 0.1, 5)' --grid.T 2.5,6 --grid.pbar 'logspace(0.01, 0.08, 4)'
-      --grid.s 1,2 --time.times 0,1,5 --reference bem --bem-grid 32 --quiet)  # 240 points
+      --grid.s 1,2 --time.times 0,1,5 --reference bem --bem-grid 32 --quiet
+      --model.localization refined)  # 240 points; refined: the rule "invalid" needs flagged points
 run_ranks 0 sweep "${grid[@]}" --reference.sample invalid --output invalid.h5
 run_ranks 2 sweep "${grid[@]}" --reference.sample invalid --output invalid2.h5
 same_maps invalid.h5 invalid2.h5

@@ -134,7 +134,7 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
           ramp: float | None = None, load_table: str | None = None,
           localization: str | None = None, **options: Any) -> PointResult:
     """`punchsweep point` in-process. Keywords are its options (None: the command's default:
-    C = 0.5, times 0, 0.5, 1, 2, 5, the refined localization); a material file's own
+    C = 0.5, times 0, 0.5, 1, 2, 5, the periodic model); a material file's own
     parameters go in **options. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)  # a path or a Material
     args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
@@ -266,7 +266,7 @@ class Material:
         return float(values) if values.shape == () else values
 
 
-def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str = "refined", *,
+def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str | None = None, *,
              material: str | None = None, temperature=None, ramp_time=None) -> Classification:
     """The regime, t*, h(0), h(inf) and validity of every point, broadcasting l, dh, pbar, s and
     the law's parameter (numbers or arrays) like numpy: T of the standard linear solid, or with
@@ -274,10 +274,11 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     file has a shift (its reference temperature when left out; none without a shift). With
     ramp_time the load rises linearly to pbar over that time (T_eps, or the material's time
     unit), as point()'s --ramp; a step without. The same numbers as point() at each
-    point; t* in T_eps, or in the material's time unit ("time_unit" says which). Points that
-    share (l, s, dh) share the model's per-pitch work (a grid is fast: over 1e6 points/s;
-    scattered pitches and dh cost a curve each under the refined model, a table row under
-    `periodic`). ValueError with the command line's message for a value out of range."""
+    point; t* in T_eps, or in the material's time unit ("time_unit" says which). localization:
+    as point()'s (None: the engine's default, periodic). Points that share (l, s, dh) share
+    the model's per-pitch work (a grid is fast: over 2e6 points/s under periodic; scattered
+    pitches and dh cost a table row each under periodic, a curve each under refined).
+    ValueError with the command line's message for a value out of range."""
     if pbar is None or s is None:
         raise ValueError("classify: pbar and s are required")
     if material is None:
@@ -295,7 +296,8 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     shape = arrays[0].shape
     flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
     raw = _core.classify(*flat[:4], flat[4:4 + len(law)], flat[4 + len(law)] if ramp else np.empty(0),
-                         float(C), str(localization), "" if material is None else os.fspath(material))
+                         float(C), _core.default_localization if localization is None else str(localization),
+                         "" if material is None else os.fspath(material))
     unit = raw.pop("time_unit")
     return Classification({k: np.asarray(v).reshape(shape) for k, v in raw.items()}, unit)
 
