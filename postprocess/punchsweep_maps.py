@@ -1,4 +1,4 @@
-"""Shared reading of punchsweep regime maps (the HDF5 contract in README.md).
+"""Shared reading of punchsweep regime maps (the HDF5 contract in docs/maps.md).
 
 Everything the map scripts (regime_map.py, critical_dh.py, summary.py, evolution.py --map,
 model_error.py) have in common lives here: opening a map with xarray (h5netcdf), its axes and
@@ -31,7 +31,7 @@ import numpy as np
 SERIES = ("a1", "a2", "P1", "P2", "area_fraction")
 """The time-series variables of a `--quantities full` map."""
 
-# Flag meanings the scripts act on (README, "Validity"); their codes are read from the map.
+# Flag meanings the scripts act on (docs/maps.md, "Validity"); their codes are read from the map.
 DRAWN_REGIMES = ("immediate", "delayed", "never")
 """The regimes of computed points, in the order they are drawn and tabulated."""
 NOT_COMPUTED = "not_computed"

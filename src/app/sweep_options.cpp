@@ -80,7 +80,7 @@ std::vector<KeySpec> make_keys() {
                   "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
                   Fixed::model_creep_law});
   keys.push_back({"model", "material", "FILES", "",
-                  "material file (materials/NAME.ini, see README); replaces creep_law: the axes are then l, dh, "
+                  "material file (materials/NAME.ini, see docs/materials.md); replaces creep_law: the axes are then l, dh, "
                   "[temperature when the file has a [shift]], pbar, s, and times are in the file's time_unit. A "
                   "list (a.ini, b.ini) adds a categorical axis material after dh, labelled by the files' names",
                   "empty, or readable material files (several: one time_unit, all or none with a [shift])",

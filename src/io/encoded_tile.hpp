@@ -15,7 +15,7 @@ namespace punchsweep::io {
 struct TileSummary {
   std::uint64_t points = 0;                 ///< grid points in the tile
   std::array<std::uint64_t, 3> regimes{};   ///< points per regime code: 0 immediate, 1 delayed, 2 never
-  std::array<std::uint64_t, std::size(model::kValidities)> validity{};  ///< points per validity code (README, "Validity")
+  std::array<std::uint64_t, std::size(model::kValidities)> validity{};  ///< points per validity code (docs/maps.md, "Validity")
   std::array<std::uint64_t, 3> bem_regimes{};  ///< BEM reference points per regime code
   std::uint64_t bem_agreeing = 0;              ///< BEM reference points whose regime is the model's
 

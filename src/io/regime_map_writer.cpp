@@ -23,7 +23,7 @@ namespace punchsweep::io {
 namespace {
 
 /// The flag_values and flag_meanings of a flag set: the model's codes 0, 1, ... by their
-/// names (a file-format contract: README, "Validity"; never renumbered), then -1 not_computed.
+/// names (a file-format contract: docs/maps.md, "Validity"; never renumbered), then -1 not_computed.
 struct FlagSet {
   std::vector<std::int8_t> values;
   std::string meanings;

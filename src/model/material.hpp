@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// A material as users bring it: a file `materials/NAME.ini` (README, "Material files";
+/// A material as users bring it: a file `materials/NAME.ini` (docs/materials.md, "Material files";
 /// docs/model.md, section 10) with a creep or relaxation law in physical units and an
 /// optional time-temperature shift. Parsed here into the model's units: moduli in the
 /// instantaneous modulus E_0 (so pressures in E0* = E_0/(1 - nu^2)), time in the file's

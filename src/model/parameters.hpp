@@ -3,8 +3,8 @@
 /// Every input parameter of the model, declared once: its name (the command-line option,
 /// the config key and the map's coordinate), its unit, its valid range with the check
 /// that enforces it, and the values a sweep takes by default. The command line, the config
-/// validation, `--help`, the map's coordinate attributes and the README's tables follow
-/// from these declarations (tests/model/parameters_test.cpp holds the README to them).
+/// validation, `--help`, the map's coordinate attributes and the option table of docs/cli.md follow
+/// from these declarations (tests/model/parameters_test.cpp holds docs/cli.md to them).
 
 #include <span>
 #include <string>

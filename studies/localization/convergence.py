@@ -32,7 +32,7 @@ from localization_shells import T_CREEP, print_table  # noqa: E402
 from punchsweep_point import find_binary  # noqa: E402
 
 CACHE = HERE / "bem_paper_points.json"
-# The paper's six points (README, "Against the full solution"): (l, dh, pbar0).
+# The paper's six points (docs/accuracy.md, "How accurate is the localization method?"): (l, dh, pbar0).
 POINTS = [(0.75, 0.05, 0.06), (0.75, 0.075, 0.06), (0.75, 0.1, 0.06), (0.75, 0.05, 0.025), (1.0, 0.05, 0.025),
           (1.25, 0.05, 0.025)]
 TIMES = "0,5"

@@ -270,7 +270,7 @@ TEST(Cli, reference_command_solves_a_point_on_a_grid) {
   expect_refused_command("reference --l 0.75 --dh 0.05 --T 2.5 --pbar 0.06 --s 2 --bem-grid 33", "--bem-grid", "even");
 }
 
-// Material files (README, "Real materials and loading"): the point takes --material, its
+// Material files (docs/materials.md): the point takes --material, its
 // temperature and a ramp; bad files and values are refused like any bad input.
 TEST(Cli, material_point_runs_and_states_its_units) {
   const std::string material = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/nbr_linder2011.ini";

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every #include "LAYER/..." in src/ names the file's own layer or one below it. The
-# layers and what each may include (README, "Layout"); CMake's library links say the same.
+# layers and what each may include (docs/development.md, "Layout"); CMake's library links say the same.
 set -euo pipefail
 src=$(cd "$(dirname "$0")/../../src" && pwd)
 
@@ -20,7 +20,7 @@ checked=0
 for dir in "$src"/*/; do
   layer=$(basename "$dir")
   if [[ -z "${allowed[$layer]+set}" ]]; then
-    echo "src/$layer: a folder that is no known layer (add it here and to the README)"
+    echo "src/$layer: a folder that is no known layer (add it here and to docs/development.md)"
     status=1
     continue
   fi

@@ -1,4 +1,4 @@
-// Material files (README, "Material files"): the example read exactly, the
+// Material files (docs/materials.md, "Material files"): the example read exactly, the
 // normalized (Abaqus) form equal to the absolute one, every kind of bad file refused with
 // the file, key, value and range named, the standard linear solid written as a one-term
 // Prony file giving the SLS point to 1e-12, and a WLF shift giving the reference point with

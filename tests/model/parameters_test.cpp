@@ -13,14 +13,15 @@ using namespace punchsweep::model;
 
 namespace {
 
+// The command line's manual, whose option table the declarations must match.
 std::string readme() {
-  std::ifstream in(std::string(PUNCHSWEEP_SOURCE_DIR) + "/README.md");
+  std::ifstream in(std::string(PUNCHSWEEP_SOURCE_DIR) + "/docs/cli.md");
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
 }
 
-// The README table row of option `--NAME` ("| `--NAME` | ..."), or "" if none.
+// The docs/cli.md table row of option `--NAME` ("| `--NAME` | ..."), or "" if none.
 std::string readme_row(const std::string& text, std::string_view name) {
   const std::string head = std::string("| `--").append(name).append("` |");
   const std::size_t at = text.find(head);
@@ -66,12 +67,12 @@ TEST(Parameters, problem_error_reports_the_first_bad_field_from_the_registry) {
 
 TEST(Parameters, readme_option_table_states_every_point_parameter_as_declared) {
   const std::string text = readme();
-  ASSERT_FALSE(text.empty()) << "README.md not found";
+  ASSERT_FALSE(text.empty()) << "docs/cli.md not found";
   std::vector<const Parameter*> params = sweep_axes(creep_laws().front().parameters);
   params.push_back(find_parameter(kShapeConstant));
   for (const Parameter* p : params) {
     const std::string row = readme_row(text, p->name);
-    ASSERT_FALSE(row.empty()) << "README has no row for --" << p->name;
+    ASSERT_FALSE(row.empty()) << "docs/cli.md has no row for --" << p->name;
     EXPECT_NE(row.find(std::string(p->meaning)), std::string::npos) << row;
     const std::string range = std::string("`").append(p->range).append("`");
     EXPECT_NE(row.find(range), std::string::npos) << row;

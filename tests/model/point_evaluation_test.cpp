@@ -193,7 +193,7 @@ TEST(PointEvaluation, odd_inputs_give_no_silent_nan) {
 }
 
 TEST(Validity, codes_and_names_are_the_file_contract) {
-  // Regime maps store these integers; README documents them. Never renumber.
+  // Regime maps store these integers; docs/maps.md documents them. Never renumber.
   EXPECT_EQ(static_cast<int>(Validity::valid), 0);
   EXPECT_EQ(static_cast<int>(Validity::same_level_overlap), 1);
   EXPECT_EQ(static_cast<int>(Validity::cross_level_overlap), 2);

@@ -92,7 +92,7 @@ def test_regime_map_colour_grid_is_the_regime_colour_per_cell(maps):
         regime, valid = ds.regime.values, ds.valid.values
         grid = pm.regime_colour_grid(ds, regime, valid)
     assert grid.shape == regime.shape + (4,)
-    for code, meaning in ((0, "immediate"), (1, "delayed"), (2, "never")):  # README's codes
+    for code, meaning in ((0, "immediate"), (1, "delayed"), (2, "never")):  # docs/maps.md's codes
         plain = grid[(regime == code) & (valid == 0)]
         assert len(plain) and np.all(plain == pm.rgba(pm.REGIME_COLOURS[meaning]))
         pale = grid[(regime == code) & (valid > 0)]
@@ -150,7 +150,7 @@ def test_regime_map_draws_the_bem_regime_where_the_model_has_no_answer(tmp_path)
     flagged = valid != 0
     assert flagged.any() and (~flagged).any()
     assert np.array_equal(bem != -1, flagged)  # the BEM ran exactly where the model has no answer
-    colours = {0: "immediate", 1: "delayed", 2: "never"}  # README's codes
+    colours = {0: "immediate", 1: "delayed", 2: "never"}  # docs/maps.md's codes
     for j, i in zip(*np.nonzero(flagged)):
         assert np.array_equal(panel.colours[j, i], pm.rgba(pm.REGIME_COLOURS[colours[int(bem[j, i])]]))
     for j, i in zip(*np.nonzero(~flagged)):
@@ -362,7 +362,7 @@ def test_evolution_from_map_equals_punchsweep_point_at_the_nearest_grid_point(ma
     point = subprocess.run([BINARY, "point", "--l", "0.75", "--dh", repr(0.07), "--T", "2.5",
                             "--pbar", repr(float(PBAR[5])), "--s", "2", "--times", "0,1,5",
                             "--localization", "paper", "--format", "json"], capture_output=True, text=True, check=True)
-    assert from_map == json.loads(point.stdout)  # same keys, same doubles (README contract)
+    assert from_map == json.loads(point.stdout)  # same keys, same doubles (docs/cli.md's contract)
 
 
 def test_evolution_refuses_a_regime_only_map_with_exit_2(maps, tmp_path):

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The refined model's neighbour tables kept between runs (PUNCHSWEEP_CACHE, README "A
+# The refined model's neighbour tables kept between runs (PUNCHSWEEP_CACHE, docs/accuracy.md, "A
 # refined localization model"): a run without the cache, the run that builds and saves the
 # tables and the runs that read them give the same bytes; a later run reads the file rather
 # than rewriting it; a damaged file is rebuilt; three ranks saving at once leave one whole
