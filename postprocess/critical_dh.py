@@ -223,7 +223,7 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     fixed_text = ", ".join(pm.format_value(ds, name, f.value, tex=True) for name, f in fixed.items())
     incomplete = "" if pm.is_completed(ds) else " (incomplete map)"
     fig.suptitle("Critical height differences" + (f" at {fixed_text}" if fixed_text else "")
-                 + incomplete, fontsize=11)
+                 + incomplete + f"\n{pm.map_context(ds)}", fontsize=11)
     return fig
 
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -443,6 +444,27 @@ def grid_summary(ds, name: str, limit: int = 6) -> str:
 
 # ---------------------------------------------------------------------------------------------
 # Output files and colours
+
+
+def map_context(ds) -> str:
+    """What a picture of the map must say besides its axes: the material (its name up to the
+    first comma) or the creep law, the model, and the load: 'NBR rubber; the paper's model;
+    step load'. Read from the map's attributes (material, creep_law, localization,
+    identity) and axes (ramp_time)."""
+    attrs = ds.attrs
+    material = str(attrs.get("material", "")).split(",")[0].strip()
+    law = material or str(attrs.get("creep_law", "")).replace("_", " ") or "creep law not recorded"
+    spelling = str(attrs.get("localization", "paper"))
+    model = {"periodic": "periodic model", "paper": "the paper's model",
+             "shells:200": "refined model"}.get(spelling, f"model {spelling}")
+    identity = str(attrs.get("identity", ""))
+    if "ramp_time" in ds.dims:
+        load = "ramped load"
+    elif re.search(r"^model\.load_table = \S", identity, flags=re.M):
+        load = "load table"
+    else:
+        load = "step load"
+    return f"{law}; {model}; {load}"
 
 
 def check_output(path: str | Path, suffixes=(".png", ".pdf")) -> Path:

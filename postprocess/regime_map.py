@@ -307,8 +307,8 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
     fixed_text = ", ".join(pm.format_value(ds, name, f.value, tex=True)
                            for name, f in fixed.items())
     incomplete = "" if pm.is_completed(ds) else " (incomplete map)"
-    fig.suptitle(f"Regime map at {fixed_text}{incomplete}" if fixed_text else
-                 f"Regime map{incomplete}", fontsize=11)
+    fig.suptitle((f"Regime map at {fixed_text}{incomplete}" if fixed_text else f"Regime map{incomplete}")
+                 + f"\n{pm.map_context(ds)}", fontsize=11)
     return fig, panels
 
 

@@ -411,3 +411,24 @@ def test_summary_gives_t_star_in_the_maps_time_unit(tmp_path):
     assert "t* of delayed [s]" in out.stdout
     out = run("summary.py", sweep(tmp_path / "sls.h5", "--quantities", "regime"))
     assert "t* of the delayed points [T_eps]" in out.stdout
+
+
+def test_titles_name_the_material_or_law_the_model_and_the_load(maps, tmp_path):
+    """Every picture's title says what was computed (issue 24: titles omitted the material
+    and the load): the material's name (or the creep law), the model and the load."""
+    with pm.open_map(maps["full"]) as ds:  # the standard linear solid, the paper's model, a step
+        assert pm.map_context(ds) == "standard linear solid; the paper's model; step load"
+        fig, _ = regime_map.render(ds, "pbar", "dh", fixed_at(ds, l=0.75, T=5, s=2), contours=False)
+        assert fig._suptitle.get_text().endswith("\nstandard linear solid; the paper's model; step load")
+    small = ["--grid.l", "0.75", "--grid.dh", "0.05,0.1", "--grid.pbar", "0.01,0.02", "--grid.s", "2", "--quiet"]
+    cases = {"NBR rubber; the paper's model; ramped load":
+             ["--config", str(REPO / "sweeps" / "materials" / "nbr.ini"), "--grid.ramp_time", "1,10"],
+             "standard linear solid; refined model; load table":
+             ["--grid.T", "2.5", "--model.localization", "refined", "--model.load_table", "0:0.5,1:1"],
+             "standard linear solid; periodic model; step load": ["--grid.T", "2.5"]}
+    for k, (want, extra) in enumerate(cases.items()):
+        path = tmp_path / f"case{k}.h5"
+        done = subprocess.run([BINARY, "sweep", *small, *extra, "--output", str(path)], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        with pm.open_map(path) as ds:
+            assert pm.map_context(ds) == want
