@@ -141,6 +141,9 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
     } else {
       value = number(q.value(r));
       if (const std::string u = display_units(q, inputs.time_unit); !u.empty()) value += " " + u;
+      if (q.value == map::quantity_access::h_0 && inputs.problem.loading.jump() == 0.0) {
+        value += " (unloaded at t = 0: the load rises from 0)";
+      }
     }
     out << "  " << name << value << "\n";
     if (q.flags == map::Flags::validity && !inputs.problem.localization.periodic) {
