@@ -106,7 +106,32 @@ std::string out_of_range(const model::Parameter& parameter, const std::string& t
   return "--" + std::string(parameter.name) + " = " + text + " is outside its range: " + std::string(parameter.range);
 }
 
-double read_parameter(const po::variables_map& vm, const model::Parameter& parameter) {
+namespace {
+
+/// The physical dimension of a scaled parameter and its scale, where the point has one:
+/// lengths in R (with --R), pressures in E0* (with a material).
+struct ParameterScale {
+  model::Dimension dimension;
+  std::optional<model::Physical> scale;
+  const char* needs;  ///< what gives the scale, for the message when it is missing
+};
+
+std::optional<ParameterScale> scale_of(const model::Parameter& parameter, const PhysicalScales* scales) {
+  if (parameter.scale == "R") {
+    return ParameterScale{model::Dimension::length, scales ? scales->R : std::nullopt,
+                          "--R (the punch size with its unit, e.g. --R 50um)"};
+  }
+  if (parameter.scale == "E0/(1-nu^2)") {
+    std::optional<model::Physical> E0_star;
+    if (scales && scales->E0_star_Pa) E0_star = model::Physical{*scales->E0_star_Pa, model::units_of(model::Dimension::pressure).data()};
+    return ParameterScale{model::Dimension::pressure, E0_star, "--material (its E0* in Pa)"};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+double read_parameter(const po::variables_map& vm, const model::Parameter& parameter, const PhysicalScales* scales) {
   const std::string name(parameter.name);
   const std::string option = "--" + name;
   const std::string range(parameter.range);
@@ -115,6 +140,28 @@ double read_parameter(const po::variables_map& vm, const model::Parameter& param
   }
   const std::string text = vm[name].as<std::string>();
   double value = 0.0;
+  // A scaled parameter given with a unit (--l 150um, --pbar 20kPa) is divided by its scale.
+  if (const std::optional<ParameterScale> scale = scale_of(parameter, scales)) {
+    std::optional<model::Physical> physical;
+    try {
+      physical = model::parse_physical(text, scale->dimension);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(option + " = " + e.what() + "; valid range: " + range);
+    }
+    if (physical) {
+      if (!scale->scale) {
+        throw UsageError(option + " = " + text + ": a " + std::string(model::dimension_name(scale->dimension)) +
+                         " with a unit needs " + scale->needs + "; or give " + name + " in " +
+                         std::string(parameter.scale));
+      }
+      value = model::in_units_of(*physical, *scale->scale);
+      if (!parameter.admits(value)) {
+        throw UsageError(option + " = " + text + " (" + json_number(value) + " " + std::string(parameter.scale) +
+                         ") is outside its range: " + range);
+      }
+      return value;
+    }
+  }
   try {
     value = parameter.integer ? parse_integer(text, option) : parse_real(text, option);
   } catch (const UsageError& e) {
@@ -174,20 +221,18 @@ std::optional<double> read_physical_pressure(const po::variables_map& vm, const 
   const std::string text = vm["pressure"].as<std::string>();
   if (material == nullptr) throw UsageError("--pressure = " + text + ": needs --material (E0* in Pa); use --pbar");
   if (vm.count("pbar")) throw UsageError("--pressure and --pbar both given; valid: one of them");
-  struct Unit {
-    const char* name;
-    double factor;
-  };
-  constexpr Unit kUnits[] = {{"GPa", 1e9}, {"MPa", 1e6}, {"kPa", 1e3}, {"Pa", 1.0}};
-  for (const Unit& u : kUnits) {
-    const std::string name = u.name;
-    if (text.size() > name.size() && text.compare(text.size() - name.size(), name.size(), name) == 0) {
-      const double value = parse_real(text.substr(0, text.size() - name.size()), "--pressure");
-      if (!(value > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
-      return value * u.factor / material->plane_strain_modulus_Pa();
-    }
+  std::optional<model::Physical> pressure;
+  try {
+    pressure = model::parse_physical(text, model::Dimension::pressure);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--pressure = " + std::string(e.what()));
   }
-  throw UsageError("--pressure = " + text + ": no unit; valid: a number followed by Pa, kPa, MPa or GPa (50kPa)");
+  if (!pressure) {
+    throw UsageError("--pressure = " + text + ": no unit; valid: a number followed by " +
+                     model::unit_names(model::Dimension::pressure) + " (50kPa)");
+  }
+  if (!(pressure->number > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
+  return model::in_units_of(*pressure, {material->plane_strain_modulus_Pa(), model::units_of(model::Dimension::pressure).data()});
 }
 
 model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, std::string* table_text) {
@@ -200,19 +245,20 @@ model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, st
 }
 
 PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law) {
-  return read_point_inputs(vm, law, std::nullopt);
+  return read_point_inputs(vm, law, std::nullopt, {});
 }
 
 PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLawSpec& law,
-                              std::optional<double> pbar) {
+                              std::optional<double> pbar, const PhysicalScales& scales) {
   PointInputs inputs;
+  inputs.scales = scales;
   // Each parameter read once, in the order of the options, so the first bad one is reported.
   std::vector<const model::Parameter*> parameters = model::sweep_axes(law.parameters);
   parameters.push_back(model::find_parameter(model::kShapeConstant));
   for (const model::Parameter* p : parameters) {
     const bool given = pbar && p->name == model::kPressure;
     if (given && !p->admits(*pbar)) throw UsageError("--pressure gives " + p->error(*pbar));
-    inputs.values.emplace_back(p, given ? *pbar : read_parameter(vm, *p));
+    inputs.values.emplace_back(p, given ? *pbar : read_parameter(vm, *p, &scales));
   }
   const auto value = [&](std::string_view name) {
     for (const auto& [p, v] : inputs.values) {
@@ -286,15 +332,39 @@ void add_material_options(po::options_description& opts) {
       "0 is a step); t_r >= 0")(
       "pressure", po::value<std::string>()->value_name("P"),
       "with --material, the nominal pressure in physical units instead of --pbar: a number and Pa, kPa, MPa or "
-      "GPa (50kPa); pbar = P / E0*")(
+      "GPa (50kPa); pbar = P / E0*; --pbar 50kPa says the same")(
+      "R", po::value<std::string>()->value_name("LENGTH"),
+      "the punch size R of f(r) = C r^s / R^(s-1) with its unit (m, mm, um or nm; for a spherical cap, s = 2 and "
+      "C = 0.5, its radius of curvature), e.g. 50um: --l and --dh may then be given with a length unit (150um) "
+      "and the output adds them in R's unit")(
       "load-table", po::value<std::string>()->value_name("T:PHI,..."),
       "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time unit as --times), "
       "from 0:phi0 to t_n:1 and non-decreasing (a load that falls is refused: the model holds while the contact "
       "does not recede); instead of --ramp");
 }
 
+PhysicalScales read_physical_scales(const po::variables_map& vm, const model::Material* material) {
+  PhysicalScales scales;
+  if (material != nullptr) scales.E0_star_Pa = material->plane_strain_modulus_Pa();
+  if (!vm.count("R")) return scales;
+  const std::string text = vm["R"].as<std::string>();
+  const std::string valid = "valid: a length > 0 with its unit (" + model::unit_names(model::Dimension::length) +
+                            "), e.g. 50um";
+  std::optional<model::Physical> R;
+  try {
+    R = model::parse_physical(text, model::Dimension::length);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--R = " + std::string(e.what()));
+  }
+  if (!R) throw UsageError("--R = " + text + ": no unit; " + valid);
+  if (!(R->number > 0.0)) throw UsageError("--R = " + text + " is outside its range: " + valid);
+  scales.R = R;
+  return scales;
+}
+
 PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& material) {
-  PointInputs inputs = read_point_inputs(vm, material.spec, read_physical_pressure(vm, material.material.get()));
+  PointInputs inputs = read_point_inputs(vm, material.spec, read_physical_pressure(vm, material.material.get()),
+                                         read_physical_scales(vm, material.material.get()));
   inputs.material = material.material;
   inputs.time_unit = material.time_unit();
   double ramp = 0.0;
@@ -316,7 +386,13 @@ std::string PointInputs::describe() const {
       text += ' ';
       text.append(p->scale);
     }
+    if (p->scale == "R" && scales.R) {  // an echo in R's unit, to 12 digits
+      char physical[64];
+      std::snprintf(physical, sizeof physical, " (%.12g ", value * scales.R->number);
+      text += physical + std::string(scales.R->unit->name) + ")";
+    }
   }
+  if (scales.R) text += ", R = " + json_number(scales.R->number) + " " + std::string(scales.R->unit->name);
   if (!load_text.empty()) text += ", load table " + load_text + " (t in " + time_unit + ": fraction of pbar)";
   if (!problem.localization.is_paper()) text += ", localization " + problem.localization.spelling();
   return text;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "model/units.hpp"
 #include "model/contact_problem.hpp"
 #include "model/material.hpp"
 #include "model/creep_laws.hpp"
@@ -37,9 +38,19 @@ void add_parameter_option(boost::program_options::options_description& opts, con
 /// "--NAME = TEXT is outside its range: RANGE": the message for `parameter` given as `text`.
 std::string out_of_range(const model::Parameter& parameter, const std::string& text);
 
-/// The value of --NAME for `parameter`. Throws UsageError naming the option, its value
-/// and its valid range (or "missing required option") when it is not admissible.
-double read_parameter(const boost::program_options::variables_map& vm, const model::Parameter& parameter);
+/// The physical scales a point knows: R (from --R, with the unit it was given in) and E0*
+/// (from a material); a scaled option given with a unit is divided by its scale.
+struct PhysicalScales {
+  std::optional<model::Physical> R;  ///< as --R was given (50 um): the output's lengths use its unit
+  std::optional<double> E0_star_Pa;
+};
+
+/// The value of --NAME for `parameter`. A length (in R) or a pressure (in E0*) may carry a
+/// unit (150um, 20kPa) where `scales` holds its scale. Throws UsageError naming the option,
+/// its value and its valid range (or "missing required option", or the scale a unit needs)
+/// when it is not admissible.
+double read_parameter(const boost::program_options::variables_map& vm, const model::Parameter& parameter,
+                      const PhysicalScales* scales = nullptr);
 
 /// --s and --C as a Shape.
 model::Shape read_shape(const boost::program_options::variables_map& vm);
@@ -109,6 +120,7 @@ struct PointInputs {
   std::shared_ptr<const model::Material> material;  ///< the --material file, or nullptr
   std::string time_unit = "T_eps";                   ///< of every time in and out
   std::string load_text;                             ///< --load-table as given, or empty
+  PhysicalScales scales;                             ///< what physical units the inputs could carry
 
   /// "l = 0.75 R, dh = 0.075 R, T = 2.5, pbar = 0.06 E0/(1-nu^2), s = 2, C = 0.5": every
   /// parameter in add_point_options' order, with its unit.
@@ -121,7 +133,11 @@ PointInputs read_point_inputs(const boost::program_options::variables_map& vm,
 
 /// The same with pbar given (from --pressure) instead of read from --pbar.
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm, const model::CreepLawSpec& law,
-                              std::optional<double> pbar);
+                              std::optional<double> pbar, const PhysicalScales& scales);
+
+/// --R (a length with its unit) and a material's E0*, the scales of add_material_options'
+/// point. Throws UsageError for an R without a unit, not > 0, or not a length.
+PhysicalScales read_physical_scales(const boost::program_options::variables_map& vm, const model::Material* material);
 
 /// The same for the material found by find_point_material, with --ramp, --load-table and
 /// --pressure (add_material_options).

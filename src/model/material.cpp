@@ -10,16 +10,11 @@
 #include "model/number_text.hpp"
 #include "model/power_law.hpp"
 #include "model/prony_series.hpp"
+#include "model/units.hpp"
 
 namespace punchsweep::model {
 namespace {
 
-struct Unit {
-  std::string_view name;
-  double factor;  ///< in SI (Pa, s)
-};
-constexpr Unit kModulusUnits[] = {{"Pa", 1.0}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}};
-constexpr Unit kTimeUnits[] = {{"s", 1.0}, {"min", 60.0}, {"h", 3600.0}};
 
 std::string trim(std::string_view s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -152,19 +147,6 @@ class Entries {
   std::map<std::string, Entry> values_;
 };
 
-const Unit* find_unit(std::span<const Unit> units, const std::string& name) {
-  for (const Unit& u : units) {
-    if (u.name == name) return &u;
-  }
-  return nullptr;
-}
-
-std::string unit_names(std::span<const Unit> units) {
-  std::string out;
-  for (const Unit& u : units) out += (out.empty() ? "" : ", ") + std::string(u.name);
-  return out;
-}
-
 
 /// Strictly increasing, positive times; every entry of `moduli` positive; the same count.
 void check_terms(const Entries& f, const std::string& moduli_key, const std::vector<double>& moduli,
@@ -258,10 +240,10 @@ Material Material::parse(std::string_view text, std::string_view origin) {
   if (!f.has_section("material")) throw MaterialError(std::string(origin) + ": no [material] section");
   m.name_ = f.text("material.name");
   m.law_ = f.text("material.law");
-  const Unit* modulus = find_unit(kModulusUnits, f.text("material.modulus_unit"));
-  if (!modulus) f.fail_value("material.modulus_unit", "unknown unit; valid: " + unit_names(kModulusUnits));
+  const Unit* modulus = find_unit(Dimension::pressure, f.text("material.modulus_unit"));
+  if (!modulus) f.fail_value("material.modulus_unit", "unknown unit; valid: " + unit_names(Dimension::pressure));
   m.time_unit_ = f.text("material.time_unit");
-  if (!find_unit(kTimeUnits, m.time_unit_)) f.fail_value("material.time_unit", "unknown unit; valid: " + unit_names(kTimeUnits));
+  if (!find_unit(Dimension::time, m.time_unit_)) f.fail_value("material.time_unit", "unknown unit; valid: " + unit_names(Dimension::time));
   m.nu_ = f.number("material.poisson");
   if (!(m.nu_ > -1.0 && m.nu_ <= 0.5)) f.fail_value("material.poisson", "outside its range: -1 < poisson <= 0.5");
 
@@ -325,7 +307,7 @@ Material Material::parse(std::string_view text, std::string_view origin) {
   } else {
     f.fail_value("material.law", "unknown law; valid: prony, kelvin, power_law");
   }
-  m.E0_Pa_ = E0 * modulus->factor;
+  m.E0_Pa_ = E0 * modulus->si;
 
   if (f.has_section("shift")) {
     TemperatureShift shift;

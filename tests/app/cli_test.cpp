@@ -280,6 +280,11 @@ TEST(Cli, material_point_runs_and_states_its_units) {
   // E0* = (1200 + 1607.1 + 228.6 + 361.5 + 63.9 + 68.7) kPa / (1 - 0.5^2), from the file.
   EXPECT_NE(r.out.find("E0* = E0/(1-nu^2) = 4.7064e+06 Pa"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ramp_time = 20 s"), std::string::npos) << r.out;
+  // Under a ramp the surface is unloaded at t = 0, and the table says why h_0 is 0.
+  EXPECT_NE(r.out.find("h_0                 0 R (unloaded at t = 0: the load rises from 0)"), std::string::npos)
+      << r.out;
+  const CliRun step = run_cli("point --material " + material + " --l 0.75 --dh 0.02 --pbar 0.005 --s 2");
+  EXPECT_EQ(step.out.find("unloaded at t = 0"), std::string::npos) << step.out;
 }
 
 TEST(Cli, material_inputs_are_refused_with_their_range) {
@@ -379,4 +384,36 @@ TEST(Cli, sweep_help_states_the_materials_reference_temperature_as_the_default) 
                              " --grid.l 0.75 --grid.dh 0.05 --grid.pbar 0.01 --grid.s 2");
   EXPECT_EQ(dry.exit_code, 0) << dry.err;
   EXPECT_NE(dry.out.find("temperature    1 values  65 "), std::string::npos) << dry.out;
+}
+
+// Issue 24: lengths and pressures in the user's units. With --R (the punch size and its
+// unit) --l and --dh take a length unit, and with a material --pbar takes a pressure unit;
+// each is its scaled value, the same point as the bare numbers.
+TEST(Cli, lengths_and_pressures_with_units_are_the_scaled_point) {
+  char dh[64];
+  std::snprintf(dh, sizeof dh, "%.17g", 2.0 / 50.0);  // the scaled value, worked out here
+  const std::string rest = " --T 2.5 --pbar 0.06 --s 2 --format json";
+  const CliRun physical = run_cli("point --R 50um --l 150um --dh 2um" + rest);
+  const CliRun scaled = run_cli(std::string("point --l 3 --dh ") + dh + rest);
+  ASSERT_EQ(physical.exit_code, 0) << physical.err;
+  EXPECT_EQ(physical.out, scaled.out);
+  // R in mm and the lengths in um (0.05 mm is 50 um exactly), and the table's echo in R's unit.
+  EXPECT_EQ(run_cli("point --R 0.05mm --l 150um --dh 2um" + rest).out, scaled.out);
+  const CliRun table = run_cli("point --R 0.05mm --l 150um --dh 2um --T 2.5 --pbar 0.06 --s 2");
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_NE(table.out.find("l = 3 R (0.15 mm)"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("R = 0.05 mm"), std::string::npos) << table.out;
+  // --pbar in kPa with a material is --pressure's point.
+  const std::string nbr = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/nbr_linder2011.ini";
+  const std::string point = "point --material " + nbr + " --l 0.75 --dh 0.02 --s 2 --format json";
+  const CliRun kpa = run_cli(point + " --pbar 20kPa");
+  ASSERT_EQ(kpa.exit_code, 0) << kpa.err;
+  EXPECT_EQ(kpa.out, run_cli(point + " --pressure 20kPa").out);
+  // Refused, naming what is missing or wrong.
+  expect_refused("--l 150um --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l = 150um", "needs --R");
+  expect_refused("--R 50 --l 0.75 --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--R = 50", "no unit");
+  expect_refused("--R 50kPa --l 0.75 --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--R", "not a length unit");
+  expect_refused("--R 50um --l 150kPa --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l", "not a length unit");
+  expect_refused("--l 0.75 --dh 0.02 --T 2.5 --pbar 20kPa --s 2", "--pbar = 20kPa", "needs --material");
+  expect_refused("--R 50um --l -150um --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l = -150um", "l > 0");
 }

@@ -493,3 +493,18 @@ def test_material_from_arrays_equals_its_file(tmp_path):
     assert punchsweep.Material(tmp_path / "mine.ini").E0_Pa == 3.5e6 and kept.shift is None
     with pytest.raises(ValueError, match="tau_i"):
         punchsweep.Material.prony(2e6, [1e6, 5e5], [0.1], 0.45)
+
+
+def test_point_takes_lengths_and_pressures_with_units():
+    """point(R="50um", l="150um", dh="2um") is the point at l = 3, dh = 0.04 (150/50 and
+    2/50 worked out here), and with a material pbar="20kPa" is pressure="20kPa"'s point."""
+    physical = punchsweep.point(R="50um", l="150um", dh="2um", T=2.5, pbar=0.06, s=2)
+    scaled = punchsweep.point(l=3.0, dh=2.0 / 50.0, T=2.5, pbar=0.06, s=2)
+    assert (physical.regime, physical.t_star) == (scaled.regime, scaled.t_star)
+    assert all(np.array_equal(physical.series[q], scaled.series[q]) for q in scaled.series)
+    nbr = REPO / "materials" / "nbr_linder2011.ini"
+    a = punchsweep.point(material=nbr, l=0.75, dh=0.02, s=2, pbar="20kPa")
+    b = punchsweep.point(material=nbr, l=0.75, dh=0.02, s=2, pressure="20kPa")
+    assert a.t_star == b.t_star and np.array_equal(a.series["a1"], b.series["a1"])
+    with pytest.raises(ValueError, match="needs --R"):
+        punchsweep.point(l="150um", dh=0.02, T=2.5, pbar=0.06, s=2)
