@@ -86,7 +86,24 @@ class Entries {
   const std::string& text(const std::string& id) const {
     const auto it = values_.find(id);
     if (it == values_.end()) fail_key(id, "is missing");
+    read_.insert(id);
     return it->second.value;
+  }
+
+  /// Refuses the first key given but never read by the law (or the shift) the file names,
+  /// listing the keys that were: a stray `n = 0.3` in a Prony file is not silently dropped.
+  void refuse_unread(const std::string& material_what, const std::string& shift_what) const {
+    for (const auto& [id, entry] : values_) {
+      if (read_.count(id)) continue;
+      const std::string section = id.substr(0, id.find('.'));
+      const std::string& what = section == "material" ? material_what : shift_what;
+      std::string used;
+      for (const std::string& r : read_) {
+        if (r.substr(0, r.find('.')) != section) continue;
+        used += (used.empty() ? "" : ", ") + r.substr(r.find('.') + 1);
+      }
+      fail_value(id, "not a key of " + what + " (the keys it reads here: " + used + ")");
+    }
   }
 
   double number(const std::string& id) const {
@@ -145,6 +162,7 @@ class Entries {
   std::string origin_;
   std::set<std::string> sections_;
   std::map<std::string, Entry> values_;
+  mutable std::set<std::string> read_;  ///< the keys the parse asked for
 };
 
 
@@ -337,6 +355,7 @@ Material Material::parse(std::string_view text, std::string_view origin) {
     temperature->parameter.sweep_default = temperature->reference;
     m.temperature_ = std::move(temperature);
   }
+  f.refuse_unread("law = " + m.law_, m.shift_ ? "kind = " + f.text("shift.kind") : std::string("[shift]"));
   // Build once, so that what the law's own checks refuse is refused here, with the file named.
   try {
     m.make(m.shift_ ? std::vector<double>{m.shift_->T_ref} : std::vector<double>{});

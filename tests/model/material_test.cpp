@@ -128,6 +128,10 @@ TEST(Material, refuses_every_bad_file_with_key_value_and_range) {
       {"kind = wlf\nC1 = 17.44\nC2 = 51.6", "kind = arrhenius\nE_a = 1e5\nE_a_below = 1e5", "E_a_below", "kind = wlf's"},
       {"T_ref = 105", "T_ref = 105\nT_min = 120\nT_max = 110", "T_min = 120", "T_min < T_max"},
       {"T_ref = 105", "T_ref = 105\nT_min = 110", "temperature = 105", ">= 110"},
+      // A key of another law that no forbid list names (issue 24: a stray n = 0.3 in a
+      // Prony file was dropped silently).
+      {"E_inf = 1.0", "E_inf = 1.0\nn = 0.3", "n = 0.3: not a key of law = prony", "reads here: E_i, E_inf"},
+      {"E_inf = 1.0", "E_inf = 1.0\nt_1 = 2", "t_1 = 2: not a key of law = prony", "tau_i"},
   };
   for (const Bad& c : cases) {
     const std::string message = refusal(replaced(kExample, c.from, c.to));
