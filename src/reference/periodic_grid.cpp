@@ -25,6 +25,22 @@ std::string grid_error(const PeriodicGrid& grid) {
 
 double periodic_offset(double d, double L) { return d - L * std::nearbyint(d / L); }
 
+namespace {
+
+/// f(r) of the punch centred at (cx, cy), at (x, y): r the distance to its nearest
+/// periodic image.
+double punch_height(const PeriodicGrid& grid, const model::Shape& shape, double x, double y, double cx, double cy) {
+  return shape.C * model::ipow(std::hypot(periodic_offset(x - cx, grid.Lx), periodic_offset(y - cy, grid.Ly)), shape.s);
+}
+
+/// f1 - (f2 + dh), level 1's surface above level 2's: > 0 where level 2 is the lower one,
+/// 0 where they tie (within kProfileTieTolerance).
+double level2_excess(double f1, double lower2) {
+  return std::abs(f1 - lower2) <= kProfileTieTolerance * std::max(f1, lower2) ? 0.0 : f1 - lower2;
+}
+
+}  // namespace
+
 std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& shape, double cx,
                                   double cy) {
   if (grid.mirrored()) {
@@ -38,11 +54,7 @@ std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& 
   }
   std::vector<double> f(grid.size());
   for (int i = 0; i < grid.stored_nx(); ++i) {
-    const double dx = periodic_offset(grid.x(i) - cx, grid.Lx);
-    for (int j = 0; j < grid.stored_ny(); ++j) {
-      const double dy = periodic_offset(grid.y(j) - cy, grid.Ly);
-      f[grid.index(i, j)] = shape.C * model::ipow(std::hypot(dx, dy), shape.s);
-    }
+    for (int j = 0; j < grid.stored_ny(); ++j) f[grid.index(i, j)] = punch_height(grid, shape, grid.x(i), grid.y(j), cx, cy);
   }
   return f;
 }
@@ -57,27 +69,23 @@ std::string two_level_grid_error(int n) {
 
 namespace {
 
-/// The part of the hx x hy square about (x, y) where the level-2 surface is the lower one:
-/// 0 or 1 where the two surfaces do not cross within the square (checked at its corners,
-/// edge midpoints and centre; ties count half), else the midpoint rule over kRows rows,
-/// each cut where the surfaces cross (found by bisection to round-off). Exact where the
-/// line of crossing is straight (s = 2), O((h / kRows)^2 / radius of curvature) otherwise;
-/// counting points on a lattice instead would err alike along a straight line, adding
-/// up to O(h / kRows) over the cell.
-double level2_fraction(const PeriodicGrid& g, const model::ContactProblem& problem, double x, double y) {
+/// The part of the hx x hy square about (x, y) where the level-2 surface is the lower one
+/// (`centre_excess` is level2_excess at (x, y)): 0 or 1 where the two surfaces do not cross
+/// within the square (checked at its corners, edge midpoints and centre; ties count half),
+/// else the midpoint rule over kRows rows, each cut where the surfaces cross (found by
+/// bisection to round-off). Exact where the line of crossing is straight (s = 2),
+/// O((h / kRows)^2 / radius of curvature) otherwise; counting points on a lattice instead
+/// would err alike along a straight line, adding up to O(h / kRows) over the cell.
+double level2_fraction(const PeriodicGrid& g, const model::ContactProblem& problem, double x, double y,
+                       double centre_excess) {
   constexpr int kRows = 16;
   const double half = 0.5 * problem.l;
-  const auto excess = [&](double px, double py) {  // f1 - (f2 + dh): > 0 where level 2 is lower
-    const double f1 = problem.shape.C * model::ipow(std::hypot(periodic_offset(px, g.Lx), periodic_offset(py, g.Ly)),
-                                                    problem.shape.s);
-    const double lower2 = problem.shape.C * model::ipow(std::hypot(periodic_offset(px - half, g.Lx),
-                                                                   periodic_offset(py - half, g.Ly)),
-                                                        problem.shape.s) + problem.dh;
-    const double tie = kProfileTieTolerance * std::max(f1, lower2);
-    return std::abs(f1 - lower2) <= tie ? 0.0 : f1 - lower2;
+  const auto excess = [&](double px, double py) {
+    return level2_excess(punch_height(g, problem.shape, px, py, 0.0, 0.0),
+                         punch_height(g, problem.shape, px, py, half, half) + problem.dh);
   };
   const auto owner = [](double e) { return e > 0.0 ? 1.0 : e < 0.0 ? 0.0 : 0.5; };
-  const double centre = owner(excess(x, y));
+  const double centre = owner(centre_excess);
   bool uniform = centre != 0.5;
   for (int a = -1; a <= 1 && uniform; ++a) {
     for (int b = -1; b <= 1 && uniform; ++b) uniform = owner(excess(x + 0.5 * a * g.hx(), y + 0.5 * b * g.hy())) == centre;
@@ -123,9 +131,9 @@ TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Sy
       cell.profile[k] = std::min(f1[k], lower2);
       // The node itself belongs to the punch that is lower there; ties (dh = 0 on the
       // bisector) to both.
-      const double tie = kProfileTieTolerance * std::max(f1[k], lower2);
-      cell.level2_node[k] = std::abs(f1[k] - lower2) <= tie || lower2 < f1[k];
-      cell.level2_weight[k] = level2_fraction(g, problem, g.x(i), g.y(j));
+      const double excess = level2_excess(f1[k], lower2);
+      cell.level2_node[k] = excess >= 0.0;
+      cell.level2_weight[k] = level2_fraction(g, problem, g.x(i), g.y(j), excess);
     }
   }
   const int m = n / 2;
