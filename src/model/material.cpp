@@ -15,14 +15,6 @@
 namespace punchsweep::model {
 namespace {
 
-
-std::string trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string_view::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(b, e - b + 1));
-}
-
 /// The keys a file may hold, by section, and which of them are lists.
 struct KeyRule {
   std::string_view section, key;
@@ -54,11 +46,11 @@ class Entries {
       std::string line(text.substr(start, end - start));
       start = end + 1;
       if (const auto hash = line.find_first_of("#;"); hash != std::string::npos) line.erase(hash);
-      line = trim(line);
+      line = std::string(trim(line));
       if (line.empty()) continue;
       if (line.front() == '[') {
         if (line.back() != ']') fail(line_number, "'" + line + "' is not a section header; valid: [material] or [shift]");
-        section = trim(std::string_view(line).substr(1, line.size() - 2));
+        section = std::string(trim(std::string_view(line).substr(1, line.size() - 2)));
         if (section != "material" && section != "shift") {
           fail(line_number, "unknown section [" + section + "]; valid: [material] and an optional [shift]");
         }
@@ -68,8 +60,8 @@ class Entries {
       const auto eq = line.find('=');
       if (eq == std::string::npos) fail(line_number, "'" + line + "' is not 'key = value'");
       if (section.empty()) fail(line_number, "'" + line + "' comes before any section; valid: [material] first");
-      const std::string key = trim(std::string_view(line).substr(0, eq));
-      const std::string value = trim(std::string_view(line).substr(eq + 1));
+      const std::string key(trim(std::string_view(line).substr(0, eq)));
+      const std::string value(trim(std::string_view(line).substr(eq + 1)));
       bool known = false;
       for (const KeyRule& rule : kKeys) known = known || (rule.section == section && rule.key == key);
       if (!known) fail(line_number, "[" + section + "] has no key '" + key + "'; valid: " + valid_keys(section));
@@ -149,7 +141,7 @@ class Entries {
     std::string item;
     std::istringstream in(value);
     while (std::getline(in, item, ',')) {
-      item = trim(item);
+      item = std::string(trim(item));
       char* end = nullptr;
       const double v = std::strtod(item.c_str(), &end);
       if (item.empty() || end != item.c_str() + item.size()) fail_value(id, "'" + item + "' is not a number");

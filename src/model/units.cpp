@@ -5,18 +5,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/number_text.hpp"
+
 namespace punchsweep::model {
 namespace {
 
 constexpr std::array<Unit, 4> kLength = {{{"m", 1.0}, {"mm", 1e-3}, {"um", 1e-6}, {"nm", 1e-9}}};
 constexpr std::array<Unit, 4> kPressure = {{{"Pa", 1.0}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}}};
 constexpr std::array<Unit, 3> kTime = {{{"s", 1.0}, {"min", 60.0}, {"h", 3600.0}}};
-
-std::string_view trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string_view::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
 
 }  // namespace
 
@@ -57,10 +53,10 @@ std::string_view dimension_name(Dimension dimension) {
 }
 
 std::optional<Physical> parse_physical(std::string_view text, Dimension dimension) {
-  const std::string_view t = trim(text);
+  const std::string_view t = trim(text, " \t");
   double value = 0.0;
   const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), value);
-  const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
+  const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())), " \t");
   if (error != std::errc() || !std::isfinite(value)) {
     throw std::invalid_argument("'" + std::string(text) + "' is not a number, or a number and a " +
                                 std::string(dimension_name(dimension)) + " unit (" + unit_names(dimension) + ")");
