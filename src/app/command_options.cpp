@@ -122,9 +122,8 @@ std::optional<ParameterScale> scale_of(const model::Parameter& parameter, const 
                           "--R (the punch size with its unit, e.g. --R 50um)"};
   }
   if (parameter.scale == "E0/(1-nu^2)") {
-    std::optional<model::Physical> E0_star;
-    if (scales && scales->E0_star_Pa) E0_star = model::Physical{*scales->E0_star_Pa, model::units_of(model::Dimension::pressure).data()};
-    return ParameterScale{model::Dimension::pressure, E0_star, "--material (its E0* in Pa)"};
+    return ParameterScale{model::Dimension::pressure, scales ? scales->E0_star : std::nullopt,
+                          "--material (its E0* in Pa)"};
   }
   return std::nullopt;
 }
@@ -216,6 +215,11 @@ model::Localization read_localization(const po::variables_map& vm) {
   }
 }
 
+std::optional<model::Physical> plane_strain_modulus(const model::Material* material) {
+  if (material == nullptr) return std::nullopt;
+  return model::Physical{material->plane_strain_modulus_Pa(), model::find_unit(model::Dimension::pressure, "Pa")};
+}
+
 std::optional<double> read_physical_pressure(const po::variables_map& vm, const model::Material* material) {
   if (!vm.count("pressure")) return std::nullopt;
   const std::string text = vm["pressure"].as<std::string>();
@@ -232,7 +236,7 @@ std::optional<double> read_physical_pressure(const po::variables_map& vm, const 
                      model::unit_names(model::Dimension::pressure) + " (50kPa)");
   }
   if (!(pressure->number > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
-  return model::in_units_of(*pressure, {material->plane_strain_modulus_Pa(), model::units_of(model::Dimension::pressure).data()});
+  return model::in_units_of(*pressure, *plane_strain_modulus(material));
 }
 
 model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, std::string* table_text) {
@@ -345,7 +349,7 @@ void add_material_options(po::options_description& opts) {
 
 PhysicalScales read_physical_scales(const po::variables_map& vm, const model::Material* material) {
   PhysicalScales scales;
-  if (material != nullptr) scales.E0_star_Pa = material->plane_strain_modulus_Pa();
+  scales.E0_star = plane_strain_modulus(material);
   if (!vm.count("R")) return scales;
   const std::string text = vm["R"].as<std::string>();
   const std::string valid = "valid: a length > 0 with its unit (" + model::unit_names(model::Dimension::length) +

@@ -9,12 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include "model/units.hpp"
 #include "model/contact_problem.hpp"
 #include "model/material.hpp"
 #include "model/creep_laws.hpp"
 #include "model/parameters.hpp"
 #include "model/shape.hpp"
+#include "model/units.hpp"
 
 namespace punchsweep::app {
 
@@ -42,7 +42,7 @@ std::string out_of_range(const model::Parameter& parameter, const std::string& t
 /// (from a material); a scaled option given with a unit is divided by its scale.
 struct PhysicalScales {
   std::optional<model::Physical> R;  ///< as --R was given (50 um): the output's lengths use its unit
-  std::optional<double> E0_star_Pa;
+  std::optional<model::Physical> E0_star;  ///< in Pa, from the material
 };
 
 /// The value of --NAME for `parameter`. A length (in R) or a pressure (in E0*) may carry a
@@ -135,9 +135,12 @@ PointInputs read_point_inputs(const boost::program_options::variables_map& vm,
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm, const model::CreepLawSpec& law,
                               std::optional<double> pbar, const PhysicalScales& scales);
 
-/// --R (a length with its unit) and a material's E0*, the scales of add_material_options'
-/// point. Throws UsageError for an R without a unit, not > 0, or not a length.
+/// --R (a length with its unit) and a material's E0* (plane_strain_modulus), the scales of
+/// add_material_options' point. Throws UsageError for an R without a unit, not > 0, or not a length.
 PhysicalScales read_physical_scales(const boost::program_options::variables_map& vm, const model::Material* material);
+
+/// A material's E0* in Pa, as the scale of a pressure given with a unit; nullopt without one.
+std::optional<model::Physical> plane_strain_modulus(const model::Material* material);
 
 /// The same for the material found by find_point_material, with --ramp, --load-table and
 /// --pressure (add_material_options).
