@@ -47,13 +47,14 @@ INVALID_WHITE_MIX = 0.55
 
 # How the plots typeset units as they appear in the file and the usual axis symbols; a unit
 # or axis not listed is written as the file has it.
-_UNIT_TEX = {"R": "$R$", "1": "-", "E0/(1-nu^2)": "$E_0/(1-\\nu^2)$", "T_eps": "$T_\\varepsilon$",
+_UNIT_TEX = {"R": "$R$", "um": "$\\mu$m", "1": "-", "E0/(1-nu^2)": "$E_0/(1-\\nu^2)$", "T_eps": "$T_\\varepsilon$",
              "R^2 E0/(1-nu^2)": "$R^2 E_0/(1-\\nu^2)$"}
 _SYMBOL_TEX = {"l": "$l$", "dh": "$\\Delta h$", "T": "$T$", "pbar": "$\\bar p_0$", "s": "$s$"}
 
-AT_HELP = ("Any axis of the map may be given, in the units the map records for it (e.g. l and "
-           "dh in R, pbar in E0/(1-nu^2), T and s dimensionless; `summary.py MAP.h5` lists a "
-           "map's axes and units); a categorical axis takes one of its labels. The nearest grid "
+AT_HELP = ("Any axis of the map may be given: a bare number in the axis's scale (l and dh in "
+           "R, pbar in E0/(1-nu^2), T and s dimensionless), or with a unit (dh=2um, pbar=2kPa) where "
+           "the map knows the scale (model.R, a material; `summary.py MAP.h5` lists a map's axes "
+           "and units); a categorical axis takes one of its labels. The nearest grid "
            "value is used (nearest in log space for a log-spaced axis) and reported; a value more "
            "than half a grid step outside the axis is an error. An axis with a single value may "
            "be left out.")
@@ -126,21 +127,44 @@ def open_map(path: str | Path):
     return in_physical_units(ds)
 
 
-def in_physical_units(ds):
-    """A material map (global attribute E0_star_Pa) in physical units: every value scaled by
-    E0/(1-nu^2) (pressures: the pbar axis) becomes kPa, E0* being the material's
-    plane-strain instantaneous modulus; its times already carry their unit (s, min, h). Other
-    maps are returned as they are."""
+# Physical units an --at value may carry, in SI (the engine's units: docs/cli.md, "Units").
+_SI = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9, "Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9,
+       "N": 1.0, "s": 1.0, "min": 60.0, "h": 3600.0}
+
+
+def physical_scales(ds) -> dict[str, tuple[float, str]]:
+    """What one unit of each scale the map knows is in physical units: R (global attribute
+    R, '50 um', where the sweep had model.R) in its unit, E0/(1-nu^2) (a material's
+    E0_star_Pa) in kPa, a load R^2 E0/(1-nu^2) in N (both known)."""
+    scales = {}
     E0_star = ds.attrs.get("E0_star_Pa")
-    if E0_star is None:
-        return ds
-    factor = float(E0_star) / 1e3
+    if E0_star is not None:
+        scales["E0/(1-nu^2)"] = (float(E0_star) / 1e3, "kPa")
+    R = ds.attrs.get("R")
+    if R is not None:
+        number, unit = str(R.decode() if isinstance(R, bytes) else R).split()
+        scales["R"] = (float(number), unit)
+        if E0_star is not None:
+            scales["R^2 E0/(1-nu^2)"] = (float(ds.attrs["R_m"]) ** 2 * float(E0_star), "N")
+    return scales
+
+
+def in_physical_units(ds):
+    """The map in physical units where it knows the scale (physical_scales): pressures (the
+    pbar axis) in kPa for a material map, lengths (l, dh, radii, h) in R's unit where the sweep
+    was given model.R, loads in N with both; a material's times already carry their unit (s,
+    min, h). A converted variable keeps its scale in `physical_of` and the factor in
+    `per_scaled`, so a bare --at number (in the scale, as on every command line) converts too.
+    Other maps are returned as they are."""
+    scales = physical_scales(ds)
     for name in list(ds.variables):
         attrs = dict(ds[name].attrs)
-        if attrs.get("scaled_by") != "E0/(1-nu^2)":
+        scale = attrs.get("scaled_by")
+        if scale not in scales:
             continue
+        factor, unit = scales[scale]
         attrs.pop("scaled_by")
-        attrs["units"] = "kPa"
+        attrs.update(units=unit, physical_of=scale, per_scaled=factor)
         if name in ds.coords:
             ds = ds.assign_coords({name: (ds[name].dims, ds[name].values * factor, attrs)})
         else:
@@ -337,16 +361,42 @@ def parse_at(items: list[str] | None, ds) -> dict[str, float | str]:
         if is_categorical(ds, name):
             value: float | str = text
         else:
-            try:
-                value = float(text)
-            except ValueError:
-                raise MapError(f"--at {name}='{text}' is not a number") from None
-            if not math.isfinite(value):
-                raise MapError(f"--at {name}={text} is not a finite number")
+            value = _at_number(ds, name, text)
         if name in at:
             raise MapError(f"--at gives {name} twice")
         at[name] = value
     return at
+
+
+def _at_number(ds, name: str, text: str) -> float:
+    """An --at value on the axis's coordinate as the map shows it. One rule, as on every
+    command line: a number with a unit (2kPa, 50um, 1min) is physical and converted to the
+    axis's unit; a bare number is in the axis's scale (R, E0/(1-nu^2), T_eps), converted where
+    the map shows the axis in physical units."""
+    match = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z]*)\s*", text)
+    if match is None:
+        raise MapError(f"--at {name}='{text}' is not a number, or a number and a unit")
+    value, unit = float(match.group(1)), match.group(2)
+    if not math.isfinite(value):
+        raise MapError(f"--at {name}={text} is not a finite number")
+    attrs = ds[name].attrs
+    shown = str(attrs.get("units", ""))
+    if not unit:
+        return value * float(attrs.get("per_scaled", 1.0))
+    if unit not in _SI:
+        raise MapError(f"--at {name}={text}: '{unit}' is not a unit; valid: {', '.join(_SI)}")
+    if shown not in _SI:
+        raise MapError(f"--at {name}={text}: {name} is in {units(ds, name) or 'no unit'} on this map, "
+                       f"which has no physical scale for it; give {name} in {units(ds, name) or 'numbers'}")
+    if _dimension(unit) != _dimension(shown):
+        raise MapError(f"--at {name}={text}: '{unit}' is a {_dimension(unit)}, {name} a {_dimension(shown)} "
+                       f"(in {shown})")
+    return value * _SI[unit] / _SI[shown]
+
+
+def _dimension(unit: str) -> str:
+    return {"m": "length", "mm": "length", "um": "length", "nm": "length", "N": "force",
+            "s": "time", "min": "time", "h": "time"}.get(unit, "pressure")
 
 
 def _given(value) -> str:

@@ -52,9 +52,15 @@ def _json_form(result) -> dict:
     if fields.pop("localization", "paper") != "paper":
         out["localization"] = result.localization
     fields.pop("time_unit", None)
+    listed = lambda series: {name: [None if math.isnan(x) else float(x) for x in column]  # noqa: E731
+                             for name, column in series.items()}
     for k, v in fields.items():
+        if k in ("physical", "units") and not v:
+            continue  # the JSON has them only where a physical scale is known
         if k == "series":
-            out[k] = {name: [None if math.isnan(x) else float(x) for x in column] for name, column in v.items()}
+            out[k] = listed(v)
+        elif k == "physical":
+            out[k] = {**v, "series": listed(v["series"])}
         else:
             out[k] = v
     return out

@@ -106,30 +106,6 @@ std::string out_of_range(const model::Parameter& parameter, const std::string& t
   return "--" + std::string(parameter.name) + " = " + text + " is outside its range: " + std::string(parameter.range);
 }
 
-namespace {
-
-/// The physical dimension of a scaled parameter and its scale, where the point has one:
-/// lengths in R (with --R), pressures in E0* (with a material).
-struct ParameterScale {
-  model::Dimension dimension;
-  std::optional<model::Physical> scale;
-  const char* needs;  ///< what gives the scale, for the message when it is missing
-};
-
-std::optional<ParameterScale> scale_of(const model::Parameter& parameter, const PhysicalScales* scales) {
-  if (parameter.scale == "R") {
-    return ParameterScale{model::Dimension::length, scales ? scales->R : std::nullopt,
-                          "--R (the punch size with its unit, e.g. --R 50um)"};
-  }
-  if (parameter.scale == "E0/(1-nu^2)") {
-    return ParameterScale{model::Dimension::pressure, scales ? scales->E0_star : std::nullopt,
-                          "--material (its E0* in Pa)"};
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
 double read_parameter(const po::variables_map& vm, const model::Parameter& parameter, const PhysicalScales* scales) {
   const std::string name(parameter.name);
   const std::string option = "--" + name;
@@ -140,26 +116,18 @@ double read_parameter(const po::variables_map& vm, const model::Parameter& param
   const std::string text = vm[name].as<std::string>();
   double value = 0.0;
   // A scaled parameter given with a unit (--l 150um, --pbar 20kPa) is divided by its scale.
-  if (const std::optional<ParameterScale> scale = scale_of(parameter, scales)) {
-    std::optional<model::Physical> physical;
+  if (const std::optional<input::Scale> scale = input::scale_of(parameter.scale, scales ? *scales : PhysicalScales{});
+      scale && input::has_unit(text)) {
     try {
-      physical = model::parse_physical(text, scale->dimension);
+      value = input::read_scaled(text, *scale);
     } catch (const std::invalid_argument& e) {
       throw UsageError(option + " = " + e.what() + "; valid range: " + range);
     }
-    if (physical) {
-      if (!scale->scale) {
-        throw UsageError(option + " = " + text + ": a " + std::string(model::dimension_name(scale->dimension)) +
-                         " with a unit needs " + scale->needs + "; or give " + name + " in " +
-                         std::string(parameter.scale));
-      }
-      value = model::in_units_of(*physical, *scale->scale);
-      if (!parameter.admits(value)) {
-        throw UsageError(option + " = " + text + " (" + json_number(value) + " " + std::string(parameter.scale) +
-                         ") is outside its range: " + range);
-      }
-      return value;
+    if (!parameter.admits(value)) {
+      throw UsageError(option + " = " + text + " (" + json_number(value) + " " + std::string(parameter.scale) +
+                       ") is outside its range: " + range);
     }
+    return value;
   }
   try {
     value = parameter.integer ? parse_integer(text, option) : parse_real(text, option);
@@ -215,11 +183,6 @@ model::Localization read_localization(const po::variables_map& vm) {
   }
 }
 
-std::optional<model::Physical> plane_strain_modulus(const model::Material* material) {
-  if (material == nullptr) return std::nullopt;
-  return model::Physical{material->plane_strain_modulus_Pa(), model::find_unit(model::Dimension::pressure, "Pa")};
-}
-
 std::optional<double> read_physical_pressure(const po::variables_map& vm, const model::Material* material) {
   if (!vm.count("pressure")) return std::nullopt;
   const std::string text = vm["pressure"].as<std::string>();
@@ -236,11 +199,23 @@ std::optional<double> read_physical_pressure(const po::variables_map& vm, const 
                      model::unit_names(model::Dimension::pressure) + " (50kPa)");
   }
   if (!(pressure->number > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
-  return model::in_units_of(*pressure, *plane_strain_modulus(material));
+  return model::in_units_of(*pressure, *input::scales_of(material).E0_star);
 }
 
-model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, std::string* table_text) {
-  *ramp_time = read_real(vm, "ramp", "ramp time", "ramp time t_r >= 0 (0 is a step)", [](double v) { return v >= 0.0; });
+model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, std::string* table_text,
+                             const PhysicalScales& scales) {
+  const char* range = "ramp time t_r >= 0 (0 is a step)";
+  if (vm.count("ramp") && input::has_unit(vm["ramp"].as<std::string>())) {  // --ramp 30s, with a material
+    const std::string text = vm["ramp"].as<std::string>();
+    try {
+      *ramp_time = input::read_scaled(text, *input::scale_of("T_eps", scales));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError("--ramp = " + std::string(e.what()) + "; valid range: " + range);
+    }
+    if (!(*ramp_time >= 0.0)) throw UsageError("--ramp = " + text + " is outside its range: " + range);
+  } else {
+    *ramp_time = read_real(vm, "ramp", "ramp time", range, [](double v) { return v >= 0.0; });
+  }
   table_text->clear();
   if (!vm.count("load-table")) return model::LoadShape::ramp(*ramp_time);
   if (*ramp_time > 0.0) throw UsageError("--ramp and --load-table both given; valid: one of them");
@@ -348,22 +323,12 @@ void add_material_options(po::options_description& opts) {
 }
 
 PhysicalScales read_physical_scales(const po::variables_map& vm, const model::Material* material) {
-  PhysicalScales scales;
-  scales.E0_star = plane_strain_modulus(material);
-  if (!vm.count("R")) return scales;
-  const std::string text = vm["R"].as<std::string>();
-  const std::string valid = "valid: a length > 0 with its unit (" + model::unit_names(model::Dimension::length) +
-                            "), e.g. 50um";
-  std::optional<model::Physical> R;
+  if (!vm.count("R")) return input::scales_of(material);
   try {
-    R = model::parse_physical(text, model::Dimension::length);
+    return input::scales_of(material, input::read_length_scale(vm["R"].as<std::string>()));
   } catch (const std::invalid_argument& e) {
     throw UsageError("--R = " + std::string(e.what()));
   }
-  if (!R) throw UsageError("--R = " + text + ": no unit; " + valid);
-  if (!(R->number > 0.0)) throw UsageError("--R = " + text + " is outside its range: " + valid);
-  scales.R = R;
-  return scales;
 }
 
 PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& material) {
@@ -372,7 +337,7 @@ PointInputs read_point_inputs(const po::variables_map& vm, const PointMaterial& 
   inputs.material = material.material;
   inputs.time_unit = material.time_unit();
   double ramp = 0.0;
-  inputs.problem.loading = read_loading(vm, &ramp, &inputs.load_text);
+  inputs.problem.loading = read_loading(vm, &ramp, &inputs.load_text, inputs.scales);
   if (ramp > 0.0) inputs.values.emplace_back(&model::ramp_time_parameter(), ramp);
   return inputs;
 }
@@ -402,12 +367,12 @@ std::string PointInputs::describe() const {
   return text;
 }
 
-std::vector<double> read_times(const po::variables_map& vm) {
+std::vector<double> read_times(const po::variables_map& vm, const PhysicalScales& scales) {
   const std::string text = vm["times"].as<std::string>();
   std::string problem;
   map::Axis times;
   try {
-    times = map::parse_axis(text, false);
+    times = input::read_scaled_axis(text, false, *input::scale_of("T_eps", scales));
     for (const double t : times.values) {
       if (t < 0.0) problem = "value " + map::format_axis_value(t) + " is negative";
     }

@@ -15,6 +15,7 @@
 #include "model/parameters.hpp"
 #include "model/shape.hpp"
 #include "model/units.hpp"
+#include "input/scaled_value.hpp"
 
 namespace punchsweep::app {
 
@@ -38,12 +39,9 @@ void add_parameter_option(boost::program_options::options_description& opts, con
 /// "--NAME = TEXT is outside its range: RANGE": the message for `parameter` given as `text`.
 std::string out_of_range(const model::Parameter& parameter, const std::string& text);
 
-/// The physical scales a point knows: R (from --R, with the unit it was given in) and E0*
-/// (from a material); a scaled option given with a unit is divided by its scale.
-struct PhysicalScales {
-  std::optional<model::Physical> R;  ///< as --R was given (50 um): the output's lengths use its unit
-  std::optional<model::Physical> E0_star;  ///< in Pa, from the material
-};
+/// The physical scales a point knows (input/scaled_value.hpp): R from --R, E0* and the time
+/// unit from a material.
+using PhysicalScales = input::PhysicalScales;
 
 /// The value of --NAME for `parameter`. A length (in R) or a pressure (in E0*) may carry a
 /// unit (150um, 20kPa) where `scales` holds its scale. Throws UsageError naming the option,
@@ -102,8 +100,9 @@ std::optional<double> read_physical_pressure(const boost::program_options::varia
 
 /// --ramp and --load-table as the load's shape (a step without either); the ramp time and
 /// the table's text as given come back too. Throws UsageError for both or a bad value.
+/// --ramp may carry a time unit (30s) where `scales` has the material's time unit.
 model::LoadShape read_loading(const boost::program_options::variables_map& vm, double* ramp_time,
-                              std::string* table_text);
+                              std::string* table_text, const PhysicalScales& scales = {});
 
 /// --material FILE, --ramp TR and --load-table, declared for a point command.
 void add_material_options(boost::program_options::options_description& opts);
@@ -139,9 +138,6 @@ PointInputs read_point_inputs(const boost::program_options::variables_map& vm, c
 /// add_material_options' point. Throws UsageError for an R without a unit, not > 0, or not a length.
 PhysicalScales read_physical_scales(const boost::program_options::variables_map& vm, const model::Material* material);
 
-/// A material's E0* in Pa, as the scale of a pressure given with a unit; nullopt without one.
-std::optional<model::Physical> plane_strain_modulus(const model::Material* material);
-
 /// The same for the material found by find_point_material, with --ramp, --load-table and
 /// --pressure (add_material_options).
 PointInputs read_point_inputs(const boost::program_options::variables_map& vm, const PointMaterial& material);
@@ -155,7 +151,8 @@ void add_times_option(boost::program_options::options_description& opts);
 /// --times: snapshot times in T_eps, in the axis syntax of a sweep (a list, linspace() or
 /// logspace()), each >= 0, strictly increasing. Throws UsageError naming --times, the
 /// problem and kTimesRange.
-std::vector<double> read_times(const boost::program_options::variables_map& vm);
+/// With a material's time unit in `scales`, the times may carry time units (30s, 1min, 2h).
+std::vector<double> read_times(const boost::program_options::variables_map& vm, const PhysicalScales& scales = {});
 
 /// A list option whose values must each satisfy `in_range` (described by `range`).
 std::vector<double> read_real_list(const boost::program_options::variables_map& vm, const char* name,

@@ -42,7 +42,7 @@ namespace {
 PointRun read_point(const po::variables_map& vm, const PointMaterial& material, model::EvaluationOptions* options) {
   PointRun run{read_point_inputs(vm, material), {}};
   run.inputs.problem.localization = read_localization(vm);
-  options->times = read_times(vm);
+  options->times = read_times(vm, run.inputs.scales);
   return run;
 }
 

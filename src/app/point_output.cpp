@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -60,6 +61,30 @@ struct JsonFields final : PointFields {
   }
 };
 
+void write_physical(std::ostream& out, const std::vector<PhysicalField>& physical) {
+  out << ",\n  \"physical\": {";
+  bool first = true;
+  for (const PhysicalField& f : physical) {
+    if (f.series) continue;
+    out << (first ? "\n    \"" : ",\n    \"") << f.name << "\": " << number(f.values.front());
+    first = false;
+  }
+  out << ",\n    \"series\": {";
+  first = true;
+  for (const PhysicalField& f : physical) {
+    if (!f.series) continue;
+    out << (first ? "\n      \"" : ",\n      \"") << f.name << "\": " << series_array(f.values);
+    first = false;
+  }
+  out << "\n    }\n  },\n  \"units\": {";
+  first = true;
+  for (const PhysicalField& f : physical) {
+    out << (first ? "\n    \"" : ",\n    \"") << f.name << "\": " << json_string(f.units);
+    first = false;
+  }
+  out << "\n  }";
+}
+
 void write_json(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
   out << "{\n";
   // The model, where it is not the paper's (whose output keeps its form).
@@ -68,7 +93,11 @@ void write_json(std::ostream& out, const PointInputs& inputs, const model::Point
   }
   JsonFields fields(out);
   visit_point(r, inputs.time_unit, fields);
-  out << "\n  }\n}\n";
+  out << "\n  }";
+  if (const std::vector<PhysicalField> physical = physical_fields(inputs, r); !physical.empty()) {
+    write_physical(out, physical);
+  }
+  out << "\n}\n";
 }
 
 }  // namespace
@@ -93,6 +122,42 @@ void visit_point(const model::PointResult& r, std::string_view time_unit, PointF
     for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = q.series_value(r.series[i]);
     fields.series(q.name, column);
   }
+}
+
+namespace {
+std::string significant(double v, int digits);
+}  // namespace
+
+std::vector<PhysicalField> physical_fields(const PointInputs& inputs, const model::PointResult& r) {
+  std::vector<PhysicalField> fields;
+  const input::PhysicalScales& scales = inputs.scales;
+  if (!scales.R && !scales.E0_star) return fields;
+  const auto add = [&](std::string_view name, std::string_view scale, std::vector<double> values, bool series) {
+    const std::optional<input::PhysicalUnit> unit = input::physical_unit(scale, scales);
+    if (!unit) return;
+    for (double& v : values) v *= unit->per_scaled;
+    fields.push_back({std::string(name), std::move(values), series, unit->units});
+  };
+  if (scales.R) fields.push_back({"R", {scales.R->number}, false, std::string(scales.R->unit->name)});
+  if (scales.E0_star) fields.push_back({"E0_star", {scales.E0_star->si()}, false, "Pa"});
+  for (const auto& [p, value] : inputs.values) {
+    add(p->name == model::kPressure ? std::string_view("pressure") : p->name, p->scale, {value}, false);
+  }
+  // The inputs echoed as the user gave them: to 15 digits, so 3 R of 0.05 mm reads 0.15 mm,
+  // not the product's 0.15000000000000002.
+  for (PhysicalField& f : fields) f.values.front() = std::strtod(significant(f.values.front(), 15).c_str(), nullptr);
+  for (const QuantitySpec& q : kQuantities) {
+    if (is_point(q) && q.kind != map::Kind::flag) add(q.name, q.scale, {q.value(r)}, false);
+  }
+  std::vector<double> column(r.series.size());
+  for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
+  add("t", "T_eps", column, true);
+  for (const QuantitySpec& q : kQuantities) {
+    if (!is_series(q)) continue;
+    for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = q.series_value(r.series[i]);
+    add(q.name, q.scale, column, true);
+  }
+  return fields;
 }
 
 namespace {

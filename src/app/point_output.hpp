@@ -27,11 +27,28 @@ struct PointFields {
 /// quantity. The JSON writer and the Python module both read a point through it.
 void visit_point(const model::PointResult& r, std::string_view time_unit, PointFields& fields);
 
+/// One output in physical units: a field of the point (or its input) whose scale the
+/// inputs know (input::physical_unit), in `units` (a UDUNITS-2 string).
+struct PhysicalField {
+  std::string name;
+  std::vector<double> values;  ///< one value, or the series over t
+  bool series = false;
+  std::string units;
+};
+
+/// The point in physical units where its scales are known: R; the inputs l, dh (with R),
+/// E0_star and pressure (with a material); the per-point quantities and series whose scale
+/// is known (lengths in R's unit, loads in N, times in the material's unit) and t. Empty
+/// without R and a material. JSON's "physical" and "units" objects and Python's point() read it.
+std::vector<PhysicalField> physical_fields(const PointInputs& inputs, const model::PointResult& r);
+
 /// Writes one evaluated point. The keys are map::kQuantities' model quantities (a
 /// contract, in that order): regime, t_star (null for never), h_0, h_inf, valid (with
 /// reason after it), a1_inf, a2_inf, area_fraction_inf, and series with arrays t and the
 /// series quantities a1, a2, P1, P2, area_fraction. Numbers that could not be computed are
-/// null (JSON), nan (CSV, table).
+/// null (JSON), nan (CSV, table). Where the inputs know a physical scale, the JSON adds
+/// "physical" (physical_fields, series in its own "series") and "units" (each of them to its
+/// UDUNITS-2 string).
 void write_point(std::ostream& out, OutputFormat format, const PointInputs& inputs, const model::PointResult& result);
 
 }  // namespace punchsweep::app

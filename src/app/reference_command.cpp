@@ -46,7 +46,7 @@ po::options_description reference_options(const PointMaterial& material) {
 ReferenceRun read_reference(const po::variables_map& vm, const PointMaterial& material) {
   ReferenceRun run{read_point_inputs(vm, material), {}, {}, 0.0};
   reference::scale_steps_to_law(*run.inputs.creep, &run.options);
-  run.options.times = read_times(vm);
+  run.options.times = read_times(vm, run.inputs.scales);
   run.options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
                                              [](double v) { return sweep::is_bem_grid(v); }));
   return run;

@@ -1,5 +1,7 @@
 #include "app/sweep_command.hpp"
 
+#include "map/axis_parser.hpp"
+
 #ifdef __linux__
 #endif
 
@@ -24,6 +26,7 @@
 #include "io/regime_map_writer.hpp"
 #include "io/tile_encoder.hpp"
 #include "io/tile_journal.hpp"
+#include "map/axis_parser.hpp"
 #include "map/tiling.hpp"
 #include "run/disk_space.hpp"
 #include "run/map_run.hpp"
@@ -194,6 +197,10 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   attributes.C = config.C;
   attributes.localization = config.localization.spelling();
   attributes.time_unit = config.time_unit();
+  if (config.R) {
+    attributes.R = map::format_axis_value(config.R->number) + " " + std::string(config.R->unit->name);
+    attributes.R_m = config.R->si();
+  }
   if (config.material) {
     attributes.material = {config.material->name(), config.material->text(), config.material->instantaneous_modulus_Pa(),
                            config.material->plane_strain_modulus_Pa(), config.material->poisson()};

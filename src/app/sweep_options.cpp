@@ -20,6 +20,7 @@
 #include "app/text_file.hpp"
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
+#include "input/scaled_value.hpp"
 #include "io/crc32.hpp"
 #include "model/localization.hpp"
 #include "model/creep_laws.hpp"
@@ -41,7 +42,7 @@ constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output"
 // resolved_text, after the [grid] keys.
 enum class Fixed {
   none,  // a [grid] key: a model parameter's axis
-  model_C, model_creep_law, model_material, model_load_table, model_localization, time_times, output_file, output_quantities,
+  grid_pressure, model_R, model_C, model_creep_law, model_material, model_load_table, model_localization, time_times, output_file, output_quantities,
   run_chunk, run_quiet, run_resume, run_overwrite,
   reference_method, reference_grid, reference_sample, reference_seed
 };
@@ -73,6 +74,15 @@ std::vector<KeySpec> make_keys() {
   }
   add_axis(&model::temperature_parameter());
   add_axis(&model::ramp_time_parameter());
+  keys.push_back({"grid", "pressure", "AXIS", "",
+                  "the nominal pressure in a pressure unit (1kPa, 2kPa or linspace(1kPa, 5kPa, 9)), divided by the "
+                  "material's E0* into the pbar axis; instead of grid.pbar",
+                  "empty, or pressures > 0 each with its unit (Pa, kPa, MPa or GPa); needs model.material",
+                  Fixed::grid_pressure});
+  keys.push_back({"model", "R", "LENGTH", "",
+                  "the punch's radius of curvature R with its unit (50um; for a spherical cap, s = 2 and C = 0.5): "
+                  "grid.l and grid.dh may then be given in a length unit (150um), and the map adds them in R's unit",
+                  "empty (lengths in R), or a length > 0 with its unit (m, mm, um or nm)", Fixed::model_R});
   const model::Parameter& C = *model::find_parameter(model::kShapeConstant);
   keys.push_back({"model", "C", "C", std::string(C.point_default), std::string(C.meaning), std::string(C.range),
                   Fixed::model_C, &C});
@@ -377,11 +387,13 @@ std::string listed(const std::vector<double>& values) {
          std::to_string(values.size()) + " in all)";
 }
 
-// Empty, or why `text` is not an axis whose values all pass `in_range`.
+// Empty, or why `text` is not an axis whose values all pass `in_range`. With a `scale`, a
+// value may carry a physical unit (input::read_scaled_axis); with `required` it must.
 template <class InRange>
-std::string check_axis(const std::string& text, bool integers, InRange in_range, map::Axis& axis) {
+std::string check_axis(const std::string& text, bool integers, InRange in_range, map::Axis& axis,
+                       const std::optional<input::Scale>& scale = std::nullopt, bool required = false) {
   try {
-    axis = map::parse_axis(text, integers);
+    axis = scale ? input::read_scaled_axis(text, integers, *scale, required) : map::parse_axis(text, integers);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -465,12 +477,32 @@ std::string check_sample(const std::string& text, sweep::ReferenceConfig& refere
   return {};
 }
 
-// Fills `config` from the settings; returns one line per bad value.
+// Whether key `spec` reads values whose unit depends on model.R or the material: read after them.
+bool reads_scaled_values(const KeySpec& spec) {
+  return spec.fixed == Fixed::none || spec.fixed == Fixed::grid_pressure || spec.fixed == Fixed::time_times;
+}
+
+// Fills `config` from the settings; returns one line per bad value, in the keys' order.
 std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sweep::SweepConfig& config) {
-  std::vector<std::string> problems;
+  std::vector<std::pair<std::size_t, std::string>> keyed;  // (key, problem)
   std::vector<map::Axis> axes(keys().size());  // by key; [grid] keys only
-  for (std::size_t k = 0; k < keys().size(); ++k) {
+  // The scales first (model.R, model.material), then the values that may be given in units.
+  std::vector<std::size_t> order;
+  for (const bool scaled : {false, true}) {
+    for (std::size_t k = 0; k < keys().size(); ++k) {
+      if (reads_scaled_values(keys()[k]) == scaled) order.push_back(k);
+    }
+  }
+  input::PhysicalScales scales;
+  bool scales_known = false;
+  for (const std::size_t k : order) {
     const KeySpec& spec = keys()[k];
+    if (reads_scaled_values(spec) && !scales_known) {
+      scales_known = true;
+      // One material gives E0*; several share their time unit only.
+      scales = input::scales_of(config.materials.size() == 1 ? config.materials.front().get() : nullptr, config.R);
+      if (config.materials.size() > 1) scales.time = input::scales_of(config.materials.front().get()).time;
+    }
     const std::string& text = settings[k].text;
     std::string problem;
     if (text.find_first_of("#\r\n") != std::string::npos) {
@@ -480,8 +512,26 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
       switch (spec.fixed) {
         case Fixed::none:
           problem = check_axis(
-              text, spec.parameter->integer, [&](double v) { return spec.parameter->in_range(v); }, axes[k]);
+              text, spec.parameter->integer, [&](double v) { return spec.parameter->in_range(v); }, axes[k],
+              input::scale_of(spec.parameter->scale, scales));
           axes[k].name = spec.name;
+          break;
+        case Fixed::grid_pressure:
+          if (text.empty()) break;
+          problem = check_axis(
+              text, false, [](double v) { return v > 0.0; }, axes[k],
+              input::scale_of(model::find_parameter(model::kPressure)->scale, scales), true);
+          axes[k].name = std::string(model::kPressure);
+          break;
+        case Fixed::model_R:
+          config.R.reset();
+          if (text.empty()) break;
+          try {
+            config.R = input::read_length_scale(text);
+          } catch (const std::invalid_argument& e) {
+            const std::string what = e.what();
+            problem = what.substr(0, what.find("; valid"));
+          }
           break;
         case Fixed::model_C:
           try {
@@ -558,7 +608,8 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
           break;
         case Fixed::time_times: {
           map::Axis times;
-          problem = check_axis(text, false, [](double t) { return t >= 0.0; }, times);
+          problem = check_axis(text, false, [](double t) { return t >= 0.0; }, times,
+                               input::scale_of("T_eps", scales));
           config.times = times.values;
           break;
         }
@@ -609,10 +660,22 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
       }
     }
     if (!problem.empty()) {
-      problems.push_back(dotted(spec) + " = " + (text.empty() ? "''" : text) + ": " + problem +
-                         "; valid range: " + spec.range);
+      keyed.emplace_back(k, dotted(spec) + " = " + (text.empty() ? "''" : text) + ": " + problem +
+                                "; valid range: " + spec.range);
     }
   }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> problems;
+  for (auto& [k, line] : keyed) problems.push_back(std::move(line));
+  // grid.pressure is the pbar axis given in a pressure unit.
+  const std::size_t pressure_key = key_index(Fixed::grid_pressure);
+  const std::size_t pbar_key = key_index(model::find_parameter(model::kPressure));
+  const bool by_pressure = !settings[pressure_key].text.empty();
+  if (by_pressure && settings[pbar_key].source != Source::default_value) {
+    problems.push_back("grid.pressure = " + settings[pressure_key].text + ": grid.pbar = " + settings[pbar_key].text +
+                       " is given too; valid range: one of grid.pbar and grid.pressure");
+  }
+  if (by_pressure) axes[pbar_key] = axes[pressure_key];
   // A material replaces the creep law (and its parameters) by the file's.
   if (config.material_spec) {
     const std::size_t law_key = key_index(Fixed::model_creep_law);
@@ -727,6 +790,8 @@ std::string resolved_value(Fixed key, const std::string& text, const sweep::Swee
   switch (key) {
     case Fixed::model_C:
       return map::format_axis_value(config.C);
+    case Fixed::model_R:
+      return config.R ? map::format_axis_value(config.R->number) + std::string(config.R->unit->name) : "";
     case Fixed::model_localization:
       return config.localization.spelling();
     case Fixed::model_creep_law:
@@ -756,8 +821,12 @@ std::string resolved_text(const std::vector<Setting>& settings, const sweep::Swe
   std::string section;
   for (std::size_t k = 0; k < keys().size(); ++k) {
     const KeySpec& spec = keys()[k];
-    // A [grid] key of another creep law's parameter is no axis of this map.
+    // A [grid] key of another creep law's parameter is no axis of this map; grid.pressure
+    // stands for grid.pbar where it is given.
     if (spec.fixed == Fixed::none && config.grid.find(spec.name) == config.grid.rank()) continue;
+    const bool by_pressure = !settings[key_index(Fixed::grid_pressure)].text.empty();
+    if (spec.fixed == Fixed::grid_pressure && !by_pressure) continue;
+    if (spec.parameter != nullptr && spec.parameter->name == model::kPressure && by_pressure) continue;
     if (section != spec.section) {
       section = spec.section;
       text += "\n[" + section + "]\n";
@@ -784,6 +853,8 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
     lines.push_back("grid." + axis.name + " = " + map::format_axis_values(axis.values));
   }
   lines.push_back("model.C = " + map::format_axis_value(config.C));
+  // R names the physical unit of the map's lengths; maps without it keep their identity.
+  if (config.R) lines.push_back("model.R = " + map::format_axis_value(config.R->number) + " " + std::string(config.R->unit->name));
   lines.push_back("model.creep_law = " + std::string(config.creep_law->name));
   for (const auto& material : config.materials) {
     // The material's content, not its path: the same file moved is the same map.

@@ -156,6 +156,10 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
       write_double_attribute(file_, "poisson", attributes.material.poisson, in);
     }
   }
+  if (!attributes.R.empty()) {
+    write_string_attribute(file_, "R", attributes.R, in);
+    write_double_attribute(file_, "R_m", attributes.R_m, in);
+  }
   write_string_attribute(file_, "scales", kScales, in);
   if (layout.bem) {
     const BemSetup& bem = *layout.bem;

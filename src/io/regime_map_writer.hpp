@@ -38,6 +38,10 @@ struct MapAttributes {
     double E0_star_Pa = 0.0;
     double poisson = 0.0;
   } material;
+  /// The punch's radius of curvature R as a UDUNITS-2 string ("50 um", global attribute
+  /// `R`): the physical size of the scale R, in the unit the user gave it; empty: not given.
+  std::string R{};
+  double R_m = 0.0;  ///< the same in metres (global attribute `R_m`), for loads in N
   std::string localization = "paper";  ///< the localization model's spelling (model/localization.hpp)
 };
 
@@ -72,7 +76,7 @@ struct MapAttributes {
 ///   other box goes through HDF5's filter pipeline. Readers see no difference.
 /// - Global attributes: Conventions "CF-1.8", title, source, history, config, identity, creep_law,
 ///   C, time_unit, for a material map material, material_file (its text), E0_Pa, E0_star_Pa
-///   (the pressure scale) and poisson, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
+///   (the pressure scale) and poisson, R (a UDUNITS-2 string "50 um") and R_m (float64, metres) where the sweep was given model.R, with a BEM reference bem_grid (int32), bem_tolerance (float64), bem_sample and
 ///   bem_seed (int64), bem_method (string), bem_sample_rule (string: all, random, invalid or boundary), then completed (int8, 0 until finish() sets 1),
 ///   and from finish(): ranks, wall_seconds, points_per_second.
 ///

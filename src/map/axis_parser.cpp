@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cctype>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -19,7 +20,9 @@ std::string trim(const std::string& text) {
   return text.substr(first, last - first + 1);
 }
 
-double parse_number(const std::string& token) {
+}  // namespace
+
+double parse_axis_number(const std::string& token) {
   const char* begin = token.c_str();
   char* end = nullptr;
   errno = 0;
@@ -32,6 +35,8 @@ double parse_number(const std::string& token) {
   if (!std::isfinite(value)) throw std::invalid_argument("'" + token + "' is not a finite number");
   return value;
 }
+
+namespace {
 
 long parse_count(const std::string& function, const std::string& token) {
   const char* begin = token.c_str();
@@ -59,19 +64,27 @@ std::vector<std::string> split_commas(const std::string& text) {
   return pieces;
 }
 
-std::vector<double> parse_list(const std::string& text) {
+std::vector<double> parse_list(const std::string& text, const ValueReader& read) {
   std::vector<double> values;
   for (const std::string& piece : split_commas(text)) {
     if (piece.empty()) {
       throw std::invalid_argument("the list has an empty entry (two commas in a row, or a comma at an end)");
     }
+    std::vector<std::string> tokens;
     std::size_t from = 0;
     while (from < piece.size()) {
       const std::size_t end = std::min(piece.find_first_of(kWhitespace, from), piece.size());
-      values.push_back(parse_number(piece.substr(from, end - from)));
+      std::string token = piece.substr(from, end - from);
+      // A unit written apart ("2 um") belongs to its number.
+      if (!tokens.empty() && std::isalpha(static_cast<unsigned char>(token.front()))) {
+        tokens.back() += " " + token;
+      } else {
+        tokens.push_back(std::move(token));
+      }
       from = piece.find_first_not_of(kWhitespace, end);
       if (from == std::string::npos) break;
     }
+    for (const std::string& token : tokens) values.push_back(read(token));
   }
   return values;
 }
@@ -108,7 +121,7 @@ std::vector<double> generate(const std::string& function, double a, double b, lo
   return values;
 }
 
-std::vector<double> parse_function(const std::string& name, const std::string& inside) {
+std::vector<double> parse_function(const std::string& name, const std::string& inside, const ValueReader& read) {
   std::vector<std::string> args;
   if (!trim(inside).empty()) args = split_commas(inside);
   if (args.size() != 3) {
@@ -117,8 +130,8 @@ std::vector<double> parse_function(const std::string& name, const std::string& i
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i].empty()) throw std::invalid_argument(name + " argument " + std::to_string(i + 1) + " is empty");
   }
-  const double a = parse_number(args[0]);
-  const double b = parse_number(args[1]);
+  const double a = read(args[0]);
+  const double b = read(args[1]);
   const long n = parse_count(name, args[2]);
   if (name == "linspace") {
     return generate(name, a, b, n, [a, b](double t) { return std::lerp(a, b, t); });
@@ -134,14 +147,16 @@ std::vector<double> parse_function(const std::string& name, const std::string& i
 
 }  // namespace
 
-Axis parse_axis(const std::string& text, bool integers) {
+Axis parse_axis(const std::string& text, bool integers) { return parse_axis(text, integers, parse_axis_number); }
+
+Axis parse_axis(const std::string& text, bool integers, const ValueReader& read) {
   Axis axis;
   axis.text = trim(text);
   if (axis.text.empty()) throw std::invalid_argument("no value given");
 
   const std::size_t open = axis.text.find('(');
   if (open == std::string::npos) {
-    axis.values = parse_list(axis.text);
+    axis.values = parse_list(axis.text, read);
   } else {
     const std::string name = trim(axis.text.substr(0, open));
     if (name != "linspace" && name != "logspace") {
@@ -149,7 +164,7 @@ Axis parse_axis(const std::string& text, bool integers) {
                                   "' (use a list, linspace(start, stop, count) or logspace(start, stop, count))");
     }
     if (axis.text.back() != ')') throw std::invalid_argument(name + "( is missing its closing ')'");
-    axis.values = parse_function(name, axis.text.substr(open + 1, axis.text.size() - open - 2));
+    axis.values = parse_function(name, axis.text.substr(open + 1, axis.text.size() - open - 2), read);
     axis.log_spaced = name == "logspace";
   }
 

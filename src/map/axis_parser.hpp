@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,18 @@ inline constexpr long kMaxAxisCount = 1'000'000;
 /// Throws std::invalid_argument with a message that does not name the key, e.g.
 /// "linspace needs 3 arguments (start, stop, count), got 2".
 Axis parse_axis(const std::string& text, bool integers);
+
+/// Reads one value of an axis (a list item, or linspace's or logspace's start or stop) from
+/// its text, e.g. a number with a unit into the axis's scaled unit; throws
+/// std::invalid_argument with a message that does not name the key.
+using ValueReader = std::function<double(const std::string& token)>;
+
+/// The same with each value read by `read`. In a list, a word that starts with a letter
+/// belongs to the number before it, so "1 um, 2 um" reads as "1 um" and "2 um".
+Axis parse_axis(const std::string& text, bool integers, const ValueReader& read);
+
+/// The default reader: a whole string as a finite double ("'x' is not a number").
+double parse_axis_number(const std::string& token);
 
 /// The shortest decimal text that reads back to exactly `value` ("0.1", not
 /// "0.10000000000000001"); used wherever a value is printed for comparison.

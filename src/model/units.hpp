@@ -63,8 +63,8 @@ std::optional<Physical> parse_physical(std::string_view text, Dimension dimensio
 /// 0.15 mm is 150 um exactly where 0.15 x (1e-3 / 1e-6) is not.
 double convert(double x, const Unit& from, const Unit& to);
 
-/// `value` in units of `scale` (both of one dimension): value / scale, with the scale
-/// converted into the value's unit first (150 um over 0.05 mm is 150 / 50).
+/// `value` in units of `scale` (both of one dimension): value / scale, both in the smaller
+/// of their units first (150 um over 0.05 mm is 150 / 50; 0.15 mm over 50 um is 150 / 50).
 double in_units_of(const Physical& value, const Physical& scale);
 
 }  // namespace punchsweep::model

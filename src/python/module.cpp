@@ -27,6 +27,7 @@
 #include "app/reference_command.hpp"
 #include "app/table_cache.hpp"
 #include "app/usage_error.hpp"
+#include "input/scaled_value.hpp"
 #include "map/quantities.hpp"
 #include "model/contact_problem.hpp"
 #include "model/localization.hpp"
@@ -96,6 +97,20 @@ py::dict point_command(const std::vector<std::string>& args) {
   py::dict out = point_dict(run.result, run.inputs.time_unit);
   out["localization"] = run.inputs.problem.localization.spelling();
   out["time_unit"] = run.inputs.time_unit;
+  py::dict physical, series, units;
+  for (const app::PhysicalField& f : app::physical_fields(run.inputs, run.result)) {
+    if (f.series) {
+      series[py::str(f.name)] = array(f.values);
+    } else {
+      physical[py::str(f.name)] = json_value(f.values.front());
+    }
+    units[py::str(f.name)] = f.units;
+  }
+  if (!units.empty()) {  // as the JSON: only where a scale is known
+    physical["series"] = series;
+    out["physical"] = physical;
+    out["units"] = units;
+  }
   return out;
 }
 
@@ -171,6 +186,36 @@ using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
 std::shared_ptr<const model::Material> read_material(const std::string& path) {
   if (path.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
   return app::read_material_file(path);
+}
+
+/// `text` for the parameter called `name` in its scale (input/scaled_value.hpp: the command
+/// line's rule), the scales coming from the material file `material` and `R` (each may be
+/// ""). ValueError naming the keyword for a unit mistake or a value out of range.
+double scaled_value(const std::string& text, const std::string& name, const std::string& material,
+                    const std::string& R) {
+  const model::Parameter* p = model::find_parameter(name);
+  if (p == nullptr) throw app::UsageError("no parameter " + name);
+  const std::string key = name == model::kPressure ? std::string("pressure") : name;
+  const std::shared_ptr<const model::Material> file = material.empty() ? nullptr : read_material(material);
+  input::PhysicalScales scales;
+  try {
+    scales = input::scales_of(file.get(), R.empty() ? std::nullopt : std::optional(input::read_length_scale(R)));
+  } catch (const std::invalid_argument& e) {
+    throw app::UsageError("R = " + std::string(e.what()));
+  }
+  const std::optional<input::Scale> scale = input::scale_of(p->scale, scales);
+  double value = 0.0;
+  try {
+    if (!scale) throw std::invalid_argument("'" + text + "': " + name + " is a pure number");
+    value = input::read_scaled(text, *scale);
+  } catch (const std::invalid_argument& e) {
+    throw app::UsageError(key + " = " + e.what() + "; valid range: " + std::string(p->range));
+  }
+  if (!p->admits(value)) {
+    throw app::UsageError(key + " = " + text + " (" + app::json_number(value) + " " + std::string(p->scale) +
+                          ") is outside its range: " + std::string(p->range));
+  }
+  return value;
 }
 
 /// The message for a temperature given to a material (`who`: its file or name) without a [shift].
@@ -430,6 +475,9 @@ PYBIND11_MODULE(_core, m) {
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "
         "as a list of such arrays, ramp_time empty for a step (the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
+  m.def("scaled", &scaled_value, py::arg("text"), py::arg("parameter"), py::arg("material"), py::arg("R"),
+        "the value of parameter NAME given as TEXT (a bare number in its scale, or a number with a unit) in "
+        "its scale, with the scales of the material file (or '') and R (or ''): the command line's rule");
   m.attr("default_localization") = std::string(model::kDefaultLocalization);
   py::class_<MaterialHandle>(m, "MaterialFile", "a material file as the engine reads it (use punchsweep.Material)")
       .def("info", &MaterialHandle::info)

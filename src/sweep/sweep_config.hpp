@@ -14,6 +14,7 @@
 #include "model/creep_laws.hpp"
 #include "model/localization.hpp"
 #include "model/material.hpp"
+#include "model/units.hpp"
 
 namespace punchsweep::sweep {
 
@@ -54,6 +55,9 @@ inline constexpr std::size_t kAutoChunk = 0;
 struct SweepConfig {
   map::Grid grid;                     ///< [grid]: model::sweep_axes of the creep law, in that order
   double C = 0.5;                     ///< [model] C: shape constant, > 0
+  /// [model] R: the punch's radius of curvature in a physical length unit (as given: the
+  /// map's lengths are shown in its unit), or none (lengths in R only).
+  std::optional<model::Physical> R;
   /// [model] creep_law: one of model::creep_laws(), or material_spec; the grid's axes
   /// include its parameters.
   const model::CreepLawSpec* creep_law = &model::creep_laws().front();

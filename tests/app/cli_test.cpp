@@ -396,9 +396,20 @@ TEST(Cli, lengths_and_pressures_with_units_are_the_scaled_point) {
   const CliRun physical = run_cli("point --R 50um --l 150um --dh 2um" + rest);
   const CliRun scaled = run_cli(std::string("point --l 3 --dh ") + dh + rest);
   ASSERT_EQ(physical.exit_code, 0) << physical.err;
-  EXPECT_EQ(physical.out, scaled.out);
+  // The scaled fields are the scaled point's; "physical" and "units" follow them.
+  const auto scaled_part = [](const std::string& json) {
+    return json.substr(0, std::min(json.find(",\n  \"physical\""), json.rfind("\n}")));
+  };
+  EXPECT_EQ(scaled_part(physical.out), scaled_part(scaled.out));
+  EXPECT_EQ(scaled.out.find("\"physical\""), std::string::npos);
+  EXPECT_NE(physical.out.find("\"physical\": {\n    \"R\": 50,\n    \"l\": 150,\n    \"dh\": 2,"), std::string::npos)
+      << physical.out;
+  EXPECT_NE(physical.out.find("\"units\": {\n    \"R\": \"um\",\n    \"l\": \"um\",\n    \"dh\": \"um\","),
+            std::string::npos);
   // R in mm and the lengths in um (0.05 mm is 50 um exactly), and the table's echo in R's unit.
-  EXPECT_EQ(run_cli("point --R 0.05mm --l 150um --dh 2um" + rest).out, scaled.out);
+  const CliRun in_mm = run_cli("point --R 0.05mm --l 150um --dh 2um" + rest);
+  EXPECT_EQ(scaled_part(in_mm.out), scaled_part(scaled.out));
+  EXPECT_NE(in_mm.out.find("\"R\": 0.05,\n    \"l\": 0.15,\n    \"dh\": 0.002,"), std::string::npos) << in_mm.out;
   const CliRun table = run_cli("point --R 0.05mm --l 150um --dh 2um --T 2.5 --pbar 0.06 --s 2");
   ASSERT_EQ(table.exit_code, 0) << table.err;
   EXPECT_NE(table.out.find("l = 3 R (0.15 mm)"), std::string::npos) << table.out;
@@ -410,10 +421,10 @@ TEST(Cli, lengths_and_pressures_with_units_are_the_scaled_point) {
   ASSERT_EQ(kpa.exit_code, 0) << kpa.err;
   EXPECT_EQ(kpa.out, run_cli(point + " --pressure 20kPa").out);
   // Refused, naming what is missing or wrong.
-  expect_refused("--l 150um --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l = 150um", "needs --R");
-  expect_refused("--R 50 --l 0.75 --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--R = 50", "no unit");
-  expect_refused("--R 50kPa --l 0.75 --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--R", "not a length unit");
-  expect_refused("--R 50um --l 150kPa --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l", "not a length unit");
-  expect_refused("--l 0.75 --dh 0.02 --T 2.5 --pbar 20kPa --s 2", "--pbar = 20kPa", "needs --material");
+  expect_refused("--l 150um --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l = '150um'", "needs R");
+  expect_refused("--R 50 --l 0.75 --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--R = '50'", "has no unit");
+  expect_refused("--R 50kPa --l 0.75 --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--R", "is a pressure, not a length");
+  expect_refused("--R 50um --l 150kPa --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l", "is a pressure, not a length");
+  expect_refused("--l 0.75 --dh 0.02 --T 2.5 --pbar 20kPa --s 2", "--pbar = '20kPa'", "needs a material");
   expect_refused("--R 50um --l -150um --dh 0.02 --T 2.5 --pbar 0.06 --s 2", "--l = -150um", "l > 0");
 }

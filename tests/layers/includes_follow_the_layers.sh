@@ -8,11 +8,12 @@ declare -A allowed=(
   [model]="model"
   [reference]="reference model"
   [map]="map model"
+  [input]="input map model"
   [io]="io map model"
   [sweep]="sweep map model reference"
   [run]="run io sweep map model reference"
-  [app]="app run io sweep map model reference"
-  [python]="python app run io sweep map model reference"
+  [app]="app run io sweep input map model reference"
+  [python]="python app run io sweep input map model reference"
 )
 
 status=0

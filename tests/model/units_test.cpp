@@ -70,8 +70,9 @@ TEST(Units, a_number_and_a_unit_is_its_si_value_and_a_bare_number_is_none) {
 }
 
 TEST(Units, a_unit_of_another_dimension_or_no_number_is_refused_with_the_valid_units) {
-  for (const auto& [text, d, words] : {std::tuple{"150kPa", Dimension::length, "'kPa' is not a length unit; valid: m, mm, um or nm"},
+  for (const auto& [text, d, words] : {std::tuple{"150kPa", Dimension::length, "'kPa' is a pressure, not a length; valid: m, mm, um or nm"},
                                        std::tuple{"20 psi", Dimension::pressure, "'psi' is not a pressure unit; valid: Pa, kPa, MPa or GPa"},
+                                       std::tuple{"2 min", Dimension::length, "'min' is a time, not a length"},
                                        std::tuple{"um", Dimension::length, "is not a number, or a number and a length unit"},
                                        std::tuple{"", Dimension::time, "is not a number, or a number and a time unit (s, min or h)"}}) {
     try {

@@ -79,13 +79,53 @@ def test_critical_dh_against_temperature_of_a_wlf_map(tmp_path):
     assert done.returncode == 0, done.stderr
     ds = pm.open_map(path)
     # WLF: colder is slower, so the dh that touches within 100 s shrinks with falling temperature.
-    fixed = pm.resolve_at(ds, pm.parse_at(["l=0.75", "s=2", "pbar=23.532"], ds), free=["T", "s"],
+    fixed = pm.resolve_at(ds, pm.parse_at(["l=0.75", "s=2", "pbar=23.532kPa"], ds), free=["T", "s"],
                           optional=("T", "s"),
                           reserved={"temperature": "the horizontal axis", "dh": "the vertical axis"})
     curves = critical_dh.touch_by_curves(ds, "temperature", fixed, [100.0])[0, 0, 0]
     assert curves[0] <= curves[1] <= curves[2] and curves[0] < curves[2]
     out = tmp_path / "chart.png"
-    rc, _, err = call(critical_dh, path, "--against", "temperature", "--at", "l=0.75", "pbar=23.532",
+    rc, _, err = call(critical_dh, path, "--against", "temperature", "--at", "l=0.75", "pbar=23.532kPa",
                       "--touch-by", "1,100", "-o", out)
     assert rc == 0, err
     assert out.stat().st_size > 10_000
+
+
+@pytest.fixture(scope="module")
+def physical_map(tmp_path_factory):
+    """The new user's map, given in um and kPa (docs/cli.md, Units)."""
+    path = tmp_path_factory.mktemp("map") / "um.h5"
+    done = subprocess.run([BINARY, "sweep", "--model.material", str(MATERIAL), "--model.R", "50um",
+                           "--grid.l", "150um", "--grid.dh", "1um, 2um, 3um, 4um", "--grid.pressure",
+                           "logspace(5kPa, 50kPa, 5)", "--grid.s", "2", "--quiet", "--output", str(path)],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return path
+
+
+def test_a_map_given_R_draws_lengths_in_its_unit(physical_map, tmp_path):
+    ds = pm.open_map(physical_map)
+    # Lengths in R's unit: l = 3 R of 50 um, radii and h likewise; a load R^2 E0* in N.
+    assert ds.l.attrs["units"] == "um" and ds.l.values.tolist() == [150.0]
+    np.testing.assert_allclose(ds.dh.values, [1, 2, 3, 4], rtol=1e-14)
+    assert ds.a1.attrs["units"] == "um" and ds.h_inf.attrs["units"] == "um"
+    assert ds.P1.attrs["units"] == "N"
+    np.testing.assert_allclose(ds.pbar.values, np.geomspace(5, 50, 5), rtol=1e-12)
+    assert "$\\mu$m" in pm.axis_label(ds, "dh") and "kPa" in pm.axis_label(ds, "pbar")
+    out = tmp_path / "um.png"
+    rc, _, err = call(regime_map, physical_map, "--x", "pbar", "--y", "dh", "--at", "l=150um", "s=2", "-o", out)
+    assert rc == 0, err
+    assert out.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("text, expected", [("2um", 2.0), ("0.002mm", 2.0), ("0.04", 2.0), ("2000nm", 2.0)])
+def test_at_takes_a_unit_or_a_bare_number_in_the_scale(physical_map, text, expected):
+    ds = pm.open_map(physical_map)
+    assert pm.parse_at([f"dh={text}"], ds)["dh"] == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("text, says", [("2kPa", "'kPa' is a pressure, dh a length"), ("2parsec", "not a unit"),
+                                        ("um", "not a number")])
+def test_at_refuses_unit_mistakes(physical_map, text, says):
+    with pytest.raises(pm.MapError, match=says):
+        pm.parse_at([f"dh={text}"], ds=pm.open_map(physical_map))

@@ -67,6 +67,15 @@ def test_point_equals_the_cli_json_bit_for_bit(kw):
                 assert same_bits(got.series[name], from_json_array(column)), name
         elif key == "localization":
             assert got.localization == value
+        elif key == "physical":  # the physical fields, where a scale is known
+            assert set(value) == set(got.physical)
+            for name, v in value.items():
+                if name == "series":
+                    assert set(v) == set(got.physical["series"])
+                    for column, values in v.items():
+                        assert same_bits(got.physical["series"][column], from_json_array(values)), column
+                else:
+                    assert same_bits(got.physical[name], v), name
         elif isinstance(value, float) or value is None:
             g = getattr(got, key)
             assert (g is None and value is None) or (g is not None and same_bits(g, value)), key
@@ -506,5 +515,5 @@ def test_point_takes_lengths_and_pressures_with_units():
     a = punchsweep.point(material=nbr, l=0.75, dh=0.02, s=2, pbar="20kPa")
     b = punchsweep.point(material=nbr, l=0.75, dh=0.02, s=2, pressure="20kPa")
     assert a.t_star == b.t_star and np.array_equal(a.series["a1"], b.series["a1"])
-    with pytest.raises(ValueError, match="needs --R"):
+    with pytest.raises(ValueError, match="needs R, the punch"):
         punchsweep.point(l="150um", dh=0.02, T=2.5, pbar=0.06, s=2)

@@ -74,7 +74,7 @@ def _arguments(options: dict[str, Any]) -> list[str]:
 
 def _result(cls, raw: dict):
     """A result dataclass from the engine's dict: its fields, the series as float arrays."""
-    fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series"}
+    fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series" and k in raw}
     return cls(series={k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}, **fields)
 
 
@@ -87,7 +87,10 @@ class PointResult:
     valid and reason: whether the localization model holds there and why not; a1_inf,
     a2_inf, area_fraction_inf: the long-term radii (R) and contact area fraction; series:
     numpy arrays t, a1, a2, P1, P2, area_fraction at the requested times (NaN where not
-    computed). Numbers the engine could not compute are None, as the JSON's null."""
+    computed). Numbers the engine could not compute are None, as the JSON's null.
+    physical and units: where R (R="50um") or a material gives the scales, the JSON's
+    "physical" fields (R, l, dh, E0_star, pressure, t_star, h_0, ..., and the series in
+    physical["series"]) and each one's UDUNITS-2 unit string; empty otherwise."""
     regime: str
     t_star: float | None
     h_0: float | None
@@ -100,6 +103,8 @@ class PointResult:
     series: dict[str, np.ndarray]
     localization: str
     time_unit: str
+    physical: dict = field(default_factory=dict)
+    units: dict = field(default_factory=dict)
 
 
 
@@ -266,8 +271,20 @@ class Material:
         return float(values) if values.shape == () else values
 
 
+def _in_scale(values, name: str, material, R):
+    """values (numbers, or text with units: '150um', ['1kPa', '2kPa']) in the scale of
+    parameter `name`, by the engine's rule (docs/cli.md, "Units")."""
+    array = np.asarray(values, dtype=object)
+    if not any(isinstance(v, (str, bytes)) for v in array.reshape(-1)):
+        return values
+    path = "" if material is None else os.fspath(material)
+    R = "" if R is None else str(R)
+    return np.vectorize(lambda v: _core.scaled(str(v), name, path, R), otypes=[float])(array)
+
+
 def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str | None = None, *,
-             material: str | None = None, temperature=None, ramp_time=None) -> Classification:
+             material: str | None = None, temperature=None, ramp_time=None, pressure=None,
+             R: str | None = None) -> Classification:
     """The regime, t*, h(0), h(inf) and validity of every point, broadcasting l, dh, pbar, s and
     the law's parameter (numbers or arrays) like numpy: T of the standard linear solid, or with
     material=FILE (a material file, as point()'s --material) its temperature in degC where the
@@ -278,9 +295,24 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     as point()'s (None: the engine's default, periodic). Points that share (l, s, dh) share
     the model's per-pitch work (a grid is fast: over 2e6 points/s under periodic; scattered
     pitches and dh cost a table row each under periodic, a curve each under refined).
-    ValueError with the command line's message for a value out of range."""
+    ValueError with the command line's message for a value out of range.
+    Physical units as on the command line: pressure= ('2kPa', or a list of such) instead of
+    pbar with a material; l and dh as text with a length unit ('150um') with R= ('50um', the
+    punch's radius of curvature); ramp_time with a time unit ('30s') with a material. Bare
+    numbers stay in the scales (R, E0*, T_eps or the material's time unit)."""
+    if pressure is not None:
+        if pbar is not None:
+            raise ValueError("classify: pbar and pressure both given; valid: one of them")
+        if not all(isinstance(v, str) and any(c.isalpha() and c not in "eE" for c in v)
+                   for v in np.asarray(pressure, dtype=object).reshape(-1)):
+            raise ValueError(f"pressure = {pressure!r}: no unit; valid: text with a pressure unit ('2kPa', "
+                             f"Pa, kPa, MPa or GPa), or pbar= in E0*")
+        pbar = pressure
     if pbar is None or s is None:
-        raise ValueError("classify: pbar and s are required")
+        raise ValueError("classify: pbar (or pressure) and s are required")
+    l, dh, pbar = (_in_scale(v, n, material, R) for v, n in ((l, "l"), (dh, "dh"), (pbar, "pbar")))
+    if ramp_time is not None:
+        ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
     if material is None:
         if T is None or temperature is not None:
             raise ValueError("classify: give T (the standard linear solid), or material= (and temperature= "
@@ -332,12 +364,33 @@ def _decoded_flags(variable, meanings: list[str], codes: list[int]):
     return indexing.LazilyIndexedArray(Decoded())
 
 
-def open_map(path) -> "xarray.Dataset":  # noqa: F821
+def _physical_scales(attrs) -> dict:
+    """One unit of each scale the map knows, in physical units: R (attribute R, '50 um') in
+    its unit, E0/(1-nu^2) (E0_star_Pa) in Pa, R^2 E0/(1-nu^2) in N, T_eps in the material's
+    time unit (times already are)."""
+    scales = {}
+    if "E0_star_Pa" in attrs:
+        scales["E0/(1-nu^2)"] = (float(attrs["E0_star_Pa"]), "Pa")
+    if "R" in attrs:
+        R = attrs["R"]
+        number, unit = (R.decode() if isinstance(R, bytes) else str(R)).split()
+        scales["R"] = (float(number), unit)
+        if "E0_star_Pa" in attrs:
+            scales["R^2 E0/(1-nu^2)"] = (float(attrs["R_m"]) ** 2 * float(attrs["E0_star_Pa"]), "N")
+    return scales
+
+
+def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
     """A regime map (from `punchsweep sweep`) as an xarray.Dataset: every flag variable
     (regime, valid, bem_regime, answer_regime, ...) decoded to its meanings as text
     ('immediate', 'delayed', ..., 'not_computed'), its codes kept as NAME_code; every
     variable and coordinate with a `units` attribute (the scale it is measured in: R,
-    T_eps, E0/(1-nu^2), R^2 E0/(1-nu^2), or 1). Nothing is read until it is used (the
+    T_eps, E0/(1-nu^2), R^2 E0/(1-nu^2), or 1). With units="physical" (the default), the
+    values whose scale the map knows are in physical units, `units` a UDUNITS-2 string:
+    lengths in the unit of the sweep's model.R (um for R = 50um), pressures in Pa and loads
+    in N for a material map; such a variable keeps its scale in `scaled_by` and the factor
+    in `per_scaled` (scaled value = value / per_scaled). units="scaled": as the file stores
+    them. Nothing is read until it is used (the
     production map's flags would take 13 GB as text). NotAMapError (a ValueError) for a
     file that is missing, damaged or no punchsweep map."""
     import xarray as xr
@@ -363,6 +416,20 @@ def open_map(path) -> "xarray.Dataset":  # noqa: F821
             ds[name] = xr.Variable(ds[name].dims, _decoded_flags(ds[name].variable, meanings, codes),
                                    {**attrs, "units": "1"})
         else:
-            units = attrs.get("scaled_by", attrs.get("units", "1"))
-            ds[name].attrs["units"] = units.decode() if isinstance(units, bytes) else str(units)
+            unit = attrs.get("scaled_by", attrs.get("units", "1"))
+            ds[name].attrs["units"] = unit.decode() if isinstance(unit, bytes) else str(unit)
+    if units not in ("physical", "scaled"):
+        raise ValueError(f"open_map: units={units!r}; valid: 'physical' or 'scaled'")
+    scales = _physical_scales(ds.attrs) if units == "physical" else {}
+    for name in list(ds.variables):
+        scale = ds[name].attrs.get("units")
+        if scale not in scales:
+            continue
+        factor, unit = scales[scale]
+        attrs = {**ds[name].attrs, "units": unit, "scaled_by": scale, "per_scaled": factor}
+        if name in ds.coords:
+            ds = ds.assign_coords({name: (ds[name].dims, ds[name].values * factor, attrs)})
+        else:
+            ds[name] = ds[name] * factor
+            ds[name].attrs = attrs
     return ds
