@@ -36,8 +36,10 @@ std::string law_hint(const std::string& option, const std::vector<std::string>& 
                        : "");
     }
   }
-  if (option == "--" + std::string(model::temperature_parameter().name) && !material) {
-    return " (a material's temperature: give --material FILE, a material file with a [shift])";
+  if (option == "--" + std::string(model::temperature_parameter().name)) {
+    return material ? " (this material file has no [shift], so its law takes no temperature; add a [shift] "
+                      "section, docs/materials.md)"
+                    : " (a material's temperature: give --material FILE, a material file with a [shift])";
   }
   return {};
 }

@@ -317,6 +317,9 @@ TEST(Cli, material_inputs_are_refused_with_their_range) {
                  "with --material the law is the file's, which takes --temperature");
   expect_refused(point + " --T 2 --temperature 40", "unknown option --temperature",
                  "(a material's temperature: give --material FILE");
+  const std::string no_shift = std::string(PUNCHSWEEP_SOURCE_DIR) + "/materials/silicone_elite_double32.ini";
+  expect_refused("--material " + no_shift + point + " --temperature 40", "unknown option --temperature",
+                 "this material file has no [shift], so its law takes no temperature");
   expect_refused("--material " + wlf + point + " --ramp -1", "--ramp", "t_r >= 0");
   expect_refused("--material " + wlf + point + " --load-table '0:0, 5:0.9, 6:0.5, 9:1'", "--load-table",
                  "does not recede");
