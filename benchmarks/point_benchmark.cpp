@@ -2,11 +2,11 @@
 // Run: build/benchmarks/point_benchmark [--benchmark_repetitions=5]
 #include <benchmark/benchmark.h>
 
-#include "model/point_evaluation.hpp"
-#include "model/regime.hpp"
-#include "model/standard_linear_solid.hpp"
-#include "model/elastic_two_level.hpp"
-#include "model/two_level.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/laws/standard_linear_solid.hpp"
+#include "model/two_level/elastic_two_level.hpp"
+#include "model/two_level/two_level.hpp"
 
 using namespace punchsweep::model;
 

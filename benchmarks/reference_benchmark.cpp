@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/fft_influence.hpp"
 #include "reference/periodic_grid.hpp"

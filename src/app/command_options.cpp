@@ -13,6 +13,7 @@
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
 #include "map/axis_parser.hpp"
+#include "model/point/parameters.hpp"
 
 namespace po = boost::program_options;
 

@@ -9,12 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/material.hpp"
-#include "model/creep_laws.hpp"
-#include "model/parameters.hpp"
-#include "model/shape.hpp"
-#include "model/units.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/laws/material.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/point/parameters.hpp"
+#include "model/problem/shape.hpp"
+#include "model/numerics/units.hpp"
 #include "input/scaled_value.hpp"
 
 namespace punchsweep::app {
@@ -31,7 +31,7 @@ double read_real(const boost::program_options::variables_map& vm, const char* na
                  const char* range, const std::function<bool(double)>& in_range);
 
 /// Declares --NAME for `parameter` with its meaning, unit, range and default (or
-/// "required"), as model/parameters.hpp declares them.
+/// "required"), as model/point/parameters.hpp declares them.
 /// `requirement` replaces "required" / "default X" in the help when given.
 void add_parameter_option(boost::program_options::options_description& opts, const model::Parameter& parameter,
                           const std::string& requirement = {});

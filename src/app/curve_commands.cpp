@@ -9,13 +9,14 @@
 
 #include "app/command_options.hpp"
 #include "app/usage_error.hpp"
-#include "model/creep_laws.hpp"
-#include "model/creep_weighted_load.hpp"
-#include "model/elastic_two_level.hpp"
-#include "model/localization.hpp"
-#include "model/single_level.hpp"
-#include "model/single_level_shells.hpp"
-#include "model/two_level.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/load/creep_weighted_load.hpp"
+#include "model/two_level/elastic_two_level.hpp"
+#include "model/problem/localization.hpp"
+#include "model/localization/single_level.hpp"
+#include "model/localization/single_level_shells.hpp"
+#include "model/two_level/two_level.hpp"
+#include "model/point/parameters.hpp"
 
 namespace po = boost::program_options;
 

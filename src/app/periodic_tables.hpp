@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "model/periodic_table.hpp"
+#include "model/localization/periodic_table.hpp"
 #include "reference/periodic_table_builder.hpp"
 
 namespace punchsweep::app {

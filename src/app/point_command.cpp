@@ -7,8 +7,8 @@
 #include "app/command_options.hpp"
 #include "app/point_output.hpp"
 #include "app/usage_error.hpp"
-#include "model/localization.hpp"
-#include "model/point_evaluation.hpp"
+#include "model/problem/localization.hpp"
+#include "model/point/point_evaluation.hpp"
 
 namespace po = boost::program_options;
 

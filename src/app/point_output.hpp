@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "app/command_options.hpp"
-#include "model/point_evaluation.hpp"
+#include "model/point/point_evaluation.hpp"
 
 namespace punchsweep::app {
 

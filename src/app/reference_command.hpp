@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/command_options.hpp"
-#include "model/stop_request.hpp"
+#include "model/numerics/stop_request.hpp"
 #include "reference/reference_point.hpp"
 
 namespace punchsweep::app {

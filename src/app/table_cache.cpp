@@ -16,7 +16,7 @@
 
 #include "io/file_descriptor.hpp"
 #include "app/periodic_tables.hpp"
-#include "model/shell_sums.hpp"
+#include "model/localization/shell_sums.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::app {

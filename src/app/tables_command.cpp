@@ -13,7 +13,7 @@
 #include "app/usage_error.hpp"
 #include "app/value_parsing.hpp"
 #include "app/version.hpp"
-#include "model/shape.hpp"
+#include "model/problem/shape.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace po = boost::program_options;

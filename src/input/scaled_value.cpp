@@ -3,7 +3,7 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "model/material.hpp"
+#include "model/laws/material.hpp"
 
 namespace punchsweep::input {
 

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "map/axis_parser.hpp"
-#include "model/parameters.hpp"
-#include "model/units.hpp"
+#include "model/point/parameters.hpp"
+#include "model/numerics/units.hpp"
 
 namespace punchsweep::model {
 class Material;

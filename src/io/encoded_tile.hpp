@@ -3,7 +3,7 @@
 #include <array>
 #include <iterator>
 
-#include "model/validity.hpp"
+#include "model/point/validity.hpp"
 #include <cstddef>
 #include <cstdint>
 #include <vector>

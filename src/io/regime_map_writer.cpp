@@ -14,9 +14,9 @@
 #include <string>
 
 #include "io/map_variables.hpp"
-#include "model/parameters.hpp"
-#include "model/regime.hpp"
-#include "model/validity.hpp"
+#include "model/point/parameters.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/point/validity.hpp"
 
 namespace punchsweep::io {
 

@@ -42,7 +42,7 @@ struct MapAttributes {
   /// `R`): the physical size of the scale R, in the unit the user gave it; empty: not given.
   std::string R{};
   double R_m = 0.0;  ///< the same in metres (global attribute `R_m`), for loads in N
-  std::string localization = "paper";  ///< the localization model's spelling (model/localization.hpp)
+  std::string localization = "paper";  ///< the localization model's spelling (model/problem/localization.hpp)
 };
 
 /// Writes a regime map: an HDF5 file laid out as a netCDF-4/CF-1.8 dataset, which
@@ -54,7 +54,7 @@ struct MapAttributes {
 ///   `l`, `dh`, `T`, `pbar`, `s`), then `time`: 1-D float64 dimension scales with `units`
 ///   "1" and `long_name`, and `scaled_by` the scale of a scaled quantity ("R",
 ///   "E0/(1-nu^2)", "T_eps"; none for pure numbers), as the axis's model parameter declares
-///   them (model/parameters.hpp). Every real data variable has `units` "1" and `scaled_by`
+///   them (model/point/parameters.hpp). Every real data variable has `units` "1" and `scaled_by`
 ///   likewise (map::QuantitySpec::scale); the global attribute `scales` says what the scales
 ///   are. So UDUNITS-based tools (cf-units, pint-xarray) read every `units` correctly.
 ///   Integer axes such as `s` are float64 too, so every coordinate has one type and a

@@ -15,7 +15,7 @@
 #include <limits>
 #include <string_view>
 
-#include "model/point_evaluation.hpp"
+#include "model/point/point_evaluation.hpp"
 
 namespace punchsweep::map {
 
@@ -55,7 +55,7 @@ struct QuantitySpec {
   Extent extent;
   Source source;
   Flags flags;                 ///< Flags::none for reals
-  /// The scale the value is measured in (model/units.hpp): "R", "T_eps", "R^2 E0/(1-nu^2)",
+  /// The scale the value is measured in (model/numerics/units.hpp): "R", "T_eps", "R^2 E0/(1-nu^2)",
   /// or "1" for a pure number; empty for flags. The map writes `units = "1"` for every real
   /// and names the scale in `scaled_by` (UDUNITS would read "R" as the roentgen).
   std::string_view scale;

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "model/integer_power.hpp"
+#include "model/numerics/integer_power.hpp"
 
 namespace punchsweep::reference {
 

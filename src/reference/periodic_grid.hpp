@@ -1,14 +1,14 @@
 #pragma once
 /// @file
 /// The periodic grid of the boundary-element reference solver and the surface profiles on
-/// it. Units as in model/units.hpp: lengths in R (pressures in E0*, time in T_eps).
+/// it. Units as in model/numerics/units.hpp: lengths in R (pressures in E0*, time in T_eps).
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/shape.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/problem/shape.hpp"
 
 namespace punchsweep::reference {
 

@@ -6,8 +6,8 @@
 
 #include <functional>
 
-#include "model/periodic_table.hpp"
-#include "model/stop_request.hpp"
+#include "model/localization/periodic_table.hpp"
+#include "model/numerics/stop_request.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 

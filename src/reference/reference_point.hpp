@@ -3,7 +3,7 @@
 /// One parameter point of the two-level punch system evaluated by the periodic
 /// boundary-element reference solver: the same outputs as model::evaluate_point, from the
 /// full contact problem on a grid instead of the localization method. Units as in
-/// model/units.hpp: lengths in R, pressures in E0*, loads in R^2 E0*, time in T_eps.
+/// model/numerics/units.hpp: lengths in R, pressures in E0*, loads in R^2 E0*, time in T_eps.
 
 #include <limits>
 #include <optional>
@@ -12,11 +12,11 @@
 #include <string_view>
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/creep_law.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/regime.hpp"
-#include "model/stop_request.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/laws/creep_law.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/numerics/stop_request.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "model/gauss_rules.hpp"
+#include "model/numerics/gauss_rules.hpp"
 
 namespace punchsweep::reference {
 

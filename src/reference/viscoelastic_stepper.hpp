@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
-#include "model/creep_law.hpp"
-#include "model/load_shape.hpp"
+#include "model/laws/creep_law.hpp"
+#include "model/problem/load_shape.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 

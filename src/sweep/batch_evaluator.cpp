@@ -9,8 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "model/creep_weighted_load.hpp"
-#include "model/load_shape.hpp"
+#include "model/load/creep_weighted_load.hpp"
+#include "model/problem/load_shape.hpp"
 
 namespace punchsweep::sweep {
 namespace {

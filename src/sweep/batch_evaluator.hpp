@@ -6,11 +6,11 @@
 #include <span>
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/creep_law.hpp"
-#include "model/creep_laws.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/stop_request.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/laws/creep_law.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/numerics/stop_request.hpp"
 #include "sweep/value_cache.hpp"
 
 namespace punchsweep::sweep {

@@ -11,10 +11,10 @@
 
 #include "map/grid.hpp"
 #include "map/quantities.hpp"
-#include "model/creep_laws.hpp"
-#include "model/localization.hpp"
-#include "model/material.hpp"
-#include "model/units.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/problem/localization.hpp"
+#include "model/laws/material.hpp"
+#include "model/numerics/units.hpp"
 
 namespace punchsweep::sweep {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "model/point_evaluation.hpp"
+#include "model/point/point_evaluation.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::sweep {

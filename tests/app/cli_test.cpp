@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
-#include "model/point_evaluation.hpp"
-#include "model/single_level.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/localization/single_level.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 namespace {
 

@@ -33,7 +33,38 @@ for dir in "$src"/*/; do
       echo "${file#"$src"/}: includes $target/, which layer $layer may not (allowed: ${allowed[$layer]})"
       status=1
     fi
-  done < <(grep -H -E '^#include "[a-z_]+/' "$dir"*.hpp "$dir"*.cpp 2>/dev/null || true)
+  done < <(find "$dir" -name '*.hpp' -o -name '*.cpp' | sort | xargs grep -H -E '^#include "[a-z_]+/' 2>/dev/null || true)
+done
+
+# Inside src/model, the parts in their order (src/model/CMakeLists.txt): a file includes
+# its own part or one before it, never one after.
+model_parts=(numerics problem laws load localization two_level point)
+declare -A part_rank=()
+for k in "${!model_parts[@]}"; do part_rank[${model_parts[$k]}]=$k; done
+for dir in "$src"/model/*/; do
+  part=$(basename "$dir")
+  if [[ -z "${part_rank[$part]+set}" ]]; then
+    echo "src/model/$part: a folder that is no part of the model (add it to model_parts here and to src/model/CMakeLists.txt)"
+    status=1
+    continue
+  fi
+  while IFS= read -r line; do
+    file=${line%%:*}
+    target=$(sed -E 's/.*#include "model\/([a-z_]+)\/.*/\1/' <<<"$line")
+    checked=$((checked + 1))
+    if [[ -z "${part_rank[$target]+set}" ]]; then
+      echo "${file#"$src"/}: includes model/$target/, which is no part of the model"
+      status=1
+    elif (( part_rank[$target] > part_rank[$part] )); then
+      echo "${file#"$src"/}: includes model/$target/, a part after $part (order: ${model_parts[*]})"
+      status=1
+    fi
+  done < <(grep -H -E '^#include "model/' "$dir"*.hpp "$dir"*.cpp 2>/dev/null || true)
+done
+for file in "$src"/model/*.hpp "$src"/model/*.cpp; do
+  [[ -e "$file" ]] || continue
+  echo "${file#"$src"/}: a file directly in src/model; it belongs in one of its parts (${model_parts[*]})"
+  status=1
 done
 if [[ $status -eq 0 ]]; then
   echo "$checked project includes checked: every one follows the layers"

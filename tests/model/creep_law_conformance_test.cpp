@@ -18,11 +18,12 @@
 
 #include <functional>
 
-#include "model/creep_laws.hpp"
-#include "model/kelvin_series.hpp"
-#include "model/power_law.hpp"
-#include "model/prony_series.hpp"
-#include "model/time_shift.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/laws/kelvin_series.hpp"
+#include "model/laws/power_law.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/laws/time_shift.hpp"
+#include "model/point/parameters.hpp"
 
 using namespace punchsweep::model;
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "model/parameters.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/point/parameters.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
 

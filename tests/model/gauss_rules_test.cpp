@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "model/gauss_rules.hpp"
+#include "model/numerics/gauss_rules.hpp"
 
 using namespace punchsweep::model;
 

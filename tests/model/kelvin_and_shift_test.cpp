@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "model/kelvin_series.hpp"
-#include "model/prony_series.hpp"
-#include "model/standard_linear_solid.hpp"
-#include "model/time_shift.hpp"
+#include "model/laws/kelvin_series.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/laws/standard_linear_solid.hpp"
+#include "model/laws/time_shift.hpp"
 
 using namespace punchsweep::model;
 

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "model/creep_weighted_load.hpp"
-#include "model/load_shape.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/pressure.hpp"
-#include "model/prony_series.hpp"
-#include "model/single_level.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/load/creep_weighted_load.hpp"
+#include "model/problem/load_shape.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/localization/pressure.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/localization/single_level.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "model/material.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/laws/material.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
 

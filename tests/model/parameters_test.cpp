@@ -5,9 +5,9 @@
 #include <sstream>
 #include <string>
 
-#include "model/contact_problem.hpp"
-#include "model/creep_laws.hpp"
-#include "model/parameters.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/point/parameters.hpp"
 
 using namespace punchsweep::model;
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <random>
 
-#include "model/point_evaluation.hpp"
-#include "model/standard_linear_solid.hpp"
-#include "model/two_level.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/standard_linear_solid.hpp"
+#include "model/two_level/two_level.hpp"
 
 using namespace punchsweep::model;
 

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "model/power_law.hpp"
+#include "model/laws/power_law.hpp"
 
 using namespace punchsweep::model;
 

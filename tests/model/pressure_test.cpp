@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/pressure.hpp"
-#include "model/shape.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/localization/pressure.hpp"
+#include "model/problem/shape.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
 

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/prony_series.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
 

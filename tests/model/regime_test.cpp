@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "model/point_evaluation.hpp"
-#include "model/regime.hpp"
-#include "model/single_level.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/localization/single_level.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/contact_problem.hpp"
-#include "model/shape.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/problem/shape.hpp"
 
 using namespace punchsweep::model;
 

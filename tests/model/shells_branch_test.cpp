@@ -10,13 +10,13 @@
 #include <numbers>
 #include <random>
 
-#include "model/localization.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/standard_linear_solid.hpp"
-#include "model/regime.hpp"
-#include "model/root_finding.hpp"
-#include "model/shells_branch.hpp"
-#include "model/two_level_shells.hpp"
+#include "model/problem/localization.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/standard_linear_solid.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/numerics/root_finding.hpp"
+#include "model/two_level/shells_branch.hpp"
+#include "model/two_level/two_level_shells.hpp"
 
 using namespace punchsweep::model;
 

@@ -14,16 +14,16 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "model/lattice.hpp"
-#include "model/localization.hpp"
-#include "model/pressure.hpp"
-#include "model/regime.hpp"
-#include "model/shell_sums.hpp"
-#include "model/single_level.hpp"
-#include "model/elastic_two_level.hpp"
-#include "model/single_level_shells.hpp"
-#include "model/spot_average.hpp"
-#include "model/two_level_shells.hpp"
+#include "model/numerics/lattice.hpp"
+#include "model/problem/localization.hpp"
+#include "model/localization/pressure.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/localization/shell_sums.hpp"
+#include "model/localization/single_level.hpp"
+#include "model/two_level/elastic_two_level.hpp"
+#include "model/localization/single_level_shells.hpp"
+#include "model/localization/spot_average.hpp"
+#include "model/two_level/two_level_shells.hpp"
 
 using namespace punchsweep::model;
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/shape.hpp"
-#include "model/single_level.hpp"
+#include "model/problem/shape.hpp"
+#include "model/localization/single_level.hpp"
 
 using namespace punchsweep::model;
 

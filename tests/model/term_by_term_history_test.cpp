@@ -12,12 +12,12 @@
 #include <memory>
 #include <vector>
 
-#include "model/kelvin_series.hpp"
-#include "model/load_shape.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/prony_series.hpp"
+#include "model/laws/kelvin_series.hpp"
+#include "model/problem/load_shape.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/prony_series.hpp"
 #include "model/test_series_hidden.hpp"
-#include "model/time_shift.hpp"
+#include "model/laws/time_shift.hpp"
 
 using namespace punchsweep::model;
 using punchsweep::model::testing::SeriesHidden;

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "model/creep_law.hpp"
+#include "model/laws/creep_law.hpp"
 
 namespace punchsweep::model::testing {
 

@@ -6,11 +6,11 @@
 #include <numbers>
 #include <optional>
 
-#include "model/lattice.hpp"
-#include "model/long_term_guide.hpp"
-#include "model/single_level.hpp"
-#include "model/elastic_two_level.hpp"
-#include "model/two_level.hpp"
+#include "model/numerics/lattice.hpp"
+#include "model/two_level/long_term_guide.hpp"
+#include "model/localization/single_level.hpp"
+#include "model/two_level/elastic_two_level.hpp"
+#include "model/two_level/two_level.hpp"
 
 using namespace punchsweep::model;
 

@@ -1,4 +1,4 @@
-// The units an input may carry (model/units.hpp): each declared factor against UDUNITS-2
+// The units an input may carry (model/numerics/units.hpp): each declared factor against UDUNITS-2
 // (the `udunits2` program, an independent definition of the same symbols), and the parser
 // that reads "150um" and refuses what is not a unit of the dimension.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/units.hpp"
+#include "model/numerics/units.hpp"
 
 using namespace punchsweep::model;
 

@@ -10,10 +10,10 @@
 #include <cmath>
 #include <vector>
 
-#include "model/gauss_rules.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/prony_series.hpp"
-#include "model/two_level.hpp"
+#include "model/numerics/gauss_rules.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/two_level/two_level.hpp"
 
 using namespace punchsweep::model;
 

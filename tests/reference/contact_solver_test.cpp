@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "reference/closed_forms.hpp"
-#include "model/contact_problem.hpp"
+#include "model/problem/contact_problem.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/fft_influence.hpp"
 #include "reference/periodic_grid.hpp"

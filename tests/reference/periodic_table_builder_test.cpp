@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/periodic_table.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/localization/periodic_table.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 #include "reference/periodic_table_builder.hpp"

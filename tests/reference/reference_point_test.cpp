@@ -11,12 +11,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/contact_problem.hpp"
-#include "model/creep_weighted_load.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/regime.hpp"
-#include "model/prony_series.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/problem/contact_problem.hpp"
+#include "model/load/creep_weighted_load.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/two_level/regime.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "model/creep_law.hpp"
-#include "model/prony_series.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/laws/creep_law.hpp"
+#include "model/laws/prony_series.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 #include "model/test_series_hidden.hpp"
 #include "reference/closed_forms.hpp"
 #include "reference/contact_solver.hpp"

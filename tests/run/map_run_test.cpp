@@ -17,7 +17,7 @@
 #include "io/tile_journal.hpp"
 #include "map/test_grid.hpp"
 #include "map/tiling.hpp"
-#include "model/creep_laws.hpp"
+#include "model/laws/creep_laws.hpp"
 #include "run/disk_space.hpp"
 #include "run/map_run.hpp"
 #include "run/preflight.hpp"

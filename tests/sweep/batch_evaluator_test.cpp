@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "model/creep_laws.hpp"
-#include "model/load_shape.hpp"
-#include "model/material.hpp"
-#include "model/point_evaluation.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/problem/load_shape.hpp"
+#include "model/laws/material.hpp"
+#include "model/point/point_evaluation.hpp"
 #include "sweep/batch_evaluator.hpp"
 
 using namespace punchsweep;

@@ -6,13 +6,13 @@
 #include <cstring>
 #include <optional>
 
-#include "model/point_evaluation.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 #include "reference/reference_point.hpp"
 #include "sweep/tile_evaluator.hpp"
 #include "map/test_grid.hpp"
 #include "map/tiling.hpp"
-#include "model/creep_laws.hpp"
+#include "model/laws/creep_laws.hpp"
 
 using namespace punchsweep;
 using namespace punchsweep::sweep;

@@ -17,9 +17,9 @@
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/table_cache.hpp"
-#include "model/periodic_table.hpp"
-#include "model/point_evaluation.hpp"
-#include "model/standard_linear_solid.hpp"
+#include "model/localization/periodic_table.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/laws/standard_linear_solid.hpp"
 #include "reference/periodic_table_builder.hpp"
 
 using namespace punchsweep;

@@ -1,0 +1,50 @@
+#include "model/problem/parameter.hpp"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "model/problem/shape.hpp"
+
+namespace punchsweep::model {
+namespace {
+
+constexpr std::array<Parameter, 5> kProblemParameters{{
+    {kPitch, "R", "lattice pitch", "lattice pitch l, in R", "l > 0 (in R)", [](double v) { return v > 0.0; },
+     false, {}, "linspace(0.5, 1.25, 7)"},
+    {kHeightDifference, "R", "height difference of the punch levels",
+     "height difference dh of the two punch levels, in R", "dh >= 0 (in R)", [](double v) { return v >= 0.0; },
+     false, {}, "linspace(0.01, 0.12, 23)"},
+    {kPressure, "E0/(1-nu^2)", "nominal pressure", "constant nominal pressure pbar0, in E0* = E0/(1-nu^2)",
+     "pbar > 0 (in E0* = E0/(1-nu^2))", [](double v) { return v > 0.0; }, false, {}, "logspace(0.005, 0.08, 24)"},
+    {kExponent, "1", "shape exponent", "shape exponent s of f(r) = C r^s / R^(s-1) (1 cone, 2 paraboloid)",
+     "an integer in [1, 32]",
+     [](double v) { return v >= Shape::kMinExponent && v <= Shape::kMaxExponent; }, true, {}, "1, 2, 3"},
+    {kShapeConstant, "1", "shape constant", "shape constant C of f(r) (dimensionless; sphere: s = 2, C = 0.5)",
+     "C > 0", [](double v) { return v > 0.0; }, false, "0.5", {}},
+}};
+
+}  // namespace
+
+bool Parameter::admits(double value) const {
+  return std::isfinite(value) && (!integer || value == std::floor(value)) && in_range(value);
+}
+
+std::string Parameter::error(double value) const {
+  if (admits(value)) return {};
+  std::ostringstream out;
+  out.precision(17);
+  out << long_name << ' ' << name << " = " << value << " is outside its range: " << range;
+  return out.str();
+}
+
+std::span<const Parameter> problem_parameters() { return kProblemParameters; }
+
+const Parameter* problem_parameter(std::string_view name) {
+  for (const Parameter& p : kProblemParameters) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace punchsweep::model

@@ -1,0 +1,54 @@
+#include "model/two_level/regime.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "model/two_level/single_level_phase.hpp"
+
+namespace punchsweep::model {
+
+std::string_view regime_name(Regime regime) {
+  switch (regime) {
+    case Regime::immediate: return "immediate";
+    case Regime::delayed: return "delayed";
+    case Regime::never: return "never";
+  }
+  return "unknown";
+}
+
+Touchdown touchdown(const ContactProblem& problem) {
+  return visit_single_level(problem, [&](const auto& single) {
+    if constexpr (requires { single.touchdown(problem.dh); }) {
+      return single.touchdown(problem.dh);  // the periodic tables: in X directly
+    } else {
+      return touchdown(single, problem.dh);
+    }
+  });
+}
+
+Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
+  Classification out;
+  out.a1_star = touch.a1_star;
+  out.X_star = touch.X_star;
+  out.J_star = touch.X_star / load.pbar0();
+  if (out.J_star <= load.response_initial()) {
+    out.regime = Regime::immediate;
+    out.t_star = 0.0;
+    out.elastic_start = load.initial() > 0.0;
+  } else {
+    // g* = g(inf) exactly would mean touching only as t -> infinity: that is "never".
+    out.t_star = out.J_star < load.response_final() ? std::max(0.0, load.time_at_response(out.J_star))
+                                                    : std::numeric_limits<double>::infinity();
+    const double rise = load.shape().rise_time();
+    const bool while_rising = rise > 0.0 && out.t_star <= rise;
+    out.regime = !std::isfinite(out.t_star) ? Regime::never : while_rising ? Regime::immediate : Regime::delayed;
+  }
+  return out;
+}
+
+Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
+  return classify(touchdown(problem), CreepWeightedLoad(creep, problem.pbar0, problem.loading));
+}
+
+}  // namespace punchsweep::model
