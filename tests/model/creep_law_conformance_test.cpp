@@ -16,10 +16,15 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 
 #include "model/laws/creep_laws.hpp"
 #include "model/laws/kelvin_series.hpp"
+#include "model/laws/material.hpp"
+#include "model/laws/material_laws.hpp"
 #include "model/laws/power_law.hpp"
 #include "model/laws/prony_series.hpp"
 #include "model/laws/time_shift.hpp"
@@ -34,6 +39,12 @@ namespace {
 const std::map<std::string, std::vector<std::vector<double>>> kSamples{
     {"standard_linear_solid", {{1.0}, {1.5}, {2.5}, {10.0}, {40.0}}},
 };
+
+// A material file of `law` with its registered example keys.
+std::string material_file_of(const MaterialLaw& law) {
+  return "[material]\nname = conformance\nlaw = " + std::string(law.name) +
+         "\nmodulus_unit = MPa\ntime_unit = s\npoisson = 0.45\n" + std::string(law.example);
+}
 
 // A law to check: a registered one at parameter values, or one built directly (a law whose
 // data are lists, such as a Prony series, before material files select it by name).
@@ -79,6 +90,12 @@ std::vector<Case> cases() {
   // Power law (unlimited creep, a kernel singular at age 0): slow, middling and fast.
   for (const double n : {0.1, 0.4, 0.8}) {
     out.push_back({"power_law", nullptr, {}, [n] { return std::make_unique<PowerLaw>(n, 2.0); }});
+  }
+  // Every law a material file may name, built from its registered example file.
+  for (const MaterialLaw& law : material_laws()) {
+    out.push_back({"file_" + std::string(law.name), nullptr, {}, [&law] {
+                     return Material::parse(material_file_of(law), "example.ini").make({});
+                   }});
   }
   // A shifted law: a 3-term Prony series 100 times slower and 1000 times faster.
   for (const double a_T : {100.0, 1e-3}) {
@@ -312,3 +329,57 @@ TEST_P(CreepLawConformance, factory_refuses_values_outside_each_parameters_range
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryLaw, CreepLawConformance, ::testing::ValuesIn(cases()), case_name);
+
+// Every law of the material-file registry reads exactly the keys it declares: its example
+// uses only declared keys, each declared key is one the file reader accepts, a key of another
+// law is refused by name, a key its example needs is refused when missing, and
+// docs/materials.md documents every declared key.
+TEST(MaterialLaws, every_file_law_reads_its_declared_keys_and_refuses_others) {
+  std::ifstream docs_file(std::string(PUNCHSWEEP_SOURCE_DIR) + "/docs/materials.md");
+  std::stringstream docs;
+  docs << docs_file.rdbuf();
+  for (const MaterialLaw& law : material_laws()) {
+    SCOPED_TRACE(std::string(law.name));
+    EXPECT_EQ(find_material_law(law.name), &law);
+    const std::string file = material_file_of(law);
+    EXPECT_NO_THROW(Material::parse(file, "example.ini"));
+    std::istringstream lines{std::string(law.example)};
+    for (std::string line; std::getline(lines, line);) {
+      const std::string key = line.substr(0, line.find(' '));
+      EXPECT_TRUE(std::any_of(law.keys.begin(), law.keys.end(), [&](const MaterialKey& k) { return k.key == key; }))
+          << key << " is in the example but not declared";
+      // Without it the file is refused, naming the key (an optional key leaves a valid file).
+      std::string without = file;
+      without.erase(without.find(line + "\n"), line.size() + 1);
+      try {
+        Material::parse(without, "example.ini");
+        EXPECT_NE(std::string(std::find_if(law.keys.begin(), law.keys.end(),
+                                           [&](const MaterialKey& k) { return k.key == key; })->meaning)
+                      .find("optional"),
+                  std::string::npos)
+            << key << " is not optional, yet a file without it was accepted";
+      } catch (const MaterialError& e) {
+        EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      }
+    }
+    for (const MaterialKey& k : law.keys) {
+      EXPECT_NE(docs.str().find("`" + std::string(k.key) + "`"), std::string::npos)
+          << k.key << " is not in docs/materials.md";
+    }
+    for (const MaterialLaw& other : material_laws()) {
+      for (const MaterialKey& k : other.keys) {
+        if (std::any_of(law.keys.begin(), law.keys.end(), [&](const MaterialKey& own) { return own.key == k.key; })) {
+          continue;
+        }
+        try {
+          Material::parse(file + std::string(k.key) + " = 1\n", "example.ini");
+          ADD_FAILURE() << k.key << " of " << other.name << " was accepted in a " << law.name << " file";
+        } catch (const MaterialError& e) {
+          EXPECT_NE(std::string(e.what()).find(std::string(k.key) + " = 1: not a key of law = " + std::string(law.name)),
+                    std::string::npos)
+              << e.what();
+        }
+      }
+    }
+  }
+}

@@ -15,6 +15,7 @@
 
 #include "model/laws/creep_law.hpp"
 #include "model/laws/creep_laws.hpp"
+#include "model/laws/material_laws.hpp"
 #include "model/problem/parameter.hpp"
 #include "model/laws/time_shift.hpp"
 
@@ -51,7 +52,7 @@ class Material {
 
   /// "[material] name": the material and the published source of its numbers.
   const std::string& name() const { return name_; }
-  /// "prony", "kelvin", "power_law" (J = (1 + (t/t_1)^n)/E_0: keys E_0, n, t_1).
+  /// The law's name, one of material_laws(): "prony", "kelvin", "power_law".
   const std::string& law() const { return law_; }
   /// The unit of time of every t, tau_i, t* ("s", "min" or "h"): UDUNITS reads each.
   const std::string& time_unit() const { return time_unit_; }
@@ -88,9 +89,9 @@ class Material {
     Parameter parameter;
   };
   std::shared_ptr<const Temperature> temperature_;
-  // The normalized law's data (E_0 = 1): relaxation terms for prony, creep terms for kelvin.
-  double final_ = 0.0;  ///< prony: E_inf/E_0; kelvin: E_0/eta (0: no dashpot); power_law: n
-  std::vector<double> moduli_, times_;
+  /// The file's law (material_laws.hpp) and its data in E_0 = 1.
+  const MaterialLaw* file_law_ = nullptr;
+  MaterialTerms terms_;
 };
 
 }  // namespace punchsweep::model
