@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -47,6 +48,23 @@ enum class Fixed {
   reference_method, reference_grid, reference_sample, reference_seed
 };
 
+enum class Source { default_value, file, command_line };
+
+struct Setting {
+  std::string text;
+  Source source = Source::default_value;
+};
+
+// What a key's reader sees beside its text: where the text came from, the physical scales
+// (model.R, the material) for a value with a unit, and the axis a [grid] key fills.
+struct KeyContext {
+  const Setting& setting;
+  const input::PhysicalScales& scales;
+  map::Axis& axis;
+};
+
+// One config key, declared once: its help, how it is read into the config, how its final
+// value is written back (resolved_text) and what it adds to the map's identity.
 struct KeySpec {
   std::string section;
   std::string name;
@@ -56,18 +74,187 @@ struct KeySpec {
   std::string range;    // as printed after "valid range: "
   Fixed fixed = Fixed::none;
   const model::Parameter* parameter = nullptr;  // the axis's, or model.C's
+  /// Reads the key's text into the config: empty, or why the text is refused.
+  std::function<std::string(const std::string& text, const KeyContext& context, sweep::SweepConfig& config)> apply;
+  /// The final value resolved_text writes (empty function: the text as given).
+  std::function<std::string(const sweep::SweepConfig& config)> canonical = {};
+  /// The values of its identity lines, "KEY = VALUE" each (empty function: none).
+  std::function<std::vector<std::string>(const sweep::SweepConfig& config)> identity = {};
 };
 
-// Every key: the [grid] axes of every creep law (the default law's axes first, in their
-// order: model::sweep_axes), then the fixed keys. Declared by the model's parameters.
+std::string listed(const std::vector<double>& values) {
+  constexpr std::size_t kShown = 5;
+  if (values.size() <= kShown) return map::format_axis_values(values);
+  return map::format_axis_values({values.begin(), values.begin() + kShown}) + ", ... (" +
+         std::to_string(values.size()) + " in all)";
+}
+
+// Empty, or why `text` is not an axis whose values all pass `in_range`. With a `scale`, a
+// value may carry a physical unit (input::read_scaled_axis); with `required` it must.
+template <class InRange>
+std::string check_axis(const std::string& text, bool integers, InRange in_range, map::Axis& axis,
+                       const std::optional<input::Scale>& scale = std::nullopt, bool required = false) {
+  try {
+    axis = scale ? input::read_scaled_axis(text, integers, *scale, required) : map::parse_axis(text, integers);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  std::vector<double> outside;
+  for (const double v : axis.values) {
+    if (!in_range(v)) outside.push_back(v);
+  }
+  if (outside.empty()) return {};
+  return (outside.size() == 1 ? "value " : "values ") + listed(outside) +
+         (outside.size() == 1 ? " is" : " are") + " outside its range";
+}
+
+std::string check_bool(const std::string& text, bool& value) {
+  if (text == "true" || text == "1" || text == "yes") {
+    value = true;
+  } else if (text == "false" || text == "0" || text == "no") {
+    value = false;
+  } else {
+    return "'" + text + "' is not a boolean";
+  }
+  return {};
+}
+
+std::string check_chunk(const std::string& text, std::size_t& chunk) {
+  if (text == "auto") {
+    chunk = sweep::kAutoChunk;  // resolved at the start of the run (sweep::auto_chunk)
+    return {};
+  }
+  int value = 0;
+  try {
+    value = parse_integer(text, "run.chunk");
+  } catch (const UsageError&) {
+    const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+    return digits ? "value " + text + " is too large (at most " + std::to_string(std::numeric_limits<int>::max()) + ")"
+                  : "'" + text + "' is not an integer";
+  }
+  if (value < 1) return "value " + text + " is outside its range";
+  chunk = static_cast<std::size_t>(value);
+  return {};
+}
+
+// A whole non-negative decimal integer up to `max`; empty, or why `text` is not one.
+std::string check_whole(const std::string& text, std::uint64_t max, std::uint64_t& value) {
+  const char* end = text.data() + text.size();
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits) return "'" + text + "' is not a whole number";
+  std::uint64_t parsed = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), end, parsed);
+  if (ec != std::errc() || ptr != end || parsed > max) {
+    return "value " + text + " is too large (at most " + std::to_string(max) + ")";
+  }
+  value = parsed;
+  return {};
+}
+
+std::string check_bem_grid(const std::string& text, int& grid) {
+  std::uint64_t value = 0;
+  if (std::string problem = check_whole(text, std::numeric_limits<int>::max(), value); !problem.empty()) {
+    return problem;
+  }
+  if (!sweep::is_bem_grid(static_cast<double>(value))) return "value " + text + " is outside its range";
+  grid = static_cast<int>(value);
+  return {};
+}
+
+std::string check_sample(const std::string& text, sweep::ReferenceConfig& reference) {
+  using Rule = sweep::ReferenceConfig::SampleRule;
+  std::optional<std::uint64_t>& sample = reference.sample;
+  reference.rule = text == "invalid" ? Rule::invalid : text == "boundary" ? Rule::boundary : Rule::count;
+  if (text == "all" || reference.rule != Rule::count) {
+    sample.reset();
+    return {};
+  }
+  std::uint64_t value = 0;
+  if (std::string problem = check_whole(text, std::numeric_limits<std::uint64_t>::max(), value);
+      !problem.empty()) {
+    return problem;
+  }
+  if (value < 1) return "value " + text + " is outside its range";
+  sample = value;  // not above the grid's point count: checked once the grid is known
+  return {};
+}
+
+// The canonical text of a [reference] key, as resolved_text and identity write it.
+std::string reference_value(Fixed key, const sweep::ReferenceConfig& reference) {
+  switch (key) {
+    case Fixed::reference_method:
+      return reference.on() ? "bem" : "none";
+    case Fixed::reference_grid:
+      return std::to_string(reference.grid);
+    case Fixed::reference_sample:
+      if (reference.rule == sweep::ReferenceConfig::SampleRule::invalid) return "invalid";
+      if (reference.rule == sweep::ReferenceConfig::SampleRule::boundary) return "boundary";
+      return reference.sample ? std::to_string(*reference.sample) : "all";
+    default:
+      return std::to_string(reference.seed);
+  }
+}
+
+std::string bool_text(bool value) { return value ? "true" : "false"; }
+
+// The material files of model.material (a comma-separated list) read into `config`.
+std::string apply_materials(const std::string& text, const KeyContext& context, sweep::SweepConfig& config) {
+  config.material_path = text;
+  config.materials.clear();
+  config.material_labels.clear();
+  try {
+    std::string item;
+    std::istringstream list(text);
+    while (std::getline(list, item, ',')) {
+      item = run::trim(item);
+      if (item.empty()) continue;
+      // A path in a config file is taken from the file's folder, as a user reads it.
+      std::filesystem::path file(item);
+      if (context.setting.source == Source::file && file.is_relative()) {
+        file = std::filesystem::path(config.config_path).parent_path() / file;
+      }
+      config.materials.push_back(read_material_file(file.string(), ""));
+      std::string label = std::filesystem::path(item).stem().string();
+      if (std::find(config.material_labels.begin(), config.material_labels.end(), label) !=
+          config.material_labels.end()) {
+        throw UsageError("two material files are named " + label + "; valid: files of different names");
+      }
+      config.material_labels.push_back(label);
+    }
+    if (config.materials.size() == 1) {
+      config.material = config.materials.front();
+      config.material_spec = std::make_shared<const model::CreepLawSpec>(config.material->spec());
+    } else if (config.materials.size() > 1) {
+      config.material_spec = std::make_shared<const model::CreepLawSpec>(model::material_choice(config.materials));
+    }
+  } catch (const UsageError& e) {
+    return e.what();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return {};
+}
+
+// Every key, one row each: the [grid] axes of every creep law (the default law's axes first,
+// in their order: model::sweep_axes), then the fixed keys in the order of the help text,
+// resolved_text and the map's identity. A new key is a row here and its field in
+// sweep::SweepConfig.
 std::vector<KeySpec> make_keys() {
+  using Config = sweep::SweepConfig;
   std::vector<KeySpec> keys;
   const auto add_axis = [&](const model::Parameter* p) {
     for (const KeySpec& k : keys) {
       if (k.parameter == p) return;
     }
     keys.push_back({"grid", std::string(p->name), "AXIS", std::string(p->sweep_default), std::string(p->meaning),
-                    std::string(p->range), Fixed::none, p});
+                    std::string(p->range), Fixed::none, p,
+                    [p](const std::string& text, const KeyContext& c, Config&) {
+                      std::string problem = check_axis(
+                          text, p->integer, [p](double v) { return p->in_range(v); }, c.axis,
+                          input::scale_of(p->scale, c.scales));
+                      c.axis.name = std::string(p->name);
+                      return problem;
+                    }});
   };
   for (const model::CreepLawSpec& law : model::creep_laws()) {
     for (const model::Parameter* p : model::sweep_axes(law.parameters)) add_axis(p);
@@ -78,70 +265,234 @@ std::vector<KeySpec> make_keys() {
                   "the nominal pressure in a pressure unit (1kPa, 2kPa or linspace(1kPa, 5kPa, 9)), divided by the "
                   "material's E0* into the pbar axis; instead of grid.pbar",
                   "empty, or pressures > 0 each with its unit (Pa, kPa, MPa or GPa); needs model.material",
-                  Fixed::grid_pressure});
+                  Fixed::grid_pressure, nullptr, [](const std::string& text, const KeyContext& c, Config&) {
+                    if (text.empty()) return std::string();
+                    const model::Parameter& pbar = *model::find_parameter(model::kPressure);
+                    std::string problem = check_axis(
+                        text, false, [](double v) { return v > 0.0; }, c.axis, input::scale_of(pbar.scale, c.scales),
+                        true);
+                    c.axis.name = std::string(pbar.name);
+                    return problem;
+                  }});
   keys.push_back({"model", "R", "LENGTH", "",
                   "the punch's radius of curvature R with its unit (50um; for a spherical cap, s = 2 and C = 0.5): "
                   "grid.l and grid.dh may then be given in a length unit (150um), and the map adds them in R's unit",
-                  "empty (lengths in R), or a length > 0 with its unit (m, mm, um or nm)", Fixed::model_R});
+                  "empty (lengths in R), or a length > 0 with its unit (m, mm, um or nm)", Fixed::model_R, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    config.R.reset();
+                    if (text.empty()) return std::string();
+                    try {
+                      config.R = input::read_length_scale(text);
+                    } catch (const std::invalid_argument& e) {
+                      const std::string what = e.what();
+                      return what.substr(0, what.find("; valid"));
+                    }
+                    return std::string();
+                  },
+                  [](const Config& config) {
+                    return config.R ? map::format_axis_value(config.R->number) + std::string(config.R->unit->name) : "";
+                  },
+                  // R names the physical unit of the map's lengths; maps without it keep their identity.
+                  [](const Config& config) {
+                    if (!config.R) return std::vector<std::string>{};
+                    return std::vector<std::string>{"model.R = " + map::format_axis_value(config.R->number) + " " +
+                                                    std::string(config.R->unit->name)};
+                  }});
   const model::Parameter& C = *model::find_parameter(model::kShapeConstant);
   keys.push_back({"model", "C", "C", std::string(C.point_default), std::string(C.meaning), std::string(C.range),
-                  Fixed::model_C, &C});
+                  Fixed::model_C, &C,
+                  [&C](const std::string& text, const KeyContext&, Config& config) {
+                    try {
+                      config.C = parse_real(text, "model.C");
+                    } catch (const UsageError&) {
+                      return "'" + text + "' is not a finite number";
+                    }
+                    if (!C.admits(config.C)) return "value " + map::format_axis_value(config.C) + " is outside its range";
+                    return std::string();
+                  },
+                  [](const Config& config) { return map::format_axis_value(config.C); },
+                  [](const Config& config) {
+                    return std::vector<std::string>{"model.C = " + map::format_axis_value(config.C)};
+                  }});
   keys.push_back({"model", "creep_law", "NAME", std::string(model::creep_laws().front().name),
                   "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
-                  Fixed::model_creep_law});
+                  Fixed::model_creep_law, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    const model::CreepLawSpec* law = model::find_creep_law(text);
+                    if (law == nullptr) return "'" + text + "' is not a known creep law";
+                    config.creep_law = law;
+                    return std::string();
+                  },
+                  [](const Config& config) {
+                    return std::string(config.material_spec ? model::creep_laws().front().name : config.creep_law->name);
+                  },
+                  [](const Config& config) {
+                    return std::vector<std::string>{"model.creep_law = " + std::string(config.creep_law->name)};
+                  }});
   keys.push_back({"model", "material", "FILES", "",
                   "material file (materials/NAME.ini, see docs/materials.md); replaces creep_law: the axes are then l, dh, "
                   "[temperature when the file has a [shift]], pbar, s, and times are in the file's time_unit. A "
                   "list (a.ini, b.ini) adds a categorical axis material after dh, labelled by the files' names",
                   "empty, or readable material files (several: one time_unit, all or none with a [shift])",
-                  Fixed::model_material});
+                  Fixed::model_material, nullptr, apply_materials, {},
+                  [](const Config& config) {
+                    std::vector<std::string> lines;
+                    for (const auto& material : config.materials) {
+                      // The material's content, not its path: the same file moved is the same map.
+                      std::uint32_t crc = io::crc32(reinterpret_cast<const unsigned char*>(material->text().data()),
+                                                    material->text().size());
+                      char hex[9];
+                      std::snprintf(hex, sizeof hex, "%08x", crc);
+                      lines.push_back("model.material = " + material->name() + " (file crc32 " + hex + ")");
+                    }
+                    return lines;
+                  }});
   keys.push_back({"model", "load_table", "T:PHI,...", "",
                   "the nominal pressure pbar phi(t), phi piecewise linear through the points t:phi (time in T_eps "
                   "or the material's unit), from 0:phi0 to t_n:1; empty: a step (a ramp: grid.ramp_time)",
-                  "empty, or points from 0:phi0 to t_n:1 with phi non-decreasing in [0, 1]", Fixed::model_load_table});
+                  "empty, or points from 0:phi0 to t_n:1 with phi non-decreasing in [0, 1]", Fixed::model_load_table,
+                  nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    config.load_text = text;
+                    config.loading = model::LoadShape{};
+                    if (text.empty()) return std::string();
+                    try {
+                      config.loading = parse_load_table(text, "model.load_table");
+                    } catch (const UsageError& e) {
+                      const std::string what = e.what();
+                      return what.substr(what.find(": ") + 2);
+                    }
+                    return std::string();
+                  },
+                  {},
+                  [](const Config& config) {
+                    if (config.load_text.empty()) return std::vector<std::string>{};
+                    return std::vector<std::string>{"model.load_table = " + config.load_text};
+                  }});
   keys.push_back({"model", "localization", "L", std::string(model::kDefaultLocalization),
                   "the model (docs/model.md, sections 11, 14)", model::localization_spellings(),
-                  Fixed::model_localization});
+                  Fixed::model_localization, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    try {
+                      config.localization = model::parse_localization(text);
+                    } catch (const std::invalid_argument& e) {
+                      const std::string what = e.what();
+                      return what.substr(0, what.find(';'));
+                    }
+                    return std::string();
+                  },
+                  [](const Config& config) { return config.localization.spelling(); },
+                  // The paper's model leaves no line, so that maps made before the choice existed resume.
+                  [](const Config& config) {
+                    if (config.localization.is_paper()) return std::vector<std::string>{};
+                    return std::vector<std::string>{"model.localization = " + config.localization.spelling()};
+                  }});
   keys.push_back({"time", "times", "AXIS", "0, 0.5, 1, 2, 5",
-                  "snapshot times of the stored time series, in T_eps (or the material's time_unit)",
-                  kTimesRange, Fixed::time_times});
+                  "snapshot times of the stored time series, in T_eps (or the material's time_unit)", kTimesRange,
+                  Fixed::time_times, nullptr,
+                  [](const std::string& text, const KeyContext& c, Config& config) {
+                    map::Axis times;
+                    std::string problem = check_axis(
+                        text, false, [](double t) { return t >= 0.0; }, times, input::scale_of("T_eps", c.scales));
+                    config.times = times.values;
+                    return problem;
+                  },
+                  {},
+                  [](const Config& config) {
+                    return std::vector<std::string>{"time.times = " + map::format_axis_values(config.times)};
+                  }});
   keys.push_back({"output", "file", "FILE", "regime_map.h5", "the HDF5 regime map to write",
-                  "a non-empty file name without '#' or line breaks", Fixed::output_file});
+                  "a non-empty file name without '#' or line breaks", Fixed::output_file, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    config.output = text;
+                    return text.empty() ? std::string("the file name is empty") : std::string();
+                  }});
   keys.push_back({"output", "quantities", "WHAT", "full",
                   "what the map stores: regime (regime, t*, validity, long-term state) or full (also the time "
                   "series at time.times)",
-                  "regime or full", Fixed::output_quantities});
+                  "regime or full", Fixed::output_quantities, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    if (text != "regime" && text != "full") return "'" + text + "' is not one of regime, full";
+                    config.quantities = text == "full" ? map::Quantities::full : map::Quantities::regime;
+                    return std::string();
+                  },
+                  {},
+                  [](const Config& config) {
+                    return std::vector<std::string>{std::string("output.quantities = ") +
+                                                    (config.quantities == map::Quantities::full ? "full" : "regime")};
+                  }});
+  const auto chunk_text = [](const Config& config) {
+    return config.chunk == sweep::kAutoChunk ? std::string("auto") : std::to_string(config.chunk);
+  };
   keys.push_back({"run", "chunk", "N", "4096",
                   "target number of values per tile and HDF5 chunk of the largest variable: grid points, or "
                   "grid points x snapshot times for a map with time series (then chunk / times points, at "
                   "least 1)",
                   "an integer >= 1, or auto (from the work and the rank count: about 16 tiles a rank, "
                   "256 to 4096 values; a resumed run keeps the size its map was started with)",
-                  Fixed::run_chunk});
-  keys.push_back({"run", "quiet", "BOOL", "false", "no progress output", kBoolRange, Fixed::run_quiet});
+                  Fixed::run_chunk, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) { return check_chunk(text, config.chunk); },
+                  chunk_text,
+                  [chunk_text](const Config& config) { return std::vector<std::string>{"run.chunk = " + chunk_text(config)}; }});
+  keys.push_back({"run", "quiet", "BOOL", "false", "no progress output", kBoolRange, Fixed::run_quiet, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) { return check_bool(text, config.quiet); },
+                  [](const Config& config) { return bool_text(config.quiet); }});
   keys.push_back({"run", "resume", "BOOL", "false",
                   "continue an interrupted sweep into the existing partial map; refused if its grid, model or "
                   "reference differ",
-                  kBoolRange, Fixed::run_resume});
+                  kBoolRange, Fixed::run_resume, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) { return check_bool(text, config.resume); },
+                  [](const Config& config) { return bool_text(config.resume); }});
   keys.push_back({"run", "overwrite", "BOOL", "false", "replace an existing map at output.file", kBoolRange,
-                  Fixed::run_overwrite});
-  keys.push_back({"reference", "method", "METHOD", "none",
-                  "reference solver evaluated beside the model: none, or bem (the periodic boundary-element solver "
-                  "of `punchsweep reference`; adds the bem_* variables)",
-                  "none or bem", Fixed::reference_method});
-  keys.push_back({"reference", "grid", "N", "128",
-                  "BEM nodes per side N of the l x l cell (spacing l/N; the cost of a point grows faster than N^2, "
-                  "--dry-run measures it)",
-                  "an even integer in [16, 2048]", Fixed::reference_grid});
-  keys.push_back({"reference", "sample", "K", "all",
-                  "the grid points that get the reference: all; K distinct points drawn uniformly at random (a "
-                  "pure function of the grid's shape, K and reference.seed); invalid: the points the model flags "
-                  "invalid (where it has no answer); boundary: the points whose model regime differs from a grid "
-                  "neighbour's (one step along any axis: where a regime is least sure); the others read "
-                  "not_computed",
-                  "all, invalid, boundary, or an integer in [1, the grid's point count]", Fixed::reference_sample});
-  keys.push_back({"reference", "seed", "SEED", "1", "seed of the random sample of reference.sample = K",
-                  "an integer in [0, 9223372036854775807]", Fixed::reference_seed});
+                  Fixed::run_overwrite, nullptr,
+                  [](const std::string& text, const KeyContext&, Config& config) {
+                    return check_bool(text, config.overwrite);
+                  },
+                  [](const Config& config) { return bool_text(config.overwrite); }});
+  // The [reference] keys: canonical values and identity lines by reference_value.
+  const auto reference_row = [&](const char* name, const char* value_name, const char* default_text,
+                                 const char* meaning, const char* range, Fixed fixed,
+                                 std::function<std::string(const std::string&, Config&)> apply) {
+    keys.push_back({"reference", name, value_name, default_text, meaning, range, fixed, nullptr,
+                    [apply](const std::string& text, const KeyContext&, Config& config) { return apply(text, config); },
+                    [fixed](const Config& config) { return reference_value(fixed, config.reference); },
+                    [fixed, name](const Config& config) {
+                      std::vector<std::string> lines{"reference." + std::string(name) + " = " +
+                                                     reference_value(fixed, config.reference)};
+                      // Maps with BEM points name the solver: one made by another does not resume.
+                      if (fixed == Fixed::reference_seed && config.reference.on()) {
+                        lines.push_back("reference.solver = " + std::string(reference::kSolverRevision));
+                      }
+                      return lines;
+                    }});
+  };
+  reference_row("method", "METHOD", "none",
+                "reference solver evaluated beside the model: none, or bem (the periodic boundary-element solver "
+                "of `punchsweep reference`; adds the bem_* variables)",
+                "none or bem", Fixed::reference_method, [](const std::string& text, Config& config) {
+                  if (text != "none" && text != "bem") return "'" + text + "' is not one of none, bem";
+                  config.reference.method = text == "bem" ? sweep::ReferenceMethod::bem : sweep::ReferenceMethod::none;
+                  return std::string();
+                });
+  reference_row("grid", "N", "128",
+                "BEM nodes per side N of the l x l cell (spacing l/N; the cost of a point grows faster than N^2, "
+                "--dry-run measures it)",
+                "an even integer in [16, 2048]", Fixed::reference_grid,
+                [](const std::string& text, Config& config) { return check_bem_grid(text, config.reference.grid); });
+  reference_row("sample", "K", "all",
+                "the grid points that get the reference: all; K distinct points drawn uniformly at random (a "
+                "pure function of the grid's shape, K and reference.seed); invalid: the points the model flags "
+                "invalid (where it has no answer); boundary: the points whose model regime differs from a grid "
+                "neighbour's (one step along any axis: where a regime is least sure); the others read "
+                "not_computed",
+                "all, invalid, boundary, or an integer in [1, the grid's point count]", Fixed::reference_sample,
+                [](const std::string& text, Config& config) { return check_sample(text, config.reference); });
+  reference_row("seed", "SEED", "1", "seed of the random sample of reference.sample = K",
+                "an integer in [0, 9223372036854775807]", Fixed::reference_seed,
+                // The map stores the seed as an int64 attribute.
+                [](const std::string& text, Config& config) {
+                  return check_whole(text, std::numeric_limits<std::int64_t>::max(), config.reference.seed);
+                });
   return keys;
 }
 
@@ -314,13 +665,6 @@ std::map<std::string, std::string> read_config_file(const std::string& path) {
   return values;
 }
 
-enum class Source { default_value, file, command_line };
-
-struct Setting {
-  std::string text;
-  Source source = Source::default_value;
-};
-
 po::variables_map parse_command_line(const std::vector<std::string>& args, const po::options_description& opts) {
   po::variables_map cli;
   const po::positional_options_description no_positionals;
@@ -380,103 +724,6 @@ std::vector<Setting> resolve_settings(const po::variables_map& cli, const std::s
   return settings;
 }
 
-std::string listed(const std::vector<double>& values) {
-  constexpr std::size_t kShown = 5;
-  if (values.size() <= kShown) return map::format_axis_values(values);
-  return map::format_axis_values({values.begin(), values.begin() + kShown}) + ", ... (" +
-         std::to_string(values.size()) + " in all)";
-}
-
-// Empty, or why `text` is not an axis whose values all pass `in_range`. With a `scale`, a
-// value may carry a physical unit (input::read_scaled_axis); with `required` it must.
-template <class InRange>
-std::string check_axis(const std::string& text, bool integers, InRange in_range, map::Axis& axis,
-                       const std::optional<input::Scale>& scale = std::nullopt, bool required = false) {
-  try {
-    axis = scale ? input::read_scaled_axis(text, integers, *scale, required) : map::parse_axis(text, integers);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  std::vector<double> outside;
-  for (const double v : axis.values) {
-    if (!in_range(v)) outside.push_back(v);
-  }
-  if (outside.empty()) return {};
-  return (outside.size() == 1 ? "value " : "values ") + listed(outside) +
-         (outside.size() == 1 ? " is" : " are") + " outside its range";
-}
-
-std::string check_bool(const std::string& text, bool& value) {
-  if (text == "true" || text == "1" || text == "yes") {
-    value = true;
-  } else if (text == "false" || text == "0" || text == "no") {
-    value = false;
-  } else {
-    return "'" + text + "' is not a boolean";
-  }
-  return {};
-}
-
-std::string check_chunk(const std::string& text, std::size_t& chunk) {
-  if (text == "auto") {
-    chunk = sweep::kAutoChunk;  // resolved at the start of the run (sweep::auto_chunk)
-    return {};
-  }
-  int value = 0;
-  try {
-    value = parse_integer(text, dotted(Fixed::run_chunk));
-  } catch (const UsageError&) {
-    const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-    return digits ? "value " + text + " is too large (at most " + std::to_string(std::numeric_limits<int>::max()) + ")"
-                  : "'" + text + "' is not an integer";
-  }
-  if (value < 1) return "value " + text + " is outside its range";
-  chunk = static_cast<std::size_t>(value);
-  return {};
-}
-
-// A whole non-negative decimal integer up to `max`; empty, or why `text` is not one.
-std::string check_whole(const std::string& text, std::uint64_t max, std::uint64_t& value) {
-  const char* end = text.data() + text.size();
-  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-  if (!digits) return "'" + text + "' is not a whole number";
-  std::uint64_t parsed = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), end, parsed);
-  if (ec != std::errc() || ptr != end || parsed > max) {
-    return "value " + text + " is too large (at most " + std::to_string(max) + ")";
-  }
-  value = parsed;
-  return {};
-}
-
-std::string check_bem_grid(const std::string& text, int& grid) {
-  std::uint64_t value = 0;
-  if (std::string problem = check_whole(text, std::numeric_limits<int>::max(), value); !problem.empty()) {
-    return problem;
-  }
-  if (!sweep::is_bem_grid(static_cast<double>(value))) return "value " + text + " is outside its range";
-  grid = static_cast<int>(value);
-  return {};
-}
-
-std::string check_sample(const std::string& text, sweep::ReferenceConfig& reference) {
-  using Rule = sweep::ReferenceConfig::SampleRule;
-  std::optional<std::uint64_t>& sample = reference.sample;
-  reference.rule = text == "invalid" ? Rule::invalid : text == "boundary" ? Rule::boundary : Rule::count;
-  if (text == "all" || reference.rule != Rule::count) {
-    sample.reset();
-    return {};
-  }
-  std::uint64_t value = 0;
-  if (std::string problem = check_whole(text, std::numeric_limits<std::uint64_t>::max(), value);
-      !problem.empty()) {
-    return problem;
-  }
-  if (value < 1) return "value " + text + " is outside its range";
-  sample = value;  // not above the grid's point count: checked once the grid is known
-  return {};
-}
-
 // Whether key `spec` reads values whose unit depends on model.R or the material: read after them.
 bool reads_scaled_values(const KeySpec& spec) {
   return spec.fixed == Fixed::none || spec.fixed == Fixed::grid_pressure || spec.fixed == Fixed::time_times;
@@ -509,155 +756,7 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
       // A config file could not hold it, so resolved_text would not read back.
       problem = "it contains '#' or a line break, which a config file cannot hold";
     } else {
-      switch (spec.fixed) {
-        case Fixed::none:
-          problem = check_axis(
-              text, spec.parameter->integer, [&](double v) { return spec.parameter->in_range(v); }, axes[k],
-              input::scale_of(spec.parameter->scale, scales));
-          axes[k].name = spec.name;
-          break;
-        case Fixed::grid_pressure:
-          if (text.empty()) break;
-          problem = check_axis(
-              text, false, [](double v) { return v > 0.0; }, axes[k],
-              input::scale_of(model::find_parameter(model::kPressure)->scale, scales), true);
-          axes[k].name = std::string(model::kPressure);
-          break;
-        case Fixed::model_R:
-          config.R.reset();
-          if (text.empty()) break;
-          try {
-            config.R = input::read_length_scale(text);
-          } catch (const std::invalid_argument& e) {
-            const std::string what = e.what();
-            problem = what.substr(0, what.find("; valid"));
-          }
-          break;
-        case Fixed::model_C:
-          try {
-            config.C = parse_real(text, dotted(spec));
-            if (!spec.parameter->admits(config.C)) {
-              problem = "value " + map::format_axis_value(config.C) + " is outside its range";
-            }
-          } catch (const UsageError&) {
-            problem = "'" + text + "' is not a finite number";
-          }
-          break;
-        case Fixed::model_creep_law:
-          if (const model::CreepLawSpec* law = model::find_creep_law(text)) {
-            config.creep_law = law;
-          } else {
-            problem = "'" + text + "' is not a known creep law";
-          }
-          break;
-        case Fixed::model_material:
-          config.material_path = text;
-          config.materials.clear();
-          config.material_labels.clear();
-          try {
-            std::string item;
-            std::istringstream list(text);
-            while (std::getline(list, item, ',')) {
-              item = run::trim(item);
-              if (item.empty()) continue;
-              // A path in a config file is taken from the file's folder, as a user reads it.
-              std::filesystem::path file(item);
-              if (settings[k].source == Source::file && file.is_relative()) {
-                file = std::filesystem::path(config.config_path).parent_path() / file;
-              }
-              config.materials.push_back(read_material_file(file.string(), ""));
-              std::string label = std::filesystem::path(item).stem().string();
-              if (std::find(config.material_labels.begin(), config.material_labels.end(), label) !=
-                  config.material_labels.end()) {
-                throw UsageError("two material files are named " + label + "; valid: files of different names");
-              }
-              config.material_labels.push_back(label);
-            }
-            if (config.materials.size() == 1) {
-              config.material = config.materials.front();
-              config.material_spec = std::make_shared<const model::CreepLawSpec>(config.material->spec());
-            } else if (config.materials.size() > 1) {
-              config.material_spec =
-                  std::make_shared<const model::CreepLawSpec>(model::material_choice(config.materials));
-            }
-          } catch (const UsageError& e) {
-            problem = e.what();
-          } catch (const std::invalid_argument& e) {
-            problem = e.what();
-          }
-          break;
-        case Fixed::model_localization:
-          try {
-            config.localization = model::parse_localization(text);
-          } catch (const std::invalid_argument& e) {
-            const std::string what = e.what();
-            problem = what.substr(0, what.find(';'));
-          }
-          break;
-        case Fixed::model_load_table:
-          config.load_text = text;
-          config.loading = model::LoadShape{};
-          if (!text.empty()) {
-            try {
-              config.loading = parse_load_table(text, dotted(spec));
-            } catch (const UsageError& e) {
-              const std::string what = e.what();
-              problem = what.substr(what.find(": ") + 2);
-            }
-          }
-          break;
-        case Fixed::time_times: {
-          map::Axis times;
-          problem = check_axis(text, false, [](double t) { return t >= 0.0; }, times,
-                               input::scale_of("T_eps", scales));
-          config.times = times.values;
-          break;
-        }
-        case Fixed::output_file:
-          if (text.empty()) problem = "the file name is empty";
-          config.output = text;
-          break;
-        case Fixed::output_quantities:
-          if (text == "regime") {
-            config.quantities = map::Quantities::regime;
-          } else if (text == "full") {
-            config.quantities = map::Quantities::full;
-          } else {
-            problem = "'" + text + "' is not one of regime, full";
-          }
-          break;
-        case Fixed::run_chunk:
-          problem = check_chunk(text, config.chunk);
-          break;
-        case Fixed::run_quiet:
-          problem = check_bool(text, config.quiet);
-          break;
-        case Fixed::run_resume:
-          problem = check_bool(text, config.resume);
-          break;
-        case Fixed::run_overwrite:
-          problem = check_bool(text, config.overwrite);
-          break;
-        case Fixed::reference_method:
-          if (text == "none") {
-            config.reference.method = sweep::ReferenceMethod::none;
-          } else if (text == "bem") {
-            config.reference.method = sweep::ReferenceMethod::bem;
-          } else {
-            problem = "'" + text + "' is not one of none, bem";
-          }
-          break;
-        case Fixed::reference_grid:
-          problem = check_bem_grid(text, config.reference.grid);
-          break;
-        case Fixed::reference_sample:
-          problem = check_sample(text, config.reference);
-          break;
-        case Fixed::reference_seed:
-          // The map stores the seed as an int64 attribute.
-          problem = check_whole(text, std::numeric_limits<std::int64_t>::max(), config.reference.seed);
-          break;
-      }
+      problem = spec.apply(text, KeyContext{settings[k], scales, axes[k]}, config);
     }
     if (!problem.empty()) {
       keyed.emplace_back(k, dotted(spec) + " = " + (text.empty() ? "''" : text) + ": " + problem +
@@ -758,22 +857,6 @@ std::string grid_size_problem(const map::Grid& grid) {
          std::to_string(kMax) + " points";
 }
 
-// The canonical text of a [reference] key, as resolved_text and identity write it.
-std::string reference_value(Fixed key, const sweep::ReferenceConfig& reference) {
-  switch (key) {
-    case Fixed::reference_method:
-      return reference.on() ? "bem" : "none";
-    case Fixed::reference_grid:
-      return std::to_string(reference.grid);
-    case Fixed::reference_sample:
-      if (reference.rule == sweep::ReferenceConfig::SampleRule::invalid) return "invalid";
-      if (reference.rule == sweep::ReferenceConfig::SampleRule::boundary) return "boundary";
-      return reference.sample ? std::to_string(*reference.sample) : "all";
-    default:
-      return std::to_string(reference.seed);
-  }
-}
-
 // The sample must fit the grid: empty, or the problem line.
 std::string sample_size_problem(const sweep::SweepConfig& config, const std::string& text) {
   const std::size_t points = config.grid.points();
@@ -782,36 +865,6 @@ std::string sample_size_problem(const sweep::SweepConfig& config, const std::str
          std::to_string(points) + (points == 1 ? " point" : " points") +
          "; valid range: all, invalid, boundary, or an integer in [1, " + std::to_string(points) +
          "] (the grid's point count)";
-}
-
-// The final value of each key as it goes into resolved_text: axes keep their given form
-// (linspace stays readable), the rest are canonical.
-std::string resolved_value(Fixed key, const std::string& text, const sweep::SweepConfig& config) {
-  switch (key) {
-    case Fixed::model_C:
-      return map::format_axis_value(config.C);
-    case Fixed::model_R:
-      return config.R ? map::format_axis_value(config.R->number) + std::string(config.R->unit->name) : "";
-    case Fixed::model_localization:
-      return config.localization.spelling();
-    case Fixed::model_creep_law:
-      return std::string(config.material_spec ? model::creep_laws().front().name : config.creep_law->name);
-    case Fixed::run_chunk:
-      return config.chunk == sweep::kAutoChunk ? "auto" : std::to_string(config.chunk);
-    case Fixed::run_quiet:
-      return config.quiet ? "true" : "false";
-    case Fixed::run_resume:
-      return config.resume ? "true" : "false";
-    case Fixed::run_overwrite:
-      return config.overwrite ? "true" : "false";
-    case Fixed::reference_method:
-    case Fixed::reference_grid:
-    case Fixed::reference_sample:
-    case Fixed::reference_seed:
-      return reference_value(key, config.reference);
-    default:
-      return text;
-  }
 }
 
 std::string resolved_text(const std::vector<Setting>& settings, const sweep::SweepConfig& config) {
@@ -842,7 +895,7 @@ std::string resolved_text(const std::vector<Setting>& settings, const sweep::Swe
         text += "# from the command line\n";
         break;
     }
-    text += spec.name + " = " + resolved_value(spec.fixed, settings[k].text, config) + "\n";
+    text += spec.name + " = " + (spec.canonical ? spec.canonical(config) : settings[k].text) + "\n";
   }
   return text;
 }
@@ -852,31 +905,10 @@ std::vector<std::string> identity(const sweep::SweepConfig& config) {
   for (const map::Axis& axis : config.grid.axes) {
     lines.push_back("grid." + axis.name + " = " + map::format_axis_values(axis.values));
   }
-  lines.push_back("model.C = " + map::format_axis_value(config.C));
-  // R names the physical unit of the map's lengths; maps without it keep their identity.
-  if (config.R) lines.push_back("model.R = " + map::format_axis_value(config.R->number) + " " + std::string(config.R->unit->name));
-  lines.push_back("model.creep_law = " + std::string(config.creep_law->name));
-  for (const auto& material : config.materials) {
-    // The material's content, not its path: the same file moved is the same map.
-    std::uint32_t crc = io::crc32(reinterpret_cast<const unsigned char*>(material->text().data()),
-                                  material->text().size());
-    char hex[9];
-    std::snprintf(hex, sizeof hex, "%08x", crc);
-    lines.push_back("model.material = " + material->name() + " (file crc32 " + hex + ")");
+  for (const KeySpec& spec : keys()) {
+    if (!spec.identity) continue;
+    for (std::string& line : spec.identity(config)) lines.push_back(std::move(line));
   }
-  if (!config.load_text.empty()) lines.push_back("model.load_table = " + config.load_text);
-  // The paper's model leaves no line, so that maps made before the choice existed resume.
-  if (!config.localization.is_paper()) lines.push_back("model.localization = " + config.localization.spelling());
-  lines.push_back("time.times = " + map::format_axis_values(config.times));
-  lines.push_back(std::string("output.quantities = ") +
-                  (config.quantities == map::Quantities::full ? "full" : "regime"));
-  lines.push_back("run.chunk = " + (config.chunk == sweep::kAutoChunk ? std::string("auto") : std::to_string(config.chunk)));
-  for (const Fixed key : {Fixed::reference_method, Fixed::reference_grid, Fixed::reference_sample,
-                          Fixed::reference_seed}) {
-    lines.push_back(dotted(key) + " = " + reference_value(key, config.reference));
-  }
-  // Maps with BEM points name the solver: one made by another does not resume.
-  if (config.reference.on()) lines.push_back("reference.solver = " + std::string(reference::kSolverRevision));
   return lines;
 }
 

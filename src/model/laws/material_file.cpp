@@ -112,6 +112,12 @@ double MaterialFile::number(const std::string& id) const {
 
 std::vector<double> MaterialFile::list(const std::string& id) const { return parse_numbers(id); }
 
+double MaterialFile::positive(const std::string& id, const std::string& range) const {
+  const double value = number(id);
+  if (!(value > 0.0)) fail_value(id, "outside its range: " + range);
+  return value;
+}
+
 void MaterialFile::fail(std::size_t line, const std::string& what) const {
   throw MaterialError(origin_ + ":" + std::to_string(line) + ": " + what);
 }

@@ -29,6 +29,8 @@ class MaterialFile {
   /// One number; a comma-separated list of numbers.
   double number(const std::string& id) const;
   std::vector<double> list(const std::string& id) const;
+  /// One number > 0; else "outside its range: RANGE".
+  double positive(const std::string& id, const std::string& range) const;
 
   /// Refuses the first key given but never read by the law (or the shift) the file names,
   /// listing the keys that were: a stray `n = 0.3` in a Prony file is not silently dropped.

@@ -30,8 +30,7 @@ MaterialTerms read_prony(const MaterialFile& f) {
     for (const char* key : {"material.E_inf", "material.E_i"}) {
       if (f.has(key)) f.fail_value(key, "give either E_inf with E_i, or E_0 with g_i, not both");
     }
-    t.E0 = f.number("material.E_0");
-    if (!(t.E0 > 0.0)) f.fail_value("material.E_0", "outside its range: E_0 > 0");
+    t.E0 = f.positive("material.E_0", "E_0 > 0");
     t.moduli = f.list("material.g_i");
     f.check_terms("material.g_i", t.moduli, "material.tau_i", tau, "g_i > 0");
     double sum = 0.0;
@@ -42,8 +41,7 @@ MaterialTerms read_prony(const MaterialFile& f) {
     }
     t.final = 1.0 - sum;
   } else {
-    const double E_inf = f.number("material.E_inf");
-    if (!(E_inf > 0.0)) f.fail_value("material.E_inf", "outside its range: E_inf > 0");
+    const double E_inf = f.positive("material.E_inf", "E_inf > 0");
     const std::vector<double> E = f.list("material.E_i");
     f.check_terms("material.E_i", E, "material.tau_i", tau, "E_i > 0");
     t.E0 = E_inf;
@@ -65,15 +63,13 @@ constexpr std::array<MaterialKey, 4> kKelvinKeys{{
 
 MaterialTerms read_kelvin(const MaterialFile& f) {
   MaterialTerms t;
-  t.E0 = f.number("material.E_0");
-  if (!(t.E0 > 0.0)) f.fail_value("material.E_0", "outside its range: E_0 > 0");
+  t.E0 = f.positive("material.E_0", "E_0 > 0");
   const std::vector<double> J = f.list("material.J_i");  // in 1/modulus_unit
   t.times = f.list("material.lambda_i");
   f.check_terms("material.J_i", J, "material.lambda_i", t.times, "J_i > 0 (in 1/modulus_unit)");
   for (const double j : J) t.moduli.push_back(j * t.E0);
   if (f.has("material.eta")) {
-    const double eta = f.number("material.eta");  // in modulus_unit * time_unit
-    if (!(eta > 0.0)) f.fail_value("material.eta", "outside its range: eta > 0 (in modulus_unit time_unit)");
+    const double eta = f.positive("material.eta", "eta > 0 (in modulus_unit time_unit)");
     t.final = t.E0 / eta;
   }
   return t;
@@ -88,12 +84,10 @@ constexpr std::array<MaterialKey, 3> kPowerKeys{{
 
 MaterialTerms read_power(const MaterialFile& f) {
   MaterialTerms t;
-  t.E0 = f.number("material.E_0");
-  if (!(t.E0 > 0.0)) f.fail_value("material.E_0", "outside its range: E_0 > 0");
+  t.E0 = f.positive("material.E_0", "E_0 > 0");
   t.final = f.number("material.n");
   if (!(t.final > 0.0 && t.final < 1.0)) f.fail_value("material.n", "outside its range: 0 < n < 1");
-  const double t_1 = f.number("material.t_1");
-  if (!(t_1 > 0.0)) f.fail_value("material.t_1", "outside its range: t_1 > 0 (in time_unit)");
+  const double t_1 = f.positive("material.t_1", "t_1 > 0 (in time_unit)");
   t.times = {t_1};
   return t;
 }
