@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sweep_options.hpp"
+#include "input/sweep_options.hpp"
 #include "io/encoded_tile.hpp"
 #include "io/tile_encoder.hpp"
 #include "map/tiling.hpp"
@@ -24,7 +24,7 @@ using Clock = std::chrono::steady_clock;
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   std::ostringstream help;
-  sweep::SweepConfig config = app::parse_sweep_options(args, help, nullptr);
+  sweep::SweepConfig config = input::parse_sweep_options(args, help, nullptr);
   const std::string scratch = (std::filesystem::temp_directory_path() / "punchsweep_tile_costs.h5").string();
   std::filesystem::remove(scratch + ".partial");
   std::filesystem::remove(scratch + ".partial.journal");

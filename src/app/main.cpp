@@ -9,7 +9,7 @@
 #include "app/sweep_command.hpp"
 #include "app/table_cache.hpp"
 #include "app/tables_command.hpp"
-#include "app/usage_error.hpp"
+#include "input/usage_error.hpp"
 #include "app/version.hpp"
 
 namespace {
@@ -35,12 +35,12 @@ constexpr const char* kTopHelp =
 }  // namespace
 
 int main(int argc, char** argv) {
-  using punchsweep::app::UsageError;
+  using punchsweep::input::UsageError;
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
       std::cout << kTopHelp;
-      return args.empty() ? punchsweep::app::kUsageExitCode : 0;
+      return args.empty() ? punchsweep::input::kUsageExitCode : 0;
     }
     if (args[0] == "--version") {
       std::cout << "punchsweep " << punchsweep::app::kVersion << " (git "
@@ -55,11 +55,11 @@ int main(int argc, char** argv) {
     if (args[0] == "elastic") return punchsweep::app::run_elastic_command(rest, std::cout);
     if (args[0] == "reference") return punchsweep::app::run_reference_command(rest, std::cout);
     if (args[0] == "tables") return punchsweep::app::run_tables_command(rest, std::cout);
-    throw UsageError("unknown command '" + args[0] +
+    throw punchsweep::input::UsageError("unknown command '" + args[0] +
                      "' (commands: point, sweep, single-level, elastic, reference, tables; see punchsweep --help)");
-  } catch (const UsageError& e) {
+  } catch (const punchsweep::input::UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
-    return punchsweep::app::kUsageExitCode;
+    return punchsweep::input::kUsageExitCode;
   } catch (const std::exception& e) {
     std::cerr << "punchsweep: internal error: " << e.what() << "\n";
     return 1;

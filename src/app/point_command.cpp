@@ -4,9 +4,9 @@
 
 #include <ostream>
 
-#include "app/command_options.hpp"
+#include "input/command_options.hpp"
 #include "app/point_output.hpp"
-#include "app/usage_error.hpp"
+#include "input/usage_error.hpp"
 #include "model/problem/localization.hpp"
 #include "model/point/point_evaluation.hpp"
 
@@ -17,16 +17,16 @@ namespace {
 
 constexpr const char* kUsage = "usage: punchsweep point --l L --dh DH --T T --pbar P --s S [options]";
 
-po::options_description point_options(const PointMaterial& material) {
+po::options_description point_options(const input::PointMaterial& material) {
   po::options_description opts(
       "punchsweep point: regime, t*, and the contact state over time of one parameter point\n"
       "(two-level square lattice of punches f(r) = C r^s / R^(s-1) pressed with constant\n"
       "nominal pressure into a standard linear solid, or the material of --material FILE).\n\n"
       "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), loads in R^2 E0*,\n"
       "time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
-  add_point_options(opts, material.spec);
-  add_material_options(opts);
-  add_localization_option(opts, std::string(model::kDefaultLocalization));
+  input::add_point_options(opts, material.spec);
+  input::add_material_options(opts);
+  input::add_localization_option(opts, std::string(model::kDefaultLocalization));
   opts.add_options()
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
@@ -39,19 +39,19 @@ namespace {
 
 /// The point's inputs read and checked, in the command's order (the first bad one is the
 /// one reported), with the snapshot times.
-PointRun read_point(const po::variables_map& vm, const PointMaterial& material, model::EvaluationOptions* options) {
-  PointRun run{read_point_inputs(vm, material), {}};
-  run.inputs.problem.localization = read_localization(vm);
-  options->times = read_times(vm, run.inputs.scales);
+PointRun read_point(const po::variables_map& vm, const input::PointMaterial& material, model::EvaluationOptions* options) {
+  PointRun run{input::read_point_inputs(vm, material), {}};
+  run.inputs.problem.localization = input::read_localization(vm);
+  options->times = input::read_times(vm, run.inputs.scales);
   return run;
 }
 
 }  // namespace
 
 int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
-  const PointMaterial material = find_point_material(args);
+  const input::PointMaterial material = input::find_point_material(args);
   const po::options_description opts = point_options(material);
-  const po::variables_map vm = parse_command(args, opts, "point");
+  const po::variables_map vm = input::parse_command(args, opts, "point");
   if (vm.count("help")) {
     out << kUsage << "\n\n" << opts << "\n"
         << "Example: punchsweep point --l 0.75 --dh 0.075 --T 2.5 --pbar 0.06 --s 2 --format json\n"
@@ -60,7 +60,7 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
   }
   model::EvaluationOptions options;
   PointRun run = read_point(vm, material, &options);
-  const std::string format_text = read_choice(vm, "format", {"table", "json", "csv"});
+  const std::string format_text = input::read_choice(vm, "format", {"table", "json", "csv"});
   const OutputFormat format = format_text == "json"  ? OutputFormat::json
                               : format_text == "csv" ? OutputFormat::csv
                                                      : OutputFormat::table;
@@ -70,9 +70,9 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
 }
 
 PointRun evaluate_point_command(const std::vector<std::string>& args) {
-  const PointMaterial material = find_point_material(args);
+  const input::PointMaterial material = input::find_point_material(args);
   model::EvaluationOptions options;
-  PointRun run = read_point(parse_command(args, point_options(material), "point"), material, &options);
+  PointRun run = read_point(input::parse_command(args, point_options(material), "point"), material, &options);
   run.result = model::evaluate_point(run.inputs.problem, *run.inputs.creep, options);
   return run;
 }

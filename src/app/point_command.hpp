@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/command_options.hpp"
+#include "input/command_options.hpp"
 #include "model/point/point_evaluation.hpp"
 
 namespace punchsweep::app {
@@ -15,7 +15,7 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out);
 
 /// One point as `punchsweep point ARGS` evaluates it: its inputs and its result.
 struct PointRun {
-  PointInputs inputs;
+  input::PointInputs inputs;
   model::PointResult result;
 };
 

@@ -15,7 +15,7 @@ namespace {
 using map::kQuantities;
 using map::QuantitySpec;
 
-std::string number(double v) { return json_number(v); }
+std::string number(double v) { return input::json_number(v); }
 
 std::string json_string(const std::string& text) {
   std::string quoted = "\"";
@@ -53,7 +53,7 @@ struct JsonFields final : PointFields {
     out << "  \"" << name << "\": " << (value ? "true" : "false") << ",\n";
   }
   void number(std::string_view name, double value) override {
-    out << "  \"" << name << "\": " << punchsweep::app::json_number(value) << ",\n";
+    out << "  \"" << name << "\": " << punchsweep::input::json_number(value) << ",\n";
   }
   void series(std::string_view name, const std::vector<double>& values) override {
     out << (in_series ? ",\n    \"" : "  \"series\": {\n    \"") << name << "\": " << series_array(values);
@@ -85,7 +85,7 @@ void write_physical(std::ostream& out, const std::vector<PhysicalField>& physica
   out << "\n  }";
 }
 
-void write_json(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
+void write_json(std::ostream& out, const input::PointInputs& inputs, const model::PointResult& r) {
   out << "{\n";
   // The model, where it is not the paper's (whose output keeps its form).
   if (!inputs.problem.localization.is_paper()) {
@@ -128,7 +128,7 @@ namespace {
 std::string significant(double v, int digits);
 }  // namespace
 
-std::vector<PhysicalField> physical_fields(const PointInputs& inputs, const model::PointResult& r) {
+std::vector<PhysicalField> physical_fields(const input::PointInputs& inputs, const model::PointResult& r) {
   std::vector<PhysicalField> fields;
   const input::PhysicalScales& scales = inputs.scales;
   if (!scales.R && !scales.E0_star) return fields;
@@ -183,7 +183,7 @@ std::string fixed(double v, int width, int precision) {
   return buf;
 }
 
-void write_table(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
+void write_table(std::ostream& out, const input::PointInputs& inputs, const model::PointResult& r) {
   out << "punchsweep point: " << inputs.describe() << "\n"
       << "  (units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in " << inputs.time_unit
       << ")\n";
@@ -246,7 +246,7 @@ void write_table(std::ostream& out, const PointInputs& inputs, const model::Poin
 
 std::string csv_number(double v) { return std::isfinite(v) ? number(v) : "nan"; }
 
-void write_csv(std::ostream& out, const PointInputs& inputs, const model::PointResult& r) {
+void write_csv(std::ostream& out, const input::PointInputs& inputs, const model::PointResult& r) {
   out << "# punchsweep point: " << inputs.describe() << "\n";
   for (const QuantitySpec& q : kQuantities) {
     if (!is_point(q)) continue;
@@ -281,7 +281,7 @@ void write_csv(std::ostream& out, const PointInputs& inputs, const model::PointR
 
 }  // namespace
 
-void write_point(std::ostream& out, OutputFormat format, const PointInputs& inputs, const model::PointResult& result) {
+void write_point(std::ostream& out, OutputFormat format, const input::PointInputs& inputs, const model::PointResult& result) {
   switch (format) {
     case OutputFormat::table: write_table(out, inputs, result); break;
     case OutputFormat::json: write_json(out, inputs, result); break;

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/command_options.hpp"
+#include "input/command_options.hpp"
 #include "model/point/point_evaluation.hpp"
 
 namespace punchsweep::app {
@@ -40,7 +40,7 @@ struct PhysicalField {
 /// E0_star and pressure (with a material); the per-point quantities and series whose scale
 /// is known (lengths in R's unit, loads in N, times in the material's unit) and t. Empty
 /// without R and a material. JSON's "physical" and "units" objects and Python's point() read it.
-std::vector<PhysicalField> physical_fields(const PointInputs& inputs, const model::PointResult& r);
+std::vector<PhysicalField> physical_fields(const input::PointInputs& inputs, const model::PointResult& r);
 
 /// Writes one evaluated point. The keys are map::kQuantities' model quantities (a
 /// contract, in that order): regime, t_star (null for never), h_0, h_inf, valid (with
@@ -49,6 +49,6 @@ std::vector<PhysicalField> physical_fields(const PointInputs& inputs, const mode
 /// null (JSON), nan (CSV, table). Where the inputs know a physical scale, the JSON adds
 /// "physical" (physical_fields, series in its own "series") and "units" (each of them to its
 /// UDUNITS-2 string).
-void write_point(std::ostream& out, OutputFormat format, const PointInputs& inputs, const model::PointResult& result);
+void write_point(std::ostream& out, OutputFormat format, const input::PointInputs& inputs, const model::PointResult& result);
 
 }  // namespace punchsweep::app

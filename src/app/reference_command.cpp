@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <ostream>
 
-#include "app/command_options.hpp"
-#include "app/usage_error.hpp"
+#include "input/command_options.hpp"
+#include "input/usage_error.hpp"
 #include "reference/reference_point.hpp"
 #include "sweep/reproducible_fft.hpp"
 #include "sweep/sweep_config.hpp"
@@ -20,11 +20,11 @@ namespace {
 template <class Field>
 std::string series_array(const reference::ReferenceResult& r, Field field) {
   std::string text = "[";
-  for (std::size_t i = 0; i < r.series.size(); ++i) text += (i ? ", " : "") + json_number(field(r.series[i]));
+  for (std::size_t i = 0; i < r.series.size(); ++i) text += (i ? ", " : "") + input::json_number(field(r.series[i]));
   return text + "]";
 }
 
-po::options_description reference_options(const PointMaterial& material) {
+po::options_description reference_options(const input::PointMaterial& material) {
   po::options_description opts(
       "punchsweep reference: one parameter point solved by the periodic boundary-element\n"
       "reference solver (the full two-level contact problem on an N x N grid of the l x l\n"
@@ -33,8 +33,8 @@ po::options_description reference_options(const PointMaterial& material) {
       "Units: lengths in R, pressures in E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps\n"
       "(or the --material file's time_unit).\n\n"
       "Options");
-  add_point_options(opts, material.spec);
-  add_material_options(opts);
+  input::add_point_options(opts, material.spec);
+  input::add_material_options(opts);
   opts.add_options()
       ("bem-grid", po::value<std::string>()->value_name("N")->default_value("128"),
        "grid nodes per side N (the cell spacing is l/N); an even integer in [16, 2048]")
@@ -43,11 +43,11 @@ po::options_description reference_options(const PointMaterial& material) {
 }
 
 /// The point's inputs and the solver's options, read and checked in the command's order.
-ReferenceRun read_reference(const po::variables_map& vm, const PointMaterial& material) {
-  ReferenceRun run{read_point_inputs(vm, material), {}, {}, 0.0};
+ReferenceRun read_reference(const po::variables_map& vm, const input::PointMaterial& material) {
+  ReferenceRun run{input::read_point_inputs(vm, material), {}, {}, 0.0};
   reference::scale_steps_to_law(*run.inputs.creep, &run.options);
-  run.options.times = read_times(vm, run.inputs.scales);
-  run.options.n = static_cast<int>(read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
+  run.options.times = input::read_times(vm, run.inputs.scales);
+  run.options.n = static_cast<int>(input::read_real(vm, "bem-grid", "grid nodes per side", "an even integer in [16, 2048]",
                                              [](double v) { return sweep::is_bem_grid(v); }));
   return run;
 }
@@ -63,17 +63,17 @@ void solve(ReferenceRun* run) {
 }  // namespace
 
 ReferenceRun evaluate_reference_command(const std::vector<std::string>& args, const model::StopRequest& stop) {
-  const PointMaterial material = find_point_material(args);
-  ReferenceRun run = read_reference(parse_command(args, reference_options(material), "reference"), material);
+  const input::PointMaterial material = input::find_point_material(args);
+  ReferenceRun run = read_reference(input::parse_command(args, reference_options(material), "reference"), material);
   run.options.stop = stop;
   solve(&run);
   return run;
 }
 
 int run_reference_command(const std::vector<std::string>& args, std::ostream& out) {
-  const PointMaterial material = find_point_material(args);
+  const input::PointMaterial material = input::find_point_material(args);
   const po::options_description opts = reference_options(material);
-  const po::variables_map vm = parse_command(args, opts, "reference");
+  const po::variables_map vm = input::parse_command(args, opts, "reference");
   if (vm.count("help")) {
     out << "usage: punchsweep reference --l L --dh DH --T T --pbar P --s S [--bem-grid N] [options]\n\n" << opts
         << "\nRadii are equivalent radii sqrt(area / pi) of the nodes in contact: their error is of\n"
@@ -81,9 +81,9 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
     return 0;
   }
   ReferenceRun run = read_reference(vm, material);
-  const std::string format = read_choice(vm, "format", {"json", "table"});
+  const std::string format = input::read_choice(vm, "format", {"json", "table"});
   solve(&run);
-  const PointInputs& inputs = run.inputs;
+  const input::PointInputs& inputs = run.inputs;
   const reference::ReferenceOptions& options = run.options;
   const reference::ReferenceResult& r = run.result;
   const double seconds = run.seconds;
@@ -91,10 +91,10 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
   if (format == "table") {
     char line[200];
     out << "punchsweep reference: " << inputs.describe() << "; grid " << options.n << " x " << options.n << " (h = "
-        << json_number(r.spacing) << " R)\n  regime " << regime << ", t_star "
-        << (r.t_star ? json_number(*r.t_star) + " " + inputs.time_unit : "none") << ", converged " << (r.converged ? "yes" : "no")
-        << " (" << r.cg_iterations << " CG iterations, largest residual " << json_number(r.max_residual) << "), "
-        << r.steps << " steps, " << r.solves << " solves, " << json_number(seconds) << " s\n"
+        << input::json_number(r.spacing) << " R)\n  regime " << regime << ", t_star "
+        << (r.t_star ? input::json_number(*r.t_star) + " " + inputs.time_unit : "none") << ", converged " << (r.converged ? "yes" : "no")
+        << " (" << r.cg_iterations << " CG iterations, largest residual " << input::json_number(r.max_residual) << "), "
+        << r.steps << " steps, " << r.solves << " solves, " << input::json_number(seconds) << " s\n"
         << "   t [" << inputs.time_unit << "]      a1 [R]      a2 [R]   P1 [R^2 E0*]   P2 [R^2 E0*]  area_fraction\n";
     for (const auto& s : r.series) {
       std::snprintf(line, sizeof line, "%12.4f%12.7f%12.7f%15.9f%15.9f%15.7f\n", s.t, s.a1, s.a2, s.P1, s.P2,
@@ -103,12 +103,12 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
     }
     return 0;
   }
-  out << "{\n  \"regime\": \"" << regime << "\",\n  \"t_star\": " << (r.t_star ? json_number(*r.t_star) : "null")
-      << ",\n  \"t_star_lower\": " << json_number(r.t_star_lower) << ",\n  \"t_star_upper\": "
-      << json_number(r.t_star_upper) << ",\n  \"converged\": " << (r.converged ? "true" : "false")
-      << ",\n  \"cg_iterations\": " << r.cg_iterations << ",\n  \"max_residual\": " << json_number(r.max_residual)
-      << ",\n  \"bem_grid\": " << options.n << ",\n  \"spacing\": " << json_number(r.spacing)
-      << ",\n  \"steps\": " << r.steps << ",\n  \"solves\": " << r.solves << ",\n  \"seconds\": " << json_number(seconds)
+  out << "{\n  \"regime\": \"" << regime << "\",\n  \"t_star\": " << (r.t_star ? input::json_number(*r.t_star) : "null")
+      << ",\n  \"t_star_lower\": " << input::json_number(r.t_star_lower) << ",\n  \"t_star_upper\": "
+      << input::json_number(r.t_star_upper) << ",\n  \"converged\": " << (r.converged ? "true" : "false")
+      << ",\n  \"cg_iterations\": " << r.cg_iterations << ",\n  \"max_residual\": " << input::json_number(r.max_residual)
+      << ",\n  \"bem_grid\": " << options.n << ",\n  \"spacing\": " << input::json_number(r.spacing)
+      << ",\n  \"steps\": " << r.steps << ",\n  \"solves\": " << r.solves << ",\n  \"seconds\": " << input::json_number(seconds)
       << ",\n  \"series\": {\n    \"t\": " << series_array(r, [](const auto& s) { return s.t; })
       << ",\n    \"a1\": " << series_array(r, [](const auto& s) { return s.a1; })
       << ",\n    \"a2\": " << series_array(r, [](const auto& s) { return s.a2; })

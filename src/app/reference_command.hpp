@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/command_options.hpp"
+#include "input/command_options.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "reference/reference_point.hpp"
 
@@ -17,7 +17,7 @@ int run_reference_command(const std::vector<std::string>& args, std::ostream& ou
 
 /// One point as `punchsweep reference ARGS` solves it.
 struct ReferenceRun {
-  PointInputs inputs;
+  input::PointInputs inputs;
   reference::ReferenceOptions options;
   reference::ReferenceResult result;
   double seconds = 0.0;  ///< the solve's own wall time

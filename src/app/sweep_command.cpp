@@ -19,8 +19,8 @@
 #include <random>
 #include <sstream>
 
-#include "app/sweep_options.hpp"
-#include "app/usage_error.hpp"
+#include "input/sweep_options.hpp"
+#include "input/usage_error.hpp"
 #include "app/version.hpp"
 #include "io/map_variables.hpp"
 #include "io/regime_map_writer.hpp"
@@ -245,12 +245,12 @@ int run_sweep_command(const std::vector<std::string>& args) {
   sweep::SweepConfig config;
   bool help = false;
   try {
-    config = parse_sweep_options(args, root ? static_cast<std::ostream&>(std::cout) : discard, &help);
-  } catch (const UsageError& e) {
+    config = input::parse_sweep_options(args, root ? static_cast<std::ostream&>(std::cout) : discard, &help);
+  } catch (const input::UsageError& e) {
     if (root) {
       for (const std::string& line : run::split_lines(e.what())) std::cerr << "punchsweep sweep: " << line << "\n";
     }
-    return kUsageExitCode;
+    return input::kUsageExitCode;
   }
   if (help) return 0;
 
@@ -269,7 +269,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     const int refused = sweep::share_from_root(root && !lock ? 1 : 0);
     if (refused != 0) {
       if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
-      return kUsageExitCode;
+      return input::kUsageExitCode;
     }
   }
 
@@ -297,7 +297,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     if (root) {
       for (const std::string& line : run::split_lines(refusal)) std::cerr << "punchsweep sweep: " << line << "\n";
     }
-    return kUsageExitCode;
+    return input::kUsageExitCode;
   }
   start = static_cast<run::Start>(sweep::share_from_root(static_cast<int>(start)));
   if (start == run::Start::already_complete) {
@@ -328,7 +328,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     const int room = sweep::share_from_root(refusal.empty() ? 0 : 1);
     if (room != 0) {
       if (root) std::cerr << "punchsweep sweep: " << refusal << "\n";
-      return kUsageExitCode;
+      return input::kUsageExitCode;
     }
 
     for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_stop_signal);

@@ -10,8 +10,8 @@
 
 #include "app/periodic_tables.hpp"
 #include "app/table_cache.hpp"
-#include "app/usage_error.hpp"
-#include "app/value_parsing.hpp"
+#include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
 #include "app/version.hpp"
 #include "model/problem/shape.hpp"
 #include "sweep/reproducible_fft.hpp"
@@ -51,27 +51,27 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
     po::store(po::command_line_parser(args).options(opts).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
-    throw UsageError(e.what());
+    throw input::UsageError(e.what());
   }
   if (vm.count("help")) {
     out << opts;
     return 0;
   }
   std::vector<int> exponents;
-  for (const double s : parse_real_list(vm["s"].as<std::string>(), "--s")) {
+  for (const double s : input::parse_real_list(vm["s"].as<std::string>(), "--s")) {
     if (s != std::floor(s) || s < model::Shape::kMinExponent || s > model::Shape::kMaxExponent) {
-      throw UsageError("--s: " + std::to_string(s) + " is not an integer in [1, 32]");
+      throw input::UsageError("--s: " + std::to_string(s) + " is not an integer in [1, 32]");
     }
     exponents.push_back(static_cast<int>(s));
   }
-  const int n = parse_integer(vm["grid"].as<std::string>(), "--grid");
-  if (n < 16 || n > 2048 || n % 2 != 0) throw UsageError("--grid: " + std::to_string(n) + " is not an even integer in [16, 2048]");
+  const int n = input::parse_integer(vm["grid"].as<std::string>(), "--grid");
+  if (n < 16 || n > 2048 || n % 2 != 0) throw input::UsageError("--grid: " + std::to_string(n) + " is not an even integer in [16, 2048]");
   const bool quiet = vm["quiet"].as<bool>();
   sweep::use_reproducible_fft_plans();
 
   if (vm.count("write-source")) {
     const std::filesystem::path dir = vm["write-source"].as<std::string>();
-    if (!std::filesystem::is_directory(dir)) throw UsageError("--write-source: " + dir.string() + " is not a folder");
+    if (!std::filesystem::is_directory(dir)) throw input::UsageError("--write-source: " + dir.string() + " is not a folder");
     for (const int s : exponents) {
       const auto start = std::chrono::steady_clock::now();
       const std::shared_ptr<const model::PeriodicTable> table = std::make_shared<const model::PeriodicTable>(

@@ -21,12 +21,12 @@
 #include <tuple>
 #include <vector>
 
-#include "app/command_options.hpp"
+#include "input/command_options.hpp"
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
 #include "app/reference_command.hpp"
 #include "app/table_cache.hpp"
-#include "app/usage_error.hpp"
+#include "input/usage_error.hpp"
 #include "input/scaled_value.hpp"
 #include "map/quantities.hpp"
 #include "model/problem/contact_problem.hpp"
@@ -168,7 +168,7 @@ std::string value_text(double v, bool integer) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   if (integer && v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-  std::string text = app::json_number(v);
+  std::string text = input::json_number(v);
   if (text.find_first_of(".e") == std::string::npos) text += ".0";
   return text;
 }
@@ -176,7 +176,7 @@ std::string value_text(double v, bool integer) {
 /// The command line's message for a value of `p` outside its range, else empty.
 std::string check(const model::Parameter& p, double value) {
   if (p.admits(value)) return {};
-  return app::out_of_range(p, value_text(value, p.integer));
+  return input::out_of_range(p, value_text(value, p.integer));
 }
 
 using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -184,8 +184,8 @@ using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
 /// A material file read by the engine's reader (its checks and messages), for classify's
 /// material= and punchsweep.Material.
 std::shared_ptr<const model::Material> read_material(const std::string& path) {
-  if (path.find('\0') != std::string::npos) throw app::UsageError("--material: the file name has a NUL byte");
-  return app::read_material_file(path);
+  if (path.find('\0') != std::string::npos) throw input::UsageError("--material: the file name has a NUL byte");
+  return input::read_material_file(path);
 }
 
 /// `text` for the parameter called `name` in its scale (input/scaled_value.hpp: the command
@@ -194,14 +194,14 @@ std::shared_ptr<const model::Material> read_material(const std::string& path) {
 double scaled_value(const std::string& text, const std::string& name, const std::string& material,
                     const std::string& R) {
   const model::Parameter* p = model::find_parameter(name);
-  if (p == nullptr) throw app::UsageError("no parameter " + name);
+  if (p == nullptr) throw input::UsageError("no parameter " + name);
   const std::string key = name == model::kPressure ? std::string("pressure") : name;
   const std::shared_ptr<const model::Material> file = material.empty() ? nullptr : read_material(material);
   input::PhysicalScales scales;
   try {
     scales = input::scales_of(file.get(), R.empty() ? std::nullopt : std::optional(input::read_length_scale(R)));
   } catch (const std::invalid_argument& e) {
-    throw app::UsageError("R = " + std::string(e.what()));
+    throw input::UsageError("R = " + std::string(e.what()));
   }
   const std::optional<input::Scale> scale = input::scale_of(p->scale, scales);
   double value = 0.0;
@@ -209,10 +209,10 @@ double scaled_value(const std::string& text, const std::string& name, const std:
     if (!scale) throw std::invalid_argument("'" + text + "': " + name + " is a pure number");
     value = input::read_scaled(text, *scale);
   } catch (const std::invalid_argument& e) {
-    throw app::UsageError(key + " = " + e.what() + "; valid range: " + std::string(p->range));
+    throw input::UsageError(key + " = " + e.what() + "; valid range: " + std::string(p->range));
   }
   if (!p->admits(value)) {
-    throw app::UsageError(key + " = " + text + " (" + app::json_number(value) + " " + std::string(p->scale) +
+    throw input::UsageError(key + " = " + text + " (" + input::json_number(value) + " " + std::string(p->scale) +
                           ") is outside its range: " + std::string(p->range));
   }
   return value;
@@ -227,7 +227,7 @@ std::string no_shift(const std::string& who) {
 std::vector<double> point_defaults(std::span<const model::Parameter> parameters) {
   std::vector<double> values;
   for (const model::Parameter& p : parameters) {
-    if (p.point_default.empty()) throw app::UsageError(std::string(p.name) + " is required");
+    if (p.point_default.empty()) throw input::UsageError(std::string(p.name) + " is required");
     values.push_back(std::stod(std::string(p.point_default)));
   }
   return values;
@@ -252,7 +252,7 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   try {
     model_localization = model::parse_localization(localization);
   } catch (const std::invalid_argument& e) {
-    throw app::UsageError(std::string("--localization: ") + e.what());  // as read_localization says it
+    throw input::UsageError(std::string("--localization: ") + e.what());  // as input::read_localization says it
   }
   const model::CreepLawSpec spec = material ? material->spec() : model::creep_laws().front();
   // A law's parameters left out take the point command's defaults (a material's T_ref).
@@ -266,12 +266,12 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
     }
   }
   if (law_values.size() != spec.parameters.size()) {
-    throw app::UsageError(material ? "classify: " + no_shift(material_file)
+    throw input::UsageError(material ? "classify: " + no_shift(material_file)
                                    : "classify: the creep law " + std::string(spec.name) + " takes " +
                                          std::to_string(spec.parameters.size()) + " parameters");
   }
   if (const std::string e = check(*model::find_parameter(model::kShapeConstant), C); !e.empty()) {
-    throw app::UsageError(e);
+    throw input::UsageError(e);
   }
   // The first value outside its range, axis by axis in the command line's order.
   std::vector<std::pair<const model::Parameter*, const double*>> axes{
@@ -282,7 +282,7 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   if (ramp) axes.emplace_back(&model::ramp_time_parameter(), ramp_time.data());
   for (const auto& [parameter, values] : axes) {
     for (py::ssize_t i = 0; i < n; ++i) {
-      if (const std::string e = check(*parameter, values[i]); !e.empty()) throw app::UsageError(e);
+      if (const std::string e = check(*parameter, values[i]); !e.empty()) throw input::UsageError(e);
     }
   }
 
@@ -381,7 +381,7 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   return out;
 }
 
-/// A material file as the engine reads it (app::read_material_file: its checks, its
+/// A material file as the engine reads it (input::read_material_file: its checks, its
 /// messages), for punchsweep.Material.
 struct MaterialHandle {
   std::shared_ptr<const model::Material> material;
@@ -407,14 +407,14 @@ struct MaterialHandle {
   std::unique_ptr<model::CreepLaw> law_at(double temperature) const {
     const model::Material& m = *material;
     if (std::isnan(temperature) || m.parameters().empty()) {
-      if (!std::isnan(temperature)) throw app::UsageError(no_shift(m.name()));
+      if (!std::isnan(temperature)) throw input::UsageError(no_shift(m.name()));
       return m.make(point_defaults(m.parameters()));
     }
     const double values[] = {temperature};
     try {
       return m.make(values);
     } catch (const std::invalid_argument& e) {
-      throw app::UsageError(e.what());
+      throw input::UsageError(e.what());
     }
   }
 
@@ -425,7 +425,7 @@ struct MaterialHandle {
     const double* in = t.data();
     double* values = out.mutable_data();
     for (py::ssize_t i = 0; i < t.size(); ++i) {
-      if (!(in[i] >= 0.0)) throw app::UsageError("material: times must be >= 0 (in the file's time unit)");
+      if (!(in[i] >= 0.0)) throw input::UsageError("material: times must be >= 0 (in the file's time unit)");
       values[i] = relaxation ? law->relaxation(in[i]) : law->creep(in[i]);
     }
     return out;
@@ -434,9 +434,9 @@ struct MaterialHandle {
   /// log10 a_T(temperature); ValueError naming the shift's range outside it.
   double log10_shift(double temperature) const {
     const model::Material& m = *material;
-    if (!m.shift()) throw app::UsageError("the material " + m.name() + " has no temperature shift");
+    if (!m.shift()) throw input::UsageError("the material " + m.name() + " has no temperature shift");
     if (!m.shift()->admits(temperature)) {
-      throw app::UsageError("temperature = " + app::json_number(temperature) + " is outside the shift's range: " +
+      throw input::UsageError("temperature = " + input::json_number(temperature) + " is outside the shift's range: " +
                             m.shift()->range());
     }
     return m.shift()->log10_factor(temperature);
@@ -462,7 +462,7 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
-    } catch (const app::UsageError& e) {
+    } catch (const input::UsageError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });

@@ -1,4 +1,4 @@
-#include "app/sweep_options.hpp"
+#include "input/sweep_options.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "app/usage_error.hpp"
+#include "input/usage_error.hpp"
 #include "run/resume_policy.hpp"
 
 namespace {
 
 using punchsweep::run::identity_differences;
-using punchsweep::app::parse_sweep_options;
-using punchsweep::app::UsageError;
+using punchsweep::input::parse_sweep_options;
+using punchsweep::input::UsageError;
 using punchsweep::map::Quantities;
 using punchsweep::sweep::ReferenceMethod;
 using punchsweep::sweep::SweepConfig;

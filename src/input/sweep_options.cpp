@@ -1,4 +1,4 @@
-#include "app/sweep_options.hpp"
+#include "input/sweep_options.hpp"
 
 #include <boost/program_options.hpp>
 
@@ -17,10 +17,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "app/command_options.hpp"
-#include "app/text_file.hpp"
-#include "app/usage_error.hpp"
-#include "app/value_parsing.hpp"
+#include "input/command_options.hpp"
+#include "input/text_file.hpp"
+#include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
 #include "input/scaled_value.hpp"
 #include "io/crc32.hpp"
 #include "model/problem/localization.hpp"
@@ -32,7 +32,7 @@
 
 namespace po = boost::program_options;
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 namespace {
 
 constexpr const char* kSeeHelp = " (see punchsweep sweep --help)";
@@ -1036,4 +1036,4 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   return config;
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 /// Bad command-line input. main() prints what() as one line and exits with kUsageExitCode.
 class UsageError : public std::runtime_error {
@@ -13,4 +13,4 @@ class UsageError : public std::runtime_error {
 
 inline constexpr int kUsageExitCode = 2;
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

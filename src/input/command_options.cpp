@@ -1,4 +1,4 @@
-#include "app/command_options.hpp"
+#include "input/command_options.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -9,15 +9,15 @@
 #include <optional>
 #include <sstream>
 
-#include "app/text_file.hpp"
-#include "app/usage_error.hpp"
-#include "app/value_parsing.hpp"
+#include "input/text_file.hpp"
+#include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
 #include "map/axis_parser.hpp"
 #include "model/point/parameters.hpp"
 
 namespace po = boost::program_options;
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 namespace {
 
@@ -420,4 +420,4 @@ std::string json_number(double v) {
   return buf;
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

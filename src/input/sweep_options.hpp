@@ -6,7 +6,7 @@
 
 #include "sweep/sweep_config.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 /// Resolves the arguments that follow `punchsweep sweep` into a validated SweepConfig:
 /// command line > --config INI file > embedded defaults (also per [grid] key when a file
@@ -18,4 +18,4 @@ namespace punchsweep::app {
 sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std::ostream& help_out,
                                        bool* help_shown);
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

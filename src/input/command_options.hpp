@@ -17,7 +17,7 @@
 #include "model/numerics/units.hpp"
 #include "input/scaled_value.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 /// Parses a one-shot command's arguments (long options only, so "--l -0.5" reads -0.5 as
 /// a value; no positional arguments). Throws UsageError naming `command` for help.
@@ -38,10 +38,6 @@ void add_parameter_option(boost::program_options::options_description& opts, con
 
 /// "--NAME = TEXT is outside its range: RANGE": the message for `parameter` given as `text`.
 std::string out_of_range(const model::Parameter& parameter, const std::string& text);
-
-/// The physical scales a point knows (input/scaled_value.hpp): R from --R, E0* and the time
-/// unit from a material.
-using PhysicalScales = input::PhysicalScales;
 
 /// The value of --NAME for `parameter`. A length (in R) or a pressure (in E0*) may carry a
 /// unit (150um, 20kPa) where `scales` holds its scale. Throws UsageError naming the option,
@@ -165,4 +161,4 @@ std::string read_choice(const boost::program_options::variables_map& vm, const c
 /// Shortest text that reads back to the same double; "null" for NaN or infinity (JSON).
 std::string json_number(double value);
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <string>
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 /// The largest config or material file read (a Prony series of a thousand terms is 40 kB).
 inline constexpr std::size_t kMaxTextFileBytes = std::size_t{1} << 20;
@@ -15,4 +15,4 @@ inline constexpr std::size_t kMaxTextFileBytes = std::size_t{1} << 20;
 /// than echoed back). A UTF-8 byte-order mark is dropped.
 std::string read_text_file(const std::string& path, const std::string& what);
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

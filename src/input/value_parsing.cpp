@@ -1,13 +1,13 @@
-#include "app/value_parsing.hpp"
+#include "input/value_parsing.hpp"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 
-#include "app/usage_error.hpp"
+#include "input/usage_error.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 double parse_real(const std::string& text, const std::string& option) {
   const char* begin = text.c_str();
@@ -71,4 +71,4 @@ std::vector<double> parse_real_list(const std::string& text, const std::string& 
   return values;
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 /// Parses a whole string as a finite double; throws UsageError naming `option` otherwise.
 double parse_real(const std::string& text, const std::string& option);
@@ -14,4 +14,4 @@ int parse_integer(const std::string& text, const std::string& option);
 /// Parses "0, 0.5, 1" (commas and/or spaces) into finite doubles; throws UsageError.
 std::vector<double> parse_real_list(const std::string& text, const std::string& option);
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input

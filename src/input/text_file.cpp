@@ -1,4 +1,4 @@
-#include "app/text_file.hpp"
+#include "input/text_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <cstring>
 
-#include "app/usage_error.hpp"
+#include "input/usage_error.hpp"
 #include "io/file_descriptor.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::input {
 
 std::string read_text_file(const std::string& path, const std::string& what) {
   const std::string name = what + " " + path;
@@ -59,4 +59,4 @@ std::string read_text_file(const std::string& path, const std::string& what) {
   return text;
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::input
