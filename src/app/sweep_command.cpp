@@ -1,6 +1,6 @@
 #include "app/sweep_command.hpp"
 
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 
 #ifdef __linux__
 #endif
@@ -26,7 +26,7 @@
 #include "io/regime_map_writer.hpp"
 #include "io/tile_encoder.hpp"
 #include "io/tile_journal.hpp"
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 #include "map/tiling.hpp"
 #include "run/disk_space.hpp"
 #include "run/map_run.hpp"
@@ -198,7 +198,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   attributes.localization = config.localization.spelling();
   attributes.time_unit = config.time_unit();
   if (config.R) {
-    attributes.R = map::format_axis_value(config.R->number) + " " + std::string(config.R->unit->name);
+    attributes.R = input::format_axis_value(config.R->number) + " " + std::string(config.R->unit->name);
     attributes.R_m = config.R->si();
   }
   if (config.material) {

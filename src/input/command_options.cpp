@@ -12,7 +12,7 @@
 #include "input/text_file.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 #include "model/point/parameters.hpp"
 
 namespace po = boost::program_options;
@@ -377,7 +377,7 @@ std::vector<double> read_times(const po::variables_map& vm, const PhysicalScales
   try {
     times = input::read_scaled_axis(text, false, *input::scale_of("T_eps", scales));
     for (const double t : times.values) {
-      if (t < 0.0) problem = "value " + map::format_axis_value(t) + " is negative";
+      if (t < 0.0) problem = "value " + input::format_axis_value(t) + " is negative";
     }
   } catch (const std::invalid_argument& e) {
     problem = e.what();

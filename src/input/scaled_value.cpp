@@ -54,7 +54,7 @@ std::optional<PhysicalUnit> physical_unit(std::string_view scaled_unit, const Ph
 
 double read_scaled(const std::string& text, const Scale& scale) {
   const std::optional<model::Physical> physical = model::parse_physical(text, scale.dimension);
-  if (!physical) return map::parse_axis_number(text);
+  if (!physical) return input::parse_axis_number(text);
   if (!scale.value) {
     throw std::invalid_argument("'" + text + "': a " + std::string(model::dimension_name(scale.dimension)) +
                                 " with a unit needs " + std::string(scale.needs) + "; or give it in " +
@@ -73,7 +73,7 @@ bool has_unit(const std::string& text) {
 map::Axis read_scaled_axis(const std::string& text, bool integers, const Scale& scale, bool required) {
   int with = 0;
   int without = 0;
-  map::Axis axis = map::parse_axis(text, integers, [&](const std::string& token) {
+  map::Axis axis = input::parse_axis(text, integers, [&](const std::string& token) {
     const double value = read_scaled(token, scale);
     if (has_unit(token)) {
       ++with;

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 #include "model/point/parameters.hpp"
 #include "model/numerics/units.hpp"
 
@@ -69,7 +69,7 @@ double read_scaled(const std::string& text, const Scale& scale);
 /// Whether `text` carries a unit of some dimension ("2um" yes, "0.5" no).
 bool has_unit(const std::string& text);
 
-/// An axis (map::parse_axis syntax) whose values may carry units: each value read by
+/// An axis (input::parse_axis syntax) whose values may carry units: each value read by
 /// read_scaled; with `required`, every value must carry one (a physical-only key such as
 /// grid.pressure). Refuses an axis that mixes values with and without a unit.
 map::Axis read_scaled_axis(const std::string& text, bool integers, const Scale& scale, bool required = false);

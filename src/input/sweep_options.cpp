@@ -28,7 +28,7 @@
 #include "model/point/parameters.hpp"
 #include "reference/reference_point.hpp"
 #include "run/text_lines.hpp"
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 
 namespace po = boost::program_options;
 
@@ -84,8 +84,8 @@ struct KeySpec {
 
 std::string listed(const std::vector<double>& values) {
   constexpr std::size_t kShown = 5;
-  if (values.size() <= kShown) return map::format_axis_values(values);
-  return map::format_axis_values({values.begin(), values.begin() + kShown}) + ", ... (" +
+  if (values.size() <= kShown) return input::format_axis_values(values);
+  return input::format_axis_values({values.begin(), values.begin() + kShown}) + ", ... (" +
          std::to_string(values.size()) + " in all)";
 }
 
@@ -95,7 +95,7 @@ template <class InRange>
 std::string check_axis(const std::string& text, bool integers, InRange in_range, map::Axis& axis,
                        const std::optional<input::Scale>& scale = std::nullopt, bool required = false) {
   try {
-    axis = scale ? input::read_scaled_axis(text, integers, *scale, required) : map::parse_axis(text, integers);
+    axis = scale ? input::read_scaled_axis(text, integers, *scale, required) : input::parse_axis(text, integers);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -290,12 +290,12 @@ std::vector<KeySpec> make_keys() {
                     return std::string();
                   },
                   [](const Config& config) {
-                    return config.R ? map::format_axis_value(config.R->number) + std::string(config.R->unit->name) : "";
+                    return config.R ? input::format_axis_value(config.R->number) + std::string(config.R->unit->name) : "";
                   },
                   // R names the physical unit of the map's lengths; maps without it keep their identity.
                   [](const Config& config) {
                     if (!config.R) return std::vector<std::string>{};
-                    return std::vector<std::string>{"model.R = " + map::format_axis_value(config.R->number) + " " +
+                    return std::vector<std::string>{"model.R = " + input::format_axis_value(config.R->number) + " " +
                                                     std::string(config.R->unit->name)};
                   }});
   const model::Parameter& C = *model::find_parameter(model::kShapeConstant);
@@ -307,12 +307,12 @@ std::vector<KeySpec> make_keys() {
                     } catch (const UsageError&) {
                       return "'" + text + "' is not a finite number";
                     }
-                    if (!C.admits(config.C)) return "value " + map::format_axis_value(config.C) + " is outside its range";
+                    if (!C.admits(config.C)) return "value " + input::format_axis_value(config.C) + " is outside its range";
                     return std::string();
                   },
-                  [](const Config& config) { return map::format_axis_value(config.C); },
+                  [](const Config& config) { return input::format_axis_value(config.C); },
                   [](const Config& config) {
-                    return std::vector<std::string>{"model.C = " + map::format_axis_value(config.C)};
+                    return std::vector<std::string>{"model.C = " + input::format_axis_value(config.C)};
                   }});
   keys.push_back({"model", "creep_law", "NAME", std::string(model::creep_laws().front().name),
                   "creep law of the half-space (its parameters are [grid] axes)", model::creep_law_names(),
@@ -399,7 +399,7 @@ std::vector<KeySpec> make_keys() {
                   },
                   {},
                   [](const Config& config) {
-                    return std::vector<std::string>{"time.times = " + map::format_axis_values(config.times)};
+                    return std::vector<std::string>{"time.times = " + input::format_axis_values(config.times)};
                   }});
   keys.push_back({"output", "file", "FILE", "regime_map.h5", "the HDF5 regime map to write",
                   "a non-empty file name without '#' or line breaks", Fixed::output_file, nullptr,
@@ -819,7 +819,7 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
           const auto bad = std::find_if(axis.values.begin(), axis.values.end(),
                                         [&](double v) { return !material->shift()->admits(v); });
           if (bad != axis.values.end()) {
-            problems.push_back(dotted(spec) + " = " + settings[k].text + ": value " + map::format_axis_value(*bad) +
+            problems.push_back(dotted(spec) + " = " + settings[k].text + ": value " + input::format_axis_value(*bad) +
                                " is outside its range for " + material->name() + ": " + material->shift()->range());
             break;
           }
@@ -903,7 +903,7 @@ std::string resolved_text(const std::vector<Setting>& settings, const sweep::Swe
 std::vector<std::string> identity(const sweep::SweepConfig& config) {
   std::vector<std::string> lines;
   for (const map::Axis& axis : config.grid.axes) {
-    lines.push_back("grid." + axis.name + " = " + map::format_axis_values(axis.values));
+    lines.push_back("grid." + axis.name + " = " + input::format_axis_values(axis.values));
   }
   for (const KeySpec& spec : keys()) {
     if (!spec.identity) continue;
@@ -967,7 +967,7 @@ void write_help(std::ostream& out, const po::options_description& opts) {
          "  logspace(a, b, n)   n values geometrically spaced from a to b, both included\n"
          "                      (a and b are the values, not exponents; a, b > 0)\n"
          "  n is an integer in [1, "
-      << map::kMaxAxisCount
+      << input::kMaxAxisCount
       << "]; n = 1 needs a == b. s takes integers only.\n"
          "  Generated values are rounded to 15 significant digits, so that\n"
          "  linspace(0.5, 1.25, 16) equals the list 0.5, 0.55, 0.6, ..., 1.25.\n\n"
@@ -975,7 +975,7 @@ void write_help(std::ostream& out, const po::options_description& opts) {
   std::size_t points = 1;
   std::string product;
   for (const model::Parameter* p : model::sweep_axes(model::creep_laws().front().parameters)) {
-    const map::Axis axis = map::parse_axis(std::string(p->sweep_default), p->integer);
+    const map::Axis axis = input::parse_axis(std::string(p->sweep_default), p->integer);
     std::string line = "  " + std::string(p->name);
     line.resize(7, ' ');
     line += "= " + std::string(p->sweep_default);

@@ -7,7 +7,7 @@
 
 #include "map/grid.hpp"
 
-namespace punchsweep::map {
+namespace punchsweep::input {
 
 /// Largest count linspace()/logspace() accept: an axis lives in memory and is printed in
 /// the map's identity, and a count beyond this is almost surely a typo.
@@ -27,7 +27,7 @@ inline constexpr long kMaxAxisCount = 1'000'000;
 /// must be a whole number. -0 is stored as 0. Axis::text is the trimmed input.
 /// Throws std::invalid_argument with a message that does not name the key, e.g.
 /// "linspace needs 3 arguments (start, stop, count), got 2".
-Axis parse_axis(const std::string& text, bool integers);
+map::Axis parse_axis(const std::string& text, bool integers);
 
 /// Reads one value of an axis (a list item, or linspace's or logspace's start or stop) from
 /// its text, e.g. a number with a unit into the axis's scaled unit; throws
@@ -36,7 +36,7 @@ using ValueReader = std::function<double(const std::string& token)>;
 
 /// The same with each value read by `read`. In a list, a word that starts with a letter
 /// belongs to the number before it, so "1 um, 2 um" reads as "1 um" and "2 um".
-Axis parse_axis(const std::string& text, bool integers, const ValueReader& read);
+map::Axis parse_axis(const std::string& text, bool integers, const ValueReader& read);
 
 /// The default reader: a whole string as a finite double ("'x' is not a number").
 double parse_axis_number(const std::string& token);
@@ -48,4 +48,4 @@ std::string format_axis_value(double value);
 /// The values as "v1, v2, ..." with format_axis_value: the canonical text of an axis.
 std::string format_axis_values(const std::vector<double>& values);
 
-}  // namespace punchsweep::map
+}  // namespace punchsweep::input

@@ -1,4 +1,4 @@
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace punchsweep::map {
+namespace punchsweep::input {
 namespace {
 
 constexpr const char* kWhitespace = " \t\r\n\f\v";
@@ -147,10 +147,10 @@ std::vector<double> parse_function(const std::string& name, const std::string& i
 
 }  // namespace
 
-Axis parse_axis(const std::string& text, bool integers) { return parse_axis(text, integers, parse_axis_number); }
+map::Axis parse_axis(const std::string& text, bool integers) { return parse_axis(text, integers, parse_axis_number); }
 
-Axis parse_axis(const std::string& text, bool integers, const ValueReader& read) {
-  Axis axis;
+map::Axis parse_axis(const std::string& text, bool integers, const ValueReader& read) {
+  map::Axis axis;
   axis.text = trim(text);
   if (axis.text.empty()) throw std::invalid_argument("no value given");
 
@@ -199,4 +199,4 @@ std::string format_axis_values(const std::vector<double>& values) {
   return text;
 }
 
-}  // namespace punchsweep::map
+}  // namespace punchsweep::input

@@ -1,4 +1,4 @@
-#include "map/axis_parser.hpp"
+#include "input/axis_parser.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 namespace {
 
 using punchsweep::map::Axis;
-using punchsweep::map::format_axis_value;
-using punchsweep::map::format_axis_values;
-using punchsweep::map::parse_axis;
+using punchsweep::input::format_axis_value;
+using punchsweep::input::format_axis_values;
+using punchsweep::input::parse_axis;
 
 // The message parse_axis throws for `text`; fails the test when it does not throw.
 std::string axis_error(const std::string& text, bool integers = false) {
