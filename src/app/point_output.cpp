@@ -206,6 +206,10 @@ void write_table(std::ostream& out, const input::PointInputs& inputs, const mode
     } else {
       value = number(q.value(r));
       if (const std::string u = display_units(q, inputs.time_unit); !u.empty()) value += " " + u;
+      // The physical value beside a scaled one, where the scale is known (R given: um).
+      if (const auto unit = input::physical_unit(q.scale, inputs.scales); unit && q.scale != "T_eps") {
+        value += " (" + significant(q.value(r) * unit->per_scaled, 6) + " " + unit->units + ")";
+      }
       if (q.value == map::quantity_access::h_0 && inputs.problem.loading.jump() == 0.0) {
         value += " (unloaded at t = 0: the load rises from 0)";
       }

@@ -358,10 +358,11 @@ std::string PointInputs::describe() const {
       text += ' ';
       text.append(p->scale);
     }
-    if (p->scale == "R" && scales.R) {  // an echo in R's unit, to 12 digits
+    // An echo in physical units where the scale is known (R's unit, Pa), to 12 digits.
+    if (const std::optional<PhysicalUnit> unit = physical_unit(p->scale, scales); unit && p->scale != "T_eps") {
       char physical[64];
-      std::snprintf(physical, sizeof physical, " (%.12g ", value * scales.R->number);
-      text += physical + std::string(scales.R->unit->name) + ")";
+      std::snprintf(physical, sizeof physical, " (%.12g ", value * unit->per_scaled);
+      text += physical + unit->units + ")";
     }
   }
   if (scales.R) text += ", R = " + json_number(scales.R->number) + " " + std::string(scales.R->unit->name);
