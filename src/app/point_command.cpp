@@ -69,10 +69,10 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
   return 0;
 }
 
-PointRun evaluate_point_command(const std::vector<std::string>& args) {
-  const input::PointMaterial material = input::find_point_material(args);
+PointRun evaluate_point(const input::Keywords& keywords) {
+  const input::PointMaterial material = input::find_point_material(keywords);
   model::EvaluationOptions options;
-  PointRun run = read_point(input::parse_command(args, point_options(material), "point"), material, &options);
+  PointRun run = read_point(input::parse_keywords(keywords, point_options(material), "point"), material, &options);
   run.result = model::evaluate_point(run.inputs.problem, *run.inputs.creep, options);
   return run;
 }

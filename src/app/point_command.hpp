@@ -19,9 +19,10 @@ struct PointRun {
   model::PointResult result;
 };
 
-/// The point of `punchsweep point ARGS` (without --help and --format), evaluated: the same
-/// options, checks and evaluation, so the numbers are the command's bit for bit. Throws
-/// UsageError (its message is the command's) for bad input.
-PointRun evaluate_point_command(const std::vector<std::string>& args);
+/// The point of `punchsweep point` given as keywords (Python's: `l`, `dh`, `material`, ...;
+/// no --help or --format), evaluated: the command's options, checks and evaluation, so the
+/// numbers are the command's bit for bit. Throws UsageError (its message is the command's)
+/// for bad input.
+PointRun evaluate_point(const input::Keywords& keywords);
 
 }  // namespace punchsweep::app

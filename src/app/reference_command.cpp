@@ -62,9 +62,10 @@ void solve(ReferenceRun* run) {
 
 }  // namespace
 
-ReferenceRun evaluate_reference_command(const std::vector<std::string>& args, const model::StopRequest& stop) {
-  const input::PointMaterial material = input::find_point_material(args);
-  ReferenceRun run = read_reference(input::parse_command(args, reference_options(material), "reference"), material);
+ReferenceRun evaluate_reference(const input::Keywords& keywords, const model::StopRequest& stop) {
+  const input::PointMaterial material = input::find_point_material(keywords);
+  ReferenceRun run =
+      read_reference(input::parse_keywords(keywords, reference_options(material), "reference"), material);
   run.options.stop = stop;
   solve(&run);
   return run;

@@ -23,10 +23,10 @@ struct ReferenceRun {
   double seconds = 0.0;  ///< the solve's own wall time
 };
 
-/// The point of `punchsweep reference ARGS` (without --help and --format), solved with the
-/// command's options, checks and FFTW plans, so the numbers are the command's bit for bit.
-/// Throws UsageError (its message is the command's) for bad input, and model::Stopped when
-/// `stop` is requested between the BEM's time steps.
-ReferenceRun evaluate_reference_command(const std::vector<std::string>& args, const model::StopRequest& stop = {});
+/// The point of `punchsweep reference` given as keywords (no --help or --format), solved
+/// with the command's options, checks and FFTW plans, so the numbers are the command's bit
+/// for bit. Throws UsageError (its message is the command's) for bad input, and
+/// model::Stopped when `stop` is requested between the BEM's time steps.
+ReferenceRun evaluate_reference(const input::Keywords& keywords, const model::StopRequest& stop = {});
 
 }  // namespace punchsweep::app

@@ -74,6 +74,33 @@ po::variables_map parse_command(const std::vector<std::string>& args, const po::
   return vm;
 }
 
+po::variables_map parse_keywords(const Keywords& keywords, const po::options_description& opts,
+                                 const std::string& command) {
+  std::vector<std::string> named;  // for law_hint: what the keywords would be as options
+  for (const auto& [name, text] : keywords) named.push_back("--" + name);
+  po::parsed_options parsed(&opts);
+  for (const auto& [name, text] : keywords) {
+    if (opts.find_nothrow(name, false) == nullptr || name == "help") {
+      throw UsageError("unknown option --" + name + law_hint("--" + name, named) + " (see punchsweep " + command +
+                       " --help)");
+    }
+    if (text.find('\0') != std::string::npos) {  // it would cut the value where C strings end
+      throw UsageError("--" + name + ": a NUL character cannot be part of an option's value");
+    }
+    po::option option(name, {text});
+    option.original_tokens = {"--" + name, text};
+    parsed.options.push_back(std::move(option));
+  }
+  po::variables_map vm;
+  try {
+    po::store(parsed, vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw UsageError(std::string(e.what()) + " (see punchsweep " + command + " --help)");
+  }
+  return vm;
+}
+
 double read_real(const po::variables_map& vm, const char* name, const char* meaning, const char* range,
                  const std::function<bool(double)>& in_range) {
   const std::string option = std::string("--") + name;
@@ -273,15 +300,29 @@ std::shared_ptr<const model::Material> read_material_file(const std::string& pat
   }
 }
 
+namespace {
+PointMaterial point_material_at(const std::optional<std::string>& path) {
+  if (!path) return {nullptr, model::creep_laws().front()};
+  std::shared_ptr<const model::Material> material = read_material_file(*path);
+  return {material, material->spec()};
+}
+}  // namespace
+
 PointMaterial find_point_material(const std::vector<std::string>& args) {
   std::optional<std::string> path;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--material" && i + 1 < args.size()) path = args[i + 1];
     if (args[i].rfind("--material=", 0) == 0) path = args[i].substr(11);
   }
-  if (!path) return {nullptr, model::creep_laws().front()};
-  std::shared_ptr<const model::Material> material = read_material_file(*path);
-  return {material, material->spec()};
+  return point_material_at(path);
+}
+
+PointMaterial find_point_material(const Keywords& keywords) {
+  std::optional<std::string> path;
+  for (const auto& [name, text] : keywords) {
+    if (name == "material") path = text;
+  }
+  return point_material_at(path);
 }
 
 model::LoadShape parse_load_table(const std::string& text, const std::string& key) {

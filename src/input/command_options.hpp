@@ -25,6 +25,18 @@ boost::program_options::variables_map parse_command(const std::vector<std::strin
                                                     const boost::program_options::options_description& opts,
                                                     const std::string& command);
 
+/// Keywords and their values as text, in the order given: Python's keywords, each the name
+/// of an option without its dashes (`l`, `load-table`).
+using Keywords = std::vector<std::pair<std::string, std::string>>;
+
+/// The same options read from keywords instead of a command line: each keyword is stored as
+/// its option with the value, through the same declarations (defaults, notify), so every
+/// later check is the command's. Throws UsageError for a keyword that is no option
+/// ("unknown option --NAME", as the command line says it).
+boost::program_options::variables_map parse_keywords(const Keywords& keywords,
+                                                     const boost::program_options::options_description& opts,
+                                                     const std::string& command);
+
 /// A required (or defaulted) real option, range-checked. Throws UsageError naming the
 /// option, its value and its valid range `range`.
 double read_real(const boost::program_options::variables_map& vm, const char* name, const char* meaning,
@@ -83,6 +95,8 @@ struct PointMaterial {
   std::string time_unit() const { return material ? material->time_unit() : "T_eps"; }
 };
 PointMaterial find_point_material(const std::vector<std::string>& args);
+/// The same for keywords (the `material` keyword).
+PointMaterial find_point_material(const Keywords& keywords);
 
 /// A load table "t:phi, t:phi, ..." (times in the law's unit, phi the fraction of pbar; from
 /// t = 0 to phi = 1, non-decreasing) as a LoadShape. Throws UsageError naming `key`, the

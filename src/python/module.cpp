@@ -92,8 +92,8 @@ py::dict point_dict(const model::PointResult& r, const std::string& time_unit) {
   return fields.out;
 }
 
-py::dict point_command(const std::vector<std::string>& args) {
-  const app::PointRun run = app::evaluate_point_command(args);
+py::dict point_command(const input::Keywords& keywords) {
+  const app::PointRun run = app::evaluate_point(keywords);
   py::dict out = point_dict(run.result, run.inputs.time_unit);
   out["localization"] = run.inputs.problem.localization.spelling();
   out["time_unit"] = run.inputs.time_unit;
@@ -115,7 +115,7 @@ py::dict point_command(const std::vector<std::string>& args) {
 }
 
 /// `punchsweep reference --format json`'s keys, with the model's point keys it has.
-py::dict reference_command(const std::vector<std::string>& args) {
+py::dict reference_command(const input::Keywords& keywords) {
   // Ctrl-C between the BEM's time steps; the KeyboardInterrupt it sets is raised below.
   CtrlC ctrl_c;
   const model::StopRequest interrupted([&ctrl_c] { return ctrl_c.pressed(); });
@@ -123,7 +123,7 @@ py::dict reference_command(const std::vector<std::string>& args) {
   {
     py::gil_scoped_release release;
     try {
-      solved.emplace(app::evaluate_reference_command(args, interrupted));
+      solved.emplace(app::evaluate_reference(keywords, interrupted));
     } catch (const model::Stopped&) {
     }
   }
@@ -466,10 +466,10 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
-  m.def("point", &point_command, py::arg("args"),
-        "punchsweep point ARGS, evaluated in-process: a dict of its JSON keys");
-  m.def("reference", &reference_command, py::arg("args"),
-        "punchsweep reference ARGS, solved in-process: a dict of its JSON keys");
+  m.def("point", &point_command, py::arg("keywords"),
+        "punchsweep point of (option name, value text) pairs, evaluated in-process: a dict of its JSON keys");
+  m.def("reference", &reference_command, py::arg("keywords"),
+        "punchsweep reference of (option name, value text) pairs, solved in-process: a dict of its JSON keys");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
         py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"),
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "

@@ -26,6 +26,14 @@ using namespace punchsweep;
 
 namespace {
 
+// "--name value" pairs as the engine's keywords (Python's form of the same options).
+punchsweep::input::Keywords keywords_of(const std::vector<std::string>& args) {
+  punchsweep::input::Keywords keywords;
+  for (std::size_t i = 0; i + 1 < args.size(); i += 2) keywords.emplace_back(args[i].substr(2), args[i + 1]);
+  return keywords;
+}
+
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// A private folder under the build's temporary space, removed at the end.
@@ -180,10 +188,10 @@ TEST(PeriodicModel, agrees_with_the_time_stepping_reference) {
     for (const auto& a : args) text += a + " ";
     std::vector<std::string> model_args = args;
     model_args.insert(model_args.end(), {"--localization", "periodic"});
-    const app::PointRun m = app::evaluate_point_command(model_args);
+    const app::PointRun m = app::evaluate_point(keywords_of(model_args));
     std::vector<std::string> bem_args = args;
     bem_args.insert(bem_args.end(), {"--bem-grid", "512"});
-    const app::ReferenceRun b = app::evaluate_reference_command(bem_args);
+    const app::ReferenceRun b = app::evaluate_reference(keywords_of(bem_args));
     ASSERT_TRUE(m.result.valid()) << text << m.result.reason();
     ASSERT_EQ(m.result.regime, b.result.regime) << text;
     if (b.result.t_star && *b.result.t_star > 0.0) {
@@ -213,8 +221,8 @@ TEST(PeriodicModel, merged_spots_are_valid) {
   std::vector<std::string> refined = args, periodic = args;
   refined.insert(refined.end(), {"--localization", "refined"});
   periodic.insert(periodic.end(), {"--localization", "periodic"});
-  EXPECT_FALSE(app::evaluate_point_command(refined).result.valid());
-  const model::PointResult r = app::evaluate_point_command(periodic).result;
+  EXPECT_FALSE(app::evaluate_point(keywords_of(refined)).result.valid());
+  const model::PointResult r = app::evaluate_point(keywords_of(periodic)).result;
   EXPECT_TRUE(r.valid()) << r.reason();
   EXPECT_GT(r.area_fraction_inf, 0.99);
   EXPECT_GT(r.a1_inf + r.a2_inf, 0.5 / std::sqrt(2.0));
@@ -254,8 +262,8 @@ TEST(PeriodicModel, reference_brackets_t_star_below_the_rounding_of_time) {
   std::vector<std::string> bem = args, periodic = args;
   bem.insert(bem.end(), {"--bem-grid", "64"});
   periodic.insert(periodic.end(), {"--localization", "periodic"});
-  const app::ReferenceRun b = app::evaluate_reference_command(bem);
-  const model::PointResult m = app::evaluate_point_command(periodic).result;
+  const app::ReferenceRun b = app::evaluate_reference(keywords_of(bem));
+  const model::PointResult m = app::evaluate_point(keywords_of(periodic)).result;
   ASSERT_EQ(b.result.regime, model::Regime::delayed);
   ASSERT_EQ(m.regime, model::Regime::delayed);
   EXPECT_NEAR(*b.result.t_star, *m.t_star, 1e-3 * *m.t_star);

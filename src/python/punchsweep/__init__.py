@@ -56,20 +56,12 @@ def _option_text(value: Any) -> str:
     return str(value)
 
 
-def _arguments(options: dict[str, Any]) -> list[str]:
-    """Keywords as command-line arguments: name -> --name (underscores as dashes); None is
-    left out (the command's default). A NUL character cannot be part of a command-line
-    argument, so a value holding one is refused rather than cut there."""
-    args: list[str] = []
-    for name, value in options.items():
-        if value is None:
-            continue
-        option = "--" + name.replace("_", "-")
-        text = _option_text(value)
-        if "\x00" in text or "\x00" in option:
-            raise ValueError(f"{option} = {text!r}: a NUL character cannot be part of an option")
-        args += [option, text]
-    return args
+def _keywords(options: dict[str, Any]) -> list[tuple[str, str]]:
+    """Keywords as the engine's (option name, value) pairs: underscores as dashes
+    (load_table is the option load-table), values as _option_text; None is left out (the
+    command's default). The engine stores each as its option, through the same declarations
+    and checks as the command line; no command line is built."""
+    return [(name.replace("_", "-"), _option_text(value)) for name, value in options.items() if value is not None]
 
 
 def _result(cls, raw: dict):
@@ -142,10 +134,10 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     C = 0.5, times 0, 0.5, 1, 2, 5, the periodic model); a material file's own
     parameters go in **options. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)  # a path or a Material
-    args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
-                           temperature=temperature, pressure=pressure, ramp=ramp,
-                           load_table=load_table, localization=localization, **options))
-    return _result(PointResult, _core.point(args))
+    keywords = _keywords(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
+                              temperature=temperature, pressure=pressure, ramp=ramp,
+                              load_table=load_table, localization=localization, **options))
+    return _result(PointResult, _core.point(keywords))
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
@@ -157,10 +149,10 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
     """`punchsweep reference` in-process (the periodic BEM on a bem_grid x bem_grid grid of
     the cell, default 128), without the interpreter lock held while it solves."""
     material = None if material is None else os.fspath(material)  # a path or a Material
-    args = _arguments(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, bem_grid=bem_grid,
-                           material=material, temperature=temperature, pressure=pressure,
-                           ramp=ramp, load_table=load_table, **options))
-    return _result(ReferenceResult, _core.reference(args))
+    keywords = _keywords(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, bem_grid=bem_grid,
+                              material=material, temperature=temperature, pressure=pressure,
+                              ramp=ramp, load_table=load_table, **options))
+    return _result(ReferenceResult, _core.reference(keywords))
 
 
 @dataclass(frozen=True)
