@@ -383,3 +383,28 @@ TEST(MaterialLaws, every_file_law_reads_its_declared_keys_and_refuses_others) {
     }
   }
 }
+
+// The laws of parameter values and the laws of material files are one vocabulary: every law
+// a sweep may name by model.creep_law also has its material-file form, of the same name, and
+// that form at T_eps = 1 and E_0 = 1 is the law itself.
+TEST(MaterialLaws, every_law_of_values_has_its_file_form) {
+  for (const CreepLawSpec& law : creep_laws()) {
+    const MaterialLaw* file = find_material_law(law.name);
+    ASSERT_NE(file, nullptr) << law.name << " has no entry in material_laws()";
+    const std::vector<double> values = kSamples.at(std::string(law.name)).at(2);
+    std::string keys = "E_0 = 1\nT_eps = 1\n";
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      std::ostringstream line;
+      line.precision(17);
+      line << law.parameters[k].name << " = " << values[k] << "\n";
+      keys += line.str();
+    }
+    const std::string text = "[material]\nname = x\nlaw = " + std::string(law.name) +
+                             "\nmodulus_unit = Pa\ntime_unit = s\npoisson = 0\n" + keys;
+    const std::unique_ptr<CreepLaw> from_file = Material::parse(text, "x.ini").make({});
+    const std::unique_ptr<CreepLaw> from_values = make_creep_law(law, values);
+    for (const double t : {0.0, 0.1, 1.0, 3.0, 30.0}) {
+      EXPECT_NEAR(from_file->creep(t), from_values->creep(t), 1e-14) << law.name << " t = " << t;
+    }
+  }
+}

@@ -6,6 +6,9 @@
 #include "model/laws/kelvin_series.hpp"
 #include "model/laws/power_law.hpp"
 #include "model/laws/prony_series.hpp"
+#include "model/laws/standard_linear_solid.hpp"
+#include "model/laws/time_shift.hpp"
+#include "model/problem/parameter.hpp"
 #include "model/numerics/number_text.hpp"
 
 namespace punchsweep::model {
@@ -99,7 +102,39 @@ std::string describe_power(const MaterialTerms& t) {
   return out.str();
 }
 
-const std::array<MaterialLaw, 3> kLaws{{
+/// J(t) = (T - (T - 1) exp(-t/T_eps))/E_0: the standard linear solid of creep_laws(), in
+/// physical units.
+constexpr std::array<MaterialKey, 3> kSlsKeys{{
+    {"E_0", "the instantaneous modulus E_0 > 0, in modulus_unit"},
+    {"T", "the creep ratio T = T_eps/T_sigma >= 1 (J(inf) = T/E_0; T = 1 is elastic)"},
+    {"T_eps", "the retardation (creep) time T_eps > 0, in time_unit"},
+}};
+
+MaterialTerms read_sls(const MaterialFile& f) {
+  MaterialTerms t;
+  t.E0 = f.positive("material.E_0", "E_0 > 0");
+  t.final = f.number("material.T");
+  if (!creep_ratio_parameter().admits(t.final)) {
+    f.fail_value("material.T", "outside its range: " + std::string(creep_ratio_parameter().range));
+  }
+  t.times = {f.positive("material.T_eps", "T_eps > 0 (in time_unit)")};
+  return t;
+}
+
+std::string describe_sls(const MaterialTerms& t) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "T = " << t.final << ", T_eps = " << t.times.front();
+  return out.str();
+}
+
+const std::array<MaterialLaw, 4> kLaws{{
+    {"standard_linear_solid", "creep J(t) = (T - (T - 1) exp(-t/T_eps))/E_0", kSlsKeys, read_sls,
+     [](const MaterialTerms& t) -> std::unique_ptr<CreepLaw> {
+       // The law in T_eps, run T_eps times slower: t in the file's time unit.
+       return std::make_unique<TimeShiftedLaw>(std::make_unique<StandardLinearSolid>(t.final), t.times.front());
+     },
+     describe_sls, "E_0 = 2.0\nT = 2.5\nT_eps = 3\n"},
     {"prony", "relaxation E(t) = E_inf + sum E_i exp(-t/tau_i) (a DMA fit), or E_0 (1 - sum g_i (1 - exp(-t/tau_i)))",
      kPronyKeys, read_prony,
      [](const MaterialTerms& t) -> std::unique_ptr<CreepLaw> {

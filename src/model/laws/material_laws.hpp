@@ -21,7 +21,7 @@ namespace punchsweep::model {
 /// A law's data in the model's units: moduli relative to E_0, times in the file's unit.
 struct MaterialTerms {
   double E0 = 0.0;        ///< the instantaneous modulus E_0, in the file's modulus_unit
-  double final = 0.0;     ///< prony: E_inf/E_0; kelvin: E_0/eta (0: no dashpot); power_law: n
+  double final = 0.0;     ///< prony: E_inf/E_0; kelvin: E_0/eta (0: no dashpot); power_law: n; sls: T
   std::vector<double> moduli, times;
 };
 
@@ -45,7 +45,9 @@ struct MaterialLaw {
   std::string_view example;
 };
 
-/// Every law a material file may name, in the order docs/materials.md lists them.
+/// Every law a material file may name, in the order docs/materials.md lists them; each law
+/// of creep_laws() (a law of parameter values) has an entry of the same name, its form in
+/// physical units (tested).
 std::span<const MaterialLaw> material_laws();
 
 /// The law called `name`, or nullptr.
