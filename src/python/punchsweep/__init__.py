@@ -266,6 +266,8 @@ class Material:
 def _in_scale(values, name: str, material, R):
     """values (numbers, or text with units: '150um', ['1kPa', '2kPa']) in the scale of
     parameter `name`, by the engine's rule (docs/cli.md, "Units")."""
+    if isinstance(values, np.ndarray) and values.dtype.kind in "biuf":
+        return values  # numbers: already in the scale (no per-element look)
     array = np.asarray(values, dtype=object)
     if not any(isinstance(v, (str, bytes)) for v in array.reshape(-1)):
         return values
