@@ -1,4 +1,5 @@
 #include "input/command_options.hpp"
+#include "input/material_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -294,7 +295,7 @@ PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLaw
 std::shared_ptr<const model::Material> read_material_file(const std::string& path, const std::string& option) {
   const std::string text = read_text_file(path, option.empty() ? "material file" : option + " = material file");
   try {
-    return std::make_shared<const model::Material>(model::Material::parse(text, path));
+    return std::make_shared<const model::Material>(read_material_text(text, path));
   } catch (const model::MaterialError& e) {
     throw UsageError(e.what());
   }

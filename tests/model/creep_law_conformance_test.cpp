@@ -21,6 +21,7 @@
 #include <functional>
 #include <sstream>
 
+#include "input/material_file.hpp"
 #include "model/laws/creep_laws.hpp"
 #include "model/laws/kelvin_series.hpp"
 #include "model/laws/material.hpp"
@@ -94,7 +95,7 @@ std::vector<Case> cases() {
   // Every law a material file may name, built from its registered example file.
   for (const MaterialLaw& law : material_laws()) {
     out.push_back({"file_" + std::string(law.name), nullptr, {}, [&law] {
-                     return Material::parse(material_file_of(law), "example.ini").make({});
+                     return punchsweep::input::read_material_text(material_file_of(law), "example.ini").make({});
                    }});
   }
   // A shifted law: a 3-term Prony series 100 times slower and 1000 times faster.
@@ -342,7 +343,7 @@ TEST(MaterialLaws, every_file_law_reads_its_declared_keys_and_refuses_others) {
     SCOPED_TRACE(std::string(law.name));
     EXPECT_EQ(find_material_law(law.name), &law);
     const std::string file = material_file_of(law);
-    EXPECT_NO_THROW(Material::parse(file, "example.ini"));
+    EXPECT_NO_THROW(punchsweep::input::read_material_text(file, "example.ini"));
     std::istringstream lines{std::string(law.example)};
     for (std::string line; std::getline(lines, line);) {
       const std::string key = line.substr(0, line.find(' '));
@@ -352,7 +353,7 @@ TEST(MaterialLaws, every_file_law_reads_its_declared_keys_and_refuses_others) {
       std::string without = file;
       without.erase(without.find(line + "\n"), line.size() + 1);
       try {
-        Material::parse(without, "example.ini");
+        punchsweep::input::read_material_text(without, "example.ini");
         EXPECT_NE(std::string(std::find_if(law.keys.begin(), law.keys.end(),
                                            [&](const MaterialKey& k) { return k.key == key; })->meaning)
                       .find("optional"),
@@ -372,7 +373,7 @@ TEST(MaterialLaws, every_file_law_reads_its_declared_keys_and_refuses_others) {
           continue;
         }
         try {
-          Material::parse(file + std::string(k.key) + " = 1\n", "example.ini");
+          punchsweep::input::read_material_text(file + std::string(k.key) + " = 1\n", "example.ini");
           ADD_FAILURE() << k.key << " of " << other.name << " was accepted in a " << law.name << " file";
         } catch (const MaterialError& e) {
           EXPECT_NE(std::string(e.what()).find(std::string(k.key) + " = 1: not a key of law = " + std::string(law.name)),
@@ -401,7 +402,7 @@ TEST(MaterialLaws, every_law_of_values_has_its_file_form) {
     }
     const std::string text = "[material]\nname = x\nlaw = " + std::string(law.name) +
                              "\nmodulus_unit = Pa\ntime_unit = s\npoisson = 0\n" + keys;
-    const std::unique_ptr<CreepLaw> from_file = Material::parse(text, "x.ini").make({});
+    const std::unique_ptr<CreepLaw> from_file = punchsweep::input::read_material_text(text, "x.ini").make({});
     const std::unique_ptr<CreepLaw> from_values = make_creep_law(law, values);
     for (const double t : {0.0, 0.1, 1.0, 3.0, 30.0}) {
       EXPECT_NEAR(from_file->creep(t), from_values->creep(t), 1e-14) << law.name << " t = " << t;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "input/material_file.hpp"
 #include "model/laws/material.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/standard_linear_solid.hpp"
@@ -45,7 +46,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 std::string refusal(const std::string& text) {
   try {
-    Material::parse(text, "bad.ini");
+    punchsweep::input::read_material_text(text, "bad.ini");
   } catch (const MaterialError& e) {
     return e.what();
   }
@@ -75,7 +76,7 @@ void expect_same_point(const PointResult& a, const PointResult& b, double time_s
 }  // namespace
 
 TEST(Material, reads_the_documented_example) {
-  const Material m = Material::parse(kExample, "example.ini");
+  const Material m = punchsweep::input::read_material_text(kExample, "example.ini");
   EXPECT_EQ(m.name(), "example, made up for the test");
   EXPECT_EQ(m.law(), "prony");
   EXPECT_EQ(m.time_unit(), "s");
@@ -98,8 +99,8 @@ TEST(Material, reads_the_documented_example) {
 TEST(Material, normalized_form_is_the_absolute_form) {
   const std::string normalized = replaced(replaced(kExample, "E_inf = 1.0", "E_0 = 4.5"),
                                           "E_i = 2.0, 1.5", "g_i = 0.4444444444444444, 0.3333333333333333");
-  const auto a = Material::parse(kExample, "a.ini").make(std::vector<double>{105.0});
-  const auto b = Material::parse(normalized, "b.ini").make(std::vector<double>{105.0});
+  const auto a = punchsweep::input::read_material_text(kExample, "a.ini").make(std::vector<double>{105.0});
+  const auto b = punchsweep::input::read_material_text(normalized, "b.ini").make(std::vector<double>{105.0});
   for (const double t : {0.0, 0.3, 7.0, 100.0}) EXPECT_NEAR(a->creep(t), b->creep(t), 1e-14);
 }
 
@@ -143,7 +144,7 @@ TEST(Material, refuses_every_bad_file_with_key_value_and_range) {
 }
 
 TEST(Material, temperature_outside_the_wlf_range_is_refused) {
-  const Material m = Material::parse(kExample, "example.ini");
+  const Material m = punchsweep::input::read_material_text(kExample, "example.ini");
   try {
     m.make(std::vector<double>{50.0});
     ADD_FAILURE() << "accepted 50 degC below T_ref - C2 = 53.4";
@@ -159,7 +160,7 @@ TEST(Material, one_term_prony_file_is_the_standard_linear_solid) {
   const std::string text =
       "[material]\nname = SLS T = 2.5\nlaw = prony\nmodulus_unit = MPa\ntime_unit = s\npoisson = 0.5\n"
       "E_inf = 0.4\nE_i = 0.6\ntau_i = 0.4\n";
-  const auto prony = Material::parse(text, "sls.ini").make({});
+  const auto prony = punchsweep::input::read_material_text(text, "sls.ini").make({});
   const StandardLinearSolid sls(T);
   ContactProblem problem;
   problem.l = 0.75;
@@ -173,7 +174,7 @@ TEST(Material, one_term_prony_file_is_the_standard_linear_solid) {
 
 // WLF: the point at temperature th is the point at T_ref with every time scaled by a_T.
 TEST(Material, wlf_point_is_the_reference_point_at_scaled_times) {
-  const Material m = Material::parse(kExample, "example.ini");
+  const Material m = punchsweep::input::read_material_text(kExample, "example.ini");
   const double th = 115.0;
   const double a_T = std::pow(10.0, -17.44 * 10.0 / 61.6);
   ContactProblem problem;
@@ -196,7 +197,7 @@ TEST(Material, every_shipped_material_parses) {
     std::ifstream in(entry.path());
     std::ostringstream text;
     text << in.rdbuf();
-    const Material m = Material::parse(text.str(), entry.path().string());
+    const Material m = punchsweep::input::read_material_text(text.str(), entry.path().string());
     EXPECT_GT(m.instantaneous_modulus_Pa(), 0.0) << entry.path();
     EXPECT_NE(m.name().find(','), std::string::npos) << "the name states the source: " << m.name();
     ++found;
@@ -212,7 +213,7 @@ TEST(Material, power_law_never_gives_never) {
   const std::string text =
       "[material]\nname = power law, made up for the test\nlaw = power_law\nmodulus_unit = kPa\n"
       "time_unit = min\npoisson = 0.49\nE_0 = 800\nn = 0.3\nt_1 = 10\n";
-  const Material m = Material::parse(text, "pl.ini");
+  const Material m = punchsweep::input::read_material_text(text, "pl.ini");
   EXPECT_EQ(m.time_unit(), "min");
   EXPECT_DOUBLE_EQ(m.instantaneous_modulus_Pa(), 8e5);
   const auto law = m.make({});
@@ -235,7 +236,7 @@ TEST(Material, power_law_never_gives_never) {
   }
   const auto refused = [&](const std::string& from, const std::string& to) {
     try {
-      Material::parse(replaced(text, from, to), "pl.ini");
+      punchsweep::input::read_material_text(replaced(text, from, to), "pl.ini");
     } catch (const MaterialError& e) {
       return std::string(e.what());
     }

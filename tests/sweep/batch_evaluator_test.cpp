@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "input/material_file.hpp"
 #include "model/laws/creep_laws.hpp"
 #include "model/problem/load_shape.hpp"
 #include "model/laws/material.hpp"
@@ -73,7 +74,7 @@ std::vector<Law> every_law() {
     std::ifstream in(file);
     std::stringstream text;
     text << in.rdbuf();
-    const model::Material& m = materials().emplace_back(model::Material::parse(text.str(), file.string()));
+    const model::Material& m = materials().emplace_back(punchsweep::input::read_material_text(text.str(), file.string()));
     Law law{file.filename().string(), m.spec(), {}, 10.0};
     for (const model::Parameter& p : law.spec.parameters) {
       const double T_ref = std::stod(std::string(p.point_default));

@@ -6,7 +6,6 @@
 #include <set>
 #include <sstream>
 
-#include "model/laws/material_file.hpp"
 #include "model/laws/material_laws.hpp"
 #include "model/numerics/number_text.hpp"
 #include "model/numerics/units.hpp"
@@ -71,11 +70,11 @@ CreepLawSpec material_choice(std::vector<std::shared_ptr<const Material>> materi
                       }};
 }
 
-Material Material::parse(std::string_view text, std::string_view origin) {
-  const MaterialFile f(text, std::string(origin));
+Material Material::read(const MaterialKeys& f, std::string text) {
+  const std::string& origin = f.origin();
   Material m;
-  m.text_ = std::string(text);
-  if (!f.has_section("material")) throw MaterialError(std::string(origin) + ": no [material] section");
+  m.text_ = std::move(text);
+  if (!f.has_section("material")) throw MaterialError(origin + ": no [material] section");
   m.name_ = f.text("material.name");
   m.law_ = f.text("material.law");
   const Unit* modulus = find_unit(Dimension::pressure, f.text("material.modulus_unit"));
@@ -111,7 +110,7 @@ Material Material::parse(std::string_view text, std::string_view origin) {
     }
     if (f.has("shift.T_min")) shift.T_min = f.number("shift.T_min");
     if (f.has("shift.T_max")) shift.T_max = f.number("shift.T_max");
-    if (std::string e = shift.error(); !e.empty()) throw MaterialError(std::string(origin) + ": [shift] " + e);
+    if (std::string e = shift.error(); !e.empty()) throw MaterialError(origin + ": [shift] " + e);
     m.shift_ = shift;
     auto temperature = std::make_shared<Temperature>(Temperature{f.text("shift.T_ref"), temperature_parameter()});
     temperature->parameter.point_default = temperature->reference;
@@ -123,7 +122,7 @@ Material Material::parse(std::string_view text, std::string_view origin) {
   try {
     m.make(m.shift_ ? std::vector<double>{m.shift_->T_ref} : std::vector<double>{});
   } catch (const std::invalid_argument& e) {
-    throw MaterialError(std::string(origin) + ": " + e.what());
+    throw MaterialError(origin + ": " + e.what());
   }
   return m;
 }

@@ -15,6 +15,7 @@
 
 #include "model/laws/creep_law.hpp"
 #include "model/laws/creep_laws.hpp"
+#include "model/laws/material_keys.hpp"
 #include "model/laws/material_laws.hpp"
 #include "model/problem/parameter.hpp"
 #include "model/laws/time_shift.hpp"
@@ -44,11 +45,12 @@ CreepLawSpec material_choice(std::vector<std::shared_ptr<const Material>> materi
 
 class Material {
  public:
-  /// Parses a material file's text; `origin` (the file name) starts every message. Throws
-  /// MaterialError for a missing or unknown section or key, a repeated key, a value that is
-  /// not a number, an unknown law or unit, a modulus <= 0, sum g_i >= 1, unsorted or
-  /// repeated times, lists of different lengths, or bad shift constants.
-  static Material parse(std::string_view text, std::string_view origin);
+  /// The material of a file's entries (input::read_material_text reads them from its text,
+  /// which `text` keeps verbatim for the map and --resume). Throws MaterialError (through
+  /// `keys`, naming the file, line, key and value) for a missing or unknown key, an unknown
+  /// law or unit, a modulus <= 0, sum g_i >= 1, unsorted or repeated times, lists of
+  /// different lengths, or bad shift constants.
+  static Material read(const MaterialKeys& keys, std::string text);
 
   /// "[material] name": the material and the published source of its numbers.
   const std::string& name() const { return name_; }

@@ -25,7 +25,7 @@ constexpr std::array<MaterialKey, 5> kPronyKeys{{
     {"tau_i", "the relaxation times tau_i > 0, strictly increasing, in time_unit"},
 }};
 
-MaterialTerms read_prony(const MaterialFile& f) {
+MaterialTerms read_prony(const MaterialKeys& f) {
   MaterialTerms t;
   const std::vector<double> tau = f.list("material.tau_i");
   if (f.has("material.g_i") || f.has("material.E_0")) {
@@ -64,7 +64,7 @@ constexpr std::array<MaterialKey, 4> kKelvinKeys{{
     {"eta", "optional: the dashpot's viscosity eta > 0 (unlimited creep), in modulus_unit time_unit"},
 }};
 
-MaterialTerms read_kelvin(const MaterialFile& f) {
+MaterialTerms read_kelvin(const MaterialKeys& f) {
   MaterialTerms t;
   t.E0 = f.positive("material.E_0", "E_0 > 0");
   const std::vector<double> J = f.list("material.J_i");  // in 1/modulus_unit
@@ -85,7 +85,7 @@ constexpr std::array<MaterialKey, 3> kPowerKeys{{
     {"t_1", "the time t_1 > 0 at which the creep doubles the elastic compliance, in time_unit"},
 }};
 
-MaterialTerms read_power(const MaterialFile& f) {
+MaterialTerms read_power(const MaterialKeys& f) {
   MaterialTerms t;
   t.E0 = f.positive("material.E_0", "E_0 > 0");
   t.final = f.number("material.n");
@@ -110,7 +110,7 @@ constexpr std::array<MaterialKey, 3> kSlsKeys{{
     {"T_eps", "the retardation (creep) time T_eps > 0, in time_unit"},
 }};
 
-MaterialTerms read_sls(const MaterialFile& f) {
+MaterialTerms read_sls(const MaterialKeys& f) {
   MaterialTerms t;
   t.E0 = f.positive("material.E_0", "E_0 > 0");
   t.final = f.number("material.T");

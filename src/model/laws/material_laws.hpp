@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "model/laws/creep_law.hpp"
-#include "model/laws/material_file.hpp"
+#include "model/laws/material_keys.hpp"
 
 namespace punchsweep::model {
 
@@ -36,7 +36,7 @@ struct MaterialLaw {
   std::string_view description;  ///< one line: the law's function with its units
   std::span<const MaterialKey> keys;
   /// Reads and checks the law's keys of `file` (MaterialError naming the key otherwise).
-  MaterialTerms (*read)(const MaterialFile& file);
+  MaterialTerms (*read)(const MaterialKeys& file);
   /// The law from its terms (E_0 = 1: creep in 1/E_0, time in the file's unit).
   std::unique_ptr<CreepLaw> (*make)(const MaterialTerms& terms);
   /// Its terms in a few words, for Material::describe: "10 terms", "n = 0.3, t_1 = 2".

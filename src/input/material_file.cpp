@@ -1,4 +1,4 @@
-#include "model/laws/material_file.hpp"
+#include "input/material_file.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -8,7 +8,7 @@
 #include "model/laws/material_laws.hpp"
 #include "model/numerics/number_text.hpp"
 
-namespace punchsweep::model {
+namespace punchsweep::input {
 namespace {
 
 /// The [material] keys of every file, whatever its law.
@@ -30,8 +30,8 @@ std::vector<std::string_view> section_keys(const std::string& section) {
     return keys;
   }
   for (const std::string_view k : kCommonKeys) add(k);
-  for (const MaterialLaw& law : material_laws()) {
-    for (const MaterialKey& k : law.keys) add(k.key);
+  for (const model::MaterialLaw& law : model::material_laws()) {
+    for (const model::MaterialKey& k : law.keys) add(k.key);
   }
   return keys;
 }
@@ -56,11 +56,11 @@ MaterialFile::MaterialFile(std::string_view text, std::string origin) : origin_(
     std::string line(text.substr(start, end - start));
     start = end + 1;
     if (const auto hash = line.find_first_of("#;"); hash != std::string::npos) line.erase(hash);
-    line = std::string(trim(line));
+    line = std::string(model::trim(line));
     if (line.empty()) continue;
     if (line.front() == '[') {
       if (line.back() != ']') fail(line_number, "'" + line + "' is not a section header; valid: [material] or [shift]");
-      section = std::string(trim(std::string_view(line).substr(1, line.size() - 2)));
+      section = std::string(model::trim(std::string_view(line).substr(1, line.size() - 2)));
       if (section != "material" && section != "shift") {
         fail(line_number, "unknown section [" + section + "]; valid: [material] and an optional [shift]");
       }
@@ -70,8 +70,8 @@ MaterialFile::MaterialFile(std::string_view text, std::string origin) : origin_(
     const auto eq = line.find('=');
     if (eq == std::string::npos) fail(line_number, "'" + line + "' is not 'key = value'");
     if (section.empty()) fail(line_number, "'" + line + "' comes before any section; valid: [material] first");
-    const std::string key(trim(std::string_view(line).substr(0, eq)));
-    const std::string value(trim(std::string_view(line).substr(eq + 1)));
+    const std::string key(model::trim(std::string_view(line).substr(0, eq)));
+    const std::string value(model::trim(std::string_view(line).substr(eq + 1)));
     const std::vector<std::string_view> valid = section_keys(section);
     bool known = false;
     for (const std::string_view k : valid) known = known || k == key;
@@ -112,25 +112,19 @@ double MaterialFile::number(const std::string& id) const {
 
 std::vector<double> MaterialFile::list(const std::string& id) const { return parse_numbers(id); }
 
-double MaterialFile::positive(const std::string& id, const std::string& range) const {
-  const double value = number(id);
-  if (!(value > 0.0)) fail_value(id, "outside its range: " + range);
-  return value;
-}
-
 void MaterialFile::fail(std::size_t line, const std::string& what) const {
-  throw MaterialError(origin_ + ":" + std::to_string(line) + ": " + what);
+  throw model::MaterialError(origin_ + ":" + std::to_string(line) + ": " + what);
 }
 
 void MaterialFile::fail_key(const std::string& id, const std::string& what) const {
   const auto dot = id.find('.');
-  throw MaterialError(origin_ + ": [" + id.substr(0, dot) + "] " + id.substr(dot + 1) + " " + what);
+  throw model::MaterialError(origin_ + ": [" + id.substr(0, dot) + "] " + id.substr(dot + 1) + " " + what);
 }
 
 void MaterialFile::fail_value(const std::string& id, const std::string& what) const {
   const auto dot = id.find('.');
   const Entry& e = values_.at(id);
-  throw MaterialError(origin_ + ":" + std::to_string(e.line) + ": [" + id.substr(0, dot) + "] " + id.substr(dot + 1) +
+  throw model::MaterialError(origin_ + ":" + std::to_string(e.line) + ": [" + id.substr(0, dot) + "] " + id.substr(dot + 1) +
                       " = " + e.value + ": " + what);
 }
 
@@ -140,7 +134,7 @@ std::vector<double> MaterialFile::parse_numbers(const std::string& id) const {
   std::string item;
   std::istringstream in(value);
   while (std::getline(in, item, ',')) {
-    item = std::string(trim(item));
+    item = std::string(model::trim(item));
     char* end = nullptr;
     const double v = std::strtod(item.c_str(), &end);
     if (item.empty() || end != item.c_str() + item.size()) fail_value(id, "'" + item + "' is not a number");
@@ -150,29 +144,12 @@ std::vector<double> MaterialFile::parse_numbers(const std::string& id) const {
   return out;
 }
 
-void MaterialFile::check_terms(const std::string& moduli_key, const std::vector<double>& moduli,
-                               const std::string& times_key, const std::vector<double>& times,
-                               const std::string& modulus_range) const {
-  if (moduli.size() != times.size()) {
-    fail_value(times_key, std::to_string(times.size()) + " times for " + std::to_string(moduli.size()) +
-                              " values of " + moduli_key.substr(moduli_key.find('.') + 1) +
-                              "; valid: one time per term");
-  }
-  for (std::size_t i = 0; i < moduli.size(); ++i) {
-    if (!(moduli[i] > 0.0)) {
-      fail_value(moduli_key, "term " + std::to_string(i + 1) + " = " + number_text(moduli[i], 10) +
-                                 " is outside its range: " + modulus_range);
-    }
-    if (!(times[i] > 0.0)) {
-      fail_value(times_key, "term " + std::to_string(i + 1) + " = " + number_text(times[i], 10) +
-                                " is outside its range: times > 0");
-    }
-    if (i > 0 && !(times[i] > times[i - 1])) {
-      fail_value(times_key, "term " + std::to_string(i + 1) + " = " + number_text(times[i], 10) +
-                                " does not exceed the one before it (" + number_text(times[i - 1], 10) +
-                                "); valid: strictly increasing times (a repeated time is one term)");
-    }
-  }
+}  // namespace punchsweep::input
+
+namespace punchsweep::input {
+
+model::Material read_material_text(std::string_view text, const std::string& origin) {
+  return model::Material::read(MaterialFile(text, origin), std::string(text));
 }
 
-}  // namespace punchsweep::model
+}  // namespace punchsweep::input
