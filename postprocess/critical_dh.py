@@ -54,6 +54,11 @@ CURVE_AXIS = "T"  # one h_inf curve per value (h_0 does not depend on it), if th
 PANEL_AXIS = "s"  # one panel per value, if the map has it
 
 
+# Dash patterns of the touch-by curves, told apart at a glance: long dashes, dots, dash-dot,
+# short dashes.
+TOUCH_STYLES = [(0, (6, 2)), (0, (1, 1.5)), (0, (6, 2, 1, 2)), (0, (3, 1.5))]
+
+
 def parse_args(argv: list[str]) -> argparse.Namespace:
     p = pm.Parser(prog="critical_dh.py", description=__doc__,
                   formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -89,14 +94,17 @@ def along_dh(values: np.ndarray, name: str, dh_axis: int, unit: str = "") -> np.
 def touch_by_curve(dh: np.ndarray, t_star: np.ndarray, t_target: float) -> float:
     """The dh below which level 2 touches by t_target along one dh line of t* (0 immediate,
     NaN never; t* grows with dh): linear in log t* between the bracketing grid points (in t*
-    from an immediate one, t* = 0); the last grid dh that touches when the next never does,
-    NaN when none does."""
+    from an immediate one, t* = 0); the last grid dh that touches when the next never does;
+    NaN when none does; +inf when even the grid's largest dh touches (the answer lies above
+    the grid, which a curve must not pretend to know)."""
     t = np.where(np.isnan(t_star), np.inf, t_star)
     touched = t <= t_target
     if not touched.any():
         return float("nan")
     k = int(np.nonzero(touched)[0][-1])
-    if k + 1 >= len(dh) or not np.isfinite(t[k + 1]):
+    if k + 1 >= len(dh):
+        return float("inf")
+    if not np.isfinite(t[k + 1]):
         return float(dh[k])
     lo, hi = t[k], t[k + 1]
     if lo == 0.0:
@@ -182,6 +190,12 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     t_colours = [cmap(0.85 * k / max(len(T) - 1, 1)) for k in range(len(T))]
     immediate = pm.REGIME_COLOURS["immediate"]
     dh_unit = pm.unit_tex(pm.units(ds, "dh")) if pm.units(ds, "dh") else "-"
+    dh_top = float(ds["dh"].values[-1])
+    if touch is not None and np.isinf(touch).any():
+        beyond = [f"{t:g}" for i, t in enumerate(times) if np.isinf(touch[i]).any()]
+        print(f"critical_dh.py: warning: by t = {', '.join(beyond)} {pm.units(ds, 't_star')} level 2 touches even at "
+              f"the grid's largest dh = {dh_top:.6g}{pm.unit_suffix(ds, 'dh')} at some points; those touch-by "
+              f"curves stop there (marked ^): extend grid.dh to draw them", file=sys.stderr)
     for k in range(n):
         row, col = divmod(k, ncols)
         ax = fig.add_subplot(grid[row, col], sharex=fig.axes[0] if k else None)
@@ -190,7 +204,14 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
         for j in range(len(T)):
             ax.plot(x, hinf[j, k], color=t_colours[j], lw=1.4, marker="o", ms=2.5)
             for i in range(len(times)):
-                ax.plot(x, touch[i, j, k], color=t_colours[j], lw=1.0, ls=(0, (4, 1 + 2 * i)))
+                curve = touch[i, j, k]
+                # Beyond the grid's largest dh the curve stops, with a mark on the top edge.
+                ax.plot(x, np.where(np.isinf(curve), np.nan, curve), color=t_colours[j], lw=1.6,
+                        ls=TOUCH_STYLES[i % len(TOUCH_STYLES)])
+                above = np.isinf(curve)
+                if above.any():
+                    ax.plot(x[above], np.full(above.sum(), dh_top), ls="none", marker="^", ms=6,
+                            color=t_colours[j], clip_on=False)
         top = np.nanmax(hinf[:, k]) if np.isfinite(hinf[:, k]).any() else 1.0
         ax.set_ylim(0, 1.05 * top)
         if len(x) > 1:
@@ -213,8 +234,15 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
                        label=f"$h_\\infty$, {pm.format_value(ds, CURVE_AXIS, float(t), tex=True)}"
                        if has_curves else "$h_\\infty$")
                 for t, c in zip(T, t_colours)]
-    handles += [Line2D([], [], color="grey", lw=1.0, ls=(0, (4, 1 + 2 * i)),
+    # The touch-by lines in their own dash pattern, in the colour they are drawn in when there
+    # is one T curve (black beside several T colours).
+    legend_colour = t_colours[0] if len(T) == 1 else "black"
+    handles += [Line2D([], [], color=legend_colour, lw=1.6, ls=TOUCH_STYLES[i % len(TOUCH_STYLES)],
                        label=f"touches by t = {t:g} {time_unit}") for i, t in enumerate(times)]
+    if touch is not None and np.isinf(touch).any():
+        handles.append(Line2D([], [], color=legend_colour, ls="none", marker="^", ms=6,
+                              label=f"touches by then even at the grid's\nlargest dh ({dh_top:.3g}); the curve\n"
+                                    "stops there: extend grid.dh"))
     legend_ax = fig.add_subplot(grid[:, ncols])
     legend_ax.axis("off")
     legend_ax.legend(handles=handles, loc="upper left", frameon=False, fontsize=9, borderaxespad=0,

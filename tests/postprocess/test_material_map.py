@@ -65,6 +65,32 @@ def test_touch_by_interpolates_in_log_time():
     assert critical_dh.touch_by_curve(dh, t_star, 5.0) == pytest.approx(0.15, rel=1e-12)  # linear from t* = 0
     assert critical_dh.touch_by_curve(dh, t_star, 1e4) == 0.3  # the last that touches; the next never does
     assert np.isnan(critical_dh.touch_by_curve(dh, np.array([5.0, 50.0, np.nan, np.nan]), 1.0))
+    # Even the largest dh touches by then: the answer is above the grid, not its top value.
+    assert critical_dh.touch_by_curve(dh, np.array([0.0, 1.0, 2.0, 3.0]), 100.0) == np.inf
+
+
+def test_touch_by_curves_stop_at_the_grid_edge_and_say_so(tmp_path):
+    """Issue 25: above some pressure the touch-by curves were drawn flat at the grid's top dh;
+    they now stop there, with a warning and a legend mark."""
+    import critical_dh
+    path = tmp_path / "low.h5"
+    # A dh grid far too low for 60 s: at every pressure level 2 touches at its top.
+    done = subprocess.run([BINARY, "sweep", "--model.material", str(MATERIAL), "--grid.l", "0.75",
+                           "--grid.dh", "linspace(0.001, 0.004, 4)", "--grid.pbar", "0.01, 0.02, 0.04",
+                           "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", str(path)],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    ds = pm.open_map(path)
+    t_top = ds.t_star.isel(dh=-1).values.ravel()
+    assert np.all(np.nan_to_num(t_top, nan=np.inf) <= 60.0)  # the premise, from the map itself
+    fixed = pm.resolve_at(ds, pm.parse_at(["l=0.75", "s=2"], ds), free=["T", "s"], optional=("T", "s"),
+                          reserved={"pbar": "the horizontal axis", "dh": "the vertical axis"})
+    assert np.all(np.isinf(critical_dh.touch_by_curves(ds, "pbar", fixed, [60.0])))
+    out = tmp_path / "chart.png"
+    rc, _, err = call(critical_dh, path, "--against", "pbar", "--at", "l=0.75", "--touch-by", "60", "-o", out)
+    assert rc == 0, err
+    assert "touches even at the grid's largest dh" in err and "extend grid.dh" in err
+    assert out.stat().st_size > 10_000
 
 
 def test_critical_dh_against_temperature_of_a_wlf_map(tmp_path):
