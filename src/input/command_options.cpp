@@ -219,18 +219,18 @@ std::optional<double> read_physical_pressure(const po::variables_map& vm, const 
   const std::string text = vm["pressure"].as<std::string>();
   if (material == nullptr) throw UsageError("--pressure = " + text + ": needs --material (E0* in Pa); use --pbar");
   if (vm.count("pbar")) throw UsageError("--pressure and --pbar both given; valid: one of them");
-  std::optional<model::Physical> pressure;
-  try {
-    pressure = model::parse_physical(text, model::Dimension::pressure);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError("--pressure = " + std::string(e.what()));
-  }
-  if (!pressure) {
+  if (!has_unit(text)) {
     throw UsageError("--pressure = " + text + ": no unit; valid: a number followed by " +
                      model::unit_names(model::Dimension::pressure) + " (50kPa)");
   }
-  if (!(pressure->number > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
-  return model::in_units_of(*pressure, *input::scales_of(material).E0_star);
+  double pbar = 0.0;
+  try {
+    pbar = read_scaled(text, *scale_of(model::problem_parameter(model::kPressure)->scale, scales_of(material)));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--pressure = " + std::string(e.what()));
+  }
+  if (!(pbar > 0.0)) throw UsageError("--pressure = " + text + " is outside its range: pressure > 0");
+  return pbar;
 }
 
 model::LoadShape read_loading(const po::variables_map& vm, double* ramp_time, std::string* table_text,

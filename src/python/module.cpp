@@ -475,6 +475,8 @@ PYBIND11_MODULE(_core, m) {
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "
         "as a list of such arrays, ramp_time empty for a step (the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
+  m.def("has_unit", &input::has_unit, py::arg("text"),
+        "whether TEXT carries a unit (2kPa yes, 0.5 and 1e-3 no): the engine's rule for a physical value");
   m.def("scaled", &scaled_value, py::arg("text"), py::arg("parameter"), py::arg("material"), py::arg("R"),
         "the value of parameter NAME given as TEXT (a bare number in its scale, or a number with a unit) in "
         "its scale, with the scales of the material file (or '') and R (or ''): the command line's rule");

@@ -95,12 +95,15 @@ MaterialTerms read_power(const MaterialKeys& f) {
   return t;
 }
 
-std::string describe_power(const MaterialTerms& t) {
+/// "NAME = final, TIME = its one time": a law of one value and one time, for describe.
+std::string value_and_time(const char* value_name, const char* time_name, const MaterialTerms& t) {
   std::ostringstream out;
   out.precision(6);
-  out << "n = " << t.final << ", t_1 = " << t.times.front();
+  out << value_name << " = " << t.final << ", " << time_name << " = " << t.times.front();
   return out.str();
 }
+
+std::string describe_power(const MaterialTerms& t) { return value_and_time("n", "t_1", t); }
 
 /// J(t) = (T - (T - 1) exp(-t/T_eps))/E_0: the standard linear solid of creep_laws(), in
 /// physical units.
@@ -121,12 +124,7 @@ MaterialTerms read_sls(const MaterialKeys& f) {
   return t;
 }
 
-std::string describe_sls(const MaterialTerms& t) {
-  std::ostringstream out;
-  out.precision(6);
-  out << "T = " << t.final << ", T_eps = " << t.times.front();
-  return out.str();
-}
+std::string describe_sls(const MaterialTerms& t) { return value_and_time("T", "T_eps", t); }
 
 const std::array<MaterialLaw, 4> kLaws{{
     {"standard_linear_solid", "creep J(t) = (T - (T - 1) exp(-t/T_eps))/E_0", kSlsKeys, read_sls,

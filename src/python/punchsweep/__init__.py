@@ -297,7 +297,7 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     if pressure is not None:
         if pbar is not None:
             raise ValueError("classify: pbar and pressure both given; valid: one of them")
-        if not all(isinstance(v, str) and any(c.isalpha() and c not in "eE" for c in v)
+        if not all(isinstance(v, str) and _core.has_unit(v)
                    for v in np.asarray(pressure, dtype=object).reshape(-1)):
             raise ValueError(f"pressure = {pressure!r}: no unit; valid: text with a pressure unit ('2kPa', "
                              f"Pa, kPa, MPa or GPa), or pbar= in E0*")
