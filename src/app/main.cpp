@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/curve_commands.hpp"
+#include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/sweep_command.hpp"
@@ -25,7 +26,8 @@ constexpr const char* kTopHelp =
     "  single-level  h(a1), a1(t), h(t) of the single-level phase (Figs. 9.2, 9.3)\n"
     "  elastic    the elastic two-level problem with free radii A_i (Table 9.1)\n"
     "  reference  one point by the periodic boundary-element solver (the model's check)\n"
-    "  tables     the periodic model's tables: shipped for s = 1, 2, 3, built and cached for others\n\n"
+    "  tables     the periodic model's tables: shipped for s = 1, 2, 3, built and cached for others\n"
+    "  fit        a material file from DMA isotherms or a relaxation test (Prony series, WLF)\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -55,8 +57,9 @@ int main(int argc, char** argv) {
     if (args[0] == "elastic") return punchsweep::app::run_elastic_command(rest, std::cout);
     if (args[0] == "reference") return punchsweep::app::run_reference_command(rest, std::cout);
     if (args[0] == "tables") return punchsweep::app::run_tables_command(rest, std::cout);
+    if (args[0] == "fit") return punchsweep::app::run_fit_command(rest, std::cout);
     throw punchsweep::input::UsageError("unknown command '" + args[0] +
-                     "' (commands: point, sweep, single-level, elastic, reference, tables; see punchsweep --help)");
+                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit; see punchsweep --help)");
   } catch (const punchsweep::input::UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::input::kUsageExitCode;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "input/command_options.hpp"
+#include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
 #include "app/reference_command.hpp"
@@ -452,6 +453,19 @@ py::dict regime_codes() {
   return out;
 }
 
+/// `punchsweep fit` of keywords: the .fit.json's text (the one writer of the fit's numbers),
+/// the report, the material file's text, and the paths written ("" for none).
+py::dict fit_command(const input::Keywords& keywords) {
+  const app::FitRun run = app::fit_material(keywords);
+  py::dict out;
+  out["details"] = run.details_json;
+  out["report"] = run.report;
+  out["material_text"] = run.material_text;
+  out["output"] = run.output;
+  out["details_path"] = run.details;
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -470,6 +484,8 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep point of (option name, value text) pairs, evaluated in-process: a dict of its JSON keys");
   m.def("reference", &reference_command, py::arg("keywords"),
         "punchsweep reference of (option name, value text) pairs, solved in-process: a dict of its JSON keys");
+  m.def("fit", &fit_command, py::arg("keywords"),
+        "punchsweep fit of (option name, value text) pairs: the fit's JSON, report and material text");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
         py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"),
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "

@@ -6,14 +6,15 @@ src=$(cd "$(dirname "$0")/../../src" && pwd)
 
 declare -A allowed=(
   [model]="model"
+  [fit]="fit model"
   [reference]="reference model"
   [map]="map model"
-  [input]="input run io sweep map model reference"
+  [input]="input run io sweep map fit model reference"
   [io]="io map model"
   [sweep]="sweep map model reference"
   [run]="run io sweep map model reference"
-  [app]="app run io sweep input map model reference"
-  [python]="python app run io sweep input map model reference"
+  [app]="app run io sweep input map fit model reference"
+  [python]="python app run io sweep input map fit model reference"
 )
 
 status=0

@@ -22,6 +22,7 @@ E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_un
 """
 from __future__ import annotations
 
+import json
 import os
 import shutil
 from collections.abc import Iterable, Mapping
@@ -33,8 +34,8 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["point", "reference", "classify", "open_map", "Material", "PointResult", "ReferenceResult",
-           "Classification", "REGIMES"]
+__all__ = ["point", "reference", "classify", "open_map", "fit_material", "Material", "PointResult",
+           "ReferenceResult", "FitResult", "Classification", "REGIMES"]
 
 #: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
 REGIMES: dict[int, str] = {int(k): v for k, v in _core.regime_codes().items()}
@@ -153,6 +154,47 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
                               material=material, temperature=temperature, pressure=pressure,
                               ramp=ramp, load_table=load_table, **options))
     return _result(ReferenceResult, _core.reference(keywords))
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """What `fit_material` fitted (docs/fitting.md), in SI: moduli in Pa, times in s,
+    temperatures in degC, angular frequencies in rad/s.
+
+    material: the Material written (None without `output`); material_text: its text;
+    report: what `punchsweep fit` prints; kind: "dma" or "relaxation"; readings: arrays per
+    reading (temperature (its isotherm's), x (rad/s or s, as measured), x_reduced (omega a_T
+    or t / a_T), storage/loss or modulus, their *_fit, used (within the time window));
+    shift: temperatures, measured_log10_aT, law_log10_aT, and the law (law, T_ref, C1, C2,
+    E_a, rms_log10); prony: E_inf, E_i, tau_i, rms_relative, bic, candidates, chosen."""
+    material: "Material | None"
+    material_text: str
+    report: str
+    kind: str
+    readings: dict
+    shift: dict
+    prony: dict
+
+
+def fit_material(dma=None, *, relaxation=None, reference_temperature=None, poisson=None,
+                 output=None, **options: Any) -> FitResult:
+    """`punchsweep fit` in-process: a material from DMA isotherms (`dma`: a CSV path, or a
+    list of them, each "FILE" or "FILE@40C") or a relaxation test (`relaxation`). Other
+    keywords are the command's options (shift="arrhenius", C1=..., C2=...,
+    terms_per_decade=[1, 2], smoothing=0.01, time_window="1e-9s,1e9s", name=...,
+    refine=False). With `output` the material file and its .fit.json are written, as
+    the command does. ValueError with the command's message for bad input."""
+    def files(v):
+        return [] if v is None else [os.fspath(v)] if isinstance(v, (str, os.PathLike)) else [os.fspath(p) for p in v]
+    keywords = [("dma", f) for f in files(dma)] + [("relaxation", f) for f in files(relaxation)]
+    keywords += [("refine", "yes" if options.pop("refine", True) else "no")] + _keywords(dict(reference_temperature=reference_temperature, poisson=poisson,
+                                       output=None if output is None else os.fspath(output), **options))
+    raw = _core.fit(keywords)
+    details = json.loads(raw["details"])
+    readings = {k: np.asarray(v, dtype=float) for k, v in details["readings"].items()}
+    return FitResult(material=Material(raw["output"]) if raw["output"] else None,
+                     material_text=raw["material_text"], report=raw["report"], kind=details["kind"],
+                     readings=readings, shift=details["shift"], prony=details["prony"])
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,438 @@
+#include "app/fit_command.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <unistd.h>
+
+#include "input/material_file.hpp"
+#include "input/value_parsing.hpp"
+#include "input/measurement_file.hpp"
+#include "input/usage_error.hpp"
+#include "model/numerics/number_text.hpp"
+#include "model/numerics/units.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: punchsweep fit --dma FILE[@TEMP]... --poisson NU -o MATERIAL.ini [options]\n"
+    "       punchsweep fit --relaxation FILE[@TEMP]... --poisson NU -o MATERIAL.ini [options]";
+
+po::options_description fit_options() {
+  po::options_description opts(
+      "punchsweep fit: a material file from measurements (docs/fitting.md). The isotherms are\n"
+      "shifted onto a master curve at the reference temperature (shift factors from the\n"
+      "overlap of neighbouring isotherms, then WLF or Arrhenius fitted to them, or the law\n"
+      "given), and a Prony series is fitted to it by non-negative least squares on relative\n"
+      "errors, its number of terms chosen by the Bayesian information criterion and its\n"
+      "times refined. Writes MATERIAL.ini and MATERIAL.fit.json (readings, shifts and fit,\n"
+      "for postprocess/fit_picture.py), and prints the report.\n\nOptions");
+  opts.add_options()
+      ("help", "this text")
+      ("dma", po::value<std::vector<std::string>>()->composing()->value_name("FILE[@TEMP]"),
+       "DMA readings: CSV with a header row naming each column and its unit, e.g.\n"
+       "'temperature [C],frequency [Hz],storage [MPa],loss [MPa]' (or tan_delta [-] for\n"
+       "loss; frequency in Hz or rad/s; moduli in Pa, kPa, MPa or GPa; temperature in C or\n"
+       "K). Repeat for one file per temperature; FILE@40C gives the temperature of a file\n"
+       "without that column")
+      ("relaxation", po::value<std::vector<std::string>>()->composing()->value_name("FILE[@TEMP]"),
+       "a relaxation test instead: 'temperature [C],time [s],modulus [MPa]'")
+      ("reference-temperature", po::value<std::string>()->value_name("T"),
+       "the master curve's temperature, T_ref (degC, or 296.15K); default: the data's\n"
+       "temperature when there is one")
+      ("poisson", po::value<std::string>()->value_name("NU"),
+       "Poisson's ratio of the material, -1 < NU <= 0.5 (required: DMA in tension gives E)")
+      ("shift", po::value<std::string>()->default_value("wlf")->value_name("LAW"),
+       "the shift law fitted to the shift factors: wlf or arrhenius")
+      ("C1", po::value<std::string>()->value_name("C1"), "WLF's C1 given (with --C2): no shift law is fitted")
+      ("C2", po::value<std::string>()->value_name("K"), "WLF's C2 given, in K")
+      ("E-a", po::value<std::string>()->value_name("J/mol"), "Arrhenius' activation energy given, in J/mol")
+      ("terms-per-decade", po::value<std::string>()->default_value("0.5, 1, 1.5, 2, 3")->value_name("LIST"),
+       "relaxation-time densities tried (terms per decade of the data's span); the one\n"
+       "with the smallest BIC is kept")
+      ("smoothing", po::value<std::string>()->default_value("0")->value_name("LAMBDA"),
+       "weight of a penalty on second differences of neighbouring E_i (>= 0; try 1e-3 to\n"
+       "1e-1 for noisy data)")
+      ("isotherm-gap", po::value<std::string>()->default_value("1")->value_name("K"),
+       "readings whose temperatures (sorted) lie within this many K of the previous one\n"
+       "form one isotherm (instruments log each reading's measured temperature)")
+      ("time-window", po::value<std::string>()->default_value("1e-10s, 1e12s")->value_name("LO,HI"),
+       "the times the material is to hold, at T_ref (s, min or h): the series is fitted\n"
+       "to every reading, then terms slower than HI join E_inf (frozen) and terms faster\n"
+       "than LO are dropped (relaxed); at most 24 decades, which the engine's\n"
+       "interconversion resolves")
+      ("refine", po::value<std::string>()->default_value("yes")->value_name("yes|no"),
+       "refine the relaxation times after the grid (no: keep the grid's)")
+      ("name", po::value<std::string>()->value_name("TEXT"), "the material's name (default: the files' names)")
+      ("output", po::value<std::string>()->value_name("FILE"), "the material file to write (-o)");
+  return opts;
+}
+
+double real_option(const po::variables_map& vm, const char* name, const std::string& range,
+                   const std::function<bool(double)>& ok) {
+  const std::string text = vm[name].as<std::string>();
+  const double v = input::parse_real(text, std::string("--") + name);
+  if (!ok(v)) throw input::UsageError(std::string("--") + name + " = " + text + " is outside its range: " + range);
+  return v;
+}
+
+/// The modulus unit that puts E_0 between 1 and 1000.
+const model::Unit& modulus_unit_for(double E0_Pa) {
+  const auto units = model::units_of(model::Dimension::pressure);
+  const model::Unit* best = &units.front();
+  for (const model::Unit& u : units) {
+    if (E0_Pa / u.si >= 1.0) best = &u;
+  }
+  return *best;
+}
+
+std::string list_text(const std::vector<double>& v, double divisor) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + model::number_text(v[i] / divisor, 10);
+  return s;
+}
+
+std::string material_text(const FitRun& run, const std::string& name) {
+  const fit::MaterialFit& f = run.fit;
+  const fit::PronyTerms& t = f.prony.terms;
+  const model::Unit& unit = *model::find_unit(model::Dimension::pressure, run.modulus_unit);
+  std::ostringstream s;
+  s << "# Fitted by `punchsweep fit` to " << f.readings.size() << " readings from:";
+  for (const std::string& src : run.sources) s << " " << src;
+  s << "\n# Prony series: " << t.E.size() << " terms, for times " << model::number_text(run.window_lo, 3) << " to "
+    << model::number_text(run.window_hi, 3) << " s at T_ref; RMS relative error within them "
+    << (f.abscissa == fit::Abscissa::frequency
+            ? "E' " + model::number_text(100 * f.prony.rms_first, 3) + "%, E'' " +
+                  model::number_text(100 * f.prony.rms_second, 3) + "%"
+            : "E(t) " + model::number_text(100 * f.prony.rms_first, 3) + "%")
+    << ".\n";
+  if (f.master.law) {
+    s << "# Shift: " << f.master.law->describe();
+    if (!std::isnan(f.master.measured_log10_aT.front())) {
+      s << ", RMS of the measured shifts about it " << model::number_text(f.master.rms_log10, 3) << " decades";
+    }
+    s << ".\n";
+  }
+  s << "[material]\n"
+    << "name = " << name << "\n"
+    << "law = prony\n"
+    << "modulus_unit = " << unit.name << "\n"
+    << "time_unit = s\n"
+    << "poisson = " << model::number_text(run.poisson, 10) << "\n"
+    << "E_inf = " << model::number_text(t.E_inf / unit.si, 10) << "\n"
+    << "E_i = " << list_text(t.E, unit.si) << "\n"
+    << "tau_i = " << list_text(t.tau, 1.0) << "\n";
+  if (f.master.law) {
+    const model::TemperatureShift& law = *f.master.law;
+    s << "[shift]\n";
+    if (law.kind == model::TemperatureShift::Kind::wlf) {
+      s << "kind = wlf\nC1 = " << model::number_text(law.C1, 10) << "\nC2 = " << model::number_text(law.C2, 10)
+        << "                     # K\n";
+    } else {
+      s << "kind = arrhenius\nE_a = " << model::number_text(law.E_a, 10) << "             # J/mol\n";
+    }
+    s << "T_ref = " << model::number_text(law.T_ref, 10) << "                    # degC\n";
+    if (law.T_min > -model::kZeroCelsius) s << "T_min = " << model::number_text(law.T_min, 10) << "\n";
+    if (std::isfinite(law.T_max)) s << "T_max = " << model::number_text(law.T_max, 10) << "\n";
+  }
+  return s.str();
+}
+
+std::string json_list(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + input::json_number(v[i]);
+  return s + "]";
+}
+
+std::string json_string(const std::string& v) {
+  std::string s = "\"";
+  for (const char c : v) {
+    if (c == '"' || c == '\\') s += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    s += c;
+  }
+  return s + "\"";
+}
+
+/// The .fit.json beside the material: readings on the master curve with the fit, the
+/// shifts, the candidates and the terms, each number with its unit in the key's "units".
+std::string details_json(const FitRun& run) {
+  const fit::MaterialFit& f = run.fit;
+  const bool dma = f.abscissa == fit::Abscissa::frequency;
+  std::vector<double> T, x, xr, y1, y2, f1, f2, used;
+  for (const fit::ReducedReading& r : f.readings) {
+    T.push_back(r.temperature);
+    x.push_back(r.x);
+    xr.push_back(r.x_reduced);
+    y1.push_back(r.first);
+    y2.push_back(r.second);
+    f1.push_back(r.first_fit);
+    f2.push_back(r.second_fit);
+    used.push_back(r.used ? 1.0 : 0.0);
+  }
+  std::ostringstream s;
+  s << "{\n  \"kind\": \"" << (dma ? "dma" : "relaxation") << "\",\n";
+  s << "  \"sources\": [";
+  for (std::size_t i = 0; i < run.sources.size(); ++i) s << (i ? ", " : "") << json_string(run.sources[i]);
+  s << "],\n  \"material\": " << json_string(run.output) << ",\n";
+  s << "  \"name\": " << json_string(run.material->name()) << ",\n";
+  s << "  \"units\": {\"temperature\": \"degC\", \"x\": \"" << (dma ? "rad/s" : "s")
+    << "\", \"moduli\": \"Pa\", \"tau\": \"s\", \"log10_aT\": \"1\", \"C2\": \"K\", \"E_a\": \"J/mol\"},\n";
+  s << "  \"readings\": {\"temperature\": " << json_list(T) << ",\n    \"x\": " << json_list(x)
+    << ",\n    \"x_reduced\": " << json_list(xr) << ",\n    \"" << (dma ? "storage" : "modulus") << "\": " << json_list(y1);
+  if (dma) s << ",\n    \"loss\": " << json_list(y2);
+  s << ",\n    \"" << (dma ? "storage_fit" : "modulus_fit") << "\": " << json_list(f1);
+  if (dma) s << ",\n    \"loss_fit\": " << json_list(f2);
+  s << ",\n    \"used\": " << json_list(used);
+  s << "},\n  \"shift\": {\"temperatures\": " << json_list(f.master.temperatures)
+    << ", \"measured_log10_aT\": " << json_list(f.master.measured_log10_aT)
+    << ", \"law_log10_aT\": " << json_list(f.master.law_log10_aT);
+  if (f.master.law) {
+    const model::TemperatureShift& law = *f.master.law;
+    s << ", \"law\": " << json_string(law.kind == model::TemperatureShift::Kind::wlf ? "wlf" : "arrhenius")
+      << ", \"T_ref\": " << input::json_number(law.T_ref) << ", \"C1\": " << input::json_number(law.C1)
+      << ", \"C2\": " << input::json_number(law.C2) << ", \"E_a\": " << input::json_number(law.E_a)
+      << ", \"describe\": " << json_string(law.describe());
+  }
+  s << ", \"rms_log10\": " << input::json_number(f.master.rms_log10) << "},\n";
+  s << "  \"prony\": {\"E_inf\": " << input::json_number(f.prony.terms.E_inf) << ", \"E_i\": " << json_list(f.prony.terms.E)
+    << ", \"tau_i\": " << json_list(f.prony.terms.tau) << ",\n    \"rms_relative\": {\""
+    << (dma ? "storage" : "modulus") << "\": " << input::json_number(f.prony.rms_first);
+  if (dma) s << ", \"loss\": " << input::json_number(f.prony.rms_second);
+  s << "}, \"rms_relative_all\": {\"" << (dma ? "storage" : "modulus") << "\": " << input::json_number(f.rms_all_first);
+  if (dma) s << ", \"loss\": " << input::json_number(f.rms_all_second);
+  s << "}, \"window\": [" << input::json_number(run.window_lo) << ", " << input::json_number(run.window_hi)
+    << "], \"frozen\": " << f.frozen << ", \"dropped\": " << f.dropped;
+  s << ", \"bic\": " << input::json_number(f.prony.bic) << ", \"residuals\": " << f.prony.residuals
+    << ",\n    \"candidates\": [";
+  for (std::size_t i = 0; i < f.prony.candidates.size(); ++i) {
+    const fit::PronyCandidate& c = f.prony.candidates[i];
+    s << (i ? ", " : "") << "{\"per_decade\": " << input::json_number(c.per_decade) << ", \"grid_terms\": " << c.grid_terms
+      << ", \"terms\": " << c.terms << ", \"rss\": " << input::json_number(c.rss) << ", \"bic\": " << input::json_number(c.bic)
+      << "}";
+  }
+  s << "], \"chosen\": " << f.prony.chosen << "}\n}\n";
+  return s.str();
+}
+
+std::string report(const FitRun& run) {
+  const fit::MaterialFit& f = run.fit;
+  const bool dma = f.abscissa == fit::Abscissa::frequency;
+  std::ostringstream s;
+  s << "punchsweep fit: " << f.readings.size() << (dma ? " DMA readings" : " relaxation readings") << " at "
+    << f.master.temperatures.size() << " temperature(s)\n";
+  if (f.master.law) {
+    s << "shift: " << f.master.law->describe();
+    if (!std::isnan(f.master.measured_log10_aT.front())) {
+      s << " (fitted; RMS of the measured shifts about it " << model::number_text(f.master.rms_log10, 3) << " decades)";
+    } else {
+      s << " (given)";
+    }
+    s << "\n  T [degC]   log10 a_T measured   log10 a_T law\n";
+    for (std::size_t i = 0; i < f.master.temperatures.size(); ++i) {
+      char line[128];
+      std::snprintf(line, sizeof line, "  %8.3g   %18.4f   %13.4f\n", f.master.temperatures[i], f.master.measured_log10_aT[i],
+                    f.master.law_log10_aT[i]);
+      s << line;
+    }
+  }
+  s << "Prony series: densities tried (terms per decade: grid terms, terms kept, BIC)\n";
+  for (std::size_t i = 0; i < f.prony.candidates.size(); ++i) {
+    const fit::PronyCandidate& c = f.prony.candidates[i];
+    s << "  " << model::number_text(c.per_decade, 3) << ": " << c.grid_terms << ", " << c.terms << ", "
+      << model::number_text(c.bic, 6) << (i == f.prony.chosen ? "   <- chosen" : "") << "\n";
+  }
+  s << "  after refining the times: " << f.prony.terms.E.size() << " terms, BIC " << model::number_text(f.prony.bic, 6)
+    << "\n  E_inf = " << model::number_text(f.prony.terms.E_inf, 6) << " Pa, E_0 = "
+    << model::number_text(run.material->instantaneous_modulus_Pa(), 6) << " Pa, E0* = E_0/(1 - nu^2) = "
+    << model::number_text(run.material->plane_strain_modulus_Pa(), 6) << " Pa (nu = " << model::number_text(run.poisson, 6)
+    << ")\n  RMS relative error over all " << f.readings.size() << " readings: "
+    << (dma ? "E' " + model::number_text(100 * f.rms_all_first, 3) + "%, E'' " + model::number_text(100 * f.rms_all_second, 3) + "%"
+            : "E(t) " + model::number_text(100 * f.rms_all_first, 3) + "%")
+    << "\n  time window " << model::number_text(run.window_lo, 3) << " to " << model::number_text(run.window_hi, 3)
+    << " s at T_ref: " << f.frozen << " slower term(s) held in E_inf, " << f.dropped
+    << " faster term(s) dropped; the series written, over the " << f.used << " readings within it: "
+    << (dma ? "E' " + model::number_text(100 * f.prony.rms_first, 3) + "%, E'' " + model::number_text(100 * f.prony.rms_second, 3) + "%"
+            : "E(t) " + model::number_text(100 * f.prony.rms_first, 3) + "%")
+    << "\n";
+  if (!run.output.empty()) {
+    s << "wrote " << run.output << " and " << run.details << "\n"
+      << "picture: /usr/bin/python3 postprocess/fit_picture.py " << run.details << " -o fit.png\n";
+  }
+  return s.str();
+}
+
+/// Writes `text` to `path` whole: into a temporary file beside it, then renamed over it.
+void write_whole(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    f << text;
+    f.flush();
+    if (!f) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw input::UsageError("cannot write " + path);
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw input::UsageError("cannot write " + path + ": " + ec.message());
+  }
+}
+
+void read_window(const po::variables_map& vm, fit::MaterialFitRequest* request) {
+  const std::string text = vm["time-window"].as<std::string>();
+  const auto comma = text.find(',');
+  const auto bad = [&](const std::string& why) {
+    return input::UsageError("--time-window = '" + text + "' " + why +
+                             " (valid: LO,HI in s, min or h, 0 < LO < HI <= LO x 1e24, e.g. 1e-10s,1e12s)");
+  };
+  if (comma == std::string::npos) throw bad("is not two times");
+  double v[2];
+  const std::string parts[2] = {text.substr(0, comma), text.substr(comma + 1)};
+  for (int i = 0; i < 2; ++i) {
+    try {
+      const auto p = model::parse_physical(parts[i], model::Dimension::time);
+      v[i] = p ? p->si() : input::parse_real(parts[i], "--time-window");
+    } catch (const std::invalid_argument& e) {
+      throw bad(std::string("is not two times: ") + e.what());
+    }
+  }
+  if (!(v[0] > 0.0 && v[1] > v[0] && v[1] <= v[0] * 1e24)) throw bad("is outside its range");
+  request->window_lo = v[0];
+  request->window_hi = v[1];
+}
+
+FitRun run_fit(const po::variables_map& vm) {
+  FitRun run;
+  for (const char* kind : {"dma", "relaxation"}) {
+    if (vm.count(kind)) {
+      for (const std::string& s : vm[kind].as<std::vector<std::string>>()) run.sources.push_back(s);
+    }
+  }
+  if (run.sources.empty()) throw input::UsageError("give the measurements: --dma FILE or --relaxation FILE");
+  if (vm.count("dma") && vm.count("relaxation")) throw input::UsageError("give --dma or --relaxation, not both");
+  if (!vm.count("poisson")) {
+    throw input::UsageError("missing --poisson: Poisson's ratio, -1 < NU <= 0.5 (0.5 for an incompressible rubber)");
+  }
+  run.poisson = real_option(vm, "poisson", "-1 < NU <= 0.5", [](double v) { return v > -1.0 && v <= 0.5; });
+  const fit::Measurements m = input::read_measurement_files(run.sources);
+  const bool dma = vm.count("dma") > 0;
+  if (dma ? m.dma.empty() : m.relaxation.empty()) {
+    throw input::UsageError(std::string("the files given to --") + (dma ? "dma hold a relaxation test (give them to --relaxation)"
+                                                                         : "relaxation hold DMA readings (give them to --dma)"));
+  }
+  fit::MaterialFitRequest request;
+  std::vector<double> temperatures;
+  for (const auto& r : m.dma) temperatures.push_back(r.temperature);
+  for (const auto& r : m.relaxation) temperatures.push_back(r.temperature);
+  const auto [tmin, tmax] = std::minmax_element(temperatures.begin(), temperatures.end());
+  if (vm.count("reference-temperature")) {
+    request.shift.T_ref = input::read_temperature(vm["reference-temperature"].as<std::string>(), "--reference-temperature");
+  } else if (*tmin == *tmax) {
+    request.shift.T_ref = *tmin;
+  } else {
+    throw input::UsageError("missing --reference-temperature: the data span " + model::number_text(*tmin, 6) + " to " +
+                            model::number_text(*tmax, 6) + " degC; name the master curve's temperature");
+  }
+  const std::string law = input::read_choice(vm, "shift", {"wlf", "arrhenius"});
+  request.shift.law = law == "wlf" ? fit::ShiftRequest::Law::wlf : fit::ShiftRequest::Law::arrhenius;
+  if (vm.count("C1") || vm.count("C2")) {
+    if (!(vm.count("C1") && vm.count("C2"))) throw input::UsageError("give WLF's --C1 and --C2 together");
+    request.shift.law = fit::ShiftRequest::Law::given;
+    request.shift.given.kind = model::TemperatureShift::Kind::wlf;
+    request.shift.given.C1 = real_option(vm, "C1", "C1 > 0", [](double v) { return v > 0.0; });
+    request.shift.given.C2 = real_option(vm, "C2", "C2 > 0 (in K)", [](double v) { return v > 0.0; });
+  } else if (vm.count("E-a")) {
+    request.shift.law = fit::ShiftRequest::Law::given;
+    request.shift.given.kind = model::TemperatureShift::Kind::arrhenius;
+    request.shift.given.E_a = real_option(vm, "E-a", "E_a > 0 (in J/mol)", [](double v) { return v > 0.0; });
+  }
+  request.shift.given.T_ref = request.shift.T_ref;
+  request.prony.per_decade = input::parse_real_list(vm["terms-per-decade"].as<std::string>(), "--terms-per-decade");
+  for (const double d : request.prony.per_decade) {
+    if (!(d > 0.0 && d <= 10.0)) {
+      throw input::UsageError("--terms-per-decade = " + vm["terms-per-decade"].as<std::string>() +
+                              " is outside its range: each 0 < density <= 10");
+    }
+  }
+  request.prony.smoothing = real_option(vm, "smoothing", "LAMBDA >= 0", [](double v) { return v >= 0.0; });
+  request.prony.refine = input::read_choice(vm, "refine", {"yes", "no"}) == "yes";
+  read_window(vm, &request);
+  run.window_lo = request.window_lo;
+  run.window_hi = request.window_hi;
+  request.isotherm_gap = real_option(vm, "isotherm-gap", "K > 0", [](double v) { return v > 0.0; });
+  try {
+    run.fit = fit::fit_material(m, request);
+  } catch (const std::invalid_argument& e) {
+    throw input::UsageError(std::string("cannot fit: ") + e.what());
+  }
+  const fit::PronyTerms& t = run.fit.prony.terms;
+  double E0 = t.E_inf;
+  for (const double e : t.E) E0 += e;
+  run.modulus_unit = std::string(modulus_unit_for(E0).name);
+  std::string name = vm.count("name") ? vm["name"].as<std::string>() : "";
+  if (name.empty()) {
+    name = "fitted to";
+    for (const std::string& s : run.sources) name += " " + std::filesystem::path(s).filename().string();
+  }
+  if (vm.count("output")) {
+    run.output = vm["output"].as<std::string>();
+    const std::filesystem::path p(run.output);
+    run.details = (p.parent_path() / p.stem()).string() + ".fit.json";
+  }
+  run.material_text = material_text(run, name);
+  // The engine reads what was written, as a user's run will.
+  run.material = std::make_shared<const model::Material>(
+      input::read_material_text(run.material_text, run.output.empty() ? "fitted material" : run.output));
+  run.details_json = details_json(run);
+  run.report = report(run);
+  return run;
+}
+
+void write_files(const FitRun& run) {
+  write_whole(run.details, run.details_json);
+  write_whole(run.output, run.material_text);
+}
+
+}  // namespace
+
+int run_fit_command(const std::vector<std::string>& args, std::ostream& out) {
+  std::vector<std::string> a = args;
+  for (std::string& s : a) {
+    if (s == "-o") s = "--output";
+  }
+  const po::options_description opts = fit_options();
+  const po::variables_map vm = input::parse_command(a, opts, "fit");
+  if (vm.count("help")) {
+    out << kUsage << "\n\n" << opts << "\n"
+        << "Example: punchsweep fit --dma data.csv --reference-temperature 23 --poisson 0.5 -o material.ini\n"
+        << "Exit codes: 0 success, 2 bad input or data that give no material (nothing written).\n";
+    return 0;
+  }
+  if (!vm.count("output")) throw input::UsageError("missing -o/--output: the material file to write");
+  const FitRun run = run_fit(vm);
+  write_files(run);
+  out << run.report;
+  return 0;
+}
+
+FitRun fit_material(const input::Keywords& keywords) {
+  const FitRun run = run_fit(input::parse_keywords(keywords, fit_options(), "fit"));
+  if (!run.output.empty()) write_files(run);
+  return run;
+}
+
+}  // namespace punchsweep::app

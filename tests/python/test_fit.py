@@ -1,0 +1,249 @@
+"""From a DMA test to a material (issue 25, docs/fitting.md): `punchsweep fit` and
+`punchsweep.fit_material` recover a known material from noisy isotherms written as an
+instrument exports them, fit a published data set with its quality reported, and refuse
+what they cannot read with exit 2 and nothing written.
+
+Expected values come from the known material (its moduli computed here with numpy, its
+t* from the engine reading a material file written here from the known constants), from the
+data set's published shift factors, and from pyvisco run on the same data."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+PUBLISHED = REPO / "materials" / "dma" / "nrel_pyvisco_ems_ca.csv"
+
+# The known material: a Prony series (Pa, s) and WLF at 23 degC.
+E_INF = 1.0e6
+E_I = np.array([4e6, 3e6, 2e6, 1.5e6, 1e6])
+TAU = np.array([1e-5, 1e-3, 1e-1, 3.0, 100.0])
+C1, C2, T_REF = 9.0, 120.0, 23.0
+TEMPERATURES = [0, 10, 23, 35, 50, 65, 80]
+NOISE = 0.01
+
+
+def log10_aT(T):
+    return -C1 * (np.asarray(T) - T_REF) / (C2 + np.asarray(T) - T_REF)
+
+
+def moduli(omega):
+    wt = np.asarray(omega)[:, None] * TAU
+    return E_INF + (E_I * wt**2 / (1 + wt**2)).sum(1), (E_I * wt / (1 + wt**2)).sum(1)
+
+
+def cli(*args) -> subprocess.CompletedProcess:
+    return subprocess.run([BINARY, *map(str, args)], capture_output=True, text=True)
+
+
+def write_dma(path: Path, header="temperature [C],frequency [Hz],storage [MPa],loss [MPa]", seed=25,
+              temperatures=TEMPERATURES, with_temperature=True):
+    """Isotherms 0.1-100 Hz (10 per isotherm), each reading's logged temperature wandering by
+    0.1 K, E' and E'' with 1% noise, rows shuffled; returns the rows (T, f, E', E'' in MPa)."""
+    rng = np.random.default_rng(seed)
+    rows = []
+    for T in temperatures:
+        f = np.logspace(-1, 2, 10)
+        s, l = moduli(2 * np.pi * f * 10 ** log10_aT(T))
+        for k in range(len(f)):
+            rows.append((T + rng.normal(0, 0.1), f[k], s[k] * (1 + NOISE * rng.normal()) / 1e6,
+                         l[k] * (1 + NOISE * rng.normal()) / 1e6))
+    rng.shuffle(rows)
+    lines = [header] + [",".join(repr(float(v)) for v in (r if with_temperature else r[1:])) for r in rows]
+    path.write_text("\n".join(lines) + "\n")
+    return rows
+
+
+def write_truth(path: Path):
+    path.write_text("[material]\nname = the known material\nlaw = prony\nmodulus_unit = Pa\ntime_unit = s\n"
+                    f"poisson = 0.5\nE_inf = {E_INF!r}\nE_i = {', '.join(repr(float(v)) for v in E_I)}\n"
+                    f"tau_i = {', '.join(repr(float(v)) for v in TAU)}\n"
+                    f"[shift]\nkind = wlf\nC1 = {C1!r}\nC2 = {C2!r}\nT_ref = {T_REF!r}\n")
+
+
+def t_star(material: Path, dh: str, temperature: float) -> float:
+    r = cli("point", "--material", material, "--R", "50um", "--l", "150um", "--dh", dh, "--pressure", "100kPa",
+            "--s", "2", "--temperature", temperature, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    d = json.loads(r.stdout)
+    assert d["regime"] == "delayed", d["regime"]
+    return d["t_star"]
+
+
+@pytest.fixture(scope="module")
+def fitted(tmp_path_factory):
+    """The issue's spelling on the known material's isotherms."""
+    tmp = tmp_path_factory.mktemp("fit")
+    write_dma(tmp / "data.csv")
+    r = cli("fit", "--dma", tmp / "data.csv", "--reference-temperature", "23", "--poisson", "0.5",
+            "-o", tmp / "material.ini")
+    assert r.returncode == 0, r.stderr
+    write_truth(tmp / "truth.ini")
+    return tmp, r.stdout
+
+
+def test_the_issue_spelling_writes_a_material_the_engine_reads(fitted):
+    tmp, report = fitted
+    text = (tmp / "material.ini").read_text()
+    assert "law = prony" in text and "[shift]" in text and "kind = wlf" in text
+    m = punchsweep.Material(tmp / "material.ini")
+    assert m.law == "prony" and m.poisson == 0.5 and m.reference_temperature == 23
+    assert "RMS relative error over all 70 readings: E'" in report and "wrote" in report
+    assert (tmp / "material.fit.json").is_file()
+
+
+def test_the_moduli_are_recovered_within_the_noise(fitted):
+    tmp, _ = fitted
+    d = json.loads((tmp / "material.fit.json").read_text())
+    r = {k: np.asarray(v) for k, v in d["readings"].items()}
+    # The fit against the true moduli at each reading's true reduced frequency.
+    true_s, true_l = moduli(r["x"] * 10 ** log10_aT(r["temperature"]))
+    err = np.concatenate([r["storage_fit"] / true_s - 1, r["loss_fit"] / true_l - 1])
+    assert np.sqrt(np.mean(err**2)) < 2 * NOISE
+    assert np.sqrt(np.mean((r["storage_fit"] / true_s - 1) ** 2)) < NOISE
+    # The terms themselves: as many, at their times within 10%, their moduli within 2%.
+    prony = d["prony"]
+    assert len(prony["tau_i"]) == len(TAU)
+    assert np.allclose(prony["tau_i"], TAU, rtol=0.1) and np.allclose(prony["E_i"], E_I, rtol=0.02)
+    assert abs(prony["E_inf"] / E_INF - 1) < 0.02
+    # The shifts and the law.
+    shift = d["shift"]
+    # E' alone sets the shifts, and where it flattens (the coldest isotherms, near the glassy
+    # plateau) 1% noise moves them by a few hundredths of a decade.
+    assert np.max(np.abs(np.asarray(shift["law_log10_aT"]) - log10_aT(shift["temperatures"]))) < 0.05
+    assert abs(shift["C1"] - C1) < 0.1 * C1 and abs(shift["C2"] - C2) < 0.1 * C2
+
+
+def test_a_design_points_t_star_is_recovered(fitted):
+    """t* of caps of R = 50 um on a 150 um pitch under 100 kPa, from the fitted file against
+    the known one: within 2% at T_ref (the Prony fit's error), within 8% at 50 degC (where
+    the fitted shift law's 0.02 decades add 4%)."""
+    tmp, _ = fitted
+    for dh, T, tol in (("10um", 23, 0.02), ("20um", 23, 0.02), ("10um", 50, 0.08), ("20um", 50, 0.08)):
+        truth, fit = t_star(tmp / "truth.ini", dh, T), t_star(tmp / "material.ini", dh, T)
+        assert abs(fit / truth - 1) < tol, (dh, T, fit, truth)
+
+
+def test_python_fits_what_the_command_fits(fitted, tmp_path):
+    tmp, _ = fitted
+    r = punchsweep.fit_material(tmp / "data.csv", reference_temperature=23, poisson=0.5, output=tmp_path / "m.ini")
+    assert r.material_text.split("[material]")[1] == (tmp / "material.ini").read_text().split("[material]")[1]
+    assert r.material.name == punchsweep.Material(tmp / "material.ini").name
+    assert r.kind == "dma" and len(r.readings["storage"]) == 70 and r.readings["used"].all()
+    assert r.prony["E_inf"] == pytest.approx(E_INF, rel=0.02)
+    without = punchsweep.fit_material(str(tmp / "data.csv"), reference_temperature="296.15K", poisson=0.5)
+    assert without.material is None and without.prony["E_i"] == r.prony["E_i"]
+
+
+def test_one_file_per_temperature_and_tan_delta_give_the_same_fit(fitted, tmp_path):
+    tmp, _ = fitted
+    rows = write_dma(tmp_path / "all.csv")
+    specs = []
+    for T in TEMPERATURES:
+        mine = [r for r in rows if abs(r[0] - T) < 1]
+        path = tmp_path / f"iso{T}.csv"
+        # tan delta instead of E'', and no temperature column: the temperature rides on the name.
+        path.write_text("frequency [Hz];storage [GPa];tan_delta\n" +
+                        "".join(f"{r[1]!r};{r[2] / 1e3!r};{r[3] / r[2]!r}\n" for r in mine))
+        specs.append(f"{path}@{sum(r[0] for r in mine) / len(mine)!r}C")
+    a = punchsweep.fit_material(tmp_path / "all.csv", reference_temperature=23, poisson=0.5)
+    b = punchsweep.fit_material(specs, reference_temperature=23, poisson=0.5)
+    # The same readings up to rounding (GPa, E' tan delta): the same fit, to the refinement's
+    # convergence (its slowest time, at the data's edge, is the least determined).
+    assert b.shift["C1"] == pytest.approx(a.shift["C1"], rel=1e-6)
+    ia, ib = (np.lexsort((r.readings["x"], r.readings["temperature"])) for r in (a, b))
+    for key, rtol in (("x_reduced", 1e-8), ("storage_fit", 2e-4), ("loss_fit", 2e-4)):
+        assert np.allclose(b.readings[key][ib], a.readings[key][ia], rtol=rtol), key
+
+
+@pytest.mark.parametrize("header, rows, message", [
+    ("temperature [C],frequency,storage [MPa],loss [MPa]", "20,1,1,0.1", "names no unit"),
+    ("temperature [C],frequency [Hz],storage [psi],loss [MPa]", "20,1,1,0.1", "'psi' is not a unit it takes"),
+    ("temperature [F],frequency [Hz],storage [MPa],loss [MPa]", "20,1,1,0.1", "(valid: C, degC or K)"),
+    ("temperature [C],frequency [Hz],storage [MPa]", "20,1,1", "needs 'storage [unit]' and 'loss [unit]'"),
+    ("temperature [C],frequency [Hz],storage [MPa],loss [MPa]", "20,1,abc,0.1", "line 2: column 3: 'abc' is not a number"),
+    ("temperature [C],frequency [Hz],storage [MPa],loss [MPa]", "20,1,-1,0.1", "'-1' is not > 0"),
+    ("temperature [C],frequency [Hz],storage [MPa],loss [MPa]", "20,1,1", "3 values where the header has 4"),
+])
+def test_bad_files_are_refused_by_line_and_column_and_nothing_is_written(tmp_path, header, rows, message):
+    (tmp_path / "bad.csv").write_text(header + "\n" + rows + "\n")
+    r = cli("fit", "--dma", tmp_path / "bad.csv", "--poisson", "0.5", "-o", tmp_path / "m.ini")
+    assert r.returncode == 2 and message in r.stderr, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "m.ini").exists() and not (tmp_path / "m.fit.json").exists()
+
+
+def test_bad_options_are_refused(fitted, tmp_path):
+    tmp, _ = fitted
+    data = tmp / "data.csv"
+    for args, message in (
+            ([], "missing --poisson"),
+            (["--poisson", "0.7"], "--poisson = 0.7 is outside its range: -1 < NU <= 0.5"),
+            (["--poisson", "0.5"], "missing --reference-temperature: the data span"),
+            (["--poisson", "0.5", "--reference-temperature", "23", "--shift", "vogel"], "--shift"),
+            (["--poisson", "0.5", "--reference-temperature", "23", "--C1", "9"], "--C1 and --C2 together"),
+            (["--poisson", "0.5", "--reference-temperature", "23", "--time-window", "1s"], "--time-window"),
+            (["--poisson", "0.5", "--reference-temperature", "-300"], "not above absolute zero"),
+    ):
+        r = cli("fit", "--dma", data, *args, "-o", tmp_path / "m.ini")
+        assert r.returncode == 2 and message in r.stderr, (args, r.stderr)
+        assert not (tmp_path / "m.ini").exists()
+    # Too few isotherms for WLF: the reason, not a number.
+    write_dma(tmp_path / "two.csv", temperatures=[10, 23])
+    r = cli("fit", "--dma", tmp_path / "two.csv", "--poisson", "0.5", "--reference-temperature", "23",
+            "-o", tmp_path / "m.ini")
+    assert r.returncode == 2 and "too few to fit WLF" in r.stderr
+    # ... which a given law or Arrhenius accepts.
+    r = cli("fit", "--dma", tmp_path / "two.csv", "--poisson", "0.5", "--reference-temperature", "23",
+            "--C1", C1, "--C2", C2, "-o", tmp_path / "m.ini")
+    assert r.returncode == 0, r.stderr
+    assert f"C1 = {C1:g}" in (tmp_path / "m.ini").read_text()
+
+
+# Published: the shift factors shipped with the data (pyvisco,
+# verification/freq_raw/freq_Eplexor_raw__shift_factors.csv, T_ref = -5 C), and pyvisco 1.0.4's
+# own get_aT on the same readings (run for this test's reference values; its WLF C1 = 98.09,
+# C2 = 430.03 K).
+SHIPPED = {100: -19.02, 92: -18.24, 85: -17.4, 77: -16.5, 70: -15.48, 62: -14.4, 55: -13.14, 47: -11.64,
+           40: -9.72, 32: -7.74, 25: -6.12, 18: -4.62, 10: -3.18, 3: -1.68, -5: 0, -12: 1.62, -20: 3.54,
+           -27: 5.1, -35: 6.96, -43: 9.12, -50: 11.1}
+PYVISCO = [11.356, 9.166, 7.009, 5.161, 3.603, 1.662, 0, -1.656, -3.190, -4.652, -6.115, -7.704, -9.627,
+           -11.449, -12.868, -14.018, -15.015, -15.928, -16.770, -17.549, -18.289]
+
+
+def test_the_published_data_set_is_fitted_and_its_quality_reported(tmp_path):
+    r = punchsweep.fit_material(PUBLISHED, reference_temperature=-5, poisson=0.35, output=tmp_path / "ems.ini")
+    T = np.asarray(r.shift["temperatures"])
+    assert len(T) == 21
+    measured = np.asarray(r.shift["measured_log10_aT"])
+    relative = measured - measured[np.argmin(np.abs(T + 5))]  # zero at the -5 C isotherm, as both references
+    # pyvisco drops an isotherm's first reading where the temperature had not yet settled,
+    # which moves its coldest isotherm (-50 C) by 0.76 decades from ours; elsewhere within 0.25.
+    assert np.max(np.abs(relative - PYVISCO)[1:]) < 0.25 and abs(relative[0] - PYVISCO[0]) < 0.8
+    # The shipped factors differ from pyvisco's own by up to 0.73 decades at 100 C; ours too.
+    shipped = np.array([SHIPPED[min(SHIPPED, key=lambda t: abs(t - x))] for x in T])
+    assert np.max(np.abs(relative - shipped)[(T > -45) & (T <= 55)]) < 0.5
+    assert np.max(np.abs(relative - shipped)) < 1.0
+    assert r.shift["C1"] == pytest.approx(98.09, rel=0.05) and r.shift["C2"] == pytest.approx(430.03, rel=0.05)
+    # Quality, as the report states it: over all 210 readings E' within 5.1%, E'' 11.2%
+    # (pyvisco's own fit of these data, on the shipped shifts, leaves a relative residual of
+    # 0.014 in E'/E_0 unweighted: not comparable); the series written, for the default
+    # window of 1e-10 to 1e12 s at -5 C, over the readings within it.
+    assert r.prony["rms_relative_all"]["storage"] < 0.06 and r.prony["rms_relative_all"]["loss"] < 0.12
+    inside = (r.readings["x_reduced"] >= 1e-12) & (r.readings["x_reduced"] <= 1e10)
+    assert (r.readings["used"] == inside).all() and 130 < inside.sum() < 150
+    assert r.prony["rms_relative"]["storage"] < 0.06 and r.prony["rms_relative"]["loss"] < 0.14
+    assert "RMS relative error over all 210 readings: E' " in r.report
+    picture = tmp_path / "fit.png"
+    done = subprocess.run(["/usr/bin/python3", REPO / "postprocess" / "fit_picture.py", tmp_path / "ems.fit.json",
+                           "-o", picture], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert picture.stat().st_size > 50_000
