@@ -44,6 +44,11 @@ REGIME_COLOURS = {"immediate": "#0072B2", "delayed": "#E69F00", "never": "#009E7
                   NOT_COMPUTED: "#3A3A3A"}
 INVALID_WHITE_MIX = 0.55
 """Invalid points are drawn in their regime colour mixed this much with white (and hatched)."""
+T_STAR_CMAP = ("YlOrRd", 0.12, 0.78)
+"""Delayed points are coloured by log10 t* from this sequential colormap (name, and the part
+of it used: light yellow for the shortest t*, red for the longest), warm and so apart from
+the immediate blue and the never green; a delayed point without a finite t* keeps
+REGIME_COLOURS["delayed"]."""
 
 # How the plots typeset units as they appear in the file and the usual axis symbols; a unit
 # or axis not listed is written as the file has it.
@@ -325,6 +330,11 @@ def unit_tex(unit: str) -> str:
     return _UNIT_TEX.get(unit, unit)
 
 
+def symbol_tex(name: str) -> str:
+    """An axis's symbol typeset for matplotlib ('$\\bar p_0$' for pbar), else its name."""
+    return _SYMBOL_TEX.get(name, name)
+
+
 def format_value(ds, name: str, value, tex: bool = False) -> str:
     """'l = 0.75 R', 'T = 2.5' (dimensionless: no unit), for titles and messages; a categorical
     axis's value is its label."""
@@ -496,13 +506,30 @@ def grid_summary(ds, name: str, limit: int = 6) -> str:
 # Output files and colours
 
 
-def map_context(ds) -> str:
-    """What a picture of the map must say besides its axes: the material (its name up to the
-    first comma) or the creep law, the model, and the load: 'NBR rubber; the paper's model;
-    step load'. Read from the map's attributes (material, creep_law, localization,
-    identity) and axes (ramp_time)."""
+def material_names(ds) -> dict[str, str]:
+    """The material's name (up to its first comma) by label: {'': name} for a one-material
+    map (global attribute material, the file's [material] name), {label: name} for a map
+    with a categorical material axis (its material attribute holds 'label: name' lines); {}
+    for a map without a material."""
+    text = str(ds.attrs.get("material", "")).strip()
+    if not text:
+        return {}
+    if "material" in ds.dims:
+        names = {}
+        for line in text.splitlines():
+            label, _, name = line.partition(":")
+            names[label.strip()] = name.split(",")[0].strip() or label.strip()
+        return names
+    return {"": text.split(",")[0].strip()}
+
+
+def map_parts(ds) -> tuple[str, str, str]:
+    """(material or creep law, model, load) as map_context words them: the material's name up
+    to the first comma (the labels' names joined for a map of several), else the creep law;
+    the model from the attribute localization; the load ('step load', 'ramped load' with a
+    ramp_time axis, 'load table' where the identity names one)."""
     attrs = ds.attrs
-    material = str(attrs.get("material", "")).split(",")[0].strip()
+    material = "; ".join(material_names(ds).values())
     law = material or str(attrs.get("creep_law", "")).replace("_", " ") or "creep law not recorded"
     spelling = str(attrs.get("localization", "paper"))
     model = {"periodic": "periodic model", "paper": "the paper's model",
@@ -514,7 +541,37 @@ def map_context(ds) -> str:
         load = "load table"
     else:
         load = "step load"
-    return f"{law}; {model}; {load}"
+    return law, model, load
+
+
+def map_context(ds) -> str:
+    """What a picture of the map must say besides its axes: the material (its name up to the
+    first comma) or the creep law, the model, and the load: 'NBR rubber; the paper's model;
+    step load'. Read from the map's attributes (material, creep_law, localization,
+    identity) and axes (ramp_time)."""
+    return "; ".join(map_parts(ds))
+
+
+def parse_time(ds, text: str, option: str) -> tuple[float, str]:
+    """A time given on the command line (`option`, e.g. --touch-within) in the unit of the map's
+    t_star, and how to write it: '60s' or '1min' (s, min, h) where the map's times are
+    physical (a material map), a bare number in the map's time unit (T_eps, or the
+    material's). MapError for anything else, or for a time <= 0."""
+    match = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z]*)\s*", text)
+    if match is None:
+        raise MapError(f"{option} '{text}' is not a time: a number, or a number and a unit (s, min, h)")
+    value, unit = float(match.group(1)), match.group(2)
+    shown = units(ds, "t_star")
+    if not math.isfinite(value) or value <= 0:
+        raise MapError(f"{option} {text}: the time must be > 0 and finite")
+    if not unit:
+        return value, f"{value:g} {shown}"
+    if unit not in _SI or _dimension(unit) != "time":
+        raise MapError(f"{option} {text}: '{unit}' is not a unit of time; valid: s, min, h")
+    if shown not in _SI or _dimension(shown) != "time":
+        raise MapError(f"{option} {text}: this map's times are in {shown or 'no unit'} (no material, so "
+                       f"no physical time scale); give a bare number in {shown or 'its time unit'}")
+    return value * _SI[unit] / _SI[shown], f"{value:g} {unit}"
 
 
 def check_output(path: str | Path, suffixes=(".png", ".pdf")) -> Path:
@@ -537,9 +594,7 @@ def rgba(colour: str) -> np.ndarray:
 
 def invalid_colour(meaning: str) -> np.ndarray:
     """The paler shade an invalid point of regime `meaning` (e.g. 'delayed') is drawn in."""
-    c = rgba(REGIME_COLOURS[meaning])
-    c[:3] = (1 - INVALID_WHITE_MIX) * c[:3] + INVALID_WHITE_MIX
-    return c
+    return pale(rgba(REGIME_COLOURS[meaning]))
 
 
 # The drawn categories: DRAWN_REGIMES[k] is k for valid points, k + 3 for invalid ones; 6 is
@@ -568,9 +623,53 @@ def category_colours() -> np.ndarray:
                     + [rgba(REGIME_COLOURS[NOT_COMPUTED])])
 
 
-def regime_colour_grid(ds, regime: np.ndarray, valid: np.ndarray) -> np.ndarray:
-    """The fill colour (RGBA, shape (..., 4)) each cell is drawn with, hatching aside."""
-    return category_colours()[categories(ds, regime, valid)]
+def t_star_colormap():
+    """The sequential colormap of log10 t* for delayed points (T_STAR_CMAP)."""
+    import matplotlib
+    from matplotlib.colors import ListedColormap
+
+    name, lo, hi = T_STAR_CMAP
+    return ListedColormap(matplotlib.colormaps[name](np.linspace(lo, hi, 256)), name=f"{name}_t_star")
+
+
+def t_star_norm(t_star: np.ndarray):
+    """Normalize on log10 t* over whole decades around the finite positive values of
+    `t_star` (one decade where they all lie within one); None if there are none."""
+    from matplotlib.colors import Normalize
+
+    t = np.asarray(t_star, dtype=float)
+    t = t[np.isfinite(t) & (t > 0)]
+    if t.size == 0:
+        return None
+    lo, hi = math.floor(math.log10(t.min())), math.ceil(math.log10(t.max()))
+    return Normalize(vmin=lo, vmax=max(hi, lo + 1))
+
+
+def pale(colours: np.ndarray) -> np.ndarray:
+    """RGBA colours mixed with white as invalid points are drawn (INVALID_WHITE_MIX)."""
+    c = np.array(colours, dtype=float)
+    c[..., :3] = (1 - INVALID_WHITE_MIX) * c[..., :3] + INVALID_WHITE_MIX
+    return c
+
+
+def regime_colour_grid(ds, regime: np.ndarray, valid: np.ndarray, t_star: np.ndarray | None = None,
+                       norm=None) -> np.ndarray:
+    """The fill colour (RGBA, shape (..., 4)) each cell is drawn with, hatching aside: the
+    regime's colour; with `t_star` and `norm` (t_star_norm), a delayed cell with a finite t* > 0
+    takes t_star_colormap() at norm(log10 t*), paler where it is invalid."""
+    cat = categories(ds, regime, valid)
+    grid = category_colours()[cat]
+    if t_star is None or norm is None:
+        return grid
+    t = np.asarray(t_star, dtype=float)
+    delayed = (cat == DRAWN_REGIMES.index("delayed")) | (cat == DRAWN_REGIMES.index("delayed") + len(DRAWN_REGIMES))
+    coloured = delayed & np.isfinite(t) & (t > 0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        shade = t_star_colormap()(np.asarray(norm(np.where(coloured, np.log10(t), np.nan)), dtype=float))
+    invalid = cat >= len(DRAWN_REGIMES)
+    grid[coloured & ~invalid] = shade[coloured & ~invalid]
+    grid[coloured & invalid] = pale(shade[coloured & invalid])
+    return grid
 
 
 def cell_edges(values: np.ndarray, log: bool) -> np.ndarray:

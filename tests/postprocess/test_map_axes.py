@@ -191,7 +191,7 @@ def test_regime_map_at_accepts_any_axis_of_the_file(synthetic, tmp_path):
                                 "l not given -> its only grid value l = 0.75 R",
                                 f"regime_map.py: wrote {png}"]
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    regime, valid, _ = construction()
+    regime, valid, floats = construction()
     with pm.open_map(synthetic["map"]) as ds:
         fixed = pm.resolve_at(ds, {"temperature": 300.0}, free=[], reserved={
             "pbar": "x", "dh": "y", "material": "facet"})
@@ -202,10 +202,13 @@ def test_regime_map_at_accepts_any_axis_of_the_file(synthetic, tmp_path):
         for k, panel in enumerate(panels):
             cut = (slice(None), 1, slice(None), k, 0)
             # The synthetic map's bem_regime is its regime at every computed point, so an
-            # invalid cell shows the BEM's (same) regime in full colour (regime_map.py).
-            want = np.array([[pm.rgba(pm.REGIME_COLOURS[r]) for r, v in zip(rr, vv)]
-                             for rr, vv in zip(regime[cut].T, valid[cut].T)])  # (dh, pbar)
-            np.testing.assert_array_equal(panel.colours, want)
+            # invalid cell shows the BEM's (same) regime in full colour (regime_map.py), and
+            # a delayed one the colour bar's colour of the BEM's t* (1.1 times the model's).
+            t_star = np.where(valid[cut] == "valid", 1.0, 1.1) * floats["t_star"][cut]
+            want = np.array([[panel.scale.to_rgba(np.log10(t)) if r == "delayed" else pm.rgba(pm.REGIME_COLOURS[r])
+                              for r, t in zip(rr, tt)]
+                             for rr, tt in zip(regime[cut].T, t_star.T)])  # (dh, pbar)
+            np.testing.assert_allclose(panel.colours, want, atol=1e-12)
 
 
 @pytest.mark.parametrize("args, message", [

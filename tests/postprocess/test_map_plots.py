@@ -118,10 +118,15 @@ def test_regime_map_png_shows_the_stored_regime_at_every_valid_cell_centre(maps,
         fig.canvas.draw()
         regime = ds.regime.sel(l=0.75, T=2.5, s=2).transpose("dh", "pbar").values
         valid = ds.valid.sel(l=0.75, T=2.5, s=2).transpose("dh", "pbar").values
-        want = pm.regime_colour_grid(ds, regime, valid)
+        t_star = ds.t_star.sel(l=0.75, T=2.5, s=2).transpose("dh", "pbar").values
+        want = pm.regime_colour_grid(ds, regime, valid, t_star, panel.scale.norm)
     assert image.shape[:2] == fig.canvas.get_width_height()[::-1]
     assert panel.colours.shape == (11, 9, 4)
     np.testing.assert_array_equal(panel.colours, want)
+    # Delayed cells are coloured by their t* (test_regime_map_t_star.py), the others by regime.
+    plain = pm.regime_colour_grid(ds, regime, valid)
+    np.testing.assert_array_equal(panel.colours[regime != 1], plain[regime != 1])
+    assert not np.any(np.all(panel.colours[regime == 1] == pm.rgba(pm.REGIME_COLOURS["delayed"]), axis=-1))
     rows, cols = cell_centre_pixels(fig, panel)
     drawn = image[rows, cols, :3]
     ok = valid == 0  # invalid cells are hatched: their centre may sit on a hatch line
@@ -147,14 +152,22 @@ def test_regime_map_draws_the_bem_regime_where_the_model_has_no_answer(tmp_path)
         regime = ds.regime.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
         valid = ds.valid.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
         bem = ds.bem_regime.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
+        t_star = ds.t_star.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
+        bem_t_star = ds.bem_t_star.sel(l=0.75, T=5, s=2).transpose("dh", "pbar").values
     flagged = valid != 0
     assert flagged.any() and (~flagged).any()
     assert np.array_equal(bem != -1, flagged)  # the BEM ran exactly where the model has no answer
     colours = {0: "immediate", 1: "delayed", 2: "never"}  # docs/maps.md's codes
+
+    def want(code, t):  # delayed: the colour bar's colour of its t* (the BEM's where the BEM answers)
+        if code == 1 and np.isfinite(t):
+            return panel.scale.to_rgba(np.log10(t))
+        return pm.rgba(pm.REGIME_COLOURS[colours[int(code)]])
+    assert (bem[flagged] == 1).any()
     for j, i in zip(*np.nonzero(flagged)):
-        assert np.array_equal(panel.colours[j, i], pm.rgba(pm.REGIME_COLOURS[colours[int(bem[j, i])]]))
+        np.testing.assert_allclose(panel.colours[j, i], want(bem[j, i], bem_t_star[j, i]), atol=1e-12)
     for j, i in zip(*np.nonzero(~flagged)):
-        assert np.array_equal(panel.colours[j, i], pm.rgba(pm.REGIME_COLOURS[colours[int(regime[j, i])]]))
+        np.testing.assert_allclose(panel.colours[j, i], want(regime[j, i], t_star[j, i]), atol=1e-12)
     labels = [t.get_text() for t in fig.axes[-1].get_legend().get_texts()]
     assert any("BEM" in text for text in labels), labels
 
@@ -214,10 +227,12 @@ def test_regime_map_facets_one_panel_per_value_and_writes_pdf(maps, tmp_path):
         fig, panels = regime_map.render(ds, "pbar", "dh", fixed_at(ds, l=0.75, s=1), facet="T")
         assert [p.title for p in panels] == ["$T$ = 2", "$T$ = 2.5", "$T$ = 5"]
         for k, p in enumerate(panels):
-            want = ds.regime.isel(l=1, s=0, T=k).transpose("dh", "pbar").values
+            cut = ds.isel(l=1, s=0, T=k)
+            want = cut.regime.transpose("dh", "pbar").values
             np.testing.assert_array_equal(
-                p.colours, pm.regime_colour_grid(ds, want, ds.valid.isel(l=1, s=0, T=k).transpose(
-                    "dh", "pbar").values))
+                p.colours, pm.regime_colour_grid(ds, want, cut.valid.transpose("dh", "pbar").values,
+                                                 cut.t_star.transpose("dh", "pbar").values, p.scale.norm))
+        assert all(p.scale is panels[0].scale for p in panels)  # one colour bar for every panel
         assert panels[0].ax.get_xlabel() == "nominal pressure $\\bar p_0$ [$E_0/(1-\\nu^2)$]"
         assert panels[0].ax.get_ylabel() == "height difference of the punch levels $\\Delta h$ [$R$]"
 
@@ -227,7 +242,9 @@ def test_regime_map_contours_label_t_star_in_the_delayed_region(maps):
         fig, (panel,) = regime_map.render(ds, "pbar", "dh", fixed_at(ds, l=0.75, T=5, s=2))
         labels = [t.get_text() for t in panel.ax.texts]
         legend = [t.get_text() for t in fig.axes[-1].get_legend().get_texts()]
-    assert labels and all(float(v) > 0 for v in labels)
+        delayed = ds.t_star.sel(l=0.75, T=5, s=2).where(ds.regime.sel(l=0.75, T=5, s=2) == 1).values
+    values = [10.0 ** float(v[5:-2]) if v.startswith("$10^") else float(v.strip("$")) for v in labels]
+    assert values and all(np.nanmin(delayed) < v < np.nanmax(delayed) for v in values)
     assert any("contours" in t for t in legend) and any(t.startswith("invalid") for t in legend)
 
 
@@ -419,7 +436,10 @@ def test_titles_name_the_material_or_law_the_model_and_the_load(maps, tmp_path):
     with pm.open_map(maps["full"]) as ds:  # the standard linear solid, the paper's model, a step
         assert pm.map_context(ds) == "standard linear solid; the paper's model; step load"
         fig, _ = regime_map.render(ds, "pbar", "dh", fixed_at(ds, l=0.75, T=5, s=2), contours=False)
-        assert fig._suptitle.get_text().endswith("\nstandard linear solid; the paper's model; step load")
+        assert fig._suptitle.get_text() == (
+            "Regime map: standard linear solid\n"
+            "step load, nominal pressure $\\bar p_0$ from 0.005 to 0.08 $E_0/(1-\\nu^2)$ (x axis)\n"
+            "at $l$ = 0.75 $R$, $T$ = 5, $s$ = 2; the paper's model")
     small = ["--grid.l", "0.75", "--grid.dh", "0.05,0.1", "--grid.pbar", "0.01,0.02", "--grid.s", "2", "--quiet"]
     cases = {"NBR rubber; the paper's model; ramped load":
              ["--config", str(REPO / "sweeps" / "materials" / "nbr.ini"), "--grid.ramp_time", "1,10"],
