@@ -13,10 +13,20 @@ from the map's h_0 and h_inf variables, which do not depend on dh; the script ch
 they agree across the dh axis (and h_0 across T) and says so on stderr if they do not.
 
 With --touch-by t1,t2,...: also the height difference below which level 2 touches by each
-time t_k (dashed), interpolated along the dh axis of the map's t_star in log t*. Against
+time t_k (one dash pattern each), interpolated along the dh axis of the map's t_star in
+log t* (from h_0, where t* leaves 0, never below it); where even the grid's largest dh
+touches by t_k the curve stops, marked ^ on that dh. Against
 the temperature of a material map (--against temperature) this is the chart that moves:
 h_0 and h_inf do not depend on the temperature (a time shift changes neither J(0) nor
 J(inf)), the touch-by curves rise with it.
+
+The dh axis is logarithmic (in every panel) when the values drawn in some panel (h_0, h_inf,
+the touch-by curves) span more than a factor LOG_DH_SPAN (10), so that h_0 and the touch-by
+curves are not pressed against the bottom by an h_inf many times larger (a material that
+creeps far: h_inf/h_0 follows J(inf)/J(0)); else linear from 0. --log-dh or --linear-dh
+forces one. The title names the material (or the creep law), the
+temperature (its value, or "against temperature"), the load with the pressure in its unit
+(kPa on a material map), the other fixed axes and the model.
 
 The map must have the axes dh and --against (pbar, l or temperature); a map without a T
 or an s axis gets one curve or one panel. Every other axis of the map (read from the file, like the units)
@@ -29,8 +39,9 @@ temperature in degC; --touch-by times in the map's time unit (T_eps, or the mate
 Example:
   postprocess/critical_dh.py map.h5 --against pbar --at l=0.75 -o chart.png
   postprocess/critical_dh.py map.h5 --against l --at pbar=0.04 T=2.5 -o chart.pdf
-  postprocess/critical_dh.py wlf_map.h5 --against temperature --at l=0.75 pbar=47 \
+  postprocess/critical_dh.py wlf_map.h5 --against temperature --at l=0.75 pbar=47 \\
       --touch-by 1,60,3600 -o chart.png
+  postprocess/critical_dh.py map.h5 --at l=0.75 --linear-dh -o chart.png
 """
 from __future__ import annotations
 
@@ -52,6 +63,8 @@ RELATIVE_TOLERANCE = 1e-12  # for "does not depend on dh / T"
 AGAINST = ("pbar", "l", "temperature")  # the horizontal axes the chart is drawn against
 CURVE_AXIS = "T"  # one h_inf curve per value (h_0 does not depend on it), if the map has it
 PANEL_AXIS = "s"  # one panel per value, if the map has it
+LOG_DH_SPAN = 10.0  # the dh axis is logarithmic when the drawn values span more than this factor
+LOG_MARGIN = 1.25  # a log dh axis reaches this factor below the smallest and above the largest value
 
 
 # Dash patterns of the touch-by curves, told apart at a glance: long dashes, dots, dash-dot,
@@ -64,14 +77,20 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                   formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("map", metavar="MAP.h5", help="regime map written by `punchsweep sweep`")
     p.add_argument("--against", default="pbar", metavar="AXIS",
-                   help="horizontal axis: pbar (nominal pressure, E0/(1-nu^2); the default) "
-                        "or l (lattice pitch, R)")
+                   help="horizontal axis: pbar (nominal pressure, E0/(1-nu^2); the default), "
+                        "l (lattice pitch, R) or temperature (a material map with a [shift])")
     pm.add_at_option(p, "fix the other of l / pbar and any further axis of the map; "
                         "optionally also T and/or s to draw only those curves and panels",
                      "dh cannot be fixed: it is the chart's vertical axis.")
     p.add_argument("--touch-by", default="", metavar="TIMES",
                    help="comma-separated times: also draw the dh below which level 2 touches by "
                         "each (from t_star, in the map's time unit)")
+    scale = p.add_mutually_exclusive_group()
+    scale.add_argument("--log-dh", dest="dh_scale", action="store_const", const="log", default="auto",
+                       help="draw dh on a log axis (the default when the drawn values span more than "
+                            f"a factor {LOG_DH_SPAN:g})")
+    scale.add_argument("--linear-dh", dest="dh_scale", action="store_const", const="linear",
+                       help="draw dh on a linear axis from 0 (the default otherwise)")
     p.add_argument("-o", "--output", required=True,
                    help="picture to write; the format follows the suffix: .png or .pdf")
     return p.parse_args(argv)
@@ -91,12 +110,14 @@ def along_dh(values: np.ndarray, name: str, dh_axis: int, unit: str = "") -> np.
     return mid
 
 
-def touch_by_curve(dh: np.ndarray, t_star: np.ndarray, t_target: float) -> float:
+def touch_by_curve(dh: np.ndarray, t_star: np.ndarray, t_target: float, h0: float = float("nan")) -> float:
     """The dh below which level 2 touches by t_target along one dh line of t* (0 immediate,
     NaN never; t* grows with dh): linear in log t* between the bracketing grid points (in t*
-    from an immediate one, t* = 0); the last grid dh that touches when the next never does;
-    NaN when none does; +inf when even the grid's largest dh touches (the answer lies above
-    the grid, which a curve must not pretend to know)."""
+    from an immediate one, t* = 0, and from h0 there when h0, the line's h_0, lies between the
+    two: t* leaves 0 at h_0, not at the grid point below it, so the curve never dips below
+    h_0); the last grid dh that touches when the next never does; NaN when none does; +inf
+    when even the grid's largest dh touches (the answer lies above the grid, which a curve
+    must not pretend to know)."""
     t = np.where(np.isnan(t_star), np.inf, t_star)
     touched = t <= t_target
     if not touched.any():
@@ -107,29 +128,40 @@ def touch_by_curve(dh: np.ndarray, t_star: np.ndarray, t_target: float) -> float
     if not np.isfinite(t[k + 1]):
         return float(dh[k])
     lo, hi = t[k], t[k + 1]
+    start = float(dh[k])
     if lo == 0.0:
         w = t_target / hi
+        if dh[k] < h0 < dh[k + 1]:
+            start = float(h0)
     else:
         w = (np.log(t_target) - np.log(lo)) / (np.log(hi) - np.log(lo)) if hi > lo else 0.0
-    return float(dh[k] + w * (dh[k + 1] - dh[k]))
+    return float(start + w * (dh[k + 1] - start))
 
 
 def touch_by_curves(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float]) -> np.ndarray:
-    """(time, T, s, x): touch_by_curve over the map's dh axis for each target time."""
+    """(time, T, s, x): touch_by_curve over the map's dh axis for each target time (from the
+    map's h_0 at each point, its median over dh, where t* leaves 0)."""
     sel = {name: f.index for name, f in fixed.items()}
     for name in (CURVE_AXIS, PANEL_AXIS):
         if name in sel:
             sel[name] = [sel[name]]
-    cut = ds["t_star"].isel(sel)
+    names = ["t_star"] + (["h_0"] if "h_0" in ds.variables else [])
+    cut = ds[names].isel(sel)
     for name in (CURVE_AXIS, PANEL_AXIS):
         if name not in cut.dims:
             cut = cut.expand_dims(name)
-    t = cut.transpose("dh", CURVE_AXIS, PANEL_AXIS, against).values
+    order = ("dh", CURVE_AXIS, PANEL_AXIS, against)
+    t = cut["t_star"].transpose(*order).values
+    h0 = np.full(t.shape[1:], np.nan)
+    if "h_0" in cut:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # all-NaN lines stay NaN
+            h0 = np.nanmedian(cut["h_0"].transpose(*order).values, axis=0)
     dh = ds["dh"].values.astype(float)
     out = np.full((len(times),) + t.shape[1:], np.nan)
     for i, target in enumerate(times):
         for idx in np.ndindex(*t.shape[1:]):
-            out[(i,) + idx] = touch_by_curve(dh, t[(slice(None),) + idx], target)
+            out[(i,) + idx] = touch_by_curve(dh, t[(slice(None),) + idx], target, h0[idx])
     return out
 
 
@@ -168,7 +200,49 @@ def critical_curves(ds, against: str, fixed: dict[str, pm.Fixed]):
     return x, drawn(CURVE_AXIS), drawn(PANEL_AXIS), h0_s, hinf
 
 
-def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | None = None):
+def dh_scale(panels, choice: str = "auto") -> str:
+    """'log' or 'linear': the scale of the dh axis (one for every panel) for the values drawn
+    in each panel (a list of arrays; NaN and inf are not drawn). `choice` 'auto' is 'log' when
+    the values are all > 0 and in some panel the largest is more than LOG_DH_SPAN times the
+    smallest; 'log' with a value <= 0 is a MapError."""
+    finite = [v[np.isfinite(v)] for v in (np.asarray(p, dtype=float).ravel() for p in panels)]
+    every = np.concatenate(finite) if finite else np.array([])
+    if choice == "log" and (every <= 0).any():
+        raise pm.MapError(f"--log-dh: the chart has critical dh values <= 0 (down to {every.min():.3g}), "
+                          f"which a log axis cannot show; use --linear-dh")
+    if choice != "auto":
+        return choice
+    if every.size == 0 or (every <= 0).any():
+        return "linear"
+    return "log" if any(v.size and v.max() > LOG_DH_SPAN * v.min() for v in finite) else "linear"
+
+
+def title_lines(ds, against: str, fixed: dict[str, pm.Fixed]) -> str:
+    """The figure's title, worded as regime_map.py's: the material (or creep law) and its
+    temperature (the fixed value, or 'against temperature'); the load with the pressure (fixed:
+    its value in its unit); the other fixed axes and the model."""
+    law, model, load = pm.map_parts(ds)
+    if "material" in fixed:
+        label = str(fixed["material"].value)
+        law = pm.material_names(ds).get(label, label)
+    first = "Critical height differences: " + law
+    if "temperature" in pm.axes(ds):
+        first += (", " + pm.format_value(ds, "temperature", fixed["temperature"].value, tex=True)
+                  if "temperature" in fixed else ", against temperature")
+    if "pbar" in fixed:
+        load += ", " + pm.format_value(ds, "pbar", fixed["pbar"].value, tex=True)
+    elif against == "pbar":
+        load += ", against the nominal pressure " + pm.symbol_tex("pbar")
+    others = [pm.format_value(ds, name, f.value, tex=True) for name, f in fixed.items()
+              if name not in ("pbar", "temperature", "material")]
+    incomplete = " (incomplete map)" if not pm.is_completed(ds) else ""
+    last = ("at " + ", ".join(others) + "; " if others else "") + model + incomplete
+    return "\n".join([first, load, last])
+
+
+def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | None = None,
+           scale: str = "auto"):
+    """The chart; `scale` is that of the dh axis: 'auto' (dh_scale), 'log' or 'linear'."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -191,6 +265,13 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     immediate = pm.REGIME_COLOURS["immediate"]
     dh_unit = pm.unit_tex(pm.units(ds, "dh")) if pm.units(ds, "dh") else "-"
     dh_top = float(ds["dh"].values[-1])
+    # Everything drawn, per panel (last axis of each: x): h_0, h_inf, the touch-by curves where
+    # they are inside the grid, and the ^ marks on the grid's largest dh where they are not.
+    drawn = [np.concatenate([h0[k][None], hinf[:, k]]
+                            + ([np.where(np.isinf(touch[:, :, k]), dh_top, touch[:, :, k]).reshape(-1, len(x))]
+                               if touch is not None else []))
+             for k in range(len(s))]
+    scale = dh_scale(drawn, scale)
     if touch is not None and np.isinf(touch).any():
         beyond = [f"{t:g}" for i, t in enumerate(times) if np.isinf(touch[i]).any()]
         print(f"critical_dh.py: warning: by t = {', '.join(beyond)} {pm.units(ds, 't_star')} level 2 touches even at "
@@ -199,7 +280,13 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     for k in range(n):
         row, col = divmod(k, ncols)
         ax = fig.add_subplot(grid[row, col], sharex=fig.axes[0] if k else None)
-        ax.fill_between(x, 0, h0[k], color=immediate, alpha=0.15, lw=0)
+        values = drawn[k][np.isfinite(drawn[k])]
+        if scale == "log":
+            values = values[values > 0]
+            lo, hi = (values.min() / LOG_MARGIN, values.max() * LOG_MARGIN) if values.size else (0.1, 1.0)
+        else:
+            lo, hi = 0.0, 1.05 * values.max() if values.size and values.max() > 0 else 1.0
+        ax.fill_between(x, lo, h0[k], color=immediate, alpha=0.15, lw=0)
         ax.plot(x, h0[k], color=immediate, lw=2.2, marker="o", ms=3)
         for j in range(len(T)):
             ax.plot(x, hinf[j, k], color=t_colours[j], lw=1.4, marker="o", ms=2.5)
@@ -212,8 +299,12 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
                 if above.any():
                     ax.plot(x[above], np.full(above.sum(), dh_top), ls="none", marker="^", ms=6,
                             color=t_colours[j], clip_on=False)
-        top = np.nanmax(hinf[:, k]) if np.isfinite(hinf[:, k]).any() else 1.0
-        ax.set_ylim(0, 1.05 * top)
+        if scale == "log":
+            ax.set_yscale("log")
+            ax.set_ylim(lo, hi)
+            pm.style_log_axis(ax.yaxis)
+        else:
+            ax.set_ylim(lo, hi)
         if len(x) > 1:
             ax.set_xlim(x[0], x[-1])
         if pm.is_log(ds, against):
@@ -241,17 +332,15 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
                        label=f"touches by t = {t:g} {time_unit}") for i, t in enumerate(times)]
     if touch is not None and np.isinf(touch).any():
         handles.append(Line2D([], [], color=legend_colour, ls="none", marker="^", ms=6,
-                              label=f"touches by then even at the grid's\nlargest dh ({dh_top:.3g}); the curve\n"
-                                    "stops there: extend grid.dh"))
+                              label="touches by then even at the grid's\nlargest "
+                                    f"{pm.format_value(ds, 'dh', dh_top, tex=True)}; the\n"
+                                    "curve stops there: extend grid.dh"))
     legend_ax = fig.add_subplot(grid[:, ncols])
     legend_ax.axis("off")
     legend_ax.legend(handles=handles, loc="upper left", frameon=False, fontsize=9, borderaxespad=0,
                      title="between $h_0$ and $h_\\infty$:\ndelayed; above $h_\\infty$: never",
                      title_fontsize=9)
-    fixed_text = ", ".join(pm.format_value(ds, name, f.value, tex=True) for name, f in fixed.items())
-    incomplete = "" if pm.is_completed(ds) else " (incomplete map)"
-    fig.suptitle("Critical height differences" + (f" at {fixed_text}" if fixed_text else "")
-                 + incomplete + f"\n{pm.map_context(ds)}", fontsize=11)
+    fig.suptitle(title_lines(ds, against, fixed), fontsize=11)
     return fig
 
 
@@ -280,7 +369,7 @@ def main(argv: list[str]) -> int:
             print(f.message)
         if times and "t_star" not in ds.variables:
             raise pm.MapError(f"'{args.map}' has no t_star variable (needed by --touch-by)")
-        fig = render(ds, args.against, fixed, times)
+        fig = render(ds, args.against, fixed, times, args.dh_scale)
         pm.save_figure(fig, out, dpi=FIG_DPI)
     print(f"critical_dh.py: wrote {out}")
     return 0

@@ -350,12 +350,49 @@ def test_critical_dh_takes_h_at_any_dh_and_warns_if_it_varies_along_dh(maps, tmp
     assert "warning: h_inf varies along dh" in capsys.readouterr().err
 
 
+def test_critical_dh_axis_is_log_only_where_a_panel_spans_more_than_a_factor_10():
+    assert critical_dh.LOG_DH_SPAN == 10  # as docs/maps.md says
+    assert critical_dh.dh_scale([[1.0, 9.0], [2.0, 3.0]]) == "linear"
+    assert critical_dh.dh_scale([[1.0, 11.0], [2.0, 3.0]]) == "log"
+    # One scale for every panel, from each panel's own span: 0.1-0.5 and 1-5 are a factor 5
+    # each (log would only squeeze them), although a factor 50 together.
+    assert critical_dh.dh_scale([[0.1, 0.5], [1.0, 5.0]]) == "linear"
+    assert critical_dh.dh_scale([[0.0, 50.0, np.nan], [1.0, np.inf]]) == "linear"  # 0 has no log
+    assert critical_dh.dh_scale([[1.0, 11.0]], "linear") == "linear"
+    assert critical_dh.dh_scale([[1.0, 2.0]], "log") == "log"
+    with pytest.raises(pm.MapError, match="--log-dh: the chart has critical dh values <= 0"):
+        critical_dh.dh_scale([[0.0, 50.0]], "log")
+
+
+def test_critical_dh_keeps_a_linear_dh_axis_from_0_for_a_narrow_span(maps, tmp_path):
+    """At l = 0.75 R, T = 2 each panel's h_0 and h_inf lie within a factor 4 to 7 of each other
+    (read here with h5py): the dh axis stays linear from 0; --log-dh forces a log axis."""
+    with h5py.File(maps["full"], "r") as f:  # axes l, dh, T, pbar, s
+        il, iT = int(np.argmin(np.abs(f["l"][:] - 0.75))), list(f["T"][:]).index(2.0)
+        h0, hinf = f["h_0"][il, :, iT, :, :], f["h_inf"][il, :, iT, :, :]  # (dh, pbar, s)
+    spans = [max(np.nanmax(h0[..., k]), np.nanmax(hinf[..., k])) / min(np.nanmin(h0[..., k]), np.nanmin(hinf[..., k]))
+             for k in range(h0.shape[-1])]
+    assert 3 < min(spans) and max(spans) < 8  # the premise, from the map itself
+    with pm.open_map(maps["full"]) as ds:
+        fixed = fixed_at(ds, l=0.75, T=2.0)
+        fig = critical_dh.render(ds, "pbar", fixed)
+        for k, ax in enumerate(fig.axes[:2]):
+            assert ax.get_yscale() == "linear" and ax.get_ylim()[0] == 0
+            assert ax.get_ylim()[1] == pytest.approx(1.05 * max(np.nanmax(h0[..., k]), np.nanmax(hinf[..., k])))
+        fig = critical_dh.render(ds, "pbar", fixed, scale="log")
+        assert [ax.get_yscale() for ax in fig.axes[:2]] == ["log", "log"]
+    png = tmp_path / "log.png"
+    rc, _, err = call(critical_dh, maps["full"], "--at", "l=0.75", "T=2", "--log-dh", "-o", png)
+    assert rc == 0 and is_png(png), err
+
+
 @pytest.mark.parametrize("args, message", [
+    (["--at", "l=0.75", "--log-dh", "--linear-dh"], "not allowed with argument"),
     (["--at", "l=0.75", "dh=0.05"], "dh is the chart's vertical axis"),
     (["--against", "T"], "--against 'T' is not a valid choice; use l, pbar or temperature"),
     (["--against", "l"], "still to fix pbar"),
     (["--at", "l=3"], "--at l=3 is outside the axis range"),
-], ids=["dh-fixed", "against-T", "pbar-not-fixed", "at-out-of-range"])
+], ids=["log-and-linear", "dh-fixed", "against-T", "pbar-not-fixed", "at-out-of-range"])
 def test_critical_dh_user_errors_exit_2_with_one_line_and_no_file(maps, tmp_path, args, message):
     out = tmp_path / "c.png"
     rc, stdout, err = call(critical_dh, maps["full"], *args, "-o", out)

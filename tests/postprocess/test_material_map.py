@@ -4,6 +4,7 @@ unit, the material's attributes, and the postprocess scripts drawing it in physi
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -67,6 +68,19 @@ def test_touch_by_interpolates_in_log_time():
     assert np.isnan(critical_dh.touch_by_curve(dh, np.array([5.0, 50.0, np.nan, np.nan]), 1.0))
     # Even the largest dh touches by then: the answer is above the grid, not its top value.
     assert critical_dh.touch_by_curve(dh, np.array([0.0, 1.0, 2.0, 3.0]), 100.0) == np.inf
+
+
+def test_touch_by_starts_from_h_0_where_t_star_leaves_0():
+    """Between the last immediate grid dh and the first delayed one, t* leaves 0 at h_0: the
+    curve interpolates from there, so it never dips below h_0 (the PLA's 1 s curve lay under
+    h_0 at 25 C, at the grid dh below it)."""
+    import critical_dh
+    dh = np.array([0.1, 0.2, 0.3, 0.4])
+    t_star = np.array([0.0, 0.0, 1e6, np.nan])
+    assert critical_dh.touch_by_curve(dh, t_star, 1.0, h0=0.25) == pytest.approx(0.25 + 1e-6 * 0.05, rel=1e-12)
+    assert critical_dh.touch_by_curve(dh, t_star, 1.0) == pytest.approx(0.2 + 1e-6 * 0.1, rel=1e-12)
+    # An h_0 outside the bracket (or NaN) leaves the grid point as it is.
+    assert critical_dh.touch_by_curve(dh, t_star, 1.0, h0=0.15) == pytest.approx(0.2 + 1e-6 * 0.1, rel=1e-12)
 
 
 def test_touch_by_curves_stop_at_the_grid_edge_and_say_so(tmp_path):
@@ -155,3 +169,67 @@ def test_at_takes_a_unit_or_a_bare_number_in_the_scale(physical_map, text, expec
 def test_at_refuses_unit_mistakes(physical_map, text, says):
     with pytest.raises(pm.MapError, match=says):
         pm.parse_at([f"dh={text}"], ds=pm.open_map(physical_map))
+
+
+@pytest.fixture(scope="module")
+def ems_map(tmp_path_factory):
+    """The EMS of the DMA example (materials/dma), fitted at 25 C, on R = 50 um bumps at a
+    150 um pitch, 5 MPa, 20 to 50 C: a material that creeps far (h_inf about 30 h_0)."""
+    folder = tmp_path_factory.mktemp("ems")
+    material, path = folder / "ems.ini", folder / "ems.h5"
+    done = subprocess.run([BINARY, "fit", "--dma", str(REPO / "materials" / "dma" / "nrel_pyvisco_ems_ca.csv"),
+                           "--reference-temperature", "25", "--poisson", "0.35", "-o", str(material)],
+                          capture_output=True, text=True, cwd=folder)
+    assert done.returncode == 0, done.stderr
+    done = subprocess.run([BINARY, "sweep", "--model.material", str(material), "--model.R", "50um",
+                           "--grid.l", "150um", "--grid.dh", "linspace(0.25um, 6um, 24)", "--grid.pressure", "5MPa",
+                           "--grid.temperature", "20, 30, 40, 50", "--grid.s", "2", "--quantities", "regime",
+                           "--quiet", "--output", str(path)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return material, path
+
+
+def test_critical_dh_of_a_far_creeping_material_reads(ems_map, tmp_path):
+    """Issue: on the EMS, h_inf (49 um) stood so far above h_0 (1.5 um) that h_0 and the
+    touch-by curves (2-6 um) were pressed against the bottom of a linear axis; the ^ legend gave
+    the grid's largest dh as "(6)", without its unit; the title did not say the chart runs
+    against temperature. Expected values from h5py and the material file."""
+    import critical_dh
+    import h5py
+
+    material, path = ems_map
+    name = re.search(r"^name = (.*)$", material.read_text(), flags=re.M).group(1).split(",")[0].strip()
+    with h5py.File(path, "r") as f:  # axes l, dh, temperature, pbar, s; lengths in R, pbar in E0*
+        R = f.attrs["R"]
+        R_um = float((R.decode() if isinstance(R, bytes) else str(R)).split()[0])
+        assert (R.decode() if isinstance(R, bytes) else str(R)).split()[1] == "um"
+        dh_top_um = float(f["dh"][-1]) * R_um
+        h0_um, hinf_um = f["h_0"][...] * R_um, f["h_inf"][...] * R_um
+        t_top = f["t_star"][0, -1, :, 0, 0]
+        pbar_kPa = float(f["pbar"][0]) * float(f.attrs["E0_star_Pa"]) / 1e3
+    assert np.nanmax(hinf_um) > 20 * np.nanmin(h0_um)  # the premise: far beyond the factor 10
+    assert np.any(np.nan_to_num(t_top, nan=np.inf) <= 3600)  # ... and an hour touches at the top dh
+
+    out = tmp_path / "chart.png"
+    rc, stdout, err = call(critical_dh, path, "--against", "temperature", "--at", "l=150um", "pbar=5MPa",
+                           "--touch-by", "1,60,3600", "-o", out)
+    assert rc == 0 and out.stat().st_size > 10_000, err
+    assert "extend grid.dh" in err and f"largest dh = {dh_top_um:.6g} um" in err
+    ds = pm.open_map(path)
+    fixed = pm.resolve_at(ds, pm.parse_at(["l=150um", "pbar=5MPa"], ds), free=["T", "s"], optional=("T", "s"),
+                          reserved={"temperature": "the horizontal axis", "dh": "the vertical axis"})
+    fig = critical_dh.render(ds, "temperature", fixed, [1.0, 60.0, 3600.0])
+    ax = fig.axes[0]
+    assert ax.get_yscale() == "log"
+    lo, hi = ax.get_ylim()
+    assert 0 < lo < np.nanmin(h0_um) and hi > np.nanmax(hinf_um) and hi < 2 * np.nanmax(hinf_um)
+    legend = [t.get_text() for t in fig.axes[-1].get_legend().get_texts()]
+    (mark,) = [t for t in legend if "largest" in t]
+    assert f"= {dh_top_um:g} $\\mu$m;" in mark  # "largest $\Delta h$ = 6 $\mu$m; ..."
+    title = fig._suptitle.get_text()
+    assert name and name in title.splitlines()[0] and "against temperature" in title.splitlines()[0]
+    assert f"$\\bar p_0$ = {pbar_kPa:.6g} kPa" in title.splitlines()[1]
+    assert "at $l$ = 150 $\\mu$m" in title.splitlines()[2]
+    # --linear-dh: the old view, from 0 to just above h_inf.
+    fig = critical_dh.render(ds, "temperature", fixed, [1.0, 60.0, 3600.0], scale="linear")
+    assert fig.axes[0].get_yscale() == "linear" and fig.axes[0].get_ylim()[0] == 0
