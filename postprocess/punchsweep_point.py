@@ -57,7 +57,12 @@ def _json_form(result) -> dict:
     for k, v in fields.items():
         if k in ("physical", "units") and not v:
             continue  # the JSON has them only where a physical scale is known
-        if k == "series":
+        if k == "sensitivity":
+            out.update(v)  # the JSON has dt_star_dNAME, dlog_t_star_dlog_NAME at the top
+        elif k == "t_star_range":
+            if v is not None:
+                out["t_star_low"], out["t_star_high"] = v
+        elif k == "series":
             out[k] = listed(v)
         elif k == "physical":
             out[k] = {**v, "series": listed(v["series"])}

@@ -2,12 +2,14 @@
 
 #include <boost/program_options.hpp>
 
+#include <limits>
 #include <ostream>
 
 #include "input/command_options.hpp"
 #include "app/point_output.hpp"
 #include "input/usage_error.hpp"
 #include "model/problem/localization.hpp"
+#include "model/point/advisory.hpp"
 #include "model/point/point_evaluation.hpp"
 
 namespace po = boost::program_options;
@@ -27,6 +29,8 @@ po::options_description point_options(const input::PointMaterial& material) {
   input::add_point_options(opts, material.spec);
   input::add_material_options(opts);
   input::add_localization_option(opts, std::string(model::kDefaultLocalization));
+  input::add_tolerance_option(opts);
+  input::add_cap_options(opts);
   opts.add_options()
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
@@ -38,12 +42,36 @@ po::options_description point_options(const input::PointMaterial& material) {
 namespace {
 
 /// The point's inputs read and checked, in the command's order (the first bad one is the
-/// one reported), with the snapshot times.
-PointRun read_point(const po::variables_map& vm, const input::PointMaterial& material, model::EvaluationOptions* options) {
+/// one reported), with the snapshot times and the tolerances.
+PointRun read_point(const po::variables_map& vm, const input::PointMaterial& material, model::EvaluationOptions* options,
+                    std::vector<model::Tolerance>* tolerances, std::optional<double>* cap_radius) {
   PointRun run{input::read_point_inputs(vm, material), {}};
   run.inputs.problem.localization = input::read_localization(vm);
   options->times = input::read_times(vm, run.inputs.scales);
+  *tolerances = input::read_tolerances(vm, run.inputs);
+  *cap_radius = input::read_cap_radius(vm, run.inputs);
   return run;
+}
+
+/// The point evaluated, with t*'s derivatives, its range over the tolerances and the
+/// physical advisories.
+void evaluate(PointRun& run, const model::EvaluationOptions& options, const std::vector<model::Tolerance>& tolerances,
+              std::optional<double> cap_radius) {
+  const input::PointInputs& in = run.inputs;
+  run.result = model::evaluate_point(in.problem, *in.creep, options);
+  const double t_star = run.result.t_star.value_or(std::numeric_limits<double>::infinity());
+  run.result.t_star_derivatives = model::t_star_derivatives(in.problem, *in.law, in.law_values, t_star);
+  const model::Advisories advice = model::advise(in.problem, run.result, cap_radius);
+  run.result.advisories = advice.names();
+  run.result.advisory_reason = advice.reason(cap_radius.value_or(0.0));
+  run.result.strain = advice.strain;
+  if (!tolerances.empty()) {
+    try {
+      run.result.t_star_range = model::t_star_range(in.problem, *in.law, in.law_values, tolerances);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError(std::string("--tolerance: ") + e.what());
+    }
+  }
 }
 
 }  // namespace
@@ -59,12 +87,14 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
   }
   model::EvaluationOptions options;
-  PointRun run = read_point(vm, material, &options);
+  std::vector<model::Tolerance> tolerances;
+  std::optional<double> cap_radius;
+  PointRun run = read_point(vm, material, &options, &tolerances, &cap_radius);
   const std::string format_text = input::read_choice(vm, "format", {"table", "json", "csv"});
   const OutputFormat format = format_text == "json"  ? OutputFormat::json
                               : format_text == "csv" ? OutputFormat::csv
                                                      : OutputFormat::table;
-  run.result = model::evaluate_point(run.inputs.problem, *run.inputs.creep, options);
+  evaluate(run, options, tolerances, cap_radius);
   write_point(out, format, run.inputs, run.result);
   return 0;
 }
@@ -72,8 +102,11 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
 PointRun evaluate_point(const input::Keywords& keywords) {
   const input::PointMaterial material = input::find_point_material(keywords);
   model::EvaluationOptions options;
-  PointRun run = read_point(input::parse_keywords(keywords, point_options(material), "point"), material, &options);
-  run.result = model::evaluate_point(run.inputs.problem, *run.inputs.creep, options);
+  std::vector<model::Tolerance> tolerances;
+  std::optional<double> cap_radius;
+  PointRun run = read_point(input::parse_keywords(keywords, point_options(material), "point"), material, &options,
+                            &tolerances, &cap_radius);
+  evaluate(run, options, tolerances, cap_radius);
   return run;
 }
 

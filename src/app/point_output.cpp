@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "map/quantities.hpp"
+#include "model/laws/material.hpp"
 
 namespace punchsweep::app {
 namespace {
@@ -25,6 +26,11 @@ std::string json_string(const std::string& text) {
   }
   return quoted + "\"";
 }
+
+/// "dt_star_ddh": d t*/d dh's key; "dlog_t_star_dlog_dh": its elasticity's.
+std::string derivative_name(const model::TStarDerivative& d) { return "dt_star_d" + std::string(d.parameter->name); }
+std::string elasticity_name(const model::TStarDerivative& d) { return "dlog_t_star_dlog_" + std::string(d.parameter->name); }
+bool is_temperature(const model::TStarDerivative& d) { return d.parameter->name == model::temperature_parameter().name; }
 
 bool is_point(const QuantitySpec& q) { return q.source == map::Source::model && q.extent == map::Extent::point; }
 bool is_series(const QuantitySpec& q) { return q.source == map::Source::model && q.extent == map::Extent::series; }
@@ -114,6 +120,17 @@ void visit_point(const model::PointResult& r, std::string_view time_unit, PointF
       fields.number(q.name, q.value(r));
     }
   }
+  fields.text("advisories", r.advisories);
+  fields.text("advisory_reason", r.advisory_reason);
+  fields.number("strain", r.strain);
+  for (const model::TStarDerivative& d : r.t_star_derivatives) {
+    fields.number(derivative_name(d), d.derivative);
+    if (!is_temperature(d)) fields.number(elasticity_name(d), d.elasticity);
+  }
+  if (r.t_star_range) {
+    fields.number("t_star_low", r.t_star_range->low);
+    fields.number("t_star_high", r.t_star_range->high);
+  }
   std::vector<double> column(r.series.size());
   for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
   fields.series("t", column);
@@ -148,6 +165,21 @@ std::vector<PhysicalField> physical_fields(const input::PointInputs& inputs, con
   for (PhysicalField& f : fields) f.values.front() = std::strtod(significant(f.values.front(), 15).c_str(), nullptr);
   for (const QuantitySpec& q : kQuantities) {
     if (is_point(q) && q.kind != map::Kind::flag) add(q.name, q.scale, {q.value(r)}, false);
+  }
+  // d t*/dx in the material's time unit per x's physical unit (s/um, s/Pa; s/K for a
+  // temperature, whose scale is already physical), where the time is physical.
+  if (inputs.time_unit != "T_eps") {
+    for (const model::TStarDerivative& d : r.t_star_derivatives) {
+      if (is_temperature(d)) {
+        fields.push_back({derivative_name(d), {d.derivative}, false, inputs.time_unit + "/K"});
+      } else if (const auto unit = input::physical_unit(d.parameter->scale, scales)) {
+        fields.push_back({derivative_name(d), {d.derivative / unit->per_scaled}, false, inputs.time_unit + "/" + unit->units});
+      }
+    }
+    if (r.t_star_range) {
+      fields.push_back({"t_star_low", {r.t_star_range->low}, false, inputs.time_unit});
+      fields.push_back({"t_star_high", {r.t_star_range->high}, false, inputs.time_unit});
+    }
   }
   std::vector<double> column(r.series.size());
   for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
@@ -219,6 +251,37 @@ void write_table(std::ostream& out, const input::PointInputs& inputs, const mode
       out << (inputs.problem.localization.is_paper() ? "  A1, A2 (frozen)     " : "  A1, A2 at the start ")
           << number(r.radii.A1) << " R, " << number(r.radii.A2) << " R\n";
     }
+  }
+  out << "  strain              " << significant(r.strain, 4) << " (0.2 f'(a) at the largest contact radius)\n";
+  if (!r.advisories.empty()) out << "  advisories          " << r.advisories << ": " << r.advisory_reason << "\n";
+  if (!r.t_star_derivatives.empty()) {
+    out << "  sensitivity of t*:  d t*/dx (x/t* d t*/dx)";
+    bool any = false;
+    for (const model::TStarDerivative& d : r.t_star_derivatives) {
+      if (std::isnan(d.derivative)) continue;
+      any = true;
+      out << "\n    " << d.parameter->name << ": " << significant(d.derivative, 6) << " " << inputs.time_unit << " per "
+          << (d.parameter->scale == "1" ? "1" : std::string(d.parameter->scale));
+      if (!is_temperature(d)) out << " (" << significant(d.elasticity, 4) << ")";
+      if (const auto unit = input::physical_unit(d.parameter->scale, inputs.scales); unit && inputs.time_unit != "T_eps") {
+        out << ": " << significant(d.derivative / unit->per_scaled, 6) << " " << inputs.time_unit << "/" << unit->units;
+      }
+    }
+    out << (any ? "\n" : ": none (t* is not delayed here, or not smooth within the step)\n");
+    // A design on a knife edge says so: the input whose 1% moves t* most, where that is > 10%.
+    const model::TStarDerivative* steepest = nullptr;
+    for (const model::TStarDerivative& d : r.t_star_derivatives) {
+      if (std::isfinite(d.elasticity) && (!steepest || std::abs(d.elasticity) > std::abs(steepest->elasticity))) steepest = &d;
+    }
+    if (steepest && std::abs(steepest->elasticity) > 10.0) {
+      out << "  note: t* is on a knife edge: x/t* d t*/dx = " << significant(steepest->elasticity, 3) << " for "
+          << steepest->parameter->name << " (a 1% change moves t* by far more than 1%); --tolerance gives its range\n";
+    }
+  }
+  if (r.t_star_range) {
+    const auto text = [](double t) { return std::isinf(t) ? std::string("never") : number(t); };
+    out << "  t* over the tolerances: " << text(r.t_star_range->low) << " to " << text(r.t_star_range->high) << " "
+        << inputs.time_unit << "\n";
   }
   // The series' columns: each head with its unit, 12 wide (15 for a long head).
   struct Column {

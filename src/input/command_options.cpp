@@ -1,4 +1,6 @@
 #include "input/command_options.hpp"
+
+#include "model/point/advisory.hpp"
 #include "input/material_file.hpp"
 
 #include <algorithm>
@@ -461,6 +463,117 @@ std::string json_number(double v) {
     if (std::strtod(buf, nullptr) == v) break;
   }
   return buf;
+}
+
+}  // namespace punchsweep::input
+
+namespace punchsweep::input {
+
+void add_tolerance_option(po::options_description& opts) {
+  opts.add_options()(
+      "tolerance", po::value<std::string>()->value_name("NAME=VALUE,..."),
+      "tolerances on the inputs, e.g. 'dh=0.05um, pressure=5%, temperature=1': the point\n"
+      "reports the least and greatest t* over them (t_star_low, t_star_high). VALUE is a\n"
+      "percentage of the input, a number in its scale, or a number with a unit");
+}
+
+std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, const PointInputs& inputs) {
+  std::vector<model::Tolerance> out;
+  if (!vm.count("tolerance")) return out;
+  const std::string all = vm["tolerance"].as<std::string>();
+  const auto bad = [&](const std::string& entry, const std::string& why) {
+    return UsageError("--tolerance '" + entry + "': " + why +
+                      " (valid: NAME=VALUE, NAME one of l, dh, pbar or pressure, C, and the law's T or temperature; "
+                      "VALUE >= 0: a percentage such as 5%, a number in the input's scale, or one with a unit such as "
+                      "0.05um or 200Pa)");
+  };
+  std::size_t start = 0;
+  while (start <= all.size()) {
+    const std::size_t comma = std::min(all.find(',', start), all.size());
+    std::string entry = all.substr(start, comma - start);
+    start = comma + 1;
+    entry.erase(0, entry.find_first_not_of(" \t"));
+    entry.erase(entry.find_last_not_of(" \t") + 1);
+    if (entry.empty()) {
+      if (comma == all.size()) break;
+      continue;
+    }
+    const auto eq = entry.find('=');
+    if (eq == std::string::npos) throw bad(entry, "no '='");
+    std::string name = entry.substr(0, eq), text = entry.substr(eq + 1);
+    name.erase(name.find_last_not_of(" \t") + 1);
+    text.erase(0, text.find_first_not_of(" \t"));
+    if (name == "pressure") name = std::string(model::kPressure);
+    const model::Parameter* parameter = nullptr;
+    double value = 0.0;
+    for (const auto& [p, v] : inputs.values) {
+      if (p->name == name && !p->integer) {
+        parameter = p;
+        value = v;
+      }
+    }
+    if (parameter == nullptr) throw bad(entry, "'" + name + "' is no real-valued input of this point");
+    double tol = 0.0;
+    try {
+      if (!text.empty() && text.back() == '%') {
+        tol = std::abs(value) * parse_real(text.substr(0, text.size() - 1), "--tolerance") / 100.0;
+      } else if (parameter->name == model::temperature_parameter().name) {
+        const std::string unit = text.substr(std::min(text.find_first_not_of("0123456789.eE+-"), text.size()));
+        if (!(unit.empty() || unit == "K" || unit == "degC" || unit == "C")) throw UsageError("not a temperature difference");
+        tol = parse_real(text.substr(0, text.size() - unit.size()), "--tolerance");
+      } else if (const std::optional<Scale> scale = scale_of(parameter->scale, inputs.scales)) {
+        tol = read_scaled(text, *scale);
+      } else {
+        tol = parse_real(text, "--tolerance");
+      }
+    } catch (const UsageError& e) {
+      throw bad(entry, e.what());
+    } catch (const std::invalid_argument& e) {
+      throw bad(entry, e.what());
+    }
+    if (!(std::isfinite(tol) && tol >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
+    out.push_back({parameter, tol, tol});
+  }
+  return out;
+}
+
+}  // namespace punchsweep::input
+
+namespace punchsweep::input {
+
+void add_cap_options(po::options_description& opts) {
+  opts.add_options()
+      ("cap-radius", po::value<std::string>()->value_name("B"),
+       "the base radius of the spherical caps the punches are, in R or with a unit (30um):\n"
+       "the point is advised 'beyond_cap' where a contact spot outgrows it")
+      ("cap-height", po::value<std::string>()->value_name("H"),
+       "or the caps' height (s = 2, C = 0.5): base radius sqrt(H (2R - H))");
+}
+
+std::optional<double> read_cap_radius(const po::variables_map& vm, const PointInputs& inputs) {
+  if (vm.count("cap-radius") && vm.count("cap-height")) throw UsageError("give --cap-radius or --cap-height, not both");
+  for (const char* name : {"cap-radius", "cap-height"}) {
+    if (!vm.count(name)) continue;
+    const std::string text = vm[name].as<std::string>();
+    const std::string option = std::string("--") + name;
+    double v = 0.0;
+    try {
+      v = read_scaled(text, *scale_of("R", inputs.scales));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(option + " = '" + text + "': " + e.what());
+    }
+    const bool height = std::string(name) == "cap-height";
+    if (!(std::isfinite(v) && v > 0.0 && (!height || v <= 1.0))) {
+      throw UsageError(option + " = " + text + " is outside its range: " +
+                       (height ? "0 < H <= R (a hemisphere at most)" : "B > 0"));
+    }
+    if (height && !(inputs.problem.shape.s == 2 && inputs.problem.shape.C == 0.5)) {
+      throw UsageError(option + ": a cap's height gives its base radius only for a sphere (s = 2, C = 0.5); give "
+                       "--cap-radius");
+    }
+    return height ? model::cap_base_radius(v) : v;
+  }
+  return std::nullopt;
 }
 
 }  // namespace punchsweep::input

@@ -12,6 +12,7 @@
 #include "model/problem/contact_problem.hpp"
 #include "model/laws/material.hpp"
 #include "model/laws/creep_laws.hpp"
+#include "model/point/sensitivity.hpp"
 #include "model/point/parameters.hpp"
 #include "model/problem/shape.hpp"
 #include "model/numerics/units.hpp"
@@ -167,6 +168,20 @@ std::vector<double> read_times(const boost::program_options::variables_map& vm, 
 /// A list option whose values must each satisfy `in_range` (described by `range`).
 std::vector<double> read_real_list(const boost::program_options::variables_map& vm, const char* name,
                                    const char* range, const std::function<bool(double)>& in_range);
+
+/// --tolerance "NAME=VALUE, ...": symmetric tolerances on real-valued parameters of the
+/// point (l, dh, pbar or pressure, C, T, temperature), each VALUE a percentage of the
+/// parameter's value (5%), a number in its scale, or a number with a unit where the scale
+/// is known (0.05um, 200Pa; a temperature in K or degC, a difference). Empty without the
+/// option. Throws UsageError naming the entry and what is valid.
+void add_tolerance_option(boost::program_options::options_description& opts);
+std::vector<model::Tolerance> read_tolerances(const boost::program_options::variables_map& vm, const PointInputs& inputs);
+
+/// --cap-radius B or --cap-height H: the base radius of the spherical caps the punches are
+/// (a length in R, or with a unit where R is given; from the height, B = sqrt(H (2 - H)) in
+/// R, for s = 2, C = 0.5 only). nullopt without either. Throws UsageError naming the option.
+void add_cap_options(boost::program_options::options_description& opts);
+std::optional<double> read_cap_radius(const boost::program_options::variables_map& vm, const PointInputs& inputs);
 
 /// --format, one of `allowed`.
 std::string read_choice(const boost::program_options::variables_map& vm, const char* name,

@@ -23,7 +23,8 @@ namespace punchsweep::map {
 enum class Quantities { regime, full };
 
 enum class Kind { flag, real };       ///< int8 code, or float64
-enum class Extent { point, series };  ///< over the grid, or over the grid and the times
+/// Over the grid; over the grid, stored in full mode only; or over the grid and the times.
+enum class Extent { point, point_full, series };
 /// The localization model, the periodic BEM reference, or the answer merged from both (the
 /// BEM's where it ran, else the model's where it is valid; TileEvaluator fills it).
 enum class Source { model, bem, answer };
@@ -77,6 +78,9 @@ inline double t_star(const model::PointSummary& s) { return s.t_star.value_or(kN
 inline double h_0(const model::PointSummary& s) { return s.h_0; }
 inline double h_inf(const model::PointSummary& s) { return s.h_inf; }
 inline double a1_inf(const model::PointSummary& s) { return s.a1_inf; }
+inline double dt_star_ddh(const model::PointSummary& s) { return s.dt_star_ddh; }
+inline double dt_star_dpbar(const model::PointSummary& s) { return s.dt_star_dpbar; }
+inline double dt_star_dl(const model::PointSummary& s) { return s.dt_star_dl; }
 inline double a2_inf(const model::PointSummary& s) { return s.a2_inf; }
 inline double area_fraction_inf(const model::PointSummary& s) { return s.area_fraction_inf; }
 inline double a1(const model::Snapshot& s) { return s.a1; }
@@ -93,7 +97,7 @@ inline double residual(const model::PointSummary& s) { return s.solver.residual;
 
 /// The quantities in the order the map creates its variables, the journal stores a tile's
 /// chunks and the point command prints them.
-inline constexpr std::array<QuantitySpec, 26> kQuantities{{
+inline constexpr std::array<QuantitySpec, 29> kQuantities{{
     {"regime", Kind::flag, Extent::point, Source::model, Flags::regime, "", "contact regime of the level-2 punches",
      "immediate: level 2 touches by the end of the load's rise (at once for a step load); delayed: later, while "
      "the load is held; never: not at all", quantity_access::regime},
@@ -114,6 +118,14 @@ inline constexpr std::array<QuantitySpec, 26> kQuantities{{
      "long-term contact radius of a level-2 punch", "", nullptr, quantity_access::a2_inf},
     {"area_fraction_inf", Kind::real, Extent::point, Source::model, Flags::none, "1",
      "long-term contact area fraction", "", nullptr, quantity_access::area_fraction_inf},
+    {"dt_star_ddh", Kind::real, Extent::point_full, Source::model, Flags::none, "T_eps/R",
+     "rate of change of t* with the height difference",
+     "Richardson-extrapolated central difference of the model's t* (docs/model.md, Sensitivity); NaN where t* is "
+     "not delayed or not smooth within the step", nullptr, quantity_access::dt_star_ddh},
+    {"dt_star_dpbar", Kind::real, Extent::point_full, Source::model, Flags::none, "T_eps/(E0/(1-nu^2))",
+     "rate of change of t* with the nominal pressure", "as dt_star_ddh", nullptr, quantity_access::dt_star_dpbar},
+    {"dt_star_dl", Kind::real, Extent::point_full, Source::model, Flags::none, "T_eps/R",
+     "rate of change of t* with the lattice pitch", "as dt_star_ddh", nullptr, quantity_access::dt_star_dl},
     {"a1", Kind::real, Extent::series, Source::model, Flags::none, "R", "contact radius of a level-1 punch", "",
      nullptr, nullptr, quantity_access::a1},
     {"a2", Kind::real, Extent::series, Source::model, Flags::none, "R", "contact radius of a level-2 punch", "",
@@ -189,7 +201,7 @@ constexpr std::size_t quantity(std::string_view name) {
 /// Whether a map of `quantities`, with or without a BEM reference, stores quantity `q`.
 constexpr bool is_stored(const QuantitySpec& q, Quantities quantities, bool bem) {
   if (q.source == Source::bem || q.source == Source::answer) return bem;
-  return q.extent == Extent::point || quantities == Quantities::full;
+  return q.extent == Extent::point || quantities == Quantities::full;  // point_full and series: full only
 }
 
 }  // namespace punchsweep::map

@@ -15,12 +15,14 @@ namespace {
 
 // Stores the per-point quantities of `source` that `summary` gives, at point i. Unrolled
 // over kQuantities at compile time, so each is a direct (inlined) read of the result.
-template <map::Source source, std::size_t... Q>
+// In full mode (`full`) also those stored only there (Extent::point_full).
+template <map::Source source, bool full = false, std::size_t... Q>
 void store_point(const model::PointSummary& summary, std::size_t i, map::TileData* out,
                  std::index_sequence<Q...>) {
   const auto one = [&]<std::size_t q>() {
     constexpr map::QuantitySpec spec = map::kQuantities[q];
-    if constexpr (spec.source == source && spec.extent == map::Extent::point) {
+    if constexpr (spec.source == source &&
+                  (spec.extent == map::Extent::point || (full && spec.extent == map::Extent::point_full))) {
       if constexpr (spec.kind == map::Kind::flag) {
         out->codes[q][i] = spec.code(summary);
       } else {
@@ -129,8 +131,12 @@ class TileSink final : public BatchSink {
   void take(const BatchPoint& p) override {
     const std::size_t i = index_[p.k];
     if (full_ != nullptr) {
-      const model::PointResult r = model::evaluate_point(p.problem, p.creep, *full_, p.summary, p.parts.branch.get());
-      store_point<map::Source::model>(r, i, out_, kAll);  // a series solve may flag the point
+      model::PointResult r = model::evaluate_point(p.problem, p.creep, *full_, p.summary, p.parts.branch.get());
+      const double t_star = r.t_star.value_or(std::numeric_limits<double>::infinity());
+      r.dt_star_ddh = model::t_star_derivative(p.problem, p.creep, model::kHeightDifference, t_star).derivative;
+      r.dt_star_dpbar = model::t_star_derivative(p.problem, p.creep, model::kPressure, t_star).derivative;
+      r.dt_star_dl = model::t_star_derivative(p.problem, p.creep, model::kPitch, t_star).derivative;
+      store_point<map::Source::model, true>(r, i, out_, kAll);  // a series solve may flag the point
       store_series<map::Source::model>(r.series, i, out_, kAll);
     } else {
       store_point<map::Source::model>(p.summary, i, out_, kAll);

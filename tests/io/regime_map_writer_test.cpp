@@ -33,6 +33,7 @@ using testing::ScratchDir;
 // In map::kQuantities order, which is also the point command's key order.
 const std::vector<std::string> kAxisVariables{"regime", "t_star", "h_0",    "h_inf",
                                               "valid",  "a1_inf", "a2_inf", "area_fraction_inf"};
+const std::vector<std::string> kFullPointVariables{"dt_star_ddh", "dt_star_dpbar", "dt_star_dl"};  // full mode only
 const std::vector<std::string> kSeriesVariables{"a1", "a2", "P1", "P2", "area_fraction"};
 const std::vector<std::string> kCoordinates{"l", "dh", "T", "pbar", "s", "time"};
 const std::vector<std::string> kFloatVariables{
@@ -546,6 +547,7 @@ TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
   ASSERT_GE(H5Literate(file, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect_link, &names), 0);
   std::vector<std::string> expected = kCoordinates;
   expected.insert(expected.end(), kAxisVariables.begin(), kAxisVariables.end());
+  expected.insert(expected.end(), kFullPointVariables.begin(), kFullPointVariables.end());
   expected.insert(expected.end(), kSeriesVariables.begin(), kSeriesVariables.end());
   EXPECT_EQ(names, expected);
 

@@ -103,12 +103,12 @@ std::vector<std::byte> expected_chunk(const MapLayout& layout, const map::TileBo
 }
 
 TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
-  // (quantities, BEM reference, chunks per tile): the model's 8 + 5 series, the reference's 5 + 5
-  // and the merged answer's 3.
+  // (quantities, BEM reference, chunks per tile): the model's 8, in full mode also its 3
+  // rates of t* and 5 series; the reference's 5 + 5 and the merged answer's 3.
   for (const auto& [quantities, bem, chunks] : {std::tuple{map::Quantities::regime, false, 8U},
-                                                std::tuple{map::Quantities::full, false, 13U},
+                                                std::tuple{map::Quantities::full, false, 16U},
                                                 std::tuple{map::Quantities::regime, true, 21U},
-                                                std::tuple{map::Quantities::full, true, 26U}}) {
+                                                std::tuple{map::Quantities::full, true, 29U}}) {
     const MapLayout layout = test_layout(quantities, bem);
     TileEncoder encoder(layout);
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -124,7 +124,7 @@ TEST(TileEncoder, encoded_chunks_decode_to_the_tile_padded_with_fill_values) {
       ASSERT_EQ(stored.size(), chunks);
       for (std::size_t v = 0; v < encoded.chunks.size(); ++v) {
         const map::QuantitySpec& spec = map::kQuantities[stored[v]];
-        EXPECT_EQ(spec.source != map::Source::model, v >= (layout.full() ? 13U : 8U)) << spec.name;
+        EXPECT_EQ(spec.source != map::Source::model, v >= (layout.full() ? 16U : 8U)) << spec.name;
         const bool codes = spec.kind == map::Kind::flag;
         const std::size_t element = codes ? 1 : sizeof(double);
         const std::size_t inner = spec.extent == map::Extent::series ? layout.times.size() : 1;

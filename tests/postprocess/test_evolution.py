@@ -26,6 +26,10 @@ def paper_points():
 
 def test_json_contract_keys_and_types():
     keys = {"regime", "t_star", "h_0", "h_inf", "valid", "reason", "a1_inf", "a2_inf", "area_fraction_inf", "series"}
+    # t*'s sensitivity along each real-valued input of the standard linear solid's point.
+    keys |= {f"dt_star_d{x}" for x in ("l", "dh", "pbar", "C", "T")}
+    keys |= {f"dlog_t_star_dlog_{x}" for x in ("l", "dh", "pbar", "C", "T")}
+    keys |= {"advisories", "advisory_reason", "strain"}  # physical advisories (docs/model.md, 16)
     periodic = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2)  # the default names its model
     assert set(periodic) == keys | {"localization"} and periodic["localization"] == "periodic"
     refined = run_point(BINARY, 0.75, 0.075, 2.5, 0.06, 2, localization="refined")

@@ -77,11 +77,15 @@ def test_point_equals_the_cli_json_bit_for_bit(kw):
                 else:
                     assert same_bits(got.physical[name], v), name
         elif isinstance(value, float) or value is None:
-            g = getattr(got, key)
+            # The sensitivity keys (dt_star_dNAME, dlog_t_star_dlog_NAME) are in .sensitivity,
+            # t_star_low/high in .t_star_range.
+            sensitive = key.startswith(("dt_star_d", "dlog_t_star_dlog_"))
+            g = got.sensitivity[key] if sensitive else getattr(got, key)
             assert (g is None and value is None) or (g is not None and same_bits(g, value)), key
         else:
             assert getattr(got, key) == value, key
     assert got.localization == expected.get("localization", "paper")
+    assert set(got.sensitivity) == {k for k in expected if k.startswith(("dt_star_d", "dlog_t_star_dlog_"))}
 
 
 def test_reference_equals_the_cli_json_bit_for_bit():

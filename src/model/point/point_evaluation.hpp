@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@
 #include "model/two_level/regime.hpp"
 #include "model/two_level/two_level_branch.hpp"
 #include "model/two_level/two_level.hpp"
+#include "model/point/sensitivity.hpp"
 #include "model/point/validity.hpp"
 
 namespace punchsweep::model {
@@ -66,6 +68,12 @@ struct PointSummary {
   double a1_inf = 0.0;           ///< long-term radii and area fraction (J = J(inf))
   double a2_inf = 0.0;
   double area_fraction_inf = 0.0;
+  /// d t*/d dh, d t*/d pbar and d t*/d l (sensitivity.hpp), in T_eps per R, per E0*, per R:
+  /// set by a map's full mode (t_star_derivatives_of); NaN otherwise, and where t* is not
+  /// delayed or not smooth within the difference's step.
+  double dt_star_ddh = std::numeric_limits<double>::quiet_NaN();
+  double dt_star_dpbar = std::numeric_limits<double>::quiet_NaN();
+  double dt_star_dl = std::numeric_limits<double>::quiet_NaN();
 
   /// Start of the two-level phase (t_start = t*, or 0 when immediate).
   double t_start = 0.0;
@@ -93,6 +101,17 @@ struct PointSummary {
 struct PointResult : PointSummary {
   std::vector<Snapshot> series;  ///< one per requested time, in the order requested
   int history_samples = 0;       ///< two-level solves spent on the load history
+  /// d t*/dx along each real-valued parameter (sensitivity.hpp), where asked for (the point
+  /// command and Python's point fill it; a map's full mode stores dh's, pbar's and the
+  /// law's); empty otherwise.
+  std::vector<TStarDerivative> t_star_derivatives;
+  /// The least and greatest t* over the tolerances given, where given.
+  std::optional<TStarRange> t_star_range;
+  /// Physical advisories (advisory.hpp), where asked for (the point command, Python's
+  /// point): their names ("" for none), the sentence, and the representative strain.
+  std::string advisories;
+  std::string advisory_reason;
+  double strain = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The ingredients of a summary that depend on fewer coordinates than the point; a sweep

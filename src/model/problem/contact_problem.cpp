@@ -13,4 +13,12 @@ std::string problem_error(const ContactProblem& problem) {
   return shape_error(problem.shape);
 }
 
+double* problem_field(ContactProblem& problem, std::string_view name) {
+  if (name == kPitch) return &problem.l;
+  if (name == kHeightDifference) return &problem.dh;
+  if (name == kPressure) return &problem.pbar0;
+  if (name == kShapeConstant) return &problem.shape.C;
+  return nullptr;
+}
+
 }  // namespace punchsweep::model

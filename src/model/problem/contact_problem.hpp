@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "model/problem/load_shape.hpp"
 #include "model/problem/localization.hpp"
@@ -24,5 +25,9 @@ struct ContactProblem {
 /// Empty when every field is in range, else one sentence naming the first bad field,
 /// its value and its valid range.
 std::string problem_error(const ContactProblem& problem);
+
+/// The real-valued field of `problem` that parameter `name` sets (l, dh, pbar, C), or
+/// nullptr (s, an integer, and names that are not the problem's).
+double* problem_field(ContactProblem& problem, std::string_view name);
 
 }  // namespace punchsweep::model

@@ -83,7 +83,16 @@ class PointResult:
     computed). Numbers the engine could not compute are None, as the JSON's null.
     physical and units: where R (R="50um") or a material gives the scales, the JSON's
     "physical" fields (R, l, dh, E0_star, pressure, t_star, h_0, ..., and the series in
-    physical["series"]) and each one's UDUNITS-2 unit string; empty otherwise."""
+    physical["series"]) and each one's UDUNITS-2 unit string; empty otherwise.
+    sensitivity: d t*/dx along each real-valued input as the JSON names them (dt_star_ddh,
+    dt_star_dpbar, dt_star_dl, dt_star_dC, dt_star_dT or dt_star_dtemperature, in the time
+    unit per the input's scale; physical[...] has them per um, Pa, K) and the elasticities
+    dlog_t_star_dlog_NAME; None where t* is not delayed or not smooth there. t_star_range:
+    (least, greatest) t* over point(tolerance="dh=0.05um, pressure=5%"), else None.
+    advisories: the physical advisories raised, "beyond_paraboloid, beyond_cap,
+    large_strain" or a part ("" for none; cap_radius="30um" or cap_height=... enables
+    beyond_cap), advisory_reason their sentence, strain Tabor's 0.2 f'(a) at the largest
+    contact radius (docs/model.md, section 16)."""
     regime: str
     t_star: float | None
     h_0: float | None
@@ -98,7 +107,11 @@ class PointResult:
     time_unit: str
     physical: dict = field(default_factory=dict)
     units: dict = field(default_factory=dict)
-
+    sensitivity: dict = field(default_factory=dict)
+    t_star_range: tuple | None = None
+    advisories: str = ""
+    advisory_reason: str = ""
+    strain: float | None = None
 
 
 @dataclass(frozen=True)
@@ -135,10 +148,15 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     C = 0.5, times 0, 0.5, 1, 2, 5, the periodic model); a material file's own
     parameters go in **options. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)  # a path or a Material
+    if isinstance(options.get("tolerance"), Mapping):  # {"dh": "0.05um", "pressure": "5%"}
+        options["tolerance"] = ", ".join(f"{k}={_option_text(v)}" for k, v in options["tolerance"].items())
     keywords = _keywords(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp,
                               load_table=load_table, localization=localization, **options))
-    return _result(PointResult, _core.point(keywords))
+    raw = _core.point(keywords)
+    sensitivity = {k: raw[k] for k in raw if k.startswith(("dt_star_d", "dlog_t_star_dlog_"))}
+    bounds = (raw["t_star_low"], raw["t_star_high"]) if "t_star_low" in raw else None
+    return _result(PointResult, {**raw, "sensitivity": sensitivity, "t_star_range": bounds})
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
@@ -403,14 +421,21 @@ def _decoded_flags(variable, meanings: list[str], codes: list[int]):
 def _physical_scales(attrs) -> dict:
     """One unit of each scale the map knows, in physical units: R (attribute R, '50 um') in
     its unit, E0/(1-nu^2) (E0_star_Pa) in Pa, R^2 E0/(1-nu^2) in N, T_eps in the material's
-    time unit (times already are)."""
+    time unit (times already are); and the rates of t* (dt_star_ddh, ...) in that time unit
+    per R's unit and per Pa."""
     scales = {}
+    time = attrs.get("time_unit", "T_eps")
+    time = time.decode() if isinstance(time, bytes) else str(time)
     if "E0_star_Pa" in attrs:
         scales["E0/(1-nu^2)"] = (float(attrs["E0_star_Pa"]), "Pa")
+        if time != "T_eps":
+            scales["T_eps/(E0/(1-nu^2))"] = (1.0 / float(attrs["E0_star_Pa"]), f"{time}/Pa")
     if "R" in attrs:
         R = attrs["R"]
         number, unit = (R.decode() if isinstance(R, bytes) else str(R)).split()
         scales["R"] = (float(number), unit)
+        if time != "T_eps":
+            scales["T_eps/R"] = (1.0 / float(number), f"{time}/{unit}")
         if "E0_star_Pa" in attrs:
             scales["R^2 E0/(1-nu^2)"] = (float(attrs["R_m"]) ** 2 * float(attrs["E0_star_Pa"]), "N")
     return scales

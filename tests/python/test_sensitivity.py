@@ -1,0 +1,168 @@
+"""Sensitivity of t* (issue 25; docs/model.md, "Sensitivity"): the derivatives `point`
+reports (dt_star_ddh, dt_star_dpbar, ...), a map's full mode stores and Python returns,
+checked against finite differences of the engine's own t* taken here at random points with
+another step, against the closed form of a time-shifted law's temperature derivative, and
+the t* range over tolerances against the engine's t* at the box's corners."""
+from __future__ import annotations
+
+import json
+import math
+import os
+import subprocess
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+SILICONE = REPO / "materials" / "silicone_elite_double32.ini"
+
+# A Prony material with WLF (T_ref 23 C), written here.
+C1, C2, T_REF = 9.0, 120.0, 23.0
+WLF_MATERIAL = f"""[material]
+name = a known material with WLF
+law = prony
+modulus_unit = MPa
+time_unit = s
+poisson = 0.5
+E_inf = 1
+E_i = 4, 3, 2, 1.5, 1
+tau_i = 1e-5, 1e-3, 0.1, 3, 100
+[shift]
+kind = wlf
+C1 = {C1}
+C2 = {C2}
+T_ref = {T_REF}
+"""
+
+
+def central(f, x, rel=1e-5):
+    """The central difference of f at x with step rel |x|, or None where f is not finite at
+    both ends."""
+    h = rel * abs(x)
+    up, down = f(x + h), f(x - h)
+    if up is None or down is None or not (math.isfinite(up) and math.isfinite(down)) or up <= 0 or down <= 0:
+        return None
+    return (up - down) / (2 * h)
+
+
+def random_sls_points(n, seed):
+    """Delayed points of the standard linear solid, drawn at random (periodic model)."""
+    rng = np.random.default_rng(seed)
+    out = []
+    while len(out) < n:
+        p = dict(l=rng.uniform(0.6, 2.0), T=rng.uniform(1.5, 10.0), pbar=10 ** rng.uniform(-2.3, -1.0), s=2)
+        r0 = punchsweep.point(dh=1e-6, **p)  # h_0 and h_inf do not depend on dh
+        if not (r0.h_inf > r0.h_0 > 0):
+            continue
+        p["dh"] = r0.h_0 + rng.uniform(0.1, 0.9) * (r0.h_inf - r0.h_0)
+        if punchsweep.point(**p).regime == "delayed":
+            out.append(p)
+    return out
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_derivatives_match_finite_differences_at_random_points(seed):
+    for p in random_sls_points(4, seed):
+        r = punchsweep.point(**p)
+        for name in ("l", "dh", "pbar", "T"):
+            fd = central(lambda v: punchsweep.point(**{**p, name: v}).t_star, p[name])
+            assert fd is not None
+            got = r.sensitivity[f"dt_star_d{name}"]
+            assert got == pytest.approx(fd, rel=1e-4, abs=1e-9 * r.t_star / p[name]), (p, name, got, fd)
+            assert r.sensitivity[f"dlog_t_star_dlog_{name}"] == pytest.approx(got * p[name] / r.t_star, rel=1e-12)
+
+
+def test_physical_derivatives_on_a_material_with_units():
+    """The silicone on R = 50 um caps: per um and per Pa, against differences in those units."""
+    p = dict(material=SILICONE, R="50um", l="150um", s=2)
+    r = punchsweep.point(dh="2um", pressure="2kPa", **p)
+    assert r.regime == "delayed"
+    assert r.units["dt_star_ddh"] == "s/um" and r.units["dt_star_dpbar"] == "s/Pa"
+    fd_dh = central(lambda v: punchsweep.point(dh=f"{v!r}um", pressure="2kPa", **p).t_star, 2.0)
+    fd_p = central(lambda v: punchsweep.point(dh="2um", pressure=f"{v!r}Pa", **p).t_star, 2000.0)
+    assert r.physical["dt_star_ddh"] == pytest.approx(fd_dh, rel=1e-4)
+    assert r.physical["dt_star_dpbar"] == pytest.approx(fd_p, rel=1e-4)
+    # The knife edge the issue met: 1% of dh moves t* by about 116%.
+    assert r.sensitivity["dlog_t_star_dlog_dh"] > 50
+
+
+def test_temperature_derivative_is_the_shift_laws(tmp_path):
+    """Under a step load a time shift scales t*: t*(T) = a_T(T) t*(T_ref), so
+    d t*/dT = t* ln(10) d log10 a_T/dT = -t* ln(10) C1 C2 / (C2 + T - T_ref)^2."""
+    path = tmp_path / "wlf.ini"
+    path.write_text(WLF_MATERIAL)
+    for T in (10.0, 23.0, 41.5):
+        r = punchsweep.point(material=path, R="50um", l="150um", dh="20um", pressure="100kPa", s=2, temperature=T)
+        assert r.regime == "delayed"
+        expected = -r.t_star * math.log(10) * C1 * C2 / (C2 + T - T_REF) ** 2
+        assert r.sensitivity["dt_star_dtemperature"] == pytest.approx(expected, rel=1e-6)
+        assert "dlog_t_star_dlog_temperature" not in r.sensitivity  # a Celsius zero is arbitrary
+        assert r.units["dt_star_dtemperature"] == "s/K"
+
+
+def test_not_delayed_points_have_no_derivative():
+    r = punchsweep.point(l=0.75, dh=0.01, T=2.5, pbar=0.06, s=2)
+    assert r.regime == "immediate"
+    assert all(v is None for v in r.sensitivity.values())
+
+
+def test_a_full_map_stores_the_points_derivatives(tmp_path):
+    out = tmp_path / "full.h5"
+    subprocess.run([BINARY, "sweep", "--grid.l", "0.75,1.2", "--grid.dh", "0.05,0.075", "--grid.T", "2.5",
+                    "--grid.pbar", "0.04,0.06", "--grid.s", "2", "--output.quantities", "full", "--output", out,
+                    "--quiet"], check=True)
+    with h5py.File(out) as f:
+        axes = {k: f[k][...] for k in ("l", "dh", "T", "pbar", "s")}
+        values = {k: f[k][...] for k in ("t_star", "dt_star_ddh", "dt_star_dpbar", "dt_star_dl")}
+        assert f["dt_star_ddh"].attrs["scaled_by"] in (b"T_eps/R", "T_eps/R")
+    checked = 0
+    for index in np.ndindex(values["t_star"].shape):
+        p = {k: float(axes[k][i]) for k, i in zip(("l", "dh", "T", "pbar", "s"), index)}
+        r = punchsweep.point(localization="periodic", **{**p, "s": int(p["s"])})
+        for name in ("dh", "pbar", "l"):
+            stored = values[f"dt_star_d{name}"][index]
+            if r.sensitivity[f"dt_star_d{name}"] is None:
+                assert math.isnan(stored)
+            else:
+                assert stored == r.sensitivity[f"dt_star_d{name}"]
+                checked += 1
+    assert checked >= 6
+    # A regime-only map has none of them.
+    subprocess.run([BINARY, "sweep", "--grid.l", "0.75", "--grid.dh", "0.05", "--grid.T", "2.5", "--grid.pbar",
+                    "0.04", "--grid.s", "2", "--output.quantities", "regime", "--output", tmp_path / "regime.h5",
+                    "--quiet"], check=True)
+    with h5py.File(tmp_path / "regime.h5") as f:
+        assert "dt_star_ddh" not in f
+
+
+def test_the_range_over_tolerances_is_the_corners_extremes():
+    p = dict(material=SILICONE, R="50um", l="150um", s=2)
+    r = punchsweep.point(dh="2um", pressure="2kPa", tolerance={"dh": "0.002um", "pressure": "0.5%"}, **p)
+    corners = [punchsweep.point(dh=f"{d!r}um", pressure=f"{q!r}Pa", **p).t_star
+               for d in (2.0 - 0.002, 2.0 + 0.002) for q in (2000 * 0.995, 2000 * 1.005)]
+    # The engine steps in R and E0*, the corners here in um and Pa: equal to rounding.
+    assert r.t_star_range == pytest.approx((min(corners), max(corners)), rel=1e-12)
+    assert r.t_star_range[0] < r.t_star < r.t_star_range[1]
+    # Wider: some corner never touches (the knife edge): the upper end is None (never).
+    wide = punchsweep.point(dh="2um", pressure="2kPa", tolerance="dh=0.05um, pressure=5%", **p)
+    assert wide.t_star_range[1] is None and wide.t_star_range[0] < r.t_star
+
+
+@pytest.mark.parametrize("tolerance, message", [
+    ("s=1", "'s' is no real-valued input"),
+    ("dh", "no '='"),
+    ("dh=-1um", "not a number >= 0"),
+    ("dh=2kPa", "is a pressure, not a length"),
+    ("dh=2um,dh=abc", "'abc'"),
+    ("pressure=200%", "outside its range"),
+])
+def test_bad_tolerances_are_refused(tolerance, message):
+    r = subprocess.run([BINARY, "point", "--material", SILICONE, "--R", "50um", "--l", "150um", "--dh", "2um",
+                        "--pressure", "2kPa", "--s", "2", "--tolerance", tolerance], capture_output=True, text=True)
+    assert r.returncode == 2 and message in r.stderr, r.stderr
+    assert "--tolerance" in r.stderr and r.stdout == ""
