@@ -61,7 +61,7 @@ po::options_description fit_options() {
        "with the smallest BIC is kept")
       ("smoothing", po::value<std::string>()->default_value("0")->value_name("LAMBDA"),
        "weight of a penalty on second differences of neighbouring E_i (>= 0; try 1e-3 to\n"
-       "1e-1 for noisy data)")
+       "1e-2 for noisy data)")
       ("isotherm-gap", po::value<std::string>()->default_value("1")->value_name("K"),
        "readings whose temperatures (sorted) lie within this many K of the previous one\n"
        "form one isotherm (instruments log each reading's measured temperature)")

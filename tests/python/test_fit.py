@@ -247,3 +247,49 @@ def test_the_published_data_set_is_fitted_and_its_quality_reported(tmp_path):
                            "-o", picture], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert picture.stat().st_size > 50_000
+
+
+def test_a_relaxation_test_at_three_temperatures(tmp_path):
+    """E(t) = E_inf + sum E_i exp(-t a_T / tau_i) read at 3 temperatures, 1e-2 to 1e3 s,
+    in minutes and kPa: the terms inside the readings' span and the law come back."""
+    rows = ["temperature [K],time [min],modulus [kPa]"]
+    for T in (10.0, 23.0, 40.0):
+        aT = 10 ** log10_aT(T)
+        for t in np.logspace(-2, 3, 21):
+            E = E_INF + (E_I * np.exp(-t / aT / TAU)).sum()
+            rows.append(f"{T + 273.15!r},{t / 60!r},{E / 1e3!r}")
+    (tmp_path / "relax.csv").write_text("\n".join(rows) + "\n")
+    r = cli("fit", "--relaxation", tmp_path / "relax.csv", "--reference-temperature", "23C", "--poisson", "0.5",
+            "-o", tmp_path / "m.ini")
+    assert r.returncode == 0, r.stderr
+    d = json.loads((tmp_path / "m.fit.json").read_text())
+    assert d["kind"] == "relaxation" and len(d["readings"]["modulus"]) == 63
+    assert d["prony"]["rms_relative"]["modulus"] < 1e-3
+    assert np.max(np.abs(np.asarray(d["shift"]["law_log10_aT"]) - log10_aT(d["shift"]["temperatures"]))) < 0.02
+    assert abs(d["prony"]["E_inf"] / E_INF - 1) < 0.01
+    # Given to --dma instead, it is refused by name.
+    wrong = cli("fit", "--dma", tmp_path / "relax.csv", "--poisson", "0.5", "-o", tmp_path / "x.ini")
+    assert wrong.returncode == 2 and "give them to --relaxation" in wrong.stderr
+
+
+def test_smoothing_evens_the_spectrum_of_noisy_data(fitted, tmp_path):
+    """On the grid (no refinement) a penalty on second differences of the E_i makes the
+    spectrum smoother (sum of squared second differences of the log-grid weights) at little
+    cost in the fit (RMS within twice the noise)."""
+    tmp, _ = fitted
+    common = dict(reference_temperature=23, poisson=0.5, refine=False, terms_per_decade=[3])
+    rough = punchsweep.fit_material(tmp / "data.csv", **common)
+    smooth = punchsweep.fit_material(tmp / "data.csv", smoothing=0.01, **common)
+
+    def roughness(prony):
+        # The weights on the full grid (a term NNLS dropped weighs 0).
+        tau = np.asarray(prony["tau_i"])
+        grid = np.logspace(np.log10(tau.min()), np.log10(tau.max()), int(round(np.log10(tau.max() / tau.min()) * 3)) + 1)
+        w = np.zeros(grid.size)
+        for t, e in zip(tau, prony["E_i"]):
+            w[np.argmin(np.abs(np.log10(grid / t)))] += e
+        return float(np.sum(np.diff(w / 1e6, 2) ** 2))
+
+    assert len(smooth.prony["E_i"]) > len(rough.prony["E_i"])  # weight spread over more terms
+    assert roughness(smooth.prony) < roughness(rough.prony)
+    assert smooth.prony["rms_relative"]["storage"] < 2 * NOISE
