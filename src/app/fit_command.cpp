@@ -147,22 +147,6 @@ std::string material_text(const FitRun& run, const std::string& name) {
   return s.str();
 }
 
-std::string json_list(const std::vector<double>& v) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + input::json_number(v[i]);
-  return s + "]";
-}
-
-std::string json_string(const std::string& v) {
-  std::string s = "\"";
-  for (const char c : v) {
-    if (c == '"' || c == '\\') s += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    s += c;
-  }
-  return s + "\"";
-}
-
 /// The .fit.json beside the material: readings on the master curve with the fit, the
 /// shifts, the candidates and the terms, each number with its unit in the key's "units".
 std::string details_json(const FitRun& run) {
@@ -182,30 +166,30 @@ std::string details_json(const FitRun& run) {
   std::ostringstream s;
   s << "{\n  \"kind\": \"" << (dma ? "dma" : "relaxation") << "\",\n";
   s << "  \"sources\": [";
-  for (std::size_t i = 0; i < run.sources.size(); ++i) s << (i ? ", " : "") << json_string(run.sources[i]);
-  s << "],\n  \"material\": " << json_string(run.output) << ",\n";
-  s << "  \"name\": " << json_string(run.material->name()) << ",\n";
+  for (std::size_t i = 0; i < run.sources.size(); ++i) s << (i ? ", " : "") << input::json_string(run.sources[i]);
+  s << "],\n  \"material\": " << input::json_string(run.output) << ",\n";
+  s << "  \"name\": " << input::json_string(run.material->name()) << ",\n";
   s << "  \"units\": {\"temperature\": \"degC\", \"x\": \"" << (dma ? "rad/s" : "s")
     << "\", \"moduli\": \"Pa\", \"tau\": \"s\", \"log10_aT\": \"1\", \"C2\": \"K\", \"E_a\": \"J/mol\"},\n";
-  s << "  \"readings\": {\"temperature\": " << json_list(T) << ",\n    \"x\": " << json_list(x)
-    << ",\n    \"x_reduced\": " << json_list(xr) << ",\n    \"" << (dma ? "storage" : "modulus") << "\": " << json_list(y1);
-  if (dma) s << ",\n    \"loss\": " << json_list(y2);
-  s << ",\n    \"" << (dma ? "storage_fit" : "modulus_fit") << "\": " << json_list(f1);
-  if (dma) s << ",\n    \"loss_fit\": " << json_list(f2);
-  s << ",\n    \"used\": " << json_list(used);
-  s << "},\n  \"shift\": {\"temperatures\": " << json_list(f.master.temperatures)
-    << ", \"measured_log10_aT\": " << json_list(f.master.measured_log10_aT)
-    << ", \"law_log10_aT\": " << json_list(f.master.law_log10_aT);
+  s << "  \"readings\": {\"temperature\": " << input::json_array(T) << ",\n    \"x\": " << input::json_array(x)
+    << ",\n    \"x_reduced\": " << input::json_array(xr) << ",\n    \"" << (dma ? "storage" : "modulus") << "\": " << input::json_array(y1);
+  if (dma) s << ",\n    \"loss\": " << input::json_array(y2);
+  s << ",\n    \"" << (dma ? "storage_fit" : "modulus_fit") << "\": " << input::json_array(f1);
+  if (dma) s << ",\n    \"loss_fit\": " << input::json_array(f2);
+  s << ",\n    \"used\": " << input::json_array(used);
+  s << "},\n  \"shift\": {\"temperatures\": " << input::json_array(f.master.temperatures)
+    << ", \"measured_log10_aT\": " << input::json_array(f.master.measured_log10_aT)
+    << ", \"law_log10_aT\": " << input::json_array(f.master.law_log10_aT);
   if (f.master.law) {
     const model::TemperatureShift& law = *f.master.law;
-    s << ", \"law\": " << json_string(law.kind == model::TemperatureShift::Kind::wlf ? "wlf" : "arrhenius")
+    s << ", \"law\": " << input::json_string(law.kind == model::TemperatureShift::Kind::wlf ? "wlf" : "arrhenius")
       << ", \"T_ref\": " << input::json_number(law.T_ref) << ", \"C1\": " << input::json_number(law.C1)
       << ", \"C2\": " << input::json_number(law.C2) << ", \"E_a\": " << input::json_number(law.E_a)
-      << ", \"describe\": " << json_string(law.describe());
+      << ", \"describe\": " << input::json_string(law.describe());
   }
   s << ", \"rms_log10\": " << input::json_number(f.master.rms_log10) << "},\n";
-  s << "  \"prony\": {\"E_inf\": " << input::json_number(f.prony.terms.E_inf) << ", \"E_i\": " << json_list(f.prony.terms.E)
-    << ", \"tau_i\": " << json_list(f.prony.terms.tau) << ",\n    \"rms_relative\": {\""
+  s << "  \"prony\": {\"E_inf\": " << input::json_number(f.prony.terms.E_inf) << ", \"E_i\": " << input::json_array(f.prony.terms.E)
+    << ", \"tau_i\": " << input::json_array(f.prony.terms.tau) << ",\n    \"rms_relative\": {\""
     << (dma ? "storage" : "modulus") << "\": " << input::json_number(f.prony.rms_first);
   if (dma) s << ", \"loss\": " << input::json_number(f.prony.rms_second);
   s << "}, \"rms_relative_all\": {\"" << (dma ? "storage" : "modulus") << "\": " << input::json_number(f.rms_all_first);

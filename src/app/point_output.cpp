@@ -18,15 +18,6 @@ using map::QuantitySpec;
 
 std::string number(double v) { return input::json_number(v); }
 
-std::string json_string(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
-
 /// "dt_star_ddh": d t*/d dh's key; "dlog_t_star_dlog_dh": its elasticity's.
 std::string derivative_name(const model::TStarDerivative& d) { return "dt_star_d" + std::string(d.parameter->name); }
 std::string elasticity_name(const model::TStarDerivative& d) { return "dlog_t_star_dlog_" + std::string(d.parameter->name); }
@@ -41,19 +32,13 @@ std::string flag_text(const QuantitySpec& q, const model::PointResult& r) {
   return std::string(model::validity_name(r.validity));
 }
 
-std::string series_array(const std::vector<double>& values) {
-  std::string text = "[";
-  for (std::size_t i = 0; i < values.size(); ++i) text += (i > 0 ? ", " : "") + number(values[i]);
-  return text + "]";
-}
-
 /// The JSON object's lines: the point's fields, then its series in a "series" object.
 struct JsonFields final : PointFields {
   std::ostream& out;
   bool in_series = false;
   explicit JsonFields(std::ostream& o) : out(o) {}
   void text(std::string_view name, const std::string& value) override {
-    out << "  \"" << name << "\": " << json_string(value) << ",\n";
+    out << "  \"" << name << "\": " << input::json_string(value) << ",\n";
   }
   void boolean(std::string_view name, bool value) override {
     out << "  \"" << name << "\": " << (value ? "true" : "false") << ",\n";
@@ -62,7 +47,7 @@ struct JsonFields final : PointFields {
     out << "  \"" << name << "\": " << punchsweep::input::json_number(value) << ",\n";
   }
   void series(std::string_view name, const std::vector<double>& values) override {
-    out << (in_series ? ",\n    \"" : "  \"series\": {\n    \"") << name << "\": " << series_array(values);
+    out << (in_series ? ",\n    \"" : "  \"series\": {\n    \"") << name << "\": " << input::json_array(values);
     in_series = true;
   }
 };
@@ -79,13 +64,13 @@ void write_physical(std::ostream& out, const std::vector<PhysicalField>& physica
   first = true;
   for (const PhysicalField& f : physical) {
     if (!f.series) continue;
-    out << (first ? "\n      \"" : ",\n      \"") << f.name << "\": " << series_array(f.values);
+    out << (first ? "\n      \"" : ",\n      \"") << f.name << "\": " << input::json_array(f.values);
     first = false;
   }
   out << "\n    }\n  },\n  \"units\": {";
   first = true;
   for (const PhysicalField& f : physical) {
-    out << (first ? "\n    \"" : ",\n    \"") << f.name << "\": " << json_string(f.units);
+    out << (first ? "\n    \"" : ",\n    \"") << f.name << "\": " << input::json_string(f.units);
     first = false;
   }
   out << "\n  }";
@@ -95,7 +80,7 @@ void write_json(std::ostream& out, const input::PointInputs& inputs, const model
   out << "{\n";
   // The model, where it is not the paper's (whose output keeps its form).
   if (!inputs.problem.localization.is_paper()) {
-    out << "  \"localization\": " << json_string(inputs.problem.localization.spelling()) << ",\n";
+    out << "  \"localization\": " << input::json_string(inputs.problem.localization.spelling()) << ",\n";
   }
   JsonFields fields(out);
   visit_point(r, inputs.time_unit, fields);

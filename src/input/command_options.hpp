@@ -190,4 +190,10 @@ std::string read_choice(const boost::program_options::variables_map& vm, const c
 /// Shortest text that reads back to the same double; "null" for NaN or infinity (JSON).
 std::string json_number(double value);
 
+/// `text` as a JSON string: quoted, with '"' and '\\' escaped and control characters as \\u00XX.
+std::string json_string(const std::string& text);
+
+/// `values` as a JSON array of json_number()s: "[0, 0.5, null]".
+std::string json_array(const std::vector<double>& values);
+
 }  // namespace punchsweep::input
