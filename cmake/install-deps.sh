@@ -14,6 +14,7 @@ packages=(
   python3 python3-numpy python3-h5py python3-matplotlib python3-xarray python3-h5netcdf
   python3-pytest python3-scipy python3-dev pybind11-dev
   udunits-bin
+  python3-plotly chromium nodejs
 )
 
 missing=()
@@ -23,8 +24,28 @@ for p in "${packages[@]}"; do
   fi
 done
 
+# The explorer page's browser tests drive Debian's chromium with playwright-core (npm; it
+# downloads no browser), pinned in tests/browser/package-lock.json. Without it those tests
+# skip and say why; nothing else needs it.
+browser_tests() {
+  local dir
+  dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/tests/browser"
+  if [ -d "$dir/node_modules/playwright-core" ]; then return 0; fi
+  if ! command -v npm >/dev/null 2>&1 && [ "$(id -u)" -eq 0 ]; then
+    apt-get install -y -qq --no-install-recommends npm >/dev/null 2>&1 || true
+  fi
+  if ! command -v npm >/dev/null 2>&1; then
+    echo "install-deps: no npm (Debian's nodejs comes without it: apt-get install npm); the browser tests will skip" >&2
+    return 0
+  fi
+  echo "install-deps: npm ci in tests/browser (playwright-core)"
+  (cd "$dir" && timeout 300 npm ci --no-audit --no-fund --silent) ||
+    echo "install-deps: npm ci failed (no registry?); the browser tests will skip" >&2
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
+  browser_tests
   exit 0
 fi
 
@@ -40,3 +61,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+browser_tests

@@ -45,4 +45,4 @@ mpirun -np "$cores" "$binary" sweep --config "$run/config.ini" --output "$run/ma
 echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
 
 echo "punchsweep: map $run/map.h5"
-echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; summary $run/summary.txt"
+echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; explorer $run/explore.html; summary $run/summary.txt"

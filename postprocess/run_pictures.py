@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """The job scripts' pictures of a run folder's map: regime_map.png (pbar across, dh up,
-a panel per s) and critical_dh.png (against pbar), for whatever axes the map has.
+a panel per s), critical_dh.png (against pbar), for whatever axes the map has, and
+explore.html, the interactive page (explore.py; coarsened on its longest axis, every 2nd,
+3rd, ... value, until it fits explore.py's size limit).
 
 Every axis that a picture does not show is fixed at a value that fits the map: l at 0.75 R
 and T at 5 where the map has them (the README's default picture), any other axis (a
@@ -16,6 +18,7 @@ import sys
 from pathlib import Path
 
 import critical_dh
+import explore
 import punchsweep_maps as pm
 import regime_map
 
@@ -53,8 +56,20 @@ def main(argv: list[str]) -> int:
                             "-o", str(folder / "regime_map.png")])
     if code != 0:
         return code
-    return critical_dh.main([path, "--against", "pbar", *(["--at", *chart_at] if chart_at else []),
+    code = critical_dh.main([path, "--against", "pbar", *(["--at", *chart_at] if chart_at else []),
                              "-o", str(folder / "critical_dh.png")])
+    if code != 0:
+        return code
+    with pm.open_map(path) as ds:
+        longest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
+    for every in range(1, 9):
+        try:
+            return explore.main([path, "-o", str(folder / "explore.html"),
+                                 *(["--every", f"{longest}={every}"] if every > 1 else [])])
+        except pm.MapError as e:
+            if "above --max-mb" not in str(e):
+                raise
+    raise pm.MapError(f"explore.html stays above the size limit even with every 8th {longest}")
 
 
 if __name__ == "__main__":

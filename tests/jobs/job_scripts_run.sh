@@ -40,7 +40,7 @@ test -f local/map.h5 && grep -q "status 0" local/provenance.txt
 # 4) The local main job: map, pictures, summary and provenance in the run folder.
 printf '[grid]\nl = 0.5, 0.75, 1\ndh = linspace(0.02, 0.12, 6)\nT = 2, 5\npbar = logspace(0.005, 0.08, 5)\ns = 1, 2\n' > local.ini
 bash "$root/jobs/local.sh" local.ini "$PWD/main-job" > main-job.log 2>&1 || { cat main-job.log; exit 1; }
-for f in map.h5 regime_map.png critical_dh.png summary.txt provenance.txt config.ini; do
+for f in map.h5 regime_map.png critical_dh.png explore.html summary.txt provenance.txt config.ini; do
   test -s "main-job/$f" || { echo "FAIL: jobs/local.sh left no $f"; cat main-job.log; exit 1; }
 done
 grep -q "punchsweep: map $PWD/main-job/map.h5" main-job.log
@@ -51,7 +51,7 @@ grep -q "completed: yes" main-job/summary.txt
 #     axis) and the material file recorded in the run folder; the folder resumes by itself.
 bash "$root/jobs/local.sh" "$root/sweeps/materials/nbr.ini" "$PWD/elsewhere/nbr" > nbr-job.log 2>&1 ||
   { echo "FAIL: jobs/local.sh with sweeps/materials/nbr.ini"; cat nbr-job.log; exit 1; }
-for f in map.h5 regime_map.png critical_dh.png summary.txt config.ini materials/nbr_linder2011.ini; do
+for f in map.h5 regime_map.png critical_dh.png explore.html summary.txt config.ini materials/nbr_linder2011.ini; do
   test -s "elsewhere/nbr/$f" || { echo "FAIL: the material job left no $f"; cat nbr-job.log; exit 1; }
 done
 cmp "$root/materials/nbr_linder2011.ini" elsewhere/nbr/materials/nbr_linder2011.ini

@@ -1,0 +1,407 @@
+#!/usr/bin/python3
+"""An interactive explorer of a punchsweep regime map: one self-contained HTML page.
+
+  postprocess/explore.py MAP.h5 -o map.html
+
+The page works offline from file:// (no server, no network): plotly.js is embedded from
+Debian's python3-plotly (/usr/share/python3-plotly/plotly.js, plotly.js 2.6.3, MIT
+licence) and the map's data with it, each variable deflate-compressed and decoded in the
+browser (DecompressionStream). On it:
+
+  - a heat map over two chosen axes (default dh up, pbar across), a slider for every other
+    axis (a material map's temperature, a creep law's T, s, l, ...);
+  - the regime in the project's colours, delayed cells shaded by log10 t*; where the map
+    has a BEM reference, its answer and the answer's source;
+  - hovering a cell reads every per-point quantity with its unit (physical where the map
+    has them: um, kPa, s); clicking it shows the `punchsweep point` command for that point;
+  - on a full map, a colour-by choice of a1, a2, P1, P2, area_fraction with a time slider;
+  - the critical height differences h_0 and h_inf over the slice, where dh is the vertical
+    axis.
+
+Size: the page holds plotly.js (8.7 MB) and the data; above --max-mb (default 40) the
+script stops and says by how much, and --every AXIS=K keeps every K-th value of an axis
+(repeatable) to make it fit.
+
+Exit codes: 0 written, 2 bad input (one line on stderr), nothing written then.
+"""
+from __future__ import annotations
+
+import argparse
+import base64
+import json
+import math
+import sys
+import zlib
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import punchsweep_maps as pm  # noqa: E402
+
+PLOTLY_JS = Path("/usr/share/python3-plotly/plotly.js")
+"""plotly.js as Debian's python3-plotly ships it (cmake/install-deps.sh installs it)."""
+POINT_VARIABLES = ("t_star", "h_0", "h_inf", "a1_inf", "a2_inf", "area_fraction_inf", "bem_t_star",
+                   "answer_t_star", "dt_star_ddh", "dt_star_dpbar", "dt_star_dl")
+FLAG_VARIABLES = ("regime", "valid", "bem_regime", "answer_regime", "answer_source")
+DEFAULT_MAX_MB = 40.0
+
+
+def parse_args(argv: list[str]) -> argparse.Namespace:
+    p = pm.Parser(prog="explore.py", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("map", metavar="MAP.h5", help="regime map written by `punchsweep sweep`")
+    p.add_argument("-o", "--output", required=True, help="the page to write (.html)")
+    p.add_argument("--x", default="pbar", metavar="AXIS", help="the axis across (default pbar)")
+    p.add_argument("--y", default="dh", metavar="AXIS", help="the axis up (default dh)")
+    p.add_argument("--every", nargs="+", action="extend", default=[], metavar="AXIS=K",
+                   help="keep every K-th value of AXIS (its first and then each K-th), to fit --max-mb")
+    p.add_argument("--max-mb", type=float, default=DEFAULT_MAX_MB,
+                   help=f"the largest page written, in MB (default {DEFAULT_MAX_MB:g})")
+    return p.parse_args(argv)
+
+
+def packed(values: np.ndarray, dtype: str) -> str:
+    """An array's little-endian bytes, deflate (zlib) compressed, base64."""
+    raw = np.ascontiguousarray(values, dtype=dtype).tobytes()
+    return base64.b64encode(zlib.compress(raw, 9)).decode("ascii")
+
+
+def coarsening(ds, items: list[str]) -> dict[str, int]:
+    steps = {}
+    for item in items:
+        name, _, k = item.partition("=")
+        if name not in pm.axes(ds):
+            raise pm.MapError(f"--every {item}: '{name}' is not an axis of the map (axes: {', '.join(pm.axes(ds))})")
+        try:
+            steps[name] = int(k)
+        except ValueError:
+            steps[name] = 0
+        if steps[name] < 1:
+            raise pm.MapError(f"--every {item}: K must be a whole number >= 1")
+    return steps
+
+
+def attr_text(value) -> str:
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
+    """What the page needs, its arrays packed: axes (values as shown, in physical units where
+    known, and the file's scaled values for the point command), variables flattened in the
+    map's axis order (C order), flags with their meanings, series over time."""
+    names = list(pm.axes(ds))
+    for name, option in ((x, "--x"), (y, "--y")):
+        if name not in names:
+            raise pm.MapError(f"{option} {name}: not an axis of the map (axes: {', '.join(names)})")
+    if x == y:
+        raise pm.MapError(f"--x and --y are both {x}; choose two axes")
+    sel = {n: slice(None, None, steps[n]) for n in steps}
+    ds = ds.isel(sel) if sel else ds
+    axes = []
+    for n in names:
+        coord = ds[n]
+        labels = pm.labels(ds, n)
+        scaled = coord.values * (1.0 / float(coord.attrs["per_scaled"])) if "per_scaled" in coord.attrs else coord.values
+        axes.append({
+            "name": n, "values": [float(v) for v in coord.values],
+            "scaled": [float(v) for v in np.asarray(scaled, dtype=float)],
+            "unit": pm.units(ds, n), "log": bool(pm.is_log(ds, n)),
+            "label": f"{n}: {attr_text(coord.attrs.get('long_name', n))}" + (
+                f" [{pm.units(ds, n)}]" if pm.units(ds, n) not in ("", "1") else ""),
+            "labels": labels,
+        })
+    variables = {}
+    for v in POINT_VARIABLES:
+        if v in ds.variables:
+            da = ds[v].transpose(*names)
+            variables[v] = {"data": packed(da.values, "<f8"), "unit": pm.units(ds, v),
+                            "long_name": attr_text(ds[v].attrs.get("long_name", v))}
+    flags = {}
+    for v in FLAG_VARIABLES:
+        if v in ds.variables:
+            f = pm.flags(ds, v)
+            flags[v] = {"data": packed(ds[v].transpose(*names).values, "<i1"),
+                        "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}
+    series = {}
+    if pm.has_series(ds):
+        for v in pm.SERIES:
+            da = ds[v].transpose(*names, "time")
+            series[v] = {"data": packed(da.values, "<f8"), "unit": pm.units(ds, v),
+                         "long_name": attr_text(ds[v].attrs.get("long_name", v))}
+    attrs = ds.attrs
+    material = attr_text(attrs.get("material", ""))
+    return {
+        "source": Path(map_path).name,
+        "title": pm.map_context(ds),
+        "material": material.split(",")[0],
+        "localization": attr_text(attrs.get("localization", "paper")),
+        "creep_law": attr_text(attrs.get("creep_law", "")),
+        "C": float(attrs.get("C", 0.5)),
+        "R": attr_text(attrs.get("R", "")),
+        "time_unit": attr_text(attrs.get("time_unit", "T_eps")),
+        "axes": axes, "x": x, "y": y,
+        "shape": [len(a["values"]) for a in axes],
+        "variables": variables, "flags": flags,
+        "series": series, "time": [float(t) for t in ds["time"].values] if series else [],
+        "colours": pm.REGIME_COLOURS,
+        "coarsened": {n: k for n, k in steps.items() if k > 1},
+    }
+
+
+PAGE = """<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<title>__TITLE__</title>
+<style>
+body { font-family: sans-serif; margin: 12px; color: #222; }
+#controls { display: flex; flex-wrap: wrap; gap: 10px 24px; align-items: center; margin: 6px 0; }
+#controls label { font-size: 13px; }
+#controls input[type=range] { width: 180px; vertical-align: middle; }
+#plot { width: 980px; height: 640px; }
+#readout, #command { font-family: monospace; font-size: 12px; white-space: pre-wrap; background: #f6f6f6;
+  padding: 6px; margin: 4px 0; min-height: 1.2em; }
+h1 { font-size: 18px; margin: 4px 0; }
+.note { font-size: 12px; color: #555; }
+</style>
+<script>__PLOTLY__</script>
+</head><body>
+<h1 id="title"></h1>
+<div class="note" id="subtitle"></div>
+<div id="controls"></div>
+<div id="plot"></div>
+<div class="note">Hover a cell to read it; click it for the <code>punchsweep point</code> command that reproduces it.</div>
+<div id="readout"></div>
+<div id="command"></div>
+<script id="map-data" type="application/json">__DATA__</script>
+<script>
+"use strict";
+const MAP = JSON.parse(document.getElementById("map-data").textContent);
+
+async function unpack(b64, Type) {
+  const bytes = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
+  const buffer = await new Response(stream).arrayBuffer();
+  return new Type(buffer);
+}
+
+const state = { x: MAP.axes.findIndex(a => a.name === MAP.x), y: MAP.axes.findIndex(a => a.name === MAP.y),
+                fixed: MAP.axes.map(() => 0), colour: "regime", time: 0 };
+const data = { variables: {}, flags: {}, series: {} };
+const strides = MAP.shape.map((_, k) => MAP.shape.slice(k + 1).reduce((a, b) => a * b, 1));
+
+function flatIndex(index) { return index.reduce((s, v, k) => s + v * strides[k], 0); }
+function fmt(v) { return v === null || Number.isNaN(v) ? "NaN" : (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0)) ? v.toExponential(4) : Number(v.toPrecision(6)).toString(); }
+function unitText(u) { return u && u !== "1" ? " " + u : ""; }
+function axisValueText(a, i) { return a.labels ? a.labels[i] : fmt(a.values[i]) + unitText(a.unit); }
+
+function cellIndex(ix, iy) {
+  const index = state.fixed.slice();
+  index[state.x] = ix; index[state.y] = iy;
+  return index;
+}
+
+function flagName(name, k) {
+  const f = MAP.flags[name];
+  return f.codes[String(data.flags[name][k])] || String(data.flags[name][k]);
+}
+
+function valueAt(name, k) {
+  if (name in data.flags) return flagName(name, k);
+  if (name in data.variables) return data.variables[name][k];
+  return undefined;
+}
+
+function readout(index) {
+  const k = flatIndex(index);
+  const lines = [];
+  MAP.axes.forEach((a, j) => lines.push(`${a.name} = ${axisValueText(a, index[j])}`));
+  for (const name of Object.keys(MAP.flags)) lines.push(`${name}: ${flagName(name, k)}`);
+  for (const [name, v] of Object.entries(MAP.variables)) lines.push(`${name} = ${fmt(data.variables[name][k])}${unitText(v.unit)}`);
+  if (MAP.time.length) {
+    const nt = MAP.time.length;
+    for (const [name, v] of Object.entries(MAP.series)) {
+      lines.push(`${name}(t = ${fmt(MAP.time[state.time])}) = ${fmt(data.series[name][k * nt + state.time])}${unitText(v.unit)}`);
+    }
+  }
+  return lines;
+}
+
+function pointCommand(index) {
+  const parts = ["punchsweep point"];
+  MAP.axes.forEach((a, j) => {
+    if (a.name === "material") parts.push(`--material ${a.labels ? a.labels[index[j]] : index[j]}.ini`);
+    else if (a.name === "time") return;
+    else parts.push(`--${a.name.replace("_", "-")} ${a.name === "s" ? a.scaled[index[j]] : a.scaled[index[j]]}`);
+  });
+  if (MAP.material && !MAP.axes.some(a => a.name === "material")) parts.push("--material MATERIAL.ini");
+  if (!MAP.axes.some(a => a.name === "C")) parts.push(`--C ${MAP.C}`);
+  parts.push(`--localization ${MAP.localization}`);
+  if (MAP.time.length) parts.push(`--times ${MAP.time.join(",")}`);
+  return parts.join(" ") + (MAP.material ? "\\n(MATERIAL.ini: the map's material_file attribute holds its text)" : "");
+}
+
+function grid() {
+  const ax = MAP.axes[state.x], ay = MAP.axes[state.y];
+  const nx = ax.values.length, ny = ay.values.length;
+  const cat = [], logt = [], text = [], series = [];
+  const delayed = Object.entries(MAP.flags.regime.codes).find(([c, m]) => m === "delayed");
+  const immediate = Object.entries(MAP.flags.regime.codes).find(([c, m]) => m === "immediate");
+  const never = Object.entries(MAP.flags.regime.codes).find(([c, m]) => m === "never");
+  const nt = MAP.time.length;
+  for (let iy = 0; iy < ny; ++iy) {
+    const rc = [], rl = [], rt = [], rs = [];
+    for (let ix = 0; ix < nx; ++ix) {
+      const k = flatIndex(cellIndex(ix, iy));
+      const code = String(data.flags.regime[k]);
+      const t = data.variables.t_star ? data.variables.t_star[k] : NaN;
+      rc.push(code === immediate[0] ? 0 : code === never[0] ? 1 : code === delayed[0] ? null : 2);
+      rl.push(code === delayed[0] && t > 0 ? Math.log10(t) : null);
+      rt.push(readout(cellIndex(ix, iy)).join("<br>"));
+      if (state.colour !== "regime") rs.push(data.series[state.colour][k * nt + state.time]);
+    }
+    cat.push(rc); logt.push(rl); text.push(rt); series.push(rs);
+  }
+  return { cat, logt, text, series };
+}
+
+function draw() {
+  const ax = MAP.axes[state.x], ay = MAP.axes[state.y];
+  const g = grid();
+  const c = MAP.colours;
+  const traces = [];
+  if (state.colour === "regime") {
+    traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.cat, text: g.text, hoverinfo: "text",
+      zmin: 0, zmax: 2, showscale: false, name: "regime",
+      colorscale: [[0, c.immediate], [0.33, c.immediate], [0.34, c.never], [0.66, c.never], [0.67, c.not_computed], [1, c.not_computed]] });
+    traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.logt, text: g.text, hoverinfo: "text",
+      colorscale: "YlOrRd", reversescale: true, name: "log10 t*", colorbar: { title: { text: `log10 t* [${MAP.time_unit}]` } } });
+  } else {
+    traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.series, text: g.text, hoverinfo: "text",
+      colorscale: "Viridis", colorbar: { title: { text: `${state.colour}${unitText(MAP.series[state.colour].unit)}` } } });
+  }
+  if (ay.name === "dh" && data.variables.h_0) {
+    const h0 = [], hinf = [];
+    for (let ix = 0; ix < ax.values.length; ++ix) {
+      const k = flatIndex(cellIndex(ix, 0));
+      h0.push(data.variables.h_0[k]); hinf.push(data.variables.h_inf[k]);
+    }
+    traces.push({ type: "scatter", mode: "lines", x: ax.values, y: h0, name: "h_0: below, immediate", line: { color: "#000", width: 2 }, hoverinfo: "skip" });
+    traces.push({ type: "scatter", mode: "lines", x: ax.values, y: hinf, name: "h_inf: above, never", line: { color: "#000", width: 2, dash: "dash" }, hoverinfo: "skip" });
+  }
+  const fixedText = MAP.axes.map((a, j) => j === state.x || j === state.y ? null : `${a.name} = ${axisValueText(a, state.fixed[j])}`).filter(Boolean).join(", ");
+  const layout = {
+    title: { text: `${MAP.title}<br><sub>${fixedText}${state.colour !== "regime" ? `; t = ${fmt(MAP.time[state.time])} ${MAP.time_unit}` : ""}</sub>` },
+    xaxis: { title: { text: ax.label }, type: ax.log ? "log" : "linear" },
+    yaxis: { title: { text: ay.label }, type: ay.log ? "log" : "linear", range: [Math.min(...ay.values), Math.max(...ay.values)] },
+    legend: { orientation: "h", y: -0.15 }, margin: { t: 80 },
+  };
+  if (ay.log) layout.yaxis.range = layout.yaxis.range.map(Math.log10);
+  return Plotly.react("plot", traces, layout, { displaylogo: false, responsive: false });
+}
+
+function controls() {
+  const box = document.getElementById("controls");
+  box.innerHTML = "";
+  const select = (id, label, options, value, onchange) => {
+    const l = document.createElement("label");
+    l.textContent = label + " ";
+    const s = document.createElement("select");
+    s.id = id;
+    options.forEach(([v, t]) => { const o = document.createElement("option"); o.value = v; o.textContent = t; s.appendChild(o); });
+    s.value = value;
+    s.addEventListener("change", () => onchange(s.value));
+    l.appendChild(s); box.appendChild(l);
+  };
+  const axesOptions = MAP.axes.map((a, j) => [String(j), a.name]);
+  select("x-axis", "across", axesOptions, String(state.x), v => { if (+v !== state.y) state.x = +v; controls(); draw(); });
+  select("y-axis", "up", axesOptions, String(state.y), v => { if (+v !== state.x) state.y = +v; controls(); draw(); });
+  if (MAP.time.length) {
+    select("colour", "colour by", [["regime", "regime and t*"], ...Object.keys(MAP.series).map(n => [n, n])], state.colour,
+           v => { state.colour = v; draw(); });
+  }
+  MAP.axes.forEach((a, j) => {
+    if (j === state.x || j === state.y) return;
+    if (a.values.length === 1) {  // one value: said, not a slider
+      const l = document.createElement("label");
+      l.textContent = `${a.name} = ${axisValueText(a, 0)}`;
+      box.appendChild(l);
+      return;
+    }
+    const l = document.createElement("label");
+    const r = document.createElement("input");
+    r.type = "range"; r.min = 0; r.max = a.values.length - 1; r.step = 1; r.value = state.fixed[j]; r.id = `slider-${a.name}`;
+    const span = document.createElement("span");
+    span.textContent = `${a.name} = ${axisValueText(a, state.fixed[j])}`;
+    r.addEventListener("input", () => { state.fixed[j] = +r.value; span.textContent = `${a.name} = ${axisValueText(a, state.fixed[j])}`; draw(); });
+    l.appendChild(r); l.appendChild(span); box.appendChild(l);
+  });
+  if (MAP.time.length) {
+    const l = document.createElement("label");
+    const r = document.createElement("input");
+    r.type = "range"; r.min = 0; r.max = MAP.time.length - 1; r.step = 1; r.value = state.time; r.id = "slider-time";
+    const span = document.createElement("span");
+    span.textContent = `t = ${fmt(MAP.time[state.time])} ${MAP.time_unit}`;
+    r.addEventListener("input", () => { state.time = +r.value; span.textContent = `t = ${fmt(MAP.time[state.time])} ${MAP.time_unit}`; draw(); });
+    l.appendChild(r); l.appendChild(span); box.appendChild(l);
+  }
+}
+
+const ready = (async () => {
+  for (const [name, v] of Object.entries(MAP.variables)) data.variables[name] = await unpack(v.data, Float64Array);
+  for (const [name, v] of Object.entries(MAP.flags)) data.flags[name] = await unpack(v.data, Int8Array);
+  for (const [name, v] of Object.entries(MAP.series)) data.series[name] = await unpack(v.data, Float64Array);
+  document.getElementById("title").textContent = `${MAP.source}: ${MAP.title}`;
+  document.getElementById("subtitle").textContent = `axes: ${MAP.axes.map(a => `${a.name} (${a.values.length})`).join(", ")}` +
+    (Object.keys(MAP.coarsened).length ? `; coarsened: ${JSON.stringify(MAP.coarsened)}` : "");
+  controls();
+  await draw();
+  const plot = document.getElementById("plot");
+  plot.on("plotly_hover", ev => {
+    const p = ev.points[0];
+    document.getElementById("readout").textContent = readout(cellIndex(p.pointNumber[1], p.pointNumber[0])).join("\\n");
+  });
+  plot.on("plotly_click", ev => {
+    const p = ev.points[0];
+    document.getElementById("command").textContent = pointCommand(cellIndex(p.pointNumber[1], p.pointNumber[0]));
+  });
+})();
+
+// For scripts and the browser tests: the state, the decoded data and the page's own read-outs.
+window.explorer = { ready, state, data, MAP, flatIndex, cellIndex, readout, pointCommand, valueAt, draw, controls };
+</script>
+</body></html>
+"""
+
+
+def render(data: dict, plotly_js: str) -> str:
+    text = json.dumps(data, separators=(",", ":")).replace("</", "<\\/")
+    return (PAGE.replace("__PLOTLY__", plotly_js.replace("</script", "<\\/script"))
+            .replace("__TITLE__", f"punchsweep explorer: {data['source']}")
+            .replace("__DATA__", text))
+
+
+def main(argv: list[str]) -> int:
+    args = parse_args(argv)
+    out = Path(args.output)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise pm.MapError(f"-o {args.output}: the page is HTML; name it .html")
+    if not PLOTLY_JS.is_file():
+        raise pm.MapError(f"{PLOTLY_JS} not found: install Debian's python3-plotly (bash cmake/install-deps.sh)")
+    ds = pm.open_map(args.map)
+    if not pm.is_completed(ds):
+        raise pm.MapError(f"{args.map} is not completed (resume the sweep first)")
+    data = payload(ds, args.x, args.y, coarsening(ds, args.every), args.map)
+    page = render(data, PLOTLY_JS.read_text(encoding="utf-8"))
+    size_mb = len(page.encode("utf-8")) / 1e6
+    if size_mb > args.max_mb:
+        biggest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
+        raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g} (plotly.js is 8.7 MB of "
+                          f"it): coarsen the map, e.g. --every {biggest}=2, or raise --max-mb")
+    tmp = out.with_name(out.name + ".tmp")
+    tmp.write_text(page, encoding="utf-8")
+    tmp.replace(out)
+    print(f"explore.py: wrote {out} ({size_mb:.1f} MB: plotly.js 8.7 MB, the map {size_mb - 8.66:.1f} MB)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(pm.run_cli(main, "explore.py"))

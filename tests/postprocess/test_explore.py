@@ -1,0 +1,145 @@
+"""postprocess/explore.py (issue 26): the explorer page of a regime map. The data the page
+embeds decode to the map's arrays bit for bit; in headless Chromium (Debian's, driven by
+playwright-core: tests/browser) the page loads with no network request and no console
+error, hovering a cell reads the regime, t* and radii the map holds at that index (read
+here with h5py), a slider moves the slice, the time slider moves the series, and a
+screenshot is non-blank. The browser part skips, saying why, where Chromium, node or
+playwright-core is missing (bash cmake/install-deps.sh installs them)."""
+from __future__ import annotations
+
+import base64
+import json
+import os
+import re
+import shutil
+import subprocess
+import zlib
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+ENGINE = os.environ.get("PUNCHSWEEP", str(REPO / "build/src/app/punchsweep"))
+EXPLORE = REPO / "postprocess" / "explore.py"
+DRIVER = REPO / "tests" / "browser" / "explore_page.mjs"
+CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
+
+
+def explore(*args):
+    return subprocess.run(["/usr/bin/python3", EXPLORE, *map(str, args)], capture_output=True, text=True)
+
+
+@pytest.fixture(scope="module")
+def maps(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("explore")
+    default = tmp / "default.h5"
+    subprocess.run([ENGINE, "sweep", "--grid.l", "0.75,1", "--grid.dh", "linspace(0.01,0.12,12)", "--grid.T", "2.5,5",
+                    "--grid.pbar", "logspace(0.005,0.08,10)", "--grid.s", "2", "--output", default, "--quiet"],
+                   check=True)
+    material = tmp / "material.h5"
+    subprocess.run([ENGINE, "sweep", "--model.material", REPO / "materials" / "pla_prusament_chapuis2025.ini",
+                    "--model.R", "50um", "--grid.l", "150um", "--grid.dh", "linspace(0.05um,3um,12)",
+                    "--grid.pressure", "logspace(0.2MPa,20MPa,10)", "--grid.temperature", "50,60,70", "--grid.s", "2",
+                    "--output", material, "--quiet"], check=True)
+    pages = {}
+    for name, path in (("default", default), ("material", material)):
+        page = tmp / f"{name}.html"
+        done = explore(path, "-o", page)
+        assert done.returncode == 0, done.stderr
+        pages[name] = (path, page)
+    return pages
+
+
+def embedded(page: Path) -> dict:
+    text = page.read_text(encoding="utf-8")
+    data = re.search(r'<script id="map-data" type="application/json">(.*?)</script>', text, flags=re.S).group(1)
+    return json.loads(data.replace("<\\/", "</"))
+
+
+def decode(packed: str, dtype: str) -> np.ndarray:
+    return np.frombuffer(zlib.decompress(base64.b64decode(packed)), dtype=dtype)
+
+
+@pytest.mark.parametrize("which", ["default", "material"])
+def test_the_page_embeds_the_maps_arrays_bit_for_bit(maps, which):
+    path, page = maps[which]
+    d = embedded(page)
+    assert page.stat().st_size < 12e6 and "cdn" not in page.read_text()[:2000].lower()
+    with h5py.File(path) as f:
+        names = [a["name"] for a in d["axes"]]
+        assert d["shape"] == list(f["regime"].shape)
+        for v in ("t_star", "a1_inf", "a2_inf", "h_0", "h_inf"):
+            got = decode(d["variables"][v]["data"], "<f8").reshape(d["shape"])
+            scale = d["variables"][v].get("unit")
+            want = f[v][...]
+            if which == "material" and v != "t_star":  # lengths shown in um: file value x 50
+                want = want * 50.0
+            assert np.array_equal(got, want, equal_nan=True) or np.allclose(got, want, rtol=1e-15, equal_nan=True), (v, scale)
+        assert np.array_equal(decode(d["flags"]["regime"]["data"], "<i1").reshape(d["shape"]), f["regime"][...])
+        series = decode(d["series"]["a2"]["data"], "<f8").reshape(d["shape"] + [len(d["time"])])
+        assert series.shape == f["a2"].shape
+        for a in d["axes"]:
+            assert np.allclose(a["scaled"], f[a["name"]][...], rtol=1e-15)
+        assert names == [dim.label or dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
+
+
+def test_refusals_and_the_size_limit(maps, tmp_path):
+    path, _ = maps["default"]
+    for args, message in ((["--x", "bogus"], "--x bogus: not an axis"), (["--max-mb", "5"], "above --max-mb 5"),
+                          (["--every", "dh=0"], "whole number >= 1"), (["--every", "zz=2"], "'zz' is not an axis")):
+        out = tmp_path / "p.html"
+        done = explore(path, "-o", out, *args)
+        assert done.returncode == 2 and message in done.stderr and not out.exists(), done.stderr
+    done = explore(path, "-o", tmp_path / "coarse.html", "--every", "dh=2")
+    assert done.returncode == 0
+    assert embedded(tmp_path / "coarse.html")["shape"][1] == 6
+
+
+def browser_missing() -> str | None:
+    if not Path(CHROMIUM).exists():
+        return f"no Chromium at {CHROMIUM} (bash cmake/install-deps.sh installs Debian's chromium)"
+    if shutil.which("node") is None:
+        return "no node (bash cmake/install-deps.sh installs nodejs)"
+    if not (REPO / "tests" / "browser" / "node_modules" / "playwright-core").is_dir():
+        return "no playwright-core in tests/browser/node_modules (bash cmake/install-deps.sh runs npm install there)"
+    return None
+
+
+@pytest.mark.parametrize("which", ["default", "material"])
+def test_the_page_in_chromium(maps, tmp_path, which):
+    missing = browser_missing()
+    if missing:
+        pytest.skip(missing)
+    path, page = maps[which]
+    cells = [[0, 0], [4, 6], [9, 11], [7, 3]]
+    (tmp_path / "cells.json").write_text(json.dumps(cells))
+    out, shot = tmp_path / "out.json", tmp_path / "shot.png"
+    done = subprocess.run(["node", DRIVER, page, tmp_path / "cells.json", out, shot], capture_output=True, text=True,
+                          timeout=180)
+    assert done.returncode == 0, done.stderr
+    r = json.loads(out.read_text())
+    assert r["requests"] == [] and r["errors"] == []
+    with h5py.File(path) as f:
+        names = [dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
+        meanings = f["regime"].attrs["flag_meanings"]
+        meanings = (meanings.decode() if isinstance(meanings, bytes) else meanings).split()
+        codes = dict(zip(f["regime"].attrs["flag_values"], meanings))
+        length = 50.0 if which == "material" else 1.0  # the page shows lengths in um
+        for cell in r["cells"]:
+            index = tuple(cell["index"])
+            assert index[names.index("pbar")] == cell["ix"] and index[names.index("dh")] == cell["iy"]
+            assert cell["regime"] == codes[f["regime"][index]]
+            t = f["t_star"][index]
+            assert (cell["t_star"] is None and np.isnan(t)) or cell["t_star"] == t
+            assert cell["a1_inf"] == pytest.approx(f["a1_inf"][index] * length, rel=1e-15)
+            assert cell["a2_inf"] == pytest.approx(f["a2_inf"][index] * length, rel=1e-15)
+            # The hover read-out is of that cell.
+            assert f"regime: {cell['regime']}" in cell["readout"]
+    assert r["slider"] is not None and r["slider"]["changed"]
+    assert r["time_slider"] == {"changed": True}
+    assert r["command"].startswith("punchsweep point --l ")
+    import matplotlib.image
+    pixels = matplotlib.image.imread(shot)
+    assert shot.stat().st_size > 50_000 and pixels.shape[0] >= 900 and float(pixels[..., :3].std()) > 0.05
