@@ -278,6 +278,15 @@ function draw() {
     traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.series, text: g.text, hoverinfo: "text",
       colorscale: "Viridis", colorbar: { title: { text: `${state.colour}${unitText(MAP.series[state.colour].unit)}` } } });
   }
+  if (MAP.flags.answer_source) {  // cells the BEM answered: open squares
+    const bem = Object.entries(MAP.flags.answer_source.codes).find(([c, m]) => m === "bem");
+    const xs = [], ys = [];
+    for (let iy = 0; iy < ay.values.length; ++iy) for (let ix = 0; ix < ax.values.length; ++ix) {
+      if (bem && String(data.flags.answer_source[flatIndex(cellIndex(ix, iy))]) === bem[0]) { xs.push(ax.values[ix]); ys.push(ay.values[iy]); }
+    }
+    traces.push({ type: "scatter", mode: "markers", x: xs, y: ys, name: "answered by the BEM", hoverinfo: "skip",
+                  marker: { symbol: "square-open", color: "#000", size: 7 } });
+  }
   if (ay.name === "dh" && data.variables.h_0) {
     const h0 = [], hinf = [];
     for (let ix = 0; ix < ax.values.length; ++ix) {
