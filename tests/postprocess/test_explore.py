@@ -135,8 +135,13 @@ def test_the_page_in_chromium(maps, tmp_path, which):
             assert (cell["t_star"] is None and np.isnan(t)) or cell["t_star"] == t
             assert cell["a1_inf"] == pytest.approx(f["a1_inf"][index] * length, rel=1e-15)
             assert cell["a2_inf"] == pytest.approx(f["a2_inf"][index] * length, rel=1e-15)
-            # The hover read-out is of that cell.
+            # The hover read-out (what a user sees) is of that cell: its regime, and t* and a1_inf
+            # to the 6 digits it prints.
             assert f"regime: {cell['regime']}" in cell["readout"]
+            shown = dict(line.split(" = ", 1) for line in cell["readout"].splitlines() if " = " in line)
+            for name, want in (("t_star", t), ("a1_inf", f["a1_inf"][index] * length)):
+                number = shown[name].split()[0]
+                assert (number == "NaN" and np.isnan(want)) or float(number) == pytest.approx(want, rel=1e-5), name
     assert r["slider"] is not None and r["slider"]["changed"]
     assert r["time_slider"] == {"changed": True}
     assert r["command"].startswith("punchsweep point --l ")
