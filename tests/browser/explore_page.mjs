@@ -37,6 +37,7 @@ try {
     const read = await page.evaluate(([ix, iy]) => {
       const e = window.explorer, k = e.flatIndex(e.cellIndex(ix, iy));
       return { ix, iy, index: e.cellIndex(ix, iy), flat: k, regime: e.valueAt("regime", k), t_star: e.valueAt("t_star", k),
+               command: e.pointCommand(e.cellIndex(ix, iy)),
                a1_inf: e.valueAt("a1_inf", k), a2_inf: e.valueAt("a2_inf", k),
                readout: document.getElementById("readout").textContent };
     }, [ix, iy]);

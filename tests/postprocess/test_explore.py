@@ -145,6 +145,15 @@ def test_the_page_in_chromium(maps, tmp_path, which):
     assert r["slider"] is not None and r["slider"]["changed"]
     assert r["time_slider"] == {"changed": True}
     assert r["command"].startswith("punchsweep point --l ")
+    if which == "default":
+        # Each cell's command, run as the page gives it, says what the map says there.
+        for cell in r["cells"]:
+            argv = cell["command"].split("\n")[0].split()
+            done = subprocess.run([ENGINE, *argv[1:], "--format", "json"], capture_output=True, text=True)
+            assert done.returncode == 0, (argv, done.stderr)
+            point = json.loads(done.stdout)
+            assert point["regime"] == cell["regime"]
+            assert (point["t_star"] is None and cell["t_star"] is None) or point["t_star"] == cell["t_star"]
     import matplotlib.image
     pixels = matplotlib.image.imread(shot)
     assert shot.stat().st_size > 50_000 and pixels.shape[0] >= 900 and float(pixels[..., :3].std()) > 0.05
