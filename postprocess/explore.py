@@ -129,11 +129,11 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
             series[v] = {"data": packed(da.values, "<f8"), "unit": pm.units(ds, v),
                          "long_name": attr_text(ds[v].attrs.get("long_name", v))}
     attrs = ds.attrs
-    material = attr_text(attrs.get("material", ""))
+    material = "; ".join(pm.material_names(ds).values())
     return {
         "source": Path(map_path).name,
         "title": pm.map_context(ds),
-        "material": material.split(",")[0],
+        "material": material,
         "localization": attr_text(attrs.get("localization", "paper")),
         "creep_law": attr_text(attrs.get("creep_law", "")),
         "C": float(attrs.get("C", 0.5)),

@@ -77,14 +77,6 @@ po::options_description fit_options() {
   return opts;
 }
 
-double real_option(const po::variables_map& vm, const char* name, const std::string& range,
-                   const std::function<bool(double)>& ok) {
-  const std::string text = vm[name].as<std::string>();
-  const double v = input::parse_real(text, std::string("--") + name);
-  if (!ok(v)) throw input::UsageError(std::string("--") + name + " = " + text + " is outside its range: " + range);
-  return v;
-}
-
 /// The modulus unit that puts E_0 between 1 and 1000.
 const model::Unit& modulus_unit_for(double E0_Pa) {
   const auto units = model::units_of(model::Dimension::pressure);
@@ -311,7 +303,7 @@ FitRun run_fit(const po::variables_map& vm) {
   if (!vm.count("poisson")) {
     throw input::UsageError("missing --poisson: Poisson's ratio, -1 < NU <= 0.5 (0.5 for an incompressible rubber)");
   }
-  run.poisson = real_option(vm, "poisson", "-1 < NU <= 0.5", [](double v) { return v > -1.0 && v <= 0.5; });
+  run.poisson = input::read_real(vm, "poisson", "Poisson's ratio", "-1 < NU <= 0.5", [](double v) { return v > -1.0 && v <= 0.5; });
   const fit::Measurements m = input::read_measurement_files(run.sources);
   const bool dma = vm.count("dma") > 0;
   if (dma ? m.dma.empty() : m.relaxation.empty()) {
@@ -337,12 +329,12 @@ FitRun run_fit(const po::variables_map& vm) {
     if (!(vm.count("C1") && vm.count("C2"))) throw input::UsageError("give WLF's --C1 and --C2 together");
     request.shift.law = fit::ShiftRequest::Law::given;
     request.shift.given.kind = model::TemperatureShift::Kind::wlf;
-    request.shift.given.C1 = real_option(vm, "C1", "C1 > 0", [](double v) { return v > 0.0; });
-    request.shift.given.C2 = real_option(vm, "C2", "C2 > 0 (in K)", [](double v) { return v > 0.0; });
+    request.shift.given.C1 = input::read_real(vm, "C1", "WLF's C1", "C1 > 0", [](double v) { return v > 0.0; });
+    request.shift.given.C2 = input::read_real(vm, "C2", "WLF's C2", "C2 > 0 (in K)", [](double v) { return v > 0.0; });
   } else if (vm.count("E-a")) {
     request.shift.law = fit::ShiftRequest::Law::given;
     request.shift.given.kind = model::TemperatureShift::Kind::arrhenius;
-    request.shift.given.E_a = real_option(vm, "E-a", "E_a > 0 (in J/mol)", [](double v) { return v > 0.0; });
+    request.shift.given.E_a = input::read_real(vm, "E-a", "the activation energy", "E_a > 0 (in J/mol)", [](double v) { return v > 0.0; });
   }
   request.shift.given.T_ref = request.shift.T_ref;
   request.prony.per_decade = input::parse_real_list(vm["terms-per-decade"].as<std::string>(), "--terms-per-decade");
@@ -352,12 +344,12 @@ FitRun run_fit(const po::variables_map& vm) {
                               " is outside its range: each 0 < density <= 10");
     }
   }
-  request.prony.smoothing = real_option(vm, "smoothing", "LAMBDA >= 0", [](double v) { return v >= 0.0; });
+  request.prony.smoothing = input::read_real(vm, "smoothing", "the smoothing weight", "LAMBDA >= 0", [](double v) { return v >= 0.0; });
   request.prony.refine = input::read_choice(vm, "refine", {"yes", "no"}) == "yes";
   read_window(vm, &request);
   run.window_lo = request.window_lo;
   run.window_hi = request.window_hi;
-  request.isotherm_gap = real_option(vm, "isotherm-gap", "K > 0", [](double v) { return v > 0.0; });
+  request.isotherm_gap = input::read_real(vm, "isotherm-gap", "the isotherm gap", "K > 0", [](double v) { return v > 0.0; });
   try {
     run.fit = fit::fit_material(m, request);
   } catch (const std::invalid_argument& e) {

@@ -12,6 +12,7 @@
 #include "input/text_file.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
+#include "model/numerics/number_text.hpp"
 #include "model/numerics/units.hpp"
 
 namespace punchsweep::input {
@@ -40,12 +41,8 @@ const std::array<ColumnSpec, 7>& column_specs() {
   return specs;
 }
 
-std::string trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t\r\"");
-  if (b == std::string_view::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r\"");
-  return std::string(s.substr(b, e - b + 1));
-}
+/// A cell or header without blanks and the quotes spreadsheets put around it.
+std::string trim(std::string_view s) { return std::string(model::trim(s, " \t\r\"")); }
 
 std::string normalized(std::string_view s) {
   std::string out;
