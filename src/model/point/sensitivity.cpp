@@ -97,9 +97,16 @@ TStarDerivative t_star_derivative(const ContactProblem& problem, const CreepLaw&
 std::vector<TStarDerivative> t_star_derivatives(const ContactProblem& problem, const CreepLawSpec& law,
                                                 std::span<const double> law_values, double t_star) {
   Point point(problem, law, law_values);
+  // Along the problem's own parameters the law stays as it is: built once here, not at
+  // every step (a Prony law's interconversion finds its roots on each build).
+  const std::unique_ptr<CreepLaw> creep = make_creep_law(law, law_values);
   std::vector<TStarDerivative> out;
   for (std::size_t k = 0; k < point.parameters.size(); ++k) {
     const Parameter& p = *point.parameters[k];
+    if (problem_field(point.problem, p.name) != nullptr) {
+      out.push_back(t_star_derivative(problem, *creep, p.name, t_star));
+      continue;
+    }
     const bool temperature = p.name == temperature_parameter().name;
     out.push_back(t_star_derivative(p, *point.field(k), t_star, temperature,
                                     [&](double v) { return point.t_star_at(k, v); }));
