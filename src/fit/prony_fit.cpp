@@ -212,11 +212,22 @@ PronyFit fit(std::vector<Reading> readings, double lo, double hi, const PronyOpt
     }
   }
   std::vector<double> tau = best_tau;
-  if (options.refine && !tau.empty() && problem.size() > tau.size() + 1) tau = refine_times(problem, tau);
-  std::sort(tau.begin(), tau.end());
-  // Times the refinement drove within 1% of each other are one term (two there are a
-  // degenerate pair whose weights trade off).
-  tau.erase(std::unique(tau.begin(), tau.end(), [](double a, double b) { return b - a <= 0.01 * b; }), tau.end());
+  // Times the refinement drives within 1% of each other are one term (two there are a
+  // degenerate pair whose weights trade off, a valley along which the refinement crawls
+  // and stops where rounding leaves it): merged, and the times refined again without the
+  // pair, until no two meet.
+  const auto merge = [](std::vector<double>& t) {
+    std::sort(t.begin(), t.end());
+    const std::size_t before = t.size();
+    t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return b - a <= 0.01 * b; }), t.end());
+    return t.size() < before;
+  };
+  for (int round = 0; round < 8; ++round) {
+    if (!(options.refine && !tau.empty() && problem.size() > tau.size() + 1)) break;
+    tau = refine_times(problem, tau);
+    if (!merge(tau)) break;
+  }
+  merge(tau);
   const Problem::Solution s = problem.solve(tau);
   out.terms = terms_of(tau, s.weights);
   out.rss = s.rss;
