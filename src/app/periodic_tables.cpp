@@ -16,6 +16,7 @@
 
 #include "app/table_cache.hpp"
 #include "io/file_descriptor.hpp"
+#include "model/two_level/small_spot_builder.hpp"
 #include "reference/periodic_grid.hpp"
 
 namespace punchsweep::app {
@@ -41,6 +42,55 @@ constexpr double kShippedS3[] = {
 };
 #define PUNCHSWEEP_SHIPPED_S3 1
 #endif
+
+#if __has_include("app/periodic_tables/small_spot-s1.inc")
+constexpr double kSmallSpotS1[] = {
+#include "app/periodic_tables/small_spot-s1.inc"
+};
+#define PUNCHSWEEP_SMALL_SPOT_S1 1
+#endif
+#if __has_include("app/periodic_tables/small_spot-s2.inc")
+constexpr double kSmallSpotS2[] = {
+#include "app/periodic_tables/small_spot-s2.inc"
+};
+#define PUNCHSWEEP_SMALL_SPOT_S2 1
+#endif
+#if __has_include("app/periodic_tables/small_spot-s3.inc")
+constexpr double kSmallSpotS3[] = {
+#include "app/periodic_tables/small_spot-s3.inc"
+};
+#define PUNCHSWEEP_SMALL_SPOT_S3 1
+#endif
+
+std::span<const double> shipped_small_spot_numbers(int s) {
+  switch (s) {
+#ifdef PUNCHSWEEP_SMALL_SPOT_S1
+    case 1: return kSmallSpotS1;
+#endif
+#ifdef PUNCHSWEEP_SMALL_SPOT_S2
+    case 2: return kSmallSpotS2;
+#endif
+#ifdef PUNCHSWEEP_SMALL_SPOT_S3
+    case 3: return kSmallSpotS3;
+#endif
+    default: return {};
+  }
+}
+
+/// Numbers as C++ source: an initializer list of hex floats, four a line, under a header.
+std::string numbers_source(const std::vector<double>& numbers, const std::string& title, const std::string& provenance) {
+  std::ostringstream out;
+  out << "// " << title << "\n";
+  std::istringstream lines(provenance);
+  for (std::string line; std::getline(lines, line);) out << "// " << line << "\n";
+  char text[40];
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    std::snprintf(text, sizeof text, "%a,", numbers[i]);
+    out << text << ((i + 1) % 4 == 0 ? "\n" : " ");
+  }
+  out << "\n";
+  return out.str();
+}
 
 std::span<const double> shipped_numbers(int s) {
   switch (s) {
@@ -189,20 +239,45 @@ std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
   return table;
 }
 
-std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance) {
-  std::ostringstream out;
-  out << "// The periodic model's tables of s = " << table.s << " on a " << table.n << " x " << table.n
-      << " grid (docs/model.md, section 14.3).\n";
-  std::istringstream lines(provenance);
-  for (std::string line; std::getline(lines, line);) out << "// " << line << "\n";
-  const std::vector<double> numbers = table.tables();
-  char text[40];
-  for (std::size_t i = 0; i < numbers.size(); ++i) {
-    std::snprintf(text, sizeof text, "%a,", numbers[i]);
-    out << text << ((i + 1) % 4 == 0 ? "\n" : " ");
+std::optional<model::SmallSpotTable> shipped_small_spot_table(int s) {
+  const std::span<const double> numbers = shipped_small_spot_numbers(s);
+  if (numbers.empty()) return std::nullopt;
+  return model::SmallSpotTable::from_tables(std::vector<double>(numbers.begin(), numbers.end()));
+}
+
+std::shared_ptr<const model::SmallSpotTable> small_spot_table_for(int s, bool quiet) {
+  if (std::optional<model::SmallSpotTable> shipped = shipped_small_spot_table(s)) {
+    return std::make_shared<const model::SmallSpotTable>(std::move(*shipped));
   }
-  out << "\n";
-  return out.str();
+  const auto start = std::chrono::steady_clock::now();
+  if (!quiet) std::fprintf(stderr, "punchsweep: building the small-spot table of s = %d ...", s);
+  auto table = std::make_shared<const model::SmallSpotTable>(model::build_small_spot_table(s));
+  if (!quiet) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, " built in %.1f s\n", seconds);
+  }
+  return table;
+}
+
+std::shared_ptr<const model::PeriodicSolution> periodic_solution_for(int s, const std::optional<std::filesystem::path>& folder,
+                                                                    bool quiet) {
+  return std::make_shared<const model::PeriodicSolution>(periodic_table_for(s, kPeriodicTableGrid, folder, quiet),
+                                                         small_spot_table_for(s, quiet));
+}
+
+std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance) {
+  return numbers_source(table.tables(),
+                        "The periodic model's tables of s = " + std::to_string(table.s) + " on a " +
+                            std::to_string(table.n) + " x " + std::to_string(table.n) +
+                            " grid (docs/model.md, section 14.3).",
+                        provenance);
+}
+
+std::string small_spot_table_source(const model::SmallSpotTable& table, const std::string& provenance) {
+  return numbers_source(table.tables(),
+                        "The periodic model's small-spot table of s = " + std::to_string(table.s) +
+                            " (docs/model.md, section 14.7).",
+                        provenance);
 }
 
 }  // namespace punchsweep::app

@@ -1,8 +1,10 @@
 #pragma once
 /// @file
-/// Where the periodic model's tables come from (docs/model.md, section 14.3): the ones shipped
-/// with the engine (s = 1, 2, 3), else the table cache (app/table_cache.hpp, its rules), else
-/// built by the boundary elements (about a minute per s) and kept there.
+/// Where the periodic model's tables come from (docs/model.md, sections 14.3 and 14.7): the
+/// ones shipped with the engine (s = 1, 2, 3), else the table cache (app/table_cache.hpp, its
+/// rules), else built by the boundary elements (about a minute per s) and kept there; and
+/// the small-spot table beside them, shipped or built (about 2 s, the refined localization's
+/// shell sums, which the cache keeps, most of it).
 
 #include <cstdint>
 #include <filesystem>
@@ -10,7 +12,9 @@
 #include <optional>
 #include <string>
 
+#include "model/localization/periodic_solution.hpp"
 #include "model/localization/periodic_table.hpp"
+#include "model/localization/small_spot_table.hpp"
 #include "reference/periodic_table_builder.hpp"
 
 namespace punchsweep::app {
@@ -47,8 +51,20 @@ std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
                                                               const reference::PeriodicTableOptions& options = {},
                                                               TableOrigin* origin = nullptr);
 
+/// The small-spot table shipped in the source tree (src/app/periodic_tables/), if any for s.
+std::optional<model::SmallSpotTable> shipped_small_spot_table(int s);
+
+/// The small-spot table of s: shipped, else built (progress on stderr unless quiet).
+std::shared_ptr<const model::SmallSpotTable> small_spot_table_for(int s, bool quiet = false);
+
+/// The periodic solution of s: the boundary elements' tables on the engine's grid
+/// (periodic_table_for, with `folder` as the cache) and the small-spot table.
+std::shared_ptr<const model::PeriodicSolution> periodic_solution_for(int s, const std::optional<std::filesystem::path>& folder,
+                                                                    bool quiet = false);
+
 /// The tables as C++ source text (an initializer list of hex-float numbers with a header
 /// saying how they were made), what src/app/periodic_tables/ holds.
 std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance);
+std::string small_spot_table_source(const model::SmallSpotTable& table, const std::string& provenance);
 
 }  // namespace punchsweep::app

@@ -145,16 +145,16 @@ void use_table_cache() {
   if (!cache.folder || !refusal.empty()) {
     if (!refusal.empty()) std::fprintf(stderr, "punchsweep: %s; tables are built in memory\n", refusal.c_str());
     model::set_shell_sums_store({});
-    model::set_periodic_table_source([](int s) {
+    model::set_periodic_solution_source([](int s) {
       sweep::use_reproducible_fft_plans();
-      return periodic_table_for(s, kPeriodicTableGrid, std::nullopt);
+      return periodic_solution_for(s, std::nullopt);
     });
     return;
   }
   const std::filesystem::path root = *cache.folder;
-  model::set_periodic_table_source([root](int s) {
+  model::set_periodic_solution_source([root](int s) {
     sweep::use_reproducible_fft_plans();
-    return periodic_table_for(s, kPeriodicTableGrid, root);
+    return periodic_solution_for(s, root);
   });
   model::set_shell_sums_store({[root](const std::string& name) { return read_tables(root / name); },
                                [root](const std::string& name, const std::vector<double>& tables) {

@@ -14,6 +14,7 @@
 #include "input/value_parsing.hpp"
 #include "app/version.hpp"
 #include "model/problem/shape.hpp"
+#include "model/two_level/small_spot_builder.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace po = boost::program_options;
@@ -36,8 +37,11 @@ po::options_description tables_options() {
       ("grid", po::value<std::string>()->value_name("N")->default_value(std::to_string(kPeriodicTableGrid)),
        "boundary-element grid per side; the engine reads 512 (others are for convergence studies)")
       ("write-source", po::value<std::string>()->value_name("DIR"),
-       "build afresh (not from the cache or the shipped ones) and write periodic-s<S>-n<N>.inc, "
-       "the source text the engine ships, into DIR")
+       "build afresh (not from the cache or the shipped ones) and write periodic-s<S>-n<N>.inc and "
+       "small_spot-s<S>.inc, the source text the engine ships, into DIR")
+      ("small-spot-only", po::bool_switch(),
+       "with --write-source: the small-spot tables alone (docs/model.md, section 14.7; seconds, "
+       "where the boundary elements' take minutes)")
       ("quiet", po::bool_switch(), "no progress");
   return opts;
 }
@@ -72,7 +76,26 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
   if (vm.count("write-source")) {
     const std::filesystem::path dir = vm["write-source"].as<std::string>();
     if (!std::filesystem::is_directory(dir)) throw input::UsageError("--write-source: " + dir.string() + " is not a folder");
+    const bool small_only = vm["small-spot-only"].as<bool>();
     for (const int s : exponents) {
+      const auto small_start = std::chrono::steady_clock::now();
+      const model::SmallSpotTable small = model::build_small_spot_table(s);
+      const double small_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - small_start).count();
+      char small_provenance[600];
+      std::snprintf(small_provenance, sizeof small_provenance,
+                    "Made by `punchsweep tables --s %d --write-source DIR%s` (punchsweep %s, git %s) in %.1f s on one "
+                    "core.\nThe refined localization (D = %d), its far field corrected by %.9e to the lattice's.\n"
+                    "Samples: %d + 1 in v up to %.9g (hand-over from %.9g), %d + 1 in zeta. Numbers in order of "
+                    "model::SmallSpotTable::tables().",
+                    s, small_only ? " --small-spot-only" : "", kVersion, kGitRevision, small_seconds, small.shells,
+                    small.far_field_correction, small.M, small.v_top, small.v_hand, small.Z);
+      const std::filesystem::path small_file = dir / (model::SmallSpotTable::table_name(s) + ".inc");
+      std::ofstream small_text(small_file);
+      small_text << small_spot_table_source(small, small_provenance);
+      small_text.close();
+      if (!small_text) throw std::runtime_error("could not write " + small_file.string());
+      out << "s = " << s << ": wrote " << small_file.string() << " (" << small_seconds << " s)\n";
+      if (small_only) continue;
       const auto start = std::chrono::steady_clock::now();
       const std::shared_ptr<const model::PeriodicTable> table = std::make_shared<const model::PeriodicTable>(
           build_periodic_table_with_progress(s, n, quiet, {}, "written as source"));
@@ -107,6 +130,10 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
                      : std::string("built (no table cache: built again next time)"))
         << "; single level to xi = " << table->xi_full_single() << " (full contact), two levels for dh/(C l^s) up to "
         << table->delta_top << " (" << seconds << " s)\n";
+    const bool small_shipped = shipped_small_spot_table(s).has_value();
+    const std::shared_ptr<const model::SmallSpotTable> small = small_spot_table_for(s, quiet);
+    out << "s = " << s << ": small-spot table " << (small_shipped ? "shipped with the engine" : "built") << ", below xi = "
+        << small->xi_top() << " (the hand-over from xi = " << small->xi_hand() << ")\n";
   }
   return 0;
 }

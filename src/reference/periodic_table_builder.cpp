@@ -170,6 +170,7 @@ model::PeriodicTable build_periodic_table(int s, const PeriodicTableOptions& opt
   t.a2.assign(JK, 0.0);
   t.Q2.assign(JK, 0.0);
   t.monotone2.assign(static_cast<std::size_t>(t.J) * (t.K - 1), 1);
+  t.set_grids();
   for (int j = 0; j < t.J; ++j) {
     const double delta = t.sample_delta(j);
     const double star = *t.touchdown(delta);

@@ -188,9 +188,11 @@ void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, cons
       }
       // The elastic start at t = 0 has modulus 1/J(0) = 1 E0* for every creep law (the unit
       // of pressure): per (s, l, dh, pbar). Kept for the paper's model, whose start is a
-      // Newton solve (3 us); the others read their branch, no dearer than the lookup.
+      // Newton solve (3 us), and, where a run has more points than one (a grid's: its laws
+      // meet each pbar again), the periodic model's (its small spots' and hand-over's reads
+      // cost more than the lookup); the refined model reads its branch, no dearer.
       std::optional<model::ElasticTwoLevel>* elastic = nullptr;
-      if (paper) {
+      if (paper || (localization_.periodic && end - begin > 1)) {
         const std::array<double, 4> key{s, l, dh, problem.pbar0};
         elastic = elastic_.find(key);
         if (elastic == nullptr) elastic = &elastic_.put(key, std::nullopt);

@@ -54,7 +54,7 @@ struct ScratchFolder {
 /// The model reads the shipped tables (what `punchsweep` and the Python module do, without
 /// a cache for the others).
 void use_shipped_tables() {
-  model::set_periodic_table_source([](int s) { return app::periodic_table_for(s, app::kPeriodicTableGrid, std::nullopt); });
+  model::set_periodic_solution_source([](int s) { return app::periodic_solution_for(s, std::nullopt); });
 }
 
 }  // namespace
@@ -235,7 +235,11 @@ TEST(PeriodicModel, unloading_tables_flag_their_points) {
   model::PeriodicTable receding = honest;
   for (auto& m : receding.monotone2) m = 0;
   receding.finish();
-  model::set_periodic_table_source([&](int) { return std::make_shared<const model::PeriodicTable>(receding); });
+  const auto small = app::small_spot_table_for(2);
+  const auto solution_of = [&](const model::PeriodicTable& tables) {
+    return std::make_shared<const model::PeriodicSolution>(std::make_shared<const model::PeriodicTable>(tables), small);
+  };
+  model::set_periodic_solution_source([&](int) { return solution_of(receding); });
   model::ContactProblem problem{0.75, 0.075, 0.06, {2, 0.5}};
   problem.localization = model::parse_localization("periodic");
   const model::StandardLinearSolid sls(2.5);
@@ -246,7 +250,7 @@ TEST(PeriodicModel, unloading_tables_flag_their_points) {
   // still monotone, so the point stays valid.
   const model::StandardLinearSolid stiff(1.1);
   EXPECT_TRUE(model::summarize_point(problem, stiff).valid());
-  model::set_periodic_table_source([&](int) { return std::make_shared<const model::PeriodicTable>(honest); });
+  model::set_periodic_solution_source([&](int) { return solution_of(honest); });
   EXPECT_TRUE(model::summarize_point(problem, sls).valid());
 }
 

@@ -1,75 +1,17 @@
 #include "model/localization/periodic_table.hpp"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
 #include <numbers>
-#include <stdexcept>
 
 #include "model/numerics/integer_power.hpp"
-#include "model/problem/shape.hpp"
+#include "model/numerics/uniform_cubic.hpp"
 
 namespace punchsweep::model {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// x^(1/n) for x >= 0: the square and cube roots where they serve (a point of a sweep or of
-/// classify takes two or three of these, and pow costs several times a sqrt).
-double root(double x, int n) {
-  switch (n) {
-    case 1: return x;
-    case 2: return std::sqrt(x);
-    case 3: return std::cbrt(x);
-    case 4: return std::sqrt(std::sqrt(x));
-    default: return std::pow(x, 1.0 / n);
-  }
-}
-
-/// Where x falls on the uniform grid lo + i step, i = 0 .. count - 1: the interval i (clamped
-/// to [0, count - 2]) and the offset u in it (not clamped: u < 0 or > 1 past the ends).
-struct GridPosition {
-  int i = 0;
-  double u = 0.0;
-};
-GridPosition locate(double x, double lo, double hi, int count) {
-  const double step = (hi - lo) / (count - 1);
-  const double f = (x - lo) / step;
-  int i = static_cast<int>(std::floor(f));
-  i = std::clamp(i, 0, count - 2);
-  return {i, f - i};
-}
-
-/// The weights of the cubic through four equally spaced values p[-1], p[0], p[1], p[2]
-/// (Catmull-Rom's interpolating form: the Lagrange cubic on the four nodes) at offset u in
-/// [0, 1] from p[0].
-struct CubicWeights {
-  double wm, w0, w1, w2;
-  double apply(double pm, double p0, double p1, double p2) const { return wm * pm + w0 * p0 + w1 * p1 + w2 * p2; }
-};
-CubicWeights cubic_weights(double u) {
-  return {-u * (u - 1.0) * (u - 2.0) / 6.0, (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0,
-          -(u + 1.0) * u * (u - 2.0) / 2.0, (u + 1.0) * u * (u - 1.0) / 6.0};
-}
-
-/// The cubic through the four samples about interval `at.i` of `count` (>= 4, as
-/// from_tables requires): nodes i - 1 .. i + 2, shifted inward at the ends (one-sided). Its
-/// weights serve every field sampled on the same nodes (a table's fields share them).
-struct Stencil {
-  int first;
-  CubicWeights w;
-  Stencil(GridPosition at, int count)
-      : first(std::clamp(at.i - 1, 0, count - 4)), w(cubic_weights(at.u + (at.i - first - 1))) {}
-  /// At `values` with stride 1.
-  double operator()(const double* values) const {
-    const double* v = values + first;
-    return w.apply(v[0], v[1], v[2], v[3]);
-  }
-};
 
 }  // namespace
 
@@ -86,22 +28,45 @@ double PeriodicTable::delta_hidden() const {
 }
 double PeriodicTable::xi_full_single() const { return ipow(v_full, s + 1); }
 
+double PeriodicTable::gap(double xi) const { return xi > 0.0 ? gap_at(iroot(xi, s + 1)) : 0.0; }
+
+double PeriodicTable::gap_at(double v) const {
+  if (v >= v_full) return delta_hidden();
+  const int count = static_cast<int>(h1.size());
+  return Stencil(v_grid_.at(std::max(v, v_lo)), count)(h1.data());
+}
+
+double PeriodicTable::gap_at(double v, double* slope) const {
+  const int count = static_cast<int>(h1.size());
+  if (!(v > v_lo) || v >= v_full) {
+    *slope = 0.0;
+    return v >= v_full ? delta_hidden() : gap_at(v);
+  }
+  const GridPosition at = v_grid_.at(v);
+  const Stencil stencil(at, count);
+  const double* p = &h1[static_cast<std::size_t>(stencil.first)];
+  *slope = cubic_slope_weights(at.u + (at.i - stencil.first - 1)).apply(p[0], p[1], p[2], p[3]) / v_grid_.step;
+  return stencil.w.apply(p[0], p[1], p[2], p[3]);
+}
+
 PeriodicState PeriodicTable::single(double xi) const {
   PeriodicState out;
   out.Q1 = xi;
   if (!(xi > 0.0)) return out;
-  const double v = root(xi, s + 1);
+  const double v = iroot(xi, s + 1);
   if (v >= v_full) {
     out.h = delta_hidden();
     out.a1 = 1.0 / std::sqrt(std::numbers::pi);
     return out;
   }
   const int count = static_cast<int>(h1.size());
-  const Stencil at(locate(std::max(v, v_lo), v_lo, v_full, count), count);
+  const Stencil at(v_grid_.at(std::max(v, v_lo)), count);
   out.h = at(h1.data());
   out.a1 = at(a11.data());
   return out;
 }
+
+double PeriodicTable::touchdown_of_gap(double delta) const { return touchdown_v(delta); }
 
 double PeriodicTable::touchdown_v(double delta) const {
   // h increases from sample to sample: the interval that holds delta, then the root of the
@@ -111,36 +76,16 @@ double PeriodicTable::touchdown_v(double delta) const {
   if (delta >= h1.back()) return v_full;
   const int i = std::clamp(static_cast<int>(std::upper_bound(h1.begin(), h1.end(), delta) - h1.begin()) - 1, 0,
                            count - 2);
-  const int first = std::clamp(i - 1, 0, count - 4);  // as Stencil picks its nodes
-  const double shift = i - first - 1;                 // the interval is x in [shift, shift + 1]
-  // The cubic through (-1, p0), (0, p1), (1, p2), (2, p3) in powers of x (cubic_weights()
-  // expanded), for Newton steps of a few operations each.
-  const double* p = &h1[static_cast<std::size_t>(first)];
-  const double c3 = (p[3] - p[0]) / 6.0 + (p[1] - p[2]) / 2.0;
-  const double c2 = (p[0] + p[2]) / 2.0 - p[1];
-  const double c1 = p[2] - p[0] / 3.0 - p[1] / 2.0 - p[3] / 6.0;
-  const double c0 = p[1] - delta;
-  // Newton from the chord's root, kept inside a bracket that every step narrows (bisection
-  // where a step would leave it): three or four steps. A step of 1e-12 leaves an error of
-  // its square; a tolerance at the rounding of u is not reached where the cubic's own
-  // rounding moves f (it took 12 steps on average).
+  const IntervalCubic cubic(h1.data(), i, count, delta);
+  // Newton from the chord's root.
   const double chord = h1[static_cast<std::size_t>(i) + 1] - h1[static_cast<std::size_t>(i)];
-  double lo = 0.0, hi = 1.0;
-  double u = chord > 0.0 ? std::clamp((delta - h1[static_cast<std::size_t>(i)]) / chord, 0.0, 1.0) : 0.5;
-  for (int k = 0; k < 60; ++k) {
-    const double x = u + shift;
-    const double f = ((c3 * x + c2) * x + c1) * x + c0;
-    if (f == 0.0) break;  // the root to the last bit (a bisection from here went astray for 30 steps)
-    (f < 0.0 ? lo : hi) = u;
-    const double rate = (3.0 * c3 * x + 2.0 * c2) * x + c1;
-    double next = rate > 0.0 ? u - f / rate : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - u) <= 1e-12 || next == lo || next == hi) {
-      u = next;
-      break;
-    }
-    u = next;
-  }
+  const double start = chord > 0.0 ? std::clamp((delta - h1[static_cast<std::size_t>(i)]) / chord, 0.0, 1.0) : 0.5;
+  const double u = newton_in_interval(
+      [&](double w, double* rate) {
+        *rate = cubic.slope(w + cubic.shift);
+        return cubic.value(w + cubic.shift);
+      },
+      start);
   return v_lo + (v_full - v_lo) * (i + u) / (count - 1);
 }
 
@@ -163,7 +108,7 @@ PeriodicTable::Row PeriodicTable::row(double delta, double xi_star) const {
   const double d = std::clamp(delta, 0.0, delta_top);
   out.xi_star = xi_star;
   if (!std::isfinite(out.xi_star)) out.in_range = false;
-  const GridPosition dj = locate(d, 0.0, delta_top, J);
+  const GridPosition dj = delta_grid_.at(d);
   out.interval = dj.i;
   out.offset = dj.u;
   const Stencil across(dj, J);
@@ -177,21 +122,17 @@ PeriodicState PeriodicTable::two_level(double xi, const Row& row) const {
   out.in_range = row.in_range;
   if (!std::isfinite(row.xi_star)) return out;
   const double excess = std::max(xi - row.xi_star, 0.0);
-  const double r = root(excess, row_power()) / row.w_full;
+  const double r = iroot(excess, row_power()) / row.w_full;
   // The bicubic: in r along each of the four rows about delta, then across them.
-  const Stencil along(locate(std::min(r, 1.0), 0.0, 1.0, K), K);
+  const Stencil along(r_grid_.at(std::min(r, 1.0)), K);
   const int first = std::clamp(row.interval - 1, 0, J - 4);  // J >= 4 (from_tables)
   const Stencil across(GridPosition{row.interval - first, row.offset}, 4);
-  const auto at = [&](const std::vector<double>& field) {
-    double rows[4];
-    for (int m = 0; m < 4; ++m) rows[m] = along(&field[static_cast<std::size_t>(first + m) * K]);
-    return across(rows);
-  };
-  out.a1 = at(a1);
-  out.a2 = std::max(at(a2), 0.0);
+  const Three at = bicubic3(fields_.data(), K, first, across.w, along);
+  out.a1 = at.f0;
+  out.a2 = std::max(at.f1, 0.0);
   // Level 2's load is never negative; the samples' grid may leave the cubic a little below
   // zero just after touchdown, where a coarse sample sees the tip node alone.
-  const double rate = std::max(at(q2_rate_), 0.0);
+  const double rate = std::max(at.f2, 0.0);
   if (r > 1.0) {
     // Full contact: the areas stay, the extra load spreads evenly over the cell.
     const double excess_full = ipow(row.w_full, row_power());
@@ -208,7 +149,7 @@ bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, const Row& row) 
   if (all_monotone_ || xi_b <= xi_a) return true;
   if (std::isfinite(row.xi_star) && xi_b > row.xi_star) {
     const auto index = [&](double xi) {
-      const double r = root(std::max(xi - row.xi_star, 0.0), row_power()) / row.w_full;
+      const double r = iroot(std::max(xi - row.xi_star, 0.0), row_power()) / row.w_full;
       return std::min(static_cast<int>(std::floor(r * (K - 1))), K - 1);  // K - 1: beyond the rows' end
     };
     const int lo = index(std::max(xi_a, row.xi_star)), hi = index(xi_b);
@@ -222,9 +163,9 @@ bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, const Row& row) 
   if (xi_b <= xi_a) return true;
   const int count = static_cast<int>(h1.size());
   const auto index = [&](double xi) {
-    const double v = root(xi, s + 1);
+    const double v = iroot(xi, s + 1);
     if (v >= v_full) return count - 1;
-    return locate(std::max(v, v_lo), v_lo, v_full, count).i;
+    return v_grid_.at(std::max(v, v_lo)).i;
   };
   for (int k = index(std::max(xi_a, 1e-300)); k <= index(xi_b) && k < count - 1; ++k) {
     if (!monotone1[static_cast<std::size_t>(k)]) return false;
@@ -232,11 +173,18 @@ bool PeriodicTable::pressure_monotone(double xi_a, double xi_b, const Row& row) 
   return true;
 }
 
+void PeriodicTable::set_grids() {
+  v_grid_ = UniformGrid(v_lo, v_full, static_cast<int>(h1.size()));
+  delta_grid_ = UniformGrid(0.0, delta_top, J);
+  r_grid_ = UniformGrid(0.0, 1.0, K);
+}
+
 void PeriodicTable::finish() {
   const auto all = [](const std::vector<std::uint8_t>& v) {
     return std::all_of(v.begin(), v.end(), [](std::uint8_t m) { return m != 0; });
   };
   all_monotone_ = all(monotone1) && all(monotone2);
+  set_grids();
   q2_rate_.assign(Q2.size(), 0.0);
   for (int j = 0; j < J; ++j) {
     double* rate = &q2_rate_[static_cast<std::size_t>(j) * K];
@@ -246,6 +194,8 @@ void PeriodicTable::finish() {
     for (int k = 1; k < K; ++k) rate[k] = load[k] / ipow(w_full[j] * k / (K - 1), row_power());
     rate[0] = 3.0 * rate[1] - 3.0 * rate[2] + rate[3];  // the parabola through k = 1, 2, 3 at 0
   }
+  fields_.clear();
+  for (std::size_t k = 0; k < a1.size(); ++k) fields_.insert(fields_.end(), {a1[k], a2[k], q2_rate_[k]});
 }
 
 std::vector<double> PeriodicTable::tables() const {
@@ -333,55 +283,6 @@ std::optional<PeriodicTable> PeriodicTable::from_tables(const std::vector<double
 
 std::string PeriodicTable::table_name(int s, int n) {
   return "periodic-s" + std::to_string(s) + "-n" + std::to_string(n);
-}
-
-namespace {
-std::mutex& source_mutex() {
-  static std::mutex m;
-  return m;
-}
-PeriodicTableSource& source() {
-  static PeriodicTableSource f;
-  return f;
-}
-std::map<int, std::shared_ptr<const PeriodicTable>>& loaded() {
-  static std::map<int, std::shared_ptr<const PeriodicTable>> tables;
-  return tables;
-}
-// The loaded tables by s, read without the lock: a point looks its tables up several times
-// (the touchdown, the branch, each single-level state), and the lock cost 0.1-0.2 us of the
-// 1.8 us a scattered point took (issue 23). Set under the lock, after the table is whole.
-constexpr int kFastExponents = Shape::kMaxExponent + 1;  // s in [0, kMaxExponent]
-std::array<std::atomic<const PeriodicTable*>, kFastExponents>& ready() {
-  static std::array<std::atomic<const PeriodicTable*>, kFastExponents> tables{};
-  return tables;
-}
-}  // namespace
-
-void set_periodic_table_source(PeriodicTableSource f) {
-  const std::lock_guard lock(source_mutex());
-  source() = std::move(f);
-  for (auto& table : ready()) table.store(nullptr, std::memory_order_release);
-  loaded().clear();
-}
-
-const PeriodicTable& periodic_table(int s) {
-  const bool fast = s >= 0 && s < kFastExponents;
-  if (fast) {
-    if (const PeriodicTable* table = ready()[static_cast<std::size_t>(s)].load(std::memory_order_acquire)) return *table;
-  }
-  const std::lock_guard lock(source_mutex());
-  auto& entry = loaded()[s];
-  if (!entry) {
-    if (!source()) {
-      throw std::runtime_error("the periodic model needs its tables, and this program has no source for them "
-                               "(the punchsweep command and the Python module set one)");
-    }
-    entry = source()(s);
-    if (!entry) throw std::runtime_error("no periodic tables for s = " + std::to_string(s));
-  }
-  if (fast) ready()[static_cast<std::size_t>(s)].store(entry.get(), std::memory_order_release);
-  return *entry;
 }
 
 }  // namespace punchsweep::model

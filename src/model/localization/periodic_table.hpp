@@ -22,11 +22,11 @@
 /// the cell in contact, so once spots merge they still say how much of each level touches.
 
 #include <cstdint>
-#include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "model/numerics/uniform_cubic.hpp"
 
 namespace punchsweep::model {
 
@@ -76,8 +76,15 @@ class PeriodicTable {
   double delta_hidden() const;
   double xi_full_single() const;
 
-  /// Single level at xi >= 0: h, a1, Q1 = xi.
+  /// Single level at xi >= 0: h, a1, Q1 = xi; h alone.
   PeriodicState single(double xi) const;
+  double gap(double xi) const;
+  /// The same at v = xi^(1/(s+1)) (the caller's, computed once).
+  double gap_at(double v) const;
+  /// The same and dh/dv there (0 outside the samples).
+  double gap_at(double v, double* slope) const;
+  /// The v at which the single level's curve reaches delta (its last sample, v_full, past it).
+  double touchdown_of_gap(double delta) const;
   /// The touchdown load xi*(delta) (h(xi*) = delta); +infinity for delta >= delta_hidden;
   /// empty below the table (delta < h(v_lo)) unless delta == 0 (xi* = 0); v_lo is 0 in the
   /// tables the builder makes (the first sample is the unloaded state, exactly).
@@ -125,18 +132,17 @@ class PeriodicTable {
   /// measured), one through the ratio, clamped at zero, does not. At r = 0 the limit,
   /// extrapolated from the next three samples.
   std::vector<double> q2_rate_;
+  /// a1, a2 and q2_rate_ of each sample side by side, what two_level() reads.
+  std::vector<double> fields_;
+  /// The samples' grids in v, delta and r.
+  UniformGrid v_grid_, delta_grid_, r_grid_;
 
  public:
-  /// Derived fields (all_monotone_) once the arrays are filled.
+  /// Derived fields (all_monotone_, the grids) once the arrays are filled.
   void finish();
+  /// The samples' grids alone, once their counts and ranges are set (the builder reads its
+  /// curve while it fills the surface).
+  void set_grids();
 };
-
-/// Where the model gets the tables of s: set by the application (built by the boundary
-/// elements and kept in a cache folder, see app/table_cache.hpp). Without a source the
-/// periodic model cannot be evaluated (std::runtime_error naming what is missing).
-using PeriodicTableSource = std::function<std::shared_ptr<const PeriodicTable>(int s)>;
-void set_periodic_table_source(PeriodicTableSource source);
-/// The tables of s, from the source on first use, then shared (thread-safe).
-const PeriodicTable& periodic_table(int s);
 
 }  // namespace punchsweep::model

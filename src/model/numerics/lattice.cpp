@@ -2,9 +2,19 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cmath>
 #include <map>
+#include <numbers>
 
 namespace punchsweep::model {
+
+double lattice_far_field_constant() {
+  // zeta(1/2) and Dirichlet's beta(1/2) = sum (-1)^n / sqrt(2n + 1), to 30 digits (mpmath's
+  // zeta(0.5) and dirichlet(0.5, [0, 1, 0, -1])).
+  constexpr double kZetaHalf = -1.4603545088095868128894991525152980125;
+  constexpr double kBetaHalf = 0.66769145718960917665869092930377;
+  return 4.0 * (2.0 - std::numbers::sqrt2) * kZetaHalf * kBetaHalf / std::numbers::pi;
+}
 
 std::vector<DistanceShell> lattice_shells(double cx, double cy, int K, int level) {
   const double offset = level == 1 ? 0.0 : 0.5;

@@ -20,6 +20,22 @@ struct Lattice {
   double A_single() const { return 2.0 * l / std::sqrt(std::numbers::pi); }
 };
 
+/// The far field of a square lattice at small spots (docs/model.md, section 14.7): with unit
+/// loads at the sites of a square lattice of pitch 1 on a half-space of E* = 1, G(x) the
+/// surface displacement of zero mean over the cell (the lattice of point loads and the
+/// nominal pressure that balances it), the constant
+///     Psi = lim_{x -> 0} [G(x) - 1/(pi |x|)] - G(M),        M = (1/2, 1/2) the square centre,
+/// is what the rest of the lattice adds to a site's depth beyond the centre's displacement.
+/// A punch of small spot under load P in a lattice of pitch l has h = K_d a^s + Psi P / l +
+/// O(P a^2 / l^3), and two levels d1 - d2 = K_d (a1^s - a2^s) + Psi (Q1 - Q2) / l + ...
+/// The lattice sum of 1/|x| over the sites, with the background, is 4 zeta(1/2) beta(1/2)
+/// at a site (Glasser and Zucker, "Lattice sums", Theoretical Chemistry 5, 1980: the
+/// analytic continuation of sum' (m^2 + n^2)^-s = 4 zeta(s) beta(s)); the centre is a site
+/// of the lattice of pitch 1/sqrt(2) that the sites and centres form together, which gives
+/// G(M) = (sqrt(2) - 1) times the site's. So Psi = 4 (2 - sqrt(2)) zeta(1/2) beta(1/2) / pi
+/// = -0.72724969313843...; tests/model/lattice_test.cpp sums it by Ewald's method.
+double lattice_far_field_constant();
+
 /// Punches of one level of the lattice at one distance from a point.
 struct DistanceShell {
   double distance = 0.0;  ///< in units of the pitch l

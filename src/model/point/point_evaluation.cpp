@@ -198,7 +198,9 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   const double l = problem.l;
   const double margin = problem.localization.merge_margin();
   out.merge_margin = margin;
-  const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
+  const std::optional<CreepWeightedLoad> own_load =
+      parts.load != nullptr ? std::nullopt : std::optional<CreepWeightedLoad>(std::in_place, creep, problem.pbar0, problem.loading);
+  const CreepWeightedLoad& load = parts.load != nullptr ? *parts.load : *own_load;
   const double X_inf = load.final();
 
   // The two-level phase starts from a known state, with frozen radii (eq 9.18).
@@ -310,7 +312,9 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
   SummaryParts parts;
   parts.guide = dh.guide.get();
   parts.branch = dh.branch.get();
-  parts.classification = classify(dh.touchdown, CreepWeightedLoad(creep, problem.pbar0, problem.loading));
+  const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
+  parts.load = &load;
+  parts.classification = classify(dh.touchdown, load);
   parts.h_0 = ends.h_0;
   parts.h_inf = ends.h_inf;
   parts.a1_inf_single = ends.a1_inf_single;

@@ -126,6 +126,8 @@ struct SummaryParts {
   const LongTermGuide* guide = nullptr;      ///< per (l, s, C, dh); required under the paper's localization
   /// per (l, s, C, dh); required under the family's and the periodic model
   const TwoLevelBranch* branch = nullptr;
+  /// The point's creep-weighted load, if the caller has it (else made here).
+  const CreepWeightedLoad* load = nullptr;
 };
 
 /// The single-level phase at creep-weighted load X (eq 9.5): the level-1 radius a1(X) and

@@ -19,7 +19,7 @@ PeriodicScales::PeriodicScales(const ContactProblem& problem)
       l(problem.l) {}
 
 PeriodicSingleLevel::PeriodicSingleLevel(const ContactProblem& problem)
-    : table_(&periodic_table(problem.shape.s)), scales_(problem) {}
+    : table_(&periodic_solution(problem.shape.s)), scales_(problem) {}
 
 double PeriodicSingleLevel::contact_radius(double X) const {
   if (!std::isfinite(X)) return scales_.l / std::sqrt(std::numbers::pi);
@@ -39,21 +39,18 @@ PeriodicSingleLevel::State PeriodicSingleLevel::state(double X) const {
 
 Touchdown PeriodicSingleLevel::touchdown(double dh) const {
   Touchdown t;
-  const std::optional<double> xi = table_->touchdown(dh / scales_.h_unit);
-  t.X_star = xi ? *xi * scales_.X_unit : kNaN;  // v_lo = 0: always found
+  t.X_star = table_->touchdown(dh / scales_.h_unit) * scales_.X_unit;
   t.a1_star = std::isfinite(t.X_star) ? contact_radius(t.X_star) : contact_radius(kInf);
   return t;
 }
 
 PeriodicBranch::PeriodicBranch(const ContactProblem& problem, const Touchdown& touch)
-    : table_(&periodic_table(problem.shape.s)),
+    : table_(&periodic_solution(problem.shape.s)),
       scales_(problem),
-      row_(problem.dh / scales_.h_unit <= table_->delta_top
-               ? table_->row(problem.dh / scales_.h_unit, touch.X_star / scales_.X_unit)
-               : table_->row(problem.dh / scales_.h_unit)),
+      row_(table_->row(problem.dh / scales_.h_unit, touch.X_star / scales_.X_unit)),
       X_star_(touch.X_star) {}
 
-bool PeriodicBranch::covered() const { return row_.delta <= table_->delta_top || !std::isfinite(X_star_); }
+bool PeriodicBranch::covered() const { return row_.delta <= table_->delta_top() || !std::isfinite(X_star_); }
 
 TwoLevelSolve PeriodicBranch::at(double X) const {
   const double l2 = scales_.l * scales_.l;
@@ -65,11 +62,12 @@ TwoLevelSolve PeriodicBranch::at(double X) const {
   if (!covered()) return {{kNaN, kNaN, kNaN, kNaN}, false};
   if (!std::isfinite(X)) {
     // Every node in contact: the areas are the levels' shares of the cell.
-    const PeriodicState full = table_->two_level(kInf, row_);
+    const PeriodicState full = table_->tables().two_level(kInf, row_.table);
     return {{scales_.l * full.a1, scales_.l * full.a2, kInf, kInf}, true};
   }
   const PeriodicState s = table_->two_level(X / scales_.X_unit, row_);
-  TwoLevelState state{scales_.l * s.a1, scales_.l * s.a2, 0.0, scales_.Q_unit * s.Q2};
+  // One height (dh = 0): the levels alike, each carrying half the load, exactly.
+  TwoLevelState state{scales_.l * s.a1, scales_.l * s.a2, 0.0, row_.delta == 0.0 ? 0.5 * l2 * X : scales_.Q_unit * s.Q2};
   state.Q1 = l2 * X - state.Q2;  // the cell's load balance, exactly
   return {state, true};
 }

@@ -1,14 +1,14 @@
 #pragma once
 /// @file
 /// The `periodic` model (docs/model.md, section 14): the elastic state of the whole periodic
-/// cell, read from its tables (periodic_table.hpp) at the creep-weighted load X(t), in the
+/// cell, read from its tables (periodic_solution.hpp) at the creep-weighted load X(t), in the
 /// faces the localization models have (the single-level phase, the two-level branch), so
 /// that the classification, the load history and the relaxation integrals are the same code.
 
 #include <optional>
 
 #include "model/problem/contact_problem.hpp"
-#include "model/localization/periodic_table.hpp"
+#include "model/localization/periodic_solution.hpp"
 #include "model/two_level/regime.hpp"
 #include "model/two_level/two_level_branch.hpp"
 
@@ -45,7 +45,7 @@ class PeriodicSingleLevel {
   Touchdown touchdown(double dh) const;
 
  private:
-  const PeriodicTable* table_;
+  const PeriodicSolution* table_;
   PeriodicScales scales_;
 };
 
@@ -67,9 +67,9 @@ class PeriodicBranch final : public TwoLevelBranch {
   bool covered() const;
 
  private:
-  const PeriodicTable* table_;
+  const PeriodicSolution* table_;
   PeriodicScales scales_;
-  PeriodicTable::Row row_;  ///< the table's row of this dh
+  PeriodicSolution::Row row_;  ///< the tables' row of this dh
   double X_star_ = 0.0;
 };
 
