@@ -31,8 +31,16 @@ double n_log2_n(std::uint32_t n) { return n == 0 ? 0.0 : n * std::log2(static_ca
 // Whether the plane's bytes are indistinguishable from uniform noise (deflate would store
 // them anyway, after spending its match search on them).
 bool is_noise(const std::byte* plane, std::size_t n) {
+  // Four histograms over interleaved bytes, added: a run of equal bytes then increments
+  // four counters in turn instead of waiting on one (the same counts).
+  std::array<std::array<std::uint32_t, 256>, 4> partial{};
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    for (int k = 0; k < 4; ++k) ++partial[k][static_cast<std::uint8_t>(plane[i + k])];
+  }
+  for (; i < n; ++i) ++partial[0][static_cast<std::uint8_t>(plane[i])];
   std::array<std::uint32_t, 256> count{};
-  for (std::size_t i = 0; i < n; ++i) ++count[static_cast<std::uint8_t>(plane[i])];
+  for (int v = 0; v < 256; ++v) count[v] = partial[0][v] + partial[1][v] + partial[2][v] + partial[3][v];
   double sum = 0.0;
   for (const std::uint32_t c : count) sum += n_log2_n(c);
   const double entropy = std::log2(static_cast<double>(n)) - sum / static_cast<double>(n);
@@ -61,9 +69,20 @@ std::span<const std::byte> ChunkCompressor::compress(const void* data, std::size
   const std::size_t elements = element_size == 0 ? 0 : size / element_size;
   if (element_size > 1 && elements > 1) {
     shuffled_.resize(size);
-    for (std::size_t b = 0; b < element_size; ++b) {
-      std::byte* out = shuffled_.data() + b * elements;
-      for (std::size_t i = 0; i < elements; ++i) out[i] = in[i * element_size + b];
+    if (element_size == 8) {
+      // Doubles (every float variable of a map): each element read once, its bytes to
+      // their planes.
+      std::byte* plane[8];
+      for (std::size_t b = 0; b < 8; ++b) plane[b] = shuffled_.data() + b * elements;
+      for (std::size_t i = 0; i < elements; ++i) {
+        const std::byte* e = in + 8 * i;
+        for (std::size_t b = 0; b < 8; ++b) plane[b][i] = e[b];
+      }
+    } else {
+      for (std::size_t b = 0; b < element_size; ++b) {
+        std::byte* out = shuffled_.data() + b * elements;
+        for (std::size_t i = 0; i < elements; ++i) out[i] = in[i * element_size + b];
+      }
     }
     // Like HDF5's shuffle, bytes after the last whole element stay as they are.
     for (std::size_t i = elements * element_size; i < size; ++i) shuffled_[i] = in[i];
