@@ -54,7 +54,8 @@ std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
 /// The small-spot table shipped in the source tree (src/app/periodic_tables/), if any for s.
 std::optional<model::SmallSpotTable> shipped_small_spot_table(int s);
 
-/// The small-spot table of s: shipped, else built (progress on stderr unless quiet).
+/// The small-spot table of s: shipped, else built (a line on stderr where that took a second
+/// or more, unless quiet).
 std::shared_ptr<const model::SmallSpotTable> small_spot_table_for(int s, bool quiet = false);
 
 /// The periodic solution of s: the boundary elements' tables on the engine's grid
