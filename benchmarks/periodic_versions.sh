@@ -7,8 +7,9 @@
 #            or the hand-over);
 #   wide     regime sweep over the physical range, l 0.05-20, dh 1e-4-0.3, pbar 1e-8-1e-2,
 #            T 2-10, s 1-3: 12 x 60 x 5 x 120 x 3 = 1,296,000 points;
-#   classify punchsweep.classify over the box grid (4.2e6 points) and at 200,000 scattered
-#            points of the wide range (each its own touchdown), with each build's module.
+#   classify punchsweep.classify over the box grid (4.2e6 points), at 200,000 scattered points
+#            of the wide range (cl-scat; each its own touchdown) and of the box (cl-bscat,
+#            python_classify.py's), with each build's module.
 # Usage: benchmarks/periodic_versions.sh OLD_BUILD NEW_BUILD [REPEATS]
 #   (build folders: BUILD/src/app/punchsweep and BUILD/python)
 set -euo pipefail
@@ -43,7 +44,10 @@ rng = np.random.default_rng(1); n = 200000
 args = (np.exp(rng.uniform(np.log(0.05), np.log(20), n)), np.exp(rng.uniform(np.log(1e-4), np.log(0.3), n)),
         rng.uniform(2, 10, n), np.exp(rng.uniform(np.log(1e-8), np.log(1e-2), n)), rng.integers(1, 4, n).astype(float))
 t = time.perf_counter(); c = punchsweep.classify(*args); scattered = n / (time.perf_counter() - t)
-print(f"{box:.4g} {scattered:.4g}")
+args = (rng.uniform(0.5, 1.25, n), rng.uniform(0.01, 0.12, n), rng.uniform(2, 10, n),
+        np.exp(rng.uniform(np.log(0.005), np.log(0.08), n)), rng.integers(1, 4, n).astype(float))
+t = time.perf_counter(); c = punchsweep.classify(*args); box_scattered = n / (time.perf_counter() - t)
+print(f"{box:.4g} {scattered:.4g} {box_scattered:.4g}")
 EOF
 }
 
@@ -62,13 +66,14 @@ for r in $(seq "$repeats"); do
     else read -r b _ <<<"$(one "$new")"; read -r a _ <<<"$(one "$old")"; fi
     printf '%-9s %-11.4g %-11.4g %.3f\n' "$grid" "$a" "$b" "$(awk -v a="$a" -v b="$b" 'BEGIN { print b / a }')" | tee -a "$work/ratios"
   done
-  if (( r % 2 )); then read -r oa os <<<"$(classify "$old")"; read -r na ns <<<"$(classify "$new")"
-  else read -r na ns <<<"$(classify "$new")"; read -r oa os <<<"$(classify "$old")"; fi
+  if (( r % 2 )); then read -r oa os ob <<<"$(classify "$old")"; read -r na ns nb <<<"$(classify "$new")"
+  else read -r na ns nb <<<"$(classify "$new")"; read -r oa os ob <<<"$(classify "$old")"; fi
   printf '%-9s %-11.4g %-11.4g %.3f\n' "cl-box" "$oa" "$na" "$(awk -v a="$oa" -v b="$na" 'BEGIN { print b / a }')" | tee -a "$work/ratios"
   printf '%-9s %-11.4g %-11.4g %.3f\n' "cl-scat" "$os" "$ns" "$(awk -v a="$os" -v b="$ns" 'BEGIN { print b / a }')" | tee -a "$work/ratios"
+  printf '%-9s %-11.4g %-11.4g %.3f\n' "cl-bscat" "$ob" "$nb" "$(awk -v a="$ob" -v b="$nb" 'BEGIN { print b / a }')" | tee -a "$work/ratios"
 done
 echo "median new/old:"
-for row in box wide cl-box cl-scat; do
+for row in box wide cl-box cl-scat cl-bscat; do
   awk -v r="$row" '$1 == r { print $4 }' "$work/ratios" | sort -g |
     awk -v r="$row" '{ v[NR] = $1 } END { printf "  %-9s %.3f (of %d runs)\n", r, (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2), NR }'
 done

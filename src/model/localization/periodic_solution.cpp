@@ -18,9 +18,16 @@ namespace punchsweep::model {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Samples of the solution's curve past the small-spot table's last.
+constexpr int kPast = 2;
 
-/// Samples of the band at which the constructor checks that the blended h increases.
-constexpr int kBandChecks = 400;
+/// 1 below the band [from, to], 0 above, the smooth step 1 - u^2 (3 - 2 u) within.
+double step_down(double v, double from, double to) {
+  if (v <= from) return 1.0;
+  if (v >= to) return 0.0;
+  const double u = (v - from) / (to - from);
+  return 1.0 - u * u * (3.0 - 2.0 * u);
+}
 
 }  // namespace
 
@@ -31,106 +38,60 @@ PeriodicSolution::PeriodicSolution(std::shared_ptr<const PeriodicTable> tables, 
     throw std::invalid_argument("the periodic tables are of s = " + std::to_string(tables_->s) +
                                 " and the small-spot table of s = " + std::to_string(small_->s));
   }
-  v_gap_hand_ = small_->v_gap_hand;
-  v_gap_top_ = small_->v_gap_top;
-  v_hand_ = small_->v_hand;
-  v_top_ = small_->v_top;
-  xi_top_ = small_->xi_top();
-  xi_gap_hand_ = small_->xi_gap_hand();
+  const SmallSpotTable& t = *small_;
+  v_hand_ = t.v_hand;
+  v_top_ = t.v_top;
+  xi_top_ = t.xi_top();
+  xi_gap_hand_ = t.xi_gap_hand();
   if (!(v_top_ < tables_->v_full)) throw std::invalid_argument("the small-spot table reaches past full contact");
   // The blends of the two levels read the boundary elements' surface at delta itself, which
   // needs the gap's band below theirs (h is then the boundary elements' alone).
-  if (!(v_gap_top_ <= v_hand_)) throw std::invalid_argument("the small-spot table's gap band overlaps its other band");
-  h_hand_ = small_->single(small_->xi_gap_hand()).h;
-  h_top_ = tables_->gap(small_->xi_gap_top());
-  double previous = h_hand_;
-  for (int k = 1; k <= kBandChecks; ++k) {
-    const double h = single(ipow(v_gap_hand_ + (v_gap_top_ - v_gap_hand_) * k / kBandChecks, s() + 1)).h;
-    if (!(h > previous)) {
+  if (!(t.v_gap_top <= v_hand_)) throw std::invalid_argument("the small-spot table's gap band overlaps its other band");
+  // The single level below v_top: at the small-spot table's samples (and two more past v_top,
+  // so that the cubic there is centred as the boundary elements' is), the small spots' ratios
+  // below the bands, the blends within, the boundary elements' above; read by the same cubic
+  // as the small-spot table's own (equal to it wherever its four samples lie below the gap's
+  // band), and equal to the boundary elements' curve at v_top.
+  const RatioCurve& own = t.curve();
+  std::vector<double> a1(own.a1_ratio()), h(own.h_ratio());
+  const double step = own.grid().step;
+  const int sampled = static_cast<int>(h.size());
+  a1.resize(static_cast<std::size_t>(sampled + kPast), 0.0);
+  h.resize(static_cast<std::size_t>(sampled + kPast), 0.0);
+  for (int k = 1; k < sampled + kPast; ++k) {
+    const double v = k < sampled ? t.sample_v(k) : step * k;
+    const double w_gap = step_down(v, t.v_gap_hand, t.v_gap_top), w = step_down(v, v_hand_, v_top_);
+    if (w_gap == 1.0 && w == 1.0) continue;
+    const PeriodicState tables = tables_->single(ipow(v, s() + 1));
+    h[k] = w_gap * h[k] + (1.0 - w_gap) * tables.h / (own.h_per_v() * ipow(v, s()));
+    a1[k] = w * a1[k] + (1.0 - w) * tables.a1 / (own.a_per_v() * v);
+  }
+  if (!(step * (static_cast<double>(h.size()) - 1.0) < tables_->v_full)) {
+    throw std::invalid_argument("the small-spot table reaches past full contact");
+  }
+  const int count = static_cast<int>(h.size());
+  curve_ = RatioCurve(s(), step * (count - 1), std::move(a1), std::move(h));
+  const std::vector<double>& samples = curve_.h_samples();
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    if (!(samples[k] > samples[k - 1])) {
       throw std::invalid_argument("the blended h of s = " + std::to_string(s()) + " does not increase in its hand-over");
     }
-    previous = h;
   }
+  h_top_ = curve_.gap(v_top_);
 }
-
-namespace {
-/// 1 below the band [from, to], 0 above, the smooth step 1 - u^2 (3 - 2 u) within.
-double step_down(double v, double from, double to) {
-  if (v <= from) return 1.0;
-  if (v >= to) return 0.0;
-  const double u = (v - from) / (to - from);
-  return 1.0 - u * u * (3.0 - 2.0 * u);
-}
-}  // namespace
 
 double PeriodicSolution::small_weight(double v) const { return step_down(v, v_hand_, v_top_); }
-double PeriodicSolution::small_gap_weight(double v) const { return step_down(v, v_gap_hand_, v_gap_top_); }
 
 PeriodicState PeriodicSolution::single(double xi) const {
   if (!(xi > 0.0) || xi >= xi_top_) return tables_->single(xi);
-  const double v = iroot(xi, s() + 1);
-  if (v <= v_gap_hand_) return small_->single_at(xi, v);  // below both bands
-  PeriodicState out;
-  out.Q1 = xi;
-  if (v <= v_hand_) {
-    // The gap's band, and above it: h blended or the boundary elements', a1 the small spots'.
-    out.h = gap(xi, v);
-    out.a1 = small_->radius_at(v);
-    return out;
-  }
-  // The radii's band (above the gap's): h the boundary elements'.
-  const PeriodicState tables = tables_->single(xi);
-  const double w = small_weight(v);
-  out.h = tables.h;
-  out.a1 = w * small_->radius_at(v) + (1.0 - w) * tables.a1;
-  return out;
-}
-
-double PeriodicSolution::gap(double xi, double v) const {
-  if (v <= v_gap_hand_) return small_->gap_at(v);
-  const double tables = xi < xi_top_ ? tables_->gap_at(v) : tables_->gap(xi);
-  if (v >= v_gap_top_) return tables;
-  const double w = small_gap_weight(v);
-  return w * small_->gap_at(v) + (1.0 - w) * tables;
+  return curve_.at(xi, iroot(xi, s() + 1));
 }
 
 double PeriodicSolution::touchdown(double delta) const {
   if (!(delta > 0.0)) return 0.0;
   if (delta >= delta_hidden()) return kInf;
-  if (delta >= h_top_) return *tables_->touchdown(delta);  // v_lo = 0: found
-  if (delta <= h_hand_) return *small_->touchdown(delta);
-  // In the gap's band: the root of the blended h, which increases (the constructor's check),
-  // by Newton with its slope from the boundary elements' own root (within about 1e-7 of it),
-  // kept inside the bracket the steps find. A step below 1e-9 v leaves an error of its
-  // square (Newton's quadratic convergence), below the rounding of v: the second step ends.
-  double v = std::clamp(tables_->touchdown_of_gap(delta), v_gap_hand_, v_gap_top_);
-  double lo = v_gap_hand_, hi = v_gap_top_;
-  for (int k = 0; k < 8; ++k) {
-    double slope = 0.0;
-    const double value = gap_in_band(v, &slope) - delta;
-    if (value == 0.0) return ipow(v, s() + 1);
-    (value < 0.0 ? lo : hi) = v;
-    const double next = v - value / slope;
-    if (!(slope > 0.0) || !(next > lo && next < hi)) break;
-    if (std::abs(next - v) <= 1e-9 * v) return ipow(next, s() + 1);
-    v = next;
-  }
-  // Not settled: Brent's method in the bracket found.
-  const auto f = [&](double w) {
-    double ignored = 0.0;
-    return gap_in_band(w, &ignored) - delta;
-  };
-  const RootResult root = brent(f, lo, hi, f(lo), f(hi), 1e-15 * v_gap_top_);
-  return ipow(root.x, s() + 1);
-}
-
-double PeriodicSolution::gap_in_band(double v, double* slope) const {
-  const double u = (v - v_gap_hand_) / (v_gap_top_ - v_gap_hand_);
-  const double w = 1.0 - u * u * (3.0 - 2.0 * u), dw = -6.0 * u * (1.0 - u) / (v_gap_top_ - v_gap_hand_);
-  double small_slope = 0.0, tables_slope = 0.0;
-  const double small = small_->gap_at(v, &small_slope), tables = tables_->gap_at(v, &tables_slope);
-  *slope = dw * (small - tables) + w * small_slope + (1.0 - w) * tables_slope;
-  return w * small + (1.0 - w) * tables;
+  if (delta < h_top_) return *curve_.touchdown(delta);
+  return *tables_->touchdown(delta);  // v_lo = 0: found; at or above v_top (h_top_ is theirs there)
 }
 
 PeriodicSolution::Row PeriodicSolution::row(double delta, double xi_star) const {
@@ -155,11 +116,15 @@ PeriodicState PeriodicSolution::two_level(double xi, const Row& row) const {
     out = tables_->two_level(xi, row.table);
   } else {
     const double v = iroot(std::max(xi, 0.0), s() + 1);
-    // The small-spot table at eta = delta / h(xi), h the blended gap, so that it touches down
-    // where that h says. Its blend with the boundary elements' surface lies above the gap's
-    // band, where h is theirs: their surface is read at delta, as it is alone.
-    out = v <= v_gap_hand_ ? small_->two_level_below(xi, v, row.delta)
-                           : small_->two_level_at(xi, v, std::clamp(row.delta / gap(xi, v), 0.0, 1.0));
+    // The small-spot table at eta = delta / h(xi), h the solution's own gap (one placing of v
+    // serves both: the solution's curve has the small-spot table's samples), so that it
+    // touches down where that h says. Its blend with the boundary elements' surface lies
+    // above the gap's band, where h is the boundary elements' own: their surface is read at
+    // delta, from the touchdown said here (row()).
+    const GridPosition at = curve_.grid().at(v);  // the same grid, kPast samples longer
+    const double h = curve_.gap(v, Stencil(at, curve_.grid().count));
+    out = small_->two_level_with(xi, v, h > 0.0 ? std::clamp(row.delta / h, 0.0, 1.0) : 0.0,
+                                 Stencil(at, small_->curve().grid().count));
     if (v > v_hand_) {
       const double w = small_weight(v);
       const PeriodicState tables = tables_->two_level(xi, row.table);

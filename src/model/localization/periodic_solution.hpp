@@ -6,22 +6,27 @@
 /// hand-over between them. What the `periodic` model reads (two_level/periodic_model.hpp).
 ///
 /// The hand-over: over v = xi^(1/(s+1)) in a band (the small-spot table's) every field is
-///     w(v) small + (1 - w(v)) tables,     w = 1 - u^2 (3 - 2 u), u = (v - v_from)/(v_to - v_from),
-/// continuous with its first derivative; below the band the small-spot table alone, above
-/// it the boundary elements' alone. The gap h has a band of its own, lower (the single
-/// level's contact radius from about 0.1 l to 0.15 l, where both give h within 5e-6 of the
-/// boundary elements at N = 2048), the radii and loads theirs (about 0.3 l to 0.35 l, where
-/// both give loads within 1e-4 of the load and radii within 1e-3; the bands of each s are
-/// two_level/small_spot_builder.hpp's hand_over_radii). The two levels' states are
-/// read by the small-spot table at eta = delta / h(xi), h the blended gap, so that they touch
-/// down exactly where that h says; their blend lies above the gap's band, where h is the
-/// boundary elements' own.
+///     w(v) small + (1 - w(v)) tables,     w = 1 - u^2 (3 - 2 u), u = (v - v_from)/(v_to - v_from);
+/// below the band the small-spot table alone, above it the boundary elements' alone. The gap
+/// h has a band of its own, lower (the single level's contact radius from about 0.1 l to
+/// 0.15 l, where both give h within 5e-6 of the boundary elements at N = 2048), the radii
+/// and loads theirs (about 0.3 l to 0.35 l, where both give loads within 1e-4 of the load
+/// and radii within 1e-3; the bands of each s are two_level/small_spot_builder.hpp's
+/// hand_over_radii).
+/// The single level below v_top is one curve (ratio_curve.hpp) at the small-spot table's
+/// samples, two more past v_top: the small spots' ratios below the bands, the blends in
+/// them, the boundary elements' above; one reading per state, and its touchdown the small
+/// spots' own inversion. The two levels are read in the small-spot table at eta = delta / h,
+/// h that curve's, so that they touch down exactly where it says; the boundary elements'
+/// surface, read from the radii's band up (above the gap's, where h is theirs), from the
+/// touchdown said here (row()).
 
 #include <functional>
 #include <memory>
 #include <optional>
 
 #include "model/localization/periodic_table.hpp"
+#include "model/localization/ratio_curve.hpp"
 #include "model/localization/small_spot_table.hpp"
 
 namespace punchsweep::model {
@@ -63,24 +68,20 @@ class PeriodicSolution {
   /// elements' record where they are read; small spots' pressures grow with their load).
   bool pressure_monotone(double xi_a, double xi_b, const Row& row) const;
 
-  /// The weight of the small-spot table at v (1 below the band, 0 above): of the radii and
-  /// loads, and of the gap h.
+  /// The weight of the small-spot table's two levels at v (1 below their band, 0 above).
   double small_weight(double v) const;
-  double small_gap_weight(double v) const;
+
+  /// The single level below v_top (the small-spot table's samples, blended in the bands).
+  const RatioCurve& curve() const { return curve_; }
 
  private:
-  /// h alone at xi, v = xi^(1/(s+1)).
-  double gap(double xi, double v) const;
-  /// h in the gap's band at v, and dh/dv.
-  double gap_in_band(double v, double* slope) const;
-
   std::shared_ptr<const PeriodicTable> tables_;
   std::shared_ptr<const SmallSpotTable> small_;
-  double v_gap_hand_ = 0.0, v_gap_top_ = 0.0;
+  RatioCurve curve_;
   double v_hand_ = 0.0, v_top_ = 0.0;
   double xi_top_ = 0.0;  ///< v_top^(s+1): above it the boundary elements' tables alone
   double xi_gap_hand_ = 0.0;
-  double h_hand_ = 0.0, h_top_ = 0.0;  ///< the blended h at the gap band's ends
+  double h_top_ = 0.0;   ///< h at v_top
 };
 
 /// Where the model gets the solution of s: set by the application (the shipped tables, a

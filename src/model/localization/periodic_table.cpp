@@ -28,27 +28,6 @@ double PeriodicTable::delta_hidden() const {
 }
 double PeriodicTable::xi_full_single() const { return ipow(v_full, s + 1); }
 
-double PeriodicTable::gap(double xi) const { return xi > 0.0 ? gap_at(iroot(xi, s + 1)) : 0.0; }
-
-double PeriodicTable::gap_at(double v) const {
-  if (v >= v_full) return delta_hidden();
-  const int count = static_cast<int>(h1.size());
-  return Stencil(v_grid_.at(std::max(v, v_lo)), count)(h1.data());
-}
-
-double PeriodicTable::gap_at(double v, double* slope) const {
-  const int count = static_cast<int>(h1.size());
-  if (!(v > v_lo) || v >= v_full) {
-    *slope = 0.0;
-    return v >= v_full ? delta_hidden() : gap_at(v);
-  }
-  const GridPosition at = v_grid_.at(v);
-  const Stencil stencil(at, count);
-  const double* p = &h1[static_cast<std::size_t>(stencil.first)];
-  *slope = cubic_slope_weights(at.u + (at.i - stencil.first - 1)).apply(p[0], p[1], p[2], p[3]) / v_grid_.step;
-  return stencil.w.apply(p[0], p[1], p[2], p[3]);
-}
-
 PeriodicState PeriodicTable::single(double xi) const {
   PeriodicState out;
   out.Q1 = xi;
@@ -65,8 +44,6 @@ PeriodicState PeriodicTable::single(double xi) const {
   out.a1 = at(a11.data());
   return out;
 }
-
-double PeriodicTable::touchdown_of_gap(double delta) const { return touchdown_v(delta); }
 
 double PeriodicTable::touchdown_v(double delta) const {
   // h increases from sample to sample: the interval that holds delta, then the root of the

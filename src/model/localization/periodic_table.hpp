@@ -76,15 +76,8 @@ class PeriodicTable {
   double delta_hidden() const;
   double xi_full_single() const;
 
-  /// Single level at xi >= 0: h, a1, Q1 = xi; h alone.
+  /// Single level at xi >= 0: h, a1, Q1 = xi.
   PeriodicState single(double xi) const;
-  double gap(double xi) const;
-  /// The same at v = xi^(1/(s+1)) (the caller's, computed once).
-  double gap_at(double v) const;
-  /// The same and dh/dv there (0 outside the samples).
-  double gap_at(double v, double* slope) const;
-  /// The v at which the single level's curve reaches delta (its last sample, v_full, past it).
-  double touchdown_of_gap(double delta) const;
   /// The touchdown load xi*(delta) (h(xi*) = delta); +infinity for delta >= delta_hidden;
   /// empty below the table (delta < h(v_lo)) unless delta == 0 (xi* = 0); v_lo is 0 in the
   /// tables the builder makes (the first sample is the unloaded state, exactly).

@@ -18,58 +18,28 @@ double SmallSpotTable::xi_gap_hand() const { return ipow(v_gap_hand, s + 1); }
 double SmallSpotTable::xi_gap_top() const { return ipow(v_gap_top, s + 1); }
 double SmallSpotTable::v_of(double xi) const { return iroot(std::max(xi, 0.0), s + 1); }
 
-double SmallSpotTable::isolated_radius(double xi) const { return a_per_v_ * v_of(xi); }
-double SmallSpotTable::isolated_depth(double xi) const { return K_d_ * ipow(isolated_radius(xi), s); }
-
-double SmallSpotTable::gap_at(double v) const {
-  return h_per_v_ * ipow(v, s) * Stencil(v_grid_.at(v), M + 1)(h_single.data());
-}
-
-double SmallSpotTable::radius_at(double v) const {
-  return a_per_v_ * v * Stencil(v_grid_.at(v), M + 1)(a1_single.data());
-}
-
-double SmallSpotTable::gap_at(double v, double* slope) const {
-  const GridPosition at = v_grid_.at(v);
-  const Stencil stencil(at, M + 1);
-  const double* p = &h_single[static_cast<std::size_t>(stencil.first)];
-  const double ratio = stencil.w.apply(p[0], p[1], p[2], p[3]);
-  const double ratio_slope = cubic_slope_weights(at.u + (at.i - stencil.first - 1)).apply(p[0], p[1], p[2], p[3]) / v_grid_.step;
-  const double vs1 = ipow(v, s - 1);
-  *slope = h_per_v_ * vs1 * (s * ratio + v * ratio_slope);
-  return h_per_v_ * vs1 * v * ratio;
-}
+double SmallSpotTable::isolated_radius(double xi) const { return curve_.a_per_v() * v_of(xi); }
+double SmallSpotTable::isolated_depth(double xi) const { return curve_.h_per_v() * ipow(v_of(xi), s); }
 
 PeriodicState SmallSpotTable::single_at(double xi, double v) const {
-  PeriodicState out;
-  out.Q1 = xi;
-  if (!(xi > 0.0)) return out;
-  const Stencil at(v_grid_.at(v), M + 1);
-  out.a1 = a_per_v_ * v * at(a1_single.data());
-  out.h = h_per_v_ * ipow(v, s) * at(h_single.data());
+  PeriodicState out = curve_.at(xi, v);
   out.in_range = v <= v_top * (1.0 + 1e-12);
   return out;
 }
 
 PeriodicState SmallSpotTable::two_level_at(double xi, double v, double eta) const {
   if (!(xi > 0.0)) return {};
-  return two_level_with(xi, v, eta, Stencil(v_grid_.at(v), M + 1));
-}
-
-PeriodicState SmallSpotTable::two_level_below(double xi, double v, double delta) const {
-  if (!(xi > 0.0)) return {};
-  const Stencil along(v_grid_.at(v), M + 1);
-  const double h = h_per_v_ * ipow(v, s) * along(h_single.data());
-  return two_level_with(xi, v, h > 0.0 ? delta / h : 0.0, along);
+  return two_level_with(xi, v, eta, curve_.stencil(v));
 }
 
 PeriodicState SmallSpotTable::two_level_with(double xi, double v, double eta, const Stencil& along) const {
   PeriodicState out;
+  if (!(xi > 0.0)) return out;
   const double zeta = iroot(std::clamp(1.0 - eta, 0.0, 1.0), s);
   const Stencil across(zeta_grid_.at(zeta), Z + 1);
   // Across zeta on each of the four v samples about v, then along v.
   const Three sum = bicubic3(fields_.data(), Z + 1, along.first, along.w, across);
-  const double a0 = a_per_v_ * v;
+  const double a0 = curve_.a_per_v() * v;
   out.a1 = a0 * sum.f0;
   out.a2 = a0 * std::clamp(sum.f1, 0.0, sum.f0);
   out.Q2 = xi * std::clamp(sum.f2, 0.0, 0.5);
@@ -80,32 +50,7 @@ PeriodicState SmallSpotTable::two_level_with(double xi, double v, double eta, co
 
 PeriodicState SmallSpotTable::single(double xi) const { return single_at(xi, v_of(xi)); }
 PeriodicState SmallSpotTable::two_level(double xi, double eta) const { return two_level_at(xi, v_of(xi), eta); }
-
-std::optional<double> SmallSpotTable::touchdown(double delta) const {
-  if (!(delta > 0.0)) return 0.0;
-  if (delta > h_nodes_.back()) return std::nullopt;
-  // h = h0(v) rho(v), h0 = h_per_v v^s: (h / h_per_v)^(1/s) = v rho^(1/s) is nearly linear in
-  // v, so its chord finds the interval that holds delta and a start within about 1e-6 of
-  // the root; then Newton on the curve gap_at() evaluates, h0(v) times the interval's cubic
-  // of rho, one or two steps.
-  const double target = iroot(delta / h_per_v_, s);
-  const int i = std::clamp(static_cast<int>(std::upper_bound(root_nodes_.begin(), root_nodes_.end(), target) -
-                                            root_nodes_.begin()) - 1,
-                           0, M - 1);
-  const IntervalCubic ratio(h_single.data(), i, M + 1);
-  const double step = v_top / M;
-  const double chord = root_nodes_[static_cast<std::size_t>(i) + 1] - root_nodes_[static_cast<std::size_t>(i)];
-  const double start = chord > 0.0 ? std::clamp((target - root_nodes_[static_cast<std::size_t>(i)]) / chord, 0.0, 1.0) : 0.5;
-  const double u = newton_in_interval(
-      [&](double w, double* rate) {
-        const double x = w + ratio.shift, v = step * (i + w);
-        const double vs1 = ipow(v, s - 1), r = ratio.value(x);
-        *rate = h_per_v_ * vs1 * (s * step * r + v * ratio.slope(x));
-        return h_per_v_ * vs1 * v * r - delta;
-      },
-      start);
-  return ipow(step * (i + u), s + 1);
-}
+std::optional<double> SmallSpotTable::touchdown(double delta) const { return curve_.touchdown(delta); }
 
 std::pair<double, double> SmallSpotTable::isolated_two_level(int s, double eta) {
   // y2 from (1 - y2^(s+1))^(s/(s+1)) - y2^s = eta, decreasing in y2 on [0, 2^(-1/(s+1))].
@@ -185,8 +130,9 @@ std::optional<SmallSpotTable> SmallSpotTable::from_tables(const std::vector<doub
     }
   }
   t.finish();
+  const std::vector<double>& h = t.curve_.h_samples();
   for (std::size_t k = 1; k < M1; ++k) {
-    if (!(t.h_nodes_[k] > t.h_nodes_[k - 1])) return std::nullopt;
+    if (!(h[k] > h[k - 1])) return std::nullopt;
   }
   return t;
 }
@@ -197,16 +143,14 @@ void SmallSpotTable::finish() {
   const Shape unit{s, 1.0};
   K_P_ = load_coefficient(unit);
   K_d_ = depth_coefficient(unit);
-  a_per_v_ = std::pow(K_P_, -1.0 / (s + 1));
-  h_per_v_ = K_d_ * ipow(a_per_v_, s);
-  v_grid_ = UniformGrid(0.0, v_top, M + 1);
   zeta_grid_ = UniformGrid(0.0, 1.0, Z + 1);
-  h_nodes_.clear();
   fields_.clear();
-  if (h_single.size() != static_cast<std::size_t>(M + 1)) return;  // the builder, before the samples
-  for (int k = 0; k <= M; ++k) h_nodes_.push_back(gap_at(sample_v(k)));
-  root_nodes_.clear();
-  for (int k = 0; k <= M; ++k) root_nodes_.push_back(sample_v(k) * iroot(h_single[k], s));
+  // The single level's samples: the builder reads the isolated punch's scales before it has
+  // them (ratios of one).
+  const bool sampled = h_single.size() == static_cast<std::size_t>(M + 1);
+  curve_ = RatioCurve(s, v_top, sampled ? a1_single : std::vector<double>(static_cast<std::size_t>(M + 1), 1.0),
+                      sampled ? h_single : std::vector<double>(static_cast<std::size_t>(M + 1), 1.0));
+  if (!sampled) return;
   for (std::size_t k = 0; k < a1.size(); ++k) fields_.insert(fields_.end(), {a1[k], a2[k], q2[k]});
 }
 

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "model/localization/periodic_table.hpp"
+#include "model/localization/ratio_curve.hpp"
 #include "model/numerics/uniform_cubic.hpp"
 
 namespace punchsweep::model {
@@ -71,17 +72,14 @@ class SmallSpotTable {
   /// Two levels at 0 <= xi <= xi_top() and eta = delta / h(xi) in [0, 1] (clamped): a1, a2,
   /// Q1, Q2 (h not set).
   PeriodicState two_level(double xi, double eta) const;
-  /// The same at v = xi^(1/(s+1)) (the caller's, computed once): h alone, the single
-  /// level, the two levels.
-  double gap_at(double v) const;
-  double radius_at(double v) const;
-  /// h and dh/dv at v.
-  double gap_at(double v, double* slope) const;
+  /// The same at v = xi^(1/(s+1)) (the caller's, computed once); the two levels with the
+  /// stencil of the samples about v already placed (curve().stencil(v): the periodic solution
+  /// reads its own curve on the same grid).
   PeriodicState single_at(double xi, double v) const;
   PeriodicState two_level_at(double xi, double v, double eta) const;
-  /// The two levels at height difference delta where h is this table's own (below the
-  /// gap's hand-over): eta = delta / h(xi), read with h from one placing of v.
-  PeriodicState two_level_below(double xi, double v, double delta) const;
+  PeriodicState two_level_with(double xi, double v, double eta, const Stencil& along) const;
+  /// The single level's curve.
+  const RatioCurve& curve() const { return curve_; }
   /// The load at which h(xi) = delta (v <= v_top), by the curve single() evaluates; empty
   /// above h(xi_top).
   std::optional<double> touchdown(double delta) const;
@@ -102,15 +100,10 @@ class SmallSpotTable {
   void finish();
 
  private:
-  PeriodicState two_level_with(double xi, double v, double eta, const Stencil& along) const;
-
   double K_P_ = 1.0, K_d_ = 1.0;
-  UniformGrid v_grid_, zeta_grid_;
-  double a_per_v_ = 1.0;         ///< a0 / v = K_P^(-1/(s+1))
-  double h_per_v_ = 1.0;         ///< h0 / v^s = K_d (a0 / v)^s
-  std::vector<double> h_nodes_;  ///< h at each v sample
-  std::vector<double> root_nodes_;  ///< (h / h_per_v)^(1/s) at each v sample, for touchdown()
-  std::vector<double> fields_;   ///< a1, a2, q2 of each sample side by side, for two_level_at()
+  RatioCurve curve_;
+  UniformGrid zeta_grid_;
+  std::vector<double> fields_;  ///< a1, a2, q2 of each sample side by side, for two_level_with()
   double v_of(double xi) const;
 };
 
