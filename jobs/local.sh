@@ -18,6 +18,10 @@ if [ -z "$binary" ]; then
   bash "$root/cmake/install-deps.sh"
   cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
   cmake --build "$root/build" -j "$cores" --target punchsweep > /dev/null
+  # The Python module too (README, "From Python"), where pybind11 was found to build it.
+  if cmake --build "$root/build" --target help 2>/dev/null | grep -q punchsweep_python; then
+    cmake --build "$root/build" -j "$cores" --target punchsweep_python > /dev/null
+  fi
   binary="$root/build/src/app/punchsweep"
 fi
 

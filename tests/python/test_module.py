@@ -521,3 +521,17 @@ def test_point_takes_lengths_and_pressures_with_units():
     assert a.t_star == b.t_star and np.array_equal(a.series["a1"], b.series["a1"])
     with pytest.raises(ValueError, match="needs R, the punch"):
         punchsweep.point(l="150um", dh=0.02, T=2.5, pbar=0.06, s=2)
+
+
+def test_a_package_without_its_compiled_part_says_what_to_build(tmp_path):
+    """The package's Python files alone (what the main job left before it built the module
+    too, issue 35 item 10b): the import says which target builds `_core`, not a circular
+    import."""
+    package = tmp_path / "punchsweep"
+    package.mkdir()
+    package.joinpath("__init__.py").write_text(Path(punchsweep.__file__).read_text())
+    r = subprocess.run([sys.executable, "-c", "import punchsweep"], capture_output=True, text=True,
+                       env={**os.environ, "PYTHONPATH": str(tmp_path)})
+    assert r.returncode != 0
+    assert "cmake --build build --target punchsweep_python" in r.stderr, r.stderr
+    assert "circular" not in r.stderr

@@ -32,7 +32,14 @@ from typing import Any
 
 import numpy as np
 
-from . import _core
+try:
+    from . import _core
+except ImportError as error:  # the package's Python files without its compiled part
+    if "_core" not in str(error):
+        raise
+    raise ImportError(f"punchsweep's compiled part (_core) is not built in {Path(__file__).resolve().parent}: build "
+                      "it with `cmake --build build --target punchsweep_python` (bash jobs/local.sh and "
+                      "bash tests/run-all.sh do)") from None
 
 __all__ = ["point", "reference", "classify", "open_map", "fit_material", "Material", "PointResult",
            "ReferenceResult", "FitResult", "Classification", "REGIMES"]
