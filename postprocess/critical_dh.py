@@ -354,7 +354,7 @@ def main(argv: list[str]) -> int:
         raise pm.MapError(f"--touch-by '{args.touch_by}': not a comma-separated list of times") from None
     if any(not (t > 0 and math.isfinite(t)) for t in times):
         raise pm.MapError(f"--touch-by '{args.touch_by}': each time must be > 0 and finite")
-    out = pm.check_output(args.output)
+    out = pm.check_output(args.output, inputs=[args.map])
     with pm.open_map(args.map) as ds:
         pm.require_axes(ds, ("dh", args.against), f"critical_dh.py --against {args.against}")
         at = pm.parse_at(args.at, ds)
@@ -370,7 +370,7 @@ def main(argv: list[str]) -> int:
         if times and "t_star" not in ds.variables:
             raise pm.MapError(f"'{args.map}' has no t_star variable (needed by --touch-by)")
         fig = render(ds, args.against, fixed, times, args.dh_scale)
-        pm.save_figure(fig, out, dpi=FIG_DPI)
+        pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.map])
     print(f"critical_dh.py: wrote {out}")
     return 0
 

@@ -122,7 +122,7 @@ def from_map(args: argparse.Namespace) -> tuple[dict, str]:
     return result, f"{where} (from {Path(args.map).name})"
 
 
-def draw(result: dict, title: str, output: Path, markers: bool) -> None:
+def draw(result: dict, title: str, output: Path, markers: bool, inputs=()) -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -150,7 +150,7 @@ def draw(result: dict, title: str, output: Path, markers: bool) -> None:
     axes[1].legend()
     valid = "" if result["valid"] else "  [FLAGGED: " + result["reason"] + "]"
     fig.suptitle(f"{title}: {result['regime']}, {t_star_text(result)}{valid}", fontsize=10)
-    pm.save_figure(fig, output, dpi=120)
+    pm.save_figure(fig, output, dpi=120, inputs=inputs)
 
 
 def t_star_text(result: dict) -> str:
@@ -159,11 +159,14 @@ def t_star_text(result: dict) -> str:
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    output = pm.check_output(args.output)
+    inputs = [args.map] if args.map else []
+    output = pm.check_output(args.output, inputs=inputs)
+    if args.json:
+        pm.check_output(args.json, suffixes=(), inputs=inputs + [output])
     result, title = from_map(args) if args.map else from_engine(args)
     if args.json:
-        Path(args.json).write_text(json.dumps(result, indent=2))
-    draw(result, title, output, markers=bool(args.map))
+        pm.write_whole(args.json, lambda tmp: Path(tmp).write_text(json.dumps(result, indent=2)), inputs)
+    draw(result, title, output, markers=bool(args.map), inputs=inputs)
     print(f"evolution.py: wrote {output} ({result['regime']}, {t_star_text(result)})")
     return 0
 

@@ -390,9 +390,9 @@ def render(data: dict, plotly_js: str) -> str:
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    out = Path(args.output)
-    if out.suffix.lower() not in (".html", ".htm"):
+    if Path(args.output).suffix.lower() not in (".html", ".htm"):
         raise pm.MapError(f"-o {args.output}: the page is HTML; name it .html")
+    out = pm.check_output(args.output, suffixes=(), inputs=[args.map])
     if not PLOTLY_JS.is_file():
         raise pm.MapError(f"{PLOTLY_JS} not found: install Debian's python3-plotly (bash cmake/install-deps.sh)")
     ds = pm.open_map(args.map)
@@ -405,9 +405,7 @@ def main(argv: list[str]) -> int:
         biggest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
         raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g} (plotly.js is 8.7 MB of "
                           f"it): coarsen the map, e.g. --every {biggest}=2, or raise --max-mb")
-    tmp = out.with_name(out.name + ".tmp")
-    tmp.write_text(page, encoding="utf-8")
-    tmp.replace(out)
+    pm.write_whole(out, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"), inputs=[args.map])
     print(f"explore.py: wrote {out} ({size_mb:.1f} MB: plotly.js 8.7 MB, the map {size_mb - 8.66:.1f} MB)")
     return 0
 

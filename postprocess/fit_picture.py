@@ -149,8 +149,9 @@ def render(d: dict):
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
+    out = pm.check_output(args.output, inputs=[args.details])
     fig = render(read_details(args.details))
-    fig.savefig(args.output, dpi=FIG_DPI)
+    pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.details])
     print(f"wrote {args.output}")
     return 0
 

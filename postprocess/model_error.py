@@ -238,7 +238,7 @@ def main(argv: list[str]) -> int:
     p.add_argument("--y", default="dh", metavar="AXIS", help="slice axis up (default dh)")
     pm.add_at_option(p, "fix the other axes of the slice")
     args = p.parse_args(argv)
-    outputs = [pm.check_output(o) for o in (args.errors_plot, args.slice_plot) if o]
+    outputs = [pm.check_output(o, inputs=[args.map]) for o in (args.errors_plot, args.slice_plot) if o]
     with pm.open_map(args.map) as ds:
         x = pm.parse_axis(ds, args.x, "--x")
         y = pm.parse_axis(ds, args.y, "--y")

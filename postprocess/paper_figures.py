@@ -50,8 +50,8 @@ def open_sweep(binary: str, config: str, out: Path, axes: tuple[str, ...]):
 
 
 def save(out: Path, name: str, fig, data: dict) -> None:
-    fig.savefig(out / f"{name}.png", dpi=120)
-    (out / f"{name}.json").write_text(json.dumps(data, indent=1))
+    pm.save_figure(fig, out / f"{name}.png", dpi=120)
+    pm.write_whole(out / f"{name}.json", lambda tmp: Path(tmp).write_text(json.dumps(data, indent=1)))
 
 
 def fig9_2(binary, out, plt):
@@ -180,8 +180,9 @@ def table9_1(binary, out):
     moduli = ",".join(repr(1.0 / T) for T in creep_ratios)
     args = ["elastic", "--l", "0.75", "--dh", "0.05", "--pbar", "0.06", "--s", "2", "--E", moduli]
     table = engine(binary, *args, "--format", "markdown")
-    (out / "table9_1.md").write_text("# Table 9.1 (punchsweep elastic)\n\n" + table)
-    (out / "table9_1.json").write_text(engine(binary, *args, "--format", "json"))
+    text = engine(binary, *args, "--format", "json")
+    pm.write_whole(out / "table9_1.md", lambda tmp: Path(tmp).write_text("# Table 9.1 (punchsweep elastic)\n\n" + table))
+    pm.write_whole(out / "table9_1.json", lambda tmp: Path(tmp).write_text(text))
 
 
 def main(argv: list[str]) -> int:

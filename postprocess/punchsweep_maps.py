@@ -574,17 +574,72 @@ def parse_time(ds, text: str, option: str) -> tuple[float, str]:
     return value * _SI[unit] / _SI[shown], f"{value:g} {unit}"
 
 
-def check_output(path: str | Path, suffixes=(".png", ".pdf")) -> Path:
-    """The output path, checked before any work: known suffix, existing folder."""
+def output_problem(path: str | Path, inputs=()) -> str | None:
+    """The rule for every file punchsweep writes (the engine's io::output_file_problem): None
+    when `path` may be written, else why not. Refused: a missing folder; a symbolic link (a
+    link planted there would have the file written where it points); an existing file that
+    is not a regular file (a folder, a device such as /dev/null, a pipe: a file renamed over
+    it would replace it, and a pipe would block the writer); one of `inputs` (compared by
+    device and inode, so another spelling or a hard link is caught)."""
+    import os
+    import stat
+
     path = Path(path)
-    if path.suffix.lower() not in suffixes:
+    if not path.parent.is_dir():
+        return f"'{path}': the folder '{path.parent}' does not exist"
+    try:
+        st = os.lstat(path)
+    except FileNotFoundError:
+        return None
+    if stat.S_ISLNK(st.st_mode):
+        return f"'{path}' is a symbolic link; punchsweep writes no file through a link: remove it or choose another name"
+    if not stat.S_ISREG(st.st_mode):
+        kind = ("a folder" if stat.S_ISDIR(st.st_mode) else "a character device" if stat.S_ISCHR(st.st_mode)
+                else "a block device" if stat.S_ISBLK(st.st_mode) else "a pipe" if stat.S_ISFIFO(st.st_mode)
+                else "a socket" if stat.S_ISSOCK(st.st_mode) else "not a regular file")
+        return f"'{path}' is {kind}, which a written file would replace; choose another name"
+    for source in inputs:
+        try:
+            si = os.stat(source)
+        except (OSError, TypeError, ValueError):
+            continue
+        if (si.st_dev, si.st_ino) == (st.st_dev, st.st_ino):
+            return f"'{path}' is the input '{source}', which writing would destroy; choose another name"
+    return None
+
+
+def check_output(path: str | Path, suffixes=(".png", ".pdf"), inputs=()) -> Path:
+    """The output path, checked before any work: a known suffix, and output_problem's rule."""
+    path = Path(path)
+    if suffixes and path.suffix.lower() not in suffixes:
         raise MapError(f"output '{path}' has an unsupported suffix '{path.suffix}'; "
                        f"use {' or '.join(suffixes)}")
-    if not path.parent.is_dir():
-        raise MapError(f"output folder '{path.parent}' does not exist")
-    if path.is_dir():
-        raise MapError(f"output '{path}' is a folder")
+    problem = output_problem(path, inputs)
+    if problem:
+        raise MapError(f"output {problem}")
     return path
+
+
+def write_whole(path: str | Path, write, inputs=()) -> None:
+    """Writes a file whole under output_problem's rule: `write(temporary)` fills a file
+    beside `path` (created here, exclusively), which is then renamed over it; nothing is
+    left on a failure."""
+    import os
+
+    path = Path(path)
+    problem = output_problem(path, inputs)
+    if problem:
+        raise MapError(f"output {problem}")
+    tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
+    try:
+        os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))
+        write(tmp)
+        os.replace(tmp, path)
+    except OSError as e:
+        raise MapError(f"cannot write '{path}': {e.strerror or e}") from None
+    finally:
+        if tmp.exists():
+            tmp.unlink()
 
 
 def rgba(colour: str) -> np.ndarray:
@@ -696,13 +751,12 @@ def style_log_axis(axis) -> None:
     axis.set_minor_formatter(NullFormatter())
 
 
-def save_figure(fig, path: Path, dpi: int = 150) -> None:
-    """Writes the figure (format from the suffix) and closes it."""
+def save_figure(fig, path: Path, dpi: int = 150, inputs=()) -> None:
+    """Writes the figure whole (format from the suffix; write_whole's rule) and closes it."""
     import matplotlib.pyplot as plt
 
+    fmt = Path(path).suffix.lstrip(".").lower() or None
     try:
-        fig.savefig(path, dpi=dpi)
-    except OSError as e:
-        raise MapError(f"cannot write '{path}': {e.strerror or e}") from None
+        write_whole(path, lambda tmp: fig.savefig(tmp, dpi=dpi, format=fmt), inputs)
     finally:
         plt.close(fig)

@@ -487,7 +487,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    out = pm.check_output(args.output)
+    out = pm.check_output(args.output, inputs=[args.map])
     with pm.open_map(args.map) as ds:
         check_axes(ds, args.x, args.y, args.facet)
         at = pm.parse_at(args.at, ds)
@@ -504,7 +504,7 @@ def main(argv: list[str]) -> int:
             print(f.message)
         fig, _ = render(ds, args.x, args.y, fixed, args.facet, contours=not args.no_contours,
                         within=within)
-        pm.save_figure(fig, out, dpi=FIG_DPI)
+        pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.map])
     print(f"regime_map.py: wrote {out}")
     return 0
 

@@ -15,6 +15,7 @@
 #include "input/value_parsing.hpp"
 #include "input/measurement_file.hpp"
 #include "input/usage_error.hpp"
+#include "io/output_file.hpp"
 #include "model/numerics/number_text.hpp"
 #include "model/numerics/units.hpp"
 
@@ -247,25 +248,14 @@ std::string report(const FitRun& run) {
   return s.str();
 }
 
-/// Writes `text` to `path` whole: into a temporary file beside it, then renamed over it.
-void write_whole(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw input::UsageError("cannot write " + path);
-    }
+/// The measurement files read (a source is FILE or FILE@TEMPERATURE): no output may be one.
+std::vector<std::string> input_files(const FitRun& run) {
+  std::vector<std::string> files;
+  for (const std::string& source : run.sources) {
+    files.push_back(source);
+    if (const auto at = source.rfind('@'); at != std::string::npos) files.push_back(source.substr(0, at));
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw input::UsageError("cannot write " + path + ": " + ec.message());
-  }
+  return files;
 }
 
 void read_window(const po::variables_map& vm, fit::MaterialFitRequest* request) {
@@ -300,6 +290,17 @@ FitRun run_fit(const po::variables_map& vm) {
   }
   if (run.sources.empty()) throw input::UsageError("give the measurements: --dma FILE or --relaxation FILE");
   if (vm.count("dma") && vm.count("relaxation")) throw input::UsageError("give --dma or --relaxation, not both");
+  if (vm.count("output")) {
+    run.output = vm["output"].as<std::string>();
+    const std::filesystem::path p(run.output);
+    run.details = (p.parent_path() / p.stem()).string() + ".fit.json";
+    // Refused before the work, and again as each file is written (io::write_file_whole).
+    for (const std::string& file : {run.output, run.details}) {
+      if (std::string problem = io::output_file_problem(file, input_files(run)); !problem.empty()) {
+        throw input::UsageError("-o " + problem);
+      }
+    }
+  }
   if (!vm.count("poisson")) {
     throw input::UsageError("missing --poisson: Poisson's ratio, -1 < NU <= 0.5 (0.5 for an incompressible rubber)");
   }
@@ -364,11 +365,6 @@ FitRun run_fit(const po::variables_map& vm) {
     name = "fitted to";
     for (const std::string& s : run.sources) name += " " + std::filesystem::path(s).filename().string();
   }
-  if (vm.count("output")) {
-    run.output = vm["output"].as<std::string>();
-    const std::filesystem::path p(run.output);
-    run.details = (p.parent_path() / p.stem()).string() + ".fit.json";
-  }
   run.material_text = material_text(run, name);
   // The engine reads what was written, as a user's run will.
   run.material = std::make_shared<const model::Material>(
@@ -379,8 +375,12 @@ FitRun run_fit(const po::variables_map& vm) {
 }
 
 void write_files(const FitRun& run) {
-  write_whole(run.details, run.details_json);
-  write_whole(run.output, run.material_text);
+  try {
+    io::write_file_whole(run.details, run.details_json, input_files(run));
+    io::write_file_whole(run.output, run.material_text, input_files(run));
+  } catch (const std::runtime_error& e) {
+    throw input::UsageError(std::string("-o ") + e.what());
+  }
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <ostream>
 #include <stdexcept>
 
@@ -12,6 +11,7 @@
 #include "app/table_cache.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
+#include "io/output_file.hpp"
 #include "app/version.hpp"
 #include "model/problem/shape.hpp"
 #include "model/two_level/small_spot_builder.hpp"
@@ -21,6 +21,15 @@ namespace po = boost::program_options;
 
 namespace punchsweep::app {
 namespace {
+
+/// A table's C++ source written whole, under the rule for every written file.
+void write_source(const std::string& path, const std::string& text) {
+  try {
+    io::write_file_whole(path, text);
+  } catch (const std::runtime_error& e) {
+    throw input::UsageError(std::string("--write-source: ") + e.what());
+  }
+}
 
 po::options_description tables_options() {
   po::options_description opts(
@@ -90,10 +99,7 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
                     s, small_only ? " --small-spot-only" : "", kVersion, kGitRevision, small_seconds, small.shells,
                     small.far_field_correction, small.M, small.v_top, small.v_hand, small.Z);
       const std::filesystem::path small_file = dir / (model::SmallSpotTable::table_name(s) + ".inc");
-      std::ofstream small_text(small_file);
-      small_text << small_spot_table_source(small, small_provenance);
-      small_text.close();
-      if (!small_text) throw std::runtime_error("could not write " + small_file.string());
+      write_source(small_file.string(), small_spot_table_source(small, small_provenance));
       out << "s = " << s << ": wrote " << small_file.string() << " (" << small_seconds << " s)\n";
       if (small_only) continue;
       const auto start = std::chrono::steady_clock::now();
@@ -107,10 +113,7 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
                     "model::PeriodicTable::tables().",
                     s, n, kVersion, kGitRevision, seconds, table->h1.size(), table->J, table->K);
       const std::filesystem::path file = dir / (model::PeriodicTable::table_name(s, n) + ".inc");
-      std::ofstream text(file);
-      text << periodic_table_source(*table, provenance);
-      text.close();
-      if (!text) throw std::runtime_error("could not write " + file.string());
+      write_source(file.string(), periodic_table_source(*table, provenance));
       out << "s = " << s << ": wrote " << file.string() << " (" << seconds << " s)\n";
     }
     return 0;

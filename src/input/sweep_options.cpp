@@ -214,6 +214,7 @@ std::string apply_materials(const std::string& text, const KeyContext& context, 
         file = std::filesystem::path(config.config_path).parent_path() / file;
       }
       config.materials.push_back(read_material_file(file.string(), ""));
+      config.input_files.push_back(file.string());
       std::string label = std::filesystem::path(item).stem().string();
       if (std::find(config.material_labels.begin(), config.material_labels.end(), label) !=
           config.material_labels.end()) {
@@ -1010,6 +1011,7 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
 
   sweep::SweepConfig config;
   config.config_path = cli.count("config") ? cli["config"].as<std::string>() : "";
+  if (!config.config_path.empty()) config.input_files.push_back(config.config_path);
   config.dry_run = cli.count("dry-run") > 0;
   const std::vector<Setting> settings = resolve_settings(cli, config.config_path);
   std::vector<std::string> problems = apply_settings(settings, config);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "io/output_file.hpp"
 #include "io/regime_map_reader.hpp"
 #include "io/tile_journal.hpp"
 #include "run/resume_policy.hpp"
@@ -60,25 +61,17 @@ std::string preflight(const sweep::SweepConfig& config, const OutputPaths& paths
              " is being written by another running sweep; wait for it or stop it first";
     }
   }
-  // No file of the map is written through a symbolic link (a link planted at one of these
-  // names would have the run overwrite, or create, the file it points to).
+  // The rule for every written file (io::output_file_problem): no link (one planted at these
+  // names would have the run write where it points), nothing but a regular file (the map is
+  // renamed over a device, a pipe or a folder), no input of this run. Checked now, not after
+  // the whole grid is computed.
   for (const std::string& path : {paths.final_path, paths.partial, paths.journal}) {
-    if (fs::is_symlink(fs::symlink_status(path, ec))) {
-      return "output.file = " + paths.final_path + ": " + path +
-             " is a symbolic link; punchsweep writes no file through a link: remove it or choose another file name";
+    if (std::string problem = io::output_file_problem(path, config.input_files); !problem.empty()) {
+      return "output.file = " + paths.final_path + ": " + problem;
     }
   }
   const bool final_exists = fs::exists(final_path, ec);
   const bool journal_exists = fs::exists(paths.journal, ec);
-  // Only a regular file can become the map (it is renamed over): refuse a folder, a
-  // device such as /dev/null or a pipe now, not after the whole grid is computed.
-  for (const std::string& path : {paths.final_path, paths.partial, paths.journal}) {
-    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
-      return "output.file = " + paths.final_path + ": " + path + " is " +
-             (fs::is_directory(path, ec) ? "a folder" : "not a regular file") +
-             ", which the map cannot replace; choose another file name";
-    }
-  }
   *start = Start::fresh;
   if (config.overwrite) return {};
   if (config.resume) {

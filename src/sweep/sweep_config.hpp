@@ -94,6 +94,9 @@ struct SweepConfig {
   bool dry_run = false;               ///< --dry-run (command line only)
   bool quiet = false;                 ///< [run] quiet
   std::string config_path;            ///< the --config file, "" for the embedded default
+  /// Every file the configuration was read from (the config file, the material files): no
+  /// file of the map may be one of them (io::output_file_problem).
+  std::vector<std::string> input_files;
   /// The resolved configuration as INI text, every key with its final value and a comment
   /// line naming its source; stored in the map and compared on --resume.
   std::string resolved_text;

@@ -236,6 +236,36 @@ def test_bad_options_are_refused(fitted, tmp_path):
     assert f"C1 = {C1:g}" in (tmp_path / "m.ini").read_text()
 
 
+def test_the_output_may_not_destroy_what_its_path_names(fitted, tmp_path):
+    """Issue 35 item 1: `-o` naming a pipe, a folder, a link or the measurements themselves
+    (under any name: a hard link too) is refused with exit 2, and every path stays as it
+    was; nothing is written beside them. (A device such as /dev/null is refused by the same
+    rule, tested without a write in tests/io/output_file_test.cpp.)"""
+    tmp, _ = fitted
+    data = tmp_path / "d.csv"
+    data.write_bytes((tmp / "data.csv").read_bytes())
+    before = data.read_bytes()
+    (tmp_path / "target.ini").write_text("the link's target")
+    (tmp_path / "link.ini").symlink_to(tmp_path / "target.ini")
+    (tmp_path / "folder").mkdir()
+    os.mkfifo(tmp_path / "pipe")
+    os.link(data, tmp_path / "hard.ini")
+    listing = sorted(p.name for p in tmp_path.iterdir())
+    for output, message in (("pipe", "pipe is a pipe"), ("folder", "folder is a folder"),
+                             ("link.ini", "link.ini is a symbolic link"), ("d.csv", "is the input"),
+                             ("hard.ini", "is the input"), ("no/m.ini", "the folder")):
+        r = cli("fit", "--dma", data, "--reference-temperature", "23", "--poisson", "0.5", "-o", tmp_path / output)
+        assert r.returncode == 2 and message in r.stderr, (output, r.stderr)
+        assert str(tmp_path / output) in r.stderr, r.stderr
+    r = cli("fit", "--dma", f"{data}@23C", "--reference-temperature", "23", "--poisson", "0.5", "--C1", C1, "--C2", C2,
+            "-o", data)
+    assert r.returncode == 2 and "is the input" in r.stderr, r.stderr
+    assert (tmp_path / "pipe").is_fifo() and (tmp_path / "folder").is_dir() and (tmp_path / "link.ini").is_symlink()
+    assert (tmp_path / "target.ini").read_text() == "the link's target"
+    assert data.read_bytes() == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == listing
+
+
 # Published: the shift factors shipped with the data (pyvisco,
 # verification/freq_raw/freq_Eplexor_raw__shift_factors.csv, T_ref = -5 C), and pyvisco 1.0.4's
 # own get_aT on the same readings (run for this test's reference values; its WLF C1 = 98.09,

@@ -58,7 +58,26 @@ refused "adir.h5 is a folder" "$PUNCHSWEEP" sweep "${small[@]}" --output adir.h5
 refused "adir.h5 is a folder" "$PUNCHSWEEP" sweep "${small[@]}" --output adir.h5
 test ! -e adir.h5.partial || { echo "FAIL: a .partial was left beside the folder"; exit 1; }
 rmdir adir.h5
-refused "not a regular file" "$PUNCHSWEEP" sweep "${small[@]}" --output /dev/null --overwrite
+refused "/dev/null is a character device" "$PUNCHSWEEP" sweep "${small[@]}" --output /dev/null --overwrite
+# Issue 35: the rule for every written file: no pipe (the map would be renamed over it),
+# no input of the run (the config file, a material file; by inode, so a hard link too).
+mkfifo pipe.h5
+refused "pipe.h5 is a pipe" "$PUNCHSWEEP" sweep "${small[@]}" --output pipe.h5 --overwrite
+test -p pipe.h5 || { echo "FAIL: the pipe was replaced"; exit 1; }
+rm pipe.h5
+printf '[grid]\nl = 0.75\ndh = 0.05\nT = 2.5\npbar = 0.06\ns = 2\n' > self.ini
+cp self.ini self.keep
+refused "self.ini is the input self.ini" "$PUNCHSWEEP" sweep --config self.ini --output self.ini --overwrite --quiet
+ln self.ini self-link.h5
+refused "self-link.h5 is the input self.ini" "$PUNCHSWEEP" sweep --config self.ini --output self-link.h5 --overwrite --quiet
+cmp -s self.ini self.keep || { echo "FAIL: the config file was changed"; exit 1; }
+rm self-link.h5
+printf '[material]\nname = sls\nlaw = prony\nmodulus_unit = Pa\ntime_unit = s\npoisson = 0.5\nE_inf = 1e6\nE_i = 1e6\ntau_i = 1\n' > mat.h5
+cp mat.h5 mat.keep
+refused "mat.h5 is the input mat.h5" "$PUNCHSWEEP" sweep --grid.l 0.75 --grid.dh 0.05 --grid.pbar 0.06 --grid.s 2 --quiet \
+  --model.material mat.h5 --output mat.h5 --overwrite
+cmp -s mat.h5 mat.keep || { echo "FAIL: the material file was changed"; exit 1; }
+rm mat.h5 mat.keep
 # Issue 22: a name that fits but whose .partial.journal would not (over 255 bytes) is
 # refused at once with the limit, not with exit 1 once the journal is to be created.
 long=$(printf 'm%.0s' $(seq 1 245)).h5
