@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import argparse
 import base64
+import html
 import json
 import math
 import sys
@@ -101,9 +102,13 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
     for n in names:
         coord = ds[n]
         labels = pm.labels(ds, n)
-        scaled = coord.values * (1.0 / float(coord.attrs["per_scaled"])) if "per_scaled" in coord.attrs else coord.values
+        if labels is not None:  # a categorical axis (material): drawn at its indices, shown by its labels
+            values = scaled = np.arange(len(labels), dtype=float)
+        else:
+            values = coord.values
+            scaled = values * (1.0 / float(coord.attrs["per_scaled"])) if "per_scaled" in coord.attrs else values
         axes.append({
-            "name": n, "values": [float(v) for v in coord.values],
+            "name": n, "values": [float(v) for v in values],
             "scaled": [float(v) for v in np.asarray(scaled, dtype=float)],
             "unit": pm.units(ds, n), "log": bool(pm.is_log(ds, n)),
             "label": f"{n}: {attr_text(coord.attrs.get('long_name', n))}" + (
@@ -190,6 +195,11 @@ const strides = MAP.shape.map((_, k) => MAP.shape.slice(k + 1).reduce((a, b) => 
 
 function flatIndex(index) { return index.reduce((s, v, k) => s + v * strides[k], 0); }
 function fmt(v) { return v === null || Number.isNaN(v) ? "NaN" : (Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0)) ? v.toExponential(4) : Number(v.toPrecision(6)).toString(); }
+// A text of the map as plotly must get it: plotly reads pseudo-HTML in titles, labels and
+// hover text (<a href>, <b>, <br>, entities), so &, < and > are given as entities.
+function plain(text) { return String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;"); }
+// A word of a shell command, quoted where the shell would read it otherwise.
+function shellWord(word) { return /^[A-Za-z0-9_.,:=@%+\/-]+$/.test(word) ? word : "'" + word.replace(/'/g, "'\\''") + "'"; }
 function unitText(u) { return u && u !== "1" ? " " + u : ""; }
 function axisValueText(a, i) { return a.labels ? a.labels[i] : fmt(a.values[i]) + unitText(a.unit); }
 
@@ -228,7 +238,7 @@ function readout(index) {
 function pointCommand(index) {
   const parts = ["punchsweep point"];
   MAP.axes.forEach((a, j) => {
-    if (a.name === "material") parts.push(`--material ${a.labels ? a.labels[index[j]] : index[j]}.ini`);
+    if (a.name === "material") parts.push(`--material ${shellWord(`${a.labels ? a.labels[index[j]] : index[j]}.ini`)}`);
     else if (a.name === "time") return;
     else parts.push(`--${a.name.replace("_", "-")} ${a.name === "s" ? a.scaled[index[j]] : a.scaled[index[j]]}`);
   });
@@ -255,7 +265,7 @@ function grid() {
       const t = data.variables.t_star ? data.variables.t_star[k] : NaN;
       rc.push(code === immediate[0] ? 0 : code === never[0] ? 1 : code === delayed[0] ? null : 2);
       rl.push(code === delayed[0] && t > 0 ? Math.log10(t) : null);
-      rt.push(readout(cellIndex(ix, iy)).join("<br>"));
+      rt.push(readout(cellIndex(ix, iy)).map(plain).join("<br>"));
       if (state.colour !== "regime") rs.push(data.series[state.colour][k * nt + state.time]);
     }
     cat.push(rc); logt.push(rl); text.push(rt); series.push(rs);
@@ -263,20 +273,37 @@ function grid() {
   return { cat, logt, text, series };
 }
 
+// A categorical axis (material) is drawn at its indices and ticked with its labels.
+function categoryTicks(a) { return a.labels ? { tickvals: a.values, ticktext: a.labels.map(plain) } : {}; }
+
+// A heat map's cell edges: midway between the values, geometrically on a log axis (plotly's
+// own arithmetic midpoints put a coarse log axis's first edge below zero and drop its first
+// column), the ends as far out as the first and last gaps.
+function edges(a) {
+  const v = a.values, n = v.length;
+  if (n < 2) return v;
+  const f = a.log ? Math.log : x => x, g = a.log ? Math.exp : x => x;
+  const e = [f(v[0]) - (f(v[1]) - f(v[0])) / 2];
+  for (let i = 1; i < n; ++i) e.push((f(v[i - 1]) + f(v[i])) / 2);
+  e.push(f(v[n - 1]) + (f(v[n - 1]) - f(v[n - 2])) / 2);
+  return e.map(g);
+}
+
 function draw() {
   const ax = MAP.axes[state.x], ay = MAP.axes[state.y];
+  const ex = edges(ax), ey = edges(ay);
   const g = grid();
   const c = MAP.colours;
   const traces = [];
   if (state.colour === "regime") {
-    traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.cat, text: g.text, hoverinfo: "text",
+    traces.push({ type: "heatmap", x: ex, y: ey, z: g.cat, text: g.text, hoverinfo: "text",
       zmin: 0, zmax: 2, showscale: false, name: "regime",
       colorscale: [[0, c.immediate], [0.33, c.immediate], [0.34, c.never], [0.66, c.never], [0.67, c.not_computed], [1, c.not_computed]] });
-    traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.logt, text: g.text, hoverinfo: "text",
-      colorscale: "YlOrRd", reversescale: true, name: "log10 t*", colorbar: { title: { text: `log10 t* [${MAP.time_unit}]` } } });
+    traces.push({ type: "heatmap", x: ex, y: ey, z: g.logt, text: g.text, hoverinfo: "text",
+      colorscale: "YlOrRd", reversescale: true, name: "log10 t*", colorbar: { title: { text: plain(`log10 t* [${MAP.time_unit}]`) } } });
   } else {
-    traces.push({ type: "heatmap", x: ax.values, y: ay.values, z: g.series, text: g.text, hoverinfo: "text",
-      colorscale: "Viridis", colorbar: { title: { text: `${state.colour}${unitText(MAP.series[state.colour].unit)}` } } });
+    traces.push({ type: "heatmap", x: ex, y: ey, z: g.series, text: g.text, hoverinfo: "text",
+      colorscale: "Viridis", colorbar: { title: { text: plain(`${state.colour}${unitText(MAP.series[state.colour].unit)}`) } } });
   }
   if (MAP.flags.answer_source) {  // cells the BEM answered: open squares
     const bem = Object.entries(MAP.flags.answer_source.codes).find(([c, m]) => m === "bem");
@@ -298,9 +325,9 @@ function draw() {
   }
   const fixedText = MAP.axes.map((a, j) => j === state.x || j === state.y ? null : `${a.name} = ${axisValueText(a, state.fixed[j])}`).filter(Boolean).join(", ");
   const layout = {
-    title: { text: `${MAP.title}<br><sub>${fixedText}${state.colour !== "regime" ? `; t = ${fmt(MAP.time[state.time])} ${MAP.time_unit}` : ""}</sub>` },
-    xaxis: { title: { text: ax.label }, type: ax.log ? "log" : "linear" },
-    yaxis: { title: { text: ay.label }, type: ay.log ? "log" : "linear", range: [Math.min(...ay.values), Math.max(...ay.values)] },
+    title: { text: `${plain(MAP.title)}<br><sub>${plain(fixedText + (state.colour !== "regime" ? `; t = ${fmt(MAP.time[state.time])} ${MAP.time_unit}` : ""))}</sub>` },
+    xaxis: Object.assign({ title: { text: plain(ax.label) }, type: ax.log ? "log" : "linear" }, categoryTicks(ax)),
+    yaxis: Object.assign({ title: { text: plain(ay.label) }, type: ay.log ? "log" : "linear", range: [Math.min(...ey), Math.max(...ey)] }, categoryTicks(ay)),
     legend: { orientation: "h", y: -0.15 }, margin: { t: 80 },
   };
   if (ay.log) layout.yaxis.range = layout.yaxis.range.map(Math.log10);
@@ -382,9 +409,14 @@ window.explorer = { ready, state, data, MAP, flatIndex, cellIndex, readout, poin
 
 
 def render(data: dict, plotly_js: str) -> str:
-    text = json.dumps(data, separators=(",", ":")).replace("</", "<\\/")
+    """The page. The data go in as JSON with every <, > and & written as a \\u escape, so no
+    text of the map (a material's name such as `<!--<script>`) can end or comment out the
+    script element; the page's title is HTML-escaped; the page's script passes every text
+    it gives plotly through plain() (plotly reads pseudo-HTML: tags, links, entities)."""
+    text = (json.dumps(data, separators=(",", ":"))
+            .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026"))
     return (PAGE.replace("__PLOTLY__", plotly_js.replace("</script", "<\\/script"))
-            .replace("__TITLE__", f"punchsweep explorer: {data['source']}")
+            .replace("__TITLE__", html.escape(f"punchsweep explorer: {data['source']}"))
             .replace("__DATA__", text))
 
 

@@ -4,7 +4,8 @@
 //   CELLS.json: [[ix, iy], ...] cells of the default slice to read.
 // Writes OUT.json: what the page read (per cell: its flat index, regime, t*, radii and the
 // hover read-out), the requests it made that were not file: or data:, its console errors,
-// whether a slider and the time slider changed the picture, and the load time.
+// whether a slider and the time slider changed the picture, the load time, and the texts
+// the page shows (heading, plot title, tick labels) and any link inside the plot.
 import { chromium } from "playwright-core";
 import { readFileSync, writeFileSync } from "node:fs";
 import { pathToFileURL } from "node:url";
@@ -23,6 +24,15 @@ try {
   await page.goto(pathToFileURL(page_path).href);
   await page.evaluate(() => window.explorer.ready);
   out.load_ms = Date.now() - t0;
+  // The texts the page shows from the map, as the browser has them (not as markup).
+  Object.assign(out, await page.evaluate(() => ({
+    heading: document.getElementById("title").textContent,
+    plot_title: document.querySelector("#plot .gtitle")?.textContent ?? null,
+    plot_ticks: [...document.querySelectorAll("#plot .xtick text, #plot .ytick text")].map(t => t.textContent),
+    axis_titles: [...document.querySelectorAll("#plot .g-xtitle, #plot .g-ytitle")].map(t => t.textContent),
+    plot_links: [...document.querySelectorAll("#plot a")].map(a => a.getAttribute("href") ?? a.getAttribute("xlink:href"))
+      .filter(h => h !== null),
+  })));
 
   // Hover each cell where plotly draws it; the read-out is the page's own.
   for (const [ix, iy] of cells) {

@@ -11,6 +11,7 @@ import base64
 import json
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import zlib
@@ -157,3 +158,76 @@ def test_the_page_in_chromium(maps, tmp_path, which):
     import matplotlib.image
     pixels = matplotlib.image.imread(shot)
     assert shot.stat().st_size > 50_000 and pixels.shape[0] >= 900 and float(pixels[..., :3].std()) > 0.05
+
+
+# Issue 35 item 4: the map's texts are data, never markup. A material's name that opens an
+# HTML comment and a script, a link, quotes, an ampersand and unicode; material files (the
+# material axis's labels) and a map file named with tags and quotes; an axis long_name
+# with a tag.
+HOSTILE_NAME = '<!--<script>alert(1)</script> <a href="https://example.com/x">link</a> "Q" \'s & ünï µm'
+HOSTILE_FILES = ('ev<b>il "q" ü', "pl<a href=x>ain")
+
+
+@pytest.fixture(scope="module")
+def hostile(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("hostile")
+    for stem, name, E_i in zip(HOSTILE_FILES, (HOSTILE_NAME, "plain"), (9, 4)):
+        (tmp / f"{stem}.ini").write_text(f"[material]\nname = {name}\nlaw = prony\nmodulus_unit = MPa\n"
+                                         f"time_unit = s\npoisson = 0.5\nE_inf = 1\nE_i = {E_i}\ntau_i = 1\n",
+                                         encoding="utf-8")
+    path = tmp / "map <i>\"x\" & 'y'.h5"
+    subprocess.run([ENGINE, "sweep", "--model.material", ", ".join(f"{s}.ini" for s in HOSTILE_FILES),
+                    "--model.R", "50um", "--grid.l", "150um", "--grid.dh", "linspace(0.1um,3um,5)",
+                    "--grid.pbar", "logspace(0.001,0.05,4)", "--grid.s", "2", "--output", path, "--quiet"],
+                   check=True, cwd=tmp)
+    with h5py.File(path, "r+") as f:
+        f["dh"].attrs["long_name"] = "height <b>difference</b> & more"
+    page = tmp / "hostile.html"
+    done = explore(path, "-o", page)
+    assert done.returncode == 0, done.stderr
+    return tmp, path, page
+
+
+def test_hostile_texts_stay_inside_the_pages_data(hostile):
+    _, path, page = hostile
+    text = page.read_text(encoding="utf-8")
+    data = re.search(r'<script id="map-data" type="application/json">(.*?)</script>', text, flags=re.S).group(1)
+    assert "<" not in data and ">" not in data and "&" not in data
+    d = json.loads(data)
+    assert HOSTILE_NAME in d["title"] and d["source"] == path.name
+    assert [a["labels"] for a in d["axes"] if a["name"] == "material"] == [list(HOSTILE_FILES)]
+    title = re.search(r"<title>(.*?)</title>", text).group(1)
+    assert "<i>" not in title and "&lt;i&gt;" in title
+
+
+def test_hostile_texts_are_shown_as_text_in_chromium(hostile, tmp_path):
+    missing = browser_missing()
+    if missing:
+        pytest.skip(missing)
+    folder, path, page = hostile
+    (tmp_path / "cells.json").write_text(json.dumps([[0, 0], [3, 4]]))
+    out, shot = tmp_path / "out.json", tmp_path / "shot.png"
+    done = subprocess.run(["node", DRIVER, page, tmp_path / "cells.json", out, shot], capture_output=True, text=True,
+                          timeout=180)
+    assert done.returncode == 0, done.stderr
+    r = json.loads(out.read_text())
+    assert r["requests"] == [] and r["errors"] == []
+    assert r["heading"].startswith(f"{path.name}: {HOSTILE_NAME}; plain;")
+    assert r["plot_title"].startswith(f"{HOSTILE_NAME}; plain;") and f"material = {HOSTILE_FILES[0]}" in r["plot_title"]
+    assert r["plot_links"] == []
+    assert all(f"material = {HOSTILE_FILES[0]}" in cell["readout"] for cell in r["cells"])
+    assert any(t.startswith("dh: height <b>difference</b> & more") for t in r["axis_titles"]), r["axis_titles"]
+    with h5py.File(path) as f:
+        for cell in r["cells"]:
+            # The command, run by a shell in the materials' folder as a user would paste it.
+            command = cell["command"].split("\n")[0].replace("punchsweep", shlex.quote(ENGINE), 1)
+            done = subprocess.run(["bash", "-c", command + " --format json"], capture_output=True, text=True,
+                                  cwd=folder)
+            assert done.returncode == 0, (command, done.stderr)
+            point = json.loads(done.stdout)
+            index = tuple(cell["index"])
+            assert point["regime"] == cell["regime"]
+            if cell["t_star"] is None:
+                assert point["t_star"] is None and np.isnan(f["t_star"][index])
+            else:
+                assert point["t_star"] == pytest.approx(f["t_star"][index], rel=1e-12)
