@@ -29,8 +29,8 @@ std::optional<model::PeriodicTable> shipped_periodic_table(int s, int n = kPerio
 /// sample of every two-level row, drawn from `seed`, solved again (loads and h to 1e-6, areas
 /// to one node), and every row's level-2 share recomputed. A table edited as a whole or row
 /// by row fails it whatever its checksum says; one edited sample is caught with probability
-/// 1/(K - 1) per check. Costs J + 3 contact solves (about 5 s at n = 512; only tables that
-/// are not shipped are ever read from a cache).
+/// 1/(K - 1) per check. Costs J + 3 contact solves (about 5 s at n = 512). The tests hold
+/// the shipped tables to it; the cache does not need it (its files are signed).
 bool spot_check(const model::PeriodicTable& table, std::uint64_t seed);
 
 /// Builds the tables of s on an n grid, with progress on stderr (unless quiet) and a last
@@ -42,8 +42,8 @@ model::PeriodicTable build_periodic_table_with_progress(int s, int n, bool quiet
 /// Where periodic_table_for found the tables.
 enum class TableOrigin { shipped, cache, built };
 
-/// The tables of s on an n grid: shipped, else from `folder` (if set; spot-checked, under a
-/// lock so that concurrent builders build once), else built (progress on stderr unless
+/// The tables of s on an n grid: shipped, else from `folder` (if set; its signature checked,
+/// under a lock so that concurrent builders build once), else built (progress on stderr unless
 /// quiet) and saved there. `origin`, if set, says which.
 std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
                                                               const std::optional<std::filesystem::path>& folder,

@@ -12,9 +12,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <random>
+#include <string_view>
 #include <system_error>
 
 #include "io/file_descriptor.hpp"
+#include "io/sha256.hpp"
 #include "app/periodic_tables.hpp"
 #include "model/localization/shell_sums.hpp"
 #include "sweep/reproducible_fft.hpp"
@@ -22,19 +24,17 @@
 namespace punchsweep::app {
 namespace {
 
-constexpr char kMagic[8] = {'P', 'S', 'W', 'T', 'A', 'B', '0', '1'};
+constexpr char kMagic[8] = {'P', 'S', 'W', 'T', 'A', 'B', '0', '2'};
 /// No table of the engine comes near this (the largest, s = 3, is about 2 MB).
 constexpr std::uint64_t kMaxEntries = std::uint64_t{1} << 24;
-constexpr std::size_t kFixedBytes = sizeof kMagic + 2 * sizeof(std::uint64_t);
+constexpr std::size_t kKeyBytes = 32;
+constexpr std::size_t kFixedBytes = sizeof kMagic + sizeof(std::uint64_t) + sizeof(io::Digest);
 
-std::uint64_t fnv1a(const std::vector<double>& values) {
-  std::uint64_t hash = 14695981039346656037ull;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-  for (std::size_t i = 0; i < values.size() * sizeof(double); ++i) {
-    hash ^= bytes[i];
-    hash *= 1099511628211ull;
-  }
-  return hash;
+/// What a file's signature covers: the magic, the count and the numbers, as written.
+io::Digest signature(const std::string& key, std::uint64_t n, const std::vector<double>& values) {
+  return io::hmac_sha256(key, {std::string_view(kMagic, sizeof kMagic),
+                               std::string_view(reinterpret_cast<const char*>(&n), sizeof n),
+                               std::string_view(reinterpret_cast<const char*>(values.data()), n * sizeof(double))});
 }
 
 bool owned_and_private(const struct stat& st) {
@@ -45,6 +45,22 @@ std::string octal_mode(mode_t mode) {
   char text[8];
   std::snprintf(text, sizeof text, "%04o", static_cast<unsigned>(mode & 07777));
   return text;
+}
+
+/// The key in `file`, if it is a private regular file of this user (or root) holding exactly
+/// kKeyBytes bytes; else empty.
+std::string read_key(const std::filesystem::path& file) {
+  const int raw = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (raw < 0) return {};
+  const io::FileDescriptor fd(raw);
+  struct stat st {};
+  if (::fstat(fd.get(), &st) != 0 || !S_ISREG(st.st_mode) || !owned_and_private(st) ||
+      (st.st_mode & (S_IRWXG | S_IRWXO)) != 0 || st.st_size != static_cast<off_t>(kKeyBytes)) {
+    return {};
+  }
+  std::string key(kKeyBytes, '\0');
+  if (!io::read_fully(fd.get(), key.data(), key.size())) return {};
+  return key;
 }
 
 std::string lowercase(std::string text) {
@@ -85,10 +101,18 @@ std::string untrusted_folder(const std::filesystem::path& folder) {
            std::to_string(st.st_uid) + ") can be written by other users, who could bias every result; " +
            "make it yours and private (chmod go-w) to use it";
   }
+  const std::filesystem::path key = folder / "key";
+  if (::lstat(key.c_str(), &st) == 0 && read_key(key).empty()) {
+    return "the table cache's key " + key.string() + " (mode " + octal_mode(st.st_mode) + ", owner uid " +
+           std::to_string(st.st_uid) + ", " + std::to_string(st.st_size) +
+           " bytes) is not a private file of 32 bytes of yours; remove it (a new one is made) to use the cache";
+  }
   return {};
 }
 
 std::vector<double> read_tables(const std::filesystem::path& file) {
+  const std::string key = cache_key(file.parent_path(), false);
+  if (key.empty()) return {};
   const int raw = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (raw < 0) return {};
   const io::FileDescriptor fd(raw);
@@ -102,13 +126,43 @@ std::vector<double> read_tables(const std::filesystem::path& file) {
     return {};
   }
   std::vector<double> values(n);
-  std::uint64_t hash = 0;
+  io::Digest stored{};
   char extra = 0;
-  if (!io::read_fully(fd.get(), values.data(), n * sizeof(double)) || !io::read_fully(fd.get(), &hash, sizeof hash) ||
-      io::read_fully(fd.get(), &extra, 1) || hash != fnv1a(values)) {
+  if (!io::read_fully(fd.get(), values.data(), n * sizeof(double)) ||
+      !io::read_fully(fd.get(), stored.data(), stored.size()) || io::read_fully(fd.get(), &extra, 1)) {
     return {};
   }
+  const io::Digest expected = signature(key, n, values);
+  unsigned char difference = 0;  // compared in full, not up to the first difference
+  for (std::size_t i = 0; i < stored.size(); ++i) difference |= static_cast<unsigned char>(stored[i] ^ expected[i]);
+  if (difference != 0) return {};
   return values;
+}
+
+std::string cache_key(const std::filesystem::path& folder, bool create) {
+  const std::filesystem::path file = folder / "key";
+  if (std::string key = read_key(file); !key.empty() || !create) return key;
+  if (!make_private_folder(folder)) return {};
+  // A new key in a file of its own, linked to its name only if none is there: processes that
+  // make one at once end with the same key (link() fails for all but one).
+  std::random_device random;
+  std::string key(kKeyBytes, '\0');
+  for (std::size_t i = 0; i < kKeyBytes; i += 4) {
+    const std::uint32_t word = random();
+    std::memcpy(key.data() + i, &word, 4);
+  }
+  std::filesystem::path temporary = file;
+  temporary += ".part." + std::to_string(::getpid()) + "." + std::to_string(random());
+  const int raw = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (raw < 0) return {};
+  bool written = false;
+  {
+    const io::FileDescriptor fd(raw);
+    written = io::write_fully(fd.get(), key.data(), key.size()) && ::fsync(fd.get()) == 0;
+  }
+  if (written) static_cast<void>(::link(temporary.c_str(), file.c_str()));
+  ::unlink(temporary.c_str());
+  return read_key(file);
 }
 
 bool make_private_folder(const std::filesystem::path& folder) {
@@ -122,6 +176,8 @@ bool make_private_folder(const std::filesystem::path& folder) {
 
 void write_tables(const std::filesystem::path& file, const std::vector<double>& tables) {
   if (!make_private_folder(file.parent_path())) return;
+  const std::string key = cache_key(file.parent_path(), true);
+  if (key.empty()) return;
   std::random_device random;
   std::filesystem::path temporary = file;
   temporary += ".part." + std::to_string(::getpid()) + "." + std::to_string(random());
@@ -131,9 +187,10 @@ void write_tables(const std::filesystem::path& file, const std::vector<double>& 
   {
     const io::FileDescriptor fd(raw);
     const std::uint64_t n = tables.size();
-    const std::uint64_t hash = fnv1a(tables);
+    const io::Digest signed_by = signature(key, n, tables);
     written = io::write_fully(fd.get(), kMagic, sizeof kMagic) && io::write_fully(fd.get(), &n, sizeof n) &&
-              io::write_fully(fd.get(), tables.data(), n * sizeof(double)) && io::write_fully(fd.get(), &hash, sizeof hash);
+              io::write_fully(fd.get(), tables.data(), n * sizeof(double)) &&
+              io::write_fully(fd.get(), signed_by.data(), signed_by.size());
   }
   if (!written || ::rename(temporary.c_str(), file.c_str()) != 0) ::unlink(temporary.c_str());
 }

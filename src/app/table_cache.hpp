@@ -26,6 +26,7 @@ TableCacheFolder table_cache_folder();
 /// Why `folder` must not be trusted with tables, or "" if it may: like OpenSSH with key
 /// files, it must be a folder (not a link to one) owned by this user (or root) and not
 /// writable by group or others, since whoever can write the tables can bias every result.
+/// Its key (cache_key), where there is one, must be a private file of 32 bytes of this user.
 /// A folder that does not exist yet is fine (write_tables creates it, mode 0700).
 std::string untrusted_folder(const std::filesystem::path& folder);
 
@@ -33,16 +34,24 @@ std::string untrusted_folder(const std::filesystem::path& folder);
 /// whether it may then be trusted with tables (untrusted_folder).
 bool make_private_folder(const std::filesystem::path& folder);
 
-/// A file of the cache: "PSWTAB01", the count n (uint64), n doubles and their FNV-1a hash
-/// (uint64), host byte order. read_tables gives empty for a missing, short, damaged or
-/// oversized file, one whose size does not match its count (checked before any memory is
-/// sized by it), a symbolic link, anything but a regular file (a FIFO would block), or a
-/// file writable by group or others or owned by another user. The hash only catches
-/// accidents: the model checks what it loads against direct evaluation
-/// (model::ShellSums::from_tables).
+/// The cache's key: 32 random bytes in FOLDER/key, made on first need (`create`: mode 0600,
+/// linked into place so that processes making one at once agree on it). Empty where it
+/// cannot be made, or where the file is not a private regular file of this user (or root)
+/// of exactly 32 bytes: then no file of the cache is believed or written.
+std::string cache_key(const std::filesystem::path& folder, bool create);
+
+/// A file of the cache: "PSWTAB02", the count n (uint64), n doubles (host byte order) and
+/// their HMAC-SHA-256 under the folder's key (cache_key). read_tables gives empty for a
+/// missing, short, damaged or oversized file, one whose size does not match its count
+/// (checked before any memory is sized by it), a symbolic link, anything but a regular file
+/// (a FIFO would block), a file writable by group or others or owned by another user, and a
+/// file whose signature does not verify: one not written by this engine under this key,
+/// edited since (whatever checksum a forger recomputes), or of an older format. Every file
+/// it gives was written by write_tables, so nothing read is solved again (the check costs
+/// one hash over the file: 3 ms for the largest, s = 4's periodic tables).
 std::vector<double> read_tables(const std::filesystem::path& file);
-/// Written to a new file beside it (O_EXCL, O_NOFOLLOW, mode 0644) and renamed over it
-/// (ranks that save the same tables at once leave one whole file); a folder or file that
+/// Written, signed, to a new file beside it (O_EXCL, O_NOFOLLOW, mode 0644) and renamed over
+/// it (ranks that save the same tables at once leave one whole file); a folder or file that
 /// cannot be written is skipped silently (the tables are then built again next time).
 void write_tables(const std::filesystem::path& file, const std::vector<double>& tables);
 

@@ -6,6 +6,9 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <filesystem>
 #include <future>
 #include <limits>
@@ -17,6 +20,7 @@
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/table_cache.hpp"
+#include "io/sha256.hpp"
 #include "model/localization/periodic_table.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/standard_linear_solid.hpp"
@@ -96,9 +100,25 @@ TEST(ShippedTables, meet_direct_solves_between_their_samples) {
   }
 }
 
-// The cache keeps what it builds, gives it back after a spot check, refuses an edited file
-// (its checksum recomputed: what a forger would do) and builds again.
-TEST(PeriodicTableCache, keeps_checks_and_refuses_forgeries) {
+// Forges a cache file as a forger with write access would: the numbers edited in place,
+// the file's signature kept, or recomputed under a key of the forger's own.
+void forge(const std::filesystem::path& file, const std::vector<double>& numbers, bool sign_with_own_key) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t head = 16, body = numbers.size() * sizeof(double);
+  ASSERT_EQ(bytes.size(), head + body + 32);
+  std::memcpy(bytes.data() + head, numbers.data(), body);
+  if (sign_with_own_key) {
+    const io::Digest d = io::hmac_sha256(std::string(32, 'k'), {std::string_view(bytes.data(), head + body)});
+    std::memcpy(bytes.data() + head + body, d.data(), d.size());
+  }
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+// The cache keeps what it builds and gives it back without solving it again (its files are
+// signed under the cache's key); an edited file (one sample 5% off, issue 35 item 3: its
+// signature kept, or recomputed under another key) is not believed and is built again.
+TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
   const ScratchFolder scratch;
   // A cache folder that does not exist yet is made private (0700), as write_tables makes it.
   const std::filesystem::path folder = scratch.path / "cache";
@@ -107,12 +127,14 @@ TEST(PeriodicTableCache, keeps_checks_and_refuses_forgeries) {
   EXPECT_EQ(origin, app::TableOrigin::built);
   EXPECT_EQ(std::filesystem::status(folder).permissions() & std::filesystem::perms::all,
             std::filesystem::perms::owner_all);
+  EXPECT_EQ(std::filesystem::status(folder / "key").permissions() & std::filesystem::perms::all,
+            std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
   const std::filesystem::path file = folder / model::PeriodicTable::table_name(4, 32);
   ASSERT_TRUE(std::filesystem::exists(file));
   const auto again = app::periodic_table_for(4, 32, folder, true, {}, &origin);
   EXPECT_EQ(origin, app::TableOrigin::cache);
   EXPECT_EQ(again->tables(), built->tables());
-  // Honest tables pass the check whatever sample it draws.
+  // Honest tables pass the boundary elements' spot check whatever sample it draws.
   for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_TRUE(app::spot_check(*built, seed)) << seed;
 
   // A forgery of the whole surface breaks its bookkeeping (the last sample of a row is full
@@ -120,19 +142,38 @@ TEST(PeriodicTableCache, keeps_checks_and_refuses_forgeries) {
   model::PeriodicTable forged = *built;
   for (double& x : forged.a1) x *= 1.002;
   EXPECT_FALSE(model::PeriodicTable::from_tables(forged.tables()));
-  // One that keeps it: every load of the two-level surface 0.2% larger and the radii 0.5%
-  // larger inside each row, the checksum recomputed.
+  // One sample of the single level 5% larger keeps the bookkeeping; the spot check solves 3
+  // of its samples, so only the signature catches it every time.
   forged = *built;
-  for (std::size_t at = 0; at < forged.Q2.size(); ++at) {
-    forged.Q2[at] *= 1.002;
-    if ((at + 1) % static_cast<std::size_t>(forged.K) != 0) forged.a2[at] *= 1.005;
-  }
+  forged.a11[forged.a11.size() / 2] *= 1.05;
   ASSERT_TRUE(model::PeriodicTable::from_tables(forged.tables()));
-  for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_FALSE(app::spot_check(forged, seed)) << seed;
-  app::write_tables(file, forged.tables());
-  const auto rebuilt = app::periodic_table_for(4, 32, folder, true, {}, &origin);
+  for (const bool own_key : {false, true}) {
+    forge(file, forged.tables(), own_key);
+    EXPECT_TRUE(app::read_tables(file).empty()) << own_key;
+    const auto rebuilt = app::periodic_table_for(4, 32, folder, true, {}, &origin);
+    EXPECT_EQ(origin, app::TableOrigin::built) << own_key;
+    EXPECT_EQ(rebuilt->tables(), built->tables());
+  }
+  // Every edited number is caught, not only a sampled one.
+  const std::vector<double> honest = built->tables();
+  std::mt19937_64 random(35);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> edited = honest;
+    double& x = edited[random() % edited.size()];
+    x = std::nextafter(x, std::numeric_limits<double>::infinity());  // the last bit
+    forge(file, edited, false);
+    EXPECT_TRUE(app::read_tables(file).empty()) << trial;
+  }
+  app::write_tables(file, honest);
+  EXPECT_EQ(app::read_tables(file), honest);
+  // A key others can read is not believed: nothing is read from or written to that cache.
+  std::filesystem::permissions(folder / "key", std::filesystem::perms::group_read, std::filesystem::perm_options::add);
+  EXPECT_TRUE(app::read_tables(file).empty());
+  EXPECT_NE(app::untrusted_folder(folder).find("key"), std::string::npos);
+  std::filesystem::remove(folder / "key");  // a new key: the old files are built again
+  EXPECT_EQ(app::untrusted_folder(folder), "");
+  app::periodic_table_for(4, 32, folder, true, {}, &origin);
   EXPECT_EQ(origin, app::TableOrigin::built);
-  EXPECT_EQ(rebuilt->tables(), built->tables());
 
   // A damaged file (cut short) is not read either.
   std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
