@@ -153,7 +153,9 @@ def main():
         # dh from below h(0) to past h(inf) of this point (its regimes all three).
         free = ps.point(dh=1e9, **p)
         lowest = 0.5 * free.h_0 if free.h_0 > 0 else 0.05 * free.h_inf  # a ramp starts from h = 0
-        p["dh"] = float(math.exp(rng.uniform(math.log(lowest), math.log(1.5 * free.h_inf))))
+        # To four digits, so that the points (the cache's keys) stay put when the model moves
+        # in its last digits.
+        p["dh"] = float(f"{math.exp(rng.uniform(math.log(lowest), math.log(1.5 * free.h_inf))):.4g}")
         m = ps.point(**p)
         first = m.series["a1"][0] if m.series["a1"][0] > 0 else m.series["a1"][1]
         if first < 10 * p["l"] / coarse:
