@@ -73,7 +73,7 @@ po::options_description fit_options() {
        "interconversion resolves")
       ("refine", po::value<std::string>()->default_value("yes")->value_name("yes|no"),
        "refine the relaxation times after the grid (no: keep the grid's)")
-      ("name", po::value<std::string>()->value_name("TEXT"), "the material's name (default: the files' names)")
+      ("name", po::value<std::string>()->value_name("TEXT"), "the material's name: one line without # or ; (default: the files' names)")
       ("output", po::value<std::string>()->value_name("FILE"), "the material file to write (-o)");
   return opts;
 }
@@ -94,13 +94,36 @@ std::string list_text(const std::vector<double>& v, double divisor) {
   return s;
 }
 
+/// How far outside its isotherms' span the reference temperature may lie, in K (the shift
+/// law's range is the isotherms' span, widened to T_ref).
+constexpr double kReferenceMargin = 10.0;
+
+/// `text` with every control character (a line break above all) replaced by `with`: what a
+/// comment line of a material file may hold.
+std::string one_line(std::string text, char with) {
+  for (char& c : text) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = with;
+  }
+  return text;
+}
+
+/// Why `name` cannot be a material's name in a material file, or "": one line without # or ;
+/// (they start a comment there, so the name would be cut).
+std::string name_problem(const std::string& name) {
+  if (name.size() > 200) return "is " + std::to_string(name.size()) + " bytes long";
+  if (one_line(name, '\n').find_first_of("\n#;") != std::string::npos) {
+    return "holds a line break, a control character, # or ; (# and ; start a comment in a material file)";
+  }
+  return {};
+}
+
 std::string material_text(const FitRun& run, const std::string& name) {
   const fit::MaterialFit& f = run.fit;
   const fit::PronyTerms& t = f.prony.terms;
   const model::Unit& unit = *model::find_unit(model::Dimension::pressure, run.modulus_unit);
   std::ostringstream s;
   s << "# Fitted by `punchsweep fit` to " << f.readings.size() << " readings from:";
-  for (const std::string& src : run.sources) s << " " << src;
+  for (const std::string& src : run.sources) s << " " << one_line(src, '?');
   s << "\n# Prony series: " << t.E.size() << " terms, for times " << model::number_text(run.window_lo, 3) << " to "
     << model::number_text(run.window_hi, 3) << " s at T_ref; RMS relative error within them "
     << (f.abscissa == fit::Abscissa::frequency
@@ -317,7 +340,18 @@ FitRun run_fit(const po::variables_map& vm) {
   for (const auto& r : m.relaxation) temperatures.push_back(r.temperature);
   const auto [tmin, tmax] = std::minmax_element(temperatures.begin(), temperatures.end());
   if (vm.count("reference-temperature")) {
-    request.shift.T_ref = input::read_temperature(vm["reference-temperature"].as<std::string>(), "--reference-temperature");
+    const std::string text = vm["reference-temperature"].as<std::string>();
+    request.shift.T_ref = input::read_temperature(text, "--reference-temperature");
+    // The master curve is drawn at a temperature the data reach: far from every isotherm the
+    // shifts to it are extrapolated, and the law would be believed there.
+    if (request.shift.T_ref < *tmin - kReferenceMargin || request.shift.T_ref > *tmax + kReferenceMargin) {
+      throw input::UsageError("--reference-temperature = " + text + " (" + model::number_text(request.shift.T_ref, 6) +
+                              " degC) is far outside the data, whose readings span " + model::number_text(*tmin, 3) +
+                              " to " + model::number_text(*tmax, 3) + " degC; valid: " +
+                              model::number_text(*tmin - kReferenceMargin, 3) + " to " +
+                              model::number_text(*tmax + kReferenceMargin, 3) + " degC (within " +
+                              model::number_text(kReferenceMargin, 3) + " K of the data)");
+    }
   } else if (*tmin == *tmax) {
     request.shift.T_ref = *tmin;
   } else {
@@ -360,10 +394,17 @@ FitRun run_fit(const po::variables_map& vm) {
   double E0 = t.E_inf;
   for (const double e : t.E) E0 += e;
   run.modulus_unit = std::string(modulus_unit_for(E0).name);
-  std::string name = vm.count("name") ? vm["name"].as<std::string>() : "";
+  std::string name = vm.count("name") ? std::string(model::trim(vm["name"].as<std::string>())) : "";
   if (name.empty()) {
     name = "fitted to";
     for (const std::string& s : run.sources) name += " " + std::filesystem::path(s).filename().string();
+    for (char& c : name) {
+      if (c == '#' || c == ';') c = '_';
+    }
+    name = one_line(name, '_');
+  } else if (const std::string problem = name_problem(name); !problem.empty()) {
+    throw input::UsageError("--name = '" + one_line(name, '?') + "' " + problem +
+                            "; valid: one line of text without # or ;, at most 200 bytes");
   }
   run.material_text = material_text(run, name);
   // The engine reads what was written, as a user's run will.

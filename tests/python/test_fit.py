@@ -220,6 +220,14 @@ def test_bad_options_are_refused(fitted, tmp_path):
             (["--poisson", "0.5", "--reference-temperature", "23", "--C1", "9"], "--C1 and --C2 together"),
             (["--poisson", "0.5", "--reference-temperature", "23", "--time-window", "1s"], "--time-window"),
             (["--poisson", "0.5", "--reference-temperature", "-300"], "not above absolute zero"),
+            # Issue 35 item 9: far outside the isotherms (0 to 80 C), in C or in K.
+            (["--poisson", "0.5", "--reference-temperature", "-100"], "is far outside the data, whose readings span"),
+            (["--poisson", "0.5", "--reference-temperature", "23K"], "(-250.15 degC) is far outside the data"),
+            (["--poisson", "0.5", "--reference-temperature", "200"], "valid: -10.2 to 90.1 degC"),
+            # Issue 35 item 8: a name the material file cannot hold whole.
+            (["--poisson", "0.5", "--reference-temperature", "23", "--name", "a\n[material]"], "--name = 'a?[material]'"),
+            (["--poisson", "0.5", "--reference-temperature", "23", "--name", "Sample #3; batch=7"],
+             "# and ; start a comment in a material file"),
     ):
         r = cli("fit", "--dma", data, *args, "-o", tmp_path / "m.ini")
         assert r.returncode == 2 and message in r.stderr, (args, r.stderr)
@@ -264,6 +272,29 @@ def test_the_output_may_not_destroy_what_its_path_names(fitted, tmp_path):
     assert (tmp_path / "target.ini").read_text() == "the link's target"
     assert data.read_bytes() == before
     assert sorted(p.name for p in tmp_path.iterdir()) == listing
+
+
+def test_names_and_paths_reach_the_material_file_whole(fitted, tmp_path):
+    """Issue 35 item 8: a name is stored as given; a file name with a line break, # or ;
+    (written raw into the header comment and the default name before) leaves the file one
+    the engine reads, with every line where it belongs."""
+    tmp, _ = fitted
+    r = cli("fit", "--dma", tmp / "data.csv", "--reference-temperature", "23", "--poisson", "0.5",
+            "--name", "Sample 3, batch 7 (ü)", "-o", tmp_path / "m.ini")
+    assert r.returncode == 0, r.stderr
+    assert "\nname = Sample 3, batch 7 (ü)\n" in (tmp_path / "m.ini").read_text()
+    odd = tmp_path / "a\n[material]\nname = x #;.csv"
+    odd.write_bytes((tmp / "data.csv").read_bytes())
+    r = cli("fit", "--dma", odd, "--reference-temperature", "23", "--poisson", "0.5", "-o", tmp_path / "o.ini")
+    assert r.returncode == 0, r.stderr
+    text = (tmp_path / "o.ini").read_text()
+    lines = text.splitlines()
+    assert [k for k, line in enumerate(lines) if line.strip() == "[material]"] == [3]  # after the 3 comment lines
+    assert len([line for line in lines if line.startswith("name")]) == 1
+    assert "\nname = fitted to a_[material]_name = x __.csv\n" in text
+    r = cli("point", "--material", tmp_path / "o.ini", "--R", "50um", "--l", "150um", "--dh", "1um", "--pressure",
+            "100kPa", "--s", "2", "--temperature", "23", "--format", "json")
+    assert r.returncode == 0, r.stderr
 
 
 # Published: the shift factors shipped with the data (pyvisco,
