@@ -73,6 +73,10 @@ po::options_description fit_options() {
        "interconversion resolves")
       ("refine", po::value<std::string>()->default_value("yes")->value_name("yes|no"),
        "refine the relaxation times after the grid (no: keep the grid's)")
+      ("accept-poor-fit", po::bool_switch(),
+       "write the material even where the fit fails its checks (shifts that rise with\n"
+       "temperature, WLF's C2 on its bound, shifts 0.5 decades about the law, E' beyond\n"
+       "10% or E'' beyond 20% RMS); the verdict is recorded in the file")
       ("name", po::value<std::string>()->value_name("TEXT"), "the material's name: one line without # or ; (default: the files' names)")
       ("output", po::value<std::string>()->value_name("FILE"), "the material file to write (-o)");
   return opts;
@@ -138,6 +142,7 @@ std::string material_text(const FitRun& run, const std::string& name) {
     }
     s << ".\n";
   }
+  for (const std::string& p : run.problems) s << "# POOR FIT, written with --accept-poor-fit: " << one_line(p, '?') << "\n";
   s << "[material]\n"
     << "name = " << name << "\n"
     << "law = prony\n"
@@ -185,6 +190,9 @@ std::string details_json(const FitRun& run) {
   for (std::size_t i = 0; i < run.sources.size(); ++i) s << (i ? ", " : "") << input::json_string(run.sources[i]);
   s << "],\n  \"material\": " << input::json_string(run.output) << ",\n";
   s << "  \"name\": " << input::json_string(run.material->name()) << ",\n";
+  s << "  \"verdict\": {\"poor\": " << (run.problems.empty() ? "false" : "true") << ", \"problems\": [";
+  for (std::size_t i = 0; i < run.problems.size(); ++i) s << (i ? ", " : "") << input::json_string(run.problems[i]);
+  s << "]},\n";
   s << "  \"units\": {\"temperature\": \"degC\", \"x\": \"" << (dma ? "rad/s" : "s")
     << "\", \"moduli\": \"Pa\", \"tau\": \"s\", \"log10_aT\": \"1\", \"C2\": \"K\", \"E_a\": \"J/mol\"},\n";
   s << "  \"readings\": {\"temperature\": " << input::json_array(T) << ",\n    \"x\": " << input::json_array(x)
@@ -264,6 +272,10 @@ std::string report(const FitRun& run) {
     << (dma ? "E' " + model::number_text(100 * f.prony.rms_first, 3) + "%, E'' " + model::number_text(100 * f.prony.rms_second, 3) + "%"
             : "E(t) " + model::number_text(100 * f.prony.rms_first, 3) + "%")
     << "\n";
+  if (!run.problems.empty()) {
+    s << "POOR FIT, written with --accept-poor-fit (the verdict is in both files):\n";
+    for (const std::string& p : run.problems) s << "  - " << p << "\n";
+  }
   if (!run.output.empty()) {
     s << "wrote " << run.output << " and " << run.details << "\n"
       << "picture: /usr/bin/python3 postprocess/fit_picture.py " << run.details << " -o fit.png\n";
@@ -389,6 +401,15 @@ FitRun run_fit(const po::variables_map& vm) {
     run.fit = fit::fit_material(m, request);
   } catch (const std::invalid_argument& e) {
     throw input::UsageError(std::string("cannot fit: ") + e.what());
+  }
+  // The fit judges itself before anything is written.
+  run.problems = fit::fit_problems(run.fit);
+  if (!run.problems.empty() && !vm["accept-poor-fit"].as<bool>()) {
+    std::string why = "the fit is poor; nothing written:";
+    for (const std::string& p : run.problems) why += "\n  - " + p;
+    throw input::UsageError(why + "\n  check the data (isotherm labels, units, temperatures), give the shift law "
+                                  "(--C1 --C2 or --E-a), or pass --accept-poor-fit to write it with this verdict "
+                                  "recorded in the file");
   }
   const fit::PronyTerms& t = run.fit.prony.terms;
   double E0 = t.E_inf;

@@ -24,6 +24,9 @@ struct FitRun {
   std::string output;                ///< the material file's path ("" from Python without output)
   std::string details;               ///< the JSON file beside it (readings, shifts, fit), or ""
   std::string details_json;          ///< its text
+  /// The fit's verdict (fit::fit_problems): empty for a good fit; a poor one is written only
+  /// with --accept-poor-fit, the problems recorded in both files.
+  std::vector<std::string> problems;
 };
 
 /// `punchsweep fit`: reads the measurement files, fits, writes the material file and its

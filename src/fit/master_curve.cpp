@@ -103,7 +103,7 @@ std::vector<double> wlf_basis(const std::vector<double>& T, double T_ref, double
 /// bound, then golden section between the best point's neighbours.
 model::TemperatureShift fit_wlf(const std::vector<double>& T, const std::vector<double>& L, double T_ref, double* zero) {
   const double lower = std::max(0.0, T_ref - T.front());
-  const double a = std::log(lower + 0.1), b = std::log(1e4);
+  const double a = std::log(lower + 0.1), b = std::log(kWlfC2Max);
   const auto sse_at = [&](double log_c2) {
     const LineFit f = fit_line(wlf_basis(T, T_ref, std::exp(log_c2)), L);
     return f.p > 0.0 ? f.sse : std::numeric_limits<double>::infinity();

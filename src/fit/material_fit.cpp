@@ -114,3 +114,47 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
 }
 
 }  // namespace punchsweep::fit
+
+namespace punchsweep::fit {
+
+std::vector<std::string> fit_problems(const MaterialFit& fit, const FitLimits& limits) {
+  std::vector<std::string> problems;
+  const MasterCurve& m = fit.master;
+  const auto text = [](double v, int digits = 3) { return model::number_text(v, digits); };
+  const bool measured = !m.measured_log10_aT.empty() && !std::isnan(m.measured_log10_aT.front());
+  if (measured) {
+    for (std::size_t i = 1; i < m.temperatures.size(); ++i) {
+      const double rise = m.measured_log10_aT[i] - m.measured_log10_aT[i - 1];
+      if (rise > limits.shift_rise) {
+        problems.push_back("the shifts rise with temperature: " + text(m.temperatures[i]) + " degC is shifted by " +
+                           text(m.measured_log10_aT[i]) + " decades, " + text(m.temperatures[i - 1]) + " degC by " +
+                           text(m.measured_log10_aT[i - 1]) +
+                           " (a warmer isotherm relaxes sooner: swapped labels, or isotherms on a plateau where E' "
+                           "cannot place them)");
+      }
+    }
+    if (m.law && m.law->kind == model::TemperatureShift::Kind::wlf) {
+      const double lower = std::max(0.0, m.law->T_ref - m.temperatures.front()) + 0.1;
+      if (m.law->C2 > 0.99 * kWlfC2Max || m.law->C2 < 1.01 * lower) {
+        problems.push_back("WLF's C2 = " + text(m.law->C2, 6) + " K lies on the bound of its search (" + text(lower, 4) +
+                           " to " + text(kWlfC2Max, 4) + " K): the shifts do not determine it");
+      }
+    }
+    if (m.rms_log10 > limits.shift_rms) {
+      problems.push_back("the measured shifts lie " + text(m.rms_log10) + " decades (RMS) about the fitted law; limit " +
+                         text(limits.shift_rms) + " decades");
+    }
+  }
+  const bool dma = fit.abscissa == Abscissa::frequency;
+  if (fit.rms_all_first > limits.rms_first) {
+    problems.push_back(std::string(dma ? "E'" : "E(t)") + " is fitted to " + text(100 * fit.rms_all_first) +
+                       "% (RMS over every reading); limit " + text(100 * limits.rms_first) + "%");
+  }
+  if (dma && fit.rms_all_second > limits.rms_second) {
+    problems.push_back("E'' is fitted to " + text(100 * fit.rms_all_second) + "% (RMS over every reading); limit " +
+                       text(100 * limits.rms_second) + "%");
+  }
+  return problems;
+}
+
+}  // namespace punchsweep::fit

@@ -4,6 +4,7 @@
 /// series fitted on it (prony_fit.hpp), with every reading's reduced abscissa and the
 /// fit's values there for the report and the picture.
 
+#include <string>
 #include <vector>
 
 #include "fit/master_curve.hpp"
@@ -70,6 +71,26 @@ struct MaterialFit {
   /// the written series' over the readings within the window).
   double rms_all_first = 0.0, rms_all_second = 0.0;
 };
+
+/// What a fit must meet to be written without --accept-poor-fit (docs/fitting.md, "When a
+/// fit is refused"). The RMS limits are relative errors over every reading: 1-3% noise
+/// fits to about the noise, the published EMS-CA data set to E' 5.1%, E'' 11.2%, and a
+/// cold isotherm on the glassy plateau shifted 2.6 decades short to E' 12%, E'' 39%. The
+/// shifts' RMS about their law: EMS-CA's 21 isotherms over 150 K sit 0.42 decades about
+/// WLF; farther, the law does not describe them.
+struct FitLimits {
+  double rms_first = 0.10;   ///< E' or E(t)
+  double rms_second = 0.20;  ///< E''
+  double shift_rms = 0.5;    ///< decades, measured shifts about the law
+  double shift_rise = 0.05;  ///< decades a shift may rise with temperature (noise) before it is non-monotone
+};
+
+/// The fit's own verdict: each way it fails `limits`, with its numbers (empty: a good fit).
+/// Shifts that rise with temperature (a warmer isotherm shifted to longer times: swapped
+/// labels, or a plateau where the overlap says nothing); WLF's C2 on the search's bound
+/// (within 1% of it, either end); the shifts' RMS about the law; the series' RMS over every
+/// reading.
+std::vector<std::string> fit_problems(const MaterialFit& fit, const FitLimits& limits = {});
 
 /// Throws std::invalid_argument with the reason when the measurements cannot give a
 /// material (none, mixed kinds, no equilibrium modulus within the window, or as

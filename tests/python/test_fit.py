@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -295,6 +296,64 @@ def test_names_and_paths_reach_the_material_file_whole(fitted, tmp_path):
     r = cli("point", "--material", tmp_path / "o.ini", "--R", "50um", "--l", "150um", "--dh", "1um", "--pressure",
             "100kPa", "--s", "2", "--temperature", "23", "--format", "json")
     assert r.returncode == 0, r.stderr
+
+
+def write_glassy_isotherms(path: Path, swap=False):
+    """Issue 35 item 2's case: 5 equal Prony terms (tau 1e-4..1e4 s), WLF C1 12, C2 80 K at
+    23 C, isotherms 0-80 C every 10 K (0.1-100 Hz), 1% noise, seed 7: the 0 C isotherm sits
+    on the glassy plateau (its true shift 4.85 decades). `swap` labels 30 C as 40 C and back."""
+    rng = np.random.default_rng(7)
+    tau, E_i = np.logspace(-4, 4, 5), np.full(5, 3e6)
+    rows = ["temperature [C],frequency [Hz],storage [MPa],loss [MPa]"]
+    for T in range(0, 81, 10):
+        for f in np.logspace(-1, 2, 10):
+            wt = 2 * np.pi * f * 10 ** (-12 * (T - 23) / (80 + T - 23)) * tau
+            storage, loss = 1e6 + (E_i * wt**2 / (1 + wt**2)).sum(), (E_i * wt / (1 + wt**2)).sum()
+            label = {30: 40, 40: 30}.get(T, T) if swap else T
+            rows.append(f"{label},{f!r},{storage * (1 + 0.01 * rng.normal()) / 1e6!r},"
+                        f"{loss * (1 + 0.01 * rng.normal()) / 1e6!r}")
+    path.write_text("\n".join(rows) + "\n")
+    (path.parent / "glassy_truth.ini").write_text(
+        "[material]\nname = truth\nlaw = prony\nmodulus_unit = Pa\ntime_unit = s\npoisson = 0.5\nE_inf = 1e6\n"
+        f"E_i = {', '.join(repr(float(v)) for v in E_i)}\ntau_i = {', '.join(repr(float(v)) for v in tau)}\n"
+        "[shift]\nkind = wlf\nC1 = 12\nC2 = 80\nT_ref = 23\n")
+
+
+def test_a_poor_fit_is_refused_with_its_numbers_or_written_with_its_verdict(tmp_path):
+    """Issue 35 item 2: the fit judges itself. The glassy cold isotherm is placed 2 decades
+    short by E' overlap: its shift rises from 0 to 10 C and E'' is fitted to about 39%
+    (limit 20%): refused, exit 2, nothing written. --accept-poor-fit writes it with the
+    verdict in the material file, the .fit.json and the report; Python says the same. With
+    the true law given the same data fit to the noise and give t* within 6% of the truth;
+    swapped labels are named."""
+    data = tmp_path / "glassy.csv"
+    write_glassy_isotherms(data)
+    args = ["fit", "--dma", data, "--reference-temperature", "23", "--poisson", "0.5", "-o", tmp_path / "m.ini"]
+    r = cli(*args)
+    assert r.returncode == 2, r.stderr
+    assert "the fit is poor; nothing written" in r.stderr and "the shifts rise with temperature: 10 degC" in r.stderr
+    assert re.search(r"E'' is fitted to (\d+\.?\d*)% \(RMS over every reading\); limit 20%", r.stderr)
+    assert not (tmp_path / "m.ini").exists() and not (tmp_path / "m.fit.json").exists()
+    r = cli(*args, "--accept-poor-fit")
+    assert r.returncode == 0 and "POOR FIT, written with --accept-poor-fit" in r.stdout, r.stderr
+    assert "# POOR FIT, written with --accept-poor-fit: the shifts rise" in (tmp_path / "m.ini").read_text()
+    verdict = json.loads((tmp_path / "m.fit.json").read_text())["verdict"]
+    assert verdict["poor"] and any("E''" in p for p in verdict["problems"])
+    result = punchsweep.fit_material(data, reference_temperature=23, poisson=0.5, accept_poor_fit=True)
+    assert list(result.problems) == verdict["problems"]
+    with pytest.raises(ValueError, match="the fit is poor"):
+        punchsweep.fit_material(data, reference_temperature=23, poisson=0.5)
+    # The true law: a good fit, and t* where the truth has it.
+    r = cli(*args, "--C1", "12", "--C2", "80", "--name", "given law")
+    assert r.returncode == 0 and "POOR FIT" not in r.stdout, r.stderr
+    for T in (5.0, 23.0, 60.0):
+        got, want = t_star(tmp_path / "m.ini", "10um", T), t_star(tmp_path / "glassy_truth.ini", "10um", T)
+        assert got == pytest.approx(want, rel=0.06), T
+    # Swapped labels: both rises named.
+    write_glassy_isotherms(tmp_path / "swapped.csv", swap=True)
+    r = cli("fit", "--dma", tmp_path / "swapped.csv", "--reference-temperature", "23", "--poisson", "0.5",
+            "-o", tmp_path / "s.ini")
+    assert r.returncode == 2 and "the shifts rise with temperature: 40 degC" in r.stderr, r.stderr
 
 
 # Published: the shift factors shipped with the data (pyvisco,

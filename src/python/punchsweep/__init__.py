@@ -191,7 +191,9 @@ class FitResult:
     reading (temperature (its isotherm's), x (rad/s or s, as measured), x_reduced (omega a_T
     or t / a_T), storage/loss or modulus, their *_fit, used (within the time window));
     shift: temperatures, measured_log10_aT, law_log10_aT, and the law (law, T_ref, C1, C2,
-    E_a, rms_log10); prony: E_inf, E_i, tau_i, rms_relative, bic, candidates, chosen."""
+    E_a, rms_log10); prony: E_inf, E_i, tau_i, rms_relative, bic, candidates, chosen;
+    problems: the fit's verdict, each check it fails with its numbers (empty for a good fit;
+    a poor fit is returned only with accept_poor_fit=True, else ValueError names them)."""
     material: "Material | None"
     material_text: str
     report: str
@@ -199,6 +201,7 @@ class FitResult:
     readings: dict
     shift: dict
     prony: dict
+    problems: tuple = ()
 
 
 def fit_material(dma=None, *, relaxation=None, reference_temperature=None, poisson=None,
@@ -207,11 +210,13 @@ def fit_material(dma=None, *, relaxation=None, reference_temperature=None, poiss
     list of them, each "FILE" or "FILE@40C") or a relaxation test (`relaxation`). Other
     keywords are the command's options (shift="arrhenius", C1=..., C2=...,
     terms_per_decade=[1, 2], smoothing=0.01, time_window="1e-9s,1e9s", name=...,
-    refine=False). With `output` the material file and its .fit.json are written, as
+    refine=False, accept_poor_fit=True). With `output` the material file and its .fit.json are written, as
     the command does. ValueError with the command's message for bad input."""
     def files(v):
         return [] if v is None else [os.fspath(v)] if isinstance(v, (str, os.PathLike)) else [os.fspath(p) for p in v]
     keywords = [("dma", f) for f in files(dma)] + [("relaxation", f) for f in files(relaxation)]
+    if options.pop("accept_poor_fit", False):
+        keywords.append(("accept-poor-fit", "true"))
     keywords += [("refine", "yes" if options.pop("refine", True) else "no")] + _keywords(dict(reference_temperature=reference_temperature, poisson=poisson,
                                        output=None if output is None else os.fspath(output), **options))
     raw = _core.fit(keywords)
@@ -219,7 +224,8 @@ def fit_material(dma=None, *, relaxation=None, reference_temperature=None, poiss
     readings = {k: np.asarray(v, dtype=float) for k, v in details["readings"].items()}
     return FitResult(material=Material(raw["output"]) if raw["output"] else None,
                      material_text=raw["material_text"], report=raw["report"], kind=details["kind"],
-                     readings=readings, shift=details["shift"], prony=details["prony"])
+                     readings=readings, shift=details["shift"], prony=details["prony"],
+                     problems=tuple(details["verdict"]["problems"]))
 
 
 @dataclass(frozen=True)
