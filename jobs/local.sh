@@ -28,8 +28,22 @@ fi
 mkdir -p "$run"
 run=$(realpath "$run")
 # The config, and the material files it names, copied into the run folder (relative paths
-# taken from the config's own folder): the folder then runs and resumes by itself.
-"$python" "$root/jobs/record_config.py" "$config" "$run"
+# taken from the config's own folder): the folder then runs and resumes by itself. Into a
+# folder that holds a run already, the copy is staged first and the engine asked whether
+# the map would resume from it (sweep --resume --dry-run): a different configuration is
+# refused (exit 2) before the folder's config or materials are touched.
+staged=$(mktemp -d "$run/.config-XXXXXX")
+trap 'rm -rf "$staged"' EXIT
+"$python" "$root/jobs/record_config.py" "$config" "$staged"
+if [ -e "$run/config.ini" ] || [ -e "$run/map.h5" ] || [ -e "$run/map.h5.partial.journal" ]; then
+  (cd "$staged" && "$binary" sweep --config config.ini --output "$run/map.h5" --resume --dry-run > /dev/null) || {
+    echo "punchsweep: $run was left as it was (its config, materials and map); choose another run folder" >&2
+    exit 2
+  }
+fi
+rm -rf "$run/materials"
+[ ! -d "$staged/materials" ] || mv "$staged/materials" "$run/materials"
+mv "$staged/config.ini" "$run/config.ini"
 {
   echo "punchsweep run: $name"
   echo "started: $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(hostname), $cores cores"

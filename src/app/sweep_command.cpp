@@ -284,6 +284,19 @@ int run_sweep_command(const std::vector<std::string>& args) {
 
   const map::Tiling tiling(config.grid.shape(), config.tile_points());
   if (config.dry_run) {
+    // With --resume the dry run also says whether the map would resume: a job script asks it
+    // before it writes anything into a run folder (jobs/local.sh).
+    if (config.resume && !config.overwrite) {
+      run::Start start = run::Start::fresh;
+      std::string refusal;
+      if (root) refusal = run::preflight(config, run::OutputPaths(config.output), &start);
+      if (sweep::share_from_root(refusal.empty() ? 0 : 1) != 0) {
+        if (root) {
+          for (const std::string& line : run::split_lines(refusal)) std::cerr << "punchsweep sweep: " << line << "\n";
+        }
+        return input::kUsageExitCode;
+      }
+    }
     if (root) print_dry_run(config, tiling, mpi.size());
     return 0;
   }

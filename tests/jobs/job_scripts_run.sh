@@ -57,6 +57,15 @@ done
 cmp "$root/materials/nbr_linder2011.ini" elsewhere/nbr/materials/nbr_linder2011.ini
 bash "$root/jobs/local.sh" "$root/sweeps/materials/nbr.ini" "$PWD/elsewhere/nbr" > nbr-again.log 2>&1
 grep -q "already complete" nbr-again.log || { echo "FAIL: the material run folder did not resume"; cat nbr-again.log; exit 1; }
+# 4c) Issue 35 item 6: another config into that run folder is refused before anything there
+#     is written: its config, materials and map stay as they were.
+before=$(cd elsewhere/nbr && sha256sum config.ini materials/* map.h5)
+set +e; bash "$root/jobs/local.sh" local.ini "$PWD/elsewhere/nbr" > other.log 2>&1; code=$?; set -e
+[ "$code" = 2 ] || { echo "FAIL: another config into a run folder: exit $code"; cat other.log; exit 1; }
+grep -q "was made with another configuration" other.log || { echo "FAIL: the refusal does not say why"; cat other.log; exit 1; }
+[ "$(cd elsewhere/nbr && sha256sum config.ini materials/* map.h5)" = "$before" ] ||
+  { echo "FAIL: the refused run changed the run folder"; cat other.log; exit 1; }
+[ -z "$(ls -A elsewhere/nbr | grep '^\.config-')" ] || { echo "FAIL: a staged config was left behind"; exit 1; }
 SLURM_JOB_ID=6161 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/elsewhere/slurm-nbr" \
   bash "$root/jobs/slurm.sbatch" "$root/sweeps/materials/nbr.ini" > slurm-nbr.log 2>&1 ||
   { echo "FAIL: slurm.sbatch with sweeps/materials/nbr.ini"; cat slurm-nbr.log; exit 1; }
