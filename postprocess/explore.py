@@ -82,6 +82,70 @@ def coarsening(ds, items: list[str]) -> dict[str, int]:
     return steps
 
 
+def embedded(ds) -> list[tuple[str, str]]:
+    """The map's arrays the page embeds, with their types: what payload packs."""
+    names = [(v, "<f8") for v in POINT_VARIABLES if v in ds.variables]
+    names += [(v, "<i1") for v in FLAG_VARIABLES if v in ds.variables]
+    if pm.has_series(ds):
+        names += [(v, "<f8") for v in pm.SERIES]
+    return names
+
+
+def estimate_mb(ds, steps: dict[str, int], samples: int = 8, block: int = 1 << 14) -> float:
+    """The page's size in MB, estimated before it is built, from the map's metadata and a few
+    blocks of each array: plotly.js, and per array its size (after `steps`) times the
+    deflate ratio of `samples` blocks of `block` values spread over it, times base64's 4/3.
+    Reads about samples x block values per array, whatever the map's size."""
+    sel = {n: slice(None, None, k) for n, k in steps.items()}
+    ds = ds.isel(sel) if sel else ds
+    total = PLOTLY_JS.stat().st_size + 200_000  # the page's own code and the axes' values
+    for name, dtype in embedded(ds):
+        da = ds[name]
+        size = int(np.prod(da.shape))
+        if size == 0:
+            continue
+        # Blocks of about `block` consecutive values (C order): the trailing axes whole, a run
+        # of the next one, at `samples` places spread over the leading ones.
+        shape, k, tail = da.shape, da.ndim, 1
+        while k > 0 and tail * shape[k - 1] <= block:
+            tail *= shape[k - 1]
+            k -= 1
+        raw = compressed = 0
+        if k == 0:
+            places, rows = [()], 0
+        else:
+            rows = max(1, block // tail)
+            lead = int(np.prod(shape[:k - 1])) if k > 1 else 1
+            places = [np.unravel_index(int(i), shape[:k - 1]) if k > 1 else ()
+                      for i in np.unique(np.linspace(0, lead - 1, min(samples, lead)).astype(int))]
+        for j, place in enumerate(places):
+            index = {da.dims[d]: int(place[d]) for d in range(len(place))}
+            if k > 0:
+                start = (j * 7919) % max(1, shape[k - 1] - rows + 1)  # spread the runs too
+                index[da.dims[k - 1]] = slice(start, start + rows)
+            values = np.ascontiguousarray(da.isel(index).values, dtype=dtype)
+            raw += values.nbytes
+            compressed += len(zlib.compress(values.tobytes(), 9))
+        total += size * np.dtype(dtype).itemsize * (compressed / raw) * 4 / 3
+    return total / 1e6
+
+
+def every_that_fits(ds, axis: str, max_mb: float) -> int:
+    """The smallest K for which `--every AXIS=K` gives a page estimated within max_mb (with
+    10% to spare for the estimate), 0 if none does."""
+    plotly = PLOTLY_JS.stat().st_size / 1e6
+    whole = estimate_mb(ds, {})
+    if whole <= 0.9 * max_mb:
+        return 1
+    n = ds.sizes[axis]
+    k = max(2, int(np.ceil((whole - plotly) / max(0.9 * max_mb - plotly, 1e-9))))
+    while k <= n:
+        if estimate_mb(ds, {axis: k}) <= 0.9 * max_mb:
+            return k
+        k += 1
+    return 0
+
+
 def attr_text(value) -> str:
     return value.decode() if isinstance(value, bytes) else str(value)
 
@@ -199,7 +263,7 @@ function fmt(v) { return v === null || Number.isNaN(v) ? "NaN" : (Math.abs(v) >=
 // hover text (<a href>, <b>, <br>, entities), so &, < and > are given as entities.
 function plain(text) { return String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;"); }
 // A word of a shell command, quoted where the shell would read it otherwise.
-function shellWord(word) { return /^[A-Za-z0-9_.,:=@%+\/-]+$/.test(word) ? word : "'" + word.replace(/'/g, "'\\''") + "'"; }
+function shellWord(word) { return /^[A-Za-z0-9_.,:=@%+\\/-]+$/.test(word) ? word : "'" + word.replace(/'/g, "'\\''") + "'"; }
 function unitText(u) { return u && u !== "1" ? " " + u : ""; }
 function axisValueText(a, i) { return a.labels ? a.labels[i] : fmt(a.values[i]) + unitText(a.unit); }
 
@@ -430,7 +494,17 @@ def main(argv: list[str]) -> int:
     ds = pm.open_map(args.map)
     if not pm.is_completed(ds):
         raise pm.MapError(f"{args.map} is not completed (resume the sweep first)")
-    data = payload(ds, args.x, args.y, coarsening(ds, args.every), args.map)
+    steps = coarsening(ds, args.every)
+    # The size is estimated first: a map far too large is refused without building its page
+    # (an 8e6-point map took 49 s and 1.5 GB to be refused when the page was built first).
+    estimate = estimate_mb(ds, steps)
+    if estimate > 1.5 * args.max_mb:  # the estimate runs up to 25% high (docs/maps.md)
+        biggest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
+        k = every_that_fits(ds, biggest, args.max_mb)
+        hint = f"--every {biggest}={k}" if k else f"--every on more than one axis (even every {biggest} alone is too much)"
+        raise pm.MapError(f"the page would be about {estimate:.0f} MB (estimated), above --max-mb {args.max_mb:g} "
+                          f"(plotly.js is 8.7 MB of it): coarsen the map, e.g. {hint}, or raise --max-mb")
+    data = payload(ds, args.x, args.y, steps, args.map)
     page = render(data, PLOTLY_JS.read_text(encoding="utf-8"))
     size_mb = len(page.encode("utf-8")) / 1e6
     if size_mb > args.max_mb:

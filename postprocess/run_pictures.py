@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The job scripts' pictures of a run folder's map: regime_map.png (pbar across, dh up,
 a panel per s), critical_dh.png (against pbar), for whatever axes the map has, and
-explore.html, the interactive page (explore.py; coarsened on its longest axis, every 2nd,
-3rd, ... value, until it fits explore.py's size limit).
+explore.html, the interactive page (explore.py; coarsened on its longest axis, every K-th
+value, K chosen once from the page's estimated size so that it fits explore.py's limit).
 
 Every axis that a picture does not show is fixed at a value that fits the map: l at 0.75 R
 and T at 5 where the map has them (the README's default picture), any other axis (a
@@ -60,16 +60,22 @@ def main(argv: list[str]) -> int:
                              "-o", str(folder / "critical_dh.png")])
     if code != 0:
         return code
+    # The coarsening chosen once, from the page's estimated size; built again (one step
+    # coarser) only where the estimate fell short.
     with pm.open_map(path) as ds:
         longest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
-    for every in range(1, 9):
+        every = explore.every_that_fits(ds, longest, explore.DEFAULT_MAX_MB)
+        if every == 0:
+            raise pm.MapError(f"explore.html would stay above {explore.DEFAULT_MAX_MB:g} MB even with every "
+                              f"{ds.sizes[longest]}th {longest}; draw it with explore.py --every on several axes")
+    for k in (every, every + 1):
         try:
             return explore.main([path, "-o", str(folder / "explore.html"),
-                                 *(["--every", f"{longest}={every}"] if every > 1 else [])])
+                                 *(["--every", f"{longest}={k}"] if k > 1 else [])])
         except pm.MapError as e:
             if "above --max-mb" not in str(e):
                 raise
-    raise pm.MapError(f"explore.html stays above the size limit even with every 8th {longest}")
+    raise pm.MapError(f"explore.html stays above the size limit even with every {every + 1}th {longest}")
 
 
 if __name__ == "__main__":

@@ -231,3 +231,30 @@ def test_hostile_texts_are_shown_as_text_in_chromium(hostile, tmp_path):
                 assert point["t_star"] is None and np.isnan(f["t_star"][index])
             else:
                 assert point["t_star"] == pytest.approx(f["t_star"][index], rel=1e-12)
+
+
+# Issue 35 item 5: the page's size is estimated before it is built, from a few blocks of each
+# array; a map far above --max-mb is refused without building its page, naming a
+# coarsening that fits.
+def test_the_size_is_estimated_before_the_page_is_built(maps, monkeypatch, tmp_path):
+    import script_runner
+    import explore as explore_module
+    for which in ("default", "material"):
+        path, page = maps[which]
+        with script_runner.pm.open_map(path) as ds:
+            estimate = explore_module.estimate_mb(ds, {})
+        assert estimate == pytest.approx(page.stat().st_size / 1e6, rel=0.1), which
+    path, _ = maps["default"]
+
+    def built(*args, **kwargs):
+        raise AssertionError("the page was built before the size was checked")
+
+    monkeypatch.setattr(explore_module, "payload", built)
+    rc, _, err = script_runner.call(explore_module, path, "-o", tmp_path / "p.html", "--max-mb", "15")
+    assert rc == 2 and "(estimated), above --max-mb 15" in err, err
+    every = re.search(r"--every (\w+)=(\d+)", err)
+    assert every and not (tmp_path / "p.html").exists()
+    monkeypatch.undo()
+    done = explore(path, "-o", tmp_path / "p.html", "--max-mb", "15", "--every", f"{every[1]}={every[2]}")
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "p.html").stat().st_size <= 15e6
