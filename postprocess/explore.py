@@ -189,7 +189,12 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
     for v in FLAG_VARIABLES:
         if v in ds.variables:
             f = pm.flags(ds, v)
-            flags[v] = {"data": packed(ds[v].transpose(*names).values, "<i1"),
+            values = ds[v].transpose(*names).values
+            unknown = np.setdiff1d(np.unique(values), np.asarray(f.codes))
+            if unknown.size:  # the page would show them as bare numbers
+                raise pm.MapError(f"{v} holds the codes {[int(c) for c in unknown[:5]]}, which its flag_values "
+                                  f"({', '.join(f'{c} {m}' for c, m in zip(f.codes, f.meanings))}) do not name")
+            flags[v] = {"data": packed(values, "<i1"),
                         "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}
     series = {}
     if pm.has_series(ds):

@@ -142,16 +142,54 @@ def physical_scales(ds) -> dict[str, tuple[float, str]]:
     R, '50 um', where the sweep had model.R) in its unit, E0/(1-nu^2) (a material's
     E0_star_Pa) in kPa, a load R^2 E0/(1-nu^2) in N (both known)."""
     scales = {}
-    E0_star = ds.attrs.get("E0_star_Pa")
+    E0_star, R, R_m = scale_attributes(ds.attrs, MapError)
     if E0_star is not None:
-        scales["E0/(1-nu^2)"] = (float(E0_star) / 1e3, "kPa")
-    R = ds.attrs.get("R")
+        scales["E0/(1-nu^2)"] = (E0_star / 1e3, "kPa")
     if R is not None:
-        number, unit = str(R.decode() if isinstance(R, bytes) else R).split()
-        scales["R"] = (float(number), unit)
+        scales["R"] = R
         if E0_star is not None:
-            scales["R^2 E0/(1-nu^2)"] = (float(ds.attrs["R_m"]) ** 2 * float(E0_star), "N")
+            scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
     return scales
+
+
+_LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}  # the engine's (model/numerics/units)
+
+
+def scale_attributes(attrs, error=ValueError):
+    """The map's physical scales as its attributes hold them, checked: E0_star_Pa (a finite
+    number > 0, Pa), R ('50 um': a finite number > 0 and a length unit the engine writes) and
+    R_m (R in m, agreeing with R); each None where absent. `error` (the caller's exception
+    type) names the attribute and its value where one is not what the engine writes. The
+    same rule as the Python module's open_map."""
+    def text(v):
+        return v.decode() if isinstance(v, bytes) else str(v)
+
+    def positive(name):
+        if name not in attrs:
+            return None
+        try:
+            value = float(np.asarray(attrs[name]).item())
+        except (TypeError, ValueError):
+            value = float("nan")
+        if not (math.isfinite(value) and value > 0):
+            raise error(f"the map's attribute {name} = {text(attrs[name])!r} is not a finite number > 0")
+        return value
+
+    E0_star, R_m, R = positive("E0_star_Pa"), positive("R_m"), None
+    if "R" in attrs:
+        parts = text(attrs["R"]).split()
+        try:
+            number = float(parts[0]) if len(parts) == 2 else float("nan")
+        except ValueError:
+            number = float("nan")
+        if not (math.isfinite(number) and number > 0 and parts[1] in _LENGTH_UNITS):
+            raise error(f"the map's attribute R = {text(attrs['R'])!r} is not a length the engine writes "
+                        f"(a number > 0 and one of {', '.join(_LENGTH_UNITS)})")
+        if R_m is None or abs(number * _LENGTH_UNITS[parts[1]] - R_m) > 1e-9 * R_m:
+            raise error(f"the map's attributes R = {text(attrs['R'])!r} and R_m = "
+                        f"{text(attrs.get('R_m', 'missing'))!r} disagree")
+        R = (number, parts[1])
+    return E0_star, R, R_m
 
 
 def in_physical_units(ds):
@@ -186,11 +224,16 @@ def _check_layout(ds) -> None:
         if name not in ds.coords or ds[name].dims != (name,):
             raise MapError(f"regime's dimension '{name}' has no coordinate variable (dimension "
                            f"scale) with its grid values")
+        values = ds[name].values
+        if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
+            raise MapError(f"the axis {name} holds values that are not finite numbers: "
+                           f"{[float(v) for v in values if not np.isfinite(v)][:3]}")
     if set(ds["valid"].dims) != set(names):
         raise MapError(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime "
                        f"{', '.join(names)}")
     flags(ds, "regime")
     flags(ds, "valid")
+    scale_attributes(ds.attrs, MapError)
 
 
 def has_series(ds) -> bool:

@@ -23,6 +23,7 @@ E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_un
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 from collections.abc import Iterable, Mapping
@@ -439,19 +440,57 @@ def _physical_scales(attrs) -> dict:
     scales = {}
     time = attrs.get("time_unit", "T_eps")
     time = time.decode() if isinstance(time, bytes) else str(time)
-    if "E0_star_Pa" in attrs:
-        scales["E0/(1-nu^2)"] = (float(attrs["E0_star_Pa"]), "Pa")
+    E0_star, R, R_m = _scale_attributes(attrs)
+    if E0_star is not None:
+        scales["E0/(1-nu^2)"] = (E0_star, "Pa")
         if time != "T_eps":
-            scales["T_eps/(E0/(1-nu^2))"] = (1.0 / float(attrs["E0_star_Pa"]), f"{time}/Pa")
-    if "R" in attrs:
-        R = attrs["R"]
-        number, unit = (R.decode() if isinstance(R, bytes) else str(R)).split()
-        scales["R"] = (float(number), unit)
+            scales["T_eps/(E0/(1-nu^2))"] = (1.0 / E0_star, f"{time}/Pa")
+    if R is not None:
+        number, unit = R
+        scales["R"] = R
         if time != "T_eps":
-            scales["T_eps/R"] = (1.0 / float(number), f"{time}/{unit}")
-        if "E0_star_Pa" in attrs:
-            scales["R^2 E0/(1-nu^2)"] = (float(attrs["R_m"]) ** 2 * float(attrs["E0_star_Pa"]), "N")
+            scales["T_eps/R"] = (1.0 / number, f"{time}/{unit}")
+        if E0_star is not None:
+            scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
     return scales
+
+
+_LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}  # the engine's (model/numerics/units)
+
+
+def _scale_attributes(attrs):
+    """E0_star_Pa, R ('50 um') and R_m as the map holds them, checked (NotAMapError naming the
+    attribute where one is not what the engine writes); None where absent. The rule of
+    postprocess/punchsweep_maps.py's scale_attributes."""
+    def text(v):
+        return v.decode() if isinstance(v, bytes) else str(v)
+
+    def positive(name):
+        if name not in attrs:
+            return None
+        try:
+            value = float(np.asarray(attrs[name]).item())
+        except (TypeError, ValueError):
+            value = math.nan
+        if not (math.isfinite(value) and value > 0):
+            raise NotAMapError(f"the map's attribute {name} = {text(attrs[name])!r} is not a finite number > 0")
+        return value
+
+    E0_star, R_m, R = positive("E0_star_Pa"), positive("R_m"), None
+    if "R" in attrs:
+        parts = text(attrs["R"]).split()
+        try:
+            number = float(parts[0]) if len(parts) == 2 else math.nan
+        except ValueError:
+            number = math.nan
+        if not (math.isfinite(number) and number > 0 and parts[1] in _LENGTH_UNITS):
+            raise NotAMapError(f"the map's attribute R = {text(attrs['R'])!r} is not a length the engine writes "
+                               f"(a number > 0 and one of {', '.join(_LENGTH_UNITS)})")
+        if R_m is None or abs(number * _LENGTH_UNITS[parts[1]] - R_m) > 1e-9 * R_m:
+            raise NotAMapError(f"the map's attributes R = {text(attrs['R'])!r} and R_m = "
+                               f"{text(attrs.get('R_m', 'missing'))!r} disagree")
+        R = (number, parts[1])
+    return E0_star, R, R_m
 
 
 def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
@@ -494,7 +533,15 @@ def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
             ds[name].attrs["units"] = unit.decode() if isinstance(unit, bytes) else str(unit)
     if units not in ("physical", "scaled"):
         raise ValueError(f"open_map: units={units!r}; valid: 'physical' or 'scaled'")
-    scales = _physical_scales(ds.attrs) if units == "physical" else {}
+    try:
+        scales = _physical_scales(ds.attrs) if units == "physical" else {}
+        for dim in ds["regime"].dims:
+            values = ds[dim].values if dim in ds.variables else np.zeros(1)
+            if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
+                raise NotAMapError(f"the axis {dim} holds values that are not finite numbers")
+    except NotAMapError as e:
+        ds.close()
+        raise NotAMapError(f"{text} is not a punchsweep map as the engine writes it: {e}") from None
     for name in list(ds.variables):
         scale = ds[name].attrs.get("units")
         if scale not in scales:
