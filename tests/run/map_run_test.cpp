@@ -113,7 +113,7 @@ TEST(Preflight, decides_fresh_resume_or_refusal_from_the_files_there) {
   std::filesystem::remove(paths.final_path);
   sweep::SweepConfig to_null = config;
   to_null.output = "/dev/null";
-  EXPECT_NE(run::preflight(to_null, run::OutputPaths(to_null.output), &start).find("not a regular file"),
+  EXPECT_NE(run::preflight(to_null, run::OutputPaths(to_null.output), &start).find("/dev/null is a character device"),
             std::string::npos);
 
   io::TileJournal::create(paths.journal, "grid.l = 0.75, 1\nrun.chunk = 2");
