@@ -109,6 +109,7 @@ def browser_missing() -> str | None:
     return None
 
 
+@pytest.mark.browser
 @pytest.mark.parametrize("which", ["default", "material"])
 def test_the_page_in_chromium(maps, tmp_path, which):
     missing = browser_missing()
@@ -201,6 +202,7 @@ def test_hostile_texts_stay_inside_the_pages_data(hostile):
     assert "<i>" not in title and "&lt;i&gt;" in title
 
 
+@pytest.mark.browser
 def test_hostile_texts_are_shown_as_text_in_chromium(hostile, tmp_path):
     missing = browser_missing()
     if missing:

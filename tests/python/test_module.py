@@ -4,7 +4,9 @@ bad input raises the command's message, open_map decodes a real map, the example
 from __future__ import annotations
 
 import json
+import math
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -332,8 +334,29 @@ def test_examples_run(script, tmp_path):
     done = subprocess.run([sys.executable, str(REPO / "examples" / script), "--output", str(picture)],
                           capture_output=True, text=True, env=env, cwd=tmp_path)
     assert done.returncode == 0, done.stderr
-    assert picture.stat().st_size > 10_000
-    print(done.stdout)
+    # What each prints, checked by another route (issue 35 item 11: a PNG alone proves little).
+    if script == "dh_for_touch_time.py":
+        found = re.search(r"h\(0\) = ([\d.]+) R, h\(inf\) = ([\d.]+) R\n"
+                          r"dh = ([\d.]+) R makes level 2 touch at t\* = ([\d.]+) T_eps \(target 2.0\)", done.stdout)
+        assert found, done.stdout
+        h_0, h_inf, dh = (float(found[k]) for k in (1, 2, 3))
+        assert h_0 < dh < h_inf
+        # The point command's route: t* = 2 lies within the printed dh's rounding (6 decimals).
+        below, above = (punchsweep.point(l=0.75, dh=dh + d, T=2.5, pbar=0.06, s=2).t_star for d in (-5e-7, 5e-7))
+        assert below <= 2.0 <= above and above - below < 1e-3
+    else:
+        lines = re.findall(r"^(.*): h\(0\) = ([\d.]+) R, h\(inf\) = ([\d.]+) R; at dh = ([\d.]+) R t\* = (\S+) s; "
+                           r"0 of 40 points flagged invalid$", done.stdout, flags=re.M)
+        assert len(lines) == 3, done.stdout
+        # At t = 0 every material has its modulus E0*: h(0) is the elastic one of the lattice,
+        # the same as a standard linear solid's at any T.
+        elastic = float(punchsweep.classify(0.75, 0.0, 2.0, 0.01, 2)["h_0"])
+        for label, h_0, h_inf, dh, t in lines:
+            assert float(h_0) == pytest.approx(elastic, abs=1e-5) and float(h_inf) > float(h_0), label
+            assert 0 < float(t) < math.inf and float(h_0) < float(dh), label
+    import matplotlib.image
+    pixels = matplotlib.image.imread(picture)
+    assert pixels.shape[0] > 400 and float(pixels[..., :3].std()) > 0.05  # drawn, not blank
 
 
 def seconds_to_interrupt(call: str, after: float) -> float:

@@ -90,7 +90,8 @@ printf '[material]\nname = x\n\001\002\n' > binary.ini
 refused "binary.ini, line 3: byte 0x01 is a control character" "$PUNCHSWEEP" sweep "${nomaterial[@]}" --model.material binary.ini --output x.h5
 printf '[run]\nchunk = 1\n' > slow.ini
 "$PUNCHSWEEP" sweep --config slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,5 --quiet --output keep/part.h5 & pid=$!
-while [ ! -s keep/part.h5.partial.journal ]; do sleep 0.02; done
+wait_until 120 "$pid" "the journal of keep/part.h5" -- file_larger keep/part.h5.partial.journal 0 ||
+  { echo "FAIL: the run ended before it could be killed"; exit 1; }
 kill -9 "$pid"; wait "$pid" 2>/dev/null || true
 cd keep
 refused "grid.T" "$PUNCHSWEEP" sweep --config ../slow.ini --grid.l 'linspace(0.5,1.25,40)' --grid.T 2,6 --output part.h5 --resume

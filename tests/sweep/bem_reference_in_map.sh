@@ -97,7 +97,7 @@ done
 kill -9 "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
 test -f k.h5.partial.journal || fail "the kill came too late to test anything"
-sleep 0.3
+wait_until 30 "" "the killed ranks to end" -- gone "--output k.h5"
 set +e; "$PUNCHSWEEP" sweep "${slow[@]}" --bem-grid 16 --output k.h5 --resume 2> refused.log; code=$?; set -e
 test "$code" = 2 && grep -q "reference.grid: the existing map has 32; this run asks for 16" refused.log ||
   { cat refused.log; fail "resume with another reference.grid was not refused (exit $code)"; }

@@ -32,3 +32,24 @@ same_maps() {  # same_maps A B: every variable bit-identical (h5diff exact, NaN 
   done
   return $status
 }
+
+wait_until() {  # wait_until SECONDS PID WHAT -- COMMAND...: poll COMMAND every 20 ms until it
+  # succeeds (0). Returns 1 if process PID (empty: none) ends first; fails the test, naming
+  # WHAT, after SECONDS. The one way these tests wait for a run to reach a state: no sleep
+  # that guesses how long it takes, no loop without an end.
+  local seconds=$1 pid=$2 what=$3; shift 4
+  local deadline=$(( $(date +%s) + seconds ))
+  until "$@"; do
+    if [ -n "$pid" ] && ! kill -0 "$pid" 2>/dev/null; then return 1; fi
+    if [ "$(date +%s)" -ge "$deadline" ]; then echo "FAIL: waited $seconds s for $what"; exit 1; fi
+    sleep 0.02
+  done
+}
+
+file_larger() {  # file_larger FILE BYTES: FILE exists and holds more than BYTES
+  [ "$(stat -c %s "$1" 2>/dev/null || echo 0)" -gt "$2" ]
+}
+
+gone() {  # gone PATTERN: no process of this test's command lines matches PATTERN
+  ! pgrep -f -- "$1" > /dev/null
+}

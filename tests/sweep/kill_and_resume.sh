@@ -8,10 +8,9 @@ run_ranks 2 sweep "${grid[@]}" --quiet --output clean.h5
 # The map by its absolute path: it is in this test's own command lines only, so pgrep and
 # pkill below never touch the sweeps of tests running beside this one.
 map="$work/k.h5"
-mine() { pgrep -f -- "--output $map" || true; }
 journal_bytes() { stat -c %s "$map.partial.journal" 2>/dev/null || echo 0; }
-wait_for_progress() {  # until the journal holds more than $1 bytes, or the run ended
-  while [ "$(journal_bytes)" -le "$1" ] && kill -0 "$2" 2>/dev/null; do sleep 0.02; done
+wait_for_progress() {  # until the journal holds more than $1 bytes, or the run ($2) ended
+  wait_until 300 "$2" "$map's journal past $1 bytes" -- file_larger "$map.partial.journal" "$1" || true
 }
 
 # 1) kill -9 of mpirun itself, twice, at different moments.
@@ -20,8 +19,7 @@ for threshold in 100000 1500000; do
   wait_for_progress "$threshold" "$pid"
   kill -9 "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
-  for _ in $(seq 50); do [ -z "$(mine)" ] && break; sleep 0.1; done  # up to 5 s on a busy machine
-  if [ -n "$(mine)" ]; then echo "FAIL: ranks outlived mpirun: $(ps -o pid,ppid,args -p "$(mine | paste -sd,)")"; exit 1; fi
+  wait_until 10 "" "the ranks to end with mpirun" -- gone "--output $map"  # a busy machine takes seconds
 done
 test -f "$map.partial.journal" || { echo "FAIL: the kill came too late to test anything"; exit 1; }
 done_before=$(journal_bytes)
@@ -31,7 +29,7 @@ start_ranks 2 sweep "${grid[@]}" --quiet --output "$map" --resume; pid=$!
 wait_for_progress $((done_before + 200000)) "$pid"
 pkill -9 -f -n -- "--output $map" || true  # the newest of this run's processes: a rank
 wait "$pid" 2>/dev/null || true
-for _ in $(seq 50); do [ -z "$(mine)" ] && break; sleep 0.1; done
+wait_until 10 "" "the other rank to end" -- gone "--output $map"
 
 # 3) Resume to the end: it must say how much was already done, and match the clean map.
 run_ranks 2 sweep "${grid[@]}" --output "$map" --resume 2> resume.log || { cat resume.log; exit 1; }

@@ -37,7 +37,12 @@ race() {
 for round in $(seq "$rounds"); do
   rm -f r.h5 r.h5.*
   "$PUNCHSWEEP" sweep "${grid[@]}" --output r.h5 --quiet > /dev/null 2>&1 & pid=$!
-  sleep 0.6
+  # Killed once a tile is in its journal (past its header), so there is something to resume.
+  wait_until 120 "$pid" "r.h5's journal" -- file_larger r.h5.partial.journal 0 ||
+    { echo "FAIL: the run ended before it could be killed"; exit 1; }
+  header=$(stat -c %s r.h5.partial.journal)
+  wait_until 120 "$pid" "a tile in r.h5's journal" -- file_larger r.h5.partial.journal "$header" ||
+    { echo "FAIL: the run ended before it could be killed"; exit 1; }
   kill -9 "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
   race "two --resume after kill -9, round $round" --resume --quiet
@@ -76,8 +81,11 @@ for round in $(seq "$rounds"); do
   rm -f r.h5 r.h5.*
   # Stopped by SIGTERM (which flushes the .partial, so that it can be read).
   "$PUNCHSWEEP" sweep "${grid[@]}" --output r.h5 --quiet > /dev/null 2>&1 & pid=$!
-  while [ ! -s r.h5.partial.journal ]; do sleep 0.02; done
-  sleep 0.3
+  wait_until 120 "$pid" "r.h5's journal" -- file_larger r.h5.partial.journal 0 ||
+    { echo "FAIL: the run ended before it could be stopped"; exit 1; }
+  header=$(stat -c %s r.h5.partial.journal)
+  wait_until 120 "$pid" "a tile in r.h5's journal" -- file_larger r.h5.partial.journal "$header" ||
+    { echo "FAIL: the run ended before it could be stopped"; exit 1; }
   kill -TERM "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
   if [ -e r.h5 ]; then echo "FAIL: the run finished before it could be stopped"; exit 1; fi
