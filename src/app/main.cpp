@@ -8,7 +8,7 @@
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/sweep_command.hpp"
-#include "app/table_cache.hpp"
+#include "app/periodic_tables.hpp"
 #include "app/tables_command.hpp"
 #include "input/usage_error.hpp"
 #include "app/version.hpp"

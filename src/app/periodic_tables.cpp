@@ -16,8 +16,10 @@
 
 #include "app/table_cache.hpp"
 #include "io/file_descriptor.hpp"
+#include "model/localization/shell_sums.hpp"
 #include "model/two_level/small_spot_builder.hpp"
 #include "reference/periodic_grid.hpp"
+#include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::app {
 namespace {
@@ -283,6 +285,30 @@ std::string small_spot_table_source(const model::SmallSpotTable& table, const st
                         "The periodic model's small-spot table of s = " + std::to_string(table.s) +
                             " (docs/model.md, section 14.7).",
                         provenance);
+}
+
+void use_table_cache() {
+  const TableCacheFolder cache = table_cache_folder();
+  std::string refusal = cache.not_used;
+  if (cache.folder && refusal.empty()) refusal = untrusted_folder(*cache.folder);
+  if (!cache.folder || !refusal.empty()) {
+    if (!refusal.empty()) std::fprintf(stderr, "punchsweep: %s; tables are built in memory\n", refusal.c_str());
+    model::set_shell_sums_store({});
+    model::set_periodic_solution_source([](int s) {
+      sweep::use_reproducible_fft_plans();
+      return periodic_solution_for(s, std::nullopt);
+    });
+    return;
+  }
+  const std::filesystem::path root = *cache.folder;
+  model::set_periodic_solution_source([root](int s) {
+    sweep::use_reproducible_fft_plans();
+    return periodic_solution_for(s, root);
+  });
+  model::set_shell_sums_store({[root](const std::string& name) { return read_tables(root / name); },
+                               [root](const std::string& name, const std::vector<double>& tables) {
+                                 write_tables(root / name, tables);
+                               }});
 }
 
 }  // namespace punchsweep::app

@@ -63,6 +63,12 @@ std::shared_ptr<const model::SmallSpotTable> small_spot_table_for(int s, bool qu
 std::shared_ptr<const model::PeriodicSolution> periodic_solution_for(int s, const std::optional<std::filesystem::path>& folder,
                                                                     bool quiet = false);
 
+/// Gives the model its tables' sources: the periodic solutions (periodic_solution_for) and
+/// the refined model's shell sums, kept in table_cache_folder() if any and if trusted;
+/// otherwise says once on stderr why the cache is not used (the tables are then built in
+/// memory).
+void use_table_cache();
+
 /// The tables as C++ source text (an initializer list of hex-float numbers with a header
 /// saying how they were made), what src/app/periodic_tables/ holds.
 std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance);

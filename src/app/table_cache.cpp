@@ -17,9 +17,6 @@
 
 #include "io/file_descriptor.hpp"
 #include "io/sha256.hpp"
-#include "app/periodic_tables.hpp"
-#include "model/localization/shell_sums.hpp"
-#include "sweep/reproducible_fft.hpp"
 
 namespace punchsweep::app {
 namespace {
@@ -193,30 +190,6 @@ void write_tables(const std::filesystem::path& file, const std::vector<double>& 
               io::write_fully(fd.get(), signed_by.data(), signed_by.size());
   }
   if (!written || ::rename(temporary.c_str(), file.c_str()) != 0) ::unlink(temporary.c_str());
-}
-
-void use_table_cache() {
-  const TableCacheFolder cache = table_cache_folder();
-  std::string refusal = cache.not_used;
-  if (cache.folder && refusal.empty()) refusal = untrusted_folder(*cache.folder);
-  if (!cache.folder || !refusal.empty()) {
-    if (!refusal.empty()) std::fprintf(stderr, "punchsweep: %s; tables are built in memory\n", refusal.c_str());
-    model::set_shell_sums_store({});
-    model::set_periodic_solution_source([](int s) {
-      sweep::use_reproducible_fft_plans();
-      return periodic_solution_for(s, std::nullopt);
-    });
-    return;
-  }
-  const std::filesystem::path root = *cache.folder;
-  model::set_periodic_solution_source([root](int s) {
-    sweep::use_reproducible_fft_plans();
-    return periodic_solution_for(s, root);
-  });
-  model::set_shell_sums_store({[root](const std::string& name) { return read_tables(root / name); },
-                               [root](const std::string& name, const std::vector<double>& tables) {
-                                 write_tables(root / name, tables);
-                               }});
 }
 
 }  // namespace punchsweep::app

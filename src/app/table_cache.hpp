@@ -55,8 +55,4 @@ std::vector<double> read_tables(const std::filesystem::path& file);
 /// cannot be written is skipped silently (the tables are then built again next time).
 void write_tables(const std::filesystem::path& file, const std::vector<double>& tables);
 
-/// Gives the model a store in table_cache_folder(), if any and if trusted; otherwise says
-/// once on stderr why the cache is not used (the tables are then built in memory).
-void use_table_cache();
-
 }  // namespace punchsweep::app

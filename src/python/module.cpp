@@ -26,7 +26,7 @@
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
 #include "app/reference_command.hpp"
-#include "app/table_cache.hpp"
+#include "app/periodic_tables.hpp"
 #include "input/usage_error.hpp"
 #include "input/scaled_value.hpp"
 #include "map/quantities.hpp"

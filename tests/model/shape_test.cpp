@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "model/problem/contact_problem.hpp"
+#include "model/problem/parameter.hpp"
 #include "model/problem/shape.hpp"
 
 using namespace punchsweep::model;

@@ -47,4 +47,9 @@ const Parameter* problem_parameter(std::string_view name) {
   return nullptr;
 }
 
+std::string shape_error(const Shape& shape) {
+  if (std::string e = problem_parameter(kExponent)->error(shape.s); !e.empty()) return e;
+  return problem_parameter(kShapeConstant)->error(shape.C);
+}
+
 }  // namespace punchsweep::model

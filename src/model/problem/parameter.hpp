@@ -56,4 +56,9 @@ std::span<const Parameter> problem_parameters();
 /// The contact problem's parameter called `name` (l, dh, pbar, s, C); nullptr if none.
 const Parameter* problem_parameter(std::string_view name);
 
+struct Shape;
+/// Empty when the shape is usable, else a sentence naming the bad field and its range (its
+/// parameters' declarations, s and C, above).
+std::string shape_error(const Shape& shape);
+
 }  // namespace punchsweep::model

@@ -4,14 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/problem/parameter.hpp"
-
 namespace punchsweep::model {
-
-std::string shape_error(const Shape& shape) {
-  if (std::string e = problem_parameter(kExponent)->error(shape.s); !e.empty()) return e;
-  return problem_parameter(kShapeConstant)->error(shape.C);
-}
 
 namespace {
 

@@ -15,8 +15,6 @@ struct Shape {
   static constexpr int kMaxExponent = 32;
 };
 
-/// Empty when the shape is usable, else a sentence naming the bad field and its range.
-std::string shape_error(const Shape& shape);
 
 /// K_P(s, C): load of an isolated punch, P = K_P E* a^(s+1) (Sneddon; notes section 2).
 double load_coefficient(const Shape& shape);
