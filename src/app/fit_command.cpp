@@ -137,7 +137,11 @@ std::string material_text(const FitRun& run, const std::string& name) {
     << ".\n";
   if (f.master.law) {
     s << "# Shift: " << f.master.law->describe();
-    if (!std::isnan(f.master.measured_log10_aT.front())) {
+    if (f.master.joint) {
+      s << ", fitted together with the series (the overlap shifts of E', which could not place every isotherm, "
+           "lie "
+        << model::number_text(f.master.rms_log10, 3) << " decades RMS about it)";
+    } else if (!std::isnan(f.master.measured_log10_aT.front())) {
       s << ", RMS of the measured shifts about it " << model::number_text(f.master.rms_log10, 3) << " decades";
     }
     s << ".\n";
@@ -211,7 +215,7 @@ std::string details_json(const FitRun& run) {
       << ", \"C2\": " << input::json_number(law.C2) << ", \"E_a\": " << input::json_number(law.E_a)
       << ", \"describe\": " << input::json_string(law.describe());
   }
-  s << ", \"rms_log10\": " << input::json_number(f.master.rms_log10) << "},\n";
+  s << ", \"rms_log10\": " << input::json_number(f.master.rms_log10) << ", \"joint\": " << (f.master.joint ? "true" : "false") << "},\n";
   s << "  \"prony\": {\"E_inf\": " << input::json_number(f.prony.terms.E_inf) << ", \"E_i\": " << input::json_array(f.prony.terms.E)
     << ", \"tau_i\": " << input::json_array(f.prony.terms.tau) << ",\n    \"rms_relative\": {\""
     << (dma ? "storage" : "modulus") << "\": " << input::json_number(f.prony.rms_first);
@@ -240,7 +244,11 @@ std::string report(const FitRun& run) {
     << f.master.temperatures.size() << " temperature(s)\n";
   if (f.master.law) {
     s << "shift: " << f.master.law->describe();
-    if (!std::isnan(f.master.measured_log10_aT.front())) {
+    if (f.master.joint) {
+      s << " (fitted together with the series, since the overlap shifts of E' failed the fit's checks; the "
+           "readings are shifted by the law, the overlap's shifts, \"measured\" below, lie "
+        << model::number_text(f.master.rms_log10, 3) << " decades RMS about it)";
+    } else if (!std::isnan(f.master.measured_log10_aT.front())) {
       s << " (fitted; RMS of the measured shifts about it " << model::number_text(f.master.rms_log10, 3) << " decades)";
     } else {
       s << " (given)";

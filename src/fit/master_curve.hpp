@@ -48,12 +48,16 @@ struct MasterCurve {
   std::vector<double> law_log10_aT;       ///< the shift law at each isotherm
   std::optional<model::TemperatureShift> law;  ///< none for one isotherm at T_ref and no law given
   double rms_log10 = 0.0;                 ///< RMS of measured - law, in decades (0 when given)
+  /// The law was fitted with the series (fit::fit_material: the overlap shifts could not
+  /// place every isotherm), and the readings are shifted by it; measured_log10_aT keeps the
+  /// overlap's shifts for the record.
+  bool joint = false;
   /// log10 a_T each isotherm's readings are shifted by onto the master curve: the measured
-  /// shift (the law's where it was given), so the curve the series is fitted to is the
-  /// data's own; the law carries it to other temperatures.
+  /// shift (the law's where it was given or fitted jointly), so the curve the series is
+  /// fitted to is the data's own; the law carries it to other temperatures.
   double log10_aT(std::size_t isotherm) const {
     const double m = measured_log10_aT[isotherm];
-    return std::isnan(m) ? law_log10_aT[isotherm] : m;
+    return joint || std::isnan(m) ? law_log10_aT[isotherm] : m;
   }
 };
 

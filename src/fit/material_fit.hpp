@@ -46,6 +46,9 @@ struct MaterialFitRequest {
   double window_lo = 1e-10;
   double window_hi = 1e12;
   PronyOptions prony;
+  /// Also fit the shift law together with the series (fit_material: kept where it beats the
+  /// overlap's shifts by BIC); not where the law is given.
+  bool refine_shifts = true;
 };
 
 /// A reading on the master curve: where it was measured, where it lands, and the fit there
