@@ -380,6 +380,9 @@ FitRun run_fit(const po::variables_map& vm) {
   }
   const std::string law = input::read_choice(vm, "shift", {"wlf", "arrhenius"});
   request.shift.law = law == "wlf" ? fit::ShiftRequest::Law::wlf : fit::ShiftRequest::Law::arrhenius;
+  if ((vm.count("C1") || vm.count("C2")) && vm.count("E-a")) {
+    throw input::UsageError("give WLF's --C1 and --C2, or Arrhenius' --E-a, not both");
+  }
   if (vm.count("C1") || vm.count("C2")) {
     if (!(vm.count("C1") && vm.count("C2"))) throw input::UsageError("give WLF's --C1 and --C2 together");
     request.shift.law = fit::ShiftRequest::Law::given;

@@ -534,6 +534,9 @@ std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, const
       }
     }
     if (parameter == nullptr) throw bad(entry, "'" + name + "' is no real-valued input of this point");
+    for (const model::Tolerance& given : out) {
+      if (given.parameter == parameter) throw bad(entry, "'" + name + "' is given twice");
+    }
     double tol = 0.0;
     try {
       if (!text.empty() && text.back() == '%') {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <filesystem>
 #include <map>
 #include <optional>
 
@@ -41,6 +42,9 @@ const std::array<ColumnSpec, 7>& column_specs() {
   return specs;
 }
 
+/// How far loss / storage and a tan_delta column of the same reading may differ.
+constexpr double kTanDeltaAgreement = 0.02;
+
 /// A cell or header without blanks and the quotes spreadsheets put around it.
 std::string trim(std::string_view s) { return std::string(model::trim(s, " \t\r\"")); }
 
@@ -53,15 +57,29 @@ std::string normalized(std::string_view s) {
   return out;
 }
 
+/// The cells of a line: split at `sep` outside double quotes (a spreadsheet quotes a cell
+/// that holds the separator, and doubles a quote inside one: "a ""b"", c").
 std::vector<std::string> split(std::string_view line, char sep) {
   std::vector<std::string> cells;
-  std::size_t start = 0;
-  while (true) {
-    const auto at = line.find(sep, start);
-    cells.push_back(trim(line.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start)));
-    if (at == std::string_view::npos) break;
-    start = at + 1;
+  std::string cell;
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"') {
+      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else {
+        quoted = !quoted;
+      }
+    } else if (c == sep && !quoted) {
+      cells.push_back(trim(cell));
+      cell.clear();
+    } else {
+      cell += c;
+    }
   }
+  cells.push_back(trim(cell));
   return cells;
 }
 
@@ -100,7 +118,20 @@ std::optional<ToSi> unit_of(Column column, const std::string& unit) {
 
 }  // namespace
 
-void read_measurements(std::string_view text, const std::string& origin, double temperature, fit::Measurements* into) {
+void read_measurements(std::string_view raw, const std::string& origin, double temperature, fit::Measurements* into) {
+  // Line ends as any system writes them: LF, CR LF, or CR alone (classic Mac OS, some
+  // instruments' exports).
+  std::string unified;
+  unified.reserve(raw.size());
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i] == '\r') {
+      unified += '\n';
+      if (i + 1 < raw.size() && raw[i + 1] == '\n') ++i;
+    } else {
+      unified += raw[i];
+    }
+  }
+  const std::string_view text = unified;
   std::size_t line_no = 0, start = 0;
   std::map<Column, std::pair<std::size_t, ToSi>> columns;
   std::size_t width = 0;
@@ -113,7 +144,7 @@ void read_measurements(std::string_view text, const std::string& origin, double 
     const std::string_view line = text.substr(start, end - start);
     start = end + 1;
     ++line_no;
-    const std::string t = trim(line);
+    const std::string t(model::trim(line, " \t\r"));  // (a quote at either end belongs to a cell)
     if (t.empty() || t[0] == '#') {
       if (end == text.size()) break;
       continue;
@@ -123,6 +154,10 @@ void read_measurements(std::string_view text, const std::string& origin, double 
       const std::vector<std::string> cells = split(t, sep);
       width = cells.size();
       for (std::size_t c = 0; c < cells.size(); ++c) {
+        if (cells[c].empty()) {
+          fail(origin, line_no, "column " + std::to_string(c + 1) + " of the header is empty (a stray separator?); "
+                                "name every column, e.g. 'temperature [C]'");
+        }
         const auto open = cells[c].find('[');
         const auto close = cells[c].rfind(']');
         const std::string name = normalized(cells[c].substr(0, open));
@@ -160,6 +195,10 @@ void read_measurements(std::string_view text, const std::string& origin, double 
       if (!columns.count(Column::temperature) && std::isnan(temperature)) {
         fail(origin, line_no, "no 'temperature [C]' column: give the file's temperature as " + origin + "@23C");
       }
+      if (columns.count(Column::temperature) && !std::isnan(temperature)) {
+        fail(origin, line_no, "the file has a 'temperature' column and a temperature was given after '@': give one "
+                              "or the other");
+      }
       if (end == text.size()) break;
       continue;
     }
@@ -169,11 +208,12 @@ void read_measurements(std::string_view text, const std::string& origin, double 
     }
     std::map<Column, double> v;
     for (const auto& [column, where] : columns) {
-      const std::string& cell = cells[where.first];
+      const std::string& written = cells[where.first];
+      const std::string cell = !written.empty() && written[0] == '+' ? written.substr(1) : written;  // "+1" is 1
       double x = 0.0;
       const auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
       if (ec != std::errc() || ptr != cell.data() + cell.size() || !std::isfinite(x)) {
-        fail(origin, line_no, "column " + std::to_string(where.first + 1) + ": '" + cell + "' is not a number");
+        fail(origin, line_no, "column " + std::to_string(where.first + 1) + ": '" + written + "' is not a number");
       }
       v[column] = x * where.second.factor + where.second.offset;
       if (column != Column::temperature && !(v[column] > 0.0)) {
@@ -184,6 +224,13 @@ void read_measurements(std::string_view text, const std::string& origin, double 
     if (!(th > -model::kZeroCelsius)) fail(origin, line_no, "the temperature is not above absolute zero");
     if (columns.count(Column::frequency)) {
       const double loss = columns.count(Column::loss) ? v[Column::loss] : v[Column::storage] * v[Column::tan_delta];
+      // Both loss and tan delta: they must say the same (to 2%, their rounding in exports).
+      if (columns.count(Column::loss) && columns.count(Column::tan_delta) &&
+          std::abs(v[Column::loss] / (v[Column::storage] * v[Column::tan_delta]) - 1.0) > kTanDeltaAgreement) {
+        fail(origin, line_no, "loss / storage = " + model::number_text(v[Column::loss] / v[Column::storage], 4) +
+                                  " but tan_delta = " + model::number_text(v[Column::tan_delta], 4) +
+                                  ": the columns contradict each other (valid: within 2%)");
+      }
       into->dma.push_back({th, v[Column::frequency], v[Column::storage], loss});
     } else {
       into->relaxation.push_back({th, v[Column::time], v[Column::modulus]});
@@ -217,7 +264,9 @@ fit::Measurements read_measurement_files(const std::vector<std::string>& specs) 
   for (const std::string& spec : specs) {
     std::string path = spec;
     double temperature = std::numeric_limits<double>::quiet_NaN();
-    if (const auto at = spec.rfind('@'); at != std::string::npos) {
+    std::error_code ec;
+    // FILE@TEMPERATURE, unless the whole text names a file (a name may hold an '@').
+    if (const auto at = spec.rfind('@'); at != std::string::npos && !std::filesystem::is_regular_file(spec, ec)) {
       path = spec.substr(0, at);
       temperature = read_temperature(spec.substr(at + 1), "--dma " + spec);
     }

@@ -10,12 +10,18 @@
 namespace punchsweep::input {
 
 double parse_real(const std::string& text, const std::string& option) {
-  const char* begin = text.c_str();
+  // Blanks around the number are no part of it (strtod skips leading ones only).
+  const std::size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
+  const std::string number = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  const char* begin = number.c_str();
   char* end = nullptr;
   errno = 0;
   const double value = std::strtod(begin, &end);
-  // The whole text: a NUL inside it (possible from Python, not from a shell) is no end.
-  if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value)) {
+  // The whole text: a NUL inside it (possible from Python, not from a shell) is no end. A
+  // number too small for a normal double (1e-320) is still that number (ERANGE with a
+  // result of magnitude below DBL_MIN); one too large is not finite.
+  const bool underflow = errno == ERANGE && std::abs(value) < std::numeric_limits<double>::min();
+  if (number.empty() || end != begin + number.size() || (errno == ERANGE && !underflow) || !std::isfinite(value)) {
     throw UsageError(option + " = '" + text + "' is not a finite number");
   }
   return value;

@@ -443,6 +443,54 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
     assert written >= 4
 
 
+def test_files_as_instruments_and_spreadsheets_write_them(fitted, tmp_path):
+    """Issue 35's low items: CR-only line ends, a quoted cell holding the separator, '+1',
+    and a file name holding '@' are read as they mean; an empty header column, a
+    temperature given twice (a column and '@'), a tan_delta that contradicts loss/storage,
+    and a law given twice are refused naming the line or option; Poisson's ratio with
+    blanks around it, or subnormal, is a number."""
+    tmp, _ = fitted
+    lines = (tmp / "data.csv").read_text().splitlines()
+    base = ["--reference-temperature", "23", "--poisson", "0.5"]
+
+    def fit(path, *more, out="m.ini"):
+        return cli("fit", "--dma", path, *base, *more, "-o", tmp_path / out)
+
+    reference = fit(tmp / "data.csv", out="ref.ini")
+    assert reference.returncode == 0
+    want = (tmp_path / "ref.ini").read_text().split("law = prony")[1]  # the name differs: the file's
+
+    def same_material(name):
+        return (tmp_path / name).read_text().split("law = prony")[1] == want
+
+    (tmp_path / "cr.csv").write_bytes("\r".join(lines).encode() + b"\r")
+    assert fit(tmp_path / "cr.csv", out="cr.ini").returncode == 0 and same_material("cr.ini")
+    quoted = [lines[0].replace("temperature [C]", '"temperature [C], as logged"')] + [
+        "+" + line for line in lines[1:]]
+    (tmp_path / "quoted.csv").write_text("\n".join(quoted) + "\n")
+    r = fit(tmp_path / "quoted.csv", out="quoted.ini")
+    assert r.returncode == 0 and same_material("quoted.ini"), r.stderr
+    at = tmp_path / "sample@lab.csv"
+    at.write_text((tmp / "data.csv").read_text())
+    assert fit(at, out="at.ini").returncode == 0 and same_material("at.ini")
+    for text, message in (
+            (lines[0] + ",\n" + "\n".join(line + "," for line in lines[1:]), "line 1: column 5 of the header is empty"),
+            (lines[0] + ",tan_delta\n" + "\n".join(line + ",0.5" for line in lines[1:]), "contradict each other"),
+    ):
+        (tmp_path / "bad.csv").write_text(text + "\n")
+        r = fit(tmp_path / "bad.csv")
+        assert r.returncode == 2 and message in r.stderr, r.stderr
+    r = fit(f"{tmp / 'data.csv'}@50C")
+    assert r.returncode == 2 and "a temperature was given after '@'" in r.stderr, r.stderr
+    r = fit(tmp / "data.csv", "--C1", "9", "--C2", "120", "--E-a", "1e5")
+    assert r.returncode == 2 and "not both" in r.stderr, r.stderr
+    for poisson in ("0.3 ", "1e-320"):
+        r = cli("fit", "--dma", tmp / "data.csv", "--reference-temperature", "23", "--poisson", poisson,
+                "-o", tmp_path / "p.ini")
+        assert r.returncode == 0, (poisson, r.stderr)
+    assert not (tmp_path / "m.ini").exists()
+
+
 # Published: the shift factors shipped with the data (pyvisco,
 # verification/freq_raw/freq_Eplexor_raw__shift_factors.csv, T_ref = -5 C), and pyvisco 1.0.4's
 # own get_aT on the same readings (run for this test's reference values; its WLF C1 = 98.09,

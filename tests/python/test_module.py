@@ -558,3 +558,31 @@ def test_a_package_without_its_compiled_part_says_what_to_build(tmp_path):
     assert r.returncode != 0
     assert "cmake --build build --target punchsweep_python" in r.stderr, r.stderr
     assert "circular" not in r.stderr
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"C": np.array([0.5, 0.6])}, "C = array"),
+    ({"dh": 0.05 + 0j}, "dh = (0.05+0j): a complex number"),
+    ({"s": True}, "s = True: a bool is not a number"),
+    ({"dh": None}, "dh is required (None given)"),
+])
+def test_classify_names_what_it_cannot_take(kwargs, message):
+    """Issue 35's low items: an array C and complex input raised TypeError, s=True was taken as
+    s = 1 and dh=None was reported as '--dh = nan'."""
+    args = dict(l=0.75, dh=0.05, T=2.5, pbar=0.06, s=2)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=re.escape(message)):
+        punchsweep.classify(**args)
+
+
+def test_material_times_with_units_and_open_map_of_a_folder(tmp_path):
+    """Material.J('1s') is J at one second (it was a bare conversion error); a folder given to
+    open_map is named as one (it said 'no such file')."""
+    m = punchsweep.Material(REPO / "materials" / "silicone_elite_double32.ini")
+    assert m.time_unit == "s"
+    assert m.J("1s") == m.J(1.0) and m.J("1min") == m.J(60.0)
+    assert np.array_equal(m.E(["1s", "1min"]), m.E([1.0, 60.0]))
+    with pytest.raises(ValueError, match="t = '1kPa' is not a time"):
+        m.J("1kPa")
+    with pytest.raises(punchsweep.NotAMapError, match="is a folder, not a map file"):
+        punchsweep.open_map(tmp_path)

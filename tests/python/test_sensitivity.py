@@ -158,7 +158,8 @@ def test_the_range_over_tolerances_is_the_corners_extremes():
     ("dh", "no '='"),
     ("dh=-1um", "not a number >= 0"),
     ("dh=2kPa", "is a pressure, not a length"),
-    ("dh=2um,dh=abc", "'abc'"),
+    ("dh=2um,l=abc", "'abc'"),
+    ("dh=2um, dh=3um", "'dh' is given twice"),  # issue 35: the last one was kept
     ("pressure=200%", "outside its range"),
 ])
 def test_bad_tolerances_are_refused(tolerance, message):

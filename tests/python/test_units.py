@@ -80,7 +80,7 @@ def test_point_in_physical_units_equals_the_scaled_point():
     assert np.allclose(total, 2000.0 * (150e-6) ** 2, rtol=5e-3)
 
 
-@pytest.mark.parametrize("R", ["50um", "0.05mm", "50000nm"])
+@pytest.mark.parametrize("R", ["50um", "0.05mm", "50000nm", "50\u00b5m", "50\u03bcm"])  # both micro signs (issue 35)
 def test_R_in_any_length_unit_gives_the_same_answer(R):
     a = point_json("--material", MATERIAL, "--R", R, "--l", "0.15mm", "--dh", "2um", "--pressure", "0.002MPa",
                    "--s", "2")

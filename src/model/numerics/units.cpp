@@ -26,7 +26,8 @@ std::span<const Unit> units_of(Dimension dimension) {
 }
 
 const Unit* find_unit(Dimension dimension, std::string_view name) {
-  if (dimension == Dimension::length && name == "\u00b5m") name = "um";
+  // Both micro signs: U+00B5 (the keyboard's) and U+03BC (Greek mu, as some software writes it).
+  if (dimension == Dimension::length && (name == "\u00b5m" || name == "\u03bcm")) name = "um";
   for (const Unit& u : units_of(dimension)) {
     if (u.name == name) return &u;
   }

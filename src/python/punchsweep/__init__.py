@@ -312,7 +312,12 @@ class Material:
         return f"Material({self.path!r}: {self.description})"
 
     def _at(self, t, temperature, relaxation: bool) -> np.ndarray:
-        times = np.asarray(t, dtype=float)
+        # Times with a unit ('1s', '2min') in the file's time unit, as the command line reads them.
+        try:
+            times = np.asarray(_in_scale(_real(t, "t"), "ramp_time", self.path, None), dtype=float)
+        except ValueError:  # (the engine reads the times as it reads a ramp's, and names that)
+            raise ValueError(f"t = {t!r} is not a time; valid: numbers >= 0 in {self.time_unit}, or text with a "
+                             f"time unit ('1s', '2min', '1h')") from None
         flat = np.ascontiguousarray(times).reshape(-1)
         T = float("nan") if temperature is None else float(temperature)
         return self._file.evaluate(flat, T, relaxation).reshape(times.shape)
@@ -335,6 +340,20 @@ class Material:
         T = np.asarray(temperature, dtype=float)
         values = np.array([10.0 ** self._file.log10_shift(float(x)) for x in T.reshape(-1)]).reshape(T.shape)
         return float(values) if values.shape == () else values
+
+
+def _real(values, name: str):
+    """values as classify and point take them, or ValueError naming `name`: not None, not a
+    bool (True would be taken as 1), not complex. Text (a value with its unit) passes."""
+    if values is None:
+        raise ValueError(f"{name} is required (None given)")
+    array = np.asarray(values, dtype=object) if not isinstance(values, np.ndarray) else values
+    flat = array.reshape(-1)
+    if array.dtype.kind == "b" or any(isinstance(v, (bool, np.bool_)) for v in flat):
+        raise ValueError(f"{name} = {values!r}: a bool is not a number; valid: numbers (or text with a unit)")
+    if array.dtype.kind == "c" or any(isinstance(v, (complex, np.complexfloating)) for v in flat):
+        raise ValueError(f"{name} = {values!r}: a complex number; valid: real numbers (or text with a unit)")
+    return values
 
 
 def _in_scale(values, name: str, material, R):
@@ -378,6 +397,11 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
         pbar = pressure
     if pbar is None or s is None:
         raise ValueError("classify: pbar (or pressure) and s are required")
+    for value, name in ((l, "l"), (dh, "dh"), (pbar, "pbar"), (s, "s"), (T if material is None else 0.0, "T")):
+        _real(value, f"classify: {name}")
+    if np.ndim(C) != 0 or isinstance(C, (bool, np.bool_, complex, str)):
+        raise ValueError(f"classify: C = {C!r}; valid: one number > 0, the shape constant of every point "
+                         f"(points of several C: one call each)")
     l, dh, pbar = (_in_scale(v, n, material, R) for v, n in ((l, "l"), (dh, "dh"), (pbar, "pbar")))
     if ramp_time is not None:
         ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
@@ -509,6 +533,8 @@ def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
     import xarray as xr
 
     text = str(path)
+    if os.path.isdir(text):
+        raise NotAMapError(f"{text} is a folder, not a map file (a run folder holds map.h5)")
     if not os.path.isfile(text):
         raise NotAMapError(f"{text}: no such file")
     try:
