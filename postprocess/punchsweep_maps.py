@@ -152,44 +152,25 @@ def physical_scales(ds) -> dict[str, tuple[float, str]]:
     return scales
 
 
-_LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}  # the engine's (model/numerics/units)
+def _load_map_attributes():
+    """src/python/punchsweep/map_attributes.py, loaded by its path (the module's package
+    needs its build; this file does not)."""
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "src" / "python" / "punchsweep" / "map_attributes.py"
+    spec = importlib.util.spec_from_file_location("punchsweep_map_attributes", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
-def scale_attributes(attrs, error=ValueError):
-    """The map's physical scales as its attributes hold them, checked: E0_star_Pa (a finite
-    number > 0, Pa), R ('50 um': a finite number > 0 and a length unit the engine writes) and
-    R_m (R in m, agreeing with R); each None where absent. `error` (the caller's exception
-    type) names the attribute and its value where one is not what the engine writes. The
-    same rule as the Python module's open_map."""
-    def text(v):
-        return v.decode() if isinstance(v, bytes) else str(v)
+def scale_attributes(attrs, error=MapError):
+    """The map's physical scales, checked by the one rule the module's open_map uses
+    (src/python/punchsweep/map_attributes.py): (E0_star_Pa, (R number, unit), R_m)."""
+    return _MAP_ATTRIBUTES.scale_attributes(attrs, error)
 
-    def positive(name):
-        if name not in attrs:
-            return None
-        try:
-            value = float(np.asarray(attrs[name]).item())
-        except (TypeError, ValueError):
-            value = float("nan")
-        if not (math.isfinite(value) and value > 0):
-            raise error(f"the map's attribute {name} = {text(attrs[name])!r} is not a finite number > 0")
-        return value
 
-    E0_star, R_m, R = positive("E0_star_Pa"), positive("R_m"), None
-    if "R" in attrs:
-        parts = text(attrs["R"]).split()
-        try:
-            number = float(parts[0]) if len(parts) == 2 else float("nan")
-        except ValueError:
-            number = float("nan")
-        if not (math.isfinite(number) and number > 0 and parts[1] in _LENGTH_UNITS):
-            raise error(f"the map's attribute R = {text(attrs['R'])!r} is not a length the engine writes "
-                        f"(a number > 0 and one of {', '.join(_LENGTH_UNITS)})")
-        if R_m is None or abs(number * _LENGTH_UNITS[parts[1]] - R_m) > 1e-9 * R_m:
-            raise error(f"the map's attributes R = {text(attrs['R'])!r} and R_m = "
-                        f"{text(attrs.get('R_m', 'missing'))!r} disagree")
-        R = (number, parts[1])
-    return E0_star, R, R_m
+_MAP_ATTRIBUTES = _load_map_attributes()
 
 
 def in_physical_units(ds):

@@ -109,14 +109,13 @@ def browser_missing() -> str | None:
     return None
 
 
-@pytest.mark.browser
-@pytest.mark.parametrize("which", ["default", "material"])
-def test_the_page_in_chromium(maps, tmp_path, which):
+def in_chromium(page: Path, cells: list, tmp_path: Path):
+    """The page driven by tests/browser/explore_page.mjs (skipped, saying why, without a
+    browser): what it read, after checking it made no request and logged no error; and the
+    screenshot's path."""
     missing = browser_missing()
     if missing:
         pytest.skip(missing)
-    path, page = maps[which]
-    cells = [[0, 0], [4, 6], [9, 11], [7, 3]]
     (tmp_path / "cells.json").write_text(json.dumps(cells))
     out, shot = tmp_path / "out.json", tmp_path / "shot.png"
     done = subprocess.run(["node", DRIVER, page, tmp_path / "cells.json", out, shot], capture_output=True, text=True,
@@ -124,6 +123,14 @@ def test_the_page_in_chromium(maps, tmp_path, which):
     assert done.returncode == 0, done.stderr
     r = json.loads(out.read_text())
     assert r["requests"] == [] and r["errors"] == []
+    return r, shot
+
+
+@pytest.mark.browser
+@pytest.mark.parametrize("which", ["default", "material"])
+def test_the_page_in_chromium(maps, tmp_path, which):
+    path, page = maps[which]
+    r, shot = in_chromium(page, [[0, 0], [4, 6], [9, 11], [7, 3]], tmp_path)
     with h5py.File(path) as f:
         names = [dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
         meanings = f["regime"].attrs["flag_meanings"]
@@ -204,17 +211,8 @@ def test_hostile_texts_stay_inside_the_pages_data(hostile):
 
 @pytest.mark.browser
 def test_hostile_texts_are_shown_as_text_in_chromium(hostile, tmp_path):
-    missing = browser_missing()
-    if missing:
-        pytest.skip(missing)
     folder, path, page = hostile
-    (tmp_path / "cells.json").write_text(json.dumps([[0, 0], [3, 4]]))
-    out, shot = tmp_path / "out.json", tmp_path / "shot.png"
-    done = subprocess.run(["node", DRIVER, page, tmp_path / "cells.json", out, shot], capture_output=True, text=True,
-                          timeout=180)
-    assert done.returncode == 0, done.stderr
-    r = json.loads(out.read_text())
-    assert r["requests"] == [] and r["errors"] == []
+    r, _ = in_chromium(page, [[0, 0], [3, 4]], tmp_path)
     assert r["heading"].startswith(f"{path.name}: {HOSTILE_NAME}; plain;")
     assert r["plot_title"].startswith(f"{HOSTILE_NAME}; plain;") and f"material = {HOSTILE_FILES[0]}" in r["plot_title"]
     assert r["plot_links"] == []

@@ -23,7 +23,6 @@ E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_un
 from __future__ import annotations
 
 import json
-import math
 import os
 import shutil
 from collections.abc import Iterable, Mapping
@@ -32,6 +31,8 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from .map_attributes import scale_attributes
 
 try:
     from . import _core
@@ -479,42 +480,10 @@ def _physical_scales(attrs) -> dict:
     return scales
 
 
-_LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}  # the engine's (model/numerics/units)
-
-
 def _scale_attributes(attrs):
-    """E0_star_Pa, R ('50 um') and R_m as the map holds them, checked (NotAMapError naming the
-    attribute where one is not what the engine writes); None where absent. The rule of
-    postprocess/punchsweep_maps.py's scale_attributes."""
-    def text(v):
-        return v.decode() if isinstance(v, bytes) else str(v)
-
-    def positive(name):
-        if name not in attrs:
-            return None
-        try:
-            value = float(np.asarray(attrs[name]).item())
-        except (TypeError, ValueError):
-            value = math.nan
-        if not (math.isfinite(value) and value > 0):
-            raise NotAMapError(f"the map's attribute {name} = {text(attrs[name])!r} is not a finite number > 0")
-        return value
-
-    E0_star, R_m, R = positive("E0_star_Pa"), positive("R_m"), None
-    if "R" in attrs:
-        parts = text(attrs["R"]).split()
-        try:
-            number = float(parts[0]) if len(parts) == 2 else math.nan
-        except ValueError:
-            number = math.nan
-        if not (math.isfinite(number) and number > 0 and parts[1] in _LENGTH_UNITS):
-            raise NotAMapError(f"the map's attribute R = {text(attrs['R'])!r} is not a length the engine writes "
-                               f"(a number > 0 and one of {', '.join(_LENGTH_UNITS)})")
-        if R_m is None or abs(number * _LENGTH_UNITS[parts[1]] - R_m) > 1e-9 * R_m:
-            raise NotAMapError(f"the map's attributes R = {text(attrs['R'])!r} and R_m = "
-                               f"{text(attrs.get('R_m', 'missing'))!r} disagree")
-        R = (number, parts[1])
-    return E0_star, R, R_m
+    """E0_star_Pa, R and R_m as the map holds them, checked (map_attributes.py, the rule the
+    postprocess scripts use too); NotAMapError naming the attribute."""
+    return scale_attributes(attrs, NotAMapError)
 
 
 def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
