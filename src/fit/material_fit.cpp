@@ -308,7 +308,7 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
   // The residual on one footing for both: the series at one density (the overlap's choice,
   // or 1 a decade), its times refined; and a cheap one for the search's first stage.
   PronyOptions options = request.prony;
-  options.per_decade = {overlap_failed.empty() ? out.prony.candidates[out.prony.chosen].per_decade : 1.0};
+  options.per_decade = {std::max(1.0, overlap_failed.empty() ? out.prony.candidates[out.prony.chosen].per_decade : 1.0)};
   options.refine = true;
   PronyOptions coarse = request.prony;
   coarse.per_decade = {std::max(3.0, options.per_decade.front())};

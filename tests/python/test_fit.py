@@ -427,9 +427,10 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
     written one is held to the truth where its data can say anything: caps of 50 um on a
     150 um pitch under 50 kPa, dh a quarter and half of the way from the truth's h(0) to
     h(inf), at -20, 23 and 50 C, wherever the truth's t* (reduced to 23 C) lies within the
-    times the isotherms cover; there the fit's t* is within 5% of the truth's, or four times
-    the data's noise where that is more (t* sums the creep the data carry: with the true law
-    given, 1% noise already moves it by up to 6%; measured: docs/fitting.md)."""
+    times the isotherms cover; there the fit's t* is within 5% of the truth's, or, where more,
+    three times the data's noise or twice what the data themselves allow (the error of the
+    series fitted to the same readings with the true law given: t* sums the creep the data
+    carry, and at 3% noise that alone is 6%). Measured: docs/fitting.md."""
     written, judged, errors = 0, 0, []
     for seed in range(12):
         data, truth, law, log10_aT, noise = draw_material(seed, tmp_path)
@@ -439,6 +440,13 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
             assert r.returncode == 2 and r.stderr.startswith("punchsweep: ") and not out.exists(), (seed, r.stderr)
             continue
         written += 1
+        given = tmp_path / f"given{seed}.ini"
+        law_keys = dict(line.split(" = ") for line in truth.read_text().split("[shift]")[1].split("\n")
+                        if " = " in line)
+        law_args = (["--C1", law_keys["C1"], "--C2", law_keys["C2"]] if law == "wlf" else ["--E-a", law_keys["E_a"]])
+        # (Where even the true law leaves no series the engine takes, 5% is the bound.)
+        has_given = cli("fit", "--dma", data, "--reference-temperature", "23", "--poisson", "0.5", *law_args,
+                        "--accept-poor-fit", "-o", given).returncode == 0
         # The times the data cover, at 23 C: 1/(2 pi 100 Hz a_T(-30 C)) .. 1/(2 pi 0.1 Hz a_T(60 C)).
         lo, hi = 1 / (2 * np.pi * 100 * 10 ** log10_aT(-30)), 1 / (2 * np.pi * 0.1 * 10 ** log10_aT(60))
         _, _, h_0, h_inf = design_t_star(truth, 1.0, 23.0)
@@ -450,12 +458,13 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
                     continue  # the data cannot say what happens there
                 judged += 1
                 got_regime, got, _, _ = design_t_star(out, dh, T)
+                allowed = abs(design_t_star(given, dh, T)[1] / want - 1) if has_given else 0.0
                 assert got_regime == "delayed", (seed, q, T)
-                errors.append((abs(got / want - 1), noise, seed, q, T))
-    for error, noise, seed, q, T in errors:
-        assert error <= max(0.05, 4 * noise), (seed, q, T, error, noise)
-    print(f"written {written} of 12, judged {judged} design points; t* errors (error, noise): "
-          f"{sorted((round(e, 4), round(n, 4)) for e, n, *_ in errors)}")
+                errors.append((abs(got / want - 1), allowed, noise, seed, q, T))
+    for error, allowed, noise, seed, q, T in errors:
+        assert error <= max(0.05, 3 * noise, 2 * allowed), (seed, q, T, error, allowed, noise)
+    print(f"written {written} of 12, judged {judged} design points; t* errors (fit, true law given, noise): "
+          f"{sorted((round(e, 4), round(a, 4), round(n, 4)) for e, a, n, *_ in errors)}")
     assert written >= 6 and judged >= 10, (written, judged)
 
 
