@@ -348,11 +348,14 @@ def _real(values, name: str):
     bool (True would be taken as 1), not complex. Text (a value with its unit) passes."""
     if values is None:
         raise ValueError(f"{name} is required (None given)")
+    if isinstance(values, np.ndarray) and values.dtype.kind in "fiu":
+        return values  # numbers already: nothing to look at element by element
     array = np.asarray(values, dtype=object) if not isinstance(values, np.ndarray) else values
-    flat = array.reshape(-1)
-    if array.dtype.kind == "b" or any(isinstance(v, (bool, np.bool_)) for v in flat):
+    kind = array.dtype.kind
+    flat = array.reshape(-1) if kind == "O" else ()
+    if kind == "b" or any(isinstance(v, (bool, np.bool_)) for v in flat):
         raise ValueError(f"{name} = {values!r}: a bool is not a number; valid: numbers (or text with a unit)")
-    if array.dtype.kind == "c" or any(isinstance(v, (complex, np.complexfloating)) for v in flat):
+    if kind == "c" or any(isinstance(v, (complex, np.complexfloating)) for v in flat):
         raise ValueError(f"{name} = {values!r}: a complex number; valid: real numbers (or text with a unit)")
     return values
 
