@@ -650,10 +650,7 @@ def write_whole(path: str | Path, write, inputs=()) -> None:
     left on a failure."""
     import os
 
-    path = Path(path)
-    problem = output_problem(path, inputs)
-    if problem:
-        raise MapError(f"output {problem}")
+    path = check_output(path, suffixes=(), inputs=inputs)
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
     try:
         os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))

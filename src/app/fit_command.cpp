@@ -6,10 +6,8 @@
 #include <cmath>
 #include <functional>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
-#include <unistd.h>
 
 #include "input/material_file.hpp"
 #include "input/value_parsing.hpp"

@@ -36,12 +36,12 @@ struct ShiftRequest {
   model::TemperatureShift given;          ///< used when law == given
 };
 
-/// The master curve's shifts: per isotherm (in temperature order) the shift measured from
-/// the overlaps (relative to T_ref, after the law's fit fixes the zero), the law's value,
-/// and the law itself.
 /// The largest WLF C2 the fit searches, in K (a C2 there is a bound, not a fit).
 inline constexpr double kWlfC2Max = 1e4;
 
+/// The master curve's shifts: per isotherm (in temperature order) the shift measured from
+/// the overlaps (relative to T_ref, after the law's fit fixes the zero), the law's value,
+/// and the law itself.
 struct MasterCurve {
   std::vector<double> temperatures;       ///< degC, increasing
   std::vector<double> measured_log10_aT;  ///< NaN where the law was given (nothing measured)

@@ -125,8 +125,9 @@ std::vector<double> simplex_minimum(const std::function<double(const std::vector
 /// every reading best (E' and E'' of a DMA test, or E(t)). Where E' is flat within the
 /// noise (a glassy or rubbery plateau) its overlap cannot place an isotherm, but E''
 /// (peaked) and the series' continuity across the isotherms can. Simplex searches from the
-/// overlap's law and from a grid of WLF starts (the overlap's law is wrong where cold
-/// isotherms sit on a plateau). Returns the law and the residual (rss) of its fit.
+/// overlap's law and from a grid of starts (the overlap's law is wrong where cold isotherms
+/// sit on a plateau), with the `coarse` series' residual, then the best polished with the
+/// `fine` one's. Returns the law and the residual (rss) of its `fine` fit.
 std::pair<model::TemperatureShift, double> joint_law(const Readings& r, const std::vector<double>& temperatures,
                                                      const model::TemperatureShift& start,
                                                      const PronyOptions& coarse, const PronyOptions& fine) {
@@ -196,8 +197,6 @@ std::pair<model::TemperatureShift, double> joint_law(const Readings& r, const st
   return {law_of(best_p), best};
 }
 
-}  // namespace
-
 /// The series fitted on `out.master`'s master curve (every reading reduced by its
 /// isotherm's shift), then cut to the time window, and its RMS errors.
 void fit_series(MaterialFit& out, const std::vector<std::size_t>& isotherm_of, const MaterialFitRequest& request) {
@@ -263,6 +262,8 @@ void fit_series(MaterialFit& out, const std::vector<std::size_t>& isotherm_of, c
   out.prony.rms_second = dma ? std::sqrt(s2 / static_cast<double>(out.used)) : 0.0;
 }
 
+}  // namespace
+
 MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequest& request) {
   const bool dma = !measurements.dma.empty();
   if (dma == !measurements.relaxation.empty()) {
@@ -280,12 +281,11 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
   // with the overlap's reason.)
   const std::size_t needed = request.shift.law == ShiftRequest::Law::wlf ? 3 : 2;
   const bool may_join =
-      request.refine_shifts && request.shift.law != ShiftRequest::Law::given && isotherms.size() >= needed;
+      request.fit_law_with_series && request.shift.law != ShiftRequest::Law::given && isotherms.size() >= needed;
   // The overlap of E' first (what instruments' software does); where it cannot lay the
   // isotherms onto each other (no common moduli: a plateau) or fails the fit's own checks,
   // the law is fitted together with the series instead, and kept where the series then
-  // meets the readings better (their residuals on one footing: a grid of at least 3 times
-  // a decade, the times not refined).
+  // meets the readings better (both residuals on one footing, below) and within kJointRms.
   std::string overlap_failed;
   try {
     out.master = build_master_curve(isotherms, out.abscissa, request.shift);
@@ -306,7 +306,8 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
   std::vector<double> temperatures;
   for (const Isotherm& iso : isotherms) temperatures.push_back(iso.temperature);
   // The residual on one footing for both: the series at one density (the overlap's choice,
-  // or 1 a decade), its times refined; and a cheap one for the search's first stage.
+  // at least 1 a decade), its times refined; and a cheap one for the search's first stage
+  // (at least 3 a decade, the times on their grid).
   PronyOptions options = request.prony;
   options.per_decade = {std::max(1.0, overlap_failed.empty() ? out.prony.candidates[out.prony.chosen].per_decade : 1.0)};
   options.refine = true;
@@ -370,19 +371,16 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
   return joint;
 }
 
-}  // namespace punchsweep::fit
-
-namespace punchsweep::fit {
-
 std::vector<std::string> fit_problems(const MaterialFit& fit, const FitLimits& limits) {
   std::vector<std::string> problems;
   const MasterCurve& m = fit.master;
   const auto text = [](double v, int digits = 3) { return model::number_text(v, digits); };
   // The shifts' checks apply to the shifts the readings are moved by: the overlap's, not
   // where the law was given or fitted with the series (monotone by construction).
-  const bool measured = !m.joint && !m.measured_log10_aT.empty() && !std::isnan(m.measured_log10_aT.front());
+  const bool overlap = !m.measured_log10_aT.empty() && !std::isnan(m.measured_log10_aT.front());
+  const bool measured = overlap && !m.joint;
   std::vector<std::string> rises;  // of the overlap's shifts
-  if (!m.measured_log10_aT.empty() && !std::isnan(m.measured_log10_aT.front())) {
+  if (overlap) {
     for (std::size_t i = 1; i < m.temperatures.size(); ++i) {
       const double rise = m.measured_log10_aT[i] - m.measured_log10_aT[i - 1];
       if (rise > limits.shift_rise) {

@@ -46,9 +46,10 @@ struct MaterialFitRequest {
   double window_lo = 1e-10;
   double window_hi = 1e12;
   PronyOptions prony;
-  /// Also fit the shift law together with the series (fit_material: kept where it beats the
-  /// overlap's shifts by BIC); not where the law is given.
-  bool refine_shifts = true;
+  /// Where the overlap's shifts fail (no overlap, or fit_problems), fit the shift law
+  /// together with the series instead (fit_material: kept where its residual is below the
+  /// overlap's and it meets the readings within 5%); not where the law is given.
+  bool fit_law_with_series = true;
 };
 
 /// A reading on the master curve: where it was measured, where it lands, and the fit there

@@ -468,7 +468,7 @@ def _physical_scales(attrs) -> dict:
     scales = {}
     time = attrs.get("time_unit", "T_eps")
     time = time.decode() if isinstance(time, bytes) else str(time)
-    E0_star, R, R_m = _scale_attributes(attrs)
+    E0_star, R, R_m = scale_attributes(attrs, NotAMapError)  # map_attributes.py, the scripts' rule too
     if E0_star is not None:
         scales["E0/(1-nu^2)"] = (E0_star, "Pa")
         if time != "T_eps":
@@ -481,12 +481,6 @@ def _physical_scales(attrs) -> dict:
         if E0_star is not None:
             scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
     return scales
-
-
-def _scale_attributes(attrs):
-    """E0_star_Pa, R and R_m as the map holds them, checked (map_attributes.py, the rule the
-    postprocess scripts use too); NotAMapError naming the attribute."""
-    return scale_attributes(attrs, NotAMapError)
 
 
 def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
