@@ -131,7 +131,7 @@ class TileSink final : public BatchSink {
   void take(const BatchPoint& p) override {
     const std::size_t i = index_[p.k];
     if (full_ != nullptr) {
-      model::PointResult r = model::evaluate_point(p.problem, p.creep, *full_, p.summary, p.parts.branch.get());
+      model::PointResult r = model::evaluate_point(p.problem, p.creep, *full_, p.summary, p.parts.branch());
       const double t_star = r.t_star.value_or(std::numeric_limits<double>::infinity());
       r.dt_star_ddh = model::t_star_derivative(p.problem, p.creep, model::kHeightDifference, t_star).derivative;
       r.dt_star_dpbar = model::t_star_derivative(p.problem, p.creep, model::kPressure, t_star).derivative;

@@ -48,7 +48,7 @@ std::unique_ptr<CreepLaw> make_creep_law(const CreepLawSpec& law, std::span<cons
                                 " parameters, got " + std::to_string(values.size()));
   }
   for (std::size_t k = 0; k < values.size(); ++k) {
-    if (std::string e = law.parameters[k].error(values[k]); !e.empty()) throw std::invalid_argument(e);
+    if (!law.parameters[k].admits(values[k])) throw std::invalid_argument(law.parameters[k].error(values[k]));
   }
   return law.make(values);
 }

@@ -122,9 +122,12 @@ PeriodicState PeriodicSolution::two_level(double xi, const Row& row) const {
     // above the gap's band, where h is the boundary elements' own: their surface is read at
     // delta, from the touchdown said here (row()).
     const GridPosition at = curve_.grid().at(v);  // the same grid, kPast samples longer
-    const double h = curve_.gap(v, Stencil(at, curve_.grid().count));
-    out = small_->two_level_with(xi, v, h > 0.0 ? std::clamp(row.delta / h, 0.0, 1.0) : 0.0,
-                                 Stencil(at, small_->curve().grid().count));
+    const Stencil on_curve(at, curve_.grid().count);
+    // The small-spot table's stencil: the same nodes and weights but in its last intervals.
+    const int small_count = small_->curve().grid().count;
+    const Stencil on_small = on_curve.first <= small_count - 4 ? on_curve : Stencil(at, small_count);
+    const double h = curve_.gap(v, on_curve);
+    out = small_->two_level_with(xi, v, h > 0.0 ? std::clamp(row.delta / h, 0.0, 1.0) : 0.0, on_small);
     if (v > v_hand_) {
       const double w = small_weight(v);
       const PeriodicState tables = tables_->two_level(xi, row.table);

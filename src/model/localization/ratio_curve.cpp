@@ -21,6 +21,21 @@ RatioCurve::RatioCurve(int s, double v_top, std::vector<double> a1_ratio, std::v
     h_nodes_.push_back(h_per_v_ * ipow(v, s) * h_[static_cast<std::size_t>(k)]);
     root_nodes_.push_back(v * iroot(h_[static_cast<std::size_t>(k)], s));
   }
+  const double width = root_nodes_.back() / grid_.count;
+  root_per_bucket_ = width > 0.0 ? 1.0 / width : 0.0;
+  for (int b = 0, k = 0; b < grid_.count; ++b) {
+    while (k + 1 < grid_.count && root_nodes_[static_cast<std::size_t>(k) + 1] <= b * width) ++k;
+    root_start_.push_back(k);
+  }
+}
+
+int RatioCurve::last_at_or_below(double target) const {
+  const double bucket = std::min(target * root_per_bucket_, static_cast<double>(grid_.count - 1));
+  int k = root_start_[static_cast<std::size_t>(std::max(bucket, 0.0))];
+  const int last = grid_.count - 1;
+  while (k < last && root_nodes_[static_cast<std::size_t>(k) + 1] <= target) ++k;
+  while (k > 0 && root_nodes_[static_cast<std::size_t>(k)] > target) --k;  // rounding of the bucket
+  return k;
 }
 
 PeriodicState RatioCurve::at(double xi, double v) const {
@@ -53,9 +68,7 @@ std::optional<double> RatioCurve::touchdown(double delta) const {
   if (delta > h_nodes_.back()) return std::nullopt;
   const int M = grid_.count - 1;
   const double target = iroot(delta / h_per_v_, s_);
-  const int i = std::clamp(static_cast<int>(std::upper_bound(root_nodes_.begin(), root_nodes_.end(), target) -
-                                            root_nodes_.begin()) - 1,
-                           0, M - 1);
+  const int i = std::min(last_at_or_below(target), M - 1);
   const IntervalCubic ratio(h_.data(), i, M + 1);
   const double step = grid_.step;
   const double chord = root_nodes_[static_cast<std::size_t>(i) + 1] - root_nodes_[static_cast<std::size_t>(i)];

@@ -295,8 +295,10 @@ DhParts dh_parts(const ContactProblem& problem) {
   parts.touchdown = touchdown(problem);
   if (problem.localization.is_paper()) {
     parts.guide = std::make_shared<const LongTermGuide>(problem);
+  } else if (problem.localization.periodic) {
+    parts.periodic.emplace(problem, parts.touchdown);
   } else {
-    parts.branch = make_branch(problem, parts.touchdown);
+    parts.shells = make_branch(problem, parts.touchdown);
   }
   return parts;
 }
@@ -311,7 +313,7 @@ PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& cree
                              const SingleLevelEnds& ends, std::optional<ElasticTwoLevel>* elastic) {
   SummaryParts parts;
   parts.guide = dh.guide.get();
-  parts.branch = dh.branch.get();
+  parts.branch = dh.branch();
   const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
   parts.load = &load;
   parts.classification = classify(dh.touchdown, load);
@@ -335,7 +337,7 @@ PointResult evaluate_point(const ContactProblem& problem, const CreepLaw& creep,
                            const EvaluationOptions& options) {
   const DhParts dh = dh_parts(problem);
   return evaluate_point(problem, creep, options, summarize_point(problem, creep, dh, single_level_ends(problem, creep)),
-                        dh.branch.get());
+                        dh.branch());
 }
 
 namespace {
