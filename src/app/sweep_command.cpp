@@ -19,6 +19,8 @@
 #include <random>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "input/sweep_options.hpp"
 #include "input/usage_error.hpp"
 #include "app/version.hpp"
@@ -253,6 +255,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
     return input::kUsageExitCode;
   }
   if (help) return 0;
+  config.progress_to_terminal = isatty(STDERR_FILENO) == 1;  // else a log: a line each 5%
 
   // Rank 0 claims the map's name before it looks at any of its files (a second run into
   // the same output is refused here, naming the first); every rank learns the verdict.

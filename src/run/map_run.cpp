@@ -17,7 +17,7 @@ MapRun::MapRun(const sweep::SweepConfig& config, const io::MapLayout& layout, co
       tiling_(tiling),
       writer_(paths_.partial, layout, attributes),
       progress_(log, config.grid.points(), layout.bem ? static_cast<std::size_t>(layout.bem->sample) : 0,
-                config.quiet),
+                config.quiet, config.progress_to_terminal ? Progress::Pace::terminal : Progress::Pace::log),
       last_flush_(std::chrono::steady_clock::now()) {
   // The tiles the journal holds: memory in proportion to the work done, not to the grid.
   std::unordered_set<std::uint64_t> done;

@@ -22,8 +22,8 @@ std::size_t sum(const std::array<std::size_t, 3>& counts) { return counts[0] + c
 
 }  // namespace
 
-Progress::Progress(std::ostream& out, std::size_t total_points, std::size_t total_bem, bool quiet)
-    : out_(out), total_(total_points), total_bem_(total_bem), quiet_(quiet),
+Progress::Progress(std::ostream& out, std::size_t total_points, std::size_t total_bem, bool quiet, Pace pace)
+    : out_(out), total_(total_points), total_bem_(total_bem), quiet_(quiet), pace_(pace),
       start_(std::chrono::steady_clock::now()), last_print_(start_) {}
 
 void Progress::count(const io::TileSummary& summary) {
@@ -41,8 +41,18 @@ void Progress::restored(const io::EncodedTile& tile) {
 void Progress::computed(const io::EncodedTile& tile) {
   count(tile.summary);
   computed_points_ += tile.summary.points;
+  if (quiet_) return;
   const auto now = std::chrono::steady_clock::now();
-  if (quiet_ || now - last_print_ < std::chrono::seconds(1)) return;
+  if (pace_ == Pace::terminal) {
+    if (now - last_print_ < std::chrono::seconds(1)) return;
+  } else {
+    // The twentieths of the points done: a line as each is passed (one line for several
+    // passed at once, as a resumed run's first tiles pass them), else every 10 minutes.
+    const std::size_t step = total_ > 0 ? 20 * points_done() / total_ : 20;
+    const bool passed = step >= next_step_ && next_step_ <= 20;
+    if (!passed && now - last_print_ < std::chrono::minutes(10)) return;
+    if (passed) next_step_ = step + 1;
+  }
   last_print_ = now;
   const double done = static_cast<double>(points_done());
   const double left = static_cast<double>(total_) - done;

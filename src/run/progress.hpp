@@ -10,8 +10,9 @@
 namespace punchsweep::run {
 
 /// Progress and end-of-run summary of a sweep, printed by rank 0 to a stream (stderr):
-/// at most one line a second with points done / total, percent, points/s and ETA, and with
-/// a BEM reference the reference points done / total.
+/// lines with points done / total, percent, points/s and ETA, and with a BEM reference the
+/// reference points done / total. To a terminal at most one a second; to a log (a file, a
+/// batch job's output) one each 5% of the points, and at least one every 10 minutes.
 ///
 /// The ETA counts grid points, although a BEM point costs a thousand model points or more:
 /// the reference sample is uniform over the grid, so the BEM work comes in proportion to
@@ -19,12 +20,13 @@ namespace punchsweep::run {
 class Progress {
  public:
   /// `total_bem`: the number of reference points of the sweep (0 without a reference).
-  Progress(std::ostream& out, std::size_t total_points, std::size_t total_bem, bool quiet);
+  enum class Pace { terminal, log };
+  Progress(std::ostream& out, std::size_t total_points, std::size_t total_bem, bool quiet, Pace pace = Pace::terminal);
 
   /// Counts a tile restored from the journal (not computed by this run), from its summary.
   void restored(const io::EncodedTile& tile);
-  /// Counts a tile computed by this run, from its summary, and prints a line if a second
-  /// has passed.
+  /// Counts a tile computed by this run, from its summary, and prints a line when its pace
+  /// says.
   void computed(const io::EncodedTile& tile);
 
   std::size_t points_done() const { return restored_points_ + computed_points_; }
@@ -43,6 +45,8 @@ class Progress {
   std::size_t total_;
   std::size_t total_bem_;
   bool quiet_;
+  Pace pace_;
+  std::size_t next_step_ = 0;  ///< Pace::log: the next 5% step (in twentieths) that prints
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
   std::size_t restored_points_ = 0;

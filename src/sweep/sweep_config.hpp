@@ -93,6 +93,10 @@ struct SweepConfig {
   bool overwrite = false;             ///< [run] overwrite
   bool dry_run = false;               ///< --dry-run (command line only)
   bool quiet = false;                 ///< [run] quiet
+  /// Where progress goes (set by the command, not a key): a terminal gets a line a second,
+  /// a log (a file, a batch job's output) a line each 5% of the points and at least one
+  /// every 10 minutes.
+  bool progress_to_terminal = true;
   std::string config_path;            ///< the --config file, "" for the embedded default
   /// Every file the configuration was read from (the config file, the material files): no
   /// file of the map may be one of them (io::output_file_problem).

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "io/encoded_tile.hpp"
@@ -21,6 +22,7 @@
 #include "run/disk_space.hpp"
 #include "run/map_run.hpp"
 #include "run/preflight.hpp"
+#include "run/progress.hpp"
 #include "run/resume_policy.hpp"
 
 using namespace punchsweep;
@@ -331,4 +333,42 @@ TEST(MapRun, resume_refuses_records_that_do_not_decode_or_come_from_another_jour
   std::size_t in_other = 0;
   io::TileJournal::replay(other, [&](const io::EncodedTile&) { return ++in_other, true; });
   EXPECT_EQ(in_other, 1U);
+}
+
+// Issue 36: progress into a log (a batch job's) is a line each 5% of the points, not one a
+// second; the first tile's line says the run has begun.
+TEST(Progress, ALogGetsALineEachFivePercent) {
+  std::ostringstream log;
+  run::Progress progress(log, 1000, 0, false, run::Progress::Pace::log);
+  io::EncodedTile tile;
+  tile.summary.points = 10;
+  for (int k = 0; k < 100; ++k) progress.computed(tile);
+  std::vector<std::string> lines;
+  std::istringstream in(log.str());
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 21U) << log.str();  // 1% (the first tile), then 5%, 10%, ..., 100%
+  EXPECT_NE(lines.front().find("10 / 1000 points (1.0%)"), std::string::npos) << lines.front();
+  for (int step = 1; step <= 20; ++step) {
+    const std::string done = std::to_string(50 * step) + " / 1000 points";
+    EXPECT_NE(lines[static_cast<std::size_t>(step)].find(done), std::string::npos) << lines[static_cast<std::size_t>(step)];
+  }
+  EXPECT_NE(lines.back().find("ETA"), std::string::npos);
+}
+
+TEST(Progress, ATerminalGetsAtMostALineASecond) {
+  std::ostringstream log;
+  run::Progress progress(log, 1000, 0, false, run::Progress::Pace::terminal);
+  io::EncodedTile tile;
+  tile.summary.points = 10;
+  for (int k = 0; k < 100; ++k) progress.computed(tile);  // well within a second
+  EXPECT_EQ(log.str(), "");
+}
+
+TEST(Progress, QuietPrintsNothing) {
+  std::ostringstream log;
+  run::Progress progress(log, 1000, 0, true, run::Progress::Pace::log);
+  io::EncodedTile tile;
+  tile.summary.points = 10;
+  for (int k = 0; k < 100; ++k) progress.computed(tile);
+  EXPECT_EQ(log.str(), "");
 }
