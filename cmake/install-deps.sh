@@ -16,6 +16,23 @@ packages=(
   udunits-bin
   python3-plotly chromium nodejs
 )
+# A single-node Slurm for tests/jobs/real_slurm.sh (the job scripts under a real Slurm, and
+# jobs/pbs.sh through its Torque wrappers). Installed where no systemd runs (containers, CI
+# machines) or with PUNCHSWEEP_TEST_SLURM=1: on a desktop with systemd the packages would
+# enable and start their services. PUNCHSWEEP_TEST_SLURM=0 leaves them out; the test skips.
+slurm_packages=(slurm-wlm munge slurm-wlm-torque)
+case "${PUNCHSWEEP_TEST_SLURM:-auto}" in
+  1) packages+=("${slurm_packages[@]}") ;;
+  0) ;;
+  *)
+    if [ "$(cat /proc/1/comm 2>/dev/null)" != systemd ]; then
+      packages+=("${slurm_packages[@]}")
+    else
+      echo "install-deps: left out ${slurm_packages[*]} (systemd would start them);" \
+        "PUNCHSWEEP_TEST_SLURM=1 installs them for tests/jobs/real_slurm.sh, which skips without them" >&2
+    fi
+    ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

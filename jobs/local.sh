@@ -11,7 +11,6 @@ config=$(realpath "${1:-$root/sweeps/default.ini}")
 name=$(basename "$config" .ini)
 run=${2:-"$root/runs/$name-$(date -u +%Y%m%d-%H%M%S)"}
 cores=$(getconf _NPROCESSORS_ONLN)  # not nproc: it honours OMP_NUM_THREADS
-python=/usr/bin/python3
 
 binary=${PUNCHSWEEP:-}  # an engine already built elsewhere (the tests use this)
 if [ -z "$binary" ]; then
@@ -25,25 +24,11 @@ if [ -z "$binary" ]; then
   binary="$root/build/src/app/punchsweep"
 fi
 
+# shellcheck source=jobs/run_folder.sh
+source "$root/jobs/run_folder.sh"
 mkdir -p "$run"
 run=$(realpath "$run")
-# The config, and the material files it names, copied into the run folder (relative paths
-# taken from the config's own folder): the folder then runs and resumes by itself. Into a
-# folder that holds a run already, the copy is staged first and the engine asked whether
-# the map would resume from it (sweep --resume --dry-run): a different configuration is
-# refused (exit 2) before the folder's config or materials are touched.
-staged=$(mktemp -d "$run/.config-XXXXXX")
-trap 'rm -rf "$staged"' EXIT
-"$python" "$root/jobs/record_config.py" "$config" "$staged"
-if [ -e "$run/config.ini" ] || [ -e "$run/map.h5" ] || [ -e "$run/map.h5.partial.journal" ]; then
-  (cd "$staged" && "$binary" sweep --config config.ini --output "$run/map.h5" --resume --dry-run > /dev/null) || {
-    echo "punchsweep: $run was left as it was (its config, materials and map); choose another run folder" >&2
-    exit 2
-  }
-fi
-rm -rf "$run/materials"
-[ ! -d "$staged/materials" ] || mv "$staged/materials" "$run/materials"
-mv "$staged/config.ini" "$run/config.ini"
+prepare_run "$config" "$run" "$binary" || exit 2
 {
   echo "punchsweep run: $name"
   echo "started: $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(hostname), $cores cores"
@@ -56,11 +41,5 @@ if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_RO
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
 mpirun -np "$cores" "$binary" sweep --config "$run/config.ini" --output "$run/map.h5" --resume
 
-# Pictures and the summary, from the map alone (the pictures fix the axes they do not show
-# at values the map has: a material map has no T).
-"$python" "$root/postprocess/summary.py" "$run/map.h5" > "$run/summary.txt"
-"$python" "$root/postprocess/run_pictures.py" "$run/map.h5" "$run" > /dev/null
-echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
-
 echo "punchsweep: map $run/map.h5"
-echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; explorer $run/explore.html; summary $run/summary.txt"
+finish_run "$run"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The cluster job scripts: syntax, a dry run under stub Slurm/PBS commands, and the Slurm
-# script's time-limit path for real (USR1 -> clean stop, exit 3, requeue, resumed run
-# finishes the same map).
+# The cluster job scripts without a cluster: syntax, a dry run under stub Slurm/PBS
+# commands, the Slurm script's time-limit path (USR1 -> clean stop, exit 3, requeue, resumed
+# run finishes the same map) and its cancel path (TERM -> clean stop, no requeue).
+# tests/jobs/real_slurm.sh runs them under a real Slurm.
 source "$(dirname "$0")/../sweep/common.sh"
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 for script in local.sh slurm.sbatch pbs.sh paper-points.sh; do bash -n "$root/jobs/$script"; done
@@ -10,7 +11,8 @@ for script in local.sh slurm.sbatch pbs.sh paper-points.sh; do bash -n "$root/jo
 mkdir -p stubs
 cat > stubs/srun <<'STUB'
 #!/bin/bash
-args=(); for a in "$@"; do case "$a" in --cpu-bind=*) ;; *) args+=("$a") ;; esac; done
+[ "$1" != --mpi=list ] || { printf 'MPI plugin types are...\n\tnone\n\tpmix\n'; exit 0; }
+args=(); for a in "$@"; do case "$a" in --cpu-bind=* | --mpi=* | --ntasks=*) ;; *) args+=("$a") ;; esac; done
 echo "srun $*" >> "$STUB_LOG"
 exec mpirun --oversubscribe -np "$SLURM_NTASKS" "${args[@]}"
 STUB
@@ -24,18 +26,20 @@ printf '[grid]\nl = 0.75\ndh = 0.05, 0.1\nT = 2.5\npbar = 0.06\ns = 2\n' > "$sma
 # 1) Slurm, dry run: the run folder, provenance and the srun launch.
 SLURM_JOB_ID=4242 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/slurm-dry" \
   PUNCHSWEEP_EXTRA_ARGS=--dry-run bash "$root/jobs/slurm.sbatch" "$small" > slurm-dry.log 2>&1
-grep -q "points: 2 in" slurm-dry.log && grep -q "job 4242" slurm-dry/provenance.txt && grep -q "srun --cpu-bind=cores" stub.log
+grep -q "points: 2 in" slurm-dry/job.log && grep -q "job 4242" slurm-dry/provenance.txt
+grep -q "srun --mpi=pmix --ntasks=2 --cpu-bind=cores" stub.log
+grep -q "log $PWD/slurm-dry/job.log" slurm-dry.log
 test -f slurm-dry/config.ini
 
 # 2) PBS, dry run with a node file of two slots.
 printf 'localhost\nlocalhost\n' > nodes
 PBS_JOBID=77.server PBS_O_WORKDIR="$root" PBS_NODEFILE="$PWD/nodes" CONFIG="$small" PUNCHSWEEP_RUN="$PWD/pbs-dry" \
   PUNCHSWEEP_EXTRA_ARGS=--dry-run bash "$root/jobs/pbs.sh" > pbs-dry.log 2>&1
-grep -q "points: 2 in" pbs-dry.log && grep -q "ranks 2" pbs-dry/provenance.txt
+grep -q "points: 2 in" pbs-dry/job.log && grep -q "ranks 2" pbs-dry/provenance.txt
 
 # 3) Outside Slurm, a real small map with mpirun.
 PUNCHSWEEP_RUN="$PWD/local" bash "$root/jobs/slurm.sbatch" "$small" > local.log 2>&1
-test -f local/map.h5 && grep -q "status 0" local/provenance.txt
+test -f local/map.h5 && grep -q "status 0" local/provenance.txt && test -s local/explore.html && test -s local/summary.txt
 
 # 4) The local main job: map, pictures, summary and provenance in the run folder.
 printf '[grid]\nl = 0.5, 0.75, 1\ndh = linspace(0.02, 0.12, 6)\nT = 2, 5\npbar = logspace(0.005, 0.08, 5)\ns = 1, 2\n' > local.ini
@@ -77,18 +81,30 @@ cfg=$PWD/longer.ini
 printf '[grid]\nl = linspace(0.5, 1.25, 40)\nT = 2, 5, 10\n[run]\nchunk = 1000\n' > "$cfg"
 SLURM_JOB_ID=5151 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/limit" \
   bash "$root/jobs/slurm.sbatch" "$cfg" > limit1.log 2>&1 & job=$!
-while ! grep -q "points/s, ETA" limit1.log; do
-  kill -0 "$job" 2>/dev/null || { echo "FAIL: the job ended before the time limit"; cat limit1.log; exit 1; }
-  sleep 0.05
-done
+progress() { grep -q "points/s, ETA" "$1/job.log" 2> /dev/null; }
+wait_until 120 "$job" "the job's first progress" -- progress limit ||
+  { echo "FAIL: the job ended before the time limit"; cat limit/job.log; exit 1; }
 kill -USR1 "$job"
 status=0; wait "$job" || status=$?
-[ "$status" = 3 ] || { echo "FAIL: expected exit 3 after USR1, got $status"; cat limit1.log; exit 1; }
+[ "$status" = 3 ] || { echo "FAIL: expected exit 3 after USR1, got $status"; cat limit/job.log; exit 1; }
 grep -q "scontrol requeue 5151" stub.log || { echo "FAIL: no requeue"; cat stub.log; exit 1; }
 test -f limit/map.h5.partial.journal
 SLURM_JOB_ID=5151 SLURM_NTASKS=2 SLURM_RESTART_COUNT=1 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/limit" \
   bash "$root/jobs/slurm.sbatch" "$cfg" > limit2.log 2>&1
-grep -q "already done" limit2.log
+grep -q "already done" limit/job.log
 run_ranks 1 sweep --config "$cfg" --quiet --output clean.h5
 same_maps clean.h5 limit/map.h5
-echo "PASS: job scripts parse, dry-run under stub Slurm/PBS, and survive a time limit"
+
+# 6) scancel's TERM to the batch script: the sweep stops cleanly (exit 3) and the job is not
+#    requeued.
+: > "$STUB_LOG"
+SLURM_JOB_ID=7171 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/cancel" \
+  bash "$root/jobs/slurm.sbatch" "$cfg" > cancel1.log 2>&1 & job=$!
+wait_until 120 "$job" "the job's first progress" -- progress cancel ||
+  { echo "FAIL: the job ended before it could be cancelled"; cat cancel/job.log; exit 1; }
+kill -TERM "$job"
+status=0; wait "$job" || status=$?
+[ "$status" = 3 ] || { echo "FAIL: expected exit 3 after TERM, got $status"; cat cancel/job.log; exit 1; }
+grep -q "status 3 (cancelled)" cancel/provenance.txt
+! grep -q "scontrol requeue" "$STUB_LOG" || { echo "FAIL: a cancelled job requeued itself"; cat "$STUB_LOG"; exit 1; }
+echo "PASS: job scripts parse, dry-run under stub Slurm/PBS, survive a time limit, and end on a cancel"

@@ -1,0 +1,44 @@
+# The run folder's steps that every job script shares (local.sh, slurm.sbatch, pbs.sh).
+# Sourced, with $root (the checkout) set; /usr/bin/python3 with numpy, h5py and matplotlib
+# draws the pictures (PUNCHSWEEP_PYTHON names another).
+python=${PUNCHSWEEP_PYTHON:-/usr/bin/python3}
+
+# prepare_run CONFIG RUN BINARY: RUN/config.ini and RUN/materials/, copied from CONFIG and
+# the material files it names (relative paths taken from the config's own folder), so that
+# the folder runs and resumes by itself. Into a folder that holds a run already, the copy is
+# staged first and the engine asked whether the map would resume from it (sweep --resume
+# --dry-run): a different configuration is refused (exit 2) before the folder's config or
+# materials are touched. A requeued job passes the same way (its config is the same).
+prepare_run() {
+  local config=$1 run=$2 binary=$3 staged
+  mkdir -p "$run"
+  staged=$(mktemp -d "$run/.config-XXXXXX")
+  "$python" "$root/jobs/record_config.py" "$config" "$staged" || { rm -rf "$staged"; return 2; }
+  if [ -e "$run/config.ini" ] || [ -e "$run/map.h5" ] || [ -e "$run/map.h5.partial.journal" ]; then
+    (cd "$staged" && "$binary" sweep --config config.ini --output "$run/map.h5" --resume --dry-run > /dev/null) || {
+      rm -rf "$staged"
+      echo "punchsweep: $run was left as it was (its config, materials and map); choose another run folder" >&2
+      return 2
+    }
+  fi
+  rm -rf "$run/materials"
+  [ ! -d "$staged/materials" ] || mv "$staged/materials" "$run/materials"
+  mv "$staged/config.ini" "$run/config.ini"
+  rm -rf "$staged"
+}
+
+# finish_run RUN: the summary, the pictures and the explorer page, from the map alone (the
+# pictures fix the axes they do not show at values the map has: a material map has no T).
+# Without the Python packages it says so and what to run; the map is whole either way.
+finish_run() {
+  local run=$1
+  if ! "$python" -c 'import numpy, h5py, matplotlib' 2> /dev/null; then
+    echo "punchsweep: no summary or pictures: $python lacks numpy, h5py or matplotlib;" \
+      "on a machine that has them: bash $root/jobs/finish_run.sh $run" >&2
+    return 0
+  fi
+  "$python" "$root/postprocess/summary.py" "$run/map.h5" > "$run/summary.txt"
+  "$python" "$root/postprocess/run_pictures.py" "$run/map.h5" "$run" > /dev/null
+  echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
+  echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; explorer $run/explore.html; summary $run/summary.txt"
+}
