@@ -335,18 +335,26 @@ TEST(MapRun, resume_refuses_records_that_do_not_decode_or_come_from_another_jour
   EXPECT_EQ(in_other, 1U);
 }
 
-// Issue 36: progress into a log (a batch job's) is a line each 5% of the points, not one a
-// second; the first tile's line says the run has begun.
-TEST(Progress, ALogGetsALineEachFivePercent) {
+namespace {
+// What a Progress prints over 100 tiles of 10 of 1000 points, one after the other at once.
+std::string progress_over_a_run(run::Progress::Pace pace, bool quiet) {
   std::ostringstream log;
-  run::Progress progress(log, 1000, 0, false, run::Progress::Pace::log);
+  run::Progress progress(log, 1000, 0, quiet, pace);
   io::EncodedTile tile;
   tile.summary.points = 10;
   for (int k = 0; k < 100; ++k) progress.computed(tile);
+  return log.str();
+}
+}  // namespace
+
+// Issue 36: progress into a log (a batch job's) is a line each 5% of the points, not one a
+// second; the first tile's line says the run has begun.
+TEST(Progress, ALogGetsALineEachFivePercent) {
+  const std::string log = progress_over_a_run(run::Progress::Pace::log, false);
   std::vector<std::string> lines;
-  std::istringstream in(log.str());
+  std::istringstream in(log);
   for (std::string line; std::getline(in, line);) lines.push_back(line);
-  ASSERT_EQ(lines.size(), 21U) << log.str();  // 1% (the first tile), then 5%, 10%, ..., 100%
+  ASSERT_EQ(lines.size(), 21U) << log;  // 1% (the first tile), then 5%, 10%, ..., 100%
   EXPECT_NE(lines.front().find("10 / 1000 points (1.0%)"), std::string::npos) << lines.front();
   for (int step = 1; step <= 20; ++step) {
     const std::string done = std::to_string(50 * step) + " / 1000 points";
@@ -356,19 +364,7 @@ TEST(Progress, ALogGetsALineEachFivePercent) {
 }
 
 TEST(Progress, ATerminalGetsAtMostALineASecond) {
-  std::ostringstream log;
-  run::Progress progress(log, 1000, 0, false, run::Progress::Pace::terminal);
-  io::EncodedTile tile;
-  tile.summary.points = 10;
-  for (int k = 0; k < 100; ++k) progress.computed(tile);  // well within a second
-  EXPECT_EQ(log.str(), "");
+  EXPECT_EQ(progress_over_a_run(run::Progress::Pace::terminal, false), "");  // well within a second
 }
 
-TEST(Progress, QuietPrintsNothing) {
-  std::ostringstream log;
-  run::Progress progress(log, 1000, 0, true, run::Progress::Pace::log);
-  io::EncodedTile tile;
-  tile.summary.points = 10;
-  for (int k = 0; k < 100; ++k) progress.computed(tile);
-  EXPECT_EQ(log.str(), "");
-}
+TEST(Progress, QuietPrintsNothing) { EXPECT_EQ(progress_over_a_run(run::Progress::Pace::log, true), ""); }
