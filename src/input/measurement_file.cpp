@@ -31,11 +31,11 @@ struct ColumnSpec {
 
 const std::array<ColumnSpec, 7>& column_specs() {
   static const std::array<ColumnSpec, 7> specs{{
-      {Column::temperature, {"temperature", "temp"}, "C, degC or K"},
-      {Column::frequency, {"frequency", "freq"}, "Hz or rad/s"},
+      {Column::temperature, {"temperature", "temp", "temp."}, "C, degC or K"},
+      {Column::frequency, {"frequency", "freq", "angularfrequency", "freq."}, "Hz or rad/s"},
       {Column::storage, {"storage", "storagemodulus", "e'"}, "Pa, kPa, MPa or GPa"},
       {Column::loss, {"loss", "lossmodulus", "e''"}, "Pa, kPa, MPa or GPa"},
-      {Column::tan_delta, {"tandelta", "tan(delta)", "tand"}, "- or 1"},
+      {Column::tan_delta, {"tandelta", "tan(delta)", "tand", "tan\xce\xb4", "tan(\xce\xb4)", "lossfactor"}, "- or 1"},
       {Column::time, {"time"}, "s, min or h"},
       {Column::modulus, {"modulus", "relaxationmodulus", "e(t)"}, "Pa, kPa, MPa or GPa"},
   }};
@@ -97,7 +97,11 @@ std::optional<ToSi> unit_of(Column column, const std::string& unit) {
   const std::string u = normalized(unit);
   switch (column) {
     case Column::temperature:
-      if (u == "c" || u == "degc" || u == "\xc2\xb0" "c" || u == "celsius") return ToSi{1.0, 0.0};
+      // The degree sign in UTF-8 or Latin-1 (Windows exports), or the ordinal sign that
+      // stands in for it on some keyboards.
+      if (u == "c" || u == "degc" || u == "\xc2\xb0" "c" || u == "\xb0" "c" || u == "\xc2\xba" "c" || u == "celsius") {
+        return ToSi{1.0, 0.0};
+      }
       if (u == "k" || u == "kelvin") return ToSi{1.0, -model::kZeroCelsius};
       return std::nullopt;
     case Column::frequency:
@@ -116,6 +120,61 @@ std::optional<ToSi> unit_of(Column column, const std::string& unit) {
   }
 }
 
+/// A header cell: the column it names (nullptr: one the fit does not use) and its unit,
+/// written "storage [MPa]" or "Storage Modulus (MPa)", or none ("E'", and a units row
+/// below the header may give it). A name that holds parentheses is a name: "Tan(delta)".
+struct HeaderCell {
+  const ColumnSpec* spec = nullptr;
+  std::string unit;
+  bool has_unit = false;
+};
+HeaderCell header_cell(const std::string& cell) {
+  const auto named = [](const std::string& name) -> const ColumnSpec* {
+    for (const ColumnSpec& s : column_specs()) {
+      if (std::find(s.names.begin(), s.names.end(), name) != s.names.end()) return &s;
+    }
+    return nullptr;
+  };
+  HeaderCell out;
+  if ((out.spec = named(normalized(cell))) != nullptr) return out;
+  std::size_t open = cell.find('['), close = cell.rfind(']');
+  if (open == std::string::npos || close == std::string::npos || close < open) {
+    close = !cell.empty() && cell.back() == ')' ? cell.size() - 1 : std::string::npos;
+    open = close == std::string::npos ? std::string::npos : cell.rfind('(');
+  }
+  if (open == std::string::npos || close == std::string::npos || close < open) return out;
+  out.spec = named(normalized(cell.substr(0, open)));
+  out.unit = trim(cell.substr(open + 1, close - open - 1));
+  out.has_unit = true;
+  return out;
+}
+
+/// The separator of a line: a semicolon or a tab where it has one, else a comma.
+char separator_of(const std::string& line) {
+  return line.find(';') != std::string::npos ? ';' : line.find('\t') != std::string::npos ? '\t' : ',';
+}
+
+/// Whether a line is the header: it names the readings' abscissa, frequency or time. Lines
+/// above it are the instrument's preamble (sample, geometry, procedure, date).
+bool names_the_abscissa(const std::string& line) {
+  for (const std::string& cell : split(line, separator_of(line))) {
+    const ColumnSpec* spec = header_cell(cell).spec;
+    if (spec != nullptr && (spec->column == Column::frequency || spec->column == Column::time)) return true;
+  }
+  return false;
+}
+
+/// A cell's number: a leading '+' allowed; with `decimal_comma` (a file separated by
+/// semicolons or tabs, as spreadsheets in many locales write it) "4,52" is 4.52.
+std::optional<double> cell_number(const std::string& written, bool decimal_comma) {
+  std::string cell = !written.empty() && written[0] == '+' ? written.substr(1) : written;
+  if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
+  double x = 0.0;
+  const auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
+  if (ec != std::errc() || ptr != cell.data() + cell.size() || !std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
 }  // namespace
 
 void read_measurements(std::string_view raw, const std::string& origin, double temperature, fit::Measurements* into) {
@@ -131,93 +190,121 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
       unified += raw[i];
     }
   }
-  const std::string_view text = unified;
-  std::size_t line_no = 0, start = 0;
+  // The lines that hold anything but a comment, with their numbers (from 1).
+  std::vector<std::pair<std::size_t, std::string>> lines;
+  {
+    const std::string_view text = unified;
+    std::size_t line_no = 0, start = 0;
+    while (start <= text.size()) {
+      auto end = text.find('\n', start);
+      if (end == std::string_view::npos) end = text.size();
+      ++line_no;
+      std::string t(model::trim(text.substr(start, end - start), " \t\r"));  // (a quote at either end belongs to a cell)
+      if (!t.empty() && t[0] != '#') lines.emplace_back(line_no, std::move(t));
+      start = end + 1;
+    }
+  }
+  if (lines.empty()) throw UsageError(origin + ": no header row (e.g. 'temperature [C],frequency [Hz],storage [MPa],loss [MPa]')");
+  // The header: the first line that names frequency or time (the lines above it are the
+  // instrument's preamble); where none does, the first line, whose checks say what it lacks.
+  std::size_t h = 0;
+  while (h < lines.size() && !names_the_abscissa(lines[h].second)) ++h;
+  if (h == lines.size()) h = 0;
+  const std::size_t header_no = lines[h].first;
+  const char sep = separator_of(lines[h].second);
+  const bool decimal_comma = sep != ',';
+  // A row's cells, less the empty ones past `width` (exports often end a line with a separator).
+  const auto cells_of = [&](const std::string& line, std::size_t width) {
+    std::vector<std::string> cells = split(line, sep);
+    while (cells.size() > std::max<std::size_t>(width, 1) && cells.back().empty()) cells.pop_back();
+    return cells;
+  };
+  const std::vector<std::string> names = cells_of(lines[h].second, 0);
+  const std::size_t width = names.size();
+  struct Found {
+    std::size_t at;
+    HeaderCell cell;
+    std::size_t unit_line;
+  };
+  std::map<Column, Found> found;
+  for (std::size_t c = 0; c < width; ++c) {
+    if (names[c].empty()) {
+      fail(origin, header_no, "column " + std::to_string(c + 1) + " of the header is empty (a stray separator?); "
+                              "name every column, e.g. 'temperature [C]'");
+    }
+    const HeaderCell cell = header_cell(names[c]);
+    if (cell.spec == nullptr) continue;  // a column the fit does not use (e.g. strain amplitude)
+    if (found.count(cell.spec->column)) fail(origin, header_no, "two columns are '" + std::string(cell.spec->names[0]) + "'");
+    found[cell.spec->column] = {c, cell, header_no};
+  }
+  // A units row under the header ("C, Hz, MPa, MPa": some instruments write the units
+  // there), where a column the fit uses has none in the header and the row holds no number.
+  std::size_t first = h + 1;
+  const auto needs_unit = [](const Found& f) { return !f.cell.has_unit && f.cell.spec->column != Column::tan_delta; };
+  if (first < lines.size() && std::any_of(found.begin(), found.end(), [&](const auto& f) { return needs_unit(f.second); })) {
+    const std::vector<std::string> units = cells_of(lines[first].second, width);
+    const bool numbers = std::any_of(found.begin(), found.end(), [&](const auto& f) {
+      return f.second.at < units.size() && cell_number(units[f.second.at], decimal_comma).has_value();
+    });
+    if (!numbers && units.size() == width) {
+      for (auto& [column, f] : found) {
+        if (f.cell.has_unit || units[f.at].empty()) continue;
+        f.cell.unit = units[f.at];
+        f.cell.has_unit = true;
+        f.unit_line = lines[first].first;
+      }
+      ++first;
+    }
+  }
   std::map<Column, std::pair<std::size_t, ToSi>> columns;
-  std::size_t width = 0;
-  char sep = ',';
-  bool header = false;
+  std::vector<std::pair<Column, Found>> in_file_order(found.begin(), found.end());
+  std::sort(in_file_order.begin(), in_file_order.end(), [](const auto& a, const auto& b) { return a.second.at < b.second.at; });
+  for (const auto& [column, f] : in_file_order) {
+    if (needs_unit(f)) {
+      fail(origin, header_no, "column '" + names[f.at] + "' names no unit; write it as '" + std::string(f.cell.spec->names[0]) +
+                                  " [unit]' (or a units row under the header) with the unit one of " + std::string(f.cell.spec->units));
+    }
+    const std::optional<ToSi> si = unit_of(column, f.cell.unit);
+    if (!si) {
+      fail(origin, f.unit_line, "column '" + names[f.at] + "': '" + f.cell.unit + "' is not a unit it takes (valid: " +
+                                    std::string(f.cell.spec->units) + ")");
+    }
+    columns[column] = {f.at, *si};
+  }
+  const bool dma = columns.count(Column::frequency) > 0;
+  const bool relaxation = columns.count(Column::time) > 0;
+  if (dma == relaxation) {
+    fail(origin, header_no, "the header names " + std::string(dma ? "both frequency and time" : "neither frequency nor time") +
+                                ": a DMA file has 'frequency [Hz]', 'storage [MPa]' and 'loss [MPa]' (or "
+                                "'tan_delta'), a relaxation test 'time [s]' and 'modulus [MPa]'");
+  }
+  if (dma && (!columns.count(Column::storage) || !(columns.count(Column::loss) || columns.count(Column::tan_delta)))) {
+    fail(origin, header_no, "a DMA file needs 'storage [unit]' and 'loss [unit]' (or 'tan_delta') columns");
+  }
+  if (relaxation && !columns.count(Column::modulus)) fail(origin, header_no, "a relaxation test needs a 'modulus [unit]' column");
+  if (!columns.count(Column::temperature) && std::isnan(temperature)) {
+    fail(origin, header_no, "no 'temperature [C]' column: give the file's temperature as " + origin + "@23C");
+  }
+  if (columns.count(Column::temperature) && !std::isnan(temperature)) {
+    fail(origin, header_no, "the file has a 'temperature' column and a temperature was given after '@': give one "
+                            "or the other");
+  }
+
   std::size_t readings = 0;
-  while (start <= text.size()) {
-    auto end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = text.substr(start, end - start);
-    start = end + 1;
-    ++line_no;
-    const std::string t(model::trim(line, " \t\r"));  // (a quote at either end belongs to a cell)
-    if (t.empty() || t[0] == '#') {
-      if (end == text.size()) break;
-      continue;
-    }
-    if (!header) {
-      sep = t.find(';') != std::string::npos ? ';' : t.find('\t') != std::string::npos ? '\t' : ',';
-      const std::vector<std::string> cells = split(t, sep);
-      width = cells.size();
-      for (std::size_t c = 0; c < cells.size(); ++c) {
-        if (cells[c].empty()) {
-          fail(origin, line_no, "column " + std::to_string(c + 1) + " of the header is empty (a stray separator?); "
-                                "name every column, e.g. 'temperature [C]'");
-        }
-        const auto open = cells[c].find('[');
-        const auto close = cells[c].rfind(']');
-        const std::string name = normalized(cells[c].substr(0, open));
-        const std::string unit =
-            open == std::string::npos || close == std::string::npos || close < open ? "" : trim(cells[c].substr(open + 1, close - open - 1));
-        const ColumnSpec* spec = nullptr;
-        for (const ColumnSpec& s : column_specs()) {
-          if (std::find(s.names.begin(), s.names.end(), name) != s.names.end()) spec = &s;
-        }
-        if (spec == nullptr) continue;  // a column the fit does not use (e.g. strain amplitude)
-        if (columns.count(spec->column)) fail(origin, line_no, "two columns are '" + std::string(spec->names[0]) + "'");
-        if (open == std::string::npos && spec->column != Column::tan_delta) {
-          fail(origin, line_no, "column '" + cells[c] + "' names no unit; write it as '" + std::string(spec->names[0]) +
-                                    " [unit]' with the unit one of " + std::string(spec->units));
-        }
-        const std::optional<ToSi> si = unit_of(spec->column, unit);
-        if (!si) {
-          fail(origin, line_no, "column '" + cells[c] + "': '" + unit + "' is not a unit it takes (valid: " +
-                                    std::string(spec->units) + ")");
-        }
-        columns[spec->column] = {c, *si};
-      }
-      header = true;
-      const bool dma = columns.count(Column::frequency) > 0;
-      const bool relaxation = columns.count(Column::time) > 0;
-      if (dma == relaxation) {
-        fail(origin, line_no, "the header names " + std::string(dma ? "both frequency and time" : "neither frequency nor time") +
-                                  ": a DMA file has 'frequency [Hz]', 'storage [MPa]' and 'loss [MPa]' (or "
-                                  "'tan_delta'), a relaxation test 'time [s]' and 'modulus [MPa]'");
-      }
-      if (dma && (!columns.count(Column::storage) || !(columns.count(Column::loss) || columns.count(Column::tan_delta)))) {
-        fail(origin, line_no, "a DMA file needs 'storage [unit]' and 'loss [unit]' (or 'tan_delta') columns");
-      }
-      if (relaxation && !columns.count(Column::modulus)) fail(origin, line_no, "a relaxation test needs a 'modulus [unit]' column");
-      if (!columns.count(Column::temperature) && std::isnan(temperature)) {
-        fail(origin, line_no, "no 'temperature [C]' column: give the file's temperature as " + origin + "@23C");
-      }
-      if (columns.count(Column::temperature) && !std::isnan(temperature)) {
-        fail(origin, line_no, "the file has a 'temperature' column and a temperature was given after '@': give one "
-                              "or the other");
-      }
-      if (end == text.size()) break;
-      continue;
-    }
-    const std::vector<std::string> cells = split(t, sep);
+  for (std::size_t k = first; k < lines.size(); ++k) {
+    const std::size_t line_no = lines[k].first;
+    const std::vector<std::string> cells = cells_of(lines[k].second, width);
     if (cells.size() != width) {
       fail(origin, line_no, std::to_string(cells.size()) + " values where the header has " + std::to_string(width) + " columns");
     }
     std::map<Column, double> v;
     for (const auto& [column, where] : columns) {
       const std::string& written = cells[where.first];
-      const std::string cell = !written.empty() && written[0] == '+' ? written.substr(1) : written;  // "+1" is 1
-      double x = 0.0;
-      const auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
-      if (ec != std::errc() || ptr != cell.data() + cell.size() || !std::isfinite(x)) {
-        fail(origin, line_no, "column " + std::to_string(where.first + 1) + ": '" + written + "' is not a number");
-      }
-      v[column] = x * where.second.factor + where.second.offset;
+      const std::optional<double> x = cell_number(written, decimal_comma);
+      if (!x) fail(origin, line_no, "column " + std::to_string(where.first + 1) + ": '" + written + "' is not a number");
+      v[column] = *x * where.second.factor + where.second.offset;
       if (column != Column::temperature && !(v[column] > 0.0)) {
-        fail(origin, line_no, "column " + std::to_string(where.first + 1) + ": '" + cell + "' is not > 0");
+        fail(origin, line_no, "column " + std::to_string(where.first + 1) + ": '" + written + "' is not > 0");
       }
     }
     const double th = columns.count(Column::temperature) ? v[Column::temperature] : temperature;
@@ -236,9 +323,7 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
       into->relaxation.push_back({th, v[Column::time], v[Column::modulus]});
     }
     ++readings;
-    if (end == text.size()) break;
   }
-  if (!header) throw UsageError(origin + ": no header row (e.g. 'temperature [C],frequency [Hz],storage [MPa],loss [MPa]')");
   if (readings == 0) throw UsageError(origin + ": a header but no readings");
 }
 

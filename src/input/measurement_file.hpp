@@ -1,15 +1,17 @@
 #pragma once
 /// @file
 /// Measurements as instruments export them (docs/fitting.md, "Data files"): CSV text with a
-/// header row naming each column and its unit in brackets,
+/// header row naming each column and its unit in brackets or parentheses (or in a units row
+/// under it),
 ///   temperature [C],frequency [Hz],storage [MPa],loss [MPa]
-/// one row per reading, isotherms in any order. Columns, by name (any case):
+/// one row per reading, isotherms in any order, after any preamble (the header is the first
+/// line naming frequency or time). Columns, by name (any case):
 ///   temperature  C, degC or K (or absent: the file's temperature given as FILE@40C)
 ///   frequency    Hz or rad/s
 ///   storage      E', in Pa, kPa, MPa or GPa; with `loss` (same units) or `tan_delta` [-]
 ///   time         s, min or h; with `modulus` (Pa..GPa): a relaxation test E(t)
-/// Commas, semicolons or tabs separate; `#` starts a comment line. Readings come out in SI
-/// (degC, rad/s, s, Pa).
+/// Commas, semicolons or tabs separate (with semicolons or tabs a decimal comma is a
+/// point); `#` starts a comment line. Readings come out in SI (degC, rad/s, s, Pa).
 
 #include <string>
 #include <string_view>

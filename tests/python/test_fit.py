@@ -468,6 +468,107 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
     assert written >= 6 and judged >= 10, (written, judged)
 
 
+
+def test_files_as_instruments_and_spreadsheets_write_them(fitted, tmp_path):
+    """Issue 35's low items: CR-only line ends, a quoted cell holding the separator, '+1',
+    and a file name holding '@' are read as they mean; an empty header column, a
+    temperature given twice (a column and '@'), a tan_delta that contradicts loss/storage,
+    and a law given twice are refused naming the line or option; Poisson's ratio with
+    blanks around it, or subnormal, is a number. (Lost in 5c08a2e, restored.) Issue 37: a
+    separator at the end of every line, as exports write it, is no column."""
+    tmp, _ = fitted
+    lines = (tmp / "data.csv").read_text().splitlines()
+    base = ["--reference-temperature", "23", "--poisson", "0.5"]
+
+    def fit(path, *more, out="m.ini"):
+        return cli("fit", "--dma", path, *base, *more, "-o", tmp_path / out)
+
+    reference = fit(tmp / "data.csv", out="ref.ini")
+    assert reference.returncode == 0
+    want = (tmp_path / "ref.ini").read_text().split("law = prony")[1]  # the name differs: the file's
+
+    def same_material(name):
+        return (tmp_path / name).read_text().split("law = prony")[1] == want
+
+    (tmp_path / "cr.csv").write_bytes("\r".join(lines).encode() + b"\r")
+    assert fit(tmp_path / "cr.csv", out="cr.ini").returncode == 0 and same_material("cr.ini")
+    quoted = [lines[0].replace("temperature [C]", '"temperature [C], as logged"')] + [
+        "+" + line for line in lines[1:]]
+    (tmp_path / "quoted.csv").write_text("\n".join(quoted) + "\n")
+    r = fit(tmp_path / "quoted.csv", out="quoted.ini")
+    assert r.returncode == 0 and same_material("quoted.ini"), r.stderr
+    at = tmp_path / "sample@lab.csv"
+    at.write_text((tmp / "data.csv").read_text())
+    assert fit(at, out="at.ini").returncode == 0 and same_material("at.ini")
+    (tmp_path / "trailing.csv").write_text(lines[0] + ",\n" + "\n".join(line + "," for line in lines[1:]) + "\n")
+    r = fit(tmp_path / "trailing.csv", out="trailing.ini")
+    assert r.returncode == 0 and same_material("trailing.ini"), r.stderr
+    middle = [lines[0].replace(",frequency", ",,frequency")] + [line.replace(",", ",,", 1) for line in lines[1:]]
+    for text, message in (
+            ("\n".join(middle), "line 1: column 2 of the header is empty"),
+            (lines[0] + ",tan_delta\n" + "\n".join(line + ",0.5" for line in lines[1:]), "contradict each other"),
+    ):
+        (tmp_path / "bad.csv").write_text(text + "\n")
+        r = fit(tmp_path / "bad.csv")
+        assert r.returncode == 2 and message in r.stderr, r.stderr
+    r = fit(f"{tmp / 'data.csv'}@50C")
+    assert r.returncode == 2 and "a temperature was given after '@'" in r.stderr, r.stderr
+    r = fit(tmp / "data.csv", "--C1", "9", "--C2", "120", "--E-a", "1e5")
+    assert r.returncode == 2 and "not both" in r.stderr, r.stderr
+    for poisson in ("0.3 ", "1e-320"):
+        r = cli("fit", "--dma", tmp / "data.csv", "--reference-temperature", "23", "--poisson", poisson,
+                "-o", tmp_path / "p.ini")
+        assert r.returncode == 0, (poisson, r.stderr)
+    assert not (tmp_path / "m.ini").exists()
+
+
+EXPORTS = REPO / "examples" / "dma_exports"
+
+
+@pytest.mark.parametrize("export", ["trios_lims.txt", "semicolon_decimal_comma.csv", "parentheses_crlf.csv"])
+def test_instrument_exports_give_the_material_of_the_documented_form(export, tmp_path):
+    """Issue 37 item 2: the shipped exports (examples/dma_exports/make_exports.py: a preamble
+    before the header, units in parentheses or in a row of their own, the degree sign,
+    'Storage Modulus', "E'", 'tan(delta)' and 'tan δ', semicolons with decimal commas, CR
+    LF, trailing separators) hold the same readings, digit for digit, as documented.csv:
+    each gives the same material, to the last digit."""
+    base = ["--reference-temperature", "23", "--poisson", "0.5"]
+    r = cli("fit", "--dma", EXPORTS / "documented.csv", *base, "-o", tmp_path / "documented.ini")
+    assert r.returncode == 0, r.stderr
+    r = cli("fit", "--dma", EXPORTS / export, *base, "-o", tmp_path / "export.ini")
+    assert r.returncode == 0, r.stderr
+    want = (tmp_path / "documented.ini").read_text().split("law = prony")[1]
+    assert (tmp_path / "export.ini").read_text().split("law = prony")[1] == want
+    assert r.stdout.startswith("punchsweep fit: 70 DMA readings at 7 temperature(s)"), r.stdout
+
+
+def test_the_exports_are_what_their_generator_writes(tmp_path):
+    """The shipped files are the generator's output (so the test above tests what the
+    generator says they are)."""
+    import shutil
+    copy = tmp_path / "dma_exports"
+    shutil.copytree(EXPORTS, copy)
+    subprocess.run(["/usr/bin/python3", copy / "make_exports.py"], check=True)
+    for name in ("documented.csv", "trios_lims.txt", "semicolon_decimal_comma.csv", "parentheses_crlf.csv"):
+        assert (copy / name).read_bytes() == (EXPORTS / name).read_bytes(), name
+
+
+def test_an_export_with_a_bad_unit_row_or_no_unit_is_refused_naming_the_line(tmp_path):
+    """A units row is read only where it holds no number; a unit it gives that the column
+    does not take is refused naming the units row's line; a column with no unit anywhere is
+    refused naming the header's."""
+    text = (EXPORTS / "trios_lims.txt").read_text()
+    (tmp_path / "psi.txt").write_text(text.replace("Hz\tMPa\tMPa", "Hz\tpsi\tMPa"))
+    r = cli("fit", "--dma", tmp_path / "psi.txt", "--reference-temperature", "23", "--poisson", "0.5",
+            "-o", tmp_path / "m.ini")
+    assert r.returncode == 2 and "line 13: column 'Storage modulus': 'psi' is not a unit it takes" in r.stderr, r.stderr
+    lines = text.splitlines()
+    (tmp_path / "nounits.txt").write_text("\n".join(lines[:12] + lines[13:]) + "\n")
+    r = cli("fit", "--dma", tmp_path / "nounits.txt", "--reference-temperature", "23", "--poisson", "0.5",
+            "-o", tmp_path / "m.ini")
+    assert r.returncode == 2 and "line 12: column 'Frequency' names no unit" in r.stderr, r.stderr
+    assert not (tmp_path / "m.ini").exists()
+
 # Published: the shift factors shipped with the data (pyvisco,
 # verification/freq_raw/freq_Eplexor_raw__shift_factors.csv, T_ref = -5 C), and pyvisco 1.0.4's
 # own get_aT on the same readings (run for this test's reference values; its WLF C1 = 98.09,
