@@ -75,7 +75,7 @@ po::options_description fit_options() {
        "write the material even where the fit fails its checks (shifts that rise with\n"
        "temperature, WLF's C2 on its bound, shifts 0.5 decades about the law, E' beyond\n"
        "10% or E'' beyond 20% RMS); the verdict is recorded in the file")
-      ("name", po::value<std::string>()->value_name("TEXT"), "the material's name: one line without # or ; (default: the files' names)")
+      ("name", po::value<std::string>()->value_name("TEXT"), "the material's name: one line without # or ; (default: the files' sample names, else their names)")
       ("output", po::value<std::string>()->value_name("FILE"), "the material file to write (-o)");
   return opts;
 }
@@ -347,6 +347,7 @@ FitRun run_fit(const po::variables_map& vm) {
   }
   run.poisson = input::read_real(vm, "poisson", "Poisson's ratio", "-1 < NU <= 0.5", [](double v) { return v > -1.0 && v <= 0.5; });
   const fit::Measurements m = input::read_measurement_files(run.sources);
+  run.samples = m.samples;
   const bool dma = vm.count("dma") > 0;
   if (dma ? m.dma.empty() : m.relaxation.empty()) {
     throw input::UsageError(std::string("the files given to --") + (dma ? "dma hold a relaxation test (give them to --relaxation)"
@@ -426,8 +427,12 @@ FitRun run_fit(const po::variables_map& vm) {
   run.modulus_unit = std::string(modulus_unit_for(E0).name);
   std::string name = vm.count("name") ? std::string(model::trim(vm["name"].as<std::string>())) : "";
   if (name.empty()) {
+    // Each file's sample name where its preamble gives one, else the file's name.
     name = "fitted to";
-    for (const std::string& s : run.sources) name += " " + std::filesystem::path(s).filename().string();
+    for (std::size_t k = 0; k < run.sources.size(); ++k) {
+      const std::string sample = k < run.samples.size() ? run.samples[k] : "";
+      name += " " + (sample.empty() ? std::filesystem::path(run.sources[k]).filename().string() : sample);
+    }
     for (char& c : name) {
       if (c == '#' || c == ';') c = '_';
     }

@@ -15,6 +15,7 @@ namespace punchsweep::app {
 struct FitRun {
   fit::MaterialFit fit;
   std::vector<std::string> sources;  ///< the measurement files as given
+  std::vector<std::string> samples;  ///< each file's sample name from its preamble, or ""
   double poisson = 0.5;
   double window_lo = 0.0, window_hi = 0.0;  ///< the time window, s at T_ref
   std::string modulus_unit;          ///< of the file's E_inf, E_i

@@ -31,6 +31,8 @@ struct RelaxationReading {
 struct Measurements {
   std::vector<DmaReading> dma;
   std::vector<RelaxationReading> relaxation;
+  /// Per file read, the sample's name its preamble gives ("Sample name<TAB>TPE-A"), or "".
+  std::vector<std::string> samples;
 };
 
 struct MaterialFitRequest {

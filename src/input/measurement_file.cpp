@@ -210,6 +210,15 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
   std::size_t h = 0;
   while (h < lines.size() && !names_the_abscissa(lines[h].second)) ++h;
   if (h == lines.size()) h = 0;
+  // The sample's name, where the preamble gives it: "Sample name<sep>TPE-A", "Sample:;TPE-A".
+  std::string sample;
+  for (std::size_t k = 0; k < h && sample.empty(); ++k) {
+    const std::vector<std::string> cells = split(lines[k].second, separator_of(lines[k].second));
+    std::string key = normalized(cells[0]);
+    if (!key.empty() && key.back() == ':') key.pop_back();
+    if ((key == "sample" || key == "samplename") && cells.size() > 1) sample = cells[1];
+  }
+  into->samples.push_back(sample);
   const std::size_t header_no = lines[h].first;
   const char sep = separator_of(lines[h].second);
   const bool decimal_comma = sep != ',';

@@ -540,6 +540,9 @@ def test_instrument_exports_give_the_material_of_the_documented_form(export, tmp
     want = (tmp_path / "documented.ini").read_text().split("law = prony")[1]
     assert (tmp_path / "export.ini").read_text().split("law = prony")[1] == want
     assert r.stdout.startswith("punchsweep fit: 70 DMA readings at 7 temperature(s)"), r.stdout
+    # Issue 37 item 8: the material is named after the sample the preamble names.
+    assert "\nname = fitted to TPE-A\n" in (tmp_path / "export.ini").read_text()
+    assert "\nname = fitted to documented.csv\n" in (tmp_path / "documented.ini").read_text()
 
 
 def test_the_exports_are_what_their_generator_writes(tmp_path):
