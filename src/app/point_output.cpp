@@ -88,6 +88,11 @@ void write_json(std::ostream& out, const input::PointInputs& inputs, const model
   if (const std::vector<PhysicalField> physical = physical_fields(inputs, r); !physical.empty()) {
     write_physical(out, physical);
   }
+  if (!inputs.notes.empty()) {
+    out << ",\n  \"notes\": [";
+    for (std::size_t k = 0; k < inputs.notes.size(); ++k) out << (k ? ", " : "") << input::json_string(inputs.notes[k]);
+    out << "]";
+  }
   out << "\n}\n";
 }
 
@@ -268,6 +273,7 @@ void write_table(std::ostream& out, const input::PointInputs& inputs, const mode
     out << "  t* over the tolerances: " << text(r.t_star_range->low) << " to " << text(r.t_star_range->high) << " "
         << inputs.time_unit << "\n";
   }
+  for (const std::string& note : inputs.notes) out << "  note: " << note << "\n";
   // The series' columns: each head with its unit, 12 wide (15 for a long head).
   struct Column {
     const QuantitySpec* q;

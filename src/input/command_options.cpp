@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -498,7 +499,7 @@ void add_tolerance_option(po::options_description& opts) {
       "percentage of the input, a number in its scale, or a number with a unit");
 }
 
-std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, const PointInputs& inputs) {
+std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, PointInputs& inputs) {
   std::vector<model::Tolerance> out;
   if (!vm.count("tolerance")) return out;
   const std::string all = vm["tolerance"].as<std::string>();
@@ -556,7 +557,14 @@ std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, const
       throw bad(entry, e.what());
     }
     if (!(std::isfinite(tol) && tol >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
-    out.push_back({parameter, tol, tol});
+    // Below a range that starts at 0 (dh >= 0): the box's low side at 0, and said so.
+    double minus = tol;
+    if (value - tol < 0.0 && parameter->admits(0.0) && !parameter->admits(-std::numeric_limits<double>::denorm_min())) {
+      minus = value;
+      inputs.notes.push_back("--tolerance " + entry + ": " + name + " minus " + text + " is below 0; the box's low " +
+                             name + " is taken at 0");
+    }
+    out.push_back({parameter, minus, tol});
   }
   return out;
 }

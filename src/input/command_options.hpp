@@ -131,6 +131,9 @@ struct PointInputs {
   std::string time_unit = "T_eps";                   ///< of every time in and out
   std::string load_text;                             ///< --load-table as given, or empty
   PhysicalScales scales;                             ///< what physical units the inputs could carry
+  /// What the reading changed and says so, in the user's words (a tolerance box clipped at
+  /// dh = 0): printed with the result ("note:"; JSON "notes").
+  std::vector<std::string> notes;
 
   /// "l = 0.75 R, dh = 0.075 R, T = 2.5, pbar = 0.06 E0/(1-nu^2), s = 2, C = 0.5": every
   /// parameter in add_point_options' order, with its unit.
@@ -175,7 +178,9 @@ std::vector<double> read_real_list(const boost::program_options::variables_map& 
 /// is known (0.05um, 200Pa; a temperature in K or degC, a difference). Empty without the
 /// option. Throws UsageError naming the entry and what is valid.
 void add_tolerance_option(boost::program_options::options_description& opts);
-std::vector<model::Tolerance> read_tolerances(const boost::program_options::variables_map& vm, const PointInputs& inputs);
+/// A box that reaches below 0 on a parameter whose range starts at 0 (dh: the two levels at
+/// one height) is clipped there, with a note in `inputs.notes`.
+std::vector<model::Tolerance> read_tolerances(const boost::program_options::variables_map& vm, PointInputs& inputs);
 
 /// --cap-radius B or --cap-height H: the base radius of the spherical caps the punches are
 /// (a length in R, or with a unit where R is given; from the height, B = sqrt(H (2 - H)) in

@@ -167,3 +167,23 @@ def test_bad_tolerances_are_refused(tolerance, message):
                         "--pressure", "2kPa", "--s", "2", "--tolerance", tolerance], capture_output=True, text=True)
     assert r.returncode == 2 and message in r.stderr, r.stderr
     assert "--tolerance" in r.stderr and r.stdout == ""
+
+
+def test_a_tolerance_below_dh_0_is_clipped_there_and_said_so_in_the_users_units():
+    """Issue 37 item 8: dh = 1 um with a tolerance of 2 um reached dh = -1 um and was refused
+    with the bound in R. The box's low side is now taken at dh = 0 (the two levels at one
+    height: level 2 touches at once, t* = 0) and a note says so in the user's words; the high
+    side is the point's own t* at dh = 3 um (delayed there, at 5 kPa)."""
+    base = [BINARY, "point", "--material", SILICONE, "--R", "50um", "--l", "150um", "--pressure", "5kPa", "--s", "2",
+            "--format", "json"]
+    r = subprocess.run(base + ["--dh", "1um", "--tolerance", "dh=2um"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    d = json.loads(r.stdout)
+    assert d["notes"] == ["--tolerance dh=2um: dh minus 2um is below 0; the box's low dh is taken at 0"]
+    high = json.loads(subprocess.run(base + ["--dh", "3um"], capture_output=True, text=True, check=True).stdout)
+    assert high["regime"] == "delayed" and high["t_star"] > 0
+    assert d["t_star_low"] == 0.0
+    assert d["t_star_high"] == pytest.approx(high["t_star"], rel=1e-9)
+    plain = json.loads(subprocess.run(base + ["--dh", "1um", "--tolerance", "dh=0.5um"], capture_output=True,
+                                      text=True, check=True).stdout)
+    assert "notes" not in plain  # within the range: no note, the output as before
