@@ -36,9 +36,7 @@ prepare_run "$config" "$run" "$binary" || exit 2
   echo "config: $config (copied to config.ini, its material files to materials/)"
 } >> "$run/provenance.txt"
 
-# Root may launch MPI jobs only when it says so (containers, CI machines).
-if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
-export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
+rank_environment
 mpirun -np "$cores" "$binary" sweep --config "$run/config.ini" --output "$run/map.h5" --resume
 
 echo "punchsweep: map $run/map.h5"

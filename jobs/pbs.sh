@@ -38,13 +38,11 @@ run=${PUNCHSWEEP_RUN:-$root/runs/$(basename "$config" .ini)-${job%%.*}}
 binary=${PUNCHSWEEP:-$root/build/src/app/punchsweep}
 extra=(${PUNCHSWEEP_EXTRA_ARGS:-})
 ranks=$( [ -n "${PBS_NODEFILE:-}" ] && wc -l < "$PBS_NODEFILE" || getconf _NPROCESSORS_ONLN )
-export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
-if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+rank_environment
 
 mkdir -p "$run"
 run=$(realpath "$run")
-echo "punchsweep: run folder $run, log $run/job.log"
-exec >> "$run/job.log" 2>&1
+log_to_run "$run"
 # The config and its material files, copied on the first start; a rerun resumes from the copy.
 [ -f "$run/config.ini" ] || prepare_run "$config" "$run" "$binary" || exit 2
 echo "start $(date -u +%Y-%m-%dT%H:%M:%SZ) job ${PBS_JOBID:-none} host $(hostname) ranks $ranks $("$binary" --version)" >> "$run/provenance.txt"
@@ -57,9 +55,7 @@ step=$!
 # mpirun passes USR1 to every rank and lets the sweep's exit code 3 through; on TERM it
 # would end with 1 (after the ranks drained), and the job would not be rerun.
 trap 'kill -USR1 "$step" 2>/dev/null || true' TERM USR1
-status=0
-wait "$step" || status=$?
-while kill -0 "$step" 2>/dev/null; do wait "$step" || status=$?; done
+wait_step "$step"
 trap - TERM USR1
 echo "end $(date -u +%Y-%m-%dT%H:%M:%SZ) status $status" >> "$run/provenance.txt"
 

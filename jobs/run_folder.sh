@@ -1,4 +1,5 @@
-# The run folder's steps that every job script shares (local.sh, slurm.sbatch, pbs.sh).
+# The run folder's steps that every job script shares (local.sh, slurm.sbatch, pbs.sh), and
+# the ranks' environment.
 # Sourced, with $root (the checkout) set; /usr/bin/python3 with numpy, h5py and matplotlib
 # draws the pictures (PUNCHSWEEP_PYTHON names another).
 python=${PUNCHSWEEP_PYTHON:-/usr/bin/python3}
@@ -41,4 +42,26 @@ finish_run() {
   "$python" "$root/postprocess/run_pictures.py" "$run/map.h5" "$run" > /dev/null
   echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
   echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; explorer $run/explore.html; summary $run/summary.txt"
+}
+
+# rank_environment: single-threaded ranks (one per core), and root allowed to launch MPI
+# jobs where it says so (containers, CI machines).
+rank_environment() {
+  export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
+  if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+}
+
+# log_to_run RUN: the script's output from here on to RUN/job.log; the line before says so
+# (a batch system's own log file then holds only that line).
+log_to_run() {
+  echo "punchsweep: run folder $1, log $1/job.log"
+  exec >> "$1/job.log" 2>&1
+}
+
+# wait_step PID: waits for the sweep's launcher PID, again after each signal the script
+# traps while it runs; its exit status in $status.
+wait_step() {
+  status=0
+  wait "$1" || status=$?
+  while kill -0 "$1" 2> /dev/null; do wait "$1" || status=$?; done
 }

@@ -230,12 +230,13 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
   };
   const std::vector<std::string> names = cells_of(lines[h].second, 0);
   const std::size_t width = names.size();
+  // The columns the fit uses, in the file's order.
   struct Found {
     std::size_t at;
     HeaderCell cell;
     std::size_t unit_line;
   };
-  std::map<Column, Found> found;
+  std::vector<Found> found;
   for (std::size_t c = 0; c < width; ++c) {
     if (names[c].empty()) {
       fail(origin, header_no, "column " + std::to_string(c + 1) + " of the header is empty (a stray separator?); "
@@ -243,20 +244,22 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
     }
     const HeaderCell cell = header_cell(names[c]);
     if (cell.spec == nullptr) continue;  // a column the fit does not use (e.g. strain amplitude)
-    if (found.count(cell.spec->column)) fail(origin, header_no, "two columns are '" + std::string(cell.spec->names[0]) + "'");
-    found[cell.spec->column] = {c, cell, header_no};
+    if (std::any_of(found.begin(), found.end(), [&](const Found& f) { return f.cell.spec == cell.spec; })) {
+      fail(origin, header_no, "two columns are '" + std::string(cell.spec->names[0]) + "'");
+    }
+    found.push_back({c, cell, header_no});
   }
   // A units row under the header ("C, Hz, MPa, MPa": some instruments write the units
   // there), where a column the fit uses has none in the header and the row holds no number.
   std::size_t first = h + 1;
   const auto needs_unit = [](const Found& f) { return !f.cell.has_unit && f.cell.spec->column != Column::tan_delta; };
-  if (first < lines.size() && std::any_of(found.begin(), found.end(), [&](const auto& f) { return needs_unit(f.second); })) {
+  if (first < lines.size() && std::any_of(found.begin(), found.end(), needs_unit)) {
     const std::vector<std::string> units = cells_of(lines[first].second, width);
-    const bool numbers = std::any_of(found.begin(), found.end(), [&](const auto& f) {
-      return f.second.at < units.size() && cell_number(units[f.second.at], decimal_comma).has_value();
+    const bool numbers = std::any_of(found.begin(), found.end(), [&](const Found& f) {
+      return f.at < units.size() && cell_number(units[f.at], decimal_comma).has_value();
     });
     if (!numbers && units.size() == width) {
-      for (auto& [column, f] : found) {
+      for (Found& f : found) {
         if (f.cell.has_unit || units[f.at].empty()) continue;
         f.cell.unit = units[f.at];
         f.cell.has_unit = true;
@@ -266,9 +269,8 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
     }
   }
   std::map<Column, std::pair<std::size_t, ToSi>> columns;
-  std::vector<std::pair<Column, Found>> in_file_order(found.begin(), found.end());
-  std::sort(in_file_order.begin(), in_file_order.end(), [](const auto& a, const auto& b) { return a.second.at < b.second.at; });
-  for (const auto& [column, f] : in_file_order) {
+  for (const Found& f : found) {
+    const Column column = f.cell.spec->column;
     if (needs_unit(f)) {
       fail(origin, header_no, "column '" + names[f.at] + "' names no unit; write it as '" + std::string(f.cell.spec->names[0]) +
                                   " [unit]' (or a units row under the header) with the unit one of " + std::string(f.cell.spec->units));

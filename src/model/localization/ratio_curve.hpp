@@ -52,10 +52,11 @@ class RatioCurve {
   std::vector<double> a1_, h_;
   std::vector<double> h_nodes_;     ///< h at each sample
   std::vector<double> root_nodes_;  ///< (h / h_per_v)^(1/s) at each sample
-  /// The last sample with root_nodes_ <= b root_width_, for b = 0 .. count - 1: where
-  /// touchdown() starts its walk (a step or two; a binary search cost it a quarter of its time).
+  /// Buckets of equal width w = root_nodes_.back() / count over the roots: for b = 0 ..
+  /// count - 1 the last sample with root_nodes_ <= b w, where touchdown() starts its walk (a
+  /// step or two; a binary search cost it a quarter of its time).
   std::vector<int> root_start_;
-  double root_per_bucket_ = 1.0;  ///< 1 / root_width_
+  double root_per_bucket_ = 1.0;  ///< 1 / w (0 for a curve of zero roots)
   double a_per_v_ = 1.0, h_per_v_ = 1.0;
 
   /// The last sample k with root_nodes_[k] <= target (0 where none is).
