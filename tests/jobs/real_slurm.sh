@@ -102,8 +102,14 @@ restarts() { scontrol show job "$1" | sed -n 's/.*Restarts=\([0-9]*\).*/\1/p'; }
 is_state() { [ "$(state "$1")" = "$2" ]; }
 restarted() { [ "$(restarts "$1")" = "$2" ]; }
 ended() { case "$(state "$1")" in COMPLETED | FAILED | CANCELLED | TIMEOUT | NODE_FAIL) true ;; *) false ;; esac; }
-# A requeued job waits two minutes (Slurm's own delay) before it may start: start it now.
-release() { wait_until 30 "" "job $1 back in the queue" -- is_state "$1" PENDING; scontrol update JobId="$1" StartTime=now; }
+# A requeued job waits two minutes (Slurm's own delay) before it may start: start it now,
+# once the node is idle: its last run's end is done there (started sooner, slurmd refused
+# the new run with "Job credential revoked", the old run's credential being revoked after).
+release() {
+  wait_until 30 "" "job $1 back in the queue" -- is_state "$1" PENDING
+  wait_until 60 "" "the node to be idle after job $1's last run" -- node_idle
+  scontrol update JobId="$1" StartTime=now
+}
 progress() { grep -q "points/s, ETA" "$1/job.log" 2> /dev/null; }
 show() { echo "--- job $1:"; scontrol show job "$1" | head -8; cat "$2/job.log" "$2/provenance.txt" 2> /dev/null; }
 
