@@ -119,6 +119,17 @@ std::string name_problem(const std::string& name) {
   return {};
 }
 
+/// How a law fitted with the series came about, for the material file and the report.
+std::string joint_law_words(const fit::MasterCurve& m) {
+  if (m.polished) {
+    return "polished with the series from the law of the overlap shifts of E' (\"measured\", " +
+           model::number_text(m.rms_log10, 3) + " decades RMS about it)";
+  }
+  if (std::isnan(m.rms_log10)) return "fitted together with the series, the overlap of E' having placed no isotherm";
+  return "fitted together with the series, since the overlap shifts of E' failed the fit's checks (\"measured\", " +
+         model::number_text(m.rms_log10, 3) + " decades RMS about it)";
+}
+
 std::string material_text(const FitRun& run, const std::string& name) {
   const fit::MaterialFit& f = run.fit;
   const fit::PronyTerms& t = f.prony.terms;
@@ -136,9 +147,7 @@ std::string material_text(const FitRun& run, const std::string& name) {
   if (f.master.law) {
     s << "# Shift: " << f.master.law->describe();
     if (f.master.joint) {
-      s << ", fitted together with the series (the overlap shifts of E', which could not place every isotherm, "
-           "lie "
-        << model::number_text(f.master.rms_log10, 3) << " decades RMS about it)";
+      s << ", " << joint_law_words(f.master);
     } else if (!std::isnan(f.master.measured_log10_aT.front())) {
       s << ", RMS of the measured shifts about it " << model::number_text(f.master.rms_log10, 3) << " decades";
     }
@@ -213,7 +222,8 @@ std::string details_json(const FitRun& run) {
       << ", \"C2\": " << input::json_number(law.C2) << ", \"E_a\": " << input::json_number(law.E_a)
       << ", \"describe\": " << input::json_string(law.describe());
   }
-  s << ", \"rms_log10\": " << input::json_number(f.master.rms_log10) << ", \"joint\": " << (f.master.joint ? "true" : "false") << "},\n";
+  s << ", \"rms_log10\": " << input::json_number(f.master.rms_log10) << ", \"joint\": " << (f.master.joint ? "true" : "false")
+    << ", \"polished\": " << (f.master.polished ? "true" : "false") << "},\n";
   s << "  \"prony\": {\"E_inf\": " << input::json_number(f.prony.terms.E_inf) << ", \"E_i\": " << input::json_array(f.prony.terms.E)
     << ", \"tau_i\": " << input::json_array(f.prony.terms.tau) << ",\n    \"rms_relative\": {\""
     << (dma ? "storage" : "modulus") << "\": " << input::json_number(f.prony.rms_first);
@@ -243,9 +253,7 @@ std::string report(const FitRun& run) {
   if (f.master.law) {
     s << "shift: " << f.master.law->describe();
     if (f.master.joint) {
-      s << " (fitted together with the series, since the overlap shifts of E' failed the fit's checks; the "
-           "readings are shifted by the law, the overlap's shifts, \"measured\" below, lie "
-        << model::number_text(f.master.rms_log10, 3) << " decades RMS about it)";
+      s << " (" << joint_law_words(f.master) << "; the readings are shifted by the law)";
     } else if (!std::isnan(f.master.measured_log10_aT.front())) {
       s << " (fitted; RMS of the measured shifts about it " << model::number_text(f.master.rms_log10, 3) << " decades)";
     } else {

@@ -52,6 +52,11 @@ struct MasterCurve {
   /// place every isotherm), and the readings are shifted by it; measured_log10_aT keeps the
   /// overlap's shifts for the record.
   bool joint = false;
+  /// With `joint`: the overlap's shifts passed the fit's checks, and the law fitted to them
+  /// was only polished with the series (the readings weigh each isotherm's shift by what it
+  /// says; the law fitted to the shifts weighs them alike). Otherwise the overlap failed
+  /// and the law was searched for.
+  bool polished = false;
   /// log10 a_T each isotherm's readings are shifted by onto the master curve: the measured
   /// shift (the law's where it was given or fitted jointly), so the curve the series is
   /// fitted to is the data's own; the law carries it to other temperatures.

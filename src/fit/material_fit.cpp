@@ -127,9 +127,12 @@ std::vector<double> simplex_minimum(const std::function<double(const std::vector
 /// (peaked) and the series' continuity across the isotherms can. Simplex searches from the
 /// overlap's law and from a grid of starts (the overlap's law is wrong where cold isotherms
 /// sit on a plateau), with the `coarse` series' residual, then the best polished with the
-/// `fine` one's. Returns the law and the residual (rss) of its `fine` fit.
+/// `fine` one's. Where the overlap's law stands (`search` false) it is only polished: the
+/// law fitted to the measured shifts weighs every isotherm's shift alike, the readings
+/// themselves weigh it by what each isotherm says. Returns the law and the residual (rss)
+/// of its `fine` fit.
 std::pair<model::TemperatureShift, double> joint_law(const Readings& r, const std::vector<double>& temperatures,
-                                                     const model::TemperatureShift& start,
+                                                     const model::TemperatureShift& start, bool search,
                                                      const PronyOptions& coarse, const PronyOptions& fine) {
   const bool wlf = start.kind == model::TemperatureShift::Kind::wlf;
   const double floor_C2 = std::max(0.0, start.T_ref - temperatures.front()) + 0.1;  // every isotherm above T_ref - C2
@@ -165,13 +168,20 @@ std::pair<model::TemperatureShift, double> joint_law(const Readings& r, const st
   std::vector<std::vector<double>> starts;
   if (wlf) {
     starts.push_back({std::log(start.C1), std::log(std::max(start.C2 - floor_C2, 1e-3))});
+  } else {
+    starts.push_back({std::log(start.E_a)});
+  }
+  if (!search) {
+    const std::vector<double> p = simplex_minimum(polished, starts.front(), 0.05, 1e-7, 80);
+    return {law_of(p), polished(p)};
+  }
+  if (wlf) {
     for (const double c1 : {5.0, 9.0, 15.0, 25.0, 40.0}) {
       for (const double c2 : {30.0, 60.0, 100.0, 170.0, 300.0}) {
         if (c2 > floor_C2) starts.push_back({std::log(c1), std::log(c2 - floor_C2)});
       }
     }
   } else {
-    starts.push_back({std::log(start.E_a)});
     for (const double e : {30e3, 60e3, 100e3, 150e3, 220e3, 320e3, 500e3}) starts.push_back({std::log(e)});
   }
   // Two stages: the basins from every start with the cheap residual (a grid of times, not
@@ -294,7 +304,14 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
     if (!may_join) throw;
     overlap_failed = e.what();
   }
-  if (!may_join || (overlap_failed.empty() && fit_problems(out).empty())) return out;
+  const bool overlap_stands = overlap_failed.empty() && fit_problems(out).empty();
+  // Where the overlap stands, the law is polished with the series (the readings weigh each
+  // isotherm's shift by what it says, the law fitted to the shifts weighs them alike), but
+  // not where the series misses the readings by more than a law fitted with it may: one law
+  // meets them no better than the free shifts do.
+  const bool series_misses = out.rms_all_first > kJointRms ||
+                             (out.abscissa == Abscissa::frequency && out.rms_all_second > kJointRms);
+  if (!may_join || (overlap_stands && series_misses)) return out;
   Readings r;
   r.dma = out.abscissa == Abscissa::frequency;
   for (std::size_t k = 0; k < out.readings.size(); ++k) {
@@ -327,15 +344,16 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
   }
   start.T_min = std::min(temperatures.front(), request.shift.T_ref);
   start.T_max = std::max(temperatures.back(), request.shift.T_ref);
-  const auto [law, joint_rss] = joint_law(r, temperatures, start, coarse, options);
+  const auto [law, joint_rss] = joint_law(r, temperatures, start, !overlap_stands, coarse, options);
   if (overlap_failed.empty()) {
     std::vector<double> L;
     for (std::size_t i = 0; i < isotherms.size(); ++i) L.push_back(out.master.log10_aT(i));
-    if (!(joint_rss < fit_reduced(r, L, options).rss)) return out;
+    if (!overlap_stands && !(joint_rss < fit_reduced(r, L, options).rss)) return out;
   }
   MaterialFit joint = out;
   joint.master.temperatures = temperatures;
   joint.master.joint = true;
+  joint.master.polished = overlap_stands;
   joint.master.law = law;
   joint.master.law_log10_aT.clear();
   for (const double t : temperatures) joint.master.law_log10_aT.push_back(law.log10_factor(t));

@@ -111,17 +111,22 @@ def test_the_moduli_are_recovered_within_the_noise(fitted):
     err = np.concatenate([r["storage_fit"] / true_s - 1, r["loss_fit"] / true_l - 1])
     assert np.sqrt(np.mean(err**2)) < 2 * NOISE
     assert np.sqrt(np.mean((r["storage_fit"] / true_s - 1) ** 2)) < NOISE
-    # The terms themselves: as many, at their times within 10%, their moduli within 2%.
+    # The series: a Prony fit's terms are not unique under noise (a term at the data's edge
+    # may split in two), the relaxation modulus they sum to is: within 2% of the truth's over
+    # the times the readings cover (1/(2 pi 100 Hz a_T(0 C)) to 1/(2 pi 0.1 Hz a_T(80 C))).
     prony = d["prony"]
-    assert len(prony["tau_i"]) == len(TAU)
-    assert np.allclose(prony["tau_i"], TAU, rtol=0.1) and np.allclose(prony["E_i"], E_I, rtol=0.02)
+    t = np.logspace(np.log10(1 / (2 * np.pi * 100 * 10 ** log10_aT(0))),
+                    np.log10(1 / (2 * np.pi * 0.1 * 10 ** log10_aT(80))), 300)
+    E_t = prony["E_inf"] + (np.asarray(prony["E_i"]) * np.exp(-t[:, None] / np.asarray(prony["tau_i"]))).sum(1)
+    assert np.max(np.abs(E_t / (E_INF + (E_I * np.exp(-t[:, None] / TAU)).sum(1)) - 1)) < 0.02
     assert abs(prony["E_inf"] / E_INF - 1) < 0.02
-    # The shifts and the law.
+    # The law: polished with the series (every reading weighs in, not only the overlap of E',
+    # which says little where E' flattens near the glassy plateau): within 0.03 decades of
+    # the truth at every isotherm (the law of the overlap shifts alone missed by 0.039 at 0 C).
     shift = d["shift"]
-    # E' alone sets the shifts, and where it flattens (the coldest isotherms, near the glassy
-    # plateau) 1% noise moves them by a few hundredths of a decade.
-    assert np.max(np.abs(np.asarray(shift["law_log10_aT"]) - log10_aT(shift["temperatures"]))) < 0.05
-    assert abs(shift["C1"] - C1) < 0.1 * C1 and abs(shift["C2"] - C2) < 0.1 * C2
+    assert shift["joint"] and shift["polished"]
+    assert np.max(np.abs(np.asarray(shift["law_log10_aT"]) - log10_aT(shift["temperatures"]))) < 0.03
+    assert abs(shift["C1"] - C1) < 0.05 * C1 and abs(shift["C2"] - C2) < 0.05 * C2
 
 
 def test_a_design_points_t_star_is_recovered(fitted):
@@ -420,18 +425,33 @@ def design_t_star(material, dh_um: float, T: float):
     return d["regime"], d["t_star"], d["h_0"], d["h_inf"]
 
 
+def seen_by_the_data(truth: Path, lo: float, hi: float, dest: Path) -> Path:
+    """The truth as readings covering relaxation times lo..hi (at T_ref) can see it: its
+    terms slower than hi held in E_inf, those faster than lo dropped. Where this material's
+    t* differs from the truth's, no fit of those readings can know which is meant."""
+    text = truth.read_text()
+    E, tau = (np.array([float(v) for v in re.search(rf"^{key} = (.*)$", text, re.M)[1].split(",")])
+              for key in ("E_i", "tau_i"))
+    E_inf = float(re.search(r"^E_inf = (.*)$", text, re.M)[1]) + E[tau > hi].sum()
+    keep = (tau >= lo) & (tau <= hi)
+    text = re.sub(r"^E_inf = .*$", f"E_inf = {E_inf!r}", text, flags=re.M)
+    for key, values in (("E_i", E[keep]), ("tau_i", tau[keep])):
+        text = re.sub(rf"^{key} = .*$", f"{key} = " + ", ".join(repr(float(v)) for v in values), text, flags=re.M)
+    dest.write_text(text)
+    return dest
+
+
 def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp_path):
     """Issue 35 item 2 on twelve materials drawn at random (draw_material). Each fit is either
     refused with its reason (exit 2: no rubbery plateau within the data, isotherms that
     neither overlap nor fit one law with the series within 5%, a poor fit) or written. A
-    written one is held to the truth where its data can say anything: caps of 50 um on a
+    written one is held to the truth where its data determine the answer: caps of 50 um on a
     150 um pitch under 50 kPa, dh a quarter and half of the way from the truth's h(0) to
     h(inf), at -20, 23 and 50 C, wherever the truth's t* (reduced to 23 C) lies within the
-    times the isotherms cover; there the fit's t* is within 5% of the truth's, or, where more,
-    three times the data's noise or twice what the data themselves allow (the error of the
-    series fitted to the same readings with the true law given: t* sums the creep the data
-    carry, and at 3% noise that alone is 6%). Measured: docs/fitting.md."""
-    written, judged, errors = 0, 0, []
+    times the isotherms cover and the truth as the readings see it (seen_by_the_data) has
+    the same t* within 1%; there the fit's t* is within 5% of the truth's. Measured:
+    docs/fitting.md."""
+    written, judged, errors, unseen = 0, 0, [], []
     for seed in range(12):
         data, truth, law, log10_aT, noise = draw_material(seed, tmp_path)
         out = tmp_path / f"fit{seed}.ini"
@@ -440,15 +460,9 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
             assert r.returncode == 2 and r.stderr.startswith("punchsweep: ") and not out.exists(), (seed, r.stderr)
             continue
         written += 1
-        given = tmp_path / f"given{seed}.ini"
-        law_keys = dict(line.split(" = ") for line in truth.read_text().split("[shift]")[1].split("\n")
-                        if " = " in line)
-        law_args = (["--C1", law_keys["C1"], "--C2", law_keys["C2"]] if law == "wlf" else ["--E-a", law_keys["E_a"]])
-        # (Where even the true law leaves no series the engine takes, 5% is the bound.)
-        has_given = cli("fit", "--dma", data, "--reference-temperature", "23", "--poisson", "0.5", *law_args,
-                        "--accept-poor-fit", "-o", given).returncode == 0
         # The times the data cover, at 23 C: 1/(2 pi 100 Hz a_T(-30 C)) .. 1/(2 pi 0.1 Hz a_T(60 C)).
         lo, hi = 1 / (2 * np.pi * 100 * 10 ** log10_aT(-30)), 1 / (2 * np.pi * 0.1 * 10 ** log10_aT(60))
+        seen = seen_by_the_data(truth, lo, hi, tmp_path / f"seen{seed}.ini")
         _, _, h_0, h_inf = design_t_star(truth, 1.0, 23.0)
         for q in (0.25, 0.5):
             dh = 50 * (h_0 + q * (h_inf - h_0))
@@ -456,17 +470,19 @@ def test_randomly_drawn_materials_are_fitted_or_refused_never_silently_wrong(tmp
                 regime, want, _, _ = design_t_star(truth, dh, T)
                 if regime != "delayed" or not lo <= want / 10 ** log10_aT(T) <= hi:
                     continue  # the data cannot say what happens there
+                seen_regime, seen_t, _, _ = design_t_star(seen, dh, T)
+                if seen_regime != "delayed" or abs(seen_t / want - 1) > 0.01:
+                    unseen.append((seed, q, T, seen_regime, seen_t and round(seen_t / want - 1, 4)))
+                    continue  # what decides t* lies beyond the readings
                 judged += 1
                 got_regime, got, _, _ = design_t_star(out, dh, T)
-                allowed = abs(design_t_star(given, dh, T)[1] / want - 1) if has_given else 0.0
                 assert got_regime == "delayed", (seed, q, T)
-                errors.append((abs(got / want - 1), allowed, noise, seed, q, T))
-    for error, allowed, noise, seed, q, T in errors:
-        assert error <= max(0.05, 3 * noise, 2 * allowed), (seed, q, T, error, allowed, noise)
-    print(f"written {written} of 12, judged {judged} design points; t* errors (fit, true law given, noise): "
-          f"{sorted((round(e, 4), round(a, 4), round(n, 4)) for e, a, n, *_ in errors)}")
-    assert written >= 6 and judged >= 10, (written, judged)
-
+                errors.append((abs(got / want - 1), noise, seed, q, T))
+    print(f"written {written} of 12, judged {judged} design points; t* errors (error, noise, seed, q, T): "
+          f"{sorted(errors, reverse=True)}; not determined by the data (seed, q, T, regime, t*/truth - 1): {unseen}")
+    for error, noise, seed, q, T in errors:
+        assert error <= 0.05, (seed, q, T, error, noise)
+    assert written >= 6 and judged >= 30, (written, judged)
 
 
 def test_files_as_instruments_and_spreadsheets_write_them(fitted, tmp_path):
