@@ -22,7 +22,6 @@ Example:
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from pathlib import Path
 
@@ -44,14 +43,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 
 def read_details(path: str) -> dict:
-    try:
-        with open(path, encoding="utf-8") as f:
-            d = json.load(f)
-    except (OSError, ValueError) as e:
-        raise pm.MapError(f"{path}: cannot read a fit's details: {e}") from None
-    if not isinstance(d, dict) or d.get("kind") not in ("dma", "relaxation") or "readings" not in d:
-        raise pm.MapError(f"{path}: not the .fit.json of `punchsweep fit` (no 'kind' and 'readings')")
-    return d
+    return pm.read_json(path, "a fit's details",
+                        lambda d: d.get("kind") in ("dma", "relaxation") and "readings" in d,
+                        "the .fit.json of `punchsweep fit` (no 'kind' and 'readings')")
 
 
 def prony_curves(prony: dict, x: np.ndarray, dma: bool):
@@ -149,10 +143,7 @@ def render(d: dict):
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    out = pm.check_output(args.output, inputs=[args.details])
-    fig = render(read_details(args.details))
-    pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.details])
-    print(f"wrote {args.output}")
+    pm.picture_of(args.details, args.output, read_details, render, FIG_DPI)
     return 0
 
 

@@ -632,6 +632,30 @@ def output_problem(path: str | Path, inputs=()) -> str | None:
     return None
 
 
+def read_json(path: str | Path, what: str, is_it, not_it: str) -> dict:
+    """A JSON object an engine command wrote (`what`, "a fit's details"), refused with
+    MapError naming the file where it cannot be read or `is_it(d)` is false (`not_it` says
+    what it is not)."""
+    import json
+
+    try:
+        with open(path, encoding="utf-8") as f:
+            d = json.load(f)
+    except (OSError, ValueError) as e:
+        raise MapError(f"{path}: cannot read {what}: {e}") from None
+    if not isinstance(d, dict) or not is_it(d):
+        raise MapError(f"{path}: not {not_it}")
+    return d
+
+
+def picture_of(source: str, output: str, read, render, dpi: int) -> None:
+    """A picture of one input file: the output checked first (check_output), then
+    render(read(source)) saved to it, and a line saying so."""
+    out = check_output(output, inputs=[source])
+    save_figure(render(read(source)), out, dpi=dpi, inputs=[source])
+    print(f"wrote {output}")
+
+
 def check_output(path: str | Path, suffixes=(".png", ".pdf"), inputs=()) -> Path:
     """The output path, checked before any work: a known suffix, and output_problem's rule."""
     path = Path(path)

@@ -10,6 +10,7 @@ documented form (docs/fitting.md, "Data files"), for `punchsweep fit` (issue 37 
   semicolon_decimal_comma.csv  a European-locale export (Netzsch Proteus / Anton Paar
                              RheoCompass style): semicolons, decimal commas, units in
                              parentheses, E' and E'', a preamble and a blank line
+  tpe_a_truth.ini            the material the readings were made from
   parentheses_crlf.csv       a Windows export (Mettler-Toledo STARe / PerkinElmer Pyris
                              style): commas, CR LF line ends, "Storage Modulus (MPa)",
                              "Tan Delta", a preamble and a blank line before the header
@@ -69,6 +70,13 @@ def main():
                "Temperature (\u00b0C),Frequency (Hz),Storage Modulus (MPa),Loss Modulus (MPa),Tan Delta"]
     windows += [",".join((T, f, s, l, t)) for (T, f, s, l), t in zip(rows, tan)]
     (HERE / "parentheses_crlf.csv").write_bytes(("\r\n".join(windows) + "\r\n").encode("utf-8"))
+    (HERE / "tpe_a_truth.ini").write_text(
+        "# The material the readings were made from (make_exports.py): what a fit of them should\n"
+        "# give back, and what docs/design.md's window is checked against.\n"
+        "[material]\nname = TPE-A (the truth)\nlaw = prony\nmodulus_unit = MPa\ntime_unit = s\npoisson = 0.5\n"
+        f"E_inf = {E_INF / 1e6:g}\nE_i = {', '.join(f'{v / 1e6:g}' for v in E_I)}\n"
+        f"tau_i = {', '.join(f'{v:g}' for v in TAU)}\n"
+        f"[shift]\nkind = wlf\nC1 = {C1:g}\nC2 = {C2:g}\nT_ref = {T_REF:g}\n")
 
 
 if __name__ == "__main__":

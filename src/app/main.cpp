@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/curve_commands.hpp"
+#include "app/design_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
@@ -27,7 +28,9 @@ constexpr const char* kTopHelp =
     "  elastic    the elastic two-level problem with free radii A_i (Table 9.1)\n"
     "  reference  one point by the periodic boundary-element solver (the model's check)\n"
     "  tables     the periodic model's tables: shipped for s = 1, 2, 3, built and cached for others\n"
-    "  fit        a material file from DMA isotherms or a relaxation test (Prony series, WLF)\n\n"
+    "  fit        a material file from DMA isotherms or a relaxation test (Prony series, WLF)\n"
+    "  design     the window of dh that meets requirements ('touch within 1s at 30kPa', 'never at\n"
+    "             5kPa') at every temperature of a range and corner of a tolerance box\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -58,8 +61,9 @@ int main(int argc, char** argv) {
     if (args[0] == "reference") return punchsweep::app::run_reference_command(rest, std::cout);
     if (args[0] == "tables") return punchsweep::app::run_tables_command(rest, std::cout);
     if (args[0] == "fit") return punchsweep::app::run_fit_command(rest, std::cout);
+    if (args[0] == "design") return punchsweep::app::run_design_command(rest, std::cout);
     throw punchsweep::input::UsageError("unknown command '" + args[0] +
-                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit; see punchsweep --help)");
+                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit, design; see punchsweep --help)");
   } catch (const punchsweep::input::UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::input::kUsageExitCode;

@@ -19,6 +19,8 @@ namespace {
 
 constexpr const char* kUsage = "usage: punchsweep point --l L --dh DH --T T --pbar P --s S [options]";
 
+}  // namespace
+
 po::options_description point_options(const input::PointMaterial& material) {
   po::options_description opts(
       "punchsweep point: regime, t*, and the contact state over time of one parameter point\n"
@@ -36,8 +38,6 @@ po::options_description point_options(const input::PointMaterial& material) {
        "output format: table, json or csv");
   return opts;
 }
-
-}  // namespace
 
 namespace {
 

@@ -4,10 +4,16 @@
 #include <string>
 #include <vector>
 
+#include <boost/program_options/options_description.hpp>
+
 #include "input/command_options.hpp"
 #include "model/point/point_evaluation.hpp"
 
 namespace punchsweep::app {
+
+/// The options of `punchsweep point` for `material` (the design command reads its points
+/// through them too).
+boost::program_options::options_description point_options(const input::PointMaterial& material);
 
 /// `punchsweep point ...`: evaluates one parameter point and prints it.
 /// Returns the exit code; throws UsageError for bad input (before printing anything).

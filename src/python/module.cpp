@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "input/command_options.hpp"
+#include "app/design_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
@@ -494,6 +495,8 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep reference of (option name, value text) pairs, solved in-process: a dict of its JSON keys");
   m.def("fit", &fit_command, py::arg("keywords"),
         "punchsweep fit of (option name, value text) pairs: the fit's JSON, report and material text");
+  m.def("design", &app::design_json, py::arg("keywords"),
+        "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
         py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"),
         "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "

@@ -187,6 +187,12 @@ void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, dou
   *h_inf = end.h;
 }
 
+double dh_touching_at(const ContactProblem& problem, const CreepLaw& creep, double t) {
+  const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
+  const double X = t == 0.0 ? load.initial() : std::isinf(t) ? load.final() : load(t);
+  return single_level_at(problem, X).h;
+}
+
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
                              const SummaryParts& parts) {
   PointSummary out;

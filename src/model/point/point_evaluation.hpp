@@ -145,6 +145,13 @@ SingleLevelState single_level_at(const ContactProblem& problem, double X);
 void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, double* h_0,
                        double* h_inf, double* a1_inf_single);
 
+/// The inverse of t*: the height difference dh whose second level touches at time t (in the
+/// law's unit) under `problem`'s pressure and loading, `problem.dh` not read. Until it touches
+/// only the first level carries the load, so the gap it closes by t, h(X(t)) (eq 9.5 at the
+/// creep-weighted load), is the same for every dh: dh <= h(X(t)) touches by t. t = 0 gives
+/// h_0 (touches at once), t = +inf h_inf (touches ever; +inf where creep has no end).
+double dh_touching_at(const ContactProblem& problem, const CreepLaw& creep, double t);
+
 /// What a point's summary needs that depends only on (l, s, C, dh) and the localization:
 /// its touchdown, and its long-term guide (the paper's model) or its two-level branch (the
 /// family's, the periodic model's). A sweep or a batch of points builds it once per such subset.

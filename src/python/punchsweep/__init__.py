@@ -43,7 +43,7 @@ except ImportError as error:  # the package's Python files without its compiled 
                       "it with `cmake --build build --target punchsweep_python` (bash jobs/local.sh and "
                       "bash tests/run-all.sh do)") from None
 
-__all__ = ["point", "reference", "classify", "open_map", "fit_material", "Material", "PointResult",
+__all__ = ["point", "reference", "design", "classify", "open_map", "fit_material", "Material", "PointResult",
            "ReferenceResult", "FitResult", "Classification", "REGIMES"]
 
 #: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
@@ -181,6 +181,26 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
                               material=material, temperature=temperature, pressure=pressure,
                               ramp=ramp, load_table=load_table, **options))
     return _result(ReferenceResult, _core.reference(keywords))
+
+
+def design(require: str | Iterable[str], *, material: str | None = None, R: str | None = None,
+           l: float | str | None = None, s: int | None = None, C: float | None = None,
+           temperature: float | str | None = None, tolerance: str | Mapping | None = None,
+           **options: Any) -> dict:
+    """`punchsweep design` in-process: the window of dh that meets every requirement
+    ("touch within 1s at 30kPa", "never at 5kPa") at every temperature of `temperature`
+    ("20..40C") and every corner of `tolerance` ("dh=0.5um, pressure=10%" or {"dh": "0.5um",
+    "pressure": "10%"}). Returns the command's JSON as a dict (docs/design.md): lower, upper,
+    empty, centre, margin (in R), physical (the same in R's unit), requirements (each with
+    its edge, binds_at and every bound), miss (where empty), notes. ValueError with the
+    command's message for bad input."""
+    material = None if material is None else os.fspath(material)
+    if isinstance(tolerance, Mapping):
+        tolerance = ", ".join(f"{k}={_option_text(v)}" for k, v in tolerance.items())
+    requirements = [require] if isinstance(require, str) else list(require)
+    keywords = [("require", text) for text in requirements] + _keywords(
+        dict(material=material, R=R, l=l, s=s, C=C, temperature=temperature, tolerance=tolerance, **options))
+    return json.loads(_core.design(keywords))
 
 
 @dataclass(frozen=True)

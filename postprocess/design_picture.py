@@ -1,0 +1,149 @@
+#!/usr/bin/python3
+"""The design window against temperature: the picture `punchsweep design` promises.
+
+Reads the JSON of `punchsweep design ... --format json` (or `punchsweep.design()` written
+with json.dump) and draws, against temperature, each requirement's bound on dh (the
+tightest over the tolerance box's corners at that temperature, the dh tolerance taken
+off): a "touch within ..." requirement is an upper bound (dh at most the line), a "never"
+or "no touch within ..." one a lower bound. Where every lower line lies under every upper
+one, the band between is shaded; the window that holds at every temperature (the design's
+answer) is the hatched band, its centre dashed, and the edge each requirement sets is
+marked where it binds. With one temperature (or a law without temperature) the bounds are
+drawn as levels. The title says the window, or "no design meets this" with the nearest miss.
+
+Units: dh in the unit of the design's R (um where --R 80um was given), temperature in C.
+
+Example:
+  punchsweep design --material examples/dma_exports/tpe_a_truth.ini --R 80um --l 250um --s 2 \\
+      --temperature 20..40C --require "touch within 1s at 30kPa" --require "never at 5kPa" \\
+      --tolerance "dh=0.5um, pressure=10%" --format json > window.json
+  postprocess/design_picture.py window.json -o window.png
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import punchsweep_maps as pm  # noqa: E402
+
+FIG_DPI = 150
+
+
+def parse_args(argv: list[str]) -> argparse.Namespace:
+    p = pm.Parser(prog="design_picture.py", description=__doc__,
+                  formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("window", metavar="WINDOW.json", help="written by `punchsweep design --format json`")
+    p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
+    return p.parse_args(argv)
+
+
+def read_window(path: str) -> dict:
+    return pm.read_json(path, "a design window",
+                        lambda d: d.get("quantity") == "dh" and isinstance(d.get("requirements"), list),
+                        "the JSON of `punchsweep design --format json` (no 'quantity' and 'requirements')")
+
+
+def _number(v) -> float:
+    return math.nan if v is None else float(v)
+
+
+def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
+    """Per requirement: (requirement, temperatures, its bound on dh there in the physical
+    unit): the tightest gap over the box's corners at each temperature, -+ the dh tolerance."""
+    per_R = d["physical"]["R"]  # R in the physical unit (1 where no --R was given)
+    curves = []
+    for r in d["requirements"]:
+        upper = r["side"] == "upper"
+        by_T: dict[float, float] = {}
+        for b in r["bounds"]:
+            T = _number(b["temperature"])
+            key = 0.0 if math.isnan(T) else T
+            gap = _number(b["gap"])
+            by_T[key] = min(by_T.get(key, math.inf), gap) if upper else max(by_T.get(key, -math.inf), gap)
+        Ts = np.array(sorted(by_T))
+        tol = d["tolerance"]["dh"]
+        edge = np.array([by_T[T] - tol if upper else by_T[T] + tol for T in Ts]) * per_R
+        curves.append((r, Ts, edge))
+    return curves
+
+
+def render(d: dict):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    unit = "µm" if d["physical"]["unit"] == "um" else d["physical"]["unit"]
+    curves = bound_curves(d)
+    has_T = len(d["temperatures"]) > 1
+    fig, ax = plt.subplots(figsize=(7.5, 4.8), layout="constrained")
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    x_span = (min(d["temperatures"]), max(d["temperatures"])) if has_T else (0.0, 1.0)
+    for k, (r, Ts, edge) in enumerate(curves):
+        upper = r["side"] == "upper"
+        label = f"{r['text']}: dh {'≤' if upper else '≥'} line"
+        colour = colours[k % len(colours)]
+        if has_T:
+            ax.plot(Ts, edge, color=colour, lw=2, label=label, marker="o", ms=3)
+            bind = _number(r["binds_at"]["temperature"])
+            ax.plot([bind], [_number(r["edge_physical"])], marker="*", ms=14, color=colour, mec="black", zorder=5)
+        else:
+            ax.hlines(edge[0], *x_span, color=colour, lw=2, label=label)
+    if has_T and curves:
+        grid = np.linspace(*x_span, 200)
+        lower = np.zeros_like(grid)
+        upper = np.full_like(grid, np.inf)
+        for r, Ts, edge in curves:
+            line = np.interp(grid, Ts, edge)
+            if r["side"] == "upper":
+                upper = np.minimum(upper, line)
+            else:
+                lower = np.maximum(lower, line)
+        top = np.where(np.isfinite(upper), upper, np.nanmax(lower) * 1.5 + 1e-30)
+        ax.fill_between(grid, lower, top, where=top > lower, color="tab:green", alpha=0.15,
+                        label="meets every requirement at that temperature")
+    lo, hi = d["physical"]["lower"], d["physical"]["upper"]
+    if not d["empty"]:
+        top = hi if hi is not None and math.isfinite(_number(hi)) else None
+        if top is not None:
+            ax.axhspan(lo, top, facecolor="none", edgecolor="tab:green", hatch="///", lw=0,
+                       label="the window: every temperature and corner")
+            ax.axhline(d["physical"]["centre"], color="tab:green", ls="--", lw=1.2, label="its centre")
+        else:
+            ax.axhline(lo, color="tab:green", ls="--", lw=1.2, label="the window's lower edge")
+        title = (f"dh window {lo:.4g} to {top:.4g} {unit} (centre {d['physical']['centre']:.4g}, margin "
+                 f"± {d['physical']['margin']:.3g} {unit})" if top is not None else f"dh ≥ {lo:.4g} {unit}")
+    else:
+        title = "no design meets this"
+    box = []
+    if d["tolerance"]["dh"]:
+        box.append(f"dh ± {d['physical']['dh_tolerance']:.3g} {unit}")
+    if d["tolerance"]["pressure"]:
+        box.append(f"pressure ± {100 * d['tolerance']['pressure']:.3g}%" if d["tolerance"]["pressure_is"] == "relative"
+                   else "pressure ± a stated amount")
+    subtitle = d["point"] + (f"; tolerance {', '.join(box)}" if box else "")
+    ax.set_title(title + "\n" + "\n".join(textwrap.wrap(subtitle.replace(" um", " µm"), 110)), fontsize=9)
+    ax.set_xlabel("temperature (°C)" if has_T else "")
+    if not has_T:
+        ax.set_xticks([])
+    ax.set_ylabel(f"height difference dh ({unit})")
+    ax.set_xlim(*x_span)
+    ax.legend(fontsize=7.5, loc="best")
+    if d["empty"] and d.get("miss"):
+        fig.text(0.01, 0.005, d["miss"], fontsize=7, wrap=True)
+    return fig
+
+
+def main(argv: list[str]) -> int:
+    args = parse_args(argv)
+    pm.picture_of(args.window, args.output, read_window, render, FIG_DPI)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(pm.run_cli(main, "design_picture.py"))

@@ -1,0 +1,623 @@
+#include "app/design_command.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/point_command.hpp"
+#include "input/scaled_value.hpp"
+#include "input/usage_error.hpp"
+#include "model/numerics/number_text.hpp"
+#include "model/point/point_evaluation.hpp"
+#include "model/problem/parameter.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// Temperatures a range is checked at (evenly spaced, both ends included).
+constexpr int kTemperatureSamples = 9;
+
+constexpr const char* kUsage =
+    "usage: punchsweep design --require \"touch within 1s at 30kPa\" [--require \"never at 5kPa\" ...]\n"
+    "         --material FILE --R R --l L --s S [--C C] [--temperature 20..40C]\n"
+    "         [--tolerance \"dh=0.5um, pressure=10%\"] [--format table|json] [point options]";
+
+constexpr const char* kRequirementForms =
+    "valid: 'touch within TIME at PRESSURE', 'touch at once at PRESSURE', 'touch at PRESSURE' (at any time), "
+    "'never at PRESSURE', 'no touch within TIME at PRESSURE'; TIME with a unit (1s, 5min) where a material file "
+    "gives one (else in T_eps), PRESSURE with one (30kPa) where it gives a modulus (else in E0/(1-nu^2))";
+
+/// The design command's own options, and every other one (the point's) as keywords.
+struct DesignArgs {
+  std::vector<std::string> requirement_texts;
+  std::optional<std::string> temperature, tolerance;
+  std::string format = "table";
+  bool help = false;
+  input::Keywords point;
+};
+
+DesignArgs split_keywords(const input::Keywords& keywords) {
+  DesignArgs a;
+  for (const auto& [name, value] : keywords) {
+    if (name == "require") {
+      a.requirement_texts.push_back(value);
+    } else if (name == "temperature") {
+      a.temperature = value;
+    } else if (name == "tolerance") {
+      a.tolerance = value;
+    } else if (name == "format") {
+      a.format = value;
+    } else if (name == "help") {
+      a.help = true;
+    } else if (name == "dh") {
+      throw input::UsageError("--dh: the design finds dh; state what it must do with --require");
+    } else if (name == "pbar" || name == "pressure") {
+      throw input::UsageError("--" + name + ": each --require names its pressure ('touch within 1s at 30kPa')");
+    } else {
+      a.point.emplace_back(name, value);
+    }
+  }
+  if (a.format != "table" && a.format != "json") {
+    throw input::UsageError("--format = " + a.format + " is not one of: table, json");
+  }
+  return a;
+}
+
+/// "--name value" and "--name=value" as keywords; --help alone.
+input::Keywords keywords_of(const std::vector<std::string>& args) {
+  input::Keywords out;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& a = args[k];
+    if (a.rfind("--", 0) != 0 || a.size() == 2) {
+      throw input::UsageError("'" + a + "' is no option (options are --NAME VALUE; see punchsweep design --help)");
+    }
+    const std::size_t eq = a.find('=');
+    if (eq != std::string::npos) {
+      out.emplace_back(a.substr(2, eq - 2), a.substr(eq + 1));
+    } else if (a == "--help" || a == "-h") {
+      out.emplace_back("help", "");
+    } else if (k + 1 < args.size()) {
+      out.emplace_back(a.substr(2), args[++k]);
+    } else {
+      throw input::UsageError(a + " needs a value");
+    }
+  }
+  return out;
+}
+
+std::string trimmed(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t"));
+  s.erase(s.find_last_not_of(" \t") + 1);
+  return s;
+}
+
+/// One of the requirement's forms (kRequirementForms), its time and pressure read in the
+/// point's scales.
+Requirement read_requirement(const std::string& text, const input::PhysicalScales& scales) {
+  const auto bad = [&](const std::string& why) {
+    return input::UsageError("--require '" + text + "': " + why + " (" + kRequirementForms + ")");
+  };
+  std::string lower = trimmed(text);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::regex space("\\s+");
+  lower = std::regex_replace(lower, space, " ");
+  std::smatch m;
+  Requirement r;
+  r.text = trimmed(text);
+  std::string time_text, pressure_text;
+  if (std::regex_match(lower, m, std::regex("touch (?:within|by) (.+) at (.+)"))) {
+    time_text = m[1];
+    pressure_text = m[2];
+  } else if (std::regex_match(lower, m, std::regex("touch (?:at once|immediately) at (.+)"))) {
+    pressure_text = m[1];
+  } else if (std::regex_match(lower, m, std::regex("touch (?:ever |eventually )?at (.+)"))) {
+    r.time = kInf;
+    pressure_text = m[1];
+  } else if (std::regex_match(lower, m, std::regex("(?:never|no touch) at (.+)"))) {
+    r.kind = Requirement::Kind::no_touch_by;
+    r.time = kInf;
+    pressure_text = m[1];
+  } else if (std::regex_match(lower, m, std::regex("(?:no touch|not) (?:within|by) (.+) at (.+)"))) {
+    r.kind = Requirement::Kind::no_touch_by;
+    time_text = m[1];
+    pressure_text = m[2];
+  } else {
+    throw bad("not a requirement");
+  }
+  // The texts as the user typed them (units are case-sensitive: 30kPa, 5MPa, 2ms).
+  const auto original = [&](const std::string& part) {
+    std::string t = trimmed(part);
+    const std::string flat = std::regex_replace(trimmed(text), space, " ");
+    std::string flat_lower = flat;
+    std::transform(flat_lower.begin(), flat_lower.end(), flat_lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::size_t at = flat_lower.rfind(t);
+    return at == std::string::npos ? t : flat.substr(at, t.size());
+  };
+  try {
+    if (!time_text.empty()) {
+      r.time = input::read_scaled(original(time_text), *input::scale_of("T_eps", scales));
+      if (!(std::isfinite(r.time) && r.time >= 0.0)) throw std::invalid_argument("the time is not finite and >= 0");
+    }
+    r.pbar = input::read_scaled(original(pressure_text), *input::scale_of("E0/(1-nu^2)", scales));
+    if (!(std::isfinite(r.pbar) && r.pbar > 0.0)) throw std::invalid_argument("the pressure is not finite and > 0");
+  } catch (const std::invalid_argument& e) {
+    throw bad(e.what());
+  }
+  return r;
+}
+
+/// A temperature "20", "20C", "20degC", "293.15K" in degC.
+double read_temperature(std::string text, const std::string& unit_after, const std::string& option) {
+  text = trimmed(text);
+  std::string unit;
+  for (const char* u : {"\xC2\xB0" "C", "degC", "C", "K"}) {
+    const std::string s(u);
+    if (text.size() > s.size() && text.compare(text.size() - s.size(), s.size(), s) == 0) {
+      unit = s;
+      text = trimmed(text.substr(0, text.size() - s.size()));
+      break;
+    }
+  }
+  if (unit.empty()) unit = unit_after;
+  double v = 0.0;
+  try {
+    std::size_t used = 0;
+    v = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw input::UsageError(option + ": '" + text + "' is not a temperature (valid: a number with C, degC, "
+                            "\xC2\xB0" "C or K, as 20C, or a range 20..40C)");
+  }
+  if (!std::isfinite(v)) throw input::UsageError(option + ": the temperature is not finite");
+  return unit == "K" ? v - 273.15 : v;
+}
+
+/// --temperature: one temperature or a range A..B (degC unless a unit says K), widened by
+/// `widen` K on each side, sampled at kTemperatureSamples temperatures.
+std::vector<double> read_temperatures(const std::string& text, double widen) {
+  const std::string option = "--temperature " + text;
+  const std::size_t dots = text.find("..");
+  std::vector<double> out;
+  if (dots == std::string::npos) {
+    const double t = read_temperature(text, "C", option);
+    if (widen > 0.0) return read_temperatures(model::number_text(t, 17) + ".." + model::number_text(t, 17), widen);
+    return {t};
+  }
+  std::string hi_text = text.substr(dots + 2);
+  std::string unit = "C";
+  for (const char* u : {"K", "degC", "\xC2\xB0" "C", "C"}) {
+    const std::string s(u), t = trimmed(hi_text);
+    if (t.size() > s.size() && t.compare(t.size() - s.size(), s.size(), s) == 0) {
+      unit = s == "K" ? "K" : "C";
+      break;
+    }
+  }
+  const double lo = read_temperature(text.substr(0, dots), unit, option) - widen;
+  const double hi = read_temperature(hi_text, unit, option) + widen;
+  if (!(hi > lo)) throw input::UsageError(option + ": the range's end is not above its start");
+  for (int k = 0; k < kTemperatureSamples; ++k) out.push_back(lo + (hi - lo) * k / (kTemperatureSamples - 1));
+  return out;
+}
+
+/// The tolerance box: dh (a length), pressure (% or a pressure), l and C (% or a value),
+/// temperature (K: the range widened).
+struct Box {
+  double dh = 0.0;
+  double pressure = 0.0;
+  bool pressure_absolute = false;
+  double l = 0.0, C = 0.0;  ///< relative
+  double temperature = 0.0;
+};
+
+Box read_box(const std::string& all, const input::PointInputs& base) {
+  Box box;
+  std::vector<std::string> seen;
+  const auto bad = [&](const std::string& entry, const std::string& why) {
+    return input::UsageError("--tolerance '" + entry + "': " + why +
+                             " (valid: NAME=VALUE, NAME one of dh (a length, 0.5um), pressure (10% or 2kPa), l and C "
+                             "(5% or a value), temperature (2K); VALUE >= 0)");
+  };
+  std::stringstream entries(all);
+  std::string entry;
+  while (std::getline(entries, entry, ',')) {
+    entry = trimmed(entry);
+    if (entry.empty()) continue;
+    const std::size_t eq = entry.find('=');
+    if (eq == std::string::npos) throw bad(entry, "no '='");
+    const std::string name = trimmed(entry.substr(0, eq)), text = trimmed(entry.substr(eq + 1));
+    if (std::find(seen.begin(), seen.end(), name) != seen.end()) throw bad(entry, "'" + name + "' is given twice");
+    seen.push_back(name);
+    const bool percent = !text.empty() && text.back() == '%';
+    double v = 0.0;
+    try {
+      const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+      if (name == "dh") {
+        if (percent) throw std::invalid_argument("dh is what the design finds: give its tolerance as a length");
+        v = input::read_scaled(number, *input::scale_of("R", base.scales));
+      } else if (name == "pressure" || name == "pbar") {
+        v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("E0/(1-nu^2)", base.scales));
+        box.pressure_absolute = !percent;
+      } else if (name == "l") {
+        v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("R", base.scales)) / base.problem.l;
+      } else if (name == "C") {
+        v = percent ? std::stod(number) / 100.0 : std::stod(number) / base.problem.shape.C;
+      } else if (name == "temperature") {
+        std::string t = number;
+        for (const char* u : {"K", "degC", "C"}) {
+          const std::string s(u);
+          if (t.size() > s.size() && t.compare(t.size() - s.size(), s.size(), s) == 0) t = t.substr(0, t.size() - s.size());
+        }
+        if (percent) throw std::invalid_argument("a temperature's tolerance is a difference in K");
+        v = std::stod(t);
+      } else {
+        throw std::invalid_argument("'" + name + "' is no tolerance the design takes");
+      }
+    } catch (const std::invalid_argument& e) {
+      throw bad(entry, e.what());
+    } catch (const std::out_of_range&) {
+      throw bad(entry, "not a number");
+    }
+    if (!(std::isfinite(v) && v >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
+    if ((name == "l" || name == "C" || (name != "dh" && name != "temperature" && percent)) && !(v < 1.0)) {
+      throw bad(entry, "a relative tolerance of 100% or more leaves nothing of the value");
+    }
+    if (name == "dh") box.dh = v;
+    if (name == "pressure" || name == "pbar") box.pressure = v;
+    if (name == "l") box.l = v;
+    if (name == "C") box.C = v;
+    if (name == "temperature") box.temperature = v;
+  }
+  return box;
+}
+
+/// `base` with `name` set to `value` (replacing it where given).
+input::Keywords with(input::Keywords base, const std::string& name, const std::string& value) {
+  base.erase(std::remove_if(base.begin(), base.end(), [&](const auto& kv) { return kv.first == name; }), base.end());
+  base.emplace_back(name, value);
+  return base;
+}
+
+/// Pressures, pitches and shape factors of the box's corners about (pbar, l, C).
+std::vector<double> sides(double value, double tolerance, bool absolute) {
+  if (tolerance == 0.0) return {value};
+  return absolute ? std::vector<double>{value - tolerance, value + tolerance}
+                  : std::vector<double>{value * (1 - tolerance), value * (1 + tolerance)};
+}
+
+DesignResult design(const DesignArgs& a) {
+  if (a.requirement_texts.empty()) throw input::UsageError("give at least one --require (" + std::string(kRequirementForms) + ")");
+  const input::PointMaterial material = input::find_point_material(a.point);
+  const po::options_description opts = point_options(material);
+  const bool has_temperature =
+      std::any_of(material.spec.parameters.begin(), material.spec.parameters.end(),
+                  [](const model::Parameter& p) { return p.name == model::temperature_parameter().name; });
+  if (a.temperature && !has_temperature) {
+    throw input::UsageError("--temperature: " + std::string(material.material
+                                ? "this material file has no [shift], so its law takes no temperature"
+                                : "a material's temperature: give --material FILE, a material file with a [shift]"));
+  }
+  // Each point the design reads goes through the point command's options and checks.
+  const auto point_at = [&](const input::Keywords& keywords, const std::string& what) {
+    try {
+      const po::variables_map vm = input::parse_keywords(keywords, opts, "design");
+      input::PointInputs in = input::read_point_inputs(vm, material);
+      in.problem.localization = input::read_localization(vm);
+      return in;
+    } catch (const input::UsageError& e) {
+      throw input::UsageError(what.empty() ? std::string(e.what()) : what + ": " + e.what());
+    }
+  };
+  input::Keywords base_keywords = with(a.point, "dh", "0");
+  // The scales first (a requirement's units need them): at a nominal pressure.
+  DesignResult out;
+  std::optional<double> first_T;
+  if (a.temperature) first_T = read_temperature(a.temperature->substr(0, a.temperature->find("..")), "C",
+                                                "--temperature " + *a.temperature);
+  input::Keywords probe = with(base_keywords, "pbar", "1e-6");
+  if (first_T) probe = with(probe, "temperature", input::json_number(*first_T));
+  const input::PointInputs scales_of_point = point_at(probe, "");
+  std::vector<Requirement> requirements;
+  for (const std::string& text : a.requirement_texts) requirements.push_back(read_requirement(text, scales_of_point.scales));
+  const Box box = a.tolerance ? read_box(*a.tolerance, scales_of_point) : Box{};
+  if (a.temperature) out.temperatures = read_temperatures(*a.temperature, box.temperature);
+  else if (box.temperature > 0.0) throw input::UsageError("--tolerance temperature: give --temperature too");
+  out.dh_tolerance = box.dh;
+  out.pressure_tolerance = box.pressure;
+  out.pressure_absolute = box.pressure_absolute;
+  out.l_tolerance = box.l;
+  out.C_tolerance = box.C;
+  out.inputs = point_at(with(probe, "pbar", input::json_number(requirements.front().pbar)), "");
+  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C;
+  const std::vector<double> temperatures = out.temperatures.empty() ? std::vector<double>{kNaN} : out.temperatures;
+  out.lower = 0.0;
+  out.upper = kInf;
+  for (const Requirement& r : requirements) {
+    RequirementBound b;
+    b.requirement = r;
+    const bool touch = r.kind == Requirement::Kind::touch_by;
+    b.edge = touch ? kInf : -kInf;
+    for (const double T : temperatures) {
+      for (const double p : sides(r.pbar, box.pressure, box.pressure_absolute)) {
+        for (const double l : sides(l0, box.l, false)) {
+          for (const double C : sides(C0, box.C, false)) {
+            input::Keywords k = with(base_keywords, "pbar", input::json_number(p));
+            if (!std::isnan(T)) k = with(k, "temperature", input::json_number(T));
+            if (box.l > 0.0) k = with(k, "l", input::json_number(l));
+            if (box.C > 0.0) k = with(k, "C", input::json_number(C));
+            const input::PointInputs in = point_at(k, "--require '" + r.text + "' (a corner of the box)");
+            DesignBound d{T, p, l, C, model::dh_touching_at(in.problem, *in.creep, r.time)};
+            if (std::isnan(d.gap)) {
+              throw std::runtime_error("the gap closed at " + in.describe() + " is not a number");
+            }
+            const double edge = touch ? d.gap - box.dh : d.gap + box.dh;
+            if (touch ? edge < b.edge : edge > b.edge) {
+              b.edge = edge;
+              b.binding = d;
+            }
+            b.bounds.push_back(d);
+          }
+        }
+      }
+    }
+    if (touch) {
+      out.upper = std::min(out.upper, b.edge);
+    } else {
+      out.lower = std::max(out.lower, b.edge);
+    }
+    // Where the engine's monotonicity does not hold, say so: t* falls with temperature and
+    // pressure, so the binding point should lie at the range's cold (touch) or warm end and
+    // at the low (touch) or high pressure.
+    // (A tie is no exception: h_inf is the same at every temperature.)
+    const auto tighter = [&](const DesignBound& x, const DesignBound& than) {
+      const double close = 1e-12 * std::max(std::abs(than.gap), 1e-300);
+      return touch ? x.gap < than.gap - close : x.gap > than.gap + close;
+    };
+    if (temperatures.size() > 1) {
+      b.every_temperature = std::all_of(b.bounds.begin(), b.bounds.end(), [&](const DesignBound& x) {
+        return x.pbar != b.binding.pbar || x.l != b.binding.l || x.C != b.binding.C ||
+               (!tighter(b.binding, x) && !tighter(x, b.binding));
+      });
+      const double want = touch ? temperatures.front() : temperatures.back();
+      bool beaten = false;
+      for (const DesignBound& x : b.bounds) {
+        if (x.temperature == want && x.pbar == b.binding.pbar && x.l == b.binding.l && x.C == b.binding.C) {
+          beaten = tighter(b.binding, x);
+        }
+      }
+      if (beaten) {
+        out.notes.push_back("'" + r.text + "' binds at " + model::number_text(b.binding.temperature, 4) +
+                            " degC, not at the range's " + (touch ? "cold" : "warm") +
+                            " end: t* does not fall with temperature there; checked at " +
+                            std::to_string(temperatures.size()) + " temperatures, the edge between them may be tighter");
+      }
+    }
+    if (box.pressure > 0.0) {
+      const std::vector<double> ps = sides(r.pbar, box.pressure, box.pressure_absolute);
+      bool beaten = false;
+      for (const DesignBound& x : b.bounds) {
+        if (x.temperature == b.binding.temperature && x.pbar == (touch ? ps.front() : ps.back()) &&
+            x.l == b.binding.l && x.C == b.binding.C) {
+          beaten = tighter(b.binding, x);
+        }
+      }
+      if (beaten) {
+        out.notes.push_back("'" + r.text + "' binds at the " + (touch ? "higher" : "lower") +
+                            " pressure of its tolerance: t* does not fall with pressure there");
+      }
+    }
+    if (!touch && std::isinf(b.edge)) {
+      out.notes.push_back("'" + r.text + "' cannot hold: this law creeps without end, so the second level touches "
+                          "at last whatever dh");
+    }
+    out.bounds.push_back(std::move(b));
+  }
+  return out;
+}
+
+/// The geometry and material of the design, without what it finds or varies (dh, the
+/// pressure, the temperature).
+std::string geometry_text(const input::PointInputs& in) {
+  input::PointInputs kept;
+  kept.scales = in.scales;
+  kept.time_unit = in.time_unit;
+  for (const auto& [p, v] : in.values) {
+    if (p->name != "dh" && p->name != model::kPressure && p->name != model::temperature_parameter().name) {
+      kept.values.emplace_back(p, v);
+    }
+  }
+  std::string text = kept.describe();
+  if (in.material) text += "; material " + in.material->name();
+  return text;
+}
+
+/// Lengths in R's physical unit where --R is given, else in R.
+struct LengthUnit {
+  double per_R = 1.0;
+  std::string unit = "R";
+};
+LengthUnit length_unit(const input::PointInputs& in) {
+  if (const auto u = input::physical_unit("R", in.scales)) return {u->per_scaled, u->units};
+  return {};
+}
+
+std::string pressure_text(double pbar, const input::PointInputs& in) {
+  if (const auto u = input::physical_unit("E0/(1-nu^2)", in.scales)) {
+    const double pa = pbar * u->per_scaled;
+    if (pa >= 1e6) return model::number_text(pa / 1e6, 4) + " MPa";
+    if (pa >= 1e3) return model::number_text(pa / 1e3, 4) + " kPa";
+    return model::number_text(pa, 4) + " Pa";
+  }
+  return model::number_text(pbar, 4) + " E0*";
+}
+
+std::string tolerance_text(const DesignResult& d, const LengthUnit& L) {
+  std::vector<std::string> parts;
+  if (d.dh_tolerance > 0) parts.push_back("dh +- " + model::number_text(d.dh_tolerance * L.per_R, 4) + " " + L.unit);
+  if (d.pressure_tolerance > 0) {
+    parts.push_back("pressure +- " + (d.pressure_absolute ? pressure_text(d.pressure_tolerance, d.inputs)
+                                                          : model::number_text(100 * d.pressure_tolerance, 4) + "%"));
+  }
+  if (d.l_tolerance > 0) parts.push_back("l +- " + model::number_text(100 * d.l_tolerance, 4) + "%");
+  if (d.C_tolerance > 0) parts.push_back("C +- " + model::number_text(100 * d.C_tolerance, 4) + "%");
+  std::string t;
+  for (const std::string& p : parts) t += (t.empty() ? "" : ", ") + p;
+  return t;
+}
+
+std::string where_text(const RequirementBound& r, const DesignResult& d, const LengthUnit& L, bool touch) {
+  const DesignBound& b = r.binding;
+  std::string t;
+  if (r.every_temperature) {
+    t += "every temperature, ";
+  } else if (!std::isnan(b.temperature)) {
+    t += model::number_text(b.temperature, 4) + " degC, ";
+  }
+  t += pressure_text(b.pbar, d.inputs);
+  if (d.l_tolerance > 0) t += ", l = " + model::number_text(b.l * L.per_R, 4) + " " + L.unit;
+  if (d.C_tolerance > 0) t += ", C = " + model::number_text(b.C, 4);
+  if (d.dh_tolerance > 0) t += std::string(", dh ") + (touch ? "+ " : "- ") + model::number_text(d.dh_tolerance * L.per_R, 4) + " " + L.unit;
+  return t;
+}
+
+/// What to say where no dh meets every requirement: the nearest miss.
+std::string miss_text(const DesignResult& d, const LengthUnit& L) {
+  if (std::isinf(d.lower)) return "no dh: a 'never' requirement cannot hold for this law";
+  const double gap = d.lower - d.upper;
+  std::string t = "the nearest miss is dh = " + model::number_text(0.5 * (d.lower + d.upper) * L.per_R, 4) + " " +
+                  L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per_R, 4) + " " + L.unit;
+  const double exact_gap = gap - 2 * d.dh_tolerance;  // the window's width with an exact dh, negated
+  if (d.dh_tolerance > 0 && exact_gap < 0) {
+    t += "; a dh tolerance of +- " + model::number_text(-0.5 * exact_gap * L.per_R, 4) + " " + L.unit +
+         " or less would meet every requirement";
+  } else {
+    t += "; not even an exact dh meets every requirement";
+  }
+  return t;
+}
+
+std::string json_of(const DesignResult& d) {
+  const LengthUnit L = length_unit(d.inputs);
+  std::ostringstream s;
+  const auto num = [](double v) { return input::json_number(v); };
+  s << "{\"quantity\": \"dh\", \"unit\": \"R\", \"lower\": " << num(d.lower) << ", \"upper\": " << num(d.upper)
+    << ", \"empty\": " << (d.empty() ? "true" : "false");
+  const bool finite = !d.empty() && std::isfinite(d.upper);
+  s << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) : kNaN)
+    << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) : kNaN);
+  s << ",\n \"physical\": {\"unit\": " << input::json_string(L.unit) << ", \"R\": " << num(L.per_R) << ", \"lower\": " << num(d.lower * L.per_R)
+    << ", \"upper\": " << num(d.upper * L.per_R) << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) * L.per_R : kNaN)
+    << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) * L.per_R : kNaN)
+    << ", \"dh_tolerance\": " << num(d.dh_tolerance * L.per_R) << "}";
+  s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
+  s << ",\n \"tolerance\": {\"dh\": " << num(d.dh_tolerance) << ", \"pressure\": " << num(d.pressure_tolerance)
+    << ", \"pressure_is\": \"" << (d.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
+    << num(d.l_tolerance) << ", \"C\": " << num(d.C_tolerance) << "}";
+  s << ",\n \"temperatures\": [";
+  for (std::size_t i = 0; i < d.temperatures.size(); ++i) s << (i ? ", " : "") << num(d.temperatures[i]);
+  s << "],\n \"requirements\": [";
+  for (std::size_t i = 0; i < d.bounds.size(); ++i) {
+    const RequirementBound& b = d.bounds[i];
+    const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
+    s << (i ? ",\n  " : "\n  ") << "{\"text\": " << input::json_string(b.requirement.text) << ", \"kind\": \""
+      << (touch ? "touch_by" : "no_touch_by") << "\", \"time\": " << num(b.requirement.time)
+      << ", \"pbar\": " << num(b.requirement.pbar) << ", \"side\": \"" << (touch ? "upper" : "lower")
+      << "\", \"edge\": " << num(b.edge) << ", \"edge_physical\": " << num(b.edge * L.per_R)
+      << ", \"binds_at\": {\"temperature\": " << num(b.binding.temperature)
+      << ", \"every_temperature\": " << (b.every_temperature ? "true" : "false") << ", \"pbar\": " << num(b.binding.pbar)
+      << ", \"l\": " << num(b.binding.l) << ", \"C\": " << num(b.binding.C) << ", \"gap\": " << num(b.binding.gap)
+      << "},\n   \"bounds\": [";
+    for (std::size_t k = 0; k < b.bounds.size(); ++k) {
+      const DesignBound& x = b.bounds[k];
+      s << (k ? ", " : "") << "{\"temperature\": " << num(x.temperature) << ", \"pbar\": " << num(x.pbar)
+        << ", \"l\": " << num(x.l) << ", \"C\": " << num(x.C) << ", \"gap\": " << num(x.gap) << "}";
+    }
+    s << "]}";
+  }
+  s << "],\n \"miss\": " << (d.empty() ? input::json_string(miss_text(d, L)) : "null") << ", \"notes\": [";
+  for (std::size_t i = 0; i < d.notes.size(); ++i) s << (i ? ", " : "") << input::json_string(d.notes[i]);
+  s << "]}\n";
+  return s.str();
+}
+
+void write_table(std::ostream& out, const DesignResult& d) {
+  const LengthUnit L = length_unit(d.inputs);
+  const auto len = [&](double v) { return model::number_text(v * L.per_R, 4) + " " + L.unit; };
+  out << "punchsweep design: the height difference dh that meets every requirement\n"
+      << "  " << geometry_text(d.inputs) << "\n  checked at ";
+  if (d.temperatures.size() > 1) {
+    out << "every temperature of " << model::number_text(d.temperatures.front(), 4) << " to "
+        << model::number_text(d.temperatures.back(), 4) << " degC (" << d.temperatures.size() << " temperatures)";
+  } else if (d.temperatures.size() == 1) {
+    out << model::number_text(d.temperatures.front(), 4) << " degC";
+  } else {
+    out << "the law's own parameters";
+  }
+  const std::string box = tolerance_text(d, L);
+  out << (box.empty() ? "" : " and every corner of the tolerance box " + box) << "\n\n";
+  for (const RequirementBound& b : d.bounds) {
+    const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
+    out << "  " << b.requirement.text << ": dh " << (touch ? "<= " : "> ")
+        << (std::isinf(b.edge) ? std::string(b.edge > 0 ? "inf" : "-inf") : len(b.edge)) << "  (binds at "
+        << where_text(b, d, L, touch) << ")\n";
+  }
+  out << "\n";
+  if (d.empty()) {
+    out << "no design meets this: the requirements leave dh between " << len(d.lower) << " and " << len(d.upper)
+        << ", an empty window; " << miss_text(d, L) << "\n";
+  } else if (std::isinf(d.upper)) {
+    out << "window: dh " << (d.lower > 0 ? "> " : ">= ") << len(d.lower) << " (no upper edge)\n";
+  } else {
+    out << "window: " << len(d.lower) << (d.lower > 0 ? " < dh <= " : " <= dh <= ") << len(d.upper) << "; centre "
+        << len(0.5 * (d.lower + d.upper)) << ", margin +- " << len(0.5 * (d.upper - d.lower))
+        << (d.dh_tolerance > 0 ? " beyond the tolerance" : "") << "\n";
+  }
+  for (const std::string& n : d.notes) out << "note: " << n << "\n";
+}
+
+}  // namespace
+
+int run_design_command(const std::vector<std::string>& args, std::ostream& out) {
+  const DesignArgs a = split_keywords(keywords_of(args));
+  if (a.help) {
+    out << kUsage << "\n\n"
+        << "The window of the height difference dh that meets every requirement at every temperature of\n"
+           "the range and every corner of the tolerance box (exact: the dh whose t* is the requirement's\n"
+           "time, at each), its centre and margin, and which requirement binds each edge.\n\n"
+           "  --require TEXT      "
+        << kRequirementForms
+        << "\n  --temperature A..B  a range (degC, or K), checked at " << kTemperatureSamples
+        << " temperatures; or one temperature\n"
+           "  --tolerance TEXT    'dh=0.5um, pressure=10%' (also l, C: 5% or a value; temperature: 2K widens the range)\n"
+           "  --format FMT        table (default) or json\n"
+           "and the point's options but --dh and the pressure (punchsweep point --help).\n"
+           "Example: punchsweep design --material materials/epoxy.ini --R 50um --l 250um --s 2 \\\n"
+           "           --temperature 20..40C --require \"touch within 1s at 30kPa\" --require \"never at 5kPa\" \\\n"
+           "           --tolerance \"dh=0.5um, pressure=10%\"\n"
+           "Exit codes: 0 an answer (a window, or none with the nearest miss), 2 bad input.\n";
+    return 0;
+  }
+  const DesignResult d = design(a);
+  if (a.format == "json") {
+    out << json_of(d);
+  } else {
+    write_table(out, d);
+  }
+  return 0;
+}
+
+std::string design_json(const input::Keywords& keywords) { return json_of(design(split_keywords(keywords))); }
+
+}  // namespace punchsweep::app

@@ -1,0 +1,71 @@
+#pragma once
+/// @file
+/// `punchsweep design`: the inverse question. Which height difference dh meets every
+/// requirement ("touch within 1s at 30kPa", "never at 5kPa") at every temperature of a
+/// range and every corner of a tolerance box? Each requirement bounds dh on one side at
+/// each temperature and corner, exactly: until the second level touches, the first carries
+/// the load alone, so the gap it closes by time t, model::dh_touching_at, is the dh whose t*
+/// is t (docs/design.md).
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "input/command_options.hpp"
+
+namespace punchsweep::app {
+
+/// One requirement as the user states it.
+struct Requirement {
+  std::string text;  ///< as given
+  /// touch_by: t* <= time (dh at most the gap closed by then); no_touch_by: t* > time (dh
+  /// above it). time 0: at once; +inf: ever.
+  enum class Kind { touch_by, no_touch_by } kind = Kind::touch_by;
+  double time = 0.0;  ///< in the law's time unit
+  double pbar = 0.0;  ///< nominal pressure, in E0*
+};
+
+/// Where one requirement bounds dh at one temperature and corner of the box.
+struct DesignBound {
+  double temperature = 0.0;  ///< degC (NaN for a law without temperature)
+  double pbar = 0.0;         ///< the corner's pressure, in E0*
+  double l = 0.0, C = 0.0;   ///< the corner's pitch (R) and shape factor
+  double gap = 0.0;          ///< the dh whose t* is the requirement's time there, in R
+};
+
+/// A requirement's bound on dh: its binding temperature and corner, and every one it met.
+struct RequirementBound {
+  Requirement requirement;
+  /// The window's edge it sets (R): gap -+ the dh tolerance, the tightest over every
+  /// temperature and corner; an upper edge for touch_by, a lower one for no_touch_by.
+  double edge = 0.0;
+  DesignBound binding;
+  /// The bound is the same at every temperature checked (h_0 and h_inf are: the glassy and
+  /// the relaxed compliance do not shift), so `binding.temperature` is only the first.
+  bool every_temperature = false;
+  std::vector<DesignBound> bounds;  ///< temperature-major, then corner
+};
+
+/// The answer: the dh window, each requirement's bound, and what the user should know.
+struct DesignResult {
+  input::PointInputs inputs;  ///< the geometry and material (at the first requirement's pressure)
+  std::vector<double> temperatures;
+  double dh_tolerance = 0.0;           ///< R
+  double pressure_tolerance = 0.0;     ///< relative (10% -> 0.1), or absolute when pressure_absolute
+  bool pressure_absolute = false;      ///< in E0*
+  double l_tolerance = 0.0, C_tolerance = 0.0;  ///< relative
+  std::vector<RequirementBound> bounds;
+  double lower = 0.0, upper = 0.0;  ///< R; lower > upper: no dh meets every requirement
+  std::vector<std::string> notes;
+  bool empty() const { return !(lower <= upper); }
+};
+
+/// `punchsweep design ...`: evaluates and prints. Returns the exit code; throws UsageError
+/// for bad input (before printing anything).
+int run_design_command(const std::vector<std::string>& args, std::ostream& out);
+
+/// The same from keywords (Python's; `require` may repeat): the window, as the command's
+/// JSON.
+std::string design_json(const input::Keywords& keywords);
+
+}  // namespace punchsweep::app

@@ -1,0 +1,163 @@
+"""`punchsweep design` (issue 37 item 1): the window of dh that meets every requirement at
+every temperature and corner of the tolerance box, checked point by point with `punchsweep
+point` (the engine's forward t*, another code path than the design's inverse)."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+EXPORTS = REPO / "examples" / "dma_exports"
+TRUTH = EXPORTS / "tpe_a_truth.ini"
+# The engineer's question of issue 37: 80 um caps on a 250 um pitch, 20-40 C, touch within a
+# second under a firm squeeze, never under a light touch, whatever the tolerance.
+GEOMETRY = ["--R", "80um", "--l", "250um", "--s", "2"]
+QUESTION = ["--temperature", "20..40C", "--require", "touch within 1s at 30kPa", "--require", "never at 5kPa",
+            "--tolerance", "dh=0.5um, pressure=10%"]
+
+
+def cli(*args) -> subprocess.CompletedProcess:
+    return subprocess.run([BINARY, *map(str, args)], capture_output=True, text=True)
+
+
+def design(material, *args) -> dict:
+    r = cli("design", "--material", material, *GEOMETRY, *args, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def point(material, dh_um: float, pressure_kPa: float, T: float) -> dict:
+    r = cli("point", "--material", material, *GEOMETRY, "--dh", f"{dh_um!r}um", "--pressure", f"{pressure_kPa!r}kPa",
+            "--temperature", T, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+@pytest.fixture(scope="module")
+def fitted(tmp_path_factory) -> Path:
+    """TPE-A fitted from its TRIOS-style export, as a user would."""
+    out = tmp_path_factory.mktemp("design") / "tpe_a.ini"
+    r = cli("fit", "--dma", EXPORTS / "trios_lims.txt", "--reference-temperature", "23", "--poisson", "0.5", "-o", out)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def test_the_window_holds_at_every_corner_and_its_edges_are_tight():
+    """At every temperature checked and every corner of the box, the window's dh meets every
+    requirement by `point`'s t*; just past each edge, at the corner it names, it fails."""
+    d = design(TRUTH, *QUESTION)
+    assert not d["empty"] and d["physical"]["unit"] == "um" and d["physical"]["dh_tolerance"] == 0.5
+    lower, upper = d["physical"]["lower"], d["physical"]["upper"]
+    assert 0 < lower < upper
+    assert d["physical"]["centre"] == pytest.approx((lower + upper) / 2, rel=1e-12)
+    assert d["temperatures"] == pytest.approx(np.linspace(20, 40, 9).tolist())
+    assert d["notes"] == []  # t* falls with temperature and pressure here: nothing to say
+    touch, never = d["requirements"]
+    assert touch["side"] == "upper" and never["side"] == "lower"
+    assert touch["edge_physical"] == upper and never["edge_physical"] == lower
+    # The binding corners: the cold end and the low pressure for the touch (t* falls with
+    # both), the high pressure for "never" (h_inf is the same at every temperature).
+    assert touch["binds_at"]["temperature"] == 20
+    assert touch["binds_at"]["pbar"] == pytest.approx(0.9 * touch["pbar"], rel=1e-12)
+    assert never["binds_at"]["pbar"] == pytest.approx(1.1 * never["pbar"], rel=1e-12)
+    # Every corner of the box about both edges of the window: dh -+ 0.5 um, p -+ 10%, 9 temperatures.
+    for T in d["temperatures"]:
+        for p in (27.0, 33.0):
+            for dh in (upper - 0.5, upper + 0.5, lower + 0.5):
+                r = point(TRUTH, dh, p, T)
+                assert r["regime"] in ("immediate", "delayed") and r["t_star"] <= 1.0 * (1 + 1e-6), (T, p, dh, r)
+        for p in (4.5, 5.5):
+            # (The lower edge is open: at dh = h_inf itself the level touches at last.)
+            for dh in (lower * (1 + 1e-9) - 0.5, lower + 0.5, upper + 0.5):
+                assert point(TRUTH, dh, p, T)["regime"] == "never", (T, p, dh)
+    # Tight: 0.01% past the upper edge, at 20 C and 27 kPa, t* is above 1 s; 0.01% below the
+    # lower edge, at 5.5 kPa, the level touches in the end. And at the edge t* is 1 s.
+    assert point(TRUTH, upper + 0.5, 27.0, 20.0)["t_star"] == pytest.approx(1.0, rel=1e-6)
+    assert point(TRUTH, upper * 1.0001 + 0.5, 27.0, 20.0)["t_star"] > 1.0
+    assert point(TRUTH, lower * 0.9999 - 0.5, 5.5, 40.0)["regime"] == "delayed"
+
+
+def test_the_window_from_the_fitted_file_is_within_the_tolerance_of_the_truths(fitted):
+    """Issue 37's check: the same question of the material fitted from the instrument's
+    export gives a window within the dh tolerance (0.5 um) of the true material's."""
+    true, fit = design(TRUTH, *QUESTION), design(fitted, *QUESTION)
+    for edge in ("lower", "upper"):
+        assert abs(fit["physical"][edge] - true["physical"][edge]) < 0.5, (edge, fit["physical"], true["physical"])
+    # Measured: within 0.01 um (docs/design.md); the 0.5 um above is the issue's bound.
+    assert abs(fit["physical"]["centre"] - true["physical"]["centre"]) < 0.05
+
+
+def test_no_design_meets_conflicting_requirements_and_the_nearest_miss_is_said():
+    """A 'never' at a pressure above the 'touch' one: empty, the nearest miss at the middle
+    of the gap between the edges, and what dh tolerance (here none) would close it."""
+    d = design(TRUTH, "--temperature", "20..40C", "--require", "touch within 1s at 10kPa", "--require",
+               "never at 12kPa", "--tolerance", "dh=0.5um")
+    assert d["empty"] and d["lower"] > d["upper"]
+    lower, upper = d["physical"]["lower"], d["physical"]["upper"]
+    mid = f"{(lower + upper) / 2:.4g}"
+    assert f"the nearest miss is dh = {mid} um" in d["miss"] and "not even an exact dh" in d["miss"], d["miss"]
+    r = cli("design", "--material", TRUTH, *GEOMETRY, "--temperature", "20..40C", "--require",
+            "touch within 1s at 10kPa", "--require", "never at 12kPa")
+    assert r.returncode == 0 and "no design meets this" in r.stdout, r.stdout
+    # Only a tolerance stands between: a dh tolerance that closes the gap is named.
+    d = design(TRUTH, *QUESTION[:-1], "dh=1.5um, pressure=10%")
+    exact = design(TRUTH, *QUESTION[:-1], "pressure=10%")
+    width = exact["physical"]["upper"] - exact["physical"]["lower"]
+    assert d["empty"] and f"a dh tolerance of +- {width / 2:.4g} um or less" in d["miss"], d["miss"]
+
+
+def test_one_sided_requirements_and_the_forms_a_user_writes():
+    d = design(TRUTH, "--temperature", "30", "--require", "touch at once at 30kPa")
+    assert d["upper"] == pytest.approx(point(TRUTH, 1.0, 30.0, 30.0)["h_0"], rel=1e-12) and d["lower"] == 0
+    d = design(TRUTH, "--temperature", "30", "--require", "No touch within 1 min at 5 kPa")
+    edge = d["physical"]["lower"]
+    assert point(TRUTH, edge, 5.0, 30.0)["t_star"] == pytest.approx(60.0, rel=1e-6)
+    assert d["physical"]["upper"] is None  # no upper edge (JSON null for infinity)
+    d = design(TRUTH, "--temperature", "30", "--require", "touch at 5kPa")  # at any time: dh <= h_inf
+    assert d["upper"] == pytest.approx(point(TRUTH, 1.0, 5.0, 30.0)["h_inf"], rel=1e-12)
+
+
+def test_bad_requests_are_refused_by_name():
+    cases = [
+        (["--require", "touch soon at 30kPa"], "--require 'touch soon at 30kPa': not a requirement"),
+        (["--require", "touch within 1 parsec at 30kPa"], "--require 'touch within 1 parsec at 30kPa'"),
+        (["--require", "touch within 1s at -3kPa"], "the pressure is not finite and > 0"),
+        ([], "give at least one --require"),
+        (["--require", "never at 5kPa", "--dh", "3um"], "--dh: the design finds dh"),
+        (["--require", "never at 5kPa", "--pressure", "3kPa"], "each --require names its pressure"),
+        (["--require", "never at 5kPa", "--tolerance", "dh=5%"], "give its tolerance as a length"),
+        (["--require", "never at 5kPa", "--tolerance", "height=1um"], "'height' is no tolerance the design takes"),
+        (["--require", "never at 5kPa", "--temperature", "40..20C"], "the range's end is not above its start"),
+        (["--require", "never at 5kPa", "--temperature", "-150..20C"], "outside its range"),
+    ]
+    for extra, words in cases:
+        r = cli("design", "--material", TRUTH, *GEOMETRY, *extra)
+        assert r.returncode == 2 and r.stdout == "" and words in r.stderr, (extra, r.stderr)
+
+
+def test_python_gives_the_commands_answer():
+    d = punchsweep.design(["touch within 1s at 30kPa", "never at 5kPa"], material=TRUTH, R="80um", l="250um", s=2,
+                          temperature="20..40C", tolerance={"dh": "0.5um", "pressure": "10%"})
+    assert d == design(TRUTH, *QUESTION)
+    with pytest.raises(ValueError, match="not a requirement"):
+        punchsweep.design("touch soon at 3kPa", material=TRUTH, R="80um", l="250um", s=2)
+
+
+def test_a_law_without_temperature_and_the_dimensionless_units():
+    """The standard linear solid in the paper's units: times in T_eps, pressures in E0*."""
+    r = cli("design", "--l", "0.75", "--T", "2.5", "--s", "2", "--require", "touch within 1 at 0.06",
+            "--format", "json")
+    assert r.returncode == 0, r.stderr
+    d = json.loads(r.stdout)
+    assert d["physical"]["unit"] == "R" and d["temperatures"] == []
+    check = cli("point", "--l", "0.75", "--T", "2.5", "--s", "2", "--pbar", "0.06", "--dh", repr(d["upper"]),
+                "--format", "json")
+    assert json.loads(check.stdout)["t_star"] == pytest.approx(1.0, rel=1e-6)
