@@ -120,6 +120,12 @@ void visit_point(const model::PointResult& r, std::string_view time_unit, PointF
   if (r.t_star_range) {
     fields.number("t_star_low", r.t_star_range->low);
     fields.number("t_star_high", r.t_star_range->high);
+    // How many corners of the box fall in each regime: t_star_high null with corners_never
+    // > 0 is "never at some corner", with corners_not_computed > 0 "not computed".
+    fields.number("corners_immediate", r.t_star_range->immediate);
+    fields.number("corners_delayed", r.t_star_range->delayed);
+    fields.number("corners_never", r.t_star_range->never);
+    fields.number("corners_not_computed", r.t_star_range->not_computed);
   }
   std::vector<double> column(r.series.size());
   for (std::size_t i = 0; i < r.series.size(); ++i) column[i] = r.series[i].t;
@@ -269,9 +275,20 @@ void write_table(std::ostream& out, const input::PointInputs& inputs, const mode
     }
   }
   if (r.t_star_range) {
-    const auto text = [](double t) { return std::isinf(t) ? std::string("never") : number(t); };
-    out << "  t* over the tolerances: " << text(r.t_star_range->low) << " to " << text(r.t_star_range->high) << " "
-        << inputs.time_unit << "\n";
+    const auto text = [&](double t) { return std::isinf(t) ? std::string("never") : number(t) + " " + inputs.time_unit; };
+    const model::TStarRange& b = *r.t_star_range;
+    out << "  t* over the tolerances: ";
+    if (b.not_computed > 0) {
+      out << "not computed";
+    } else {
+      out << text(b.low) << " to " << text(b.high);
+    }
+    std::string counts;
+    for (const auto& [n, name] : {std::pair{b.immediate, "immediate"}, std::pair{b.delayed, "delayed"},
+                                  std::pair{b.never, "never"}, std::pair{b.not_computed, "not computed"}}) {
+      if (n > 0) counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + name;
+    }
+    out << " (corners of the box: " << counts << ")\n";
   }
   for (const std::string& note : inputs.notes) out << "  note: " << note << "\n";
   // The series' columns: each head with its unit, 12 wide (15 for a long head).

@@ -99,6 +99,7 @@ py::dict point_command(const input::Keywords& keywords) {
   py::dict out = point_dict(run.result, run.inputs.time_unit);
   out["localization"] = run.inputs.problem.localization.spelling();
   out["time_unit"] = run.inputs.time_unit;
+  out["notes"] = py::tuple(py::cast(run.inputs.notes));
   py::dict physical, series, units;
   for (const app::PhysicalField& f : app::physical_fields(run.inputs, run.result)) {
     if (f.series) {

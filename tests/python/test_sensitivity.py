@@ -151,6 +151,16 @@ def test_the_range_over_tolerances_is_the_corners_extremes():
     # Wider: some corner never touches (the knife edge): the upper end is None (never).
     wide = punchsweep.point(dh="2um", pressure="2kPa", tolerance="dh=0.05um, pressure=5%", **p)
     assert wide.t_star_range[1] is None and wide.t_star_range[0] < r.t_star
+    # Issue 37 item 8: what None means is said, by the corners' regimes (each checked alone).
+    regimes = [punchsweep.point(dh=f"{d!r}um", pressure=f"{q!r}Pa", **p).regime
+               for d in (2.0 - 0.05, 2.0 + 0.05) for q in (2000 * 0.95, 2000 * 1.05)]
+    assert wide.corner_regimes == {k: regimes.count(k) for k in ("immediate", "delayed", "never")} | {"not_computed": 0}
+    assert wide.corner_regimes["never"] > 0 and r.corner_regimes == {"immediate": 0, "delayed": 4, "never": 0,
+                                                                     "not_computed": 0}
+    assert punchsweep.point(dh="2um", pressure="2kPa", **p).corner_regimes is None  # no box, no corners
+    # A box reaching below dh = 0 is clipped there, and the note reaches Python too.
+    low = punchsweep.point(dh="0.01um", pressure="2kPa", tolerance="dh=0.05um", **p)
+    assert low.notes and "below 0" in low.notes[0] and low.corner_regimes["immediate"] == 2
 
 
 @pytest.mark.parametrize("tolerance, message", [

@@ -143,9 +143,15 @@ TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, 
       *p.field(index[j]) = (corner >> j) & 1u ? x + tolerances[j].plus : x - tolerances[j].minus;
     }
     const double t = t_star_of(p.problem, *p.law, p.law_values);
+    if (std::isnan(t)) {
+      ++r.not_computed;
+      continue;
+    }
+    ++(t == 0.0 ? r.immediate : std::isinf(t) ? r.never : r.delayed);
     r.low = std::min(r.low, t);
     r.high = std::max(r.high, t);
   }
+  if (r.not_computed > 0) r.low = r.high = std::numeric_limits<double>::quiet_NaN();
   return r;
 }
 

@@ -61,11 +61,13 @@ struct Tolerance {
 
 /// The least and greatest t* over the box of tolerances (its 2^k corners, k <= 6: t* is
 /// monotone in dh, pbar, l and temperature, so the extremes lie at corners; 0 where a
-/// corner touches at once, +inf where one never touches). Throws std::invalid_argument
-/// naming a tolerance that takes its parameter out of range, or one on no real-valued
-/// parameter of the point.
+/// corner touches at once, +inf where one never touches), and how many corners fall in
+/// each regime; where a corner's t* cannot be computed, low and high are NaN (never a
+/// range that leaves it out). Throws std::invalid_argument naming a tolerance that takes
+/// its parameter out of range, or one on no real-valued parameter of the point.
 struct TStarRange {
   double low = 0.0, high = 0.0;
+  int immediate = 0, delayed = 0, never = 0, not_computed = 0;  ///< corners in each
 };
 TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
                         std::span<const Tolerance> tolerances);

@@ -97,7 +97,11 @@ class PointResult:
     dt_star_dpbar, dt_star_dl, dt_star_dC, dt_star_dT or dt_star_dtemperature, in the time
     unit per the input's scale; physical[...] has them per um, Pa, K) and the elasticities
     dlog_t_star_dlog_NAME; None where t* is not delayed or not smooth there. t_star_range:
-    (least, greatest) t* over point(tolerance="dh=0.05um, pressure=5%"), else None.
+    (least, greatest) t* over point(tolerance="dh=0.05um, pressure=5%"), else None (None
+    inside it: never at some corner, or, with corner_regimes["not_computed"] > 0, not
+    computed); corner_regimes: how many of the box's corners are immediate, delayed,
+    never and not_computed. notes: what reading the inputs changed (a tolerance box clipped
+    at dh = 0), as the command prints them.
     advisories: the physical advisories raised, "beyond_paraboloid, beyond_cap,
     large_strain" or a part ("" for none; cap_radius="30um" or cap_height=... enables
     beyond_cap), advisory_reason their sentence, strain Tabor's 0.2 f'(a) at the largest
@@ -118,6 +122,8 @@ class PointResult:
     units: dict = field(default_factory=dict)
     sensitivity: dict = field(default_factory=dict)
     t_star_range: tuple | None = None
+    corner_regimes: dict | None = None
+    notes: tuple = ()
     advisories: str = ""
     advisory_reason: str = ""
     strain: float | None = None
@@ -165,7 +171,10 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     raw = _core.point(keywords)
     sensitivity = {k: raw[k] for k in raw if k.startswith(("dt_star_d", "dlog_t_star_dlog_"))}
     bounds = (raw["t_star_low"], raw["t_star_high"]) if "t_star_low" in raw else None
-    return _result(PointResult, {**raw, "sensitivity": sensitivity, "t_star_range": bounds})
+    corners = ({k: int(raw[f"corners_{k}"]) for k in ("immediate", "delayed", "never", "not_computed")}
+               if "t_star_low" in raw else None)
+    return _result(PointResult, {**raw, "sensitivity": sensitivity, "t_star_range": bounds,
+                                 "corner_regimes": corners})
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
