@@ -25,6 +25,8 @@
 #include "io/crc32.hpp"
 #include "model/problem/localization.hpp"
 #include "model/laws/creep_laws.hpp"
+#include "model/laws/material.hpp"
+#include "model/numerics/number_text.hpp"
 #include "model/point/parameters.hpp"
 #include "reference/reference_point.hpp"
 #include "run/text_lines.hpp"
@@ -841,6 +843,54 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
   return problems;
 }
 
+// A material map's snapshot times where time.times is left at its default: 0 and up to 8
+// log-spaced times (one a decade where fewer) over the span in which the material creeps,
+// from 1% to 99% of the way from J(0) to J(inf) at the grid's warmest and coldest
+// temperature (a power law, which creeps without end: 1e-3 to 1e3 of its time scale), held
+// within 1 ms to a year, each to 2 significant digits. The default 0, 0.5, 1, 2, 5 is in T_eps, which a material's
+// seconds are not: a silicone whose creep ends in milliseconds, or a rubber creeping for
+// hours, got snapshots that missed all of it.
+std::vector<double> material_times(const sweep::SweepConfig& config) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  const std::size_t t_axis = config.grid.find(model::temperature_parameter().name);
+  for (const auto& material : config.materials) {
+    std::vector<std::vector<double>> at{{}};
+    if (material->shift() && t_axis < config.grid.rank()) {
+      const std::vector<double>& T = config.grid.axes[t_axis].values;
+      at = {{*std::min_element(T.begin(), T.end())}, {*std::max_element(T.begin(), T.end())}};
+    } else if (material->shift()) {
+      at = {{material->shift()->T_ref}};
+    }
+    for (const std::vector<double>& values : at) {
+      const std::unique_ptr<model::CreepLaw> law = material->make(values);
+      const double J0 = law->creep_initial(), Jinf = law->creep_final();
+      if (std::isfinite(Jinf)) {
+        lo = std::min(lo, law->time_at_creep(J0 + 0.01 * (Jinf - J0)));
+        hi = std::max(hi, law->time_at_creep(J0 + 0.99 * (Jinf - J0)));
+      } else {
+        lo = std::min(lo, 1e-3 * law->creep_time_scale());
+        hi = std::max(hi, 1e3 * law->creep_time_scale());
+      }
+    }
+  }
+  // Within the times a user waits: 1 ms to a year (a PLA creeps on for 1e16 s at 25 C).
+  const model::Unit* second = model::find_unit(model::Dimension::time, "s");
+  const model::Unit* unit = model::find_unit(model::Dimension::time, config.time_unit());
+  if (second && unit) {
+    lo = std::max(lo, 1e-3 / unit->si);
+    hi = std::min(hi, 3.15576e7 / unit->si);
+  }
+  if (!(lo > 0.0 && hi > lo && std::isfinite(hi))) return config.times;
+  const double decades = std::log10(hi / lo);
+  const int n = std::clamp(static_cast<int>(std::ceil(decades)) + 1, 2, 8);
+  std::vector<double> times{0.0};
+  for (int k = 0; k < n; ++k) {
+    const double t = std::stod(model::number_text(lo * std::pow(hi / lo, static_cast<double>(k) / (n - 1)), 2));
+    if (t > times.back()) times.push_back(t);
+  }
+  return times;
+}
+
 // Grid::points() must not wrap around; empty when it does not.
 std::string grid_size_problem(const map::Grid& grid) {
   constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
@@ -1013,8 +1063,13 @@ sweep::SweepConfig parse_sweep_options(const std::vector<std::string>& args, std
   config.config_path = cli.count("config") ? cli["config"].as<std::string>() : "";
   if (!config.config_path.empty()) config.input_files.push_back(config.config_path);
   config.dry_run = cli.count("dry-run") > 0;
-  const std::vector<Setting> settings = resolve_settings(cli, config.config_path);
+  std::vector<Setting> settings = resolve_settings(cli, config.config_path);
   std::vector<std::string> problems = apply_settings(settings, config);
+  if (Setting& times = settings[key_index(Fixed::time_times)];
+      problems.empty() && times.source == Source::default_value && !config.materials.empty()) {
+    config.times = material_times(config);
+    times.text = input::format_axis_values(config.times);
+  }
   if (problems.empty()) {
     if (std::string problem = grid_size_problem(config.grid); !problem.empty()) problems.push_back(problem);
   }

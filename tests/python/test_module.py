@@ -11,6 +11,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import h5py
 import numpy as np
 import pytest
 
@@ -587,3 +588,37 @@ def test_material_times_with_units_and_open_map_of_a_folder(tmp_path):
         m.J("1kPa")
     with pytest.raises(punchsweep.NotAMapError, match="is a folder, not a map file"):
         punchsweep.open_map(tmp_path)
+
+
+def test_a_material_maps_default_times_span_its_creep(tmp_path):
+    """Issue 37 item 8: a material map's snapshot times, left at their default, are 0 and
+    log-spaced times from 1% to 99% of the material's creep (J(0) -> J(inf)) at the grid's
+    coldest and warmest temperature, held to 1 ms .. a year, to 2 digits (not 0 .. 5 of its
+    time unit). The span here from the material's own J by bisection, not the engine's."""
+    from scipy.optimize import brentq
+
+    def span(material, temperature=None):
+        J = lambda t: float(material.J(t, temperature=temperature))  # noqa: E731
+        J0, Jinf = J(0.0), J(1e30)
+        return tuple(np.exp(brentq(lambda u: J(np.exp(u)) - (J0 + q * (Jinf - J0)), -80, 80, xtol=1e-13))
+                     for q in (0.01, 0.99))
+
+    def times(*args):
+        subprocess.run([BINARY, "sweep", *args, "--grid.l", "0.75", "--grid.dh", "0.01", "--grid.pbar", "5e-4",
+                        "--grid.s", "2", "--output", tmp_path / "m.h5", "--overwrite", "--quiet"], check=True)
+        with h5py.File(tmp_path / "m.h5") as f:
+            return f["time"][:]
+
+    silicone = REPO / "materials" / "silicone_elite_double32.ini"
+    lo, hi = span(punchsweep.Material(silicone))
+    t = times("--model.material", silicone)
+    lo = max(lo, 1e-3)
+    n = min(max(int(np.ceil(np.log10(hi / lo))) + 1, 2), 8)
+    want = [0.0] + [float(f"{v:.2g}") for v in np.geomspace(lo, hi, n)]
+    assert t.tolist() == want and t[-1] < 1.0  # its creep is over within a second
+    # The PLA creeps for 1e16 s at 25 C: held to 1 ms .. a year (3.15576e7 s).
+    pla = REPO / "materials" / "pla_prusament_chapuis2025.ini"
+    t = times("--model.material", pla, "--grid.temperature", "25,85")
+    assert t[0] == 0 and t[1] == 1e-3 and t[-1] == float(f"{3.15576e7:.2g}") and len(t) == 9
+    # Given times stay as given.
+    assert times("--model.material", silicone, "--time.times", "0,1s,2s").tolist() == [0, 1, 2]
