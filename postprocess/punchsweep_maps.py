@@ -381,10 +381,12 @@ def unit_suffix(ds, name: str) -> str:
 # --at AXIS=VALUE: nearest grid values
 
 
-def parse_at(items: list[str] | None, ds) -> dict[str, float | str]:
+def parse_at(items: list[str] | None, ds, lists: bool = False) -> dict[str, float | str | list]:
     """['l=0.75', 'T=2.5'] -> {'l': 0.75, 'T': 2.5} for the axes of the map `ds` (a categorical
-    axis keeps the label: 'material=steel' -> 'steel'); MapError for bad syntax, axis or number."""
-    at: dict[str, float | str] = {}
+    axis keeps the label: 'material=steel' -> 'steel'); MapError for bad syntax, axis or number.
+    With `lists`, 'temperature=20,30,40' gives a list (the panels of a facet axis); without,
+    a list is refused."""
+    at: dict[str, float | str | list] = {}
     for item in items or []:
         name, eq, text = item.partition("=")
         name, text = name.strip(), text.strip()
@@ -392,10 +394,12 @@ def parse_at(items: list[str] | None, ds) -> dict[str, float | str]:
             raise MapError(f"--at '{item}' is not AXIS=VALUE (axes of this map: "
                            f"{', '.join(axes(ds))})")
         parse_axis(ds, name, "--at")
-        if is_categorical(ds, name):
-            value: float | str = text
-        else:
-            value = _at_number(ds, name, text)
+        parts = [p.strip() for p in text.split(",")] if "," in text else [text]
+        if len(parts) > 1 and not lists:
+            raise MapError(f"--at {name}={text}: one value per axis here (a list of values picks the "
+                           f"panels of a faceted axis, in regime_map.py)")
+        values = [p if is_categorical(ds, name) else _at_number(ds, name, p) for p in parts]
+        value: float | str | list = values if len(parts) > 1 else values[0]
         if name in at:
             raise MapError(f"--at gives {name} twice")
         at[name] = value

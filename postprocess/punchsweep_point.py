@@ -62,6 +62,12 @@ def _json_form(result) -> dict:
         elif k == "t_star_range":
             if v is not None:
                 out["t_star_low"], out["t_star_high"] = v
+        elif k == "corner_regimes":
+            if v is not None:
+                out.update({f"corners_{name}": n for name, n in v.items()})
+        elif k == "notes":
+            if v:
+                out[k] = list(v)  # the JSON has them only where reading the inputs changed one
         elif k == "series":
             out[k] = listed(v)
         elif k == "physical":

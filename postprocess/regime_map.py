@@ -66,9 +66,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                    help="axis across the picture: a numeric axis of the map, e.g. pbar (l, dh "
                         "in R; pbar in E0/(1-nu^2); T, s dimensionless)")
     p.add_argument("--y", required=True, metavar="AXIS", help="axis up the picture (as --x)")
-    pm.add_at_option(p, "fix each axis that is not --x, --y or --facet, e.g. l=0.75 T=2.5 s=2")
+    pm.add_at_option(p, "fix each axis that is not --x, --y or --facet, e.g. l=0.75 T=2.5 s=2; a list "
+                        "(temperature=20,30,40) draws a panel at each of those values of that axis")
     p.add_argument("--facet", metavar="AXIS",
-                   help="draw one panel per grid value of this axis (shared legend)")
+                   help="draw one panel per grid value of this axis (shared legend); with --at AXIS=a,b,c "
+                        "only at those")
     p.add_argument("--no-contours", action="store_true",
                    help="leave out the t* contour lines (t* in T_eps, or the material's time unit)")
     p.add_argument("--touch-within", metavar="TIME",
@@ -254,8 +256,10 @@ class Slice:
     bem_t_star: np.ndarray
 
 
-def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed]) -> list[Slice]:
-    """The panels' arrays (Slice), one per facet value or one without --facet."""
+def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed],
+           panels: list[int] | None = None) -> list[Slice]:
+    """The panels' arrays (Slice), one per facet value (those at `panels`, grid indices, where
+    given) or one without --facet."""
     sel = {name: f.index for name, f in fixed.items()}
     order = ([facet] if facet else []) + [y, x]
 
@@ -271,8 +275,9 @@ def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed]) ->
     bem_t = take("bem_t_star", np.nan).astype(float)
     if facet is None:
         return [Slice(None, regime, valid, t_star, bem, bem_t)]
-    return [Slice(v, regime[k], valid[k], t_star[k], bem[k], bem_t[k])
-            for k, v in enumerate(pm.grid_values(ds, facet))]
+    values = pm.grid_values(ds, facet)
+    return [Slice(values[k], regime[k], valid[k], t_star[k], bem[k], bem_t[k])
+            for k in (range(len(values)) if panels is None else panels)]
 
 
 def bem_answers(ds, valid: np.ndarray, bem: np.ndarray) -> np.ndarray:
@@ -341,7 +346,7 @@ def title_lines(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed
 
 
 def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = None,
-           contours: bool = True, within: tuple[float, str] | None = None):
+           contours: bool = True, within: tuple[float, str] | None = None, panels: list[int] | None = None):
     """Draws the map; returns (figure, panels). The figure size and dpi are fixed.
 
     `within` = (time in the map's time unit, its text) draws the --touch-within view (no
@@ -355,7 +360,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
     from matplotlib.patches import Patch, Rectangle
     from matplotlib.ticker import MaxNLocator
 
-    data = slices(ds, x, y, facet, fixed)
+    data = slices(ds, x, y, facet, fixed, panels)
     codes, valid_code = pm.flags(ds, "regime"), pm.flags(ds, "valid").code(pm.VALID)
     xv, yv = ds[x].values.astype(float), ds[y].values.astype(float)
     xlog, ylog = pm.is_log(ds, x), pm.is_log(ds, y)
@@ -489,8 +494,18 @@ def main(argv: list[str]) -> int:
     args = parse_args(argv)
     out = pm.check_output(args.output, inputs=[args.map])
     with pm.open_map(args.map) as ds:
+        at = pm.parse_at(args.at, ds, lists=True)
+        # --at AXIS=a,b,c: those values of AXIS, a panel each (AXIS is then the facet).
+        listed = [name for name, v in at.items() if isinstance(v, list)]
+        if len(listed) > 1 or (listed and args.facet and listed[0] != args.facet):
+            raise pm.MapError(f"--at {listed[-1]}=...: a list of values picks the panels of the facet axis, "
+                              f"{'which is ' + args.facet if args.facet and listed[-1] != args.facet else 'one axis'}; "
+                              f"give the other axes one value each")
+        panels = None
+        if listed:
+            args.facet = listed[0]
+            panels = list(dict.fromkeys(pm.nearest_index(ds, args.facet, v) for v in at.pop(args.facet)))
         check_axes(ds, args.x, args.y, args.facet)
-        at = pm.parse_at(args.at, ds)
         within = None
         if args.touch_within is not None:
             if "t_star" not in ds:
@@ -503,7 +518,7 @@ def main(argv: list[str]) -> int:
         for f in fixed.values():
             print(f.message)
         fig, _ = render(ds, args.x, args.y, fixed, args.facet, contours=not args.no_contours,
-                        within=within)
+                        within=within, panels=panels)
         pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.map])
     print(f"regime_map.py: wrote {out}")
     return 0

@@ -233,3 +233,36 @@ def test_critical_dh_of_a_far_creeping_material_reads(ems_map, tmp_path):
     # --linear-dh: the old view, from 0 to just above h_inf.
     fig = critical_dh.render(ds, "temperature", fixed, [1.0, 60.0, 3600.0], scale="linear")
     assert fig.axes[0].get_yscale() == "linear" and fig.axes[0].get_ylim()[0] == 0
+
+
+def test_regime_map_facets_a_subset_of_an_axis(tmp_path):
+    """Issue 37 item 8: --at temperature=30,70 draws those temperatures, a panel each (with
+    or without --facet temperature), and says which grid values they took; a list on an axis
+    that is not the facet, or two lists, are refused by name."""
+    path = tmp_path / "t.h5"
+    pla = REPO / "materials" / "pla_prusament_chapuis2025.ini"
+    subprocess.run([BINARY, "sweep", "--model.material", str(pla), "--grid.l", "0.75", "--grid.dh",
+                    "linspace(0.005, 0.05, 4)", "--grid.pbar", "logspace(2e-4, 2e-3, 4)", "--grid.s", "2",
+                    "--grid.temperature", "30,40,50,60,70", "--quantities", "regime", "--quiet", "--output", str(path)],
+                   check=True)
+    ds = pm.open_map(path)
+    for extra in ([], ["--facet", "temperature"]):
+        fixed = {k: pm.resolve_at(ds, {"l": 0.75, "s": 2}, free=[], reserved={"pbar": "", "dh": "", "temperature": ""})[k]
+                 for k in ("l", "s")}
+        want = [(T, regime_map.slices(ds, "pbar", "dh", "temperature", fixed)[k].regime)
+                for k, T in enumerate(pm.grid_values(ds, "temperature")) if T in (30, 70)]
+        _, panels = regime_map.render(ds, "pbar", "dh", fixed, "temperature", panels=[0, 4])
+        assert len(panels) == 2
+        got = regime_map.slices(ds, "pbar", "dh", "temperature", fixed, [0, 4])
+        assert [d.value for d in got] == [T for T, _ in want]
+        assert all((d.regime == r).all() for d, (_, r) in zip(got, want))
+        out = tmp_path / f"f{len(extra)}.png"
+        rc, stdout, err = call(regime_map, path, "--x", "pbar", "--y", "dh", "--at", "l=0.75", "s=2",
+                               "temperature=30,70", *extra, "-o", out)
+        assert rc == 0 and out.stat().st_size > 10_000, err
+    rc, _, err = call(regime_map, path, "--x", "pbar", "--y", "temperature", "--at", "l=0.75", "s=2",
+                      "dh=0.005,0.05", "--facet", "s", "-o", tmp_path / "x.png")
+    assert rc == 2 and "a list of values picks the panels of the facet axis, which is s" in err, err
+    rc, _, err = call(regime_map, path, "--x", "pbar", "--y", "dh", "--at", "l=0.75", "s=2,2", "temperature=30,70",
+                      "-o", tmp_path / "x.png")
+    assert rc == 2 and "a list of values picks the panels of the facet axis" in err, err

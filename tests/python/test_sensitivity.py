@@ -9,6 +9,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import h5py
@@ -197,3 +198,21 @@ def test_a_tolerance_below_dh_0_is_clipped_there_and_said_so_in_the_users_units(
     plain = json.loads(subprocess.run(base + ["--dh", "1um", "--tolerance", "dh=0.5um"], capture_output=True,
                                       text=True, check=True).stdout)
     assert "notes" not in plain  # within the range: no note, the output as before
+
+
+def test_the_modules_point_in_json_form_is_the_commands_json():
+    """The scripts read a point through the module where it is built (punchsweep_point's
+    _json_form) or the command's JSON: the same keys and numbers, the box's corners and a
+    clipped box's notes included (issue 37 items 6 and 8)."""
+    sys.path.insert(0, str(REPO / "postprocess"))
+    from punchsweep_point import _json_form
+    args = dict(material=SILICONE, R="50um", l="150um", s=2, dh="0.01um", pressure="2kPa",
+                tolerance="dh=0.05um, pressure=5%")
+    r = subprocess.run([BINARY, "point", *[x for k, v in args.items() for x in (f"--{k}", str(v))], "--format", "json"],
+                       capture_output=True, text=True, check=True)
+    command = json.loads(r.stdout)
+    module = _json_form(punchsweep.point(**args))
+    assert set(module) == set(command)
+    for k in ("t_star_low", "t_star_high", "corners_immediate", "corners_delayed", "corners_never", "notes",
+              "regime", "t_star"):
+        assert module[k] == command[k], k
