@@ -13,7 +13,9 @@ from the map's h_0 and h_inf variables, which do not depend on dh; the script ch
 they agree across the dh axis (and h_0 across T) and says so on stderr if they do not.
 
 With --touch-by t1,t2,...: also the height difference below which level 2 touches by each
-time t_k (one dash pattern each), interpolated along the dh axis of the map's t_star in
+time t_k (one dash pattern each; on a map made with a tolerance box, `sweep --tolerance`, a
+shaded band about it from where it touches by t_k at every corner of the box to where at
+some), interpolated along the dh axis of the map's t_star in
 log t* (from h_0, where t* leaves 0, never below it); where even the grid's largest dh
 touches by t_k the curve stops, marked ^ on that dh. Against
 the temperature of a material map (--against temperature) this is the chart that moves:
@@ -138,20 +140,23 @@ def touch_by_curve(dh: np.ndarray, t_star: np.ndarray, t_target: float, h0: floa
     return float(start + w * (dh[k + 1] - start))
 
 
-def touch_by_curves(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float]) -> np.ndarray:
+def touch_by_curves(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float],
+                    variable: str = "t_star") -> np.ndarray:
     """(time, T, s, x): touch_by_curve over the map's dh axis for each target time (from the
-    map's h_0 at each point, its median over dh, where t* leaves 0)."""
+    map's h_0 at each point, its median over dh, where t* leaves 0). `variable`: t_star, or
+    the ends of a map's tolerance box, t_star_high (touches by then at every corner of the
+    box) and t_star_low (at some corner), which start from their own last 0."""
     sel = {name: f.index for name, f in fixed.items()}
     for name in (CURVE_AXIS, PANEL_AXIS):
         if name in sel:
             sel[name] = [sel[name]]
-    names = ["t_star"] + (["h_0"] if "h_0" in ds.variables else [])
+    names = [variable] + (["h_0"] if "h_0" in ds.variables and variable == "t_star" else [])
     cut = ds[names].isel(sel)
     for name in (CURVE_AXIS, PANEL_AXIS):
         if name not in cut.dims:
             cut = cut.expand_dims(name)
     order = ("dh", CURVE_AXIS, PANEL_AXIS, against)
-    t = cut["t_star"].transpose(*order).values
+    t = cut[variable].transpose(*order).values
     h0 = np.full(t.shape[1:], np.nan)
     if "h_0" in cut:
         with warnings.catch_warnings():
@@ -252,6 +257,10 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     x, T, s, h0, hinf = critical_curves(ds, against, fixed)
     times = times or []
     touch = touch_by_curves(ds, against, fixed, times) if times else None
+    # Over a map's tolerance box: from touching by t at every corner to at some corner.
+    band = ((touch_by_curves(ds, against, fixed, times, "t_star_high"),
+             touch_by_curves(ds, against, fixed, times, "t_star_low"))
+            if times and "t_star_high" in ds.variables else None)
     time_unit = pm.unit_tex(pm.units(ds, "t_star"))
     has_curves, has_panels = CURVE_AXIS in pm.axes(ds), PANEL_AXIS in pm.axes(ds)
     n = len(s)
@@ -295,6 +304,9 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
                 # Beyond the grid's largest dh the curve stops, with a mark on the top edge.
                 ax.plot(x, np.where(np.isinf(curve), np.nan, curve), color=t_colours[j], lw=1.6,
                         ls=TOUCH_STYLES[i % len(TOUCH_STYLES)])
+                if band is not None:
+                    every, some = (np.where(np.isinf(b[i, j, k]), dh_top, b[i, j, k]) for b in band)
+                    ax.fill_between(x, every, some, color=t_colours[j], alpha=0.2, lw=0)
                 above = np.isinf(curve)
                 if above.any():
                     ax.plot(x[above], np.full(above.sum(), dh_top), ls="none", marker="^", ms=6,
@@ -330,6 +342,10 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     legend_colour = t_colours[0] if len(T) == 1 else "black"
     handles += [Line2D([], [], color=legend_colour, lw=1.6, ls=TOUCH_STYLES[i % len(TOUCH_STYLES)],
                        label=f"touches by t = {t:g} {time_unit}") for i, t in enumerate(times)]
+    if band is not None:
+        handles.append(Patch(facecolor=legend_colour, alpha=0.2,
+                             label="touches by then at some\nbut not every corner of the\ntolerance box: "
+                                   + str(ds.attrs.get("tolerance", ""))))
     if touch is not None and np.isinf(touch).any():
         handles.append(Line2D([], [], color=legend_colour, ls="none", marker="^", ms=6,
                               label="touches by then even at the grid's\nlargest "

@@ -36,6 +36,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -254,6 +255,12 @@ class Slice:
     t_star: np.ndarray
     bem: np.ndarray
     bem_t_star: np.ndarray
+    # Over the map's box of tolerances (output.tolerance), where it has one: the regimes and
+    # t* at the box's ends (else None).
+    regime_low: np.ndarray | None = None
+    regime_high: np.ndarray | None = None
+    t_star_low: np.ndarray | None = None
+    t_star_high: np.ndarray | None = None
 
 
 def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed],
@@ -273,11 +280,28 @@ def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed],
     t_star = take("t_star", np.nan).astype(float)
     bem = take("bem_regime", pm.flags(ds, "regime").code(pm.NOT_COMPUTED))
     bem_t = take("bem_t_star", np.nan).astype(float)
+    box = [take(name, None) if name in ds else None for name in ("regime_low", "regime_high")] + \
+          [take(name, np.nan).astype(float) if name in ds else None for name in ("t_star_low", "t_star_high")]
     if facet is None:
-        return [Slice(None, regime, valid, t_star, bem, bem_t)]
+        return [Slice(None, regime, valid, t_star, bem, bem_t, *box)]
     values = pm.grid_values(ds, facet)
-    return [Slice(values[k], regime[k], valid[k], t_star[k], bem[k], bem_t[k])
+    return [Slice(values[k], regime[k], valid[k], t_star[k], bem[k], bem_t[k],
+                  *[None if b is None else b[k] for b in box])
             for k in (range(len(values)) if panels is None else panels)]
+
+
+def tolerance_band(ds, d: Slice, within: tuple[float, str] | None) -> np.ndarray | None:
+    """Cells whose regime (or --touch-within class) differs between the ends of the map's box
+    of tolerances: the answer there depends on where in the box the part falls. None for a
+    map without a box."""
+    if d.regime_low is None:
+        return None
+    low, high = np.asarray(d.regime_low), np.asarray(d.regime_high)
+    if within is not None:
+        low, high = touch_within(ds, low, d.t_star_low, within[0]), touch_within(ds, high, d.t_star_high, within[0])
+    computed = (low != pm.flags(ds, "regime").code(pm.NOT_COMPUTED)) & \
+               (high != pm.flags(ds, "regime").code(pm.NOT_COMPUTED))
+    return computed & (low != high)
 
 
 def bem_answers(ds, valid: np.ndarray, bem: np.ndarray) -> np.ndarray:
@@ -394,7 +418,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
                             width_ratios=[PANEL_SIZE[0]] * ncols + [LEGEND_WIDTH])
     panels: list[Panel] = []
     with_contours = []
-    any_invalid = any_missing = any_bem = False
+    any_invalid = any_missing = any_bem = any_band = False
     first = None
     for k, (d, (answered, regime, valid, t_star)) in enumerate(zip(data, shown)):
         row, col = divmod(k, ncols)
@@ -422,6 +446,13 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
                      for j, i in zip(*np.nonzero(bad))]
             ax.add_collection(PatchCollection(rects, facecolor="none", edgecolor="0.35",
                                               hatch="///", linewidth=0))
+        band = tolerance_band(ds, d, within)
+        if band is not None and band.any():
+            any_band = True
+            rects = [Rectangle((xe[i], ye[j]), xe[i + 1] - xe[i], ye[j + 1] - ye[j])
+                     for j, i in zip(*np.nonzero(band))]
+            ax.add_collection(PatchCollection(rects, facecolor="none", edgecolor="black",
+                                              hatch="xx", linewidth=0))
         ax.set_xlim(xe[0], xe[-1])
         ax.set_ylim(ye[0], ye[-1])
         if xlog:
@@ -464,6 +495,10 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
     if any_bem:
         handles.append(Patch(facecolor=pm.REGIME_COLOURS["delayed"], edgecolor="0.15", hatch="..",
                              linewidth=0, label="model invalid, the\nBEM's regime: full\ncolour, dotted"))
+    if any_band:
+        box = "\n".join(textwrap.wrap(str(ds.attrs.get("tolerance", "")), 22))
+        handles.append(Patch(facecolor="white", edgecolor="black", hatch="xx", linewidth=0,
+                             label=f"depends on where in\nthe tolerance box:\n{box}"))
     if any_missing:
         handles.append(Patch(facecolor=pm.REGIME_COLOURS[pm.NOT_COMPUTED],
                              label="not computed" if within is None else "not computed,\nor $t^*$ unknown"))

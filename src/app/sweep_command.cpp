@@ -108,7 +108,7 @@ void print_dry_run(const sweep::SweepConfig& config, const map::Tiling& tiling, 
   // The model is calibrated without the reference, which would swamp it; the reference is
   // calibrated on its own.
   const sweep::TileEvaluator evaluator(config.grid, *config.creep_law, config.C, config.times, config.quantities,
-                                       config.reference, config.loading, config.localization);
+                                       config.reference, config.loading, config.localization, config.tolerance);
   const io::MapLayout layout = layout_of(config, tiling, evaluator);
   std::printf("punchsweep sweep --dry-run\n");
   for (const map::Axis& axis : config.grid.axes) {
@@ -325,7 +325,7 @@ int run_sweep_command(const std::vector<std::string>& args) {
   int code = 0;
   try {
     const sweep::TileEvaluator evaluator(config.grid, *config.creep_law, config.C, config.times, config.quantities,
-                                         config.reference, config.loading, config.localization);
+                                         config.reference, config.loading, config.localization, config.tolerance);
     const io::MapLayout layout = layout_of(config, tiling, evaluator);
     // Rank 0 measures what the map and its journal will take (with the run's own evaluator,
     // whose caches the run then keeps) and refuses a run whose file system cannot hold them,

@@ -499,15 +499,14 @@ void add_tolerance_option(po::options_description& opts) {
       "percentage of the input, a number in its scale, or a number with a unit");
 }
 
-std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, PointInputs& inputs) {
-  std::vector<model::Tolerance> out;
-  if (!vm.count("tolerance")) return out;
-  const std::string all = vm["tolerance"].as<std::string>();
+std::vector<model::StatedTolerance> parse_tolerances(const std::string& all, const std::string& key,
+                                                     const std::function<const model::Parameter*(std::string_view)>& known,
+                                                     const PhysicalScales& scales, const std::string& names) {
+  std::vector<model::StatedTolerance> out;
   const auto bad = [&](const std::string& entry, const std::string& why) {
-    return UsageError("--tolerance '" + entry + "': " + why +
-                      " (valid: NAME=VALUE, NAME one of l, dh, pbar or pressure, C, and the law's T or temperature; "
-                      "VALUE >= 0: a percentage such as 5%, a number in the input's scale, or one with a unit such as "
-                      "0.05um or 200Pa)");
+    return UsageError(key + " '" + entry + "': " + why + " (valid: NAME=VALUE, NAME one of " + names +
+                      "; VALUE >= 0: a percentage such as 5%, a number in the input's scale, or one with a unit such "
+                      "as 0.05um or 200Pa)");
   };
   std::size_t start = 0;
   while (start <= all.size()) {
@@ -526,45 +525,63 @@ std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, Point
     name.erase(name.find_last_not_of(" \t") + 1);
     text.erase(0, text.find_first_not_of(" \t"));
     if (name == "pressure") name = std::string(model::kPressure);
-    const model::Parameter* parameter = nullptr;
-    double value = 0.0;
-    for (const auto& [p, v] : inputs.values) {
-      if (p->name == name && !p->integer) {
-        parameter = p;
-        value = v;
-      }
-    }
-    if (parameter == nullptr) throw bad(entry, "'" + name + "' is no real-valued input of this point");
-    for (const model::Tolerance& given : out) {
+    const model::Parameter* parameter = known(name);
+    if (parameter == nullptr || parameter->integer) throw bad(entry, "'" + name + "' is no real-valued input of this point");
+    for (const model::StatedTolerance& given : out) {
       if (given.parameter == parameter) throw bad(entry, "'" + name + "' is given twice");
     }
-    double tol = 0.0;
+    model::StatedTolerance tol{parameter, 0.0, false, text};
     try {
       if (!text.empty() && text.back() == '%') {
-        tol = std::abs(value) * parse_real(text.substr(0, text.size() - 1), "--tolerance") / 100.0;
+        tol.relative = true;
+        tol.width = parse_real(text.substr(0, text.size() - 1), key) / 100.0;
       } else if (parameter->name == model::temperature_parameter().name) {
         const std::string unit = text.substr(std::min(text.find_first_not_of("0123456789.eE+-"), text.size()));
         if (!(unit.empty() || unit == "K" || unit == "degC" || unit == "C")) throw UsageError("not a temperature difference");
-        tol = parse_real(text.substr(0, text.size() - unit.size()), "--tolerance");
-      } else if (const std::optional<Scale> scale = scale_of(parameter->scale, inputs.scales)) {
-        tol = read_scaled(text, *scale);
+        tol.width = parse_real(text.substr(0, text.size() - unit.size()), key);
+      } else if (const std::optional<Scale> scale = scale_of(parameter->scale, scales)) {
+        tol.width = read_scaled(text, *scale);
       } else {
-        tol = parse_real(text, "--tolerance");
+        tol.width = parse_real(text, key);
       }
     } catch (const UsageError& e) {
       throw bad(entry, e.what());
     } catch (const std::invalid_argument& e) {
       throw bad(entry, e.what());
     }
-    if (!(std::isfinite(tol) && tol >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
-    // Below a range that starts at 0 (dh >= 0): the box's low side at 0, and said so.
-    double minus = tol;
-    if (value - tol < 0.0 && parameter->admits(0.0) && !parameter->admits(-std::numeric_limits<double>::denorm_min())) {
-      minus = value;
-      inputs.notes.push_back("--tolerance " + entry + ": " + name + " minus " + text + " is below 0; the box's low " +
-                             name + " is taken at 0");
+    if (!(std::isfinite(tol.width) && tol.width >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
+    out.push_back(tol);
+  }
+  return out;
+}
+
+std::vector<model::Tolerance> read_tolerances(const po::variables_map& vm, PointInputs& inputs) {
+  std::vector<model::Tolerance> out;
+  if (!vm.count("tolerance")) return out;
+  const std::string all = vm["tolerance"].as<std::string>();
+  const auto value_of = [&](const model::Parameter* p) {
+    for (const auto& [q, v] : inputs.values) {
+      if (q == p) return v;
     }
-    out.push_back({parameter, minus, tol});
+    return 0.0;
+  };
+  const auto known = [&](std::string_view name) -> const model::Parameter* {
+    for (const auto& [p, v] : inputs.values) {
+      if (p->name == name) return p;
+    }
+    return nullptr;
+  };
+  for (const model::StatedTolerance& t :
+       parse_tolerances(all, "--tolerance", known, inputs.scales,
+                        "l, dh, pbar or pressure, C, and the law's T or temperature")) {
+    bool clipped = false;
+    out.push_back(t.at(value_of(t.parameter), &clipped));
+    // Below a range that starts at 0 (dh >= 0): the box's low side at 0, and said so.
+    if (clipped) {
+      const std::string name(t.parameter->name);
+      inputs.notes.push_back("--tolerance " + name + "=" + t.text + ": " + name + " minus " + t.text +
+                             " is below 0; the box's low " + name + " is taken at 0");
+    }
   }
   return out;
 }

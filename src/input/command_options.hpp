@@ -178,6 +178,14 @@ std::vector<double> read_real_list(const boost::program_options::variables_map& 
 /// is known (0.05um, 200Pa; a temperature in K or degC, a difference). Empty without the
 /// option. Throws UsageError naming the entry and what is valid.
 void add_tolerance_option(boost::program_options::options_description& opts);
+/// The entries of a tolerance text "NAME=VALUE, ..." (`key` names it in messages: the
+/// option or config key), each on a real-valued parameter `known` admits (pressure stands
+/// for pbar), VALUE a percentage (relative), a number in the parameter's scale or one with
+/// a unit where `scales` knows it (a temperature's in K or degC, a difference). Throws
+/// UsageError naming the entry and what is valid (`names`: the valid NAMEs, for it).
+std::vector<model::StatedTolerance> parse_tolerances(const std::string& text, const std::string& key,
+                                                     const std::function<const model::Parameter*(std::string_view)>& known,
+                                                     const PhysicalScales& scales, const std::string& names);
 /// A box that reaches below 0 on a parameter whose range starts at 0 (dh: the two levels at
 /// one height) is clipped there, with a note in `inputs.notes`.
 std::vector<model::Tolerance> read_tolerances(const boost::program_options::variables_map& vm, PointInputs& inputs);

@@ -45,7 +45,7 @@ constexpr std::array<const char*, 6> kSections{"grid", "model", "time", "output"
 // resolved_text, after the [grid] keys.
 enum class Fixed {
   none,  // a [grid] key: a model parameter's axis
-  grid_pressure, model_R, model_C, model_creep_law, model_material, model_load_table, model_localization, time_times, output_file, output_quantities,
+  grid_pressure, model_R, model_C, model_creep_law, model_material, model_load_table, model_localization, time_times, output_file, output_quantities, output_tolerance,
   run_chunk, run_quiet, run_resume, run_overwrite,
   reference_method, reference_grid, reference_sample, reference_seed
 };
@@ -424,6 +424,34 @@ std::vector<KeySpec> make_keys() {
                     return std::vector<std::string>{std::string("output.quantities = ") +
                                                     (config.quantities == map::Quantities::full ? "full" : "regime")};
                   }});
+  keys.push_back({"output", "tolerance", "LIST", "",
+                  "a box of tolerances about every point, e.g. 'dh=0.5um, pressure=10%': the map adds t* at the "
+                  "box's ends and the regimes there (t_star_low, t_star_high, regime_low, regime_high; where the two "
+                  "regimes agree, the regime holds over the box); empty: none",
+                  "empty, or NAME=VALUE, ... (at most 6) with NAME an axis of the grid (l, dh, pbar or pressure, the "
+                  "law's T or temperature) or C, VALUE >= 0: a percentage, a number in the axis's scale, or one with "
+                  "a unit (0.5um, 2kPa, 1K)",
+                  Fixed::output_tolerance, nullptr,
+                  [](const std::string& text, const KeyContext& c, Config& config) {
+                    config.tolerance.clear();
+                    config.tolerance_text = text;
+                    if (text.empty()) return std::string();
+                    try {
+                      config.tolerance = input::parse_tolerances(
+                          text, "output.tolerance", [](std::string_view name) { return model::find_parameter(name); },
+                          c.scales, "l, dh, pbar or pressure, C, T, temperature");
+                    } catch (const UsageError& e) {
+                      return std::string(e.what());
+                    }
+                    if (config.tolerance.size() > 6) return std::string("at most 6 tolerances (64 corners)");
+                    return std::string();
+                  },
+                  {},
+                  // Maps without a box keep their identity.
+                  [](const Config& config) {
+                    if (config.tolerance_text.empty()) return std::vector<std::string>{};
+                    return std::vector<std::string>{"output.tolerance = " + config.tolerance_text};
+                  }});
   const auto chunk_text = [](const Config& config) {
     return config.chunk == sweep::kAutoChunk ? std::string("auto") : std::to_string(config.chunk);
   };
@@ -525,9 +553,10 @@ struct Shortcut {
   bool takes_value;  // false: a flag that sets the key to true
 };
 
-constexpr std::array<Shortcut, 8> kShortcuts{{
+constexpr std::array<Shortcut, 9> kShortcuts{{
     {"output", Fixed::output_file, true},
     {"quantities", Fixed::output_quantities, true},
+    {"tolerance", Fixed::output_tolerance, true},
     {"chunk", Fixed::run_chunk, true},
     {"resume", Fixed::run_resume, false},
     {"overwrite", Fixed::run_overwrite, false},
@@ -591,6 +620,9 @@ po::options_description command_line_options() {
       ("quiet", "same as --run.quiet true: no progress output")
       ("quantities", po::value<std::string>()->value_name("WHAT"),
        "same as --output.quantities: regime or full; default full")
+      ("tolerance", po::value<std::string>()->value_name("LIST"),
+       "same as --output.tolerance: a box of tolerances about every point ('dh=0.5um, pressure=10%'); the map "
+       "adds t_star_low, t_star_high, regime_low, regime_high; default none")
       ("chunk", po::value<std::string>()->value_name("N"),
        "same as --run.chunk: target values per tile and HDF5 chunk (points x times with time series); an "
        "integer >= 1; default 4096")
@@ -729,7 +761,8 @@ std::vector<Setting> resolve_settings(const po::variables_map& cli, const std::s
 
 // Whether key `spec` reads values whose unit depends on model.R or the material: read after them.
 bool reads_scaled_values(const KeySpec& spec) {
-  return spec.fixed == Fixed::none || spec.fixed == Fixed::grid_pressure || spec.fixed == Fixed::time_times;
+  return spec.fixed == Fixed::none || spec.fixed == Fixed::grid_pressure || spec.fixed == Fixed::time_times ||
+         spec.fixed == Fixed::output_tolerance;
 }
 
 // Fills `config` from the settings; returns one line per bad value, in the keys' order.
@@ -829,6 +862,30 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
         }
       }
       config.grid.axes.push_back(axis);
+    }
+  }
+  // A tolerance is on an axis of this map's grid, or on C, and its box stays within the
+  // parameter's range about every value of the grid.
+  for (const model::StatedTolerance& t : config.tolerance) {
+    const std::size_t k = key_index(Fixed::output_tolerance);
+    const std::string head = dotted(keys()[k]) + " = " + settings[k].text + ": ";
+    const std::size_t a = config.grid.find(t.parameter->name);
+    if (t.parameter->name != "C" && a == config.grid.rank()) {
+      problems.push_back(head + std::string(t.parameter->name) + " is no axis of this map; valid range: " +
+                         keys()[k].range);
+      continue;
+    }
+    for (const double v : a < config.grid.rank() ? config.grid.axes[a].values : std::vector<double>{config.C}) {
+      const model::Tolerance box = t.at(v);
+      for (const double corner : {v - box.minus, v + box.plus}) {
+        if (!t.parameter->admits(corner)) {
+          problems.push_back(head + "about " + std::string(t.parameter->name) + " = " + input::format_axis_value(v) +
+                             " the box reaches " + input::format_axis_value(corner) + ", outside its range: " +
+                             std::string(t.parameter->range));
+          break;
+        }
+      }
+      if (!problems.empty() && problems.back().rfind(head, 0) == 0) break;
     }
   }
   for (std::size_t k = 0; k < keys().size(); ++k) {

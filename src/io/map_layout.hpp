@@ -31,11 +31,17 @@ struct MapLayout {
   map::Quantities quantities = map::Quantities::regime;
   map::Index chunk;                ///< chunk shape over the grid's axes, each in [1, axis length]
   std::optional<BemSetup> bem;                    ///< set: the bem_* variables are stored
+  /// The box of tolerances about each point (output.tolerance, as given), where the map has
+  /// one: t_star_low, t_star_high, regime_low and regime_high are stored, and it becomes the
+  /// global attribute `tolerance`.
+  std::string tolerance;
 
   /// Whether the model's time series are stored too.
   bool full() const { return quantities == map::Quantities::full; }
   /// Whether the map stores quantity `spec`.
-  bool stores(const map::QuantitySpec& spec) const { return map::is_stored(spec, quantities, bem.has_value()); }
+  bool stores(const map::QuantitySpec& spec) const {
+    return map::is_stored(spec, quantities, bem.has_value(), !tolerance.empty());
+  }
   /// Whether any variable runs over the time axis.
   bool has_series() const { return full() || bem.has_value(); }
 };

@@ -171,6 +171,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
     write_string_attribute(file_, "bem_method", bem.method, in);
     write_string_attribute(file_, "bem_sample_rule", bem.sample_rule, in);
   }
+  if (!layout.tolerance.empty()) write_string_attribute(file_, "tolerance", layout.tolerance, in);
   const std::int8_t incomplete = 0;
   write_attribute(file_, "completed", H5T_STD_I8LE, H5T_NATIVE_INT8, &incomplete, 0, in);
 

@@ -25,9 +25,10 @@ enum class Quantities { regime, full };
 enum class Kind { flag, real };       ///< int8 code, or float64
 /// Over the grid; over the grid, stored in full mode only; or over the grid and the times.
 enum class Extent { point, point_full, series };
-/// The localization model, the periodic BEM reference, or the answer merged from both (the
-/// BEM's where it ran, else the model's where it is valid; TileEvaluator fills it).
-enum class Source { model, bem, answer };
+/// The localization model, the periodic BEM reference, the answer merged from both (the
+/// BEM's where it ran, else the model's where it is valid; TileEvaluator fills it), or the
+/// model over a box of tolerances about each point (output.tolerance).
+enum class Source { model, bem, answer, tolerance };
 
 /// The flag sets a flag quantity takes its codes from (the map's flag_values/flag_meanings).
 enum class Flags { none, regime, validity, convergence, source };
@@ -92,12 +93,26 @@ inline std::int8_t converged(const model::PointSummary& s) {
   return static_cast<std::int8_t>(s.solver.converged ? Convergence::converged : Convergence::not_converged);
 }
 inline double iterations(const model::PointSummary& s) { return s.solver.iterations; }
+// Over a box of tolerances: t* at its ends (NaN for never, as t_star; and where a corner
+// could not be computed), and the regimes there (not computed likewise).
+inline bool has_range(const model::PointSummary& s) { return s.t_star_range && !std::isnan(s.t_star_range->low); }
+inline double finite_or_nan(double t) { return std::isfinite(t) ? t : kNaN; }
+inline double t_star_low(const model::PointSummary& s) { return has_range(s) ? finite_or_nan(s.t_star_range->low) : kNaN; }
+inline double t_star_high(const model::PointSummary& s) {
+  return has_range(s) ? finite_or_nan(s.t_star_range->high) : kNaN;
+}
+inline std::int8_t regime_low(const model::PointSummary& s) {
+  return has_range(s) ? static_cast<std::int8_t>(s.t_star_range->regime_low) : std::int8_t{-1};
+}
+inline std::int8_t regime_high(const model::PointSummary& s) {
+  return has_range(s) ? static_cast<std::int8_t>(s.t_star_range->regime_high) : std::int8_t{-1};
+}
 inline double residual(const model::PointSummary& s) { return s.solver.residual; }
 }  // namespace quantity_access
 
 /// The quantities in the order the map creates its variables, the journal stores a tile's
 /// chunks and the point command prints them.
-inline constexpr std::array<QuantitySpec, 29> kQuantities{{
+inline constexpr std::array<QuantitySpec, 33> kQuantities{{
     {"regime", Kind::flag, Extent::point, Source::model, Flags::regime, "", "contact regime of the level-2 punches",
      "immediate: level 2 touches by the end of the load's rise (at once for a step load); delayed: later, while "
      "the load is held; never: not at all", quantity_access::regime},
@@ -185,6 +200,20 @@ inline constexpr std::array<QuantitySpec, 29> kQuantities{{
      "which solution answer_regime and answer_t_star come from",
      "model: the localization model, valid there and no BEM run; bem: the periodic BEM reference; none: the "
      "model is invalid there and the BEM did not run"},
+    {"t_star_low", Kind::real, Extent::point, Source::tolerance, Flags::none, "T_eps",
+     "least time at which the level-2 punches touch over the box of tolerances about the point",
+     "the model's t* at every corner of the box (the map's tolerance attribute), the least; NaN where a corner "
+     "could not be computed, and for never at every corner", nullptr, quantity_access::t_star_low},
+    {"t_star_high", Kind::real, Extent::point, Source::tolerance, Flags::none, "T_eps",
+     "greatest time at which the level-2 punches touch over the box of tolerances about the point",
+     "as t_star_low, the greatest; NaN where some corner never touches (regime_high never)", nullptr,
+     quantity_access::t_star_high},
+    {"regime_low", Kind::flag, Extent::point, Source::tolerance, Flags::regime, "",
+     "contact regime at the corner of the tolerance box where level 2 touches first",
+     "where regime_low equals regime_high, the regime holds over the whole box", quantity_access::regime_low},
+    {"regime_high", Kind::flag, Extent::point, Source::tolerance, Flags::regime, "",
+     "contact regime at the corner of the tolerance box where level 2 touches last", "as regime_low",
+     quantity_access::regime_high},
 }};
 
 inline constexpr std::size_t kQuantityCount = kQuantities.size();
@@ -198,8 +227,10 @@ constexpr std::size_t quantity(std::string_view name) {
   return kQuantityCount;
 }
 
-/// Whether a map of `quantities`, with or without a BEM reference, stores quantity `q`.
-constexpr bool is_stored(const QuantitySpec& q, Quantities quantities, bool bem) {
+/// Whether a map of `quantities`, with or without a BEM reference and a box of
+/// tolerances, stores quantity `q`.
+constexpr bool is_stored(const QuantitySpec& q, Quantities quantities, bool bem, bool tolerance = false) {
+  if (q.source == Source::tolerance) return tolerance;
   if (q.source == Source::bem || q.source == Source::answer) return bem;
   return q.extent == Extent::point || quantities == Quantities::full;  // point_full and series: full only
 }

@@ -28,14 +28,14 @@ struct TileData {
   }
 
   /// Sizes the array of every quantity a map of `quantities` (with or without a BEM
-  /// reference) stores, for `points` points and `times` snapshot times: flags at -1 (not
-  /// computed), the model's reals at 0 (every one is overwritten), the BEM's and the
-  /// answer's at NaN (only some points are written). The others are left empty.
-  void resize(std::size_t points, std::size_t times, Quantities quantities, bool bem) {
+  /// reference and a box of tolerances) stores, for `points` points and `times` snapshot times: flags at -1 (not
+  /// computed), the model's reals at 0 (every one is overwritten), the others' at NaN
+  /// (only some points are written). The others are left empty.
+  void resize(std::size_t points, std::size_t times, Quantities quantities, bool bem, bool tolerance = false) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t q = 0; q < kQuantityCount; ++q) {
       const QuantitySpec& spec = kQuantities[q];
-      const std::size_t n = !is_stored(spec, quantities, bem)         ? 0
+      const std::size_t n = !is_stored(spec, quantities, bem, tolerance) ? 0
                             : spec.extent == Extent::series ? points * times
                                                             : points;
       if (spec.kind == Kind::flag) {

@@ -97,7 +97,7 @@ std::string sample_rule(const sweep::ReferenceConfig& reference) {
 
 io::MapLayout map_layout(const sweep::SweepConfig& config, const map::Tiling& tiling,
                          const std::optional<std::uint64_t>& reference_points, double reference_tolerance) {
-  io::MapLayout layout{config.grid, config.times, config.quantities, tiling.chunk(), std::nullopt};
+  io::MapLayout layout{config.grid, config.times, config.quantities, tiling.chunk(), std::nullopt, config.tolerance_text};
   if (reference_points) {
     layout.bem = io::BemSetup{config.reference.grid, reference_tolerance, static_cast<std::int64_t>(*reference_points),
                               static_cast<std::int64_t>(config.reference.seed),

@@ -14,6 +14,7 @@
 #include "model/laws/creep_laws.hpp"
 #include "model/problem/localization.hpp"
 #include "model/laws/material.hpp"
+#include "model/point/sensitivity.hpp"
 #include "model/numerics/units.hpp"
 
 namespace punchsweep::sweep {
@@ -83,6 +84,11 @@ struct SweepConfig {
   /// The unit of every time: the material's time_unit, or T_eps.
   std::string time_unit() const { return materials.empty() ? "T_eps" : materials.front()->time_unit(); }
   std::vector<double> times{0.0, 0.5, 1.0, 2.0, 5.0};  ///< [time] times, in T_eps
+  /// [output] tolerance: a box of tolerances about every point ("dh=0.5um, pressure=10%",
+  /// as given in tolerance_text; empty: none): the map then stores t* at its ends and the
+  /// regimes there (t_star_low, t_star_high, regime_low, regime_high).
+  std::vector<model::StatedTolerance> tolerance;
+  std::string tolerance_text;
   std::string output = "regime_map.h5";  ///< [output] file (final name; ".partial" while built)
   map::Quantities quantities = map::Quantities::full;  ///< [output] quantities
   /// [run] chunk: target number of values per tile and HDF5 chunk of the largest variable

@@ -87,7 +87,8 @@ std::size_t require_axis(const map::Grid& grid, std::string_view name) {
 
 TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C,
                              std::vector<double> times, map::Quantities quantities, const ReferenceConfig& reference,
-                             model::LoadShape loading, model::Localization localization)
+                             model::LoadShape loading, model::Localization localization,
+                             std::vector<model::StatedTolerance> tolerance)
     : grid_(grid),
       law_(law),
       C_(C),
@@ -99,8 +100,14 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
       s_(require_axis(grid, model::kExponent)),
       loading_(std::move(loading)),
       localization_(localization),
+      tolerance_(std::move(tolerance)),
       batch_(law, C, localization, loading_) {
   for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
+  for (model::StatedTolerance& t : tolerance_) {
+    for (const model::Parameter& p : law.parameters) {
+      if (p.name == t.parameter->name) t.parameter = &p;
+    }
+  }
   law_axes_ = material_.size();
   if (const std::size_t ramp = grid.find(model::ramp_time_parameter().name); ramp < grid.rank()) {
     material_.push_back(ramp);
@@ -126,10 +133,15 @@ namespace {
 // point of the columns): the summary's quantities, or in full mode the point's series too.
 class TileSink final : public BatchSink {
  public:
-  TileSink(map::TileData* out, const std::vector<std::size_t>& index, const model::EvaluationOptions* full)
-      : out_(out), index_(index), full_(full) {}
+  /// `tolerance`: the map's box of tolerances (empty: none), `law` the creep law and
+  /// `columns` the points (their law values, for the box's corners).
+  TileSink(map::TileData* out, const std::vector<std::size_t>& index, const model::EvaluationOptions* full,
+           const std::vector<model::StatedTolerance>& tolerance, const model::CreepLawSpec& law,
+           const PointColumns& columns)
+      : out_(out), index_(index), full_(full), tolerance_(tolerance), law_(law), columns_(columns) {}
   void take(const BatchPoint& p) override {
     const std::size_t i = index_[p.k];
+    if (!tolerance_.empty()) store_range(p, i);
     if (full_ != nullptr) {
       model::PointResult r = model::evaluate_point(p.problem, p.creep, *full_, p.summary, p.parts.branch());
       const double t_star = r.t_star.value_or(std::numeric_limits<double>::infinity());
@@ -144,9 +156,40 @@ class TileSink final : public BatchSink {
   }
 
  private:
+  // t* over the box about the point, and the regimes at its ends (map::Source::tolerance).
+  void store_range(const BatchPoint& p, std::size_t i) {
+    law_values_.clear();
+    for (const std::span<const double>& column : columns_.law) law_values_.push_back(column[p.k]);
+    model::PointSummary range;
+    boxes_.clear();
+    for (const model::StatedTolerance& t : tolerance_) {
+      double value = 0.0;
+      model::ContactProblem problem = p.problem;
+      if (const double* field = model::problem_field(problem, t.parameter->name)) {
+        value = *field;
+      } else {
+        for (std::size_t j = 0; j < law_.parameters.size(); ++j) {
+          if (&law_.parameters[j] == t.parameter) value = law_values_[j];
+        }
+      }
+      boxes_.push_back(t.at(value));
+    }
+    try {
+      range.t_star_range = model::t_star_range(p.problem, law_, law_values_, boxes_);
+    } catch (const std::invalid_argument&) {
+      // A corner outside a parameter's range (a temperature beyond the shift's): not computed.
+    }
+    store_point<map::Source::tolerance>(range, i, out_, kAll);
+  }
+
   map::TileData* out_;
   const std::vector<std::size_t>& index_;
   const model::EvaluationOptions* full_;
+  const std::vector<model::StatedTolerance>& tolerance_;
+  const model::CreepLawSpec& law_;
+  const PointColumns& columns_;
+  std::vector<double> law_values_;
+  std::vector<model::Tolerance> boxes_;
 };
 
 }  // namespace
@@ -155,7 +198,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
                              const model::StopRequest& stop) const {
   const bool full = quantities_ == map::Quantities::full;
   const bool bem = sample_.has_value() && reference == Reference::evaluated;
-  out->resize(box.points(), times_.size(), quantities_, bem);
+  out->resize(box.points(), times_.size(), quantities_, bem, !tolerance_.empty());
   const map::Index& c = box.count;
   const auto value = [&](std::size_t axis, std::size_t i) { return grid_.axes[axis].values[box.start[axis] + i]; };
 
@@ -207,7 +250,7 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
   for (std::size_t j = 0; j < law_axes_; ++j) batch.law.push_back(column(4 + j));
   if (material_.size() > law_axes_) batch.ramp_time = column(4 + law_axes_);
   const model::EvaluationOptions options{times_, {}};
-  TileSink sink(out, index_, full ? &options : nullptr);
+  TileSink sink(out, index_, full ? &options : nullptr, tolerance_, law_, batch);
   batch_.summarize(batch, sink, stop);
   if (bem) {
     evaluate_reference(box, out, stop);

@@ -6,6 +6,7 @@
 
 #include "map/grid.hpp"
 #include "map/quantities.hpp"
+#include "model/point/sensitivity.hpp"
 #include "map/tile_data.hpp"
 #include "model/laws/creep_laws.hpp"
 #include "model/two_level/long_term_guide.hpp"
@@ -41,9 +42,12 @@ class TileEvaluator {
   /// or the reference sample does not fit the grid.
   /// `loading` is the load's shape where the grid has no ramp_time axis (a step by default);
   /// `localization` the model's (the paper's by default).
+  /// `tolerance` (a map's output.tolerance) adds, at every point, t* at the ends of the box
+  /// about it and the regimes there (model::t_star_range, as `punchsweep point --tolerance`).
   TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& law, double C, std::vector<double> times,
                 map::Quantities quantities, const ReferenceConfig& reference = {},
-                model::LoadShape loading = {}, model::Localization localization = {});
+                model::LoadShape loading = {}, model::Localization localization = {},
+                std::vector<model::StatedTolerance> tolerance = {});
 
   /// Whether evaluate() also runs the BEM reference (when this evaluator has one).
   enum class Reference { evaluated, skipped };
@@ -84,6 +88,9 @@ class TileEvaluator {
   model::Localization localization_;
   std::optional<ReferenceSample> sample_;
   reference::ReferenceOptions reference_options_;
+  /// The box of tolerances, each on the law's own parameter object where it is the law's
+  /// (model::t_star_range finds a parameter by identity).
+  std::vector<model::StatedTolerance> tolerance_;
   /// The model's points, with the parts they share kept for the run.
   mutable BatchEvaluator batch_;
   mutable std::vector<double> columns_;     ///< a box's points as columns (scratch)

@@ -75,6 +75,9 @@ struct PointSummary {
   double dt_star_ddh = std::numeric_limits<double>::quiet_NaN();
   double dt_star_dpbar = std::numeric_limits<double>::quiet_NaN();
   double dt_star_dl = std::numeric_limits<double>::quiet_NaN();
+  /// The least and greatest t* over a box of tolerances, where one is given (the point
+  /// command's --tolerance, a map's output.tolerance).
+  std::optional<TStarRange> t_star_range;
 
   /// Start of the two-level phase (t_start = t*, or 0 when immediate).
   double t_start = 0.0;
@@ -106,8 +109,6 @@ struct PointResult : PointSummary {
   /// command and Python's point fill it; a map's full mode stores dh's, pbar's and the
   /// law's); empty otherwise.
   std::vector<TStarDerivative> t_star_derivatives;
-  /// The least and greatest t* over the tolerances given, where given.
-  std::optional<TStarRange> t_star_range;
   /// Physical advisories (advisory.hpp), where asked for (the point command, Python's
   /// point): their names ("" for none), the sentence, and the representative strain.
   std::string advisories;

@@ -1,5 +1,6 @@
 #include "model/point/sensitivity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -114,6 +115,16 @@ std::vector<TStarDerivative> t_star_derivatives(const ContactProblem& problem, c
   return out;
 }
 
+Tolerance StatedTolerance::at(double value, bool* clipped) const {
+  const double w = relative ? std::abs(value) * width : width;
+  Tolerance t{parameter, w, w};
+  const bool clip = value - w < 0.0 && parameter->admits(0.0) &&
+                    !parameter->admits(-std::numeric_limits<double>::denorm_min());
+  if (clip) t.minus = value;
+  if (clipped) *clipped = clip;
+  return t;
+}
+
 TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
                         std::span<const Tolerance> tolerances) {
   Point point(problem, law, law_values);
@@ -135,21 +146,36 @@ TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, 
     index.push_back(k);
   }
   if (index.size() > 6) throw std::invalid_argument("at most 6 tolerances (64 corners)");
-  TStarRange r{std::numeric_limits<double>::infinity(), 0.0};
+  // The creep law is made once where no tolerance is on one of its parameters (making one,
+  // a Prony series' interconversion, costs several classifications).
+  const bool law_varies = std::any_of(index.begin(), index.end(), [&](std::size_t k) {
+    return problem_field(point.problem, point.parameters[k]->name) == nullptr;
+  });
+  const std::unique_ptr<CreepLaw> fixed_law = law_varies ? nullptr : make_creep_law(law, law_values);
+  TStarRange r{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (unsigned corner = 0; corner < (1u << index.size()); ++corner) {
     Point p = point;
     for (std::size_t j = 0; j < index.size(); ++j) {
       const double x = *point.field(index[j]);
       *p.field(index[j]) = (corner >> j) & 1u ? x + tolerances[j].plus : x - tolerances[j].minus;
     }
-    const double t = t_star_of(p.problem, *p.law, p.law_values);
-    if (std::isnan(t)) {
+    const Classification c =
+        classify(p.problem, fixed_law ? *fixed_law : *make_creep_law(*p.law, p.law_values));
+    if (std::isnan(c.t_star)) {
       ++r.not_computed;
       continue;
     }
-    ++(t == 0.0 ? r.immediate : std::isinf(t) ? r.never : r.delayed);
-    r.low = std::min(r.low, t);
-    r.high = std::max(r.high, t);
+    ++(c.regime == Regime::immediate ? r.immediate : c.regime == Regime::never ? r.never : r.delayed);
+    // (Under a ramp an immediate touch has t* > 0: the regimes order as their t* do.)
+    const bool first = r.immediate + r.delayed + r.never == 1;
+    if (first || c.t_star < r.low || (c.t_star == r.low && c.regime < r.regime_low)) {
+      r.low = c.t_star;
+      r.regime_low = c.regime;
+    }
+    if (first || c.t_star > r.high || (c.t_star == r.high && c.regime > r.regime_high)) {
+      r.high = c.t_star;
+      r.regime_high = c.regime;
+    }
   }
   if (r.not_computed > 0) r.low = r.high = std::numeric_limits<double>::quiet_NaN();
   return r;

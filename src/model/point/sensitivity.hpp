@@ -7,12 +7,14 @@
 
 #include <functional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "model/laws/creep_laws.hpp"
 #include "model/problem/contact_problem.hpp"
 #include "model/problem/parameter.hpp"
+#include "model/two_level/regime.hpp"
 
 namespace punchsweep::model {
 
@@ -59,6 +61,18 @@ struct Tolerance {
   double minus = 0.0, plus = 0.0;
 };
 
+/// A tolerance as a user states it ("dh=0.5um", "pressure=10%"): a half-width in the
+/// parameter's scale, or a fraction of the value (`relative`).
+struct StatedTolerance {
+  const Parameter* parameter = nullptr;
+  double width = 0.0;
+  bool relative = false;
+  std::string text;  ///< the value as stated ("0.5um"), for messages
+  /// About `value`: the half-width there, and below a range that starts at 0 (dh: the two
+  /// levels at one height) the low side clipped at 0 (`clipped` says so).
+  Tolerance at(double value, bool* clipped = nullptr) const;
+};
+
 /// The least and greatest t* over the box of tolerances (its 2^k corners, k <= 6: t* is
 /// monotone in dh, pbar, l and temperature, so the extremes lie at corners; 0 where a
 /// corner touches at once, +inf where one never touches), and how many corners fall in
@@ -67,6 +81,9 @@ struct Tolerance {
 /// its parameter out of range, or one on no real-valued parameter of the point.
 struct TStarRange {
   double low = 0.0, high = 0.0;
+  /// The regimes at the corners of least and greatest t*: where they agree, the regime
+  /// holds across the box (t* is monotone; the regimes are ordered by t*).
+  Regime regime_low = Regime::immediate, regime_high = Regime::never;
   int immediate = 0, delayed = 0, never = 0, not_computed = 0;  ///< corners in each
 };
 TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
