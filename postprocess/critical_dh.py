@@ -86,7 +86,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                      "dh cannot be fixed: it is the chart's vertical axis.")
     p.add_argument("--touch-by", default="", metavar="TIMES",
                    help="comma-separated times: also draw the dh below which level 2 touches by "
-                        "each (from t_star, in the map's time unit)")
+                        "each (from t_star): 1s,1min,1h on a material map, or bare numbers in the "
+                        "map's time unit")
     scale = p.add_mutually_exclusive_group()
     scale.add_argument("--log-dh", dest="dh_scale", action="store_const", const="log", default="auto",
                        help="draw dh on a log axis (the default when the drawn values span more than "
@@ -246,8 +247,10 @@ def title_lines(ds, against: str, fixed: dict[str, pm.Fixed]) -> str:
 
 
 def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | None = None,
-           scale: str = "auto"):
-    """The chart; `scale` is that of the dh axis: 'auto' (dh_scale), 'log' or 'linear'."""
+           scale: str = "auto", labels: list[str] | None = None):
+    """The chart; `scale` is that of the dh axis: 'auto' (dh_scale), 'log' or 'linear';
+    `labels` how the touch-by times are written (as given: '1 min'; default in the map's
+    time unit)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -340,8 +343,17 @@ def render(ds, against: str, fixed: dict[str, pm.Fixed], times: list[float] | No
     # The touch-by lines in their own dash pattern, in the colour they are drawn in when there
     # is one T curve (black beside several T colours).
     legend_colour = t_colours[0] if len(T) == 1 else "black"
+    # A time whose curve lies nowhere inside the grid (above its largest dh everywhere, or
+    # not reached) is not in the legend as a line: said in a note instead.
+    labels = labels or [f"{t:g} {time_unit}" for t in times]
+    drawn_any = [touch is not None and bool(np.isfinite(touch[i]).any()) for i in range(len(times))]
     handles += [Line2D([], [], color=legend_colour, lw=1.6, ls=TOUCH_STYLES[i % len(TOUCH_STYLES)],
-                       label=f"touches by t = {t:g} {time_unit}") for i, t in enumerate(times)]
+                       label=f"touches by t = {labels[i]}") for i in range(len(times)) if drawn_any[i]]
+    for i in range(len(times)):
+        if not drawn_any[i]:
+            where = ("even the grid's largest\n$\\Delta h$ touches by then" if np.isinf(touch[i]).all()
+                     else "no dh of the grid\ntouches by then")
+            handles.append(Line2D([], [], ls="none", label=f"by t = {labels[i]}: {where}"))
     if band is not None:
         handles.append(Patch(facecolor=legend_colour, alpha=0.2,
                              label="touches by then at some\nbut not every corner of the\ntolerance box: "
@@ -364,14 +376,11 @@ def main(argv: list[str]) -> int:
     args = parse_args(argv)
     if args.against not in AGAINST:
         raise pm.MapError(f"--against '{args.against}' is not a valid choice; use l, pbar or temperature")
-    try:
-        times = [float(v) for v in args.touch_by.split(",") if v.strip()]
-    except ValueError:
-        raise pm.MapError(f"--touch-by '{args.touch_by}': not a comma-separated list of times") from None
-    if any(not (t > 0 and math.isfinite(t)) for t in times):
-        raise pm.MapError(f"--touch-by '{args.touch_by}': each time must be > 0 and finite")
     out = pm.check_output(args.output, inputs=[args.map])
     with pm.open_map(args.map) as ds:
+        parsed = [pm.parse_time(ds, v, f"--touch-by '{args.touch_by}':") for v in args.touch_by.split(",")
+                  if v.strip()]
+        times, labels = [t for t, _ in parsed], [text for _, text in parsed]
         pm.require_axes(ds, ("dh", args.against), f"critical_dh.py --against {args.against}")
         at = pm.parse_at(args.at, ds)
         missing = [n for n in ("h_0", "h_inf") if n not in ds.variables]
@@ -385,7 +394,7 @@ def main(argv: list[str]) -> int:
             print(f.message)
         if times and "t_star" not in ds.variables:
             raise pm.MapError(f"'{args.map}' has no t_star variable (needed by --touch-by)")
-        fig = render(ds, args.against, fixed, times, args.dh_scale)
+        fig = render(ds, args.against, fixed, times, args.dh_scale, labels)
         pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.map])
     print(f"critical_dh.py: wrote {out}")
     return 0

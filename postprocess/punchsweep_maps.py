@@ -52,8 +52,11 @@ REGIME_COLOURS["delayed"]."""
 
 # How the plots typeset units as they appear in the file and the usual axis symbols; a unit
 # or axis not listed is written as the file has it.
-_UNIT_TEX = {"R": "$R$", "um": "$\\mu$m", "1": "-", "E0/(1-nu^2)": "$E_0/(1-\\nu^2)$", "T_eps": "$T_\\varepsilon$",
+_UNIT_TEX = {"R": "$R$", "um": "$\\mu$m", "1": "-", "degC": "°C", "E0/(1-nu^2)": "$E_0/(1-\\nu^2)$", "T_eps": "$T_\\varepsilon$",
              "R^2 E0/(1-nu^2)": "$R^2 E_0/(1-\\nu^2)$"}
+# The punch shapes f(r) = C r^s / R^(s-1) a title names (with C = 0.5, s = 2 is the paraboloid
+# of a spherical cap of radius R).
+SHAPE_NAMES = {1: "cones", 2: "spherical caps"}
 _SYMBOL_TEX = {"l": "$l$", "dh": "$\\Delta h$", "T": "$T$", "pbar": "$\\bar p_0$", "s": "$s$"}
 
 AT_HELP = ("Any axis of the map may be given: a bare number in the axis's scale (l and dh in "
@@ -367,6 +370,8 @@ def format_value(ds, name: str, value, tex: bool = False) -> str:
     if tex:
         sym = _SYMBOL_TEX.get(name, name)
         unit = "" if u in ("", "1") else " " + unit_tex(u)
+        if name == "s" and value in SHAPE_NAMES:  # for a reader who does not know f(r) = C r^s / R^(s-1)
+            return f"{SHAPE_NAMES[value]} ({sym} = {number})"
         return f"{sym} = {number}{unit}"
     return f"{name} = {number}{unit_suffix(ds, name)}"
 

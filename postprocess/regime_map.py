@@ -79,6 +79,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                         "delayed with t* <= TIME), those that touch later, and those that never "
                         "touch. With a unit (60s, 1min, 2h) on a material map; a bare number is in "
                         "the map's time unit (T_eps, or the material's)")
+    p.add_argument("--floor", metavar="TIME",
+                   help="a delay shorter than this reads as immediate in practice: such cells are drawn as "
+                        "immediate (the legend says so) and the colour bar starts there. Default on a "
+                        "step-loaded material map 1 ms (under a ramp the immediate regime already runs to "
+                        "the end of the rise); none on a map in T_eps; 0 turns it off")
     p.add_argument("-o", "--output", required=True,
                    help="picture to write; the format follows the suffix: .png or .pdf")
     return p.parse_args(argv)
@@ -290,15 +295,20 @@ def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed],
             for k in (range(len(values)) if panels is None else panels)]
 
 
-def tolerance_band(ds, d: Slice, within: tuple[float, str] | None) -> np.ndarray | None:
+def tolerance_band(ds, d: Slice, within: tuple[float, str] | None,
+                   floor: tuple[float, str] | None = None) -> np.ndarray | None:
     """Cells whose regime (or --touch-within class) differs between the ends of the map's box
-    of tolerances: the answer there depends on where in the box the part falls. None for a
-    map without a box."""
+    of tolerances: the answer there depends on where in the box the part falls (a delay below
+    `floor` counting as immediate, as the picture draws it). None for a map without a box."""
     if d.regime_low is None:
         return None
     low, high = np.asarray(d.regime_low), np.asarray(d.regime_high)
     if within is not None:
         low, high = touch_within(ds, low, d.t_star_low, within[0]), touch_within(ds, high, d.t_star_high, within[0])
+    elif floor is not None:
+        codes = pm.flags(ds, "regime")
+        low, high = ((np.where((r == codes.code("delayed")) & (t < floor[0]), codes.code("immediate"), r))
+                     for r, t in ((low, d.t_star_low), (high, d.t_star_high)))
     computed = (low != pm.flags(ds, "regime").code(pm.NOT_COMPUTED)) & \
                (high != pm.flags(ds, "regime").code(pm.NOT_COMPUTED))
     return computed & (low != high)
@@ -369,8 +379,22 @@ def title_lines(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed
     return "\n".join([first, load_text(ds, x, y, facet, fixed), last])
 
 
+def default_floor(ds) -> tuple[float, str] | None:
+    """The --floor a map gets when none is given: 1 ms on a step-loaded map in physical time
+    (a material map), in the map's time unit; None otherwise."""
+    config = str(ds.attrs.get("config", "")).splitlines()
+    if "ramp_time" in pm.axes(ds) or any(line.startswith("load_table = ") and line.strip() != "load_table ="
+                                         for line in config):
+        return None  # the immediate regime runs to the end of the load's rise already
+    try:
+        return pm.parse_time(ds, "0.001s", "--floor")[0], "1 ms"
+    except pm.MapError:
+        return None  # T_eps: no physical floor
+
+
 def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = None,
-           contours: bool = True, within: tuple[float, str] | None = None, panels: list[int] | None = None):
+           contours: bool = True, within: tuple[float, str] | None = None, panels: list[int] | None = None,
+           floor: tuple[float, str] | None = None):
     """Draws the map; returns (figure, panels). The figure size and dpi are fixed.
 
     `within` = (time in the map's time unit, its text) draws the --touch-within view (no
@@ -393,6 +417,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
 
     # What each panel shows: the regime (the BEM's where it answers for the model) and its t*.
     shown = []
+    any_practical = False
     for d in data:
         answered = bem_answers(ds, d.valid, d.bem)
         regime = np.where(answered, d.bem, d.regime)
@@ -400,13 +425,18 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         t_star = np.where(answered, d.bem_t_star, d.t_star)
         if within is not None:
             regime = touch_within(ds, regime, t_star, within[0])
+        elif floor is not None:
+            # A delay below the floor reads as immediate in practice: drawn so, said so.
+            practical = (regime == codes.code("delayed")) & (t_star < floor[0])
+            any_practical |= bool(practical.any())
+            regime = np.where(practical, codes.code("immediate"), regime)
         shown.append((answered, regime, valid, t_star))
     norm = None
     if within is None:
         norm = pm.t_star_norm(np.concatenate([np.where(r == codes.code("delayed"), t, np.nan).ravel()
                                               for _, r, _, t in shown]))
     scale = ScalarMappable(norm=norm, cmap=pm.t_star_colormap()) if norm is not None else None
-    all_t = np.concatenate([np.where(d.regime == codes.code("delayed"), d.t_star, np.nan).ravel() for d in data])
+    all_t = np.concatenate([np.where(r == codes.code("delayed"), t, np.nan).ravel() for _, r, _, t in shown])
     levels = contour_levels(all_t) if contours and within is None else []
 
     n = len(data)
@@ -446,7 +476,7 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
                      for j, i in zip(*np.nonzero(bad))]
             ax.add_collection(PatchCollection(rects, facecolor="none", edgecolor="0.35",
                                               hatch="///", linewidth=0))
-        band = tolerance_band(ds, d, within)
+        band = tolerance_band(ds, d, within, floor)
         if band is not None and band.any():
             any_band = True
             rects = [Rectangle((xe[i], ye[j]), xe[i + 1] - xe[i], ye[j + 1] - ye[j])
@@ -474,14 +504,17 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
             ax.set_title(title, fontsize=10)
         panel = Panel(ax, xv, yv, colours, title, scale=scale)
         panels.append(panel)
-        cs = draw_contours(ax, xv, yv, d.regime, d.t_star, levels, codes) if levels else None
+        cs = draw_contours(ax, xv, yv, regime if floor is not None else d.regime, d.t_star, levels, codes) \
+            if levels else None
         if cs is not None:
             with_contours.append((panel, cs, levels))
 
     if within is None:
         delayed_label = "delayed: colour\nis $t^*$ (bar)" if scale is not None else "delayed"
         mid = pm.t_star_colormap()(0.5) if scale is not None else pm.REGIME_COLOURS["delayed"]
-        handles = [Patch(facecolor=pm.REGIME_COLOURS["immediate"], label="immediate"),
+        immediate_label = (f"immediate, or within\n{floor[1]} (immediate\nin practice)" if any_practical
+                           else "immediate")
+        handles = [Patch(facecolor=pm.REGIME_COLOURS["immediate"], label=immediate_label),
                    Patch(facecolor=mid, label=delayed_label),
                    Patch(facecolor=pm.REGIME_COLOURS["never"], label="never")]
     else:
@@ -552,8 +585,10 @@ def main(argv: list[str]) -> int:
         fixed = pm.resolve_at(ds, at, free=[], reserved=reserved)
         for f in fixed.values():
             print(f.message)
+        floor = default_floor(ds) if args.floor is None else \
+            (None if args.floor.strip() in ("0", "0s") else pm.parse_time(ds, args.floor, "--floor"))
         fig, _ = render(ds, args.x, args.y, fixed, args.facet, contours=not args.no_contours,
-                        within=within, panels=panels)
+                        within=within, panels=panels, floor=floor)
         pm.save_figure(fig, out, dpi=FIG_DPI, inputs=[args.map])
     print(f"regime_map.py: wrote {out}")
     return 0

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """The job scripts' pictures of a run folder's map: regime_map.png (pbar across, dh up,
-a panel per s), critical_dh.png (against pbar), for whatever axes the map has, and
+a panel per s; on a material map a delay under 1 ms drawn as immediate in practice),
+critical_dh.png (against pbar; on a material map with the dh that touches by 1 s, 1 min
+and 1 h), for whatever axes the map has, and
 explore.html, the interactive page (explore.py; coarsened on its longest axis, every K-th
 value, K chosen once from the page's estimated size so that it fits explore.py's limit).
 
@@ -23,6 +25,8 @@ import punchsweep_maps as pm
 import regime_map
 
 PREFERRED = {"l": 0.75, "T": 5.0}
+# The touch-by curves of a material map's design chart: the times a user thinks in.
+USER_TIMES = "1s,1min,1h"
 
 
 def fixed_values(ds, shown: set[str]) -> list[str]:
@@ -52,11 +56,14 @@ def main(argv: list[str]) -> int:
         facet = ["--facet", "s"] if s_values > 1 else []
         regime_at = fixed_values(ds, {"pbar", "dh", "s"} if facet else {"pbar", "dh"})
         chart_at = fixed_values(ds, {"pbar", "dh", critical_dh.CURVE_AXIS, critical_dh.PANEL_AXIS})
+        # A map in physical time marks the times a user thinks in.
+        physical = pm.units(ds, "t_star") in ("s", "min", "h")
+        touch_by = ["--touch-by", USER_TIMES] if physical else []
     code = regime_map.main([path, "--x", "pbar", "--y", "dh", *(["--at", *regime_at] if regime_at else []), *facet,
                             "-o", str(folder / "regime_map.png")])
     if code != 0:
         return code
-    code = critical_dh.main([path, "--against", "pbar", *(["--at", *chart_at] if chart_at else []),
+    code = critical_dh.main([path, "--against", "pbar", *(["--at", *chart_at] if chart_at else []), *touch_by,
                              "-o", str(folder / "critical_dh.png")])
     if code != 0:
         return code

@@ -482,7 +482,7 @@ def test_titles_name_the_material_or_law_the_model_and_the_load(maps, tmp_path):
         assert fig._suptitle.get_text() == (
             "Regime map: standard linear solid\n"
             "step load, nominal pressure $\\bar p_0$ from 0.005 to 0.08 $E_0/(1-\\nu^2)$ (x axis)\n"
-            "at $l$ = 0.75 $R$, $T$ = 5, $s$ = 2; the paper's model")
+            "at $l$ = 0.75 $R$, $T$ = 5, spherical caps ($s$ = 2); the paper's model")
     small = ["--grid.l", "0.75", "--grid.dh", "0.05,0.1", "--grid.pbar", "0.01,0.02", "--grid.s", "2", "--quiet"]
     cases = {"NBR rubber; the paper's model; ramped load":
              ["--config", str(REPO / "sweeps" / "materials" / "nbr.ini"), "--grid.ramp_time", "1,10"],

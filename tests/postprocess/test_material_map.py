@@ -266,3 +266,58 @@ def test_regime_map_facets_a_subset_of_an_axis(tmp_path):
     rc, _, err = call(regime_map, path, "--x", "pbar", "--y", "dh", "--at", "l=0.75", "s=2,2", "temperature=30,70",
                       "-o", tmp_path / "x.png")
     assert rc == 2 and "a list of values picks the panels of the facet axis" in err, err
+
+
+@pytest.fixture(scope="module")
+def tpe_map(tmp_path_factory):
+    """TPE-A (examples/dma_exports) at 20 C, caps of 80 um on a 250 um pitch, a step load:
+    t* from 1e-8 s (immediate in practice) to hours."""
+    path = tmp_path_factory.mktemp("tpe") / "tpe.h5"
+    subprocess.run([BINARY, "sweep", "--model.material", str(REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"),
+                    "--model.R", "80um", "--grid.l", "250um", "--grid.dh", "linspace(4um, 12um, 17)",
+                    "--grid.pressure", "logspace(3kPa, 50kPa, 12)", "--grid.temperature", "20", "--grid.s", "2",
+                    "--quantities", "regime", "--quiet", "--output", str(path)], check=True)
+    return path
+
+
+def test_pictures_in_the_users_time(tpe_map, tmp_path):
+    """Issue 37 item 4: on a step-loaded material map a delay under 1 ms is drawn as
+    immediate and the legend says so (--floor 0 draws it by t* again); titles say °C and
+    "spherical caps"; the design chart takes --touch-by in the user's units and names them."""
+    import critical_dh
+    ds = pm.open_map(tpe_map)
+    fixed = pm.resolve_at(ds, {"l": 250.0, "s": 2, "temperature": 20}, free=["pbar", "dh"])
+    d = regime_map.slices(ds, "pbar", "dh", None, fixed)[0]
+    fast = (d.regime == 1) & (d.t_star < 1e-3)
+    slow = (d.regime == 1) & (d.t_star > 1e-2)
+    assert fast.any() and slow.any()
+    floor = regime_map.default_floor(ds)
+    assert floor == (1e-3, "1 ms")
+    immediate = pm.rgba(pm.REGIME_COLOURS["immediate"])
+    fig, (panel,) = regime_map.render(ds, "pbar", "dh", fixed, floor=floor)
+    assert np.allclose(panel.colours[fast], immediate) and not np.allclose(panel.colours[slow], immediate)
+    texts = [t.get_text() for t in fig.legends[0].get_texts()] if fig.legends else \
+        [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+    assert any("within\n1 ms (immediate\nin practice)" in t for t in texts), texts
+    assert "20 °C" in fig._suptitle.get_text() and "spherical caps ($s$ = 2)" in fig._suptitle.get_text()
+    assert panel.scale.norm.vmin >= -3  # the colour bar starts at the floor's decade
+    _, (bare,) = regime_map.render(ds, "pbar", "dh", fixed)
+    assert not np.allclose(bare.colours[fast], immediate)
+    rc, _, err = call(regime_map, tpe_map, "--x", "pbar", "--y", "dh", "--at", "l=250um", "s=2", "temperature=20",
+                      "--floor", "0", "-o", tmp_path / "f.png")
+    assert rc == 0, err
+    # The design chart: --touch-by in units, named as given; a time whose curve lies above
+    # the grid everywhere (here: a pitch 8x denser needs far more creep) is a note, not a line.
+    fixed = pm.resolve_at(ds, {"l": 250.0, "temperature": 20}, free=["pbar", "dh", "s"])
+    fig = critical_dh.render(ds, "pbar", fixed, [1.0, 60.0], "auto", ["1 s", "1 min"])
+    legend = [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+    assert "touches by t = 1 s" in legend and "touches by t = 1 min" in legend, legend
+    # dh 4 and 4.5 um only, at 4.9 kPa and up: by 1 min both touch at every pressure.
+    ds_top = ds.isel(dh=slice(0, 2), pbar=slice(2, None))
+    assert np.isinf(critical_dh.touch_by_curves(ds_top, "pbar", fixed, [60.0])).all()
+    fig = critical_dh.render(ds_top, "pbar", fixed, [1e-9, 60.0], "auto", ["1 ns", "1 min"])
+    legend = [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
+    assert "touches by t = 1 min" not in legend and any(t.startswith("by t = 1 min: even") for t in legend), legend
+    rc, _, err = call(critical_dh, tpe_map, "--against", "pbar", "--at", "l=250um", "temperature=20",
+                      "--touch-by", "1s,1min,1h", "-o", tmp_path / "c.png")
+    assert rc == 0, err

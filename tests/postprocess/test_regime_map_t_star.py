@@ -274,7 +274,9 @@ def test_titles_name_the_temperature_of_a_shifted_material(tmp_path):
                           reserved={"pbar": "x", "dh": "y"})
     fig, _ = regime_map.render(ds, "pbar", "dh", fixed, contours=False)
     title = fig._suptitle.get_text()
-    assert name in title and f"temperature = {temperatures[1]:g} {unit}" in title and "kPa" in title
+    # The file's unit is UDUNITS' degC; a title writes °C (issue 37 item 4).
+    assert unit == "degC"
+    assert name in title and f"temperature = {temperatures[1]:g} °C" in title and "kPa" in title
     fig, _ = regime_map.render(ds, "pbar", "dh", pm.resolve_at(ds, pm.parse_at(["l=0.75", "s=2"], ds), free=[],
                                reserved={"pbar": "x", "dh": "y", "temperature": "facet"}), facet="temperature",
                                contours=False)
