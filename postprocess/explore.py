@@ -18,7 +18,9 @@ browser (DecompressionStream). On it:
   - the critical height differences h_0 and h_inf over the slice, where dh is the vertical
     axis.
 
-Size: the page holds plotly.js (8.7 MB) and the data; above --max-mb (default 40) the
+Size: the page holds plotly.js (8.7 MB, embedded deflate-compressed: 2.5 MB, inflated by the
+browser) and the data (compressed; the area fractions computed by the page from the radii
+where the map's equal pi (a1^2 + a2^2) / l^2); above --max-mb (default 40) the
 script stops and says by how much, and --every AXIS=K keeps every K-th value of an axis
 (repeatable) to make it fit.
 
@@ -28,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import base64
+import functools
 import html
 import json
 import math
@@ -42,9 +45,6 @@ import punchsweep_maps as pm  # noqa: E402
 
 PLOTLY_JS = Path("/usr/share/python3-plotly/plotly.js")
 """plotly.js as Debian's python3-plotly ships it (cmake/install-deps.sh installs it)."""
-POINT_VARIABLES = ("t_star", "h_0", "h_inf", "a1_inf", "a2_inf", "area_fraction_inf", "bem_t_star",
-                   "answer_t_star", "dt_star_ddh", "dt_star_dpbar", "dt_star_dl")
-FLAG_VARIABLES = ("regime", "valid", "bem_regime", "answer_regime", "answer_source")
 DEFAULT_MAX_MB = 40.0
 
 
@@ -62,9 +62,22 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 
 def packed(values: np.ndarray, dtype: str) -> str:
-    """An array's little-endian bytes, deflate (zlib) compressed, base64."""
+    """An array's little-endian bytes, deflate (zlib) compressed, base64. (Byte-shuffling,
+    XOR or delta coding first made the default map's arrays 8-20% larger: their mantissas
+    are noise to deflate.)"""
     raw = np.ascontiguousarray(values, dtype=dtype).tobytes()
     return base64.b64encode(zlib.compress(raw, 9)).decode("ascii")
+
+
+@functools.lru_cache(maxsize=1)
+def plotly_packed() -> str:
+    """plotly.js as the page embeds it: deflate compressed, base64 (2.5 MB of its 8.7 MB);
+    the page inflates it with the browser's DecompressionStream before its first plot."""
+    return base64.b64encode(zlib.compress(PLOTLY_JS.read_bytes(), 9)).decode("ascii")
+
+
+def plotly_mb() -> float:
+    return len(plotly_packed()) / 1e6
 
 
 def coarsening(ds, items: list[str]) -> dict[str, int]:
@@ -82,12 +95,46 @@ def coarsening(ds, items: list[str]) -> dict[str, int]:
     return steps
 
 
+def point_variables(ds) -> tuple[list[str], list[str]]:
+    """The map's per-point variables, as the file declares them (the engine writes one per
+    map::kQuantities entry it stores, in that order): the reals and the flags (those with
+    flag_meanings) over the grid's axes. A quantity the engine gains reaches the page with
+    no change here."""
+    grid = ds["regime"].dims
+    over_grid = [v for v in ds.data_vars if ds[v].dims == grid]
+    flags = [v for v in over_grid if "flag_meanings" in ds[v].attrs]
+    reals = [v for v in over_grid if v not in flags and ds[v].dtype.kind == "f"]
+    return reals, flags
+
+
+# The area fractions a page computes from the radii instead of carrying (the model's
+# definition, docs/model.md: pi (a1^2 + a2^2) / l^2), where the map's equal it: the default
+# map's page is 4 MB smaller.
+DERIVED = {"area_fraction_inf": ("a1_inf", "a2_inf"), "area_fraction": ("a1", "a2")}
+
+
+def derivable(ds, name: str) -> bool:
+    """Whether the map's `name` (an area fraction) is pi (a1^2 + a2^2) / l^2 of its radii to
+    1e-12 (NaN where they are NaN), so the page may compute it."""
+    if name not in DERIVED or name not in ds.variables or any(r not in ds.variables for r in DERIVED[name]):
+        return False
+    a1, a2 = (ds[r] for r in DERIVED[name])
+    with np.errstate(invalid="ignore"):
+        computed = (np.pi * (a1 ** 2 + a2 ** 2) / ds["l"] ** 2).transpose(*ds[name].dims).values
+        stored = ds[name].values
+        same = np.where(np.isnan(stored), np.isnan(computed), np.abs(computed - stored) <= 1e-12 * np.abs(stored))
+    return bool(same.all())
+
+
 def embedded(ds) -> list[tuple[str, str]]:
-    """The map's arrays the page embeds, with their types: what payload packs."""
-    names = [(v, "<f8") for v in POINT_VARIABLES if v in ds.variables]
-    names += [(v, "<i1") for v in FLAG_VARIABLES if v in ds.variables]
+    """The map's arrays the page embeds, with their types: what payload packs (for the
+    estimate, the area fractions taken as computed by the page where the map has the radii;
+    payload checks each before leaving it out)."""
+    reals, flags = point_variables(ds)
+    computed = {v for v, radii in DERIVED.items() if all(r in ds.variables for r in radii)}
+    names = [(v, "<f8") for v in reals if v not in computed] + [(v, "<i1") for v in flags]
     if pm.has_series(ds):
-        names += [(v, "<f8") for v in pm.SERIES]
+        names += [(v, "<f8") for v in pm.SERIES if v not in computed]
     return names
 
 
@@ -98,7 +145,7 @@ def estimate_mb(ds, steps: dict[str, int], samples: int = 8, block: int = 1 << 1
     Reads about samples x block values per array, whatever the map's size."""
     sel = {n: slice(None, None, k) for n, k in steps.items()}
     ds = ds.isel(sel) if sel else ds
-    total = PLOTLY_JS.stat().st_size + 200_000  # the page's own code and the axes' values
+    total = len(plotly_packed()) + 200_000  # the page's own code and the axes' values
     for name, dtype in embedded(ds):
         da = ds[name]
         size = int(np.prod(da.shape))
@@ -133,7 +180,7 @@ def estimate_mb(ds, steps: dict[str, int], samples: int = 8, block: int = 1 << 1
 def every_that_fits(ds, axis: str, max_mb: float) -> int:
     """The smallest K for which `--every AXIS=K` gives a page estimated within max_mb (with
     10% to spare for the estimate), 0 if none does."""
-    plotly = PLOTLY_JS.stat().st_size / 1e6
+    plotly = plotly_mb()
     whole = estimate_mb(ds, {})
     if whole <= 0.9 * max_mb:
         return 1
@@ -180,13 +227,17 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
             "labels": labels,
         })
     variables = {}
-    for v in POINT_VARIABLES:
+    reals, flag_names = point_variables(ds)
+    for v in reals:
         if v in ds.variables:
             da = ds[v].transpose(*names)
-            variables[v] = {"data": packed(da.values, "<f8"), "unit": pm.units(ds, v),
-                            "long_name": attr_text(ds[v].attrs.get("long_name", v))}
+            variables[v] = {"unit": pm.units(ds, v), "long_name": attr_text(ds[v].attrs.get("long_name", v))}
+            if derivable(ds, v):
+                variables[v]["derived"] = DERIVED[v]
+            else:
+                variables[v]["data"] = packed(da.values, "<f8")
     flags = {}
-    for v in FLAG_VARIABLES:
+    for v in flag_names:
         if v in ds.variables:
             f = pm.flags(ds, v)
             values = ds[v].transpose(*names).values
@@ -200,14 +251,22 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
     if pm.has_series(ds):
         for v in pm.SERIES:
             da = ds[v].transpose(*names, "time")
-            series[v] = {"data": packed(da.values, "<f8"), "unit": pm.units(ds, v),
-                         "long_name": attr_text(ds[v].attrs.get("long_name", v))}
+            series[v] = {"unit": pm.units(ds, v), "long_name": attr_text(ds[v].attrs.get("long_name", v))}
+            if derivable(ds, v):
+                series[v]["derived"] = DERIVED[v]
+            else:
+                series[v]["data"] = packed(da.values, "<f8")
     attrs = ds.attrs
     material = "; ".join(pm.material_names(ds).values())
+    # The material file as the sweep was given it (the resolved config's model.material):
+    # the clicked point's command names it; several files are the material axis's labels.
+    given = [line.partition("=")[2].strip() for line in attr_text(attrs.get("config", "")).splitlines()
+             if line.partition("=")[0].strip() == "material" and line.partition("=")[1]]
+    material_path = given[0] if given and "," not in given[0] else ""
     return {
         "source": Path(map_path).name,
         "title": pm.map_context(ds),
-        "material": material,
+        "material": material, "material_path": material_path,
         "localization": attr_text(attrs.get("localization", "paper")),
         "creep_law": attr_text(attrs.get("creep_law", "")),
         "C": float(attrs.get("C", 0.5)),
@@ -236,7 +295,7 @@ body { font-family: sans-serif; margin: 12px; color: #222; }
 h1 { font-size: 18px; margin: 4px 0; }
 .note { font-size: 12px; color: #555; }
 </style>
-<script>__PLOTLY__</script>
+<script id="plotly-packed" type="text/plain">__PLOTLY__</script>
 </head><body>
 <h1 id="title"></h1>
 <div class="note" id="subtitle"></div>
@@ -250,11 +309,18 @@ h1 { font-size: 18px; margin: 4px 0; }
 "use strict";
 const MAP = JSON.parse(document.getElementById("map-data").textContent);
 
-async function unpack(b64, Type) {
+async function inflate(b64) {
   const bytes = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
   const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
-  const buffer = await new Response(stream).arrayBuffer();
-  return new Type(buffer);
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+async function unpack(b64, Type) { return new Type((await inflate(b64)).buffer); }
+// plotly.js, embedded compressed: inflated and run before the first plot.
+async function loadPlotly() {
+  const code = new TextDecoder().decode(await inflate(document.getElementById("plotly-packed").textContent));
+  const script = document.createElement("script");
+  script.text = code;
+  document.head.appendChild(script);
 }
 
 const state = { x: MAP.axes.findIndex(a => a.name === MAP.x), y: MAP.axes.findIndex(a => a.name === MAP.y),
@@ -304,18 +370,27 @@ function readout(index) {
   return lines;
 }
 
+// Units the command line takes as they are (a length with --R, a pressure with a material):
+// the clicked point's command is written in them, as the map shows its axes.
+const PHYSICAL = new Set(["m", "mm", "um", "nm", "Pa", "kPa", "MPa", "GPa"]);
 function pointCommand(index) {
   const parts = ["punchsweep point"];
+  const physical = a => PHYSICAL.has(a.unit);
   MAP.axes.forEach((a, j) => {
     if (a.name === "material") parts.push(`--material ${shellWord(`${a.labels ? a.labels[index[j]] : index[j]}.ini`)}`);
     else if (a.name === "time") return;
-    else parts.push(`--${a.name.replace("_", "-")} ${a.name === "s" ? a.scaled[index[j]] : a.scaled[index[j]]}`);
+    else if (physical(a)) parts.push(`--${a.name === "pbar" ? "pressure" : a.name} ${String(a.values[index[j]])}${a.unit}`);
+    else parts.push(`--${a.name.replace("_", "-")} ${a.scaled[index[j]]}`);
   });
-  if (MAP.material && !MAP.axes.some(a => a.name === "material")) parts.push("--material MATERIAL.ini");
+  if (MAP.R && MAP.axes.some(a => physical(a) && a.name !== "pbar")) parts.push(`--R ${MAP.R.replace(/ /g, "")}`);
+  const unnamed = MAP.material && !MAP.material_path && !MAP.axes.some(a => a.name === "material");
+  if (MAP.material_path && !MAP.axes.some(a => a.name === "material")) parts.push(`--material ${shellWord(MAP.material_path)}`);
+  if (unnamed) parts.push("--material MATERIAL.ini");
   if (!MAP.axes.some(a => a.name === "C")) parts.push(`--C ${MAP.C}`);
   parts.push(`--localization ${MAP.localization}`);
   if (MAP.time.length) parts.push(`--times ${MAP.time.join(",")}`);
-  return parts.join(" ") + (MAP.material ? "\\n(MATERIAL.ini: the map's material_file attribute holds its text)" : "");
+  return parts.join(" ") + (unnamed ? "\\n(MATERIAL.ini: the map's material_file attribute holds its text)" :
+    MAP.material_path ? "\\n(the material file as the sweep was given it, relative to where it ran)" : "");
 }
 
 function grid() {
@@ -451,9 +526,22 @@ function controls() {
 }
 
 const ready = (async () => {
-  for (const [name, v] of Object.entries(MAP.variables)) data.variables[name] = await unpack(v.data, Float64Array);
+  await loadPlotly();
+  for (const [name, v] of Object.entries(MAP.variables)) if (v.data) data.variables[name] = await unpack(v.data, Float64Array);
   for (const [name, v] of Object.entries(MAP.flags)) data.flags[name] = await unpack(v.data, Int8Array);
-  for (const [name, v] of Object.entries(MAP.series)) data.series[name] = await unpack(v.data, Float64Array);
+  for (const [name, v] of Object.entries(MAP.series)) if (v.data) data.series[name] = await unpack(v.data, Float64Array);
+  // The area fractions the page computes: pi (a1^2 + a2^2) / l^2 (explore.py's DERIVED).
+  const li = MAP.axes.findIndex(a => a.name === "l"), nl = MAP.axes[li].values.length;
+  const areaFraction = (a1, a2, per) => Float64Array.from(a1, (v, i) => {
+    const l = MAP.axes[li].values[Math.floor(i / per) % nl];
+    return Math.PI * (v * v + a2[i] * a2[i]) / (l * l);
+  });
+  for (const [name, v] of Object.entries(MAP.variables)) {
+    if (v.derived) data.variables[name] = areaFraction(data.variables[v.derived[0]], data.variables[v.derived[1]], strides[li]);
+  }
+  for (const [name, v] of Object.entries(MAP.series)) {
+    if (v.derived) data.series[name] = areaFraction(data.series[v.derived[0]], data.series[v.derived[1]], strides[li] * MAP.time.length);
+  }
   document.getElementById("title").textContent = `${MAP.source}: ${MAP.title}`;
   document.getElementById("subtitle").textContent = `axes: ${MAP.axes.map(a => `${a.name} (${a.values.length})`).join(", ")}` +
     (Object.keys(MAP.coarsened).length ? `; coarsened: ${JSON.stringify(MAP.coarsened)}` : "");
@@ -484,7 +572,7 @@ def render(data: dict, plotly_js: str) -> str:
     it gives plotly through plain() (plotly reads pseudo-HTML: tags, links, entities)."""
     text = (json.dumps(data, separators=(",", ":"))
             .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026"))
-    return (PAGE.replace("__PLOTLY__", plotly_js.replace("</script", "<\\/script"))
+    return (PAGE.replace("__PLOTLY__", plotly_js)
             .replace("__TITLE__", html.escape(f"punchsweep explorer: {data['source']}"))
             .replace("__DATA__", text))
 
@@ -508,16 +596,17 @@ def main(argv: list[str]) -> int:
         k = every_that_fits(ds, biggest, args.max_mb)
         hint = f"--every {biggest}={k}" if k else f"--every on more than one axis (even every {biggest} alone is too much)"
         raise pm.MapError(f"the page would be about {estimate:.0f} MB (estimated), above --max-mb {args.max_mb:g} "
-                          f"(plotly.js is 8.7 MB of it): coarsen the map, e.g. {hint}, or raise --max-mb")
+                          f"(plotly.js is {plotly_mb():.1f} MB of it): coarsen the map, e.g. {hint}, or raise --max-mb")
     data = payload(ds, args.x, args.y, steps, args.map)
-    page = render(data, PLOTLY_JS.read_text(encoding="utf-8"))
+    page = render(data, plotly_packed())
     size_mb = len(page.encode("utf-8")) / 1e6
     if size_mb > args.max_mb:
         biggest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
-        raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g} (plotly.js is 8.7 MB of "
-                          f"it): coarsen the map, e.g. --every {biggest}=2, or raise --max-mb")
+        raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g} (plotly.js is "
+                          f"{plotly_mb():.1f} MB of it): coarsen the map, e.g. --every {biggest}=2, or raise --max-mb")
     pm.write_whole(out, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"), inputs=[args.map])
-    print(f"explore.py: wrote {out} ({size_mb:.1f} MB: plotly.js 8.7 MB, the map {size_mb - 8.66:.1f} MB)")
+    print(f"explore.py: wrote {out} ({size_mb:.1f} MB: plotly.js {plotly_mb():.1f} MB compressed, the map "
+          f"{size_mb - plotly_mb():.1f} MB)")
     return 0
 
 

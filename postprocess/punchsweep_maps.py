@@ -141,18 +141,10 @@ _SI = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9, "Pa": 1.0, "kPa": 1e3, "MPa
 
 
 def physical_scales(ds) -> dict[str, tuple[float, str]]:
-    """What one unit of each scale the map knows is in physical units: R (global attribute
-    R, '50 um', where the sweep had model.R) in its unit, E0/(1-nu^2) (a material's
-    E0_star_Pa) in kPa, a load R^2 E0/(1-nu^2) in N (both known)."""
-    scales = {}
-    E0_star, R, R_m = scale_attributes(ds.attrs, MapError)
-    if E0_star is not None:
-        scales["E0/(1-nu^2)"] = (E0_star / 1e3, "kPa")
-    if R is not None:
-        scales["R"] = R
-        if E0_star is not None:
-            scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
-    return scales
+    """What one unit of each scale the map knows is in physical units: the module's table
+    (src/python/punchsweep/map_attributes.py), with pressures in kPa (what a picture shows):
+    R in its unit, E0/(1-nu^2) in kPa, loads in N, the rates of t* per R's unit and per kPa."""
+    return _MAP_ATTRIBUTES.physical_scales(ds.attrs, "kPa", MapError)
 
 
 def _load_map_attributes():

@@ -49,6 +49,9 @@ try {
       return { ix, iy, index: e.cellIndex(ix, iy), flat: k, regime: e.valueAt("regime", k), t_star: e.valueAt("t_star", k),
                command: e.pointCommand(e.cellIndex(ix, iy)),
                a1_inf: e.valueAt("a1_inf", k), a2_inf: e.valueAt("a2_inf", k),
+               area_fraction_inf: e.valueAt("area_fraction_inf", k),
+               area_fraction: e.data.series.area_fraction ? Array.from(e.data.series.area_fraction.slice(
+                 k * e.MAP.time.length, (k + 1) * e.MAP.time.length)) : null,
                readout: document.getElementById("readout").textContent };
     }, [ix, iy]);
     out.cells.push(read);

@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from .map_attributes import scale_attributes
+from .map_attributes import physical_scales
 
 try:
     from . import _core
@@ -490,26 +490,9 @@ def _decoded_flags(variable, meanings: list[str], codes: list[int]):
 
 
 def _physical_scales(attrs) -> dict:
-    """One unit of each scale the map knows, in physical units: R (attribute R, '50 um') in
-    its unit, E0/(1-nu^2) (E0_star_Pa) in Pa, R^2 E0/(1-nu^2) in N, T_eps in the material's
-    time unit (times already are); and the rates of t* (dt_star_ddh, ...) in that time unit
-    per R's unit and per Pa."""
-    scales = {}
-    time = attrs.get("time_unit", "T_eps")
-    time = time.decode() if isinstance(time, bytes) else str(time)
-    E0_star, R, R_m = scale_attributes(attrs, NotAMapError)  # map_attributes.py, the scripts' rule too
-    if E0_star is not None:
-        scales["E0/(1-nu^2)"] = (E0_star, "Pa")
-        if time != "T_eps":
-            scales["T_eps/(E0/(1-nu^2))"] = (1.0 / E0_star, f"{time}/Pa")
-    if R is not None:
-        number, unit = R
-        scales["R"] = R
-        if time != "T_eps":
-            scales["T_eps/R"] = (1.0 / number, f"{time}/{unit}")
-        if E0_star is not None:
-            scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
-    return scales
+    """One unit of each scale the map knows, in physical units (map_attributes.physical_scales,
+    the scripts' table too): pressures in Pa."""
+    return physical_scales(attrs, "Pa", NotAMapError)
 
 
 def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821

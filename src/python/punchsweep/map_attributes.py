@@ -44,3 +44,29 @@ def scale_attributes(attrs, error=ValueError):
                         f"{text(attrs.get('R_m', 'missing'))!r} disagree")
         R = (number, parts[1])
     return E0_star, R, R_m
+
+
+def physical_scales(attrs, pressure_unit: str = "Pa", error=ValueError) -> dict:
+    """One unit of each scale the map knows, in physical units, as (factor, unit): R (attribute
+    R, '50 um') in its unit, E0/(1-nu^2) (E0_star_Pa) in `pressure_unit` (Pa for the module,
+    kPa for the pictures), R^2 E0/(1-nu^2) in N, and the rates of t* (dt_star_ddh, ...: T_eps
+    per R or per E0*) in the material's time unit per R's unit and per that pressure unit.
+    Times themselves already are in the material's unit. The one table the module's
+    open_map and the postprocess scripts convert a map by."""
+    per_pascal = {"Pa": 1.0, "kPa": 1e-3, "MPa": 1e-6}[pressure_unit]
+    time = attrs.get("time_unit", "T_eps")
+    time = time.decode() if isinstance(time, bytes) else str(time)
+    scales = {}
+    E0_star, R, R_m = scale_attributes(attrs, error)
+    if E0_star is not None:
+        scales["E0/(1-nu^2)"] = (E0_star * per_pascal, pressure_unit)
+        if time != "T_eps":
+            scales["T_eps/(E0/(1-nu^2))"] = (1.0 / (E0_star * per_pascal), f"{time}/{pressure_unit}")
+    if R is not None:
+        number, unit = R
+        scales["R"] = R
+        if time != "T_eps":
+            scales["T_eps/R"] = (1.0 / number, f"{time}/{unit}")
+        if E0_star is not None:
+            scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
+    return scales
