@@ -65,6 +65,8 @@ def _json_form(result) -> dict:
         elif k == "corner_regimes":
             if v is not None:
                 out.update({f"corners_{name}": n for name, n in v.items()})
+        elif k == "other":
+            out.update(v)  # the JSON's keys the result class does not name
         elif k == "notes":
             if v:
                 out[k] = list(v)  # the JSON has them only where reading the inputs changed one

@@ -216,3 +216,20 @@ def test_the_modules_point_in_json_form_is_the_commands_json():
     for k in ("t_star_low", "t_star_high", "corners_immediate", "corners_delayed", "corners_never", "notes",
               "regime", "t_star"):
         assert module[k] == command[k], k
+
+
+def test_no_key_of_the_engines_point_is_dropped_by_python():
+    """Issue 37 item 6: the Python result names every key of the command's JSON or keeps it
+    in `other`; today it names all of them (a key the engine gains fails this test until
+    PointResult says what it is)."""
+    r = punchsweep.point(material=SILICONE, R="50um", l="150um", s=2, dh="0.01um", pressure="2kPa",
+                         tolerance="dh=0.05um, pressure=5%")
+    assert r.other == {}
+    ref = punchsweep.reference(l=0.75, dh=0.075, T=2.5, pbar=0.06, s=2, bem_grid=16, times=[0, 1])
+    assert ref.other == {}
+    # And a key it does not name is kept, not dropped.
+    raw = {"regime": "never", "series": {}, "a_new_output": 1.5}
+    kept = punchsweep._result(punchsweep.ReferenceResult, {**raw, **{k: None for k in (
+        "t_star", "t_star_lower", "t_star_upper", "converged", "cg_iterations", "max_residual", "bem_grid",
+        "spacing", "steps", "solves", "seconds", "time_unit")}})
+    assert kept.other == {"a_new_output": 1.5}

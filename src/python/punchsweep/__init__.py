@@ -74,10 +74,19 @@ def _keywords(options: dict[str, Any]) -> list[tuple[str, str]]:
     return [(name.replace("_", "-"), _option_text(value)) for name, value in options.items() if value is not None]
 
 
-def _result(cls, raw: dict):
-    """A result dataclass from the engine's dict: its fields, the series as float arrays."""
-    fields = {k: raw[k] for k in cls.__dataclass_fields__ if k != "series" and k in raw}
-    return cls(series={k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}, **fields)
+def _result(cls, raw: dict, consumed=lambda key: False):
+    """A result dataclass from the engine's dict: its fields, the series as float arrays, and
+    in `other` every key of the engine's that is neither a field nor `consumed` (gathered
+    into one: sensitivity, t_star_range), so no output the engine gains is dropped unseen."""
+    fields = {k: raw[k] for k in cls.__dataclass_fields__ if k not in ("series", "other") and k in raw}
+    other = {k: v for k, v in raw.items() if k not in cls.__dataclass_fields__ and not consumed(k)}
+    return cls(series={k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}, other=other, **fields)
+
+
+def _gathered(key: str) -> bool:
+    """The point's keys that PointResult gathers into one field (sensitivity, t_star_range,
+    corner_regimes)."""
+    return key.startswith(("dt_star_d", "dlog_t_star_dlog_", "corners_")) or key in ("t_star_low", "t_star_high")
 
 
 @dataclass(frozen=True)
@@ -105,7 +114,8 @@ class PointResult:
     advisories: the physical advisories raised, "beyond_paraboloid, beyond_cap,
     large_strain" or a part ("" for none; cap_radius="30um" or cap_height=... enables
     beyond_cap), advisory_reason their sentence, strain Tabor's 0.2 f'(a) at the largest
-    contact radius (docs/model.md, section 16)."""
+    contact radius (docs/model.md, section 16). other: any key of the command's JSON this
+    class does not name (empty today; an output the engine gains lands here, not nowhere)."""
     regime: str
     t_star: float | None
     h_0: float | None
@@ -127,6 +137,7 @@ class PointResult:
     advisories: str = ""
     advisory_reason: str = ""
     strain: float | None = None
+    other: dict = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -135,7 +146,8 @@ class ReferenceResult:
     section 13): regime, t_star (None for never or beyond the last time) in its bracket
     [t_star_lower, t_star_upper], the solver's report (converged, cg_iterations,
     max_residual), the grid (bem_grid nodes a side, spacing in R), steps, solves, seconds,
-    and the series t, a1, a2, P1, P2, area_fraction, h."""
+    and the series t, a1, a2, P1, P2, area_fraction, h; other: any key of the command's
+    JSON this class does not name (empty today)."""
     regime: str
     t_star: float | None
     t_star_lower: float | None
@@ -150,6 +162,7 @@ class ReferenceResult:
     seconds: float
     series: dict[str, np.ndarray]
     time_unit: str
+    other: dict = field(default_factory=dict)
 
 
 
@@ -174,7 +187,7 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     corners = ({k: int(raw[f"corners_{k}"]) for k in ("immediate", "delayed", "never", "not_computed")}
                if "t_star_low" in raw else None)
     return _result(PointResult, {**raw, "sensitivity": sensitivity, "t_star_range": bounds,
-                                 "corner_regimes": corners})
+                                 "corner_regimes": corners}, _gathered)
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
