@@ -45,7 +45,7 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 def read_window(path: str) -> dict:
     return pm.read_json(path, "a design window",
-                        lambda d: d.get("quantity") == "dh" and isinstance(d.get("requirements"), list),
+                        lambda d: d.get("quantity") in ("dh", "l") and isinstance(d.get("requirements"), list),
                         "the JSON of `punchsweep design --format json` (no 'quantity' and 'requirements')")
 
 
@@ -53,9 +53,21 @@ def _number(v) -> float:
     return math.nan if v is None else float(v)
 
 
+def edge_of(d: dict, value: float, upper: bool) -> float:
+    """A bound (R) less the design quantity's own tolerance: dh -+ its tolerance; l moved
+    inward by its absolute or relative tolerance."""
+    tol = d["tolerance"]
+    if d["quantity"] == "dh":
+        return value - tol["dh"] if upper else value + tol["dh"]
+    if tol["l_is"].startswith("absolute"):
+        return value - tol["l"] if upper else value + tol["l"]
+    return value / (1 + tol["l"]) if upper else value / (1 - tol["l"])
+
+
 def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
-    """Per requirement: (requirement, temperatures, its bound on dh there in the physical
-    unit): the tightest gap over the box's corners at each temperature, -+ the dh tolerance."""
+    """Per requirement: (requirement, temperatures, its bound on the design quantity there in
+    the physical unit): the tightest over the box's corners at each temperature, less the
+    quantity's own tolerance (edge_of)."""
     per_R = d["physical"]["R"]  # R in the physical unit (1 where no --R was given)
     curves = []
     for r in d["requirements"]:
@@ -64,11 +76,10 @@ def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
         for b in r["bounds"]:
             T = _number(b["temperature"])
             key = 0.0 if math.isnan(T) else T
-            gap = _number(b["gap"])
-            by_T[key] = min(by_T.get(key, math.inf), gap) if upper else max(by_T.get(key, -math.inf), gap)
+            value = _number(b["value"])
+            by_T[key] = min(by_T.get(key, math.inf), value) if upper else max(by_T.get(key, -math.inf), value)
         Ts = np.array(sorted(by_T))
-        tol = d["tolerance"]["dh"]
-        edge = np.array([by_T[T] - tol if upper else by_T[T] + tol for T in Ts]) * per_R
+        edge = np.array([edge_of(d, by_T[T], upper) for T in Ts]) * per_R
         curves.append((r, Ts, edge))
     return curves
 
@@ -86,7 +97,7 @@ def render(d: dict):
     x_span = (min(d["temperatures"]), max(d["temperatures"])) if has_T else (0.0, 1.0)
     for k, (r, Ts, edge) in enumerate(curves):
         upper = r["side"] == "upper"
-        label = f"{r['text']}: dh {'≤' if upper else '≥'} line"
+        label = f"{r['text']}: {d['quantity']} {'≤' if upper else '≥'} line"
         colour = colours[k % len(colours)]
         if has_T:
             ax.plot(Ts, edge, color=colour, lw=2, label=label, marker="o", ms=3)
@@ -116,8 +127,9 @@ def render(d: dict):
             ax.axhline(d["physical"]["centre"], color="tab:green", ls="--", lw=1.2, label="its centre")
         else:
             ax.axhline(lo, color="tab:green", ls="--", lw=1.2, label="the window's lower edge")
-        title = (f"dh window {lo:.4g} to {top:.4g} {unit} (centre {d['physical']['centre']:.4g}, margin "
-                 f"± {d['physical']['margin']:.3g} {unit})" if top is not None else f"dh ≥ {lo:.4g} {unit}")
+        q = d["quantity"]
+        title = (f"{q} window {lo:.4g} to {top:.4g} {unit} (centre {d['physical']['centre']:.4g}, margin "
+                 f"± {d['physical']['margin']:.3g} {unit})" if top is not None else f"{q} ≥ {lo:.4g} {unit}")
     else:
         title = "no design meets this"
     box = []
@@ -126,12 +138,15 @@ def render(d: dict):
     if d["tolerance"]["pressure"]:
         box.append(f"pressure ± {100 * d['tolerance']['pressure']:.3g}%" if d["tolerance"]["pressure_is"] == "relative"
                    else "pressure ± a stated amount")
+    if d["tolerance"]["l"]:
+        box.append(f"l ± {d['tolerance']['l'] * d['physical']['R']:.3g} {unit}" if d["tolerance"]["l_is"] != "relative"
+                   else f"l ± {100 * d['tolerance']['l']:.3g}%")
     subtitle = d["point"] + (f"; tolerance {', '.join(box)}" if box else "")
     ax.set_title(title + "\n" + "\n".join(textwrap.wrap(subtitle.replace(" um", " µm"), 110)), fontsize=9)
     ax.set_xlabel("temperature (°C)" if has_T else "")
     if not has_T:
         ax.set_xticks([])
-    ax.set_ylabel(f"height difference dh ({unit})")
+    ax.set_ylabel(f"{'height difference dh' if d['quantity'] == 'dh' else 'pitch l'} ({unit})")
     ax.set_xlim(*x_span)
     ax.legend(fontsize=7.5, loc="best")
     if d["empty"] and d.get("miss"):

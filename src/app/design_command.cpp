@@ -46,6 +46,9 @@ struct DesignArgs {
   std::optional<std::string> temperature, tolerance;
   std::string format = "table";
   bool help = false;
+  /// What the window is of: dh (given l), or l (given dh; --l is then the range searched).
+  std::string find = "dh";
+  std::optional<std::string> dh;
   input::Keywords point;
 };
 
@@ -62,8 +65,10 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
       a.format = value;
     } else if (name == "help") {
       a.help = true;
+    } else if (name == "find") {
+      a.find = value;
     } else if (name == "dh") {
-      throw input::UsageError("--dh: the design finds dh; state what it must do with --require");
+      a.dh = value;
     } else if (name == "pbar" || name == "pressure") {
       throw input::UsageError("--" + name + ": each --require names its pressure ('touch within 1s at 30kPa')");
     } else {
@@ -73,6 +78,12 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
   if (a.format != "table" && a.format != "json") {
     throw input::UsageError("--format = " + a.format + " is not one of: table, json");
   }
+  if (a.find != "dh" && a.find != "l") throw input::UsageError("--find = " + a.find + " is not one of: dh, l");
+  if (a.find == "dh" && a.dh) {
+    throw input::UsageError("--dh: the design finds dh; state what it must do with --require (or --find l, the "
+                            "pitch for a given dh)");
+  }
+  if (a.find == "l" && !a.dh) throw input::UsageError("--find l needs --dh, the height difference the pitch is for");
   return a;
 }
 
@@ -218,7 +229,8 @@ struct Box {
   double dh = 0.0;
   double pressure = 0.0;
   bool pressure_absolute = false;
-  double l = 0.0, C = 0.0;  ///< relative
+  double l = 0.0, C = 0.0;  ///< relative (l in R where l_absolute)
+  bool l_absolute = false;
   double temperature = 0.0;
 };
 
@@ -251,7 +263,8 @@ Box read_box(const std::string& all, const input::PointInputs& base) {
         v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("E0/(1-nu^2)", base.scales));
         box.pressure_absolute = !percent;
       } else if (name == "l") {
-        v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("R", base.scales)) / base.problem.l;
+        v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("R", base.scales));
+        box.l_absolute = !percent;
       } else if (name == "C") {
         v = percent ? std::stod(number) / 100.0 : std::stod(number) / base.problem.shape.C;
       } else if (name == "temperature") {
@@ -271,7 +284,7 @@ Box read_box(const std::string& all, const input::PointInputs& base) {
       throw bad(entry, "not a number");
     }
     if (!(std::isfinite(v) && v >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
-    if ((name == "l" || name == "C" || (name != "dh" && name != "temperature" && percent)) && !(v < 1.0)) {
+    if ((name == "C" || (name != "dh" && name != "temperature" && percent)) && !(v < 1.0)) {
       throw bad(entry, "a relative tolerance of 100% or more leaves nothing of the value");
     }
     if (name == "dh") box.dh = v;
@@ -320,9 +333,27 @@ DesignResult design(const DesignArgs& a) {
       throw input::UsageError(what.empty() ? std::string(e.what()) : what + ": " + e.what());
     }
   };
-  input::Keywords base_keywords = with(a.point, "dh", "0");
-  // The scales first (a requirement's units need them): at a nominal pressure.
+  const bool by_l = a.find == "l";
   DesignResult out;
+  out.quantity = a.find;
+  // --find l: --l is the range of pitches searched ("100um..400um"), --dh the height difference.
+  std::string l_text;
+  for (const auto& [name, value] : a.point) {
+    if (name == "l") l_text = value;
+  }
+  std::string l_lo_text = l_text, l_hi_text;
+  if (by_l) {
+    const std::size_t dots = l_text.find("..");
+    if (dots == std::string::npos) {
+      throw input::UsageError("--l " + (l_text.empty() ? std::string("(missing)") : l_text) +
+                              ": with --find l, the range of pitches to search, as 100um..400um");
+    }
+    l_lo_text = trimmed(l_text.substr(0, dots));
+    l_hi_text = trimmed(l_text.substr(dots + 2));
+  }
+  input::Keywords base_keywords = with(a.point, "dh", by_l ? *a.dh : "0");
+  if (by_l) base_keywords = with(base_keywords, "l", l_lo_text);
+  // The scales first (a requirement's units need them): at a nominal pressure.
   std::optional<double> first_T;
   if (a.temperature) first_T = read_temperature(a.temperature->substr(0, a.temperature->find("..")), "C",
                                                 "--temperature " + *a.temperature);
@@ -338,41 +369,98 @@ DesignResult design(const DesignArgs& a) {
   out.pressure_tolerance = box.pressure;
   out.pressure_absolute = box.pressure_absolute;
   out.l_tolerance = box.l;
+  out.l_absolute = box.l_absolute;
   out.C_tolerance = box.C;
   out.inputs = point_at(with(probe, "pbar", input::json_number(requirements.front().pbar)), "");
-  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C;
+  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C, dh0 = out.inputs.problem.dh;
+  if (by_l) {
+    out.search_lo = l0;
+    out.search_hi = point_at(with(probe, "l", l_hi_text), "--l " + l_text).problem.l;
+    if (!(out.search_hi > out.search_lo)) {
+      throw input::UsageError("--l " + l_text + ": the range's end is not above its start");
+    }
+    if (box.dh > dh0) throw input::UsageError("--tolerance dh: larger than --dh itself");
+  }
   const std::vector<double> temperatures = out.temperatures.empty() ? std::vector<double>{kNaN} : out.temperatures;
-  out.lower = 0.0;
-  out.upper = kInf;
+  out.lower = by_l ? out.search_lo : 0.0;
+  out.upper = by_l ? out.search_hi : kInf;
   for (const Requirement& r : requirements) {
     RequirementBound b;
     b.requirement = r;
     const bool touch = r.kind == Requirement::Kind::touch_by;
-    b.edge = touch ? kInf : -kInf;
+    // dh: touching by t is dh <= the gap closed by t, an upper edge; l: the gap grows with the
+    // pitch (more load on each tall punch), so touching is l >= the pitch that closes dh.
+    b.upper = by_l ? !touch : touch;
+    b.edge = b.upper ? kInf : -kInf;
+    const std::string what = "--require '" + r.text + "' (a corner of the box)";
     for (const double T : temperatures) {
       for (const double p : sides(r.pbar, box.pressure, box.pressure_absolute)) {
-        for (const double l : sides(l0, box.l, false)) {
+        for (const double l : by_l ? std::vector<double>{l0} : sides(l0, box.l, box.l_absolute)) {
           for (const double C : sides(C0, box.C, false)) {
             input::Keywords k = with(base_keywords, "pbar", input::json_number(p));
             if (!std::isnan(T)) k = with(k, "temperature", input::json_number(T));
-            if (box.l > 0.0) k = with(k, "l", input::json_number(l));
             if (box.C > 0.0) k = with(k, "C", input::json_number(C));
-            const input::PointInputs in = point_at(k, "--require '" + r.text + "' (a corner of the box)");
-            DesignBound d{T, p, l, C, model::dh_touching_at(in.problem, *in.creep, r.time)};
-            if (std::isnan(d.gap)) {
-              throw std::runtime_error("the gap closed at " + in.describe() + " is not a number");
+            const auto gap_at = [&](double pitch) {
+              const input::PointInputs in = point_at(with(k, "l", input::json_number(pitch)), what);
+              const double g = model::dh_touching_at(in.problem, *in.creep, r.time);
+              if (std::isnan(g)) throw std::runtime_error("the gap closed at " + in.describe() + " is not a number");
+              return g;
+            };
+            if (!by_l) {
+              if (box.l > 0.0) k = with(k, "l", input::json_number(l));
+              const input::PointInputs in = point_at(k, what);
+              DesignBound d{T, p, l, C, dh0, model::dh_touching_at(in.problem, *in.creep, r.time)};
+              if (std::isnan(d.value)) throw std::runtime_error("the gap closed at " + in.describe() + " is not a number");
+              const double edge = touch ? d.value - box.dh : d.value + box.dh;
+              if (b.upper ? edge < b.edge : edge > b.edge) {
+                b.edge = edge;
+                b.binding = d;
+              }
+              b.bounds.push_back(d);
+              continue;
             }
-            const double edge = touch ? d.gap - box.dh : d.gap + box.dh;
-            if (touch ? edge < b.edge : edge > b.edge) {
-              b.edge = edge;
-              b.binding = d;
+            // --find l: at each dh of the box, the pitch whose gap by the requirement's time is
+            // that dh, by bisection in log l over the range (the gap grows with l; checked).
+            const double lo = out.search_lo, hi = out.search_hi;
+            const double g_lo = gap_at(lo), g_hi = gap_at(hi);
+            if (!(g_hi >= g_lo)) {
+              out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from l = " +
+                                  model::number_text(lo, 4) + " to " + model::number_text(hi, 4) +
+                                  " R here; the window assumes it grows with l");
             }
-            b.bounds.push_back(d);
+            for (const double dh : sides(dh0, box.dh, true)) {
+              double value;
+              if (g_lo >= dh) {
+                value = lo;  // touches by then over the whole range
+              } else if (!(g_hi >= dh)) {
+                value = kInf;  // not within the range
+              } else {
+                double a_ = std::log(lo), b_ = std::log(hi);
+                for (int it = 0; it < 60 && b_ - a_ > 1e-15 * std::abs(b_); ++it) {
+                  const double m = 0.5 * (a_ + b_);
+                  (gap_at(std::exp(m)) >= dh ? b_ : a_) = m;
+                }
+                value = std::exp(b_);  // the least l of the range whose gap reaches dh (to 1e-15)
+              }
+              DesignBound d{T, p, lo, C, dh, value};
+              // touch: l >= value (a lower edge); no touch: l < value (an upper edge, the range's
+              // end where the gap never reaches dh in it).
+              const double edge = touch ? value : value <= lo ? -kInf : std::min(value, hi);
+              if (b.upper ? edge < b.edge : edge > b.edge) {
+                b.edge = edge;
+                b.binding = d;
+              }
+              b.bounds.push_back(d);
+            }
           }
         }
       }
     }
-    if (touch) {
+    if (by_l) {  // the pitch's own tolerance moves the edges inward
+      if (b.upper && std::isfinite(b.edge)) b.edge = box.l_absolute ? b.edge - box.l : b.edge / (1.0 + box.l);
+      if (!b.upper && std::isfinite(b.edge)) b.edge = box.l_absolute ? b.edge + box.l : b.edge / (1.0 - box.l);
+    }
+    if (b.upper) {
       out.upper = std::min(out.upper, b.edge);
     } else {
       out.lower = std::max(out.lower, b.edge);
@@ -382,18 +470,20 @@ DesignResult design(const DesignArgs& a) {
     // at the low (touch) or high pressure.
     // (A tie is no exception: h_inf is the same at every temperature.)
     const auto tighter = [&](const DesignBound& x, const DesignBound& than) {
-      const double close = 1e-12 * std::max(std::abs(than.gap), 1e-300);
-      return touch ? x.gap < than.gap - close : x.gap > than.gap + close;
+      const double close = 1e-12 * std::max(std::abs(than.value), 1e-300);
+      return b.upper ? x.value < than.value - close : x.value > than.value + close;
+    };
+    const auto same_corner = [](const DesignBound& x, const DesignBound& y) {
+      return x.pbar == y.pbar && x.l == y.l && x.C == y.C && x.dh == y.dh;
     };
     if (temperatures.size() > 1) {
       b.every_temperature = std::all_of(b.bounds.begin(), b.bounds.end(), [&](const DesignBound& x) {
-        return x.pbar != b.binding.pbar || x.l != b.binding.l || x.C != b.binding.C ||
-               (!tighter(b.binding, x) && !tighter(x, b.binding));
+        return !same_corner(x, b.binding) || (!tighter(b.binding, x) && !tighter(x, b.binding));
       });
       const double want = touch ? temperatures.front() : temperatures.back();
       bool beaten = false;
       for (const DesignBound& x : b.bounds) {
-        if (x.temperature == want && x.pbar == b.binding.pbar && x.l == b.binding.l && x.C == b.binding.C) {
+        if (x.temperature == want && same_corner(x, b.binding)) {
           beaten = tighter(b.binding, x);
         }
       }
@@ -409,7 +499,7 @@ DesignResult design(const DesignArgs& a) {
       bool beaten = false;
       for (const DesignBound& x : b.bounds) {
         if (x.temperature == b.binding.temperature && x.pbar == (touch ? ps.front() : ps.back()) &&
-            x.l == b.binding.l && x.C == b.binding.C) {
+            x.l == b.binding.l && x.C == b.binding.C && x.dh == b.binding.dh) {
           beaten = tighter(b.binding, x);
         }
       }
@@ -418,23 +508,27 @@ DesignResult design(const DesignArgs& a) {
                             " pressure of its tolerance: t* does not fall with pressure there");
       }
     }
-    if (!touch && std::isinf(b.edge)) {
+    if (!touch && std::isinf(b.edge) && std::isinf(b.binding.value) == !by_l) {
       out.notes.push_back("'" + r.text + "' cannot hold: this law creeps without end, so the second level touches "
                           "at last whatever dh");
+    }
+    if (by_l && std::isinf(b.edge)) {
+      out.notes.push_back("'" + r.text + "' holds at no pitch from " + model::number_text(out.search_lo, 4) + " to " +
+                          model::number_text(out.search_hi, 4) + " R at every corner: widen --l or change dh");
     }
     out.bounds.push_back(std::move(b));
   }
   return out;
 }
 
-/// The geometry and material of the design, without what it finds or varies (dh, the
-/// pressure, the temperature).
-std::string geometry_text(const input::PointInputs& in) {
+/// The geometry and material of the design, without what it finds or varies (the
+/// quantity, the pressure, the temperature).
+std::string geometry_text(const input::PointInputs& in, const std::string& quantity) {
   input::PointInputs kept;
   kept.scales = in.scales;
   kept.time_unit = in.time_unit;
   for (const auto& [p, v] : in.values) {
-    if (p->name != "dh" && p->name != model::kPressure && p->name != model::temperature_parameter().name) {
+    if (p->name != quantity && p->name != model::kPressure && p->name != model::temperature_parameter().name) {
       kept.values.emplace_back(p, v);
     }
   }
@@ -470,7 +564,10 @@ std::string tolerance_text(const DesignResult& d, const LengthUnit& L) {
     parts.push_back("pressure +- " + (d.pressure_absolute ? pressure_text(d.pressure_tolerance, d.inputs)
                                                           : model::number_text(100 * d.pressure_tolerance, 4) + "%"));
   }
-  if (d.l_tolerance > 0) parts.push_back("l +- " + model::number_text(100 * d.l_tolerance, 4) + "%");
+  if (d.l_tolerance > 0) {
+    parts.push_back("l +- " + (d.l_absolute ? model::number_text(d.l_tolerance * L.per_R, 4) + " " + L.unit
+                                            : model::number_text(100 * d.l_tolerance, 4) + "%"));
+  }
   if (d.C_tolerance > 0) parts.push_back("C +- " + model::number_text(100 * d.C_tolerance, 4) + "%");
   std::string t;
   for (const std::string& p : parts) t += (t.empty() ? "" : ", ") + p;
@@ -486,24 +583,34 @@ std::string where_text(const RequirementBound& r, const DesignResult& d, const L
     t += model::number_text(b.temperature, 4) + " degC, ";
   }
   t += pressure_text(b.pbar, d.inputs);
-  if (d.l_tolerance > 0) t += ", l = " + model::number_text(b.l * L.per_R, 4) + " " + L.unit;
+  if (d.quantity == "dh" && d.l_tolerance > 0) t += ", l = " + model::number_text(b.l * L.per_R, 4) + " " + L.unit;
   if (d.C_tolerance > 0) t += ", C = " + model::number_text(b.C, 4);
-  if (d.dh_tolerance > 0) t += std::string(", dh ") + (touch ? "+ " : "- ") + model::number_text(d.dh_tolerance * L.per_R, 4) + " " + L.unit;
+  if (d.quantity == "l") {
+    t += ", dh = " + model::number_text(b.dh * L.per_R, 4) + " " + L.unit;
+  } else if (d.dh_tolerance > 0) {
+    t += std::string(", dh ") + (touch ? "+ " : "- ") + model::number_text(d.dh_tolerance * L.per_R, 4) + " " + L.unit;
+  }
   return t;
 }
 
 /// What to say where no dh meets every requirement: the nearest miss.
 std::string miss_text(const DesignResult& d, const LengthUnit& L) {
-  if (std::isinf(d.lower)) return "no dh: a 'never' requirement cannot hold for this law";
+  const std::string& q = d.quantity;
+  if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
+    return q == "dh" ? "no dh: a 'never' requirement cannot hold for this law"
+                     : "no pitch of the range searched: a requirement holds at none of them (see the notes)";
+  }
   const double gap = d.lower - d.upper;
-  std::string t = "the nearest miss is dh = " + model::number_text(0.5 * (d.lower + d.upper) * L.per_R, 4) + " " +
-                  L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per_R, 4) + " " + L.unit;
-  const double exact_gap = gap - 2 * d.dh_tolerance;  // the window's width with an exact dh, negated
-  if (d.dh_tolerance > 0 && exact_gap < 0) {
-    t += "; a dh tolerance of +- " + model::number_text(-0.5 * exact_gap * L.per_R, 4) + " " + L.unit +
+  std::string t = "the nearest miss is " + q + " = " + model::number_text(0.5 * (d.lower + d.upper) * L.per_R, 4) +
+                  " " + L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per_R, 4) + " " + L.unit;
+  // The window's width with an exact dh (or l), negated: what the tolerance took.
+  const double tolerance = q == "dh" ? d.dh_tolerance : d.l_absolute ? d.l_tolerance : 0.0;
+  const double exact_gap = gap - 2 * tolerance;
+  if (tolerance > 0 && exact_gap < 0) {
+    t += "; a " + q + " tolerance of +- " + model::number_text(-0.5 * exact_gap * L.per_R, 4) + " " + L.unit +
          " or less would meet every requirement";
-  } else {
-    t += "; not even an exact dh meets every requirement";
+  } else if (q == "dh" || d.l_tolerance == 0) {
+    t += "; not even an exact " + q + " meets every requirement";
   }
   return t;
 }
@@ -512,7 +619,7 @@ std::string json_of(const DesignResult& d) {
   const LengthUnit L = length_unit(d.inputs);
   std::ostringstream s;
   const auto num = [](double v) { return input::json_number(v); };
-  s << "{\"quantity\": \"dh\", \"unit\": \"R\", \"lower\": " << num(d.lower) << ", \"upper\": " << num(d.upper)
+  s << "{\"quantity\": " << input::json_string(d.quantity) << ", \"unit\": \"R\", \"lower\": " << num(d.lower) << ", \"upper\": " << num(d.upper)
     << ", \"empty\": " << (d.empty() ? "true" : "false");
   const bool finite = !d.empty() && std::isfinite(d.upper);
   s << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) : kNaN)
@@ -521,10 +628,12 @@ std::string json_of(const DesignResult& d) {
     << ", \"upper\": " << num(d.upper * L.per_R) << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) * L.per_R : kNaN)
     << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) * L.per_R : kNaN)
     << ", \"dh_tolerance\": " << num(d.dh_tolerance * L.per_R) << "}";
-  s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
+  if (d.quantity == "l") s << ",\n \"search\": [" << num(d.search_lo) << ", " << num(d.search_hi) << "]";
+  s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs, d.quantity)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
   s << ",\n \"tolerance\": {\"dh\": " << num(d.dh_tolerance) << ", \"pressure\": " << num(d.pressure_tolerance)
     << ", \"pressure_is\": \"" << (d.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
-    << num(d.l_tolerance) << ", \"C\": " << num(d.C_tolerance) << "}";
+    << num(d.l_tolerance) << ", \"l_is\": \"" << (d.l_absolute ? "absolute, R" : "relative") << "\", \"C\": "
+    << num(d.C_tolerance) << "}";
   s << ",\n \"temperatures\": [";
   for (std::size_t i = 0; i < d.temperatures.size(); ++i) s << (i ? ", " : "") << num(d.temperatures[i]);
   s << "],\n \"requirements\": [";
@@ -533,16 +642,18 @@ std::string json_of(const DesignResult& d) {
     const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
     s << (i ? ",\n  " : "\n  ") << "{\"text\": " << input::json_string(b.requirement.text) << ", \"kind\": \""
       << (touch ? "touch_by" : "no_touch_by") << "\", \"time\": " << num(b.requirement.time)
-      << ", \"pbar\": " << num(b.requirement.pbar) << ", \"side\": \"" << (touch ? "upper" : "lower")
+      << ", \"pbar\": " << num(b.requirement.pbar) << ", \"side\": \"" << (b.upper ? "upper" : "lower")
       << "\", \"edge\": " << num(b.edge) << ", \"edge_physical\": " << num(b.edge * L.per_R)
       << ", \"binds_at\": {\"temperature\": " << num(b.binding.temperature)
       << ", \"every_temperature\": " << (b.every_temperature ? "true" : "false") << ", \"pbar\": " << num(b.binding.pbar)
-      << ", \"l\": " << num(b.binding.l) << ", \"C\": " << num(b.binding.C) << ", \"gap\": " << num(b.binding.gap)
+      << ", \"l\": " << num(b.binding.l) << ", \"C\": " << num(b.binding.C) << ", \"dh\": " << num(b.binding.dh)
+      << ", \"value\": " << num(b.binding.value)
       << "},\n   \"bounds\": [";
     for (std::size_t k = 0; k < b.bounds.size(); ++k) {
       const DesignBound& x = b.bounds[k];
       s << (k ? ", " : "") << "{\"temperature\": " << num(x.temperature) << ", \"pbar\": " << num(x.pbar)
-        << ", \"l\": " << num(x.l) << ", \"C\": " << num(x.C) << ", \"gap\": " << num(x.gap) << "}";
+        << ", \"l\": " << num(x.l) << ", \"C\": " << num(x.C) << ", \"dh\": " << num(x.dh)
+        << ", \"value\": " << num(x.value) << "}";
     }
     s << "]}";
   }
@@ -555,8 +666,9 @@ std::string json_of(const DesignResult& d) {
 void write_table(std::ostream& out, const DesignResult& d) {
   const LengthUnit L = length_unit(d.inputs);
   const auto len = [&](double v) { return model::number_text(v * L.per_R, 4) + " " + L.unit; };
-  out << "punchsweep design: the height difference dh that meets every requirement\n"
-      << "  " << geometry_text(d.inputs) << "\n  checked at ";
+  const std::string& q = d.quantity;
+  out << "punchsweep design: the " << (q == "dh" ? "height difference dh" : "pitch l") << " that meets every requirement\n"
+      << "  " << geometry_text(d.inputs, d.quantity) << "\n  checked at ";
   if (d.temperatures.size() > 1) {
     out << "every temperature of " << model::number_text(d.temperatures.front(), 4) << " to "
         << model::number_text(d.temperatures.back(), 4) << " degC (" << d.temperatures.size() << " temperatures)";
@@ -566,23 +678,33 @@ void write_table(std::ostream& out, const DesignResult& d) {
     out << "the law's own parameters";
   }
   const std::string box = tolerance_text(d, L);
-  out << (box.empty() ? "" : " and every corner of the tolerance box " + box) << "\n\n";
+  out << (box.empty() ? "" : " and every corner of the tolerance box " + box) << "\n";
+  if (q == "l") out << "  pitches searched: " << len(d.search_lo) << " to " << len(d.search_hi) << "\n";
+  out << "\n";
+  // dh: touching by t is dh <= (closed), never is dh > (open); l: touching is l >=, never l <.
+  const auto sign = [&](const RequirementBound& b) {
+    const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
+    return q == "dh" ? (touch ? "<= " : "> ") : (touch ? ">= " : "< ");
+  };
   for (const RequirementBound& b : d.bounds) {
     const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
-    out << "  " << b.requirement.text << ": dh " << (touch ? "<= " : "> ")
+    out << "  " << b.requirement.text << ": " << q << " " << sign(b)
         << (std::isinf(b.edge) ? std::string(b.edge > 0 ? "inf" : "-inf") : len(b.edge)) << "  (binds at "
         << where_text(b, d, L, touch) << ")\n";
   }
   out << "\n";
+  const bool tolerance = q == "dh" ? d.dh_tolerance > 0 : d.l_tolerance > 0;
   if (d.empty()) {
-    out << "no design meets this: the requirements leave dh between " << len(d.lower) << " and " << len(d.upper)
-        << ", an empty window; " << miss_text(d, L) << "\n";
+    out << "no design meets this: the requirements leave " << q << " between " << len(d.lower) << " and "
+        << len(d.upper) << ", an empty window; " << miss_text(d, L) << "\n";
   } else if (std::isinf(d.upper)) {
-    out << "window: dh " << (d.lower > 0 ? "> " : ">= ") << len(d.lower) << " (no upper edge)\n";
+    out << "window: " << q << " " << (d.lower > 0 ? "> " : ">= ") << len(d.lower) << " (no upper edge)\n";
   } else {
-    out << "window: " << len(d.lower) << (d.lower > 0 ? " < dh <= " : " <= dh <= ") << len(d.upper) << "; centre "
-        << len(0.5 * (d.lower + d.upper)) << ", margin +- " << len(0.5 * (d.upper - d.lower))
-        << (d.dh_tolerance > 0 ? " beyond the tolerance" : "") << "\n";
+    const bool open_low = q == "dh" && d.lower > 0;
+    out << "window: " << len(d.lower) << (open_low ? " < " : " <= ") << q
+        << (q == "l" && d.upper < d.search_hi ? " < " : " <= ")
+        << len(d.upper) << "; centre " << len(0.5 * (d.lower + d.upper)) << ", margin +- "
+        << len(0.5 * (d.upper - d.lower)) << (tolerance ? " beyond the tolerance" : "") << "\n";
   }
   for (const std::string& n : d.notes) out << "note: " << n << "\n";
 }
@@ -593,7 +715,7 @@ int run_design_command(const std::vector<std::string>& args, std::ostream& out) 
   const DesignArgs a = split_keywords(keywords_of(args));
   if (a.help) {
     out << kUsage << "\n\n"
-        << "The window of the height difference dh that meets every requirement at every temperature of\n"
+        << "The window of the height difference dh (or, --find l, of the pitch) that meets every requirement at every temperature of\n"
            "the range and every corner of the tolerance box (exact: the dh whose t* is the requirement's\n"
            "time, at each), its centre and margin, and which requirement binds each edge.\n\n"
            "  --require TEXT      "
@@ -602,7 +724,9 @@ int run_design_command(const std::vector<std::string>& args, std::ostream& out) 
         << " temperatures; or one temperature\n"
            "  --tolerance TEXT    'dh=0.5um, pressure=10%' (also l, C: 5% or a value; temperature: 2K widens the range)\n"
            "  --format FMT        table (default) or json\n"
-           "and the point's options but --dh and the pressure (punchsweep point --help).\n"
+           "  --find l            the window of the pitch l instead, for --dh DH, searched over --l A..B\n"
+           "                      (100um..400um); the tolerance on l then moves its edges inward\n"
+           "and the point's options but the pressure, and --dh but with --find l (punchsweep point --help).\n"
            "Example: punchsweep design --material materials/epoxy.ini --R 50um --l 250um --s 2 \\\n"
            "           --temperature 20..40C --require \"touch within 1s at 30kPa\" --require \"never at 5kPa\" \\\n"
            "           --tolerance \"dh=0.5um, pressure=10%\"\n"

@@ -25,20 +25,27 @@ struct Requirement {
   double pbar = 0.0;  ///< nominal pressure, in E0*
 };
 
-/// Where one requirement bounds dh at one temperature and corner of the box.
+/// Where one requirement bounds the design's quantity at one temperature and corner of the
+/// box.
 struct DesignBound {
   double temperature = 0.0;  ///< degC (NaN for a law without temperature)
   double pbar = 0.0;         ///< the corner's pressure, in E0*
-  double l = 0.0, C = 0.0;   ///< the corner's pitch (R) and shape factor
-  double gap = 0.0;          ///< the dh whose t* is the requirement's time there, in R
+  double l = 0.0, C = 0.0;   ///< the corner's pitch (R; the search's start for --find l) and shape factor
+  double dh = 0.0;           ///< the corner's dh (R; for --find l)
+  /// The bound before the quantity's own tolerance, in R: for dh, the gap closed by the
+  /// requirement's time (the dh whose t* it is); for l, the pitch at which that gap is the
+  /// corner's dh (inf or the search's end where none within it).
+  double value = 0.0;
 };
 
 /// A requirement's bound on dh: its binding temperature and corner, and every one it met.
 struct RequirementBound {
   Requirement requirement;
-  /// The window's edge it sets (R): gap -+ the dh tolerance, the tightest over every
-  /// temperature and corner; an upper edge for touch_by, a lower one for no_touch_by.
+  /// The window's edge it sets (R): the bound less the quantity's tolerance, the tightest
+  /// over every temperature and corner; for dh an upper edge for touch_by and a lower one
+  /// for no_touch_by, for l (the gap grows with the pitch) the other way round.
   double edge = 0.0;
+  bool upper = true;  ///< which edge it sets
   DesignBound binding;
   /// The bound is the same at every temperature checked (h_0 and h_inf are: the glassy and
   /// the relaxed compliance do not shift), so `binding.temperature` is only the first.
@@ -46,14 +53,17 @@ struct RequirementBound {
   std::vector<DesignBound> bounds;  ///< temperature-major, then corner
 };
 
-/// The answer: the dh window, each requirement's bound, and what the user should know.
+/// The answer: the window, each requirement's bound, and what the user should know.
 struct DesignResult {
+  std::string quantity = "dh";  ///< what the window is of: dh, or l (--find l)
+  double search_lo = 0.0, search_hi = 0.0;  ///< --find l: the pitches searched (R)
   input::PointInputs inputs;  ///< the geometry and material (at the first requirement's pressure)
   std::vector<double> temperatures;
   double dh_tolerance = 0.0;           ///< R
   double pressure_tolerance = 0.0;     ///< relative (10% -> 0.1), or absolute when pressure_absolute
   bool pressure_absolute = false;      ///< in E0*
-  double l_tolerance = 0.0, C_tolerance = 0.0;  ///< relative
+  double l_tolerance = 0.0, C_tolerance = 0.0;  ///< relative (l in R where l_absolute)
+  bool l_absolute = false;
   std::vector<RequirementBound> bounds;
   double lower = 0.0, upper = 0.0;  ///< R; lower > upper: no dh meets every requirement
   std::vector<std::string> notes;

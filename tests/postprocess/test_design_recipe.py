@@ -31,7 +31,7 @@ def block(kind: str, containing: str) -> str:
 
 def window_numbers(text: str) -> list[float]:
     line = next(x for x in text.splitlines() if x.startswith("window:"))
-    return [float(v) for v in re.findall(r"(\d+\.\d+) um", line)]
+    return [float(v) for v in re.findall(r"(\d+\.?\d*) um", line)]
 
 
 @pytest.fixture(scope="module")
@@ -62,7 +62,7 @@ def recipe(tmp_path_factory):
 def test_the_walk_through_prints_the_window_the_page_shows(recipe):
     tmp, printed = recipe
     assert (tmp / "tpe_a.ini").is_file() and (tmp / "window.png").stat().st_size > 10_000
-    shown = window_numbers(block("text", "window:"))
+    shown = window_numbers(block("text", "punchsweep design: the height difference"))
     got = window_numbers(printed[1])
     # lower, upper, centre, margin: as the page shows them, to their last printed digit.
     assert np.allclose(got, shown, atol=0.002), (got, shown)
@@ -112,3 +112,16 @@ def test_the_readme_design_example_prints_what_it_shows():
     assert r.returncode == 0, r.stderr
     for line in shown.splitlines():
         assert line.strip() in r.stdout, (line, r.stdout)
+
+
+def test_the_pitch_window_the_page_shows(recipe):
+    """docs/design.md's --find l example (the question at dh = 8 um, l's own tolerance 5 um,
+    on the true material) prints the window the page shows."""
+    tmp, _ = recipe
+    r = subprocess.run([ENGINE, "design", "--find", "l", "--dh", "8um", "--l", "150um..400um", "--material",
+                        "examples/dma_exports/tpe_a_truth.ini", "--R", "80um", "--s", "2", "--temperature", "20..40C", "--require",
+                        "touch within 1s at 30kPa", "--require", "never at 5kPa", "--tolerance",
+                        "dh=0.5um, pressure=10%, l=5um"], cwd=tmp, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    shown = window_numbers(block("text", "l >= "))
+    assert np.allclose(window_numbers(r.stdout), shown, rtol=2e-3), (r.stdout, shown)

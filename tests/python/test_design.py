@@ -161,3 +161,41 @@ def test_a_law_without_temperature_and_the_dimensionless_units():
     check = cli("point", "--l", "0.75", "--T", "2.5", "--s", "2", "--pbar", "0.06", "--dh", repr(d["upper"]),
                 "--format", "json")
     assert json.loads(check.stdout)["t_star"] == pytest.approx(1.0, rel=1e-6)
+
+
+def test_the_pitch_window_for_a_given_dh_holds_and_is_tight():
+    """--find l: the window of the pitch for dh = 8 um (the dh window's centre at 250 um), its
+    edges checked with `point` at the binding corner (l's own tolerance, 5 um, taken off) and
+    just past them; it contains the pitch the dh window was found at."""
+    d = design(TRUTH, "--find", "l", "--dh", "8um", "--l", "150um..400um", *QUESTION[:-1],
+               "dh=0.5um, pressure=10%, l=5um")
+    assert d["quantity"] == "l" and not d["empty"] and d["physical"]["unit"] == "um"
+    lower, upper = d["physical"]["lower"], d["physical"]["upper"]
+    assert 150 < lower < 250 < upper < 400
+    touch, never = d["requirements"]
+    assert touch["side"] == "lower" and never["side"] == "upper"
+    assert touch["binds_at"]["dh"] * 80 == pytest.approx(8.5) and never["binds_at"]["dh"] * 80 == pytest.approx(7.5)
+
+    def at(l_um, dh_um, p_kPa, T):
+        r = cli("point", "--material", TRUTH, "--R", "80um", "--l", f"{l_um!r}um", "--s", "2", "--dh", f"{dh_um!r}um",
+                "--pressure", f"{p_kPa!r}kPa", "--temperature", T, "--format", "json")
+        assert r.returncode == 0, r.stderr
+        return json.loads(r.stdout)
+    # The touch edge: at l = lower - 5 um, dh + 0.5 um, 27 kPa and 20 C, t* is 1 s.
+    assert at(lower - 5, 8.5, 27.0, 20)["t_star"] == pytest.approx(1.0, rel=1e-6)
+    assert at((lower - 5) * 0.999, 8.5, 27.0, 20)["t_star"] > 1.0
+    # The never edge: just below upper + 5 um at dh - 0.5 um and 5.5 kPa the level never
+    # touches; just above, it does at last.
+    assert at((upper + 5) * 0.999, 7.5, 5.5, 40)["regime"] == "never"
+    assert at((upper + 5) * 1.001, 7.5, 5.5, 40)["regime"] == "delayed"
+    # Inside, every corner meets both requirements.
+    for T in (20, 40):
+        for l_um in (lower - 5, upper + 5 - 1e-6):
+            for p in (27.0, 33.0):
+                assert at(l_um, 8.5, p, T)["t_star"] <= 1.0 * (1 + 1e-6)
+            assert at(l_um, 7.5, 5.5, T)["regime"] == "never"
+    r = cli("design", "--material", TRUTH, *GEOMETRY[:2], "--s", "2", "--find", "l", "--dh", "8um", "--l", "250um",
+            "--require", "never at 5kPa")
+    assert r.returncode == 2 and "the range of pitches to search" in r.stderr, r.stderr
+    r = cli("design", "--material", TRUTH, *GEOMETRY, "--find", "l", "--require", "never at 5kPa")
+    assert r.returncode == 2 and "--find l needs --dh" in r.stderr, r.stderr
