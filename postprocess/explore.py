@@ -56,6 +56,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--y", default="dh", metavar="AXIS", help="the axis up (default dh)")
     p.add_argument("--every", nargs="+", action="extend", default=[], metavar="AXIS=K",
                    help="keep every K-th value of AXIS (its first and then each K-th), to fit --max-mb")
+    p.add_argument("--design", metavar="WINDOW.json",
+                   help="draw a design window (`punchsweep design --format json`) on the page: its edges as "
+                        "lines across wherever its quantity (dh or l) is an axis of the picture")
     p.add_argument("--max-mb", type=float, default=DEFAULT_MAX_MB,
                    help=f"the largest page written, in MB (default {DEFAULT_MAX_MB:g})")
     return p.parse_args(argv)
@@ -195,6 +198,23 @@ def every_that_fits(ds, axis: str, max_mb: float) -> int:
 
 def attr_text(value) -> str:
     return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def design_window(path: str | None) -> dict | None:
+    """A design window to draw (`punchsweep design --format json`): its quantity and its
+    finite edges (in R), each named for the legend; None without one."""
+    if path is None:
+        return None
+    d = pm.read_json(path, "a design window",
+                     lambda d: d.get("quantity") in ("dh", "l") and "lower" in d and "upper" in d,
+                     "the JSON of `punchsweep design --format json` (no 'quantity', 'lower' and 'upper')")
+    q, unit = d["quantity"], d["physical"]["unit"]
+    edges = []
+    for side, value, physical in (("lower", d["lower"], d["physical"]["lower"]),
+                                  ("upper", d["upper"], d["physical"]["upper"])):
+        if value is not None and math.isfinite(value) and not d["empty"]:
+            edges.append((f"design window: {q} {side} edge {physical:.4g} {unit}", float(value)))
+    return {"quantity": q, "edges": edges, "empty": bool(d["empty"])}
 
 
 def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
@@ -458,6 +478,21 @@ function draw() {
     traces.push({ type: "scatter", mode: "markers", x: xs, y: ys, name: "answered by the BEM", hoverinfo: "skip",
                   marker: { symbol: "square-open", color: "#000", size: 7 } });
   }
+  // A design window (--design): its edges across the picture where its quantity is an axis,
+  // in the axis's unit (the window's edges are in R; the axis shows R times per_scaled).
+  if (MAP.design) {
+    const w = MAP.design;
+    for (const [a, across] of [[ay, ax], [ax, ay]]) {
+      if (a.name !== w.quantity || !w.edges.length) continue;
+      const per = a.scaled[0] ? a.values[0] / a.scaled[0] : 1;
+      w.edges.forEach(([name, value], i) => {
+        const v = value * per, ends = [across.values[0], across.values[across.values.length - 1]];
+        const line = { type: "scatter", mode: "lines", name: plain(name), hoverinfo: "skip",
+                       line: { color: "#009e73", width: 3, dash: i ? "dot" : "solid" } };
+        traces.push(a === ay ? { ...line, x: ends, y: [v, v] } : { ...line, x: [v, v], y: ends });
+      });
+    }
+  }
   if (ay.name === "dh" && data.variables.h_0) {
     const h0 = [], hinf = [];
     for (let ix = 0; ix < ax.values.length; ++ix) {
@@ -581,7 +616,7 @@ def main(argv: list[str]) -> int:
     args = parse_args(argv)
     if Path(args.output).suffix.lower() not in (".html", ".htm"):
         raise pm.MapError(f"-o {args.output}: the page is HTML; name it .html")
-    out = pm.check_output(args.output, suffixes=(), inputs=[args.map])
+    out = pm.check_output(args.output, suffixes=(), inputs=[args.map] + ([args.design] if args.design else []))
     if not PLOTLY_JS.is_file():
         raise pm.MapError(f"{PLOTLY_JS} not found: install Debian's python3-plotly (bash cmake/install-deps.sh)")
     ds = pm.open_map(args.map)
@@ -598,6 +633,10 @@ def main(argv: list[str]) -> int:
         raise pm.MapError(f"the page would be about {estimate:.0f} MB (estimated), above --max-mb {args.max_mb:g} "
                           f"(plotly.js is {plotly_mb():.1f} MB of it): coarsen the map, e.g. {hint}, or raise --max-mb")
     data = payload(ds, args.x, args.y, steps, args.map)
+    data["design"] = design_window(args.design)
+    if data["design"] and data["design"]["quantity"] not in (args.x, args.y):
+        print(f"explore.py: note: the design window is of {data['design']['quantity']}, which is neither --x nor "
+              f"--y; it is drawn when the page's axes show it", file=sys.stderr)
     page = render(data, plotly_packed())
     size_mb = len(page.encode("utf-8")) / 1e6
     if size_mb > args.max_mb:

@@ -63,6 +63,9 @@ try {
   })));
   await page.waitForTimeout(150);
   out.command = await page.evaluate(() => document.getElementById("command").textContent);
+  // The lines drawn over the heat map (h_0, h_inf, a design window's edges), as plotly has them.
+  out.lines = await page.evaluate(() => document.getElementById("plot").data
+    .filter(t => t.type === "scatter" && t.mode === "lines").map(t => ({ name: t.name, x: Array.from(t.x), y: Array.from(t.y) })));
 
   const picture = () => page.evaluate(() => JSON.stringify(document.getElementById("plot").data.map(t => t.z)));
   // A slider of another axis moves the slice.

@@ -319,3 +319,32 @@ def test_an_area_fraction_the_radii_do_not_give_is_embedded(maps, tmp_path):
         f["area_fraction_inf"][0, 0, 0, 0, 0] *= 1.001
     data = explore_module.payload(pm.open_map(copy), "pbar", "dh", {}, str(copy))
     assert "data" in data["variables"]["area_fraction_inf"] and "derived" not in data["variables"]["area_fraction_inf"]
+
+
+@pytest.mark.browser
+def test_a_design_window_is_drawn_on_the_page(tmp_path):
+    """Issue 37 item 5: `explore.py --design window.json` draws the window's edges across
+    the heat map where its quantity (dh) is an axis, at the design's values in the map's
+    unit (um)."""
+    tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    path = tmp_path / "tpe.h5"
+    subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
+                    "linspace(4um, 12um, 9)", "--grid.pressure", "logspace(3kPa, 50kPa, 8)", "--grid.temperature",
+                    "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path], check=True)
+    window = tmp_path / "window.json"
+    done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
+                           "--temperature", "20..40C", "--require", "touch within 1s at 30kPa", "--require",
+                           "never at 5kPa", "--tolerance", "dh=0.5um, pressure=10%", "--format", "json"],
+                          capture_output=True, text=True, check=True)
+    window.write_text(done.stdout)
+    d = json.loads(done.stdout)
+    page = tmp_path / "p.html"
+    r = explore(path, "-o", page, "--design", window)
+    assert r.returncode == 0, r.stderr
+    out, _ = in_chromium(page, [[0, 0]], tmp_path)
+    drawn = {line["name"]: line["y"] for line in out["lines"] if line["name"].startswith("design window")}
+    assert len(drawn) == 2, out["lines"]
+    (lower_name, lower_y), (upper_name, upper_y) = sorted(drawn.items())
+    assert "lower edge 7.513 um" in lower_name and "upper edge 8.483 um" in upper_name
+    assert lower_y == pytest.approx([d["physical"]["lower"]] * 2, rel=1e-12)
+    assert upper_y == pytest.approx([d["physical"]["upper"]] * 2, rel=1e-12)
