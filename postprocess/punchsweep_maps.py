@@ -132,7 +132,8 @@ def open_map(path: str | Path):
     except MapError as e:
         ds.close()
         raise MapError(f"'{path}' is not a punchsweep regime map ({e})") from None
-    return in_physical_units(ds)
+    # The module's conversion (map_attributes.in_units), with the codes kept and pressures in kPa.
+    return _MAP_ATTRIBUTES.in_units(ds, "physical", "kPa", decode_flags=False, error=MapError)
 
 
 # Physical units an --at value may carry, in SI (the engine's units: docs/cli.md, "Units").
@@ -166,30 +167,6 @@ def scale_attributes(attrs, error=MapError):
 
 
 _MAP_ATTRIBUTES = _load_map_attributes()
-
-
-def in_physical_units(ds):
-    """The map in physical units where it knows the scale (physical_scales): pressures (the
-    pbar axis) in kPa for a material map, lengths (l, dh, radii, h) in R's unit where the sweep
-    was given model.R, loads in N with both; a material's times already carry their unit (s,
-    min, h). A converted variable keeps its scale in `physical_of` and the factor in
-    `per_scaled`, so a bare --at number (in the scale, as on every command line) converts too.
-    Other maps are returned as they are."""
-    scales = physical_scales(ds)
-    for name in list(ds.variables):
-        attrs = dict(ds[name].attrs)
-        scale = attrs.get("scaled_by")
-        if scale not in scales:
-            continue
-        factor, unit = scales[scale]
-        attrs.pop("scaled_by")
-        attrs.update(units=unit, physical_of=scale, per_scaled=factor)
-        if name in ds.coords:
-            ds = ds.assign_coords({name: (ds[name].dims, ds[name].values * factor, attrs)})
-        else:
-            ds[name] = ds[name] * factor
-            ds[name].attrs = attrs
-    return ds
 
 
 def _check_layout(ds) -> None:
@@ -323,10 +300,9 @@ def value_text(value) -> str:
 
 
 def units(ds, name: str) -> str:
-    """The scale a variable is measured in: its `scaled_by` ("R", "E0/(1-nu^2)", "T_eps", ...)
-    where the map names one (its `units` is then "1", a pure number), else its `units`."""
-    attrs = ds[name].attrs
-    return str(attrs.get("scaled_by", attrs.get("units", "")))
+    """The unit a variable is shown in, as open_map leaves it in `units`: physical where the
+    map knows the scale (um, kPa, s, N), else the scale ("R", "E0/(1-nu^2)", "T_eps", "1")."""
+    return str(ds[name].attrs.get("units", ""))
 
 
 def is_log(ds, name: str) -> bool:

@@ -44,7 +44,10 @@ def test_map_carries_the_material_and_its_units(material_map):
     # The reader gives pressures in kPa: pbar E0*, E0* = E_0/(1 - nu^2) with E_0 = E_inf + sum E_i
     # of the file (1200 + 1607.1 + 228.6 + 361.5 + 63.9 + 68.7 kPa), nu = 0.5.
     E0_star_kPa = (1200 + 1607.1 + 228.6 + 361.5 + 63.9 + 68.7) / (1 - 0.25)
-    assert ds.pbar.attrs["units"] == "kPa" and "scaled_by" not in ds.pbar.attrs
+    # The module's convention (one conversion for both readers): the unit shown, the scale
+    # it came from, and the factor.
+    assert ds.pbar.attrs["units"] == "kPa" and ds.pbar.attrs["scaled_by"] == "E0/(1-nu^2)"
+    assert ds.pbar.attrs["per_scaled"] == pytest.approx(E0_star_kPa, rel=1e-9)
     np.testing.assert_allclose(ds.pbar.values, np.geomspace(0.002, 0.02, 5) * E0_star_kPa, rtol=1e-9)
 
 

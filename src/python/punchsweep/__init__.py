@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from .map_attributes import physical_scales
+from .map_attributes import in_units
 
 try:
     from . import _core
@@ -476,38 +476,6 @@ class NotAMapError(ValueError):
     """open_map's error for a file that is not a (readable) punchsweep map."""
 
 
-def _decoded_flags(variable, meanings: list[str], codes: list[int]):
-    """A flag variable's codes as their meanings, decoded only where it is read (a lazily
-    indexed array): decoding a whole map at once took about 260 bytes a point."""
-    from xarray.backends import BackendArray
-    from xarray.core import indexing
-
-    table = np.array([f"code_{c - 128}" for c in range(256)], dtype=object)
-    for code, meaning in zip(codes, meanings):
-        table[int(code) + 128] = meaning
-    width = max(len(str(t)) for t in table)
-    table = table.astype(f"<U{width}")
-
-    class Decoded(BackendArray):
-        shape = variable.shape
-        dtype = table.dtype
-
-        def __getitem__(self, key):
-            return indexing.explicit_indexing_adapter(key, self.shape, indexing.IndexingSupport.OUTER, self._read)
-
-        def _read(self, key):
-            raw = np.asarray(variable[key].values, dtype=np.int16)
-            return table[raw + 128]
-
-    return indexing.LazilyIndexedArray(Decoded())
-
-
-def _physical_scales(attrs) -> dict:
-    """One unit of each scale the map knows, in physical units (map_attributes.physical_scales,
-    the scripts' table too): pressures in Pa."""
-    return physical_scales(attrs, "Pa", NotAMapError)
-
-
 def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
     """A regime map (from `punchsweep sweep`) as an xarray.Dataset: every flag variable
     (regime, valid, bem_regime, answer_regime, ...) decoded to its meanings as text
@@ -535,39 +503,15 @@ def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
     if "identity" not in ds.attrs or "regime" not in ds.variables:
         ds.close()
         raise NotAMapError(f"{text} is not a punchsweep map (no identity attribute or regime variable)")
-    for name in list(ds.variables):
-        attrs = ds[name].attrs
-        if "flag_values" in attrs and "flag_meanings" in attrs:
-            meanings = attrs["flag_meanings"]
-            meanings = (meanings.decode() if isinstance(meanings, bytes) else str(meanings)).split()
-            codes = [int(v) for v in np.atleast_1d(attrs["flag_values"])]
-            ds[name + "_code"] = ds[name].copy()
-            ds[name + "_code"].attrs["units"] = "1"
-            ds[name] = xr.Variable(ds[name].dims, _decoded_flags(ds[name].variable, meanings, codes),
-                                   {**attrs, "units": "1"})
-        else:
-            unit = attrs.get("scaled_by", attrs.get("units", "1"))
-            ds[name].attrs["units"] = unit.decode() if isinstance(unit, bytes) else str(unit)
     if units not in ("physical", "scaled"):
         raise ValueError(f"open_map: units={units!r}; valid: 'physical' or 'scaled'")
     try:
-        scales = _physical_scales(ds.attrs) if units == "physical" else {}
         for dim in ds["regime"].dims:
             values = ds[dim].values if dim in ds.variables else np.zeros(1)
             if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
                 raise NotAMapError(f"the axis {dim} holds values that are not finite numbers")
+        # The one conversion the scripts' reader makes too (map_attributes.in_units).
+        return in_units(ds, units, "Pa", decode_flags=True, error=NotAMapError)
     except NotAMapError as e:
         ds.close()
         raise NotAMapError(f"{text} is not a punchsweep map as the engine writes it: {e}") from None
-    for name in list(ds.variables):
-        scale = ds[name].attrs.get("units")
-        if scale not in scales:
-            continue
-        factor, unit = scales[scale]
-        attrs = {**ds[name].attrs, "units": unit, "scaled_by": scale, "per_scaled": factor}
-        if name in ds.coords:
-            ds = ds.assign_coords({name: (ds[name].dims, ds[name].values * factor, attrs)})
-        else:
-            ds[name] = ds[name] * factor
-            ds[name].attrs = attrs
-    return ds

@@ -1,6 +1,6 @@
-"""The attributes of a regime map that carry its physical scales (E0_star_Pa, R, R_m),
-read and checked one way for the Python module's open_map and the postprocess scripts
-(which load this file by its path: it needs no build)."""
+"""A regime map's physical scales (its attributes E0_star_Pa, R, R_m, time_unit) and its
+variables' units, read, checked and converted one way for the Python module's open_map and
+the postprocess scripts' reader (which load this file by its path: it needs no build)."""
 from __future__ import annotations
 
 import math
@@ -70,3 +70,68 @@ def physical_scales(attrs, pressure_unit: str = "Pa", error=ValueError) -> dict:
         if E0_star is not None:
             scales["R^2 E0/(1-nu^2)"] = (R_m ** 2 * E0_star, "N")
     return scales
+
+
+def _decoded_flags(variable, meanings: list[str], codes: list[int]):
+    """A flag variable's codes as their meanings, decoded only where it is read (a lazily
+    indexed array): decoding a whole map at once took about 260 bytes a point."""
+    from xarray.backends import BackendArray
+    from xarray.core import indexing
+
+    table = np.array([f"code_{c - 128}" for c in range(256)], dtype=object)
+    for code, meaning in zip(codes, meanings):
+        table[int(code) + 128] = meaning
+    width = max(len(str(t)) for t in table)
+    table = table.astype(f"<U{width}")
+
+    class Decoded(BackendArray):
+        shape = variable.shape
+        dtype = table.dtype
+
+        def __getitem__(self, key):
+            return indexing.explicit_indexing_adapter(key, self.shape, indexing.IndexingSupport.OUTER, self._read)
+
+        def _read(self, key):
+            raw = np.asarray(variable[key].values, dtype=np.int16)
+            return table[raw + 128]
+
+    return indexing.LazilyIndexedArray(Decoded())
+
+
+def in_units(ds, units: str = "physical", pressure_unit: str = "Pa", decode_flags: bool = True, error=ValueError):
+    """A map as both readers give it: every real variable's `units` the scale it is measured
+    in (its file's `scaled_by`: R, T_eps, E0/(1-nu^2), ...), and with units="physical" each
+    one whose scale the map knows (physical_scales, pressures in `pressure_unit`) converted:
+    values in the physical unit, `units` that unit, `scaled_by` the scale, `per_scaled` the
+    factor (scaled value = value / per_scaled). With `decode_flags` every flag variable is
+    its meanings as text, read lazily, and its codes stay as NAME_code (the module's
+    open_map); without, the codes stay under the name (the scripts)."""
+    import xarray as xr
+
+    for name in list(ds.variables):
+        attrs = ds[name].attrs
+        if "flag_values" in attrs and "flag_meanings" in attrs:
+            if decode_flags:
+                meanings = attrs["flag_meanings"]
+                meanings = (meanings.decode() if isinstance(meanings, bytes) else str(meanings)).split()
+                codes = [int(v) for v in np.atleast_1d(attrs["flag_values"])]
+                ds[name + "_code"] = ds[name].copy()
+                ds[name + "_code"].attrs["units"] = "1"
+                ds[name] = xr.Variable(ds[name].dims, _decoded_flags(ds[name].variable, meanings, codes),
+                                       {**attrs, "units": "1"})
+        else:
+            unit = attrs.get("scaled_by", attrs.get("units", "1"))
+            ds[name].attrs["units"] = unit.decode() if isinstance(unit, bytes) else str(unit)
+    scales = physical_scales(ds.attrs, pressure_unit, error) if units == "physical" else {}
+    for name in list(ds.variables):
+        scale = ds[name].attrs.get("units")
+        if scale not in scales:
+            continue
+        factor, unit = scales[scale]
+        attrs = {**ds[name].attrs, "units": unit, "scaled_by": scale, "per_scaled": factor}
+        if name in ds.coords:
+            ds = ds.assign_coords({name: (ds[name].dims, ds[name].values * factor, attrs)})
+        else:
+            ds[name] = ds[name] * factor
+            ds[name].attrs = attrs
+    return ds
