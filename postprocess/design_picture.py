@@ -36,11 +36,8 @@ FIG_DPI = 150
 
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
-    p = pm.Parser(prog="design_picture.py", description=__doc__,
-                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("window", metavar="WINDOW.json", help="written by `punchsweep design --format json`")
-    p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
-    return p.parse_args(argv)
+    return pm.picture_args(argv, "design_picture.py", __doc__, "window", "WINDOW.json",
+                           "`punchsweep design --format json`")
 
 
 def read_window(path: str) -> dict:

@@ -35,11 +35,8 @@ MPA = 1e6
 
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
-    p = pm.Parser(prog="fit_picture.py", description=__doc__,
-                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("details", metavar="MATERIAL.fit.json", help="written by `punchsweep fit` beside the material")
-    p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
-    return p.parse_args(argv)
+    return pm.picture_args(argv, "fit_picture.py", __doc__, "details", "MATERIAL.fit.json",
+                           "`punchsweep fit` beside the material")
 
 
 def read_details(path: str) -> dict:

@@ -625,6 +625,15 @@ def read_json(path: str | Path, what: str, is_it, not_it: str) -> dict:
     return d
 
 
+def picture_args(argv: list[str], prog: str, doc: str, name: str, metavar: str, written_by: str):
+    """The arguments of a script that draws one input file (a JSON an engine command wrote):
+    the file as `name` and -o/--output, the picture."""
+    p = Parser(prog=prog, description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument(name, metavar=metavar, help=f"written by {written_by}")
+    p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
+    return p.parse_args(argv)
+
+
 def picture_of(source: str, output: str, read, render, dpi: int) -> None:
     """A picture of one input file: the output checked first (check_output), then
     render(read(source)) saved to it, and a line saying so."""
