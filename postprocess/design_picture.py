@@ -50,21 +50,10 @@ def _number(v) -> float:
     return math.nan if v is None else float(v)
 
 
-def edge_of(d: dict, value: float, upper: bool) -> float:
-    """A bound (R) less the design quantity's own tolerance: dh -+ its tolerance; l moved
-    inward by its absolute or relative tolerance."""
-    tol = d["tolerance"]
-    if d["quantity"] == "dh":
-        return value - tol["dh"] if upper else value + tol["dh"]
-    if tol["l_is"].startswith("absolute"):
-        return value - tol["l"] if upper else value + tol["l"]
-    return value / (1 + tol["l"]) if upper else value / (1 - tol["l"])
-
-
 def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
-    """Per requirement: (requirement, temperatures, its bound on the design quantity there in
-    the physical unit): the tightest over the box's corners at each temperature, less the
-    quantity's own tolerance (edge_of)."""
+    """Per requirement: (requirement, temperatures, the edge it sets there in the physical
+    unit): the tightest of its corners' edges (each bound less the quantity's own tolerance,
+    as the engine wrote it) at each temperature."""
     per_R = d["physical"]["R"]  # R in the physical unit (1 where no --R was given)
     curves = []
     for r in d["requirements"]:
@@ -73,11 +62,10 @@ def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
         for b in r["bounds"]:
             T = _number(b["temperature"])
             key = 0.0 if math.isnan(T) else T
-            value = _number(b["value"])
-            by_T[key] = min(by_T.get(key, math.inf), value) if upper else max(by_T.get(key, -math.inf), value)
+            edge = _number(b["edge"])
+            by_T[key] = min(by_T.get(key, math.inf), edge) if upper else max(by_T.get(key, -math.inf), edge)
         Ts = np.array(sorted(by_T))
-        edge = np.array([edge_of(d, by_T[T], upper) for T in Ts]) * per_R
-        curves.append((r, Ts, edge))
+        curves.append((r, Ts, np.array([by_T[T] for T in Ts]) * per_R))
     return curves
 
 

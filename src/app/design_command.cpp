@@ -109,11 +109,7 @@ input::Keywords keywords_of(const std::vector<std::string>& args) {
   return out;
 }
 
-std::string trimmed(std::string s) {
-  s.erase(0, s.find_first_not_of(" \t"));
-  s.erase(s.find_last_not_of(" \t") + 1);
-  return s;
-}
+std::string trimmed(const std::string& s) { return std::string(model::trim(s, " \t")); }
 
 /// One of the requirement's forms (kRequirementForms), its time and pressure read in the
 /// point's scales.
@@ -121,48 +117,41 @@ Requirement read_requirement(const std::string& text, const input::PhysicalScale
   const auto bad = [&](const std::string& why) {
     return input::UsageError("--require '" + text + "': " + why + " (" + kRequirementForms + ")");
   };
-  std::string lower = trimmed(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  const std::regex space("\\s+");
-  lower = std::regex_replace(lower, space, " ");
+  // The words in any case and spacing; the time and pressure as typed (units are
+  // case-sensitive: 30kPa, 5MPa, 2ms).
+  const std::string flat = std::regex_replace(trimmed(text), std::regex("\\s+"), " ");
+  const auto form = [&](const char* pattern, std::smatch& m) {
+    return std::regex_match(flat, m, std::regex(pattern, std::regex::icase));
+  };
   std::smatch m;
   Requirement r;
   r.text = trimmed(text);
   std::string time_text, pressure_text;
-  if (std::regex_match(lower, m, std::regex("touch (?:within|by) (.+) at (.+)"))) {
+  if (form("touch (?:within|by) (.+) at (.+)", m)) {
     time_text = m[1];
     pressure_text = m[2];
-  } else if (std::regex_match(lower, m, std::regex("touch (?:at once|immediately) at (.+)"))) {
+  } else if (form("touch (?:at once|immediately) at (.+)", m)) {
     pressure_text = m[1];
-  } else if (std::regex_match(lower, m, std::regex("touch (?:ever |eventually )?at (.+)"))) {
+  } else if (form("touch (?:ever |eventually )?at (.+)", m)) {
     r.time = kInf;
     pressure_text = m[1];
-  } else if (std::regex_match(lower, m, std::regex("(?:never|no touch) at (.+)"))) {
+  } else if (form("(?:never|no touch) at (.+)", m)) {
     r.kind = Requirement::Kind::no_touch_by;
     r.time = kInf;
     pressure_text = m[1];
-  } else if (std::regex_match(lower, m, std::regex("(?:no touch|not) (?:within|by) (.+) at (.+)"))) {
+  } else if (form("(?:no touch|not) (?:within|by) (.+) at (.+)", m)) {
     r.kind = Requirement::Kind::no_touch_by;
     time_text = m[1];
     pressure_text = m[2];
   } else {
     throw bad("not a requirement");
   }
-  // The texts as the user typed them (units are case-sensitive: 30kPa, 5MPa, 2ms).
-  const auto original = [&](const std::string& part) {
-    std::string t = trimmed(part);
-    const std::string flat = std::regex_replace(trimmed(text), space, " ");
-    std::string flat_lower = flat;
-    std::transform(flat_lower.begin(), flat_lower.end(), flat_lower.begin(), [](unsigned char c) { return std::tolower(c); });
-    const std::size_t at = flat_lower.rfind(t);
-    return at == std::string::npos ? t : flat.substr(at, t.size());
-  };
   try {
     if (!time_text.empty()) {
-      r.time = input::read_scaled(original(time_text), *input::scale_of("T_eps", scales));
+      r.time = input::read_scaled(time_text, *input::scale_of("T_eps", scales));
       if (!(std::isfinite(r.time) && r.time >= 0.0)) throw std::invalid_argument("the time is not finite and >= 0");
     }
-    r.pbar = input::read_scaled(original(pressure_text), *input::scale_of("E0/(1-nu^2)", scales));
+    r.pbar = input::read_scaled(pressure_text, *input::scale_of("E0/(1-nu^2)", scales));
     if (!(std::isfinite(r.pbar) && r.pbar > 0.0)) throw std::invalid_argument("the pressure is not finite and > 0");
   } catch (const std::invalid_argument& e) {
     throw bad(e.what());
@@ -170,18 +159,23 @@ Requirement read_requirement(const std::string& text, const input::PhysicalScale
   return r;
 }
 
-/// A temperature "20", "20C", "20degC", "293.15K" in degC.
-double read_temperature(std::string text, const std::string& unit_after, const std::string& option) {
+/// The temperature unit `text` ends with ("K", or "C" for C, degC and \u00b0C; "" for none),
+/// taken off it.
+std::string take_temperature_unit(std::string& text) {
   text = trimmed(text);
-  std::string unit;
   for (const char* u : {"\xC2\xB0" "C", "degC", "C", "K"}) {
     const std::string s(u);
     if (text.size() > s.size() && text.compare(text.size() - s.size(), s.size(), s) == 0) {
-      unit = s;
       text = trimmed(text.substr(0, text.size() - s.size()));
-      break;
+      return s == "K" ? "K" : "C";
     }
   }
+  return "";
+}
+
+/// A temperature "20", "20C", "20degC", "293.15K" in degC; `unit_after` where it has none.
+double read_temperature(std::string text, const std::string& unit_after, const std::string& option) {
+  std::string unit = take_temperature_unit(text);
   if (unit.empty()) unit = unit_after;
   double v = 0.0;
   try {
@@ -196,8 +190,9 @@ double read_temperature(std::string text, const std::string& unit_after, const s
   return unit == "K" ? v - 273.15 : v;
 }
 
-/// --temperature: one temperature or a range A..B (degC unless a unit says K), widened by
-/// `widen` K on each side, sampled at kTemperatureSamples temperatures.
+/// --temperature: one temperature or a range A..B (degC unless a unit says K; the end's unit
+/// holds for the start too), widened by `widen` K on each side, sampled at
+/// kTemperatureSamples temperatures.
 std::vector<double> read_temperatures(const std::string& text, double widen) {
   const std::string option = "--temperature " + text;
   const std::size_t dots = text.find("..");
@@ -207,15 +202,10 @@ std::vector<double> read_temperatures(const std::string& text, double widen) {
     if (widen > 0.0) return read_temperatures(model::number_text(t, 17) + ".." + model::number_text(t, 17), widen);
     return {t};
   }
-  std::string hi_text = text.substr(dots + 2);
-  std::string unit = "C";
-  for (const char* u : {"K", "degC", "\xC2\xB0" "C", "C"}) {
-    const std::string s(u), t = trimmed(hi_text);
-    if (t.size() > s.size() && t.compare(t.size() - s.size(), s.size(), s) == 0) {
-      unit = s == "K" ? "K" : "C";
-      break;
-    }
-  }
+  const std::string hi_text = text.substr(dots + 2);
+  std::string bare = hi_text;
+  std::string unit = take_temperature_unit(bare);
+  if (unit.empty()) unit = "C";
   const double lo = read_temperature(text.substr(0, dots), unit, option) - widen;
   const double hi = read_temperature(hi_text, unit, option) + widen;
   if (!(hi > lo)) throw input::UsageError(option + ": the range's end is not above its start");
@@ -223,75 +213,37 @@ std::vector<double> read_temperatures(const std::string& text, double widen) {
   return out;
 }
 
-/// The tolerance box: dh (a length), pressure (% or a pressure), l and C (% or a value),
-/// temperature (K: the range widened).
-struct Box {
-  double dh = 0.0;
-  double pressure = 0.0;
-  bool pressure_absolute = false;
-  double l = 0.0, C = 0.0;  ///< relative (l in R where l_absolute)
-  bool l_absolute = false;
-  double temperature = 0.0;
-};
-
-Box read_box(const std::string& all, const input::PointInputs& base) {
-  Box box;
-  std::vector<std::string> seen;
-  const auto bad = [&](const std::string& entry, const std::string& why) {
-    return input::UsageError("--tolerance '" + entry + "': " + why +
-                             " (valid: NAME=VALUE, NAME one of dh (a length, 0.5um), pressure (10% or 2kPa), l and C "
-                             "(5% or a value), temperature (2K); VALUE >= 0)");
+/// --tolerance as the design reads it: the point's tolerance syntax (input::parse_tolerances)
+/// on dh (a length: dh is what is found), the pressure (% or a pressure), l and C (% or a
+/// value) and temperature (K: the range widened); a relative one below 100%.
+DesignTolerance read_tolerance(const std::string& text, const input::PointInputs& base) {
+  const auto known = [](std::string_view name) -> const model::Parameter* {
+    for (const std::string_view n : {model::kHeightDifference, model::kPressure, model::kPitch, model::kShapeConstant}) {
+      if (name == n) return model::problem_parameter(n);
+    }
+    return name == model::temperature_parameter().name ? &model::temperature_parameter() : nullptr;
   };
-  std::stringstream entries(all);
-  std::string entry;
-  while (std::getline(entries, entry, ',')) {
-    entry = trimmed(entry);
-    if (entry.empty()) continue;
-    const std::size_t eq = entry.find('=');
-    if (eq == std::string::npos) throw bad(entry, "no '='");
-    const std::string name = trimmed(entry.substr(0, eq)), text = trimmed(entry.substr(eq + 1));
-    if (std::find(seen.begin(), seen.end(), name) != seen.end()) throw bad(entry, "'" + name + "' is given twice");
-    seen.push_back(name);
-    const bool percent = !text.empty() && text.back() == '%';
-    double v = 0.0;
-    try {
-      const std::string number = percent ? text.substr(0, text.size() - 1) : text;
-      if (name == "dh") {
-        if (percent) throw std::invalid_argument("dh is what the design finds: give its tolerance as a length");
-        v = input::read_scaled(number, *input::scale_of("R", base.scales));
-      } else if (name == "pressure" || name == "pbar") {
-        v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("E0/(1-nu^2)", base.scales));
-        box.pressure_absolute = !percent;
-      } else if (name == "l") {
-        v = percent ? std::stod(number) / 100.0 : input::read_scaled(number, *input::scale_of("R", base.scales));
-        box.l_absolute = !percent;
-      } else if (name == "C") {
-        v = percent ? std::stod(number) / 100.0 : std::stod(number) / base.problem.shape.C;
-      } else if (name == "temperature") {
-        std::string t = number;
-        for (const char* u : {"K", "degC", "C"}) {
-          const std::string s(u);
-          if (t.size() > s.size() && t.compare(t.size() - s.size(), s.size(), s) == 0) t = t.substr(0, t.size() - s.size());
-        }
-        if (percent) throw std::invalid_argument("a temperature's tolerance is a difference in K");
-        v = std::stod(t);
-      } else {
-        throw std::invalid_argument("'" + name + "' is no tolerance the design takes");
-      }
-    } catch (const std::invalid_argument& e) {
-      throw bad(entry, e.what());
-    } catch (const std::out_of_range&) {
-      throw bad(entry, "not a number");
+  const auto refuse = [&](const model::StatedTolerance& t) -> std::string {
+    const std::string_view name = t.parameter->name;
+    if (name == model::kHeightDifference && t.relative) return "dh is what the design finds: give its tolerance as a length";
+    if (name == model::temperature_parameter().name && t.relative) return "a temperature's tolerance is a difference in K";
+    const double relative = name == model::kShapeConstant && !t.relative ? t.width / base.problem.shape.C : t.width;
+    if ((t.relative || name == model::kShapeConstant) && !(relative < 1.0)) {
+      return "a relative tolerance of 100% or more leaves nothing of the value";
     }
-    if (!(std::isfinite(v) && v >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
-    if ((name == "C" || (name != "dh" && name != "temperature" && percent)) && !(v < 1.0)) {
-      throw bad(entry, "a relative tolerance of 100% or more leaves nothing of the value");
-    }
-    if (name == "dh") box.dh = v;
-    if (name == "pressure" || name == "pbar") box.pressure = v;
-    if (name == "l") box.l = v;
-    if (name == "C") box.C = v;
-    if (name == "temperature") box.temperature = v;
+    return {};
+  };
+  DesignTolerance box;
+  for (const model::StatedTolerance& t :
+       input::parse_tolerances(text, "--tolerance", known, base.scales,
+                               "dh (a length, 0.5um), pressure (10% or 2kPa), l and C (5% or a value), temperature (2K)",
+                               "is no tolerance the design takes", refuse)) {
+    const std::string_view name = t.parameter->name;
+    if (name == model::kHeightDifference) box.dh = t.width;
+    if (name == model::kPressure) std::tie(box.pressure, box.pressure_absolute) = std::pair{t.width, !t.relative};
+    if (name == model::kPitch) std::tie(box.l, box.l_absolute) = std::pair{t.width, !t.relative};
+    if (name == model::kShapeConstant) box.C = t.relative ? t.width : t.width / base.problem.shape.C;
+    if (name == model::temperature_parameter().name) box.temperature = t.width;
   }
   return box;
 }
@@ -362,15 +314,10 @@ DesignResult design(const DesignArgs& a) {
   const input::PointInputs scales_of_point = point_at(probe, "");
   std::vector<Requirement> requirements;
   for (const std::string& text : a.requirement_texts) requirements.push_back(read_requirement(text, scales_of_point.scales));
-  const Box box = a.tolerance ? read_box(*a.tolerance, scales_of_point) : Box{};
+  if (a.tolerance) out.tolerance = read_tolerance(*a.tolerance, scales_of_point);
+  const DesignTolerance& box = out.tolerance;
   if (a.temperature) out.temperatures = read_temperatures(*a.temperature, box.temperature);
   else if (box.temperature > 0.0) throw input::UsageError("--tolerance temperature: give --temperature too");
-  out.dh_tolerance = box.dh;
-  out.pressure_tolerance = box.pressure;
-  out.pressure_absolute = box.pressure_absolute;
-  out.l_tolerance = box.l;
-  out.l_absolute = box.l_absolute;
-  out.C_tolerance = box.C;
   out.inputs = point_at(with(probe, "pbar", input::json_number(requirements.front().pbar)), "");
   const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C, dh0 = out.inputs.problem.dh;
   if (by_l) {
@@ -392,36 +339,56 @@ DesignResult design(const DesignArgs& a) {
     // pitch (more load on each tall punch), so touching is l >= the pitch that closes dh.
     b.upper = by_l ? !touch : touch;
     b.edge = b.upper ? kInf : -kInf;
+    const double lo = out.search_lo, hi = out.search_hi;
+    // A bound less the quantity's own tolerance: dh's shifts it; for l, touching is l >= the
+    // pitch found (a lower edge), no touch l < it (the range's end where the gap never reaches
+    // dh in it; none where it does at the start), then l's tolerance moves it inward.
+    const auto edge_of = [&](const DesignBound& d) {
+      if (!by_l) return touch ? d.value - box.dh : d.value + box.dh;
+      const double e = touch ? d.value : d.value <= lo ? -kInf : std::min(d.value, hi);
+      if (!std::isfinite(e)) return e;
+      if (b.upper) return box.l_absolute ? e - box.l : e / (1.0 + box.l);
+      return box.l_absolute ? e + box.l : e / (1.0 - box.l);
+    };
+    const auto take = [&](DesignBound d) {
+      d.edge = edge_of(d);
+      if (b.upper ? d.edge < b.edge : d.edge > b.edge) {
+        b.edge = d.edge;
+        b.binding = d;
+      }
+      b.bounds.push_back(d);
+    };
     const std::string what = "--require '" + r.text + "' (a corner of the box)";
     for (const double T : temperatures) {
       for (const double p : sides(r.pbar, box.pressure, box.pressure_absolute)) {
+        // Each corner's point read once (its creep law made once); only its pitch varies below.
+        std::vector<input::PointInputs> at_C;
+        const std::vector<double> Cs = sides(C0, box.C, false);
+        for (const double C : Cs) {
+          input::Keywords k = with(base_keywords, "pbar", input::json_number(p));
+          if (!std::isnan(T)) k = with(k, "temperature", input::json_number(T));
+          if (box.C > 0.0) k = with(k, "C", input::json_number(C));
+          at_C.push_back(point_at(k, what));
+        }
         for (const double l : by_l ? std::vector<double>{l0} : sides(l0, box.l, box.l_absolute)) {
-          for (const double C : sides(C0, box.C, false)) {
-            input::Keywords k = with(base_keywords, "pbar", input::json_number(p));
-            if (!std::isnan(T)) k = with(k, "temperature", input::json_number(T));
-            if (box.C > 0.0) k = with(k, "C", input::json_number(C));
+          for (std::size_t c = 0; c < Cs.size(); ++c) {
+            input::PointInputs& in = at_C[c];
+            // The gap the first level closes by the requirement's time at pitch `pitch`.
             const auto gap_at = [&](double pitch) {
-              const input::PointInputs in = point_at(with(k, "l", input::json_number(pitch)), what);
+              in.problem.l = pitch;
               const double g = model::dh_touching_at(in.problem, *in.creep, r.time);
-              if (std::isnan(g)) throw std::runtime_error("the gap closed at " + in.describe() + " is not a number");
+              if (std::isnan(g)) {
+                throw std::runtime_error("the gap closed at l = " + model::number_text(pitch, 17) + " R, " +
+                                         in.describe() + " is not a number");
+              }
               return g;
             };
             if (!by_l) {
-              if (box.l > 0.0) k = with(k, "l", input::json_number(l));
-              const input::PointInputs in = point_at(k, what);
-              DesignBound d{T, p, l, C, dh0, model::dh_touching_at(in.problem, *in.creep, r.time)};
-              if (std::isnan(d.value)) throw std::runtime_error("the gap closed at " + in.describe() + " is not a number");
-              const double edge = touch ? d.value - box.dh : d.value + box.dh;
-              if (b.upper ? edge < b.edge : edge > b.edge) {
-                b.edge = edge;
-                b.binding = d;
-              }
-              b.bounds.push_back(d);
+              take(DesignBound{T, p, l, Cs[c], dh0, gap_at(l)});
               continue;
             }
             // --find l: at each dh of the box, the pitch whose gap by the requirement's time is
             // that dh, by bisection in log l over the range (the gap grows with l; checked).
-            const double lo = out.search_lo, hi = out.search_hi;
             const double g_lo = gap_at(lo), g_hi = gap_at(hi);
             if (!(g_hi >= g_lo)) {
               out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from l = " +
@@ -437,28 +404,16 @@ DesignResult design(const DesignArgs& a) {
               } else {
                 double a_ = std::log(lo), b_ = std::log(hi);
                 for (int it = 0; it < 60 && b_ - a_ > 1e-15 * std::abs(b_); ++it) {
-                  const double m = 0.5 * (a_ + b_);
-                  (gap_at(std::exp(m)) >= dh ? b_ : a_) = m;
+                  const double mid = 0.5 * (a_ + b_);
+                  (gap_at(std::exp(mid)) >= dh ? b_ : a_) = mid;
                 }
                 value = std::exp(b_);  // the least l of the range whose gap reaches dh (to 1e-15)
               }
-              DesignBound d{T, p, lo, C, dh, value};
-              // touch: l >= value (a lower edge); no touch: l < value (an upper edge, the range's
-              // end where the gap never reaches dh in it).
-              const double edge = touch ? value : value <= lo ? -kInf : std::min(value, hi);
-              if (b.upper ? edge < b.edge : edge > b.edge) {
-                b.edge = edge;
-                b.binding = d;
-              }
-              b.bounds.push_back(d);
+              take(DesignBound{T, p, lo, Cs[c], dh, value});
             }
           }
         }
       }
-    }
-    if (by_l) {  // the pitch's own tolerance moves the edges inward
-      if (b.upper && std::isfinite(b.edge)) b.edge = box.l_absolute ? b.edge - box.l : b.edge / (1.0 + box.l);
-      if (!b.upper && std::isfinite(b.edge)) b.edge = box.l_absolute ? b.edge + box.l : b.edge / (1.0 - box.l);
     }
     if (b.upper) {
       out.upper = std::min(out.upper, b.edge);
@@ -496,12 +451,11 @@ DesignResult design(const DesignArgs& a) {
     }
     if (box.pressure > 0.0) {
       const std::vector<double> ps = sides(r.pbar, box.pressure, box.pressure_absolute);
+      DesignBound expected = b.binding;  // the binding corner at the pressure monotonicity picks
+      expected.pbar = touch ? ps.front() : ps.back();
       bool beaten = false;
       for (const DesignBound& x : b.bounds) {
-        if (x.temperature == b.binding.temperature && x.pbar == (touch ? ps.front() : ps.back()) &&
-            x.l == b.binding.l && x.C == b.binding.C && x.dh == b.binding.dh) {
-          beaten = tighter(b.binding, x);
-        }
+        if (x.temperature == expected.temperature && same_corner(x, expected)) beaten = tighter(b.binding, x);
       }
       if (beaten) {
         out.notes.push_back("'" + r.text + "' binds at the " + (touch ? "higher" : "lower") +
@@ -559,16 +513,16 @@ std::string pressure_text(double pbar, const input::PointInputs& in) {
 
 std::string tolerance_text(const DesignResult& d, const LengthUnit& L) {
   std::vector<std::string> parts;
-  if (d.dh_tolerance > 0) parts.push_back("dh +- " + model::number_text(d.dh_tolerance * L.per_R, 4) + " " + L.unit);
-  if (d.pressure_tolerance > 0) {
-    parts.push_back("pressure +- " + (d.pressure_absolute ? pressure_text(d.pressure_tolerance, d.inputs)
-                                                          : model::number_text(100 * d.pressure_tolerance, 4) + "%"));
+  if (d.tolerance.dh > 0) parts.push_back("dh +- " + model::number_text(d.tolerance.dh * L.per_R, 4) + " " + L.unit);
+  if (d.tolerance.pressure > 0) {
+    parts.push_back("pressure +- " + (d.tolerance.pressure_absolute ? pressure_text(d.tolerance.pressure, d.inputs)
+                                                          : model::number_text(100 * d.tolerance.pressure, 4) + "%"));
   }
-  if (d.l_tolerance > 0) {
-    parts.push_back("l +- " + (d.l_absolute ? model::number_text(d.l_tolerance * L.per_R, 4) + " " + L.unit
-                                            : model::number_text(100 * d.l_tolerance, 4) + "%"));
+  if (d.tolerance.l > 0) {
+    parts.push_back("l +- " + (d.tolerance.l_absolute ? model::number_text(d.tolerance.l * L.per_R, 4) + " " + L.unit
+                                            : model::number_text(100 * d.tolerance.l, 4) + "%"));
   }
-  if (d.C_tolerance > 0) parts.push_back("C +- " + model::number_text(100 * d.C_tolerance, 4) + "%");
+  if (d.tolerance.C > 0) parts.push_back("C +- " + model::number_text(100 * d.tolerance.C, 4) + "%");
   std::string t;
   for (const std::string& p : parts) t += (t.empty() ? "" : ", ") + p;
   return t;
@@ -583,12 +537,12 @@ std::string where_text(const RequirementBound& r, const DesignResult& d, const L
     t += model::number_text(b.temperature, 4) + " degC, ";
   }
   t += pressure_text(b.pbar, d.inputs);
-  if (d.quantity == "dh" && d.l_tolerance > 0) t += ", l = " + model::number_text(b.l * L.per_R, 4) + " " + L.unit;
-  if (d.C_tolerance > 0) t += ", C = " + model::number_text(b.C, 4);
+  if (d.quantity == "dh" && d.tolerance.l > 0) t += ", l = " + model::number_text(b.l * L.per_R, 4) + " " + L.unit;
+  if (d.tolerance.C > 0) t += ", C = " + model::number_text(b.C, 4);
   if (d.quantity == "l") {
     t += ", dh = " + model::number_text(b.dh * L.per_R, 4) + " " + L.unit;
-  } else if (d.dh_tolerance > 0) {
-    t += std::string(", dh ") + (touch ? "+ " : "- ") + model::number_text(d.dh_tolerance * L.per_R, 4) + " " + L.unit;
+  } else if (d.tolerance.dh > 0) {
+    t += std::string(", dh ") + (touch ? "+ " : "- ") + model::number_text(d.tolerance.dh * L.per_R, 4) + " " + L.unit;
   }
   return t;
 }
@@ -604,12 +558,12 @@ std::string miss_text(const DesignResult& d, const LengthUnit& L) {
   std::string t = "the nearest miss is " + q + " = " + model::number_text(0.5 * (d.lower + d.upper) * L.per_R, 4) +
                   " " + L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per_R, 4) + " " + L.unit;
   // The window's width with an exact dh (or l), negated: what the tolerance took.
-  const double tolerance = q == "dh" ? d.dh_tolerance : d.l_absolute ? d.l_tolerance : 0.0;
+  const double tolerance = q == "dh" ? d.tolerance.dh : d.tolerance.l_absolute ? d.tolerance.l : 0.0;
   const double exact_gap = gap - 2 * tolerance;
   if (tolerance > 0 && exact_gap < 0) {
     t += "; a " + q + " tolerance of +- " + model::number_text(-0.5 * exact_gap * L.per_R, 4) + " " + L.unit +
          " or less would meet every requirement";
-  } else if (q == "dh" || d.l_tolerance == 0) {
+  } else if (q == "dh" || d.tolerance.l == 0) {
     t += "; not even an exact " + q + " meets every requirement";
   }
   return t;
@@ -627,13 +581,13 @@ std::string json_of(const DesignResult& d) {
   s << ",\n \"physical\": {\"unit\": " << input::json_string(L.unit) << ", \"R\": " << num(L.per_R) << ", \"lower\": " << num(d.lower * L.per_R)
     << ", \"upper\": " << num(d.upper * L.per_R) << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) * L.per_R : kNaN)
     << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) * L.per_R : kNaN)
-    << ", \"dh_tolerance\": " << num(d.dh_tolerance * L.per_R) << "}";
+    << ", \"dh_tolerance\": " << num(d.tolerance.dh * L.per_R) << "}";
   if (d.quantity == "l") s << ",\n \"search\": [" << num(d.search_lo) << ", " << num(d.search_hi) << "]";
   s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs, d.quantity)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
-  s << ",\n \"tolerance\": {\"dh\": " << num(d.dh_tolerance) << ", \"pressure\": " << num(d.pressure_tolerance)
-    << ", \"pressure_is\": \"" << (d.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
-    << num(d.l_tolerance) << ", \"l_is\": \"" << (d.l_absolute ? "absolute, R" : "relative") << "\", \"C\": "
-    << num(d.C_tolerance) << "}";
+  s << ",\n \"tolerance\": {\"dh\": " << num(d.tolerance.dh) << ", \"pressure\": " << num(d.tolerance.pressure)
+    << ", \"pressure_is\": \"" << (d.tolerance.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
+    << num(d.tolerance.l) << ", \"l_is\": \"" << (d.tolerance.l_absolute ? "absolute, R" : "relative") << "\", \"C\": "
+    << num(d.tolerance.C) << "}";
   s << ",\n \"temperatures\": [";
   for (std::size_t i = 0; i < d.temperatures.size(); ++i) s << (i ? ", " : "") << num(d.temperatures[i]);
   s << "],\n \"requirements\": [";
@@ -653,7 +607,7 @@ std::string json_of(const DesignResult& d) {
       const DesignBound& x = b.bounds[k];
       s << (k ? ", " : "") << "{\"temperature\": " << num(x.temperature) << ", \"pbar\": " << num(x.pbar)
         << ", \"l\": " << num(x.l) << ", \"C\": " << num(x.C) << ", \"dh\": " << num(x.dh)
-        << ", \"value\": " << num(x.value) << "}";
+        << ", \"value\": " << num(x.value) << ", \"edge\": " << num(x.edge) << "}";
     }
     s << "]}";
   }
@@ -693,7 +647,7 @@ void write_table(std::ostream& out, const DesignResult& d) {
         << where_text(b, d, L, touch) << ")\n";
   }
   out << "\n";
-  const bool tolerance = q == "dh" ? d.dh_tolerance > 0 : d.l_tolerance > 0;
+  const bool tolerance = q == "dh" ? d.tolerance.dh > 0 : d.tolerance.l > 0;
   if (d.empty()) {
     out << "no design meets this: the requirements leave " << q << " between " << len(d.lower) << " and "
         << len(d.upper) << ", an empty window; " << miss_text(d, L) << "\n";

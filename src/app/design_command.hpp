@@ -36,6 +36,18 @@ struct DesignBound {
   /// requirement's time (the dh whose t* it is); for l, the pitch at which that gap is the
   /// corner's dh (inf or the search's end where none within it).
   double value = 0.0;
+  double edge = 0.0;  ///< the edge it sets: `value` less the quantity's own tolerance, in R
+};
+
+/// The tolerance box as the design reads it (--tolerance).
+struct DesignTolerance {
+  double dh = 0.0;                ///< R
+  double pressure = 0.0;          ///< relative (10% -> 0.1), or absolute in E0* when pressure_absolute
+  bool pressure_absolute = false;
+  double l = 0.0;                 ///< relative, or absolute in R when l_absolute
+  bool l_absolute = false;
+  double C = 0.0;                 ///< relative
+  double temperature = 0.0;       ///< K: the range is widened by it on each side
 };
 
 /// A requirement's bound on dh: its binding temperature and corner, and every one it met.
@@ -59,11 +71,7 @@ struct DesignResult {
   double search_lo = 0.0, search_hi = 0.0;  ///< --find l: the pitches searched (R)
   input::PointInputs inputs;  ///< the geometry and material (at the first requirement's pressure)
   std::vector<double> temperatures;
-  double dh_tolerance = 0.0;           ///< R
-  double pressure_tolerance = 0.0;     ///< relative (10% -> 0.1), or absolute when pressure_absolute
-  bool pressure_absolute = false;      ///< in E0*
-  double l_tolerance = 0.0, C_tolerance = 0.0;  ///< relative (l in R where l_absolute)
-  bool l_absolute = false;
+  DesignTolerance tolerance;
   std::vector<RequirementBound> bounds;
   double lower = 0.0, upper = 0.0;  ///< R; lower > upper: no dh meets every requirement
   std::vector<std::string> notes;

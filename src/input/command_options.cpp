@@ -499,9 +499,11 @@ void add_tolerance_option(po::options_description& opts) {
       "percentage of the input, a number in its scale, or a number with a unit");
 }
 
-std::vector<model::StatedTolerance> parse_tolerances(const std::string& all, const std::string& key,
-                                                     const std::function<const model::Parameter*(std::string_view)>& known,
-                                                     const PhysicalScales& scales, const std::string& names) {
+std::vector<model::StatedTolerance> parse_tolerances(
+    const std::string& all, const std::string& key,
+    const std::function<const model::Parameter*(std::string_view)>& known, const PhysicalScales& scales,
+    const std::string& names, const std::string& unknown,
+    const std::function<std::string(const model::StatedTolerance&)>& refuse) {
   std::vector<model::StatedTolerance> out;
   const auto bad = [&](const std::string& entry, const std::string& why) {
     return UsageError(key + " '" + entry + "': " + why + " (valid: NAME=VALUE, NAME one of " + names +
@@ -526,7 +528,7 @@ std::vector<model::StatedTolerance> parse_tolerances(const std::string& all, con
     text.erase(0, text.find_first_not_of(" \t"));
     if (name == "pressure") name = std::string(model::kPressure);
     const model::Parameter* parameter = known(name);
-    if (parameter == nullptr || parameter->integer) throw bad(entry, "'" + name + "' is no real-valued input of this point");
+    if (parameter == nullptr || parameter->integer) throw bad(entry, "'" + name + "' " + unknown);
     for (const model::StatedTolerance& given : out) {
       if (given.parameter == parameter) throw bad(entry, "'" + name + "' is given twice");
     }
@@ -550,6 +552,9 @@ std::vector<model::StatedTolerance> parse_tolerances(const std::string& all, con
       throw bad(entry, e.what());
     }
     if (!(std::isfinite(tol.width) && tol.width >= 0.0)) throw bad(entry, "the tolerance is not a number >= 0");
+    if (refuse) {
+      if (const std::string why = refuse(tol); !why.empty()) throw bad(entry, why);
+    }
     out.push_back(tol);
   }
   return out;

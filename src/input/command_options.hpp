@@ -182,10 +182,14 @@ void add_tolerance_option(boost::program_options::options_description& opts);
 /// option or config key), each on a real-valued parameter `known` admits (pressure stands
 /// for pbar), VALUE a percentage (relative), a number in the parameter's scale or one with
 /// a unit where `scales` knows it (a temperature's in K or degC, a difference). Throws
-/// UsageError naming the entry and what is valid (`names`: the valid NAMEs, for it).
-std::vector<model::StatedTolerance> parse_tolerances(const std::string& text, const std::string& key,
-                                                     const std::function<const model::Parameter*(std::string_view)>& known,
-                                                     const PhysicalScales& scales, const std::string& names);
+/// UsageError naming the entry and what is valid (`names`: the valid NAMEs, for it; `unknown`
+/// what a NAME `known` does not give is; `refuse`, where given, a command's own rule: why it
+/// refuses a tolerance read, or empty).
+std::vector<model::StatedTolerance> parse_tolerances(
+    const std::string& text, const std::string& key,
+    const std::function<const model::Parameter*(std::string_view)>& known, const PhysicalScales& scales,
+    const std::string& names, const std::string& unknown = "is no real-valued input of this point",
+    const std::function<std::string(const model::StatedTolerance&)>& refuse = {});
 /// A box that reaches below 0 on a parameter whose range starts at 0 (dh: the two levels at
 /// one height) is clipped there, with a note in `inputs.notes`.
 std::vector<model::Tolerance> read_tolerances(const boost::program_options::variables_map& vm, PointInputs& inputs);
