@@ -443,7 +443,10 @@ std::vector<KeySpec> make_keys() {
                     } catch (const UsageError& e) {
                       return std::string(e.what());
                     }
-                    if (config.tolerance.size() > 6) return std::string("at most 6 tolerances (64 corners)");
+                    if (config.tolerance.size() > model::kMaxTolerances) {
+                      return "at most " + std::to_string(model::kMaxTolerances) + " tolerances (" +
+                             std::to_string(1u << model::kMaxTolerances) + " corners)";
+                    }
                     return std::string();
                   },
                   {},
@@ -875,18 +878,21 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
                          keys()[k].range);
       continue;
     }
-    for (const double v : a < config.grid.rank() ? config.grid.axes[a].values : std::vector<double>{config.C}) {
-      const model::Tolerance box = t.at(v);
-      for (const double corner : {v - box.minus, v + box.plus}) {
-        if (!t.parameter->admits(corner)) {
-          problems.push_back(head + "about " + std::string(t.parameter->name) + " = " + input::format_axis_value(v) +
-                             " the box reaches " + input::format_axis_value(corner) + ", outside its range: " +
-                             std::string(t.parameter->range));
-          break;
+    // The first grid value about which the box leaves the range, if any.
+    const auto outside = [&]() -> std::string {
+      for (const double v : a < config.grid.rank() ? config.grid.axes[a].values : std::vector<double>{config.C}) {
+        const model::Tolerance box = t.at(v);
+        for (const double corner : {v - box.minus, v + box.plus}) {
+          if (!t.parameter->admits(corner)) {
+            return "about " + std::string(t.parameter->name) + " = " + input::format_axis_value(v) +
+                   " the box reaches " + input::format_axis_value(corner) + ", outside its range: " +
+                   std::string(t.parameter->range);
+          }
         }
       }
-      if (!problems.empty() && problems.back().rfind(head, 0) == 0) break;
-    }
+      return {};
+    };
+    if (const std::string why = outside(); !why.empty()) problems.push_back(head + why);
   }
   for (std::size_t k = 0; k < keys().size(); ++k) {
     const KeySpec& spec = keys()[k];
@@ -931,9 +937,7 @@ std::vector<double> material_times(const sweep::SweepConfig& config) {
     }
   }
   // Within the times a user waits: 1 ms to a year (a PLA creeps on for 1e16 s at 25 C).
-  const model::Unit* second = model::find_unit(model::Dimension::time, "s");
-  const model::Unit* unit = model::find_unit(model::Dimension::time, config.time_unit());
-  if (second && unit) {
+  if (const model::Unit* unit = model::find_unit(model::Dimension::time, config.time_unit())) {
     lo = std::max(lo, 1e-3 / unit->si);
     hi = std::min(hi, 3.15576e7 / unit->si);
   }

@@ -136,7 +136,7 @@ class TileSink final : public BatchSink {
   /// `tolerance`: the map's box of tolerances (empty: none), `law` the creep law and
   /// `columns` the points (their law values, for the box's corners).
   TileSink(map::TileData* out, const std::vector<std::size_t>& index, const model::EvaluationOptions* full,
-           const std::vector<model::StatedTolerance>& tolerance, const model::CreepLawSpec& law,
+           std::span<const model::StatedTolerance> tolerance, const model::CreepLawSpec& law,
            const PointColumns& columns)
       : out_(out), index_(index), full_(full), tolerance_(tolerance), law_(law), columns_(columns) {}
   void take(const BatchPoint& p) override {
@@ -161,21 +161,8 @@ class TileSink final : public BatchSink {
     law_values_.clear();
     for (const std::span<const double>& column : columns_.law) law_values_.push_back(column[p.k]);
     model::PointSummary range;
-    boxes_.clear();
-    for (const model::StatedTolerance& t : tolerance_) {
-      double value = 0.0;
-      model::ContactProblem problem = p.problem;
-      if (const double* field = model::problem_field(problem, t.parameter->name)) {
-        value = *field;
-      } else {
-        for (std::size_t j = 0; j < law_.parameters.size(); ++j) {
-          if (&law_.parameters[j] == t.parameter) value = law_values_[j];
-        }
-      }
-      boxes_.push_back(t.at(value));
-    }
     try {
-      range.t_star_range = model::t_star_range(p.problem, law_, law_values_, boxes_);
+      range.t_star_range = model::t_star_range(p.problem, law_, law_values_, tolerance_);
     } catch (const std::invalid_argument&) {
       // A corner outside a parameter's range (a temperature beyond the shift's): not computed.
     }
@@ -185,11 +172,10 @@ class TileSink final : public BatchSink {
   map::TileData* out_;
   const std::vector<std::size_t>& index_;
   const model::EvaluationOptions* full_;
-  const std::vector<model::StatedTolerance>& tolerance_;
+  std::span<const model::StatedTolerance> tolerance_;
   const model::CreepLawSpec& law_;
   const PointColumns& columns_;
   std::vector<double> law_values_;
-  std::vector<model::Tolerance> boxes_;
 };
 
 }  // namespace

@@ -125,17 +125,24 @@ Tolerance StatedTolerance::at(double value, bool* clipped) const {
   return t;
 }
 
-TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
-                        std::span<const Tolerance> tolerances) {
-  Point point(problem, law, law_values);
+namespace {
+
+// The position of `parameter` among the point's real-valued parameters.
+std::size_t position(const Point& point, const Parameter* parameter) {
+  const auto k = std::find(point.parameters.begin(), point.parameters.end(), parameter);
+  if (k == point.parameters.end()) {
+    throw std::invalid_argument("a tolerance on " + std::string(parameter ? parameter->name : "?") +
+                                ", which is no real-valued parameter of this point");
+  }
+  return static_cast<std::size_t>(k - point.parameters.begin());
+}
+
+// t_star_range of `point` (its creep law `law` at `law_values`).
+TStarRange range_over(Point& point, const CreepLawSpec& law, std::span<const double> law_values,
+                      std::span<const Tolerance> tolerances) {
   std::vector<std::size_t> index;
   for (const Tolerance& tol : tolerances) {
-    std::size_t k = 0;
-    while (k < point.parameters.size() && point.parameters[k] != tol.parameter) ++k;
-    if (k == point.parameters.size()) {
-      throw std::invalid_argument("a tolerance on " + std::string(tol.parameter ? tol.parameter->name : "?") +
-                                  ", which is no real-valued parameter of this point");
-    }
+    const std::size_t k = position(point, tol.parameter);
     const double x = *point.field(k);
     for (const double v : {x - tol.minus, x + tol.plus}) {
       if (!tol.parameter->admits(v)) {
@@ -145,7 +152,10 @@ TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, 
     }
     index.push_back(k);
   }
-  if (index.size() > 6) throw std::invalid_argument("at most 6 tolerances (64 corners)");
+  if (index.size() > kMaxTolerances) {
+    throw std::invalid_argument("at most " + std::to_string(kMaxTolerances) + " tolerances (" +
+                                std::to_string(1u << kMaxTolerances) + " corners)");
+  }
   // The creep law is made once where no tolerance is on one of its parameters (making one,
   // a Prony series' interconversion, costs several classifications).
   const bool law_varies = std::any_of(index.begin(), index.end(), [&](std::size_t k) {
@@ -179,6 +189,22 @@ TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, 
   }
   if (r.not_computed > 0) r.low = r.high = std::numeric_limits<double>::quiet_NaN();
   return r;
+}
+
+}  // namespace
+
+TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
+                        std::span<const Tolerance> tolerances) {
+  Point point(problem, law, law_values);
+  return range_over(point, law, law_values, tolerances);
+}
+
+TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
+                        std::span<const StatedTolerance> stated) {
+  Point point(problem, law, law_values);
+  std::vector<Tolerance> box;
+  for (const StatedTolerance& t : stated) box.push_back(t.at(*point.field(position(point, t.parameter))));
+  return range_over(point, law, law_values, box);
 }
 
 }  // namespace punchsweep::model

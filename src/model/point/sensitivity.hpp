@@ -89,4 +89,12 @@ struct TStarRange {
 TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
                         std::span<const Tolerance> tolerances);
 
+/// The same for tolerances as stated, each taken about the point's own value of its
+/// parameter (StatedTolerance::at): what a map's output.tolerance gives every point.
+TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
+                        std::span<const StatedTolerance> stated);
+
+/// The most tolerances a box may have (2^6 = 64 corners).
+inline constexpr std::size_t kMaxTolerances = 6;
+
 }  // namespace punchsweep::model
