@@ -295,6 +295,14 @@ def slices(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed],
             for k in (range(len(values)) if panels is None else panels)]
 
 
+def below_floor(ds, regime: np.ndarray, t_star: np.ndarray, floor: tuple[float, str]):
+    """A delay below the floor reads as immediate in practice: (the regimes with such cells
+    made immediate, which cells they are)."""
+    codes = pm.flags(ds, "regime")
+    practical = (np.asarray(regime) == codes.code("delayed")) & (np.asarray(t_star) < floor[0])
+    return np.where(practical, codes.code("immediate"), regime), practical
+
+
 def tolerance_band(ds, d: Slice, within: tuple[float, str] | None,
                    floor: tuple[float, str] | None = None) -> np.ndarray | None:
     """Cells whose regime (or --touch-within class) differs between the ends of the map's box
@@ -306,9 +314,7 @@ def tolerance_band(ds, d: Slice, within: tuple[float, str] | None,
     if within is not None:
         low, high = touch_within(ds, low, d.t_star_low, within[0]), touch_within(ds, high, d.t_star_high, within[0])
     elif floor is not None:
-        codes = pm.flags(ds, "regime")
-        low, high = ((np.where((r == codes.code("delayed")) & (t < floor[0]), codes.code("immediate"), r))
-                     for r, t in ((low, d.t_star_low), (high, d.t_star_high)))
+        low, high = (below_floor(ds, r, t, floor)[0] for r, t in ((low, d.t_star_low), (high, d.t_star_high)))
     computed = (low != pm.flags(ds, "regime").code(pm.NOT_COMPUTED)) & \
                (high != pm.flags(ds, "regime").code(pm.NOT_COMPUTED))
     return computed & (low != high)
@@ -382,10 +388,8 @@ def title_lines(ds, x: str, y: str, facet: str | None, fixed: dict[str, pm.Fixed
 def default_floor(ds) -> tuple[float, str] | None:
     """The --floor a map gets when none is given: 1 ms on a step-loaded map in physical time
     (a material map), in the map's time unit; None otherwise."""
-    config = str(ds.attrs.get("config", "")).splitlines()
-    if "ramp_time" in pm.axes(ds) or any(line.startswith("load_table = ") and line.strip() != "load_table ="
-                                         for line in config):
-        return None  # the immediate regime runs to the end of the load's rise already
+    if pm.map_parts(ds)[2] != "step load":
+        return None  # under a ramp or a table the immediate regime runs to the end of the rise already
     try:
         return pm.parse_time(ds, "0.001s", "--floor")[0], "1 ms"
     except pm.MapError:
@@ -425,11 +429,9 @@ def render(ds, x: str, y: str, fixed: dict[str, pm.Fixed], facet: str | None = N
         t_star = np.where(answered, d.bem_t_star, d.t_star)
         if within is not None:
             regime = touch_within(ds, regime, t_star, within[0])
-        elif floor is not None:
-            # A delay below the floor reads as immediate in practice: drawn so, said so.
-            practical = (regime == codes.code("delayed")) & (t_star < floor[0])
+        elif floor is not None:  # drawn as immediate, and said so
+            regime, practical = below_floor(ds, regime, t_star, floor)
             any_practical |= bool(practical.any())
-            regime = np.where(practical, codes.code("immediate"), regime)
         shown.append((answered, regime, valid, t_star))
     norm = None
     if within is None:

@@ -345,10 +345,10 @@ MaterialFit fit_material(const Measurements& measurements, const MaterialFitRequ
   start.T_min = std::min(temperatures.front(), request.shift.T_ref);
   start.T_max = std::max(temperatures.back(), request.shift.T_ref);
   const auto [law, joint_rss] = joint_law(r, temperatures, start, !overlap_stands, coarse, options);
-  if (overlap_failed.empty()) {
+  if (overlap_failed.empty() && !overlap_stands) {  // a fallback: kept only where it fits better
     std::vector<double> L;
     for (std::size_t i = 0; i < isotherms.size(); ++i) L.push_back(out.master.log10_aT(i));
-    if (!overlap_stands && !(joint_rss < fit_reduced(r, L, options).rss)) return out;
+    if (!(joint_rss < fit_reduced(r, L, options).rss)) return out;
   }
   MaterialFit joint = out;
   joint.master.temperatures = temperatures;
