@@ -2,16 +2,18 @@
 """The design window against temperature: the picture `punchsweep design` promises.
 
 Reads the JSON of `punchsweep design ... --format json` (or `punchsweep.design()` written
-with json.dump) and draws, against temperature, each requirement's bound on dh (the
-tightest over the tolerance box's corners at that temperature, the dh tolerance taken
-off): a "touch within ..." requirement is an upper bound (dh at most the line), a "never"
-or "no touch within ..." one a lower bound. Where every lower line lies under every upper
+with json.dump) and draws, against temperature, each requirement's bound on dh (or, with
+--find l or --find pressure, on the pitch or the pressure): the tightest over the tolerance
+box's corners at that temperature, the quantity's own tolerance taken off. For dh a "touch
+within ..." requirement is an upper bound (dh at most the line), a "never" or "no touch
+within ..." one a lower bound; for the pitch and the pressure the other way round. Where every lower line lies under every upper
 one, the band between is shaded; the window that holds at every temperature (the design's
 answer) is the hatched band, its centre dashed, and the edge each requirement sets is
 marked where it binds. With one temperature (or a law without temperature) the bounds are
 drawn as levels. The title says the window, or "no design meets this" with the nearest miss.
 
-Units: dh in the unit of the design's R (um where --R 80um was given), temperature in C.
+Units: dh and l in the unit of the design's R (um where --R 80um was given), the pressure in
+kPa (or Pa, MPa) where the material gives a modulus, temperature in C.
 
 Example:
   punchsweep design --material examples/dma_exports/tpe_a_truth.ini --R 80um --l 250um --s 2 \\
@@ -40,9 +42,17 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                            "`punchsweep design --format json`")
 
 
+# What a window can be of, as the y axis names it.
+QUANTITIES = {"dh": "height difference dh", "l": "pitch l", "pbar": "nominal pressure"}
+
+
+def _unit(text: str) -> str:
+    return "µm" if text == "um" else text
+
+
 def read_window(path: str) -> dict:
     return pm.read_json(path, "a design window",
-                        lambda d: d.get("quantity") in ("dh", "l") and isinstance(d.get("requirements"), list),
+                        lambda d: d.get("quantity") in QUANTITIES and isinstance(d.get("requirements"), list),
                         "the JSON of `punchsweep design --format json` (no 'quantity' and 'requirements')")
 
 
@@ -54,7 +64,7 @@ def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
     """Per requirement: (requirement, temperatures, the edge it sets there in the physical
     unit): the tightest of its corners' edges (each bound less the quantity's own tolerance,
     as the engine wrote it) at each temperature."""
-    per_R = d["physical"]["R"]  # R in the physical unit (1 where no --R was given)
+    scale = d["physical"]["scale"]  # the quantity's scaled unit (R, E0*) in its physical one
     curves = []
     for r in d["requirements"]:
         upper = r["side"] == "upper"
@@ -65,7 +75,7 @@ def bound_curves(d: dict) -> list[tuple[dict, np.ndarray, np.ndarray]]:
             edge = _number(b["edge"])
             by_T[key] = min(by_T.get(key, math.inf), edge) if upper else max(by_T.get(key, -math.inf), edge)
         Ts = np.array(sorted(by_T))
-        curves.append((r, Ts, np.array([by_T[T] for T in Ts]) * per_R))
+        curves.append((r, Ts, np.array([by_T[T] for T in Ts]) * scale))
     return curves
 
 
@@ -74,7 +84,7 @@ def render(d: dict):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    unit = "µm" if d["physical"]["unit"] == "um" else d["physical"]["unit"]
+    unit, length = _unit(d["physical"]["unit"]), _unit(d["physical"]["length_unit"])
     curves = bound_curves(d)
     has_T = len(d["temperatures"]) > 1
     fig, ax = plt.subplots(figsize=(7.5, 4.8), layout="constrained")
@@ -82,7 +92,8 @@ def render(d: dict):
     x_span = (min(d["temperatures"]), max(d["temperatures"])) if has_T else (0.0, 1.0)
     for k, (r, Ts, edge) in enumerate(curves):
         upper = r["side"] == "upper"
-        label = f"{r['text']}: {d['quantity']} {'≤' if upper else '≥'} line"
+        q = "pressure" if d["quantity"] == "pbar" else d["quantity"]
+        label = f"{r['text']}: {q} {'≤' if upper else '≥'} line"
         colour = colours[k % len(colours)]
         if has_T:
             ax.plot(Ts, edge, color=colour, lw=2, label=label, marker="o", ms=3)
@@ -112,26 +123,28 @@ def render(d: dict):
             ax.axhline(d["physical"]["centre"], color="tab:green", ls="--", lw=1.2, label="its centre")
         else:
             ax.axhline(lo, color="tab:green", ls="--", lw=1.2, label="the window's lower edge")
-        q = d["quantity"]
+        q = "pressure" if d["quantity"] == "pbar" else d["quantity"]
         title = (f"{q} window {lo:.4g} to {top:.4g} {unit} (centre {d['physical']['centre']:.4g}, margin "
                  f"± {d['physical']['margin']:.3g} {unit})" if top is not None else f"{q} ≥ {lo:.4g} {unit}")
     else:
         title = "no design meets this"
     box = []
     if d["tolerance"]["dh"]:
-        box.append(f"dh ± {d['physical']['dh_tolerance']:.3g} {unit}")
+        box.append(f"dh ± {d['physical']['dh_tolerance']:.3g} {length}")
     if d["tolerance"]["pressure"]:
+        pa = d["physical"].get("E0_star_Pa")
         box.append(f"pressure ± {100 * d['tolerance']['pressure']:.3g}%" if d["tolerance"]["pressure_is"] == "relative"
-                   else "pressure ± a stated amount")
+                   else f"pressure ± {d['tolerance']['pressure'] * pa / 1e3:.4g} kPa" if pa
+                   else f"pressure ± {d['tolerance']['pressure']:.4g} E0*")
     if d["tolerance"]["l"]:
-        box.append(f"l ± {d['tolerance']['l'] * d['physical']['R']:.3g} {unit}" if d["tolerance"]["l_is"] != "relative"
+        box.append(f"l ± {d['tolerance']['l'] * d['physical']['R']:.3g} {length}" if d["tolerance"]["l_is"] != "relative"
                    else f"l ± {100 * d['tolerance']['l']:.3g}%")
     subtitle = d["point"] + (f"; tolerance {', '.join(box)}" if box else "")
     ax.set_title(title + "\n" + "\n".join(textwrap.wrap(subtitle.replace(" um", " µm"), 110)), fontsize=9)
     ax.set_xlabel("temperature (°C)" if has_T else "")
     if not has_T:
         ax.set_xticks([])
-    ax.set_ylabel(f"{'height difference dh' if d['quantity'] == 'dh' else 'pitch l'} ({unit})")
+    ax.set_ylabel(f"{QUANTITIES[d['quantity']]} ({unit})")
     ax.set_xlim(*x_span)
     ax.legend(fontsize=7.5, loc="best")
     if d["empty"] and d.get("miss"):

@@ -206,14 +206,15 @@ def design_window(path: str | None) -> dict | None:
     if path is None:
         return None
     d = pm.read_json(path, "a design window",
-                     lambda d: d.get("quantity") in ("dh", "l") and "lower" in d and "upper" in d,
+                     lambda d: d.get("quantity") in ("dh", "l", "pbar") and "lower" in d and "upper" in d,
                      "the JSON of `punchsweep design --format json` (no 'quantity', 'lower' and 'upper')")
     q, unit = d["quantity"], d["physical"]["unit"]
     edges = []
     for side, value, physical in (("lower", d["lower"], d["physical"]["lower"]),
                                   ("upper", d["upper"], d["physical"]["upper"])):
         if value is not None and math.isfinite(value) and not d["empty"]:
-            edges.append((f"design window: {q} {side} edge {physical:.4g} {unit}", float(value)))
+            name = "pressure" if q == "pbar" else q
+            edges.append((f"design window: {name} {side} edge {physical:.4g} {unit}", float(value)))
     return {"quantity": q, "edges": edges, "empty": bool(d["empty"])}
 
 

@@ -37,7 +37,7 @@ constexpr const char* kUsage =
 
 constexpr const char* kRequirementForms =
     "valid: 'touch within TIME at PRESSURE', 'touch at once at PRESSURE', 'touch at PRESSURE' (at any time), "
-    "'never at PRESSURE', 'no touch within TIME at PRESSURE'; TIME with a unit (1s, 5min) where a material file "
+    "'never at PRESSURE', 'no touch within TIME at PRESSURE' (with --find pressure, without 'at PRESSURE'); TIME with a unit (1s, 5min) where a material file "
     "gives one (else in T_eps), PRESSURE with one (30kPa) where it gives a modulus (else in E0/(1-nu^2))";
 
 /// The design command's own options, and every other one (the point's) as keywords.
@@ -46,9 +46,11 @@ struct DesignArgs {
   std::optional<std::string> temperature, tolerance;
   std::string format = "table";
   bool help = false;
-  /// What the window is of: dh (given l), or l (given dh; --l is then the range searched).
+  /// What the window is of: dh (given l); l (given dh; --l is then the range searched); or
+  /// pbar, the nominal pressure (given dh and l; --pressure or --pbar is the range searched).
   std::string find = "dh";
   std::optional<std::string> dh;
+  std::string pressure_option, pressure_range;  ///< --find pressure: "--pressure", "1kPa..100kPa"
   input::Keywords point;
 };
 
@@ -66,11 +68,12 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
     } else if (name == "help") {
       a.help = true;
     } else if (name == "find") {
-      a.find = value;
+      a.find = value == "pressure" ? std::string(model::kPressure) : value;
     } else if (name == "dh") {
       a.dh = value;
     } else if (name == "pbar" || name == "pressure") {
-      throw input::UsageError("--" + name + ": each --require names its pressure ('touch within 1s at 30kPa')");
+      a.pressure_option = "--" + name;
+      a.pressure_range = value;
     } else {
       a.point.emplace_back(name, value);
     }
@@ -78,12 +81,28 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
   if (a.format != "table" && a.format != "json") {
     throw input::UsageError("--format = " + a.format + " is not one of: table, json");
   }
-  if (a.find != "dh" && a.find != "l") throw input::UsageError("--find = " + a.find + " is not one of: dh, l");
+  if (a.find != "dh" && a.find != "l" && a.find != model::kPressure) {
+    throw input::UsageError("--find = " + a.find + " is not one of: dh, l, pressure");
+  }
+  const bool by_pressure = a.find == model::kPressure;
+  const std::string find_name = by_pressure ? "pressure" : a.find;
   if (a.find == "dh" && a.dh) {
     throw input::UsageError("--dh: the design finds dh; state what it must do with --require (or --find l, the "
-                            "pitch for a given dh)");
+                            "pitch for a given dh, or --find pressure)");
   }
-  if (a.find == "l" && !a.dh) throw input::UsageError("--find l needs --dh, the height difference the pitch is for");
+  if (a.find != "dh" && !a.dh) {
+    throw input::UsageError("--find " + find_name + " needs --dh, the height difference the " +
+                            (by_pressure ? "pressure" : "pitch") + " is for");
+  }
+  if (!by_pressure && !a.pressure_option.empty()) {
+    throw input::UsageError(a.pressure_option + ": each --require names its pressure ('touch within 1s at 30kPa'; "
+                            "or --find pressure, the window of the pressure, searched over " + a.pressure_option +
+                            " A..B)");
+  }
+  if (by_pressure && a.pressure_option.empty()) {
+    throw input::UsageError("--find pressure needs --pressure A..B (or --pbar A..B), the pressures to search, as "
+                            "1kPa..100kPa");
+  }
   return a;
 }
 
@@ -112,8 +131,8 @@ input::Keywords keywords_of(const std::vector<std::string>& args) {
 std::string trimmed(const std::string& s) { return std::string(model::trim(s, " \t")); }
 
 /// One of the requirement's forms (kRequirementForms), its time and pressure read in the
-/// point's scales.
-Requirement read_requirement(const std::string& text, const input::PhysicalScales& scales) {
+/// point's scales; without a pressure (NaN) where the design finds it (`find_pressure`).
+Requirement read_requirement(const std::string& text, const input::PhysicalScales& scales, bool find_pressure) {
   const auto bad = [&](const std::string& why) {
     return input::UsageError("--require '" + text + "': " + why + " (" + kRequirementForms + ")");
   };
@@ -127,32 +146,36 @@ Requirement read_requirement(const std::string& text, const input::PhysicalScale
   Requirement r;
   r.text = trimmed(text);
   std::string time_text, pressure_text;
-  if (form("touch (?:within|by) (.+) at (.+)", m)) {
+  // Each form's pressure, " at PRESSURE", is its last group, optional here and checked below.
+  if (form("touch (?:within|by) (.+?)(?: at (.+))?", m)) {
     time_text = m[1];
-    pressure_text = m[2];
-  } else if (form("touch (?:at once|immediately) at (.+)", m)) {
-    pressure_text = m[1];
-  } else if (form("touch (?:ever |eventually )?at (.+)", m)) {
+  } else if (form("touch (?:at once|immediately)(?: at (.+))?", m)) {
+  } else if (form("touch(?: ever| eventually)?(?: at (.+))?", m)) {
     r.time = kInf;
-    pressure_text = m[1];
-  } else if (form("(?:never|no touch) at (.+)", m)) {
+  } else if (form("(?:never|no touch)(?: at (.+))?", m)) {
     r.kind = Requirement::Kind::no_touch_by;
     r.time = kInf;
-    pressure_text = m[1];
-  } else if (form("(?:no touch|not) (?:within|by) (.+) at (.+)", m)) {
+  } else if (form("(?:no touch|not) (?:within|by) (.+?)(?: at (.+))?", m)) {
     r.kind = Requirement::Kind::no_touch_by;
     time_text = m[1];
-    pressure_text = m[2];
   } else {
     throw bad("not a requirement");
   }
+  pressure_text = m[m.size() - 1];
+  if (find_pressure && !pressure_text.empty()) {
+    throw bad("the design finds the pressure (--find pressure): state the requirement without 'at " + pressure_text + "'");
+  }
+  if (!find_pressure && pressure_text.empty()) throw bad("no pressure: say at which, as 'at 30kPa'");
+  r.pbar = kNaN;
   try {
     if (!time_text.empty()) {
       r.time = input::read_scaled(time_text, *input::scale_of("T_eps", scales));
       if (!(std::isfinite(r.time) && r.time >= 0.0)) throw std::invalid_argument("the time is not finite and >= 0");
     }
-    r.pbar = input::read_scaled(pressure_text, *input::scale_of("E0/(1-nu^2)", scales));
-    if (!(std::isfinite(r.pbar) && r.pbar > 0.0)) throw std::invalid_argument("the pressure is not finite and > 0");
+    if (!find_pressure) {
+      r.pbar = input::read_scaled(pressure_text, *input::scale_of("E0/(1-nu^2)", scales));
+      if (!(std::isfinite(r.pbar) && r.pbar > 0.0)) throw std::invalid_argument("the pressure is not finite and > 0");
+    }
   } catch (const std::invalid_argument& e) {
     throw bad(e.what());
   }
@@ -248,9 +271,15 @@ DesignTolerance read_tolerance(const std::string& text, const input::PointInputs
   return box;
 }
 
+/// `base` without `name`.
+input::Keywords without(input::Keywords base, const std::string& name) {
+  base.erase(std::remove_if(base.begin(), base.end(), [&](const auto& kv) { return kv.first == name; }), base.end());
+  return base;
+}
+
 /// `base` with `name` set to `value` (replacing it where given).
 input::Keywords with(input::Keywords base, const std::string& name, const std::string& value) {
-  base.erase(std::remove_if(base.begin(), base.end(), [&](const auto& kv) { return kv.first == name; }), base.end());
+  base = without(std::move(base), name);
   base.emplace_back(name, value);
   return base;
 }
@@ -260,6 +289,35 @@ std::vector<double> sides(double value, double tolerance, bool absolute) {
   if (tolerance == 0.0) return {value};
   return absolute ? std::vector<double>{value - tolerance, value + tolerance}
                   : std::vector<double>{value * (1 - tolerance), value * (1 + tolerance)};
+}
+
+/// A scaled unit in a physical one: `per` of `unit` make one scaled unit.
+struct Unit {
+  double per = 1.0;
+  std::string unit;
+};
+
+/// Lengths in R's physical unit where --R is given, else in R.
+Unit length_unit(const input::PointInputs& in) {
+  if (const auto u = input::physical_unit("R", in.scales)) return {u->per_scaled, u->units};
+  return {1.0, "R"};
+}
+
+/// Pressures in Pa, kPa or MPa (whichever `typical`, in E0*, reads in as 1 to 1000) where the
+/// material gives a modulus, else in E0*.
+Unit pressure_unit(const input::PointInputs& in, double typical) {
+  if (const auto u = input::physical_unit("E0/(1-nu^2)", in.scales)) {
+    const double pa = typical * u->per_scaled;
+    if (pa >= 1e6) return {u->per_scaled / 1e6, "MPa"};
+    if (pa >= 1e3) return {u->per_scaled / 1e3, "kPa"};
+    return {u->per_scaled, "Pa"};
+  }
+  return {1.0, "E0*"};
+}
+
+std::string pressure_text(double pbar, const input::PointInputs& in) {
+  const Unit u = pressure_unit(in, pbar);
+  return model::number_text(pbar * u.per, 4) + " " + u.unit;
 }
 
 DesignResult design(const DesignArgs& a) {
@@ -285,26 +343,35 @@ DesignResult design(const DesignArgs& a) {
       throw input::UsageError(what.empty() ? std::string(e.what()) : what + ": " + e.what());
     }
   };
-  const bool by_l = a.find == "l";
+  const bool by_l = a.find == model::kPitch, by_pressure = a.find == model::kPressure;
+  const std::string find_name = by_pressure ? "pressure" : a.find;
+  // --find l or pressure: the quantity is searched over a range, at each corner of the rest.
+  const bool searched = by_l || by_pressure;
   DesignResult out;
   out.quantity = a.find;
-  // --find l: --l is the range of pitches searched ("100um..400um"), --dh the height difference.
-  std::string l_text;
-  for (const auto& [name, value] : a.point) {
-    if (name == "l") l_text = value;
-  }
-  std::string l_lo_text = l_text, l_hi_text;
-  if (by_l) {
-    const std::size_t dots = l_text.find("..");
-    if (dots == std::string::npos) {
-      throw input::UsageError("--l " + (l_text.empty() ? std::string("(missing)") : l_text) +
-                              ": with --find l, the range of pitches to search, as 100um..400um");
+  // The range searched: --l 100um..400um, or --pressure 1kPa..100kPa (--pbar in E0*).
+  std::string range_option = "--l", range_text;
+  if (by_pressure) {
+    std::tie(range_option, range_text) = std::pair{a.pressure_option, a.pressure_range};
+  } else {
+    for (const auto& [name, value] : a.point) {
+      if (name == "l") range_text = value;
     }
-    l_lo_text = trimmed(l_text.substr(0, dots));
-    l_hi_text = trimmed(l_text.substr(dots + 2));
   }
-  input::Keywords base_keywords = with(a.point, "dh", by_l ? *a.dh : "0");
-  if (by_l) base_keywords = with(base_keywords, "l", l_lo_text);
+  const std::string range_key = range_option.substr(2);
+  std::string range_lo_text = range_text, range_hi_text;
+  if (searched) {
+    const std::size_t dots = range_text.find("..");
+    if (dots == std::string::npos) {
+      throw input::UsageError(range_option + " " + (range_text.empty() ? std::string("(missing)") : range_text) +
+                              ": with --find " + (by_l ? "l, the range of pitches to search, as 100um..400um"
+                                                       : "pressure, the range of pressures to search, as 1kPa..100kPa"));
+    }
+    range_lo_text = trimmed(range_text.substr(0, dots));
+    range_hi_text = trimmed(range_text.substr(dots + 2));
+  }
+  input::Keywords base_keywords = with(a.point, "dh", searched ? *a.dh : "0");
+  if (by_l) base_keywords = with(base_keywords, "l", range_lo_text);
   // The scales first (a requirement's units need them): at a nominal pressure.
   std::optional<double> first_T;
   if (a.temperature) first_T = read_temperature(a.temperature->substr(0, a.temperature->find("..")), "C",
@@ -313,42 +380,56 @@ DesignResult design(const DesignArgs& a) {
   if (first_T) probe = with(probe, "temperature", input::json_number(*first_T));
   const input::PointInputs scales_of_point = point_at(probe, "");
   std::vector<Requirement> requirements;
-  for (const std::string& text : a.requirement_texts) requirements.push_back(read_requirement(text, scales_of_point.scales));
+  for (const std::string& text : a.requirement_texts) {
+    requirements.push_back(read_requirement(text, scales_of_point.scales, by_pressure));
+  }
   if (a.tolerance) out.tolerance = read_tolerance(*a.tolerance, scales_of_point);
   const DesignTolerance& box = out.tolerance;
   if (a.temperature) out.temperatures = read_temperatures(*a.temperature, box.temperature);
   else if (box.temperature > 0.0) throw input::UsageError("--tolerance temperature: give --temperature too");
-  out.inputs = point_at(with(probe, "pbar", input::json_number(requirements.front().pbar)), "");
-  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C, dh0 = out.inputs.problem.dh;
-  if (by_l) {
-    out.search_lo = l0;
-    out.search_hi = point_at(with(probe, "l", l_hi_text), "--l " + l_text).problem.l;
+  // The search's ends, each read as the point reads that option (its unit, its range).
+  const auto range_end = [&](const std::string& text) {
+    input::Keywords k = with(probe, range_key, text);
+    if (range_key == "pressure") k = without(k, "pbar");  // the probe's; one of the two
+    const input::PointInputs in = point_at(k, range_option + " " + range_text);
+    return by_l ? in.problem.l : in.problem.pbar0;
+  };
+  if (searched) {
+    out.search_lo = range_end(range_lo_text);
+    out.search_hi = range_end(range_hi_text);
     if (!(out.search_hi > out.search_lo)) {
-      throw input::UsageError("--l " + l_text + ": the range's end is not above its start");
+      throw input::UsageError(range_option + " " + range_text + ": the range's end is not above its start");
     }
-    if (box.dh > dh0) throw input::UsageError("--tolerance dh: larger than --dh itself");
   }
+  out.inputs = point_at(with(probe, "pbar", input::json_number(by_pressure ? out.search_lo : requirements.front().pbar)), "");
+  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C, dh0 = out.inputs.problem.dh;
+  if (searched && box.dh > dh0) throw input::UsageError("--tolerance dh: larger than --dh itself");
+  // The searched quantity's own tolerance, which moves its edges inward.
+  const double search_tolerance = by_l ? box.l : box.pressure;
+  const bool search_tolerance_absolute = by_l ? box.l_absolute : box.pressure_absolute;
   const std::vector<double> temperatures = out.temperatures.empty() ? std::vector<double>{kNaN} : out.temperatures;
-  out.lower = by_l ? out.search_lo : 0.0;
-  out.upper = by_l ? out.search_hi : kInf;
+  out.lower = searched ? out.search_lo : 0.0;
+  out.upper = searched ? out.search_hi : kInf;
   for (const Requirement& r : requirements) {
     RequirementBound b;
     b.requirement = r;
     const bool touch = r.kind == Requirement::Kind::touch_by;
-    // dh: touching by t is dh <= the gap closed by t, an upper edge; l: the gap grows with the
-    // pitch (more load on each tall punch), so touching is l >= the pitch that closes dh.
-    b.upper = by_l ? !touch : touch;
+    // dh: touching by t is dh <= the gap closed by t, an upper edge; l and the pressure: the
+    // gap grows with each (more load on each tall punch), so touching is l (or p) >= the one
+    // that closes dh.
+    b.upper = searched ? !touch : touch;
     b.edge = b.upper ? kInf : -kInf;
     const double lo = out.search_lo, hi = out.search_hi;
-    // A bound less the quantity's own tolerance: dh's shifts it; for l, touching is l >= the
-    // pitch found (a lower edge), no touch l < it (the range's end where the gap never reaches
-    // dh in it; none where it does at the start), then l's tolerance moves it inward.
+    // A bound less the quantity's own tolerance: dh's shifts it; for a searched quantity,
+    // touching is at or above the value found (a lower edge), no touch below it (the range's
+    // end where the gap never reaches dh in it; none where it does at the start), then its
+    // tolerance moves it inward.
     const auto edge_of = [&](const DesignBound& d) {
-      if (!by_l) return touch ? d.value - box.dh : d.value + box.dh;
+      if (!searched) return touch ? d.value - box.dh : d.value + box.dh;
       const double e = touch ? d.value : d.value <= lo ? -kInf : std::min(d.value, hi);
       if (!std::isfinite(e)) return e;
-      if (b.upper) return box.l_absolute ? e - box.l : e / (1.0 + box.l);
-      return box.l_absolute ? e + box.l : e / (1.0 - box.l);
+      if (b.upper) return search_tolerance_absolute ? e - search_tolerance : e / (1.0 + search_tolerance);
+      return search_tolerance_absolute ? e + search_tolerance : e / (1.0 - search_tolerance);
     };
     const auto take = [&](DesignBound d) {
       d.edge = edge_of(d);
@@ -359,9 +440,11 @@ DesignResult design(const DesignArgs& a) {
       b.bounds.push_back(d);
     };
     const std::string what = "--require '" + r.text + "' (a corner of the box)";
+    bool endless = false;  // the gap closed at last is infinite somewhere: the law creeps without end
     for (const double T : temperatures) {
-      for (const double p : sides(r.pbar, box.pressure, box.pressure_absolute)) {
-        // Each corner's point read once (its creep law made once); only its pitch varies below.
+      for (const double p : by_pressure ? std::vector<double>{lo} : sides(r.pbar, box.pressure, box.pressure_absolute)) {
+        // Each corner's point read once (its creep law made once); only its pitch or pressure
+        // varies below.
         std::vector<input::PointInputs> at_C;
         const std::vector<double> Cs = sides(C0, box.C, false);
         for (const double C : Cs) {
@@ -373,27 +456,33 @@ DesignResult design(const DesignArgs& a) {
         for (const double l : by_l ? std::vector<double>{l0} : sides(l0, box.l, box.l_absolute)) {
           for (std::size_t c = 0; c < Cs.size(); ++c) {
             input::PointInputs& in = at_C[c];
-            // The gap the first level closes by the requirement's time at pitch `pitch`.
-            const auto gap_at = [&](double pitch) {
-              in.problem.l = pitch;
+            in.problem.l = l;
+            // The gap the first level closes by the requirement's time at `x`, the searched
+            // quantity's value (the corner's pitch where none is searched).
+            const auto gap_at = [&](double x) {
+              (by_pressure ? in.problem.pbar0 : in.problem.l) = x;
               const double g = model::dh_touching_at(in.problem, *in.creep, r.time);
               if (std::isnan(g)) {
-                throw std::runtime_error("the gap closed at l = " + model::number_text(pitch, 17) + " R, " +
-                                         in.describe() + " is not a number");
+                throw std::runtime_error("the gap closed at " + std::string(by_pressure ? "pbar = " : "l = ") +
+                                         model::number_text(x, 17) + ", " + in.describe() + " is not a number");
               }
               return g;
             };
-            if (!by_l) {
-              take(DesignBound{T, p, l, Cs[c], dh0, gap_at(l)});
+            if (!searched) {
+              const double gap = gap_at(l);
+              endless = endless || std::isinf(gap);
+              take(DesignBound{T, p, l, Cs[c], dh0, gap});
               continue;
             }
-            // --find l: at each dh of the box, the pitch whose gap by the requirement's time is
-            // that dh, by bisection in log l over the range (the gap grows with l; checked).
+            // --find l (pressure): at each dh of the box, the pitch (pressure) whose gap by the
+            // requirement's time is that dh, by bisection in its log over the range (the gap
+            // grows with it; checked).
             const double g_lo = gap_at(lo), g_hi = gap_at(hi);
+            endless = endless || std::isinf(g_lo);
             if (!(g_hi >= g_lo)) {
-              out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from l = " +
+              out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from " + a.find + " = " +
                                   model::number_text(lo, 4) + " to " + model::number_text(hi, 4) +
-                                  " R here; the window assumes it grows with l");
+                                  " here; the window assumes it grows with " + a.find);
             }
             for (const double dh : sides(dh0, box.dh, true)) {
               double value;
@@ -407,9 +496,9 @@ DesignResult design(const DesignArgs& a) {
                   const double mid = 0.5 * (a_ + b_);
                   (gap_at(std::exp(mid)) >= dh ? b_ : a_) = mid;
                 }
-                value = std::exp(b_);  // the least l of the range whose gap reaches dh (to 1e-15)
+                value = std::exp(b_);  // the least of the range whose gap reaches dh (to 1e-15)
               }
-              take(DesignBound{T, p, lo, Cs[c], dh, value});
+              take(DesignBound{T, p, by_l ? lo : l, Cs[c], dh, value});
             }
           }
         }
@@ -449,7 +538,7 @@ DesignResult design(const DesignArgs& a) {
                             std::to_string(temperatures.size()) + " temperatures, the edge between them may be tighter");
       }
     }
-    if (box.pressure > 0.0) {
+    if (box.pressure > 0.0 && !by_pressure) {
       const std::vector<double> ps = sides(r.pbar, box.pressure, box.pressure_absolute);
       DesignBound expected = b.binding;  // the binding corner at the pressure monotonicity picks
       expected.pbar = touch ? ps.front() : ps.back();
@@ -462,13 +551,18 @@ DesignResult design(const DesignArgs& a) {
                             " pressure of its tolerance: t* does not fall with pressure there");
       }
     }
-    if (!touch && std::isinf(b.edge) && std::isinf(b.binding.value) == !by_l) {
+    if (!touch && endless) {
       out.notes.push_back("'" + r.text + "' cannot hold: this law creeps without end, so the second level touches "
-                          "at last whatever dh");
-    }
-    if (by_l && std::isinf(b.edge)) {
-      out.notes.push_back("'" + r.text + "' holds at no pitch from " + model::number_text(out.search_lo, 4) + " to " +
-                          model::number_text(out.search_hi, 4) + " R at every corner: widen --l or change dh");
+                          "at last whatever " + (searched ? find_name : "dh"));
+    } else if (searched && std::isinf(b.edge)) {
+      const auto value = [&](double x) {
+        if (by_pressure) return pressure_text(x, out.inputs);
+        const Unit L = length_unit(out.inputs);
+        return model::number_text(x * L.per, 4) + " " + L.unit;
+      };
+      out.notes.push_back("'" + r.text + "' holds at no " + (by_l ? "pitch" : "pressure") + " from " +
+                          value(out.search_lo) + " to " + value(out.search_hi) + " at every corner: widen " +
+                          range_option + " or change dh");
     }
     out.bounds.push_back(std::move(b));
   }
@@ -491,35 +585,15 @@ std::string geometry_text(const input::PointInputs& in, const std::string& quant
   return text;
 }
 
-/// Lengths in R's physical unit where --R is given, else in R.
-struct LengthUnit {
-  double per_R = 1.0;
-  std::string unit = "R";
-};
-LengthUnit length_unit(const input::PointInputs& in) {
-  if (const auto u = input::physical_unit("R", in.scales)) return {u->per_scaled, u->units};
-  return {};
-}
-
-std::string pressure_text(double pbar, const input::PointInputs& in) {
-  if (const auto u = input::physical_unit("E0/(1-nu^2)", in.scales)) {
-    const double pa = pbar * u->per_scaled;
-    if (pa >= 1e6) return model::number_text(pa / 1e6, 4) + " MPa";
-    if (pa >= 1e3) return model::number_text(pa / 1e3, 4) + " kPa";
-    return model::number_text(pa, 4) + " Pa";
-  }
-  return model::number_text(pbar, 4) + " E0*";
-}
-
-std::string tolerance_text(const DesignResult& d, const LengthUnit& L) {
+std::string tolerance_text(const DesignResult& d, const Unit& L) {
   std::vector<std::string> parts;
-  if (d.tolerance.dh > 0) parts.push_back("dh +- " + model::number_text(d.tolerance.dh * L.per_R, 4) + " " + L.unit);
+  if (d.tolerance.dh > 0) parts.push_back("dh +- " + model::number_text(d.tolerance.dh * L.per, 4) + " " + L.unit);
   if (d.tolerance.pressure > 0) {
     parts.push_back("pressure +- " + (d.tolerance.pressure_absolute ? pressure_text(d.tolerance.pressure, d.inputs)
                                                           : model::number_text(100 * d.tolerance.pressure, 4) + "%"));
   }
   if (d.tolerance.l > 0) {
-    parts.push_back("l +- " + (d.tolerance.l_absolute ? model::number_text(d.tolerance.l * L.per_R, 4) + " " + L.unit
+    parts.push_back("l +- " + (d.tolerance.l_absolute ? model::number_text(d.tolerance.l * L.per, 4) + " " + L.unit
                                             : model::number_text(100 * d.tolerance.l, 4) + "%"));
   }
   if (d.tolerance.C > 0) parts.push_back("C +- " + model::number_text(100 * d.tolerance.C, 4) + "%");
@@ -528,7 +602,7 @@ std::string tolerance_text(const DesignResult& d, const LengthUnit& L) {
   return t;
 }
 
-std::string where_text(const RequirementBound& r, const DesignResult& d, const LengthUnit& L, bool touch) {
+std::string where_text(const RequirementBound& r, const DesignResult& d, const Unit& L, bool touch) {
   const DesignBound& b = r.binding;
   std::string t;
   if (r.every_temperature) {
@@ -536,53 +610,88 @@ std::string where_text(const RequirementBound& r, const DesignResult& d, const L
   } else if (!std::isnan(b.temperature)) {
     t += model::number_text(b.temperature, 4) + " degC, ";
   }
-  t += pressure_text(b.pbar, d.inputs);
-  if (d.quantity == "dh" && d.tolerance.l > 0) t += ", l = " + model::number_text(b.l * L.per_R, 4) + " " + L.unit;
-  if (d.tolerance.C > 0) t += ", C = " + model::number_text(b.C, 4);
-  if (d.quantity == "l") {
-    t += ", dh = " + model::number_text(b.dh * L.per_R, 4) + " " + L.unit;
+  if (d.quantity != model::kPressure) t += pressure_text(b.pbar, d.inputs) + ", ";
+  if (d.quantity != "l" && d.tolerance.l > 0) t += "l = " + model::number_text(b.l * L.per, 4) + " " + L.unit + ", ";
+  if (d.tolerance.C > 0) t += "C = " + model::number_text(b.C, 4) + ", ";
+  if (d.quantity != "dh") {
+    t += "dh = " + model::number_text(b.dh * L.per, 4) + " " + L.unit;
   } else if (d.tolerance.dh > 0) {
-    t += std::string(", dh ") + (touch ? "+ " : "- ") + model::number_text(d.tolerance.dh * L.per_R, 4) + " " + L.unit;
+    t += std::string("dh ") + (touch ? "+ " : "- ") + model::number_text(d.tolerance.dh * L.per, 4) + " " + L.unit;
   }
+  if (t.size() >= 2 && t.compare(t.size() - 2, 2, ", ") == 0) t.resize(t.size() - 2);
   return t;
 }
 
-/// What to say where no dh meets every requirement: the nearest miss.
-std::string miss_text(const DesignResult& d, const LengthUnit& L) {
-  const std::string& q = d.quantity;
+/// What the window is of, as the table says it: dh, l or pressure.
+std::string quantity_name(const DesignResult& d) { return d.quantity == model::kPressure ? "pressure" : d.quantity; }
+
+/// The window's quantity in its physical unit (R's for dh and l, kPa or the like for the
+/// pressure).
+Unit quantity_unit(const DesignResult& d) {
+  return d.quantity == model::kPressure ? pressure_unit(d.inputs, d.search_hi) : length_unit(d.inputs);
+}
+
+/// The quantity's own absolute tolerance (in its scaled unit; 0 where none or relative).
+double absolute_tolerance(const DesignResult& d) {
+  if (d.quantity == model::kHeightDifference) return d.tolerance.dh;
+  if (d.quantity == model::kPitch) return d.tolerance.l_absolute ? d.tolerance.l : 0.0;
+  return d.tolerance.pressure_absolute ? d.tolerance.pressure : 0.0;
+}
+
+/// What to say where no value meets every requirement: the nearest miss (in the quantity's
+/// unit `L`).
+std::string miss_text(const DesignResult& d, const Unit& L) {
+  const std::string q = quantity_name(d);
   if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
     return q == "dh" ? "no dh: a 'never' requirement cannot hold for this law"
-                     : "no pitch of the range searched: a requirement holds at none of them (see the notes)";
+                     : "no " + std::string(q == "l" ? "pitch" : "pressure") +
+                           " of the range searched: a requirement holds at none of them (see the notes)";
   }
   const double gap = d.lower - d.upper;
-  std::string t = "the nearest miss is " + q + " = " + model::number_text(0.5 * (d.lower + d.upper) * L.per_R, 4) +
-                  " " + L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per_R, 4) + " " + L.unit;
-  // The window's width with an exact dh (or l), negated: what the tolerance took.
-  const double tolerance = q == "dh" ? d.tolerance.dh : d.tolerance.l_absolute ? d.tolerance.l : 0.0;
-  const double exact_gap = gap - 2 * tolerance;
-  if (tolerance > 0 && exact_gap < 0) {
-    t += "; a " + q + " tolerance of +- " + model::number_text(-0.5 * exact_gap * L.per_R, 4) + " " + L.unit +
-         " or less would meet every requirement";
-  } else if (q == "dh" || d.tolerance.l == 0) {
+  std::string t = "the nearest miss is " + q + " = " + model::number_text(0.5 * (d.lower + d.upper) * L.per, 4) +
+                  " " + L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per, 4) + " " + L.unit;
+  // The window with an exact value (the bounds before the quantity's own tolerance) and the
+  // tolerance that would leave it a point.
+  double exact_lower = d.quantity == "dh" ? 0.0 : d.search_lo, exact_upper = d.quantity == "dh" ? kInf : d.search_hi;
+  for (const RequirementBound& b : d.bounds) {
+    (b.upper ? exact_upper : exact_lower) =
+        b.upper ? std::min(exact_upper, b.binding.value) : std::max(exact_lower, b.binding.value);
+  }
+  const bool relative = q == "l" ? !d.tolerance.l_absolute : q == "pressure" && !d.tolerance.pressure_absolute;
+  const double tolerance = relative ? (q == "l" ? d.tolerance.l : d.tolerance.pressure) : absolute_tolerance(d);
+  if (!(exact_lower <= exact_upper) || tolerance == 0.0) {
     t += "; not even an exact " + q + " meets every requirement";
+  } else if (relative) {
+    const double ratio = exact_upper / exact_lower;  // edges e/(1 -+ t) meet at t = (ratio - 1)/(ratio + 1)
+    t += "; a " + q + " tolerance of +- " + model::number_text(100 * (ratio - 1) / (ratio + 1), 4) +
+         "% or less would meet every requirement";
+  } else {
+    t += "; a " + q + " tolerance of +- " + model::number_text(0.5 * (exact_upper - exact_lower) * L.per, 4) + " " +
+         L.unit + " or less would meet every requirement";
   }
   return t;
 }
 
 std::string json_of(const DesignResult& d) {
-  const LengthUnit L = length_unit(d.inputs);
+  const Unit L = length_unit(d.inputs), Q = quantity_unit(d);
+  const bool by_pressure = d.quantity == model::kPressure;
+  const auto pressure = input::physical_unit("E0/(1-nu^2)", d.inputs.scales);
+  const double E0_star_Pa = pressure ? pressure->per_scaled : kNaN;
   std::ostringstream s;
   const auto num = [](double v) { return input::json_number(v); };
-  s << "{\"quantity\": " << input::json_string(d.quantity) << ", \"unit\": \"R\", \"lower\": " << num(d.lower) << ", \"upper\": " << num(d.upper)
+  s << "{\"quantity\": " << input::json_string(d.quantity) << ", \"unit\": \"" << (by_pressure ? "E0/(1-nu^2)" : "R")
+    << "\", \"lower\": " << num(d.lower) << ", \"upper\": " << num(d.upper)
     << ", \"empty\": " << (d.empty() ? "true" : "false");
   const bool finite = !d.empty() && std::isfinite(d.upper);
   s << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) : kNaN)
     << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) : kNaN);
-  s << ",\n \"physical\": {\"unit\": " << input::json_string(L.unit) << ", \"R\": " << num(L.per_R) << ", \"lower\": " << num(d.lower * L.per_R)
-    << ", \"upper\": " << num(d.upper * L.per_R) << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) * L.per_R : kNaN)
-    << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) * L.per_R : kNaN)
-    << ", \"dh_tolerance\": " << num(d.tolerance.dh * L.per_R) << "}";
-  if (d.quantity == "l") s << ",\n \"search\": [" << num(d.search_lo) << ", " << num(d.search_hi) << "]";
+  s << ",\n \"physical\": {\"unit\": " << input::json_string(Q.unit) << ", \"scale\": " << num(Q.per)
+    << ", \"lower\": " << num(d.lower * Q.per)
+    << ", \"upper\": " << num(d.upper * Q.per) << ", \"centre\": " << num(finite ? 0.5 * (d.lower + d.upper) * Q.per : kNaN)
+    << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) * Q.per : kNaN)
+    << ", \"length_unit\": " << input::json_string(L.unit) << ", \"R\": " << num(L.per)
+    << ", \"dh_tolerance\": " << num(d.tolerance.dh * L.per) << ", \"E0_star_Pa\": " << num(E0_star_Pa) << "}";
+  if (d.quantity != "dh") s << ",\n \"search\": [" << num(d.search_lo) << ", " << num(d.search_hi) << "]";
   s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs, d.quantity)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
   s << ",\n \"tolerance\": {\"dh\": " << num(d.tolerance.dh) << ", \"pressure\": " << num(d.tolerance.pressure)
     << ", \"pressure_is\": \"" << (d.tolerance.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
@@ -597,7 +706,7 @@ std::string json_of(const DesignResult& d) {
     s << (i ? ",\n  " : "\n  ") << "{\"text\": " << input::json_string(b.requirement.text) << ", \"kind\": \""
       << (touch ? "touch_by" : "no_touch_by") << "\", \"time\": " << num(b.requirement.time)
       << ", \"pbar\": " << num(b.requirement.pbar) << ", \"side\": \"" << (b.upper ? "upper" : "lower")
-      << "\", \"edge\": " << num(b.edge) << ", \"edge_physical\": " << num(b.edge * L.per_R)
+      << "\", \"edge\": " << num(b.edge) << ", \"edge_physical\": " << num(b.edge * Q.per)
       << ", \"binds_at\": {\"temperature\": " << num(b.binding.temperature)
       << ", \"every_temperature\": " << (b.every_temperature ? "true" : "false") << ", \"pbar\": " << num(b.binding.pbar)
       << ", \"l\": " << num(b.binding.l) << ", \"C\": " << num(b.binding.C) << ", \"dh\": " << num(b.binding.dh)
@@ -611,17 +720,18 @@ std::string json_of(const DesignResult& d) {
     }
     s << "]}";
   }
-  s << "],\n \"miss\": " << (d.empty() ? input::json_string(miss_text(d, L)) : "null") << ", \"notes\": [";
+  s << "],\n \"miss\": " << (d.empty() ? input::json_string(miss_text(d, Q)) : "null") << ", \"notes\": [";
   for (std::size_t i = 0; i < d.notes.size(); ++i) s << (i ? ", " : "") << input::json_string(d.notes[i]);
   s << "]}\n";
   return s.str();
 }
 
 void write_table(std::ostream& out, const DesignResult& d) {
-  const LengthUnit L = length_unit(d.inputs);
-  const auto len = [&](double v) { return model::number_text(v * L.per_R, 4) + " " + L.unit; };
-  const std::string& q = d.quantity;
-  out << "punchsweep design: the " << (q == "dh" ? "height difference dh" : "pitch l") << " that meets every requirement\n"
+  const Unit L = length_unit(d.inputs), Q = quantity_unit(d);
+  const auto len = [&](double v) { return model::number_text(v * Q.per, 4) + " " + Q.unit; };
+  const std::string q = quantity_name(d);
+  out << "punchsweep design: the "
+      << (q == "dh" ? "height difference dh" : q == "l" ? "pitch l" : "nominal pressure") << " that meets every requirement\n"
       << "  " << geometry_text(d.inputs, d.quantity) << "\n  checked at ";
   if (d.temperatures.size() > 1) {
     out << "every temperature of " << model::number_text(d.temperatures.front(), 4) << " to "
@@ -633,7 +743,10 @@ void write_table(std::ostream& out, const DesignResult& d) {
   }
   const std::string box = tolerance_text(d, L);
   out << (box.empty() ? "" : " and every corner of the tolerance box " + box) << "\n";
-  if (q == "l") out << "  pitches searched: " << len(d.search_lo) << " to " << len(d.search_hi) << "\n";
+  if (q != "dh") {
+    out << "  " << (q == "l" ? "pitches" : "pressures") << " searched: " << len(d.search_lo) << " to " << len(d.search_hi)
+        << (q == "l" ? "" : " (dh = " + model::number_text(d.inputs.problem.dh * L.per, 4) + " " + L.unit + ")") << "\n";
+  }
   out << "\n";
   // dh: touching by t is dh <= (closed), never is dh > (open); l: touching is l >=, never l <.
   const auto sign = [&](const RequirementBound& b) {
@@ -647,18 +760,23 @@ void write_table(std::ostream& out, const DesignResult& d) {
         << where_text(b, d, L, touch) << ")\n";
   }
   out << "\n";
-  const bool tolerance = q == "dh" ? d.tolerance.dh > 0 : d.tolerance.l > 0;
+  const bool tolerance = q == "dh" ? d.tolerance.dh > 0 : q == "l" ? d.tolerance.l > 0 : d.tolerance.pressure > 0;
   if (d.empty()) {
     out << "no design meets this: the requirements leave " << q << " between " << len(d.lower) << " and "
-        << len(d.upper) << ", an empty window; " << miss_text(d, L) << "\n";
+        << len(d.upper) << ", an empty window; " << miss_text(d, Q) << "\n";
   } else if (std::isinf(d.upper)) {
     out << "window: " << q << " " << (d.lower > 0 ? "> " : ">= ") << len(d.lower) << " (no upper edge)\n";
   } else {
     const bool open_low = q == "dh" && d.lower > 0;
     out << "window: " << len(d.lower) << (open_low ? " < " : " <= ") << q
-        << (q == "l" && d.upper < d.search_hi ? " < " : " <= ")
+        << (q != "dh" && d.upper < d.search_hi ? " < " : " <= ")
         << len(d.upper) << "; centre " << len(0.5 * (d.lower + d.upper)) << ", margin +- "
         << len(0.5 * (d.upper - d.lower)) << (tolerance ? " beyond the tolerance" : "") << "\n";
+    if (q != "dh" && (d.lower == d.search_lo || d.upper == d.search_hi)) {
+      out << "  (" << (d.lower == d.search_lo ? d.upper == d.search_hi ? "both edges are" : "the lower edge is"
+                                                                      : "the upper edge is")
+          << " the range searched's, not a requirement's: widen it to see further)\n";
+    }
   }
   for (const std::string& n : d.notes) out << "note: " << n << "\n";
 }
@@ -669,7 +787,7 @@ int run_design_command(const std::vector<std::string>& args, std::ostream& out) 
   const DesignArgs a = split_keywords(keywords_of(args));
   if (a.help) {
     out << kUsage << "\n\n"
-        << "The window of the height difference dh (or, --find l, of the pitch) that meets every requirement at every temperature of\n"
+        << "The window of the height difference dh (or, --find l or pressure, of the pitch or the pressure) that meets every requirement at every temperature of\n"
            "the range and every corner of the tolerance box (exact: the dh whose t* is the requirement's\n"
            "time, at each), its centre and margin, and which requirement binds each edge.\n\n"
            "  --require TEXT      "
@@ -680,7 +798,10 @@ int run_design_command(const std::vector<std::string>& args, std::ostream& out) 
            "  --format FMT        table (default) or json\n"
            "  --find l            the window of the pitch l instead, for --dh DH, searched over --l A..B\n"
            "                      (100um..400um); the tolerance on l then moves its edges inward\n"
-           "and the point's options but the pressure, and --dh but with --find l (punchsweep point --help).\n"
+           "  --find pressure     the window of the nominal pressure instead, for --dh DH, searched over\n"
+           "                      --pressure A..B (1kPa..200kPa; or --pbar); the requirements then name no\n"
+           "                      pressure ('touch within 1min'), the pressure's tolerance moves its edges inward\n"
+           "and the point's options but the pressure, and --dh but with --find l or pressure (punchsweep point --help).\n"
            "Example: punchsweep design --material materials/epoxy.ini --R 50um --l 250um --s 2 \\\n"
            "           --temperature 20..40C --require \"touch within 1s at 30kPa\" --require \"never at 5kPa\" \\\n"
            "           --tolerance \"dh=0.5um, pressure=10%\"\n"

@@ -5,7 +5,9 @@
 /// range and every corner of a tolerance box? Each requirement bounds dh on one side at
 /// each temperature and corner, exactly: until the second level touches, the first carries
 /// the load alone, so the gap it closes by time t, model::dh_touching_at, is the dh whose t*
-/// is t (docs/design.md).
+/// is t (docs/design.md). Or, for a given dh, which pitch (--find l) or which nominal
+/// pressure (--find pressure): the gap grows with each, so each requirement's bound is the
+/// value whose gap is dh, found by bisection.
 
 #include <iosfwd>
 #include <string>
@@ -22,19 +24,19 @@ struct Requirement {
   /// above it). time 0: at once; +inf: ever.
   enum class Kind { touch_by, no_touch_by } kind = Kind::touch_by;
   double time = 0.0;  ///< in the law's time unit
-  double pbar = 0.0;  ///< nominal pressure, in E0*
+  double pbar = 0.0;  ///< nominal pressure, in E0* (NaN with --find pressure: the one searched)
 };
 
 /// Where one requirement bounds the design's quantity at one temperature and corner of the
 /// box.
 struct DesignBound {
   double temperature = 0.0;  ///< degC (NaN for a law without temperature)
-  double pbar = 0.0;         ///< the corner's pressure, in E0*
+  double pbar = 0.0;         ///< the corner's pressure, in E0* (the search's start for --find pressure)
   double l = 0.0, C = 0.0;   ///< the corner's pitch (R; the search's start for --find l) and shape factor
   double dh = 0.0;           ///< the corner's dh (R; for --find l)
   /// The bound before the quantity's own tolerance, in R: for dh, the gap closed by the
-  /// requirement's time (the dh whose t* it is); for l, the pitch at which that gap is the
-  /// corner's dh (inf or the search's end where none within it).
+  /// requirement's time (the dh whose t* it is); for l (the pressure), the pitch (pressure)
+  /// at which that gap is the corner's dh (inf or the search's end where none within it).
   double value = 0.0;
   double edge = 0.0;  ///< the edge it sets: `value` less the quantity's own tolerance, in R
 };
@@ -55,7 +57,7 @@ struct RequirementBound {
   Requirement requirement;
   /// The window's edge it sets (R): the bound less the quantity's tolerance, the tightest
   /// over every temperature and corner; for dh an upper edge for touch_by and a lower one
-  /// for no_touch_by, for l (the gap grows with the pitch) the other way round.
+  /// for no_touch_by, for l and the pressure (the gap grows with each) the other way round.
   double edge = 0.0;
   bool upper = true;  ///< which edge it sets
   DesignBound binding;
@@ -67,13 +69,13 @@ struct RequirementBound {
 
 /// The answer: the window, each requirement's bound, and what the user should know.
 struct DesignResult {
-  std::string quantity = "dh";  ///< what the window is of: dh, or l (--find l)
-  double search_lo = 0.0, search_hi = 0.0;  ///< --find l: the pitches searched (R)
+  std::string quantity = "dh";  ///< what the window is of: dh, l (--find l) or pbar (--find pressure)
+  double search_lo = 0.0, search_hi = 0.0;  ///< --find l or pressure: the range searched (R or E0*)
   input::PointInputs inputs;  ///< the geometry and material (at the first requirement's pressure)
   std::vector<double> temperatures;
   DesignTolerance tolerance;
   std::vector<RequirementBound> bounds;
-  double lower = 0.0, upper = 0.0;  ///< R; lower > upper: no dh meets every requirement
+  double lower = 0.0, upper = 0.0;  ///< R or E0*; lower > upper: no value meets every requirement
   std::vector<std::string> notes;
   bool empty() const { return !(lower <= upper); }
 };

@@ -40,7 +40,7 @@ def recipe(tmp_path_factory):
     for name in ("examples", "postprocess"):
         (tmp / name).symlink_to(REPO / name)
     printed = []
-    for command in block("sh", "punchsweep design").replace("\\\n", " ").splitlines():
+    for command in block("sh", "punchsweep fit").replace("\\\n", " ").splitlines():
         if not command.strip():
             continue
         argv = shlex.split(command)
@@ -125,3 +125,13 @@ def test_the_pitch_window_the_page_shows(recipe):
     assert r.returncode == 0, r.stderr
     shown = window_numbers(block("text", "l >= "))
     assert np.allclose(window_numbers(r.stdout), shown, rtol=2e-3), (r.stdout, shown)
+
+
+def test_the_pressure_window_the_page_shows():
+    """docs/design.md's --find pressure example, run as written, prints the lines the page shows."""
+    argv = shlex.split(block("sh", "--find pressure").replace("\\\n", " "))
+    assert argv[:2] == ["punchsweep", "design"]
+    r = subprocess.run([ENGINE, *argv[1:]], cwd=REPO, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    for line in block("text", "pressure >= ").strip().splitlines():
+        assert line.strip() in r.stdout, (line, r.stdout)

@@ -348,3 +348,32 @@ def test_a_design_window_is_drawn_on_the_page(tmp_path):
     assert "lower edge 7.513 um" in lower_name and "upper edge 8.483 um" in upper_name
     assert lower_y == pytest.approx([d["physical"]["lower"]] * 2, rel=1e-12)
     assert upper_y == pytest.approx([d["physical"]["upper"]] * 2, rel=1e-12)
+
+
+@pytest.mark.browser
+def test_a_pressure_window_is_drawn_across_the_pressure_axis(tmp_path):
+    """`punchsweep design --find pressure`'s window on the page: its edges are vertical lines
+    across the heat map at the design's pressures in the map's unit (kPa)."""
+    tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    path = tmp_path / "tpe.h5"
+    subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
+                    "linspace(4um, 12um, 5)", "--grid.pressure", "logspace(3kPa, 50kPa, 6)", "--grid.temperature",
+                    "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path], check=True)
+    done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
+                           "--temperature", "20..40C", "--find", "pressure", "--dh", "8um", "--pressure",
+                           "1kPa..200kPa", "--require", "touch within 1min", "--require", "no touch within 1s",
+                           "--tolerance", "dh=0.1um, pressure=2%", "--format", "json"],
+                          capture_output=True, text=True, check=True)
+    window = tmp_path / "window.json"
+    window.write_text(done.stdout)
+    d = json.loads(done.stdout)
+    page = tmp_path / "p.html"
+    r = explore(path, "-o", page, "--x", "pbar", "--y", "dh", "--design", window)
+    assert r.returncode == 0, r.stderr
+    out, _ = in_chromium(page, [[0, 0]], tmp_path)
+    drawn = {line["name"]: line["x"] for line in out["lines"] if line["name"].startswith("design window")}
+    assert len(drawn) == 2, out["lines"]
+    (lower_name, lower_x), (upper_name, upper_x) = sorted(drawn.items())
+    assert "pressure lower edge 12.38 kPa" in lower_name and "pressure upper edge 12.95 kPa" in upper_name
+    assert lower_x == pytest.approx([d["physical"]["lower"]] * 2, rel=1e-12)
+    assert upper_x == pytest.approx([d["physical"]["upper"]] * 2, rel=1e-12)

@@ -199,3 +199,87 @@ def test_the_pitch_window_for_a_given_dh_holds_and_is_tight():
     assert r.returncode == 2 and "the range of pitches to search" in r.stderr, r.stderr
     r = cli("design", "--material", TRUTH, *GEOMETRY, "--find", "l", "--require", "never at 5kPa")
     assert r.returncode == 2 and "--find l needs --dh" in r.stderr, r.stderr
+
+
+def test_the_pressure_window_for_a_given_dh_holds_and_is_tight():
+    """--find pressure: the window of the nominal pressure for dh = 8 um that makes the second
+    level touch within a minute but not within a second at 20-40 C, whatever dh +- 0.1 um and
+    the pressure +- 2%; its edges checked with `point` at the binding corner (the pressure's
+    own tolerance taken off) and just past them, and every corner inside."""
+    box = "dh=0.1um, pressure=2%"
+    args = ["--find", "pressure", "--dh", "8um", "--pressure", "1kPa..200kPa", "--temperature", "20..40C",
+            "--require", "touch within 1min", "--require", "no touch within 1s"]
+    d = design(TRUTH, *args, "--tolerance", box)
+    assert d["quantity"] == "pbar" and not d["empty"] and d["physical"]["unit"] == "kPa"
+    lower, upper = d["physical"]["lower"], d["physical"]["upper"]
+    assert 1 < lower < upper < 200
+    touch, no_touch = d["requirements"]
+    assert touch["side"] == "lower" and no_touch["side"] == "upper"
+    # t* falls with temperature: a minute is hardest to reach cold, a second easiest to miss warm.
+    assert touch["binds_at"]["temperature"] == 20 and no_touch["binds_at"]["temperature"] == 40
+    assert touch["binds_at"]["dh"] * 80 == pytest.approx(8.1) and no_touch["binds_at"]["dh"] * 80 == pytest.approx(7.9)
+
+    def at(dh_um, p_kPa, T):
+        r = cli("point", "--material", TRUTH, *GEOMETRY, "--dh", f"{dh_um!r}um", "--pressure", f"{p_kPa!r}kPa",
+                "--temperature", T, "--format", "json")
+        assert r.returncode == 0, r.stderr
+        return json.loads(r.stdout)
+    # The touch edge: at 2% under it, dh + 0.1 um and 20 C, t* is a minute; a little lower, later.
+    assert at(8.1, lower * 0.98, 20)["t_star"] == pytest.approx(60.0, rel=1e-6)
+    assert at(8.1, lower * 0.98 * 0.999, 20)["t_star"] > 60.0
+    # The no-touch edge: at 2% over it, dh - 0.1 um and 40 C, t* is a second; a little higher, sooner.
+    assert at(7.9, upper * 1.02, 40)["t_star"] == pytest.approx(1.0, rel=1e-6)
+    assert at(7.9, upper * 1.02 * 1.001, 40)["t_star"] < 1.0
+    # Inside, every corner meets both.
+    for T in (20, 30, 40):
+        for p in (lower, upper * (1 - 1e-6)):
+            for dh in (7.9, 8.1):
+                for side in (0.98, 1.02):
+                    t_star = at(dh, p * side, T)["t_star"]
+                    assert 1.0 < t_star <= 60.0 * (1 + 1e-6), (T, p, dh, side, t_star)
+    # Python's, the same window.
+    py = punchsweep.design(["touch within 1min", "no touch within 1s"], material=TRUTH, R="80um", l="250um", s=2,
+                           temperature="20..40C", tolerance=box, find="pressure", dh="8um", pressure="1kPa..200kPa")
+    assert (py["lower"], py["upper"], py["quantity"]) == (d["lower"], d["upper"], "pbar")
+    # The window from the other side: the dh window at the window's centre pressure contains 8 um.
+    centre = d["physical"]["centre"]
+    w = design(TRUTH, "--temperature", "20..40C", "--require", f"touch within 1min at {centre!r}kPa",
+               "--require", f"no touch within 1s at {centre!r}kPa", "--tolerance", box)
+    assert w["physical"]["lower"] < 8.0 < w["physical"]["upper"]
+
+
+def test_the_pressure_window_says_what_tolerance_would_close_a_miss():
+    """Where the pressure's own tolerance empties the window, the miss names the relative
+    tolerance that would leave a point, and the engine agrees on either side of it."""
+    args = ["--find", "pressure", "--dh", "8um", "--pressure", "1kPa..200kPa", "--temperature", "20..40C",
+            "--require", "touch within 1min", "--require", "no touch within 1s"]
+    d = design(TRUTH, *args, "--tolerance", "pressure=20%")
+    assert d["empty"], d
+    import re
+    m = re.search(r"a pressure tolerance of \+- ([0-9.]+)% or less would meet every requirement", d["miss"])
+    assert m, d["miss"]
+    closing = float(m.group(1))
+    assert 0 < closing < 20
+    assert not design(TRUTH, *args, "--tolerance", f"pressure={closing * 0.999!r}%")["empty"]
+    assert design(TRUTH, *args, "--tolerance", f"pressure={closing * 1.001!r}%")["empty"]
+    # Touch within a second and never cannot both hold at one pressure: not even an exact one.
+    e = design(TRUTH, "--find", "pressure", "--dh", "8um", "--pressure", "1kPa..200kPa", "--temperature", "20..40C",
+               "--require", "touch within 1s", "--require", "never")
+    assert e["empty"] and "not even an exact pressure" in e["miss"], e["miss"]
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--find", "pressure", "--dh", "8um", "--require", "touch within 1s"], "--find pressure needs --pressure A..B"),
+    (["--find", "pressure", "--dh", "8um", "--pressure", "30kPa", "--require", "touch within 1s"],
+     "the range of pressures to search"),
+    (["--find", "pressure", "--dh", "8um", "--pressure", "1kPa..100kPa", "--require", "touch within 1s at 30kPa"],
+     "state the requirement without 'at 30kPa'"),
+    (["--find", "pressure", "--pressure", "1kPa..100kPa", "--require", "touch within 1s"], "--find pressure needs --dh"),
+    (["--find", "pressure", "--dh", "8um", "--pressure", "100kPa..1kPa", "--require", "touch within 1s"],
+     "the range's end is not above its start"),
+    (["--require", "touch within 1s"], "no pressure: say at which"),
+    (["--pressure", "1kPa..100kPa", "--require", "touch within 1s at 30kPa"], "or --find pressure"),
+])
+def test_the_pressure_window_refuses_what_it_cannot_answer(args, message):
+    r = cli("design", "--material", TRUTH, *GEOMETRY, *args)
+    assert r.returncode == 2 and message in r.stderr and r.stdout == "", (r.stderr, r.stdout)
