@@ -236,14 +236,36 @@ std::vector<double> point_defaults(std::span<const model::Parameter> parameters)
   return values;
 }
 
-/// The regime, t*, h(0), h(inf) and validity of n points (the map's codes and units), each
+/// What classify returns: the registry's per-point quantities of the model (map::kQuantities:
+/// Source::model, Extent::point), so that a new one reaches Python with its entry; those
+/// `named` only where some are (each output array costs a grid about 8% of its time).
+std::vector<const map::QuantitySpec*> classify_outputs(const std::vector<std::string>& named) {
+  std::vector<const map::QuantitySpec*> out;
+  std::string valid;
+  for (const map::QuantitySpec& q : map::kQuantities) {
+    if (q.source != map::Source::model || q.extent != map::Extent::point) continue;
+    valid += (valid.empty() ? "" : ", ") + std::string(q.name);
+    if (named.empty() || std::find(named.begin(), named.end(), q.name) != named.end()) out.push_back(&q);
+  }
+  for (const std::string& name : named) {
+    if (std::none_of(out.begin(), out.end(), [&](const map::QuantitySpec* q) { return q->name == name; })) {
+      throw input::UsageError("classify: quantities: '" + name + "' is not one of: " + valid);
+    }
+  }
+  return out;
+}
+
+/// classify_outputs(quantities) of n points (the map's codes and units: the regime, t*, h(0), h(inf),
+/// validity, long-term radii and area fraction), each
 /// a pure function of its point: sweep::BatchEvaluator, as a sweep's tile evaluates its
 /// points, over the points sorted by (s, l, dh) so that the parts those share are computed
 /// once. `law` holds the creep law's parameters (the standard linear solid's T, or a
 /// material file's temperature where it has a shift), `ramp_time` the load's rise time
 /// (empty: a step).
 py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<Column>& law, Column ramp_time,
-                  double C, const std::string& localization, const std::string& material_file) {
+                  double C, const std::string& localization, const std::string& material_file,
+                  const std::vector<std::string>& quantities) {
+  const std::vector<const map::QuantitySpec*> wanted = classify_outputs(quantities);
   const py::ssize_t n = l.size();
   const bool ramp = ramp_time.size() > 0;
   bool equal = dh.size() == n && pbar.size() == n && s.size() == n && (!ramp || ramp_time.size() == n);
@@ -290,9 +312,30 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
     }
   }
 
-  py::array_t<std::int8_t> regime(n);
-  py::array_t<bool> valid(n);
-  py::array_t<double> t_star(n), h_0(n), h_inf(n);
+  // classify's outputs: every per-point quantity of the model in the registry, in its order,
+  // each under its registry name: a real as float64, a flag as its codes (the map's); the
+  // validity flag as Python reads it everywhere (point()'s `valid`), a bool, with its codes
+  // beside it as NAME_code. Each array is written once, at the point's own position.
+  struct Output {
+    const map::QuantitySpec* quantity;
+    std::optional<py::array_t<double>> values;
+    std::optional<py::array_t<std::int8_t>> codes;
+    std::optional<py::array_t<bool>> mask;
+    double* value_data = nullptr;  // their memory, taken while the interpreter lock is held
+    std::int8_t* code_data = nullptr;
+    bool* mask_data = nullptr;
+  };
+  std::vector<Output> outputs;
+  for (const map::QuantitySpec* q : wanted) {
+    Output o{q, {}, {}, {}};
+    if (q->kind == map::Kind::flag) {
+      o.code_data = o.codes.emplace(n).mutable_data();
+      if (q->flags == map::Flags::validity) o.mask_data = o.mask.emplace(n).mutable_data();
+    } else {
+      o.value_data = o.values.emplace(n).mutable_data();
+    }
+    outputs.push_back(std::move(o));
+  }
   {
     py::gil_scoped_release release;
     // The points sorted by (s, l, dh), their columns copied in that order: each (s, l, dh)
@@ -337,26 +380,29 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
     for (std::size_t j = 0; j < law_values.size(); ++j) points.law.push_back(column(4 + j));
     if (ramp) points.ramp_time = column(width - 1);
 
-    // The answers in sorted order, then put back in the points' order.
-    // (The evaluator hands on every point once.)
+    // Each point's answers read off its summary as the registry says, in sorted order, then
+    // put back in the points' order: writing each straight to its point's position took
+    // scattered points 20% longer (a cache miss per array and point). (The evaluator hands
+    // on every point once.)
     struct Answers final : sweep::BatchSink {
-      std::unique_ptr<std::int8_t[]> regime;
-      std::unique_ptr<std::uint8_t[]> valid;
-      std::unique_ptr<double[]> t_star, h_0, h_inf;
-      explicit Answers(std::size_t count)
-          : regime(std::make_unique_for_overwrite<std::int8_t[]>(count)),
-            valid(std::make_unique_for_overwrite<std::uint8_t[]>(count)),
-            t_star(std::make_unique_for_overwrite<double[]>(count)),
-            h_0(std::make_unique_for_overwrite<double[]>(count)),
-            h_inf(std::make_unique_for_overwrite<double[]>(count)) {}
+      std::vector<std::int8_t (*)(const model::PointSummary&)> code_of;
+      std::vector<double (*)(const model::PointSummary&)> value_of;
+      std::vector<std::unique_ptr<std::int8_t[]>> codes;
+      std::vector<std::unique_ptr<double[]>> values;
       void take(const sweep::BatchPoint& p) override {
-        regime[p.k] = map::quantity_access::regime(p.summary);
-        valid[p.k] = p.summary.valid() ? 1 : 0;
-        t_star[p.k] = map::quantity_access::t_star(p.summary);
-        h_0[p.k] = p.summary.h_0;
-        h_inf[p.k] = p.summary.h_inf;
+        for (std::size_t j = 0; j < codes.size(); ++j) codes[j][p.k] = code_of[j](p.summary);
+        for (std::size_t j = 0; j < values.size(); ++j) values[j][p.k] = value_of[j](p.summary);
       }
-    } answers(N);
+    } answers;
+    for (const Output& o : outputs) {
+      if (o.values) {
+        answers.value_of.push_back(o.quantity->value);
+        answers.values.push_back(std::make_unique_for_overwrite<double[]>(N));
+      } else {
+        answers.code_of.push_back(o.quantity->code);
+        answers.codes.push_back(std::make_unique_for_overwrite<std::int8_t[]>(N));
+      }
+    }
     // Ctrl-C as the batch evaluator asks (every 64 points, and before building a run's
     // parts); the KeyboardInterrupt it sets is raised below.
     CtrlC ctrl_c;
@@ -368,26 +414,32 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
       py::gil_scoped_acquire acquire;  // error_already_set takes the error under the GIL
       throw py::error_already_set();
     }
-    std::int8_t* R = regime.mutable_data();
-    bool* V = valid.mutable_data();
-    double* TS = t_star.mutable_data();
-    double* H0 = h_0.mutable_data();
-    double* HI = h_inf.mutable_data();
-    for (std::size_t k = 0; k < N; ++k) {
-      const std::size_t i = order[k];
-      R[i] = answers.regime[k];
-      V[i] = answers.valid[k] != 0;
-      TS[i] = answers.t_star[k];
-      H0[i] = answers.h_0[k];
-      HI[i] = answers.h_inf[k];
+    std::size_t c = 0, v = 0;
+    for (const Output& o : outputs) {
+      if (o.values) {
+        const double* from = answers.values[v++].get();
+        for (std::size_t k = 0; k < N; ++k) o.value_data[order[k]] = from[k];
+        continue;
+      }
+      const std::int8_t* from = answers.codes[c++].get();
+      for (std::size_t k = 0; k < N; ++k) o.code_data[order[k]] = from[k];
+      if (o.mask_data != nullptr) {
+        for (std::size_t k = 0; k < N; ++k) o.mask_data[order[k]] = from[k] == static_cast<std::int8_t>(model::Validity::valid);
+      }
     }
   }
   py::dict out;
-  out["regime"] = regime;
-  out["t_star"] = t_star;
-  out["h_0"] = h_0;
-  out["h_inf"] = h_inf;
-  out["valid"] = valid;
+  for (const Output& o : outputs) {
+    const std::string name(o.quantity->name);
+    if (o.values) {
+      out[name.c_str()] = *o.values;
+    } else if (o.mask) {
+      out[name.c_str()] = *o.mask;
+      out[(name + "_code").c_str()] = *o.codes;
+    } else {
+      out[name.c_str()] = *o.codes;
+    }
+  }
   out["time_unit"] = material ? material->time_unit() : std::string("T_eps");
   return out;
 }
@@ -499,9 +551,10 @@ PYBIND11_MODULE(_core, m) {
   m.def("design", &app::design_json, py::arg("keywords"),
         "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
-        py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"),
-        "regime, t_star, h_0, h_inf, valid of equal-sized 1-D arrays of points, the creep law's parameters "
-        "as a list of such arrays, ramp_time empty for a step (the GIL released)");
+        py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"), py::arg("quantities"),
+        "the map's per-point quantities (those named in quantities; all where it is empty) of equal-sized 1-D "
+        "arrays of points, the creep law's parameters as a list of such arrays, ramp_time empty for a step (the "
+        "GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
   m.def("has_unit", &input::has_unit, py::arg("text"),
         "whether TEXT carries a unit (2kPa yes, 0.5 and 1e-3 no): the engine's rule for a physical value");

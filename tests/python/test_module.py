@@ -126,9 +126,11 @@ def test_classify_equals_point_on_random_points(localization):
     for i in range(count):
         r = punchsweep.point(l=p["l"][i], dh=p["dh"][i], T=p["T"][i], pbar=p["pbar"][i], s=int(p["s"][i]),
                              times=[0.0], localization=localization)
-        row = (names[i], c["t_star"][i], c["h_0"][i], c["h_inf"][i], bool(c["valid"][i]))
-        want = (r.regime, np.nan if r.t_star is None else r.t_star, r.h_0, r.h_inf, r.valid)
-        if not (row[0] == want[0] and all(same_bits(a, b) for a, b in zip(row[1:4], want[1:4])) and row[4] == want[4]):
+        row = (names[i], c["t_star"][i], c["h_0"][i], c["h_inf"][i], c["a1_inf"][i], c["a2_inf"][i],
+               c["area_fraction_inf"][i], bool(c["valid"][i]), c["valid_code"][i] == 0)
+        want = (r.regime, np.nan if r.t_star is None else r.t_star, r.h_0, r.h_inf, r.a1_inf, r.a2_inf,
+                r.area_fraction_inf, r.valid, r.valid)
+        if not (row[0] == want[0] and all(same_bits(a, b) for a, b in zip(row[1:7], want[1:7])) and row[7:] == want[7:]):
             mismatches.append((i, row, want))
     assert not mismatches, mismatches[:5]
     # The sample covers every regime and, for the localization models, both validity flags;
@@ -168,6 +170,42 @@ def test_classify_takes_a_material_and_its_temperature(localization):
         punchsweep.classify(0.75, 0.05, 2.5, 0.06, 2, material=pla, temperature=75)
     with pytest.raises(ValueError, match="temperature"):
         punchsweep.classify(0.75, 0.05, pbar=0.06, s=2, material=pla, temperature=200)
+
+
+def test_classify_returns_every_per_point_variable_of_a_regime_map(tmp_path):
+    """classify's arrays are the model's per-point quantities as a sweep's regime map stores
+    them (one declaration, map::kQuantities): the same names, and at the map's own points the
+    same values (a flag's codes; the validity flag as a bool with its codes as valid_code)."""
+    path = tmp_path / "map.h5"
+    done = cli("sweep", "--grid.l", "0.5,0.75,1.0", "--grid.dh", "0.01,0.05,0.1", "--grid.T", "2.5", "--grid.pbar",
+               "0.02,0.06", "--grid.s", "1,2", "--quantities", "regime", "--model.localization", "refined", "--quiet",
+               "--output", str(path))
+    assert done.returncode == 0, done.stderr
+    with h5py.File(path) as f:
+        shape = f["regime"].shape
+        per_point = {name: f[name][...] for name in f if isinstance(f[name], h5py.Dataset)
+                     and f[name].shape == shape and not name.startswith(("bem_", "answer_"))}
+        grid = {name: f[name][...] for name in ("l", "dh", "T", "pbar", "s")}
+    assert {"regime", "t_star", "valid", "a2_inf"} <= set(per_point), sorted(per_point)
+    L, DH, T, P, S = np.meshgrid(*(grid[k] for k in ("l", "dh", "T", "pbar", "s")), indexing="ij")
+    c = punchsweep.classify(L, DH, T, P, S, localization="refined")
+    assert set(c) == set(per_point) | {"valid_code"}, (sorted(c), sorted(per_point))
+    for name, stored in per_point.items():
+        got = c["valid_code"] if name == "valid" else c[name]
+        assert got.dtype == stored.dtype and same_bits(got, stored), name
+    assert np.array_equal(c["valid"], per_point["valid"] == 0) and not c["valid"].all()
+
+
+def test_classify_returns_the_quantities_named_and_refuses_others():
+    p = random_points(500, seed=7)
+    args = (p["l"], p["dh"], p["T"], p["pbar"], p["s"])
+    every = punchsweep.classify(*args)
+    some = punchsweep.classify(*args, quantities=["t_star", "valid"])
+    assert set(some) == {"t_star", "valid", "valid_code"}
+    assert all(same_bits(some[k], every[k]) for k in some)
+    assert set(punchsweep.classify(*args, quantities="a2_inf")) == {"a2_inf"}
+    with pytest.raises(ValueError, match="quantities: 't_str' is not one of: regime, t_star, h_0"):
+        punchsweep.classify(*args, quantities=["t_str"])
 
 
 def test_classify_broadcasts_like_numpy():
