@@ -102,38 +102,10 @@ def add_at_option(parser, what: str, more: str = "") -> None:
 
 
 def open_map(path: str | Path):
-    """The map as an xarray Dataset (engine h5netcdf); MapError unless it is a regime map:
-    flag variables regime and valid over the same axes, each axis a coordinate variable, and
-    flag_values/flag_meanings on both."""
-    import xarray as xr
-
-    path = Path(path)
-    if not path.exists():
-        raise MapError(f"map file '{path}' does not exist")
-    if not path.is_file():
-        raise MapError(f"'{path}' is not a file")
-    import h5py
-
-    if not h5py.is_hdf5(path):
-        raise MapError(f"'{path}' is not an HDF5 file, so not a punchsweep regime map")
-    with h5py.File(path, "r") as f:
-        missing = [n for n in ("regime", "valid") if n not in f]
-    if missing:
-        raise MapError(f"'{path}' is not a punchsweep regime map (no {', '.join(missing)}; a map "
-                       f"holds the flag variables regime and valid over its axes)")
-    try:
-        ds = xr.open_dataset(path, engine="h5netcdf")
-    except Exception as e:  # h5netcdf raises several types for a file that is not netCDF-4
-        why = str(e).strip().splitlines()[0] if str(e).strip() else "unreadable"
-        raise MapError(f"'{path}' is not a readable punchsweep regime map "
-                       f"({type(e).__name__}: {why})") from None
-    try:
-        _check_layout(ds)
-    except MapError as e:
-        ds.close()
-        raise MapError(f"'{path}' is not a punchsweep regime map ({e})") from None
-    # The module's conversion (map_attributes.in_units), with the codes kept and pressures in kPa.
-    return _MAP_ATTRIBUTES.in_units(ds, "physical", "kPa", decode_flags=False, error=MapError)
+    """The map as an xarray Dataset, pressures in kPa and flags as their codes, by the
+    package's one reader (src/python/punchsweep/map_attributes.py: its checks, its
+    conversion); MapError (exit 2) naming what is wrong with a file that is no regime map."""
+    return _MAP_ATTRIBUTES.open_map(path, "physical", "kPa", decode_flags=False, error=MapError)
 
 
 # Physical units an --at value may carry, in SI (the engine's units: docs/cli.md, "Units").
@@ -167,26 +139,6 @@ def scale_attributes(attrs, error=MapError):
 
 
 _MAP_ATTRIBUTES = _load_map_attributes()
-
-
-def _check_layout(ds) -> None:
-    names = axes(ds)
-    if not names:
-        raise MapError("regime has no dimensions")
-    for name in names:
-        if name not in ds.coords or ds[name].dims != (name,):
-            raise MapError(f"regime's dimension '{name}' has no coordinate variable (dimension "
-                           f"scale) with its grid values")
-        values = ds[name].values
-        if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
-            raise MapError(f"the axis {name} holds values that are not finite numbers: "
-                           f"{[float(v) for v in values if not np.isfinite(v)][:3]}")
-    if set(ds["valid"].dims) != set(names):
-        raise MapError(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime "
-                       f"{', '.join(names)}")
-    flags(ds, "regime")
-    flags(ds, "valid")
-    scale_attributes(ds.attrs, MapError)
 
 
 def has_series(ds) -> bool:
@@ -228,18 +180,7 @@ class Flags:
 def flags(ds, variable: str = "regime") -> Flags:
     """The codes and meanings of a flag variable (regime, valid, bem_regime) as the map
     records them; MapError if its flag_values/flag_meanings are missing or do not pair up."""
-    attrs = ds[variable].attrs
-    values, meanings = attrs.get("flag_values"), attrs.get("flag_meanings")
-    if values is None or meanings is None:
-        raise MapError(f"'{variable}' has no flag_values/flag_meanings attributes, so its codes "
-                       f"cannot be read")
-    if isinstance(meanings, bytes):
-        meanings = meanings.decode()
-    codes = tuple(int(v) for v in np.atleast_1d(values))
-    words = tuple(str(meanings).split())
-    if len(codes) != len(words) or len(set(codes)) != len(codes) or len(set(words)) != len(words):
-        raise MapError(f"'{variable}' has flag_values {' '.join(map(str, codes))} and flag_meanings "
-                       f"'{meanings}', which do not pair up one to one")
+    codes, words = _MAP_ATTRIBUTES.flag_table(ds[variable].attrs, variable, MapError)
     return Flags(variable, codes, words)
 
 

@@ -335,8 +335,8 @@ def test_open_map_decodes_lazily_and_slices_equal_the_whole(tmp_path):
 
 def test_open_map_says_what_is_not_a_map(tmp_path):
     for path, why in [(tmp_path / "none.h5", "no such file"),
-                      (tmp_path / "text.h5", "is not a punchsweep map"),
-                      (tmp_path / "plain.h5", "is not a punchsweep map")]:
+                      (tmp_path / "text.h5", "is not an HDF5 file, so not a punchsweep regime map"),
+                      (tmp_path / "plain.h5", "is not a punchsweep regime map \\(no regime, valid")]:
         if path.name == "text.h5":
             path.write_text("not HDF5 at all\n")
         if path.name == "plain.h5":
@@ -350,7 +350,7 @@ def test_open_map_says_what_is_not_a_map(tmp_path):
                "--grid.s", "2", "--quiet", "--output", str(damaged))
     assert done.returncode == 0, done.stderr
     damaged.write_bytes(damaged.read_bytes()[:2000])
-    with pytest.raises(ValueError, match="is not a punchsweep map"):
+    with pytest.raises(ValueError, match="is not a readable punchsweep regime map"):
         punchsweep.open_map(damaged)
 
 

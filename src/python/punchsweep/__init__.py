@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from .map_attributes import in_units
+from .map_attributes import open_map as read_map
 
 try:
     from . import _core
@@ -497,29 +497,7 @@ def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
     them. Nothing is read until it is used (the
     production map's flags would take 13 GB as text). NotAMapError (a ValueError) for a
     file that is missing, damaged or no punchsweep map."""
-    import xarray as xr
-
-    text = str(path)
-    if os.path.isdir(text):
-        raise NotAMapError(f"{text} is a folder, not a map file (a run folder holds map.h5)")
-    if not os.path.isfile(text):
-        raise NotAMapError(f"{text}: no such file")
-    try:
-        ds = xr.open_dataset(text, engine="h5netcdf")
-    except Exception as e:  # h5py's, h5netcdf's and xarray's errors for a file they cannot read
-        raise NotAMapError(f"{text} is not a punchsweep map (it cannot be read as HDF5/netCDF: {e})") from None
-    if "identity" not in ds.attrs or "regime" not in ds.variables:
-        ds.close()
-        raise NotAMapError(f"{text} is not a punchsweep map (no identity attribute or regime variable)")
     if units not in ("physical", "scaled"):
         raise ValueError(f"open_map: units={units!r}; valid: 'physical' or 'scaled'")
-    try:
-        for dim in ds["regime"].dims:
-            values = ds[dim].values if dim in ds.variables else np.zeros(1)
-            if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
-                raise NotAMapError(f"the axis {dim} holds values that are not finite numbers")
-        # The one conversion the scripts' reader makes too (map_attributes.in_units).
-        return in_units(ds, units, "Pa", decode_flags=True, error=NotAMapError)
-    except NotAMapError as e:
-        ds.close()
-        raise NotAMapError(f"{text} is not a punchsweep map as the engine writes it: {e}") from None
+    # The one reader the scripts use too (map_attributes.open_map: its checks, its conversion).
+    return read_map(path, units, "Pa", decode_flags=True, error=NotAMapError)

@@ -1,9 +1,11 @@
-"""A regime map's physical scales (its attributes E0_star_Pa, R, R_m, time_unit) and its
-variables' units, read, checked and converted one way for the Python module's open_map and
-the postprocess scripts' reader (which load this file by its path: it needs no build)."""
+"""The one reader of a regime map: the file checked as the engine writes it (open_map), its
+physical scales (its attributes E0_star_Pa, R, R_m, time_unit) and its variables' units,
+read, checked and converted one way for the Python module's open_map and the postprocess
+scripts' (which load this file by its path: it needs no build)."""
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 
@@ -135,3 +137,82 @@ def in_units(ds, units: str = "physical", pressure_unit: str = "Pa", decode_flag
             ds[name] = ds[name] * factor
             ds[name].attrs = attrs
     return ds
+
+
+def flag_table(attrs, variable: str, error=ValueError) -> tuple[tuple[int, ...], tuple[str, ...]]:
+    """A flag variable's codes and meanings (its flag_values/flag_meanings), checked: both
+    present and pairing up one to one."""
+    values, meanings = attrs.get("flag_values"), attrs.get("flag_meanings")
+    if values is None or meanings is None:
+        raise error(f"'{variable}' has no flag_values/flag_meanings attributes, so its codes "
+                    f"cannot be read")
+    if isinstance(meanings, bytes):
+        meanings = meanings.decode()
+    codes = tuple(int(v) for v in np.atleast_1d(values))
+    words = tuple(str(meanings).split())
+    if len(codes) != len(words) or len(set(codes)) != len(codes) or len(set(words)) != len(words):
+        raise error(f"'{variable}' has flag_values {' '.join(map(str, codes))} and flag_meanings "
+                    f"'{meanings}', which do not pair up one to one")
+    return codes, words
+
+
+def check_layout(ds, error=ValueError) -> None:
+    """A regime map's layout as the engine writes it: regime over its axes, each axis a
+    coordinate variable of finite values (or labels), valid over the same axes, both flag
+    variables with their codes' meanings, and its physical scales what the engine writes."""
+    names = tuple(ds["regime"].dims)
+    if not names:
+        raise error("regime has no dimensions")
+    for name in names:
+        if name not in ds.variables or ds[name].dims != (name,):
+            raise error(f"regime's dimension '{name}' has no coordinate variable (dimension "
+                        f"scale) with its grid values")
+        values = ds[name].values
+        if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
+            raise error(f"the axis {name} holds values that are not finite numbers: "
+                        f"{[float(v) for v in values if not np.isfinite(v)][:3]}")
+    if set(ds["valid"].dims) != set(names):
+        raise error(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime {', '.join(names)}")
+    flag_table(ds["regime"].attrs, "regime", error)
+    flag_table(ds["valid"].attrs, "valid", error)
+    scale_attributes(ds.attrs, error)
+
+
+def open_map(path, units: str = "physical", pressure_unit: str = "Pa", decode_flags: bool = True,
+             error=ValueError):
+    """A regime map file as an xarray Dataset (h5netcdf, read lazily), checked (check_layout)
+    and converted (in_units); `error` (the caller's exception type) says what is wrong with a
+    file that is missing, a folder, damaged or no regime map, naming it. The module's
+    open_map and the scripts' both read a map here."""
+    import h5py
+    import xarray as xr
+
+    text = str(path)
+    if os.path.isdir(text):
+        raise error(f"'{text}' is a folder, not a map file (a run folder holds map.h5)")
+    if not os.path.isfile(text):
+        raise error(f"'{text}': no such file (the map file does not exist)")
+    if not h5py.is_hdf5(text):
+        raise error(f"'{text}' is not an HDF5 file, so not a punchsweep regime map")
+    def unreadable(e: Exception):
+        why = str(e).strip().splitlines()[0] if str(e).strip() else "unreadable"
+        return error(f"'{text}' is not a readable punchsweep regime map ({type(e).__name__}: {why})")
+
+    try:
+        with h5py.File(text, "r") as f:
+            missing = [n for n in ("regime", "valid") if n not in f]
+    except Exception as e:  # a damaged file
+        raise unreadable(e) from None
+    if missing:
+        raise error(f"'{text}' is not a punchsweep regime map (no {', '.join(missing)}; a map holds the flag "
+                    f"variables regime and valid over its axes)")
+    try:
+        ds = xr.open_dataset(text, engine="h5netcdf")
+    except Exception as e:  # h5py's, h5netcdf's and xarray's errors for a file they cannot read
+        raise unreadable(e) from None
+    try:
+        check_layout(ds, error)
+        return in_units(ds, units, pressure_unit, decode_flags, error)
+    except error as e:
+        ds.close()
+        raise error(f"'{text}' is not a punchsweep regime map ({e})") from None
