@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "model/point/point_evaluation.hpp"
+#include "model/two_level/localization_model.hpp"
 #include "model/two_level/regime.hpp"
 #include "model/laws/standard_linear_solid.hpp"
 #include "model/two_level/elastic_two_level.hpp"

@@ -11,6 +11,7 @@
 #include "input/usage_error.hpp"
 #include "model/laws/creep_laws.hpp"
 #include "model/load/creep_weighted_load.hpp"
+#include "model/two_level/localization_model.hpp"
 #include "model/two_level/elastic_two_level.hpp"
 #include "model/problem/localization.hpp"
 #include "model/localization/single_level.hpp"

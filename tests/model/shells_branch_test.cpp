@@ -13,6 +13,7 @@
 #include "model/problem/localization.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/standard_linear_solid.hpp"
+#include "model/two_level/localization_model.hpp"
 #include "model/two_level/regime.hpp"
 #include "model/numerics/root_finding.hpp"
 #include "model/two_level/shells_branch.hpp"

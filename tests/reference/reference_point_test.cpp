@@ -14,6 +14,7 @@
 #include "model/problem/contact_problem.hpp"
 #include "model/load/creep_weighted_load.hpp"
 #include "model/point/point_evaluation.hpp"
+#include "model/two_level/localization_model.hpp"
 #include "model/two_level/regime.hpp"
 #include "model/laws/prony_series.hpp"
 #include "model/laws/standard_linear_solid.hpp"

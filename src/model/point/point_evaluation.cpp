@@ -12,7 +12,7 @@
 #include "model/numerics/lattice.hpp"
 #include "model/two_level/periodic_model.hpp"
 #include "model/two_level/shells_branch.hpp"
-#include "model/two_level/single_level_phase.hpp"
+#include "model/two_level/localization_model.hpp"
 
 namespace punchsweep::model {
 namespace {

@@ -8,6 +8,7 @@
 
 #include "model/laws/material.hpp"
 #include "model/numerics/number_text.hpp"
+#include "model/two_level/localization_model.hpp"
 #include "model/two_level/regime.hpp"
 
 namespace punchsweep::model {

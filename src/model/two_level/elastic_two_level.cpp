@@ -13,8 +13,6 @@
 #include "model/two_level/regime.hpp"
 #include "model/numerics/ring_loads.hpp"
 #include "model/localization/single_level.hpp"
-#include "model/two_level/single_level_phase.hpp"
-#include "model/two_level/shells_branch.hpp"
 
 namespace punchsweep::model {
 
@@ -147,31 +145,6 @@ ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
   out.state = current.state;
   out.radii = radii;
   out.converged = false;
-  return out;
-}
-
-ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide,
-                              const TwoLevelBranch* branch) {
-  if (problem.localization.is_paper()) return solve_elastic_two_level(problem, E, guide);
-  std::shared_ptr<const TwoLevelBranch> own;
-  if (branch == nullptr) {
-    own = make_branch(problem, touchdown(problem));
-    branch = own.get();
-  }
-  ElasticTwoLevel out;
-  const double X = problem.pbar0 / E;
-  out.level2_touches = branch->X_star() <= X;
-  if (!out.level2_touches) {
-    // Level 2 does not touch: the family's single-level state.
-    const double a1 = visit_single_level(problem, [&](const auto& single) { return single.contact_radius(X); });
-    out.state = TwoLevelState{a1, 0.0, problem.l * problem.l * X, 0.0};
-    out.converged = true;
-  } else {
-    const TwoLevelSolve r = branch->at(X);
-    out.state = r.state;
-    out.converged = r.converged;
-  }
-  out.radii = branch->radii(out.state, X);
   return out;
 }
 

@@ -34,13 +34,4 @@ std::optional<ElasticTwoLevel> solve_elastic_jointly(const ContactProblem& probl
 ElasticTwoLevel solve_elastic_two_level(const ContactProblem& problem, double E,
                                         const LongTermGuide* guide = nullptr);
 
-class TwoLevelBranch;
-
-/// The elastic two-level state under the problem's localization: solve_elastic_two_level
-/// for the paper's; for the family of docs/model.md, section 11 (radii from the loads) the
-/// state of its branch at X = pbar/E (ShellsBranch, built here if null). `guide` serves
-/// the paper's only, `branch` the family's.
-ElasticTwoLevel solve_elastic(const ContactProblem& problem, double E, const LongTermGuide* guide = nullptr,
-                              const TwoLevelBranch* branch = nullptr);
-
 }  // namespace punchsweep::model

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "model/two_level/single_level_phase.hpp"
 
 namespace punchsweep::model {
 
@@ -15,16 +14,6 @@ std::string_view regime_name(Regime regime) {
     case Regime::never: return "never";
   }
   return "unknown";
-}
-
-Touchdown touchdown(const ContactProblem& problem) {
-  return visit_single_level(problem, [&](const auto& single) {
-    if constexpr (requires { single.touchdown(problem.dh); }) {
-      return single.touchdown(problem.dh);  // the periodic tables: in X directly
-    } else {
-      return touchdown(single, problem.dh);
-    }
-  });
 }
 
 Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
@@ -45,10 +34,6 @@ Classification classify(const Touchdown& touch, const CreepWeightedLoad& load) {
     out.regime = !std::isfinite(out.t_star) ? Regime::never : while_rising ? Regime::immediate : Regime::delayed;
   }
   return out;
-}
-
-Classification classify(const ContactProblem& problem, const CreepLaw& creep) {
-  return classify(touchdown(problem), CreepWeightedLoad(creep, problem.pbar0, problem.loading));
 }
 
 }  // namespace punchsweep::model

@@ -56,13 +56,7 @@ Touchdown touchdown(const Single& single, double dh) {
   return t;
 }
 
-/// The touchdown point of the problem under its localization.
-Touchdown touchdown(const ContactProblem& problem);
-
 /// Classifies from a touchdown point: cheap (no root).
 Classification classify(const Touchdown& touch, const CreepWeightedLoad& load);
-
-/// Classifies one point (the problem must satisfy problem_error() == "").
-Classification classify(const ContactProblem& problem, const CreepLaw& creep);
 
 }  // namespace punchsweep::model

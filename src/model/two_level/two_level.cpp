@@ -10,7 +10,6 @@
 #include "model/numerics/integer_power.hpp"
 
 #include "model/numerics/lattice.hpp"
-#include "model/two_level/long_term_guide.hpp"
 #include "model/two_level/regime.hpp"
 #include "model/numerics/ring_loads.hpp"
 #include "model/numerics/root_finding.hpp"

@@ -1,7 +1,5 @@
 #pragma once
 
-#include <memory>
-
 #include "model/problem/contact_problem.hpp"
 #include "model/two_level/regime.hpp"
 #include "model/two_level/two_level.hpp"
@@ -29,11 +27,5 @@ class TwoLevelBranch {
   TwoLevelSolve solve(double X, const TwoLevelState& /*guess*/) const { return at(X); }
   TwoLevelSolve continue_to(const TwoLevelState& /*from*/, double /*X_from*/, double X_to) const { return at(X_to); }
 };
-
-/// The branch of the problem's localization from its touchdown: the periodic tables'
-/// (PeriodicBranch) or the refined family's (ShellsBranch). Not for the paper's model, whose
-/// radii are frozen (TwoLevelSystem). Shared: a sweep's and classify's points share one per
-/// (l, s, C, dh) (model::DhParts), and make_shared allocates it with its count at once.
-std::shared_ptr<const TwoLevelBranch> make_branch(const ContactProblem& problem, const Touchdown& touch);
 
 }  // namespace punchsweep::model
