@@ -3,11 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include "model/point/point_evaluation.hpp"
-#include "model/two_level/localization_model.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/localization/localization_model.hpp"
+#include "model/contact/regime.hpp"
 #include "model/laws/standard_linear_solid.hpp"
-#include "model/two_level/elastic_two_level.hpp"
-#include "model/two_level/two_level.hpp"
+#include "model/paper/elastic_two_level.hpp"
+#include "model/paper/two_level.hpp"
 
 using namespace punchsweep::model;
 

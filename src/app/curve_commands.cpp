@@ -11,12 +11,12 @@
 #include "input/usage_error.hpp"
 #include "model/laws/creep_laws.hpp"
 #include "model/load/creep_weighted_load.hpp"
-#include "model/two_level/localization_model.hpp"
-#include "model/two_level/elastic_two_level.hpp"
+#include "model/localization/localization_model.hpp"
+#include "model/paper/elastic_two_level.hpp"
 #include "model/problem/localization.hpp"
-#include "model/localization/single_level.hpp"
-#include "model/localization/single_level_shells.hpp"
-#include "model/two_level/two_level.hpp"
+#include "model/paper/single_level.hpp"
+#include "model/shells/single_level_shells.hpp"
+#include "model/paper/two_level.hpp"
 #include "model/point/parameters.hpp"
 
 namespace po = boost::program_options;

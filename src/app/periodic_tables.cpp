@@ -16,8 +16,8 @@
 
 #include "app/table_cache.hpp"
 #include "io/file_descriptor.hpp"
-#include "model/localization/shell_sums.hpp"
-#include "model/two_level/small_spot_builder.hpp"
+#include "model/shells/shell_sums.hpp"
+#include "model/periodic/small_spot_builder.hpp"
 #include "reference/periodic_grid.hpp"
 #include "sweep/reproducible_fft.hpp"
 

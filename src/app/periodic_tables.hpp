@@ -12,9 +12,9 @@
 #include <optional>
 #include <string>
 
-#include "model/localization/periodic_solution.hpp"
-#include "model/localization/periodic_table.hpp"
-#include "model/localization/small_spot_table.hpp"
+#include "model/periodic/periodic_solution.hpp"
+#include "model/periodic/periodic_table.hpp"
+#include "model/periodic/small_spot_table.hpp"
 #include "reference/periodic_table_builder.hpp"
 
 namespace punchsweep::app {

@@ -14,7 +14,7 @@
 #include "io/output_file.hpp"
 #include "app/version.hpp"
 #include "model/problem/shape.hpp"
-#include "model/two_level/small_spot_builder.hpp"
+#include "model/periodic/small_spot_builder.hpp"
 #include "sweep/reproducible_fft.hpp"
 
 namespace po = boost::program_options;

@@ -15,7 +15,7 @@
 
 #include "io/map_variables.hpp"
 #include "model/point/parameters.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/contact/regime.hpp"
 #include "model/point/validity.hpp"
 
 namespace punchsweep::io {

@@ -37,7 +37,7 @@
 #include "model/load/creep_weighted_load.hpp"
 #include "model/point/parameters.hpp"
 #include "model/point/point_evaluation.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/contact/regime.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "model/point/validity.hpp"
 #include "sweep/batch_evaluator.hpp"

@@ -6,7 +6,7 @@
 
 #include <functional>
 
-#include "model/localization/periodic_table.hpp"
+#include "model/periodic/periodic_table.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"

@@ -332,7 +332,7 @@ ReferenceResult evaluate_reference_point(const model::ContactProblem& problem,
         double t_star = 0.5 * (lo + hi);
         if (secant_ready()) t_star = aim();  // secant on the tip gap
         result.t_star = std::clamp(t_star, lo, hi);
-        // As the model says it (model/two_level/regime.hpp): touching while the load still rises
+        // As the model says it (model/contact/regime.hpp): touching while the load still rises
         // is immediate, during the hold delayed.
         const double rise = problem.loading.rise_time();
         result.regime = rise > 0.0 && *result.t_star <= rise ? model::Regime::immediate : model::Regime::delayed;

@@ -15,7 +15,7 @@
 #include "model/problem/contact_problem.hpp"
 #include "model/laws/creep_law.hpp"
 #include "model/point/point_evaluation.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/contact/regime.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"

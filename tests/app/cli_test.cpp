@@ -10,7 +10,7 @@
 #include <string>
 
 #include "model/point/point_evaluation.hpp"
-#include "model/localization/single_level.hpp"
+#include "model/paper/single_level.hpp"
 #include "model/laws/standard_linear_solid.hpp"
 
 namespace {

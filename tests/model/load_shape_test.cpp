@@ -16,9 +16,9 @@
 #include "model/load/creep_weighted_load.hpp"
 #include "model/problem/load_shape.hpp"
 #include "model/point/point_evaluation.hpp"
-#include "model/localization/pressure.hpp"
+#include "model/paper/pressure.hpp"
 #include "model/laws/prony_series.hpp"
-#include "model/localization/single_level.hpp"
+#include "model/paper/single_level.hpp"
 #include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;

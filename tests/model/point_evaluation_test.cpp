@@ -6,7 +6,7 @@
 
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/standard_linear_solid.hpp"
-#include "model/two_level/two_level.hpp"
+#include "model/paper/two_level.hpp"
 
 using namespace punchsweep::model;
 

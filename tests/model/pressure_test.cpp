@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/localization/pressure.hpp"
+#include "model/paper/pressure.hpp"
 #include "model/problem/shape.hpp"
 #include "model/laws/standard_linear_solid.hpp"
 

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "model/point/point_evaluation.hpp"
-#include "model/two_level/localization_model.hpp"
-#include "model/two_level/regime.hpp"
-#include "model/localization/single_level.hpp"
+#include "model/localization/localization_model.hpp"
+#include "model/contact/regime.hpp"
+#include "model/paper/single_level.hpp"
 #include "model/laws/standard_linear_solid.hpp"
 
 using namespace punchsweep::model;

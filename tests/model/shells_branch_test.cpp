@@ -13,11 +13,11 @@
 #include "model/problem/localization.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/standard_linear_solid.hpp"
-#include "model/two_level/localization_model.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/localization/localization_model.hpp"
+#include "model/contact/regime.hpp"
 #include "model/numerics/root_finding.hpp"
-#include "model/two_level/shells_branch.hpp"
-#include "model/two_level/two_level_shells.hpp"
+#include "model/shells/shells_branch.hpp"
+#include "model/shells/two_level_shells.hpp"
 
 using namespace punchsweep::model;
 

@@ -16,14 +16,14 @@
 
 #include "model/numerics/lattice.hpp"
 #include "model/problem/localization.hpp"
-#include "model/localization/pressure.hpp"
-#include "model/two_level/regime.hpp"
-#include "model/localization/shell_sums.hpp"
-#include "model/localization/single_level.hpp"
-#include "model/two_level/elastic_two_level.hpp"
-#include "model/localization/single_level_shells.hpp"
-#include "model/localization/spot_average.hpp"
-#include "model/two_level/two_level_shells.hpp"
+#include "model/paper/pressure.hpp"
+#include "model/contact/regime.hpp"
+#include "model/shells/shell_sums.hpp"
+#include "model/paper/single_level.hpp"
+#include "model/paper/elastic_two_level.hpp"
+#include "model/shells/single_level_shells.hpp"
+#include "model/shells/spot_average.hpp"
+#include "model/shells/two_level_shells.hpp"
 
 using namespace punchsweep::model;
 

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "model/problem/shape.hpp"
-#include "model/localization/single_level.hpp"
+#include "model/paper/single_level.hpp"
 
 using namespace punchsweep::model;
 

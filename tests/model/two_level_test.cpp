@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "model/numerics/lattice.hpp"
-#include "model/two_level/long_term_guide.hpp"
-#include "model/localization/single_level.hpp"
-#include "model/two_level/elastic_two_level.hpp"
-#include "model/two_level/two_level.hpp"
+#include "model/paper/long_term_guide.hpp"
+#include "model/paper/single_level.hpp"
+#include "model/paper/elastic_two_level.hpp"
+#include "model/paper/two_level.hpp"
 
 using namespace punchsweep::model;
 

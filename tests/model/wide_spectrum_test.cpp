@@ -13,7 +13,7 @@
 #include "model/numerics/gauss_rules.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/prony_series.hpp"
-#include "model/two_level/two_level.hpp"
+#include "model/paper/two_level.hpp"
 
 using namespace punchsweep::model;
 

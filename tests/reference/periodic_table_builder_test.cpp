@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "model/problem/contact_problem.hpp"
-#include "model/localization/periodic_table.hpp"
+#include "model/periodic/periodic_table.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 #include "reference/periodic_table_builder.hpp"

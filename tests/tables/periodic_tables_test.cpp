@@ -21,7 +21,7 @@
 #include "app/reference_command.hpp"
 #include "app/table_cache.hpp"
 #include "io/sha256.hpp"
-#include "model/localization/periodic_table.hpp"
+#include "model/periodic/periodic_table.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/laws/standard_linear_solid.hpp"
 #include "reference/periodic_table_builder.hpp"

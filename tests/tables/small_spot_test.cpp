@@ -15,12 +15,12 @@
 
 #include "app/periodic_tables.hpp"
 #include "app/point_command.hpp"
-#include "model/localization/periodic_solution.hpp"
-#include "model/localization/single_level_shells.hpp"
-#include "model/localization/small_spot_table.hpp"
+#include "model/periodic/periodic_solution.hpp"
+#include "model/shells/single_level_shells.hpp"
+#include "model/periodic/small_spot_table.hpp"
 #include "model/numerics/lattice.hpp"
-#include "model/two_level/small_spot_builder.hpp"
-#include "model/two_level/two_level_shells.hpp"
+#include "model/periodic/small_spot_builder.hpp"
+#include "model/shells/two_level_shells.hpp"
 
 using namespace punchsweep;
 

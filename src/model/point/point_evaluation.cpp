@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "model/numerics/lattice.hpp"
-#include "model/two_level/periodic_model.hpp"
-#include "model/two_level/shells_branch.hpp"
-#include "model/two_level/localization_model.hpp"
+#include "model/periodic/periodic_model.hpp"
+#include "model/shells/shells_branch.hpp"
+#include "model/localization/localization_model.hpp"
 
 namespace punchsweep::model {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "model/laws/material.hpp"
 #include "model/numerics/number_text.hpp"
-#include "model/two_level/localization_model.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/localization/localization_model.hpp"
+#include "model/contact/regime.hpp"
 
 namespace punchsweep::model {
 namespace {

@@ -14,7 +14,7 @@
 #include "model/laws/creep_laws.hpp"
 #include "model/problem/contact_problem.hpp"
 #include "model/problem/parameter.hpp"
-#include "model/two_level/regime.hpp"
+#include "model/contact/regime.hpp"
 
 namespace punchsweep::model {
 
