@@ -11,13 +11,19 @@ python=${PUNCHSWEEP_PYTHON:-/usr/bin/python3}
 # --dry-run): a different configuration is refused (exit 2) before the folder's config or
 # materials are touched. A requeued job passes the same way (its config is the same).
 prepare_run() {
-  local config=$1 run=$2 binary=$3 staged
+  local config=$1 run=$2 binary=$3 staged saved_traps
   mkdir -p "$run"
+  # Ctrl-C or a kill while staging leaves no .config-* behind; the caller's traps come back.
+  saved_traps=$(trap -p INT TERM)
   staged=$(mktemp -d "$run/.config-XXXXXX")
-  "$python" "$root/jobs/record_config.py" "$config" "$staged" || { rm -rf "$staged"; return 2; }
+  trap 'rm -rf "$staged"; exit 130' INT
+  trap 'rm -rf "$staged"; exit 143' TERM
+  "$python" "$root/jobs/record_config.py" "$config" "$staged" || { rm -rf "$staged"; trap - INT TERM; eval "$saved_traps"; return 2; }
   if [ -e "$run/config.ini" ] || [ -e "$run/map.h5" ] || [ -e "$run/map.h5.partial.journal" ]; then
     (cd "$staged" && "$binary" sweep --config config.ini --output "$run/map.h5" --resume --dry-run > /dev/null) || {
       rm -rf "$staged"
+      trap - INT TERM
+      eval "$saved_traps"
       echo "punchsweep: $run was left as it was (its config, materials and map); choose another run folder" >&2
       return 2
     }
@@ -26,6 +32,8 @@ prepare_run() {
   [ ! -d "$staged/materials" ] || mv "$staged/materials" "$run/materials"
   mv "$staged/config.ini" "$run/config.ini"
   rm -rf "$staged"
+  trap - INT TERM
+  eval "$saved_traps"
 }
 
 # finish_run RUN: the summary, the pictures and the explorer page, from the map alone (the

@@ -70,6 +70,23 @@ grep -q "was made with another configuration" other.log || { echo "FAIL: the ref
 [ "$(cd elsewhere/nbr && sha256sum config.ini materials/* map.h5)" = "$before" ] ||
   { echo "FAIL: the refused run changed the run folder"; cat other.log; exit 1; }
 [ -z "$(ls -A elsewhere/nbr | grep '^\.config-')" ] || { echo "FAIL: a staged config was left behind"; exit 1; }
+# 4d) Ctrl-C while the config is being staged (a slow Python here) leaves no .config-* in
+#     the run folder and exits 130.
+printf '#!/bin/bash\nsleep 30\nexec /usr/bin/python3 "$@"\n' > slow_python
+chmod +x slow_python
+# (A background job of a script ignores SIGINT; the launcher restores it, as a terminal has it,
+# and puts the job in its own process group, which a terminal's Ctrl-C signals whole.)
+PUNCHSWEEP_PYTHON="$PWD/slow_python" /usr/bin/python3 -c 'import os, signal, sys
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+os.setpgid(0, 0)
+os.execvp("bash", ["bash", *sys.argv[1:]])' "$root/jobs/local.sh" local.ini "$PWD/interrupted" > interrupted.log 2>&1 &
+job=$!
+for _ in $(seq 100); do ls -A interrupted 2> /dev/null | grep -q '^\.config-' && break; sleep 0.1; done
+ls -A interrupted | grep -q '^\.config-' || { echo "FAIL: no staged config to interrupt"; cat interrupted.log; exit 1; }
+kill -INT -- "-$job"
+set +e; wait "$job"; code=$?; set -e
+[ "$code" = 130 ] || { echo "FAIL: Ctrl-C while staging: exit $code"; cat interrupted.log; exit 1; }
+[ -z "$(ls -A interrupted | grep '^\.config-')" ] || { echo "FAIL: Ctrl-C left a staged config"; ls -A interrupted; exit 1; }
 SLURM_JOB_ID=6161 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/elsewhere/slurm-nbr" \
   bash "$root/jobs/slurm.sbatch" "$root/sweeps/materials/nbr.ini" > slurm-nbr.log 2>&1 ||
   { echo "FAIL: slurm.sbatch with sweeps/materials/nbr.ini"; cat slurm-nbr.log; exit 1; }
