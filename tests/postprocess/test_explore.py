@@ -321,30 +321,37 @@ def test_an_area_fraction_the_radii_do_not_give_is_embedded(maps, tmp_path):
     assert "data" in data["variables"]["area_fraction_inf"] and "derived" not in data["variables"]["area_fraction_inf"]
 
 
-@pytest.mark.browser
-def test_a_design_window_is_drawn_on_the_page(tmp_path):
-    """Issue 37 item 5: `explore.py --design window.json` draws the window's edges across
-    the heat map where its quantity (dh) is an axis, at the design's values in the map's
-    unit (um)."""
+def drawn_window(tmp_path, design_args: list[str], explore_args: list[str], along: str):
+    """A design window (`punchsweep design ... --format json`) drawn on the page of a TPE-A
+    map over dh and the pressure at 20 C: the design's JSON, and the window's lines as
+    Chromium has them, (name, their `along` coordinates), sorted by name."""
     tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
     path = tmp_path / "tpe.h5"
     subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
                     "linspace(4um, 12um, 9)", "--grid.pressure", "logspace(3kPa, 50kPa, 8)", "--grid.temperature",
                     "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path], check=True)
-    window = tmp_path / "window.json"
     done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
-                           "--temperature", "20..40C", "--require", "touch within 1s at 30kPa", "--require",
-                           "never at 5kPa", "--tolerance", "dh=0.5um, pressure=10%", "--format", "json"],
+                           "--temperature", "20..40C", *design_args, "--format", "json"],
                           capture_output=True, text=True, check=True)
+    window = tmp_path / "window.json"
     window.write_text(done.stdout)
-    d = json.loads(done.stdout)
     page = tmp_path / "p.html"
-    r = explore(path, "-o", page, "--design", window)
+    r = explore(path, "-o", page, *explore_args, "--design", window)
     assert r.returncode == 0, r.stderr
     out, _ = in_chromium(page, [[0, 0]], tmp_path)
-    drawn = {line["name"]: line["y"] for line in out["lines"] if line["name"].startswith("design window")}
+    drawn = sorted((line["name"], line[along]) for line in out["lines"] if line["name"].startswith("design window"))
     assert len(drawn) == 2, out["lines"]
-    (lower_name, lower_y), (upper_name, upper_y) = sorted(drawn.items())
+    return json.loads(done.stdout), drawn
+
+
+@pytest.mark.browser
+def test_a_design_window_is_drawn_on_the_page(tmp_path):
+    """Issue 37 item 5: `explore.py --design window.json` draws the window's edges across
+    the heat map where its quantity (dh) is an axis, at the design's values in the map's
+    unit (um)."""
+    d, ((lower_name, lower_y), (upper_name, upper_y)) = drawn_window(
+        tmp_path, ["--require", "touch within 1s at 30kPa", "--require", "never at 5kPa", "--tolerance",
+                   "dh=0.5um, pressure=10%"], [], "y")
     assert "lower edge 7.513 um" in lower_name and "upper edge 8.483 um" in upper_name
     assert lower_y == pytest.approx([d["physical"]["lower"]] * 2, rel=1e-12)
     assert upper_y == pytest.approx([d["physical"]["upper"]] * 2, rel=1e-12)
@@ -354,26 +361,10 @@ def test_a_design_window_is_drawn_on_the_page(tmp_path):
 def test_a_pressure_window_is_drawn_across_the_pressure_axis(tmp_path):
     """`punchsweep design --find pressure`'s window on the page: its edges are vertical lines
     across the heat map at the design's pressures in the map's unit (kPa)."""
-    tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
-    path = tmp_path / "tpe.h5"
-    subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
-                    "linspace(4um, 12um, 5)", "--grid.pressure", "logspace(3kPa, 50kPa, 6)", "--grid.temperature",
-                    "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path], check=True)
-    done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
-                           "--temperature", "20..40C", "--find", "pressure", "--dh", "8um", "--pressure",
-                           "1kPa..200kPa", "--require", "touch within 1min", "--require", "no touch within 1s",
-                           "--tolerance", "dh=0.1um, pressure=2%", "--format", "json"],
-                          capture_output=True, text=True, check=True)
-    window = tmp_path / "window.json"
-    window.write_text(done.stdout)
-    d = json.loads(done.stdout)
-    page = tmp_path / "p.html"
-    r = explore(path, "-o", page, "--x", "pbar", "--y", "dh", "--design", window)
-    assert r.returncode == 0, r.stderr
-    out, _ = in_chromium(page, [[0, 0]], tmp_path)
-    drawn = {line["name"]: line["x"] for line in out["lines"] if line["name"].startswith("design window")}
-    assert len(drawn) == 2, out["lines"]
-    (lower_name, lower_x), (upper_name, upper_x) = sorted(drawn.items())
+    d, ((lower_name, lower_x), (upper_name, upper_x)) = drawn_window(
+        tmp_path, ["--find", "pressure", "--dh", "8um", "--pressure", "1kPa..200kPa", "--require",
+                   "touch within 1min", "--require", "no touch within 1s", "--tolerance", "dh=0.1um, pressure=2%"],
+        ["--x", "pbar", "--y", "dh"], "x")
     assert "pressure lower edge 12.38 kPa" in lower_name and "pressure upper edge 12.95 kPa" in upper_name
     assert lower_x == pytest.approx([d["physical"]["lower"]] * 2, rel=1e-12)
     assert upper_x == pytest.approx([d["physical"]["upper"]] * 2, rel=1e-12)
