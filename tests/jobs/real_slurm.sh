@@ -103,11 +103,20 @@ is_state() { [ "$(state "$1")" = "$2" ]; }
 restarted() { [ "$(restarts "$1")" = "$2" ]; }
 ended() { case "$(state "$1")" in COMPLETED | FAILED | CANCELLED | TIMEOUT | NODE_FAIL) true ;; *) false ;; esac; }
 # A requeued job waits two minutes (Slurm's own delay) before it may start: start it now,
-# once the node is idle: its last run's end is done there (started sooner, slurmd refused
-# the new run with "Job credential revoked", the old run's credential being revoked after).
+# once its last run has left the node (started sooner, slurmd refused the new run with
+# "Job credential revoked", the old run's credential being revoked after). The node shows
+# idle as soon as the job is requeued, while the last run's batch step may still be ending
+# (a job that requeues itself): wait for its slurmstepd to go too, then for the next second,
+# as the revocation's time is in whole seconds and a credential of the same second is refused.
+last_run_gone() { ! pgrep -f "slurmstepd: \[$1\.batch\]" > /dev/null; }
+after_second() { [ "$(date +%s)" -gt "$1" ]; }
 release() {
   wait_until 30 "" "job $1 back in the queue" -- is_state "$1" PENDING
   wait_until 60 "" "the node to be idle after job $1's last run" -- node_idle
+  wait_until 60 "" "job $1's last batch step to leave the node" -- last_run_gone "$1"
+  local gone
+  gone=$(date +%s)
+  wait_until 3 "" "the second after job $1's last run left" -- after_second "$gone"
   scontrol update JobId="$1" StartTime=now
 }
 progress() { grep -q "points/s, ETA" "$1/job.log" 2> /dev/null; }
