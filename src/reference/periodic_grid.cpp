@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -69,21 +70,17 @@ std::string two_level_grid_error(int n) {
 
 namespace {
 
-/// The part of the hx x hy square about (x, y) where the level-2 surface is the lower one
-/// (`centre_excess` is level2_excess at (x, y)): 0 or 1 where the two surfaces do not cross
-/// within the square (checked at its corners, edge midpoints and centre; ties count half),
-/// else the midpoint rule over kRows rows, each cut where the surfaces cross (found by
-/// bisection to round-off). Exact where the line of crossing is straight (s = 2),
-/// O((h / kRows)^2 / radius of curvature) otherwise; counting points on a lattice instead
-/// would err alike along a straight line, adding up to O(h / kRows) over the cell.
-double level2_fraction(const PeriodicGrid& g, const model::ContactProblem& problem, double x, double y,
-                       double centre_excess) {
+/// The part of the hx x hy square about (x, y) that a level owns, `excess` its surface's
+/// margin below the others' (level2_excess: > 0 where it is the lowest, 0 on a tie;
+/// `centre_excess` its value at (x, y)): 0 or 1 where the surfaces do not cross within the
+/// square (checked at its corners, edge midpoints and centre; ties count half), else the
+/// midpoint rule over kRows rows, each cut where the surfaces cross (found by bisection to
+/// round-off). Exact where the line of crossing is straight (s = 2), O((h / kRows)^2 /
+/// radius of curvature) otherwise; counting points on a lattice instead would err alike
+/// along a straight line, adding up to O(h / kRows) over the cell.
+template <class Excess>
+double level_fraction(const PeriodicGrid& g, const Excess& excess, double x, double y, double centre_excess) {
   constexpr int kRows = 16;
-  const double half = 0.5 * problem.l;
-  const auto excess = [&](double px, double py) {
-    return level2_excess(punch_height(g, problem.shape, px, py, 0.0, 0.0),
-                         punch_height(g, problem.shape, px, py, half, half) + problem.dh);
-  };
   const auto owner = [](double e) { return e > 0.0 ? 1.0 : e < 0.0 ? 0.0 : 0.5; };
   const double centre = owner(centre_excess);
   bool uniform = centre != 0.5;
@@ -111,35 +108,84 @@ double level2_fraction(const PeriodicGrid& g, const model::ContactProblem& probl
   return sum / kRows;
 }
 
+/// The node at a site's tip, or std::invalid_argument where the tip is not a node.
+std::size_t tip_node(const PeriodicGrid& g, const model::Site& site, std::size_t k) {
+  const auto node = [&](double c, double h, int n, int stored) {
+    const long i = std::lround(c / h);
+    if (std::abs(i * h - c) > 1e-9 * h * n || i < 0 || i >= stored) {
+      throw std::invalid_argument("make_cell: site " + std::to_string(k) + "'s tip is not a stored node of the grid");
+    }
+    return static_cast<int>(i);
+  };
+  return g.index(node(site.x, g.hx(), g.nx, g.stored_nx()), node(site.y, g.hy(), g.ny, g.stored_ny()));
+}
+
 }  // namespace
+
+Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
+  if (const std::string e = model::geometry_error(geometry); !e.empty()) throw std::invalid_argument("make_cell: " + e);
+  if (const std::string e = grid_error(grid); !e.empty()) throw std::invalid_argument("make_cell: " + e);
+  if (grid.Lx != geometry.Lx || grid.Ly != geometry.Ly) {
+    throw std::invalid_argument("make_cell: the grid's cell is not the geometry's");
+  }
+  const std::vector<model::Site>& sites = geometry.sites;
+  Cell cell;
+  cell.grid = grid;
+  const PeriodicGrid& g = cell.grid;
+  // Each site's surface f(r) + drop at the nodes (punch_profile: its checks of the mirror).
+  std::vector<std::vector<double>> surface;
+  for (const model::Site& site : sites) {
+    surface.push_back(punch_profile(g, site.shape, site.x, site.y));
+    for (double& v : surface.back()) v += site.drop;
+    cell.tips.push_back(tip_node(g, site, cell.tips.size()));
+  }
+  // The lowest surface among the sites of `level` (own) or of the others, at a point.
+  const auto lowest = [&](double px, double py, int level, bool own) {
+    double low = std::numeric_limits<double>::infinity();
+    for (const model::Site& site : sites) {
+      if ((site.level == level) == own) low = std::min(low, punch_height(g, site.shape, px, py, site.x, site.y) + site.drop);
+    }
+    return low;
+  };
+  cell.profile.assign(g.size(), std::numeric_limits<double>::infinity());
+  for (const std::vector<double>& f : surface) {
+    for (std::size_t k = 0; k < g.size(); ++k) cell.profile[k] = std::min(cell.profile[k], f[k]);
+  }
+  for (int level = 1; level < geometry.levels(); ++level) {
+    std::vector<double> weight(g.size());
+    std::vector<char> own_node(g.size());
+    const auto excess = [&](double px, double py) { return level2_excess(lowest(px, py, level, false), lowest(px, py, level, true)); };
+    for (int i = 0; i < g.stored_nx(); ++i) {
+      for (int j = 0; j < g.stored_ny(); ++j) {
+        const std::size_t k = g.index(i, j);
+        double others = std::numeric_limits<double>::infinity(), own = others;
+        for (std::size_t q = 0; q < sites.size(); ++q) {
+          double& low = sites[q].level == level ? own : others;
+          low = std::min(low, surface[q][k]);
+        }
+        // The node itself belongs to the level that is lowest there; ties to both.
+        const double centre = level2_excess(others, own);
+        own_node[k] = centre >= 0.0;
+        weight[k] = level_fraction(g, excess, g.x(i), g.y(j), centre);
+      }
+    }
+    cell.level_weight.push_back(std::move(weight));
+    cell.level_node.push_back(std::move(own_node));
+  }
+  return cell;
+}
 
 TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Symmetry symmetry) {
   if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
-  TwoLevelCell cell;
-  cell.grid = PeriodicGrid::square(n, problem.l, symmetry);
-  const PeriodicGrid& g = cell.grid;
-  const double half = 0.5 * problem.l;
-  const std::vector<double> f1 = punch_profile(g, problem.shape, 0.0, 0.0);
-  const std::vector<double> f2 = punch_profile(g, problem.shape, half, half);
-  cell.profile.resize(g.size());
-  cell.level2_node.resize(g.size());
-  cell.level2_weight.resize(g.size());
-  for (int i = 0; i < g.stored_nx(); ++i) {
-    for (int j = 0; j < g.stored_ny(); ++j) {
-      const std::size_t k = g.index(i, j);
-      const double lower2 = f2[k] + problem.dh;
-      cell.profile[k] = std::min(f1[k], lower2);
-      // The node itself belongs to the punch that is lower there; ties (dh = 0 on the
-      // bisector) to both.
-      const double excess = level2_excess(f1[k], lower2);
-      cell.level2_node[k] = excess >= 0.0;
-      cell.level2_weight[k] = level2_fraction(g, problem, g.x(i), g.y(j), excess);
-    }
-  }
-  const int m = n / 2;
-  cell.tip1 = g.index(0, 0);
-  cell.tip2 = g.index(m, m);
-  return cell;
+  Cell cell = make_cell(model::two_level_square(problem), PeriodicGrid::square(n, problem.l, symmetry));
+  TwoLevelCell out;
+  out.grid = cell.grid;
+  out.profile = std::move(cell.profile);
+  out.level2_weight = std::move(cell.level_weight[0]);
+  out.level2_node = std::move(cell.level_node[0]);
+  out.tip1 = cell.tips[0];
+  out.tip2 = cell.tips[1];
+  return out;
 }
 
 double level2_share(const TwoLevelCell& cell) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "model/problem/cell_geometry.hpp"
 #include "model/problem/contact_problem.hpp"
 #include "model/problem/shape.hpp"
 
@@ -78,6 +79,26 @@ double periodic_offset(double d, double L);
 /// (else std::invalid_argument: the profile would not be even).
 std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& shape, double cx,
                                   double cy);
+
+/// A periodic cell of any geometry (model::CellGeometry) on a grid of its Lx x Ly cell.
+struct Cell {
+  PeriodicGrid grid;
+  /// Initial separation at zero approach: the lowest of the sites' surfaces f(r) + drop, in R.
+  std::vector<double> profile;
+  /// For each level from 1 on (level_weight[L - 1]): the share of each node's square in
+  /// level L, the part of it where L's surface is the lowest of all (ties, within
+  /// kProfileTieTolerance, count half). Level 0's share is what the others leave.
+  std::vector<std::vector<double>> level_weight;
+  /// For each level from 1 on: whether the node itself is that level's (its surface there
+  /// the lowest, or tied).
+  std::vector<std::vector<char>> level_node;
+  std::vector<std::size_t> tips;  ///< per site, in the geometry's order: the node of its tip
+};
+
+/// The cell of `geometry` on `grid` (its cell must be the geometry's, model::geometry_error
+/// empty, every tip a node, and under Symmetry::mirror every tip at 0 or half the cell along
+/// each axis; else std::invalid_argument naming what is not).
+Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
 
 /// The periodic unit cell of the two-level square lattice (docs/model.md, section 3): the
 /// l x l square with the level-1 punch at the corners (0, 0) and the level-2 punch, lower by
