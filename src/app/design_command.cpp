@@ -12,6 +12,7 @@
 #include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "app/point_command.hpp"
 #include "input/scaled_value.hpp"
@@ -285,6 +286,18 @@ input::Keywords with(input::Keywords base, const std::string& name, const std::s
 }
 
 /// Pressures, pitches and shape factors of the box's corners about (pbar, l, C).
+/// The tolerance of the quantity a window is of (dh, l or pbar): its width (in the
+/// quantity's scaled unit, or a fraction where relative).
+struct OwnTolerance {
+  double width = 0.0;
+  bool relative = false;
+};
+OwnTolerance own_tolerance(const DesignTolerance& box, std::string_view quantity) {
+  if (quantity == model::kPitch) return {box.l, !box.l_absolute};
+  if (quantity == model::kPressure) return {box.pressure, !box.pressure_absolute};
+  return {box.dh, false};
+}
+
 std::vector<double> sides(double value, double tolerance, bool absolute) {
   if (tolerance == 0.0) return {value};
   return absolute ? std::vector<double>{value - tolerance, value + tolerance}
@@ -404,9 +417,8 @@ DesignResult design(const DesignArgs& a) {
   out.inputs = point_at(with(probe, "pbar", input::json_number(by_pressure ? out.search_lo : requirements.front().pbar)), "");
   const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C, dh0 = out.inputs.problem.dh;
   if (searched && box.dh > dh0) throw input::UsageError("--tolerance dh: larger than --dh itself");
-  // The searched quantity's own tolerance, which moves its edges inward.
-  const double search_tolerance = by_l ? box.l : box.pressure;
-  const bool search_tolerance_absolute = by_l ? box.l_absolute : box.pressure_absolute;
+  // The quantity's own tolerance, which moves its edges inward.
+  const OwnTolerance own = own_tolerance(box, a.find);
   const std::vector<double> temperatures = out.temperatures.empty() ? std::vector<double>{kNaN} : out.temperatures;
   out.lower = searched ? out.search_lo : 0.0;
   out.upper = searched ? out.search_hi : kInf;
@@ -425,11 +437,11 @@ DesignResult design(const DesignArgs& a) {
     // end where the gap never reaches dh in it; none where it does at the start), then its
     // tolerance moves it inward.
     const auto edge_of = [&](const DesignBound& d) {
-      if (!searched) return touch ? d.value - box.dh : d.value + box.dh;
+      if (!searched) return touch ? d.value - own.width : d.value + own.width;
       const double e = touch ? d.value : d.value <= lo ? -kInf : std::min(d.value, hi);
       if (!std::isfinite(e)) return e;
-      if (b.upper) return search_tolerance_absolute ? e - search_tolerance : e / (1.0 + search_tolerance);
-      return search_tolerance_absolute ? e + search_tolerance : e / (1.0 - search_tolerance);
+      if (b.upper) return own.relative ? e / (1.0 + own.width) : e - own.width;
+      return own.relative ? e / (1.0 - own.width) : e + own.width;
     };
     const auto take = [&](DesignBound d) {
       d.edge = edge_of(d);
@@ -631,13 +643,6 @@ Unit quantity_unit(const DesignResult& d) {
   return d.quantity == model::kPressure ? pressure_unit(d.inputs, d.search_hi) : length_unit(d.inputs);
 }
 
-/// The quantity's own absolute tolerance (in its scaled unit; 0 where none or relative).
-double absolute_tolerance(const DesignResult& d) {
-  if (d.quantity == model::kHeightDifference) return d.tolerance.dh;
-  if (d.quantity == model::kPitch) return d.tolerance.l_absolute ? d.tolerance.l : 0.0;
-  return d.tolerance.pressure_absolute ? d.tolerance.pressure : 0.0;
-}
-
 /// What to say where no value meets every requirement: the nearest miss (in the quantity's
 /// unit `L`).
 std::string miss_text(const DesignResult& d, const Unit& L) {
@@ -657,11 +662,10 @@ std::string miss_text(const DesignResult& d, const Unit& L) {
     (b.upper ? exact_upper : exact_lower) =
         b.upper ? std::min(exact_upper, b.binding.value) : std::max(exact_lower, b.binding.value);
   }
-  const bool relative = q == "l" ? !d.tolerance.l_absolute : q == "pressure" && !d.tolerance.pressure_absolute;
-  const double tolerance = relative ? (q == "l" ? d.tolerance.l : d.tolerance.pressure) : absolute_tolerance(d);
-  if (!(exact_lower <= exact_upper) || tolerance == 0.0) {
+  const OwnTolerance own = own_tolerance(d.tolerance, d.quantity);
+  if (!(exact_lower <= exact_upper) || own.width == 0.0) {
     t += "; not even an exact " + q + " meets every requirement";
-  } else if (relative) {
+  } else if (own.relative) {
     const double ratio = exact_upper / exact_lower;  // edges e/(1 -+ t) meet at t = (ratio - 1)/(ratio + 1)
     t += "; a " + q + " tolerance of +- " + model::number_text(100 * (ratio - 1) / (ratio + 1), 4) +
          "% or less would meet every requirement";
@@ -760,7 +764,7 @@ void write_table(std::ostream& out, const DesignResult& d) {
         << where_text(b, d, L, touch) << ")\n";
   }
   out << "\n";
-  const bool tolerance = q == "dh" ? d.tolerance.dh > 0 : q == "l" ? d.tolerance.l > 0 : d.tolerance.pressure > 0;
+  const bool tolerance = own_tolerance(d.tolerance, d.quantity).width > 0;
   if (d.empty()) {
     out << "no design meets this: the requirements leave " << q << " between " << len(d.lower) << " and "
         << len(d.upper) << ", an empty window; " << miss_text(d, Q) << "\n";
