@@ -17,13 +17,9 @@ std::vector<std::size_t> first_sites(const model::CellGeometry& geometry) {
 
 }  // namespace
 
-CellState cell_state(const model::CellGeometry& geometry, const Cell& cell, ContactSolver& solver, double X,
-                     std::vector<double>* pressure) {
+CellState cell_state(const model::CellGeometry& geometry, const Cell& cell, ContactSolver& solver, double X) {
   const PeriodicGrid& g = cell.grid;
-  std::vector<double> own;
-  std::vector<double>& p = pressure != nullptr ? *pressure : own;
-  if (p.size() != g.size()) p.assign(g.size(), 0.0);
-  std::vector<double> u(g.size());
+  std::vector<double> p(g.size(), 0.0), u(g.size());  // p = 0: the solve starts from the uniform field
   CellState s;
   s.X = X;
   s.status = solver.solve(cell.profile, X, 1.0, p, u);

@@ -25,9 +25,8 @@ struct CellState {
   ContactStatus status;
 };
 
-/// Solves the cell at X (warm-started from and returning `pressure` where it is not empty).
-CellState cell_state(const model::CellGeometry& geometry, const Cell& cell, ContactSolver& solver, double X,
-                     std::vector<double>* pressure = nullptr);
+/// Solves the cell at X, from the uniform pressure.
+CellState cell_state(const model::CellGeometry& geometry, const Cell& cell, ContactSolver& solver, double X);
 
 /// Each level's touchdown load X*_L: the X at which h_L reaches the drop of its first site
 /// (within 1e-9 of it: once touched h_L stays there, to the solve's tolerance), by bisection
