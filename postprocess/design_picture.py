@@ -42,18 +42,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                            "`punchsweep design --format json`")
 
 
-# What a window can be of, as the y axis names it.
-QUANTITIES = {"dh": "height difference dh", "l": "pitch l", "pbar": "nominal pressure"}
-
-
 def _unit(text: str) -> str:
     return "µm" if text == "um" else text
-
-
-def read_window(path: str) -> dict:
-    return pm.read_json(path, "a design window",
-                        lambda d: d.get("quantity") in QUANTITIES and isinstance(d.get("requirements"), list),
-                        "the JSON of `punchsweep design --format json` (no 'quantity' and 'requirements')")
 
 
 def _number(v) -> float:
@@ -85,6 +75,7 @@ def render(d: dict):
     import matplotlib.pyplot as plt
 
     unit, length = _unit(d["physical"]["unit"]), _unit(d["physical"]["length_unit"])
+    q = pm.design_quantity(d)
     curves = bound_curves(d)
     has_T = len(d["temperatures"]) > 1
     fig, ax = plt.subplots(figsize=(7.5, 4.8), layout="constrained")
@@ -92,7 +83,6 @@ def render(d: dict):
     x_span = (min(d["temperatures"]), max(d["temperatures"])) if has_T else (0.0, 1.0)
     for k, (r, Ts, edge) in enumerate(curves):
         upper = r["side"] == "upper"
-        q = "pressure" if d["quantity"] == "pbar" else d["quantity"]
         label = f"{r['text']}: {q} {'≤' if upper else '≥'} line"
         colour = colours[k % len(colours)]
         if has_T:
@@ -123,7 +113,6 @@ def render(d: dict):
             ax.axhline(d["physical"]["centre"], color="tab:green", ls="--", lw=1.2, label="its centre")
         else:
             ax.axhline(lo, color="tab:green", ls="--", lw=1.2, label="the window's lower edge")
-        q = "pressure" if d["quantity"] == "pbar" else d["quantity"]
         title = (f"{q} window {lo:.4g} to {top:.4g} {unit} (centre {d['physical']['centre']:.4g}, margin "
                  f"± {d['physical']['margin']:.3g} {unit})" if top is not None else f"{q} ≥ {lo:.4g} {unit}")
     else:
@@ -144,7 +133,7 @@ def render(d: dict):
     ax.set_xlabel("temperature (°C)" if has_T else "")
     if not has_T:
         ax.set_xticks([])
-    ax.set_ylabel(f"{QUANTITIES[d['quantity']]} ({unit})")
+    ax.set_ylabel(f"{pm.DESIGN_QUANTITIES[d['quantity']]} ({unit})")
     ax.set_xlim(*x_span)
     ax.legend(fontsize=7.5, loc="best")
     if d["empty"] and d.get("miss"):
@@ -154,7 +143,7 @@ def render(d: dict):
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
-    pm.picture_of(args.window, args.output, read_window, render, FIG_DPI)
+    pm.picture_of(args.window, args.output, pm.read_design_window, render, FIG_DPI)
     return 0
 
 

@@ -205,15 +205,12 @@ def design_window(path: str | None) -> dict | None:
     finite edges (in R), each named for the legend; None without one."""
     if path is None:
         return None
-    d = pm.read_json(path, "a design window",
-                     lambda d: d.get("quantity") in ("dh", "l", "pbar") and "lower" in d and "upper" in d,
-                     "the JSON of `punchsweep design --format json` (no 'quantity', 'lower' and 'upper')")
-    q, unit = d["quantity"], d["physical"]["unit"]
+    d = pm.read_design_window(path)
+    q, name, unit = d["quantity"], pm.design_quantity(d), d["physical"]["unit"]
     edges = []
     for side, value, physical in (("lower", d["lower"], d["physical"]["lower"]),
                                   ("upper", d["upper"], d["physical"]["upper"])):
         if value is not None and math.isfinite(value) and not d["empty"]:
-            name = "pressure" if q == "pbar" else q
             edges.append((f"design window: {name} {side} edge {physical:.4g} {unit}", float(value)))
     return {"quantity": q, "edges": edges, "empty": bool(d["empty"])}
 

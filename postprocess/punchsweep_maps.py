@@ -566,6 +566,25 @@ def read_json(path: str | Path, what: str, is_it, not_it: str) -> dict:
     return d
 
 
+# What a design window (`punchsweep design --format json`) can be of, as the pictures name it.
+DESIGN_QUANTITIES = {"dh": "height difference dh", "l": "pitch l", "pbar": "nominal pressure"}
+
+
+def read_design_window(path: str | Path) -> dict:
+    """A design window (`punchsweep design --format json`, or `punchsweep.design()` written
+    with json.dump), MapError where the file is none."""
+    return read_json(path, "a design window",
+                     lambda d: d.get("quantity") in DESIGN_QUANTITIES and isinstance(d.get("requirements"), list)
+                     and "lower" in d and "upper" in d,
+                     "the JSON of `punchsweep design --format json` (no 'quantity', 'lower', 'upper' and "
+                     "'requirements')")
+
+
+def design_quantity(d: dict) -> str:
+    """The window's quantity as a reader says it: dh, l or pressure."""
+    return "pressure" if d["quantity"] == "pbar" else d["quantity"]
+
+
 def picture_args(argv: list[str], prog: str, doc: str, name: str, metavar: str, written_by: str):
     """The arguments of a script that draws one input file (a JSON an engine command wrote):
     the file as `name` and -o/--output, the picture."""
