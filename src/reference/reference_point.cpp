@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "reference/contact_areas.hpp"
 #include "reference/viscoelastic_stepper.hpp"
 
 namespace punchsweep::reference {
@@ -122,57 +123,9 @@ std::string options_error(const ReferenceOptions& options) {
   return {};
 }
 
-namespace {
-
-/// How far past a node in contact, in grid spacings along one axis, the contact's edge lies
-/// when the next node on is free: where p^2, extrapolated linearly from that node (p_edge)
-/// and the one behind it (p_inner), reaches zero (a smooth contact's pressure falls as the
-/// square root of the distance to its edge), within [0, 1]; 1/2, the node's own half
-/// square, where the pressure does not fall towards the edge.
-double edge_offset(double p_edge, double p_inner) {
-  if (!(p_inner > p_edge)) return 0.5;
-  return std::clamp(p_edge * p_edge / (p_inner * p_inner - p_edge * p_edge), 0.0, 1.0);
-}
-
-/// The node's neighbour index along one axis on a grid of `n` nodes: periodic, or under
-/// mirror symmetry (stored 0 .. n/2) reflected at both ends.
-int neighbour(int i, int step, int n, bool mirrored) {
-  const int k = i + step;
-  if (!mirrored) return (k % n + n) % n;
-  if (k < 0) return -k;
-  if (2 * k > n) return n - k;
-  return k;
-}
-
-}  // namespace
-
 ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p, std::span<const double> rims) {
-  const PeriodicGrid& g = cell.grid;
-  const bool mirrored = g.mirrored();
-  ContactAreas a;
-  for (int i = 0; i < g.stored_nx(); ++i) {
-    for (int j = 0; j < g.stored_ny(); ++j) {
-      const std::size_t k = g.index(i, j);
-      if (!(p[k] > 0.0)) continue;
-      // The node's square, moved at each free neighbour to where the edge lies, half from
-      // the rows' estimate and half from the columns'.
-      double nodes = 1.0;
-      for (const int step : {-1, 1}) {
-        if (!(p[g.index(neighbour(i, step, g.nx, mirrored), j)] > 0.0)) {
-          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(neighbour(i, -step, g.nx, mirrored), j)]) - 0.5);
-        }
-        if (!(p[g.index(i, neighbour(j, step, g.ny, mirrored))] > 0.0)) {
-          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(i, neighbour(j, -step, g.ny, mirrored))]) - 0.5);
-        }
-      }
-      const double m = g.multiplicity(k) * nodes;
-      a.level1 += m * (1.0 - cell.level2_weight[k]);
-      a.level2 += m * cell.level2_weight[k];
-    }
-  }
-  a.level1 *= g.cell_area();
-  a.level2 *= g.cell_area();
-  return a;
+  const std::vector<double> areas = level_contact_areas(cell.grid, {cell.level2_weight}, p, rims);
+  return {areas[0], areas[1]};
 }
 
 ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double> p,

@@ -125,18 +125,8 @@ struct ContactAreas {
   double level2 = 0.0;
 };
 
-/// The contact areas of the contact set {p > 0} (docs/model.md, section 13.1): each node in
-/// contact counts its square, split between the levels by level2_weight, with the square's
-/// sides moved, where the next node is free, to the edge that rims^2 extrapolated linearly
-/// from the last two nodes places between them, averaged over the rows' and the columns'
-/// estimates. `rims` is a field that falls as the square root of the distance to a smooth
-/// contact's edge: the pressure of an elastic solve, and under creep the creep-scaled
-/// pressure w = int J dp (the elastic pressure at the creep-weighted load, while the
-/// contact grows), not p, whose rim is a history of such falls. Against Hertz on spots of
-/// radius a = 4 to 32 grid spacings h (tests/reference), counting the pressed nodes is off
-/// by 0.11-0.27 h/a and jumps as the rim crosses nodes; this estimate by 0.03-0.13 h/a
-/// (the grid's pressure itself departs from the square root at the last node or two), and
-/// moves smoothly with the load, which is what tables interpolated between loads need.
+/// The contact areas of the two levels of the contact set {p > 0}: level_contact_areas
+/// (reference/contact_areas.hpp) with the cell's level-2 share.
 ContactAreas contact_areas(const TwoLevelCell& cell, std::span<const double> p, std::span<const double> rims);
 
 /// Measures a contact state of a two-level cell: pressure p, the field that locates the
