@@ -108,9 +108,12 @@ double level_fraction(const PeriodicGrid& g, const Excess& excess, double x, dou
   return sum / kRows;
 }
 
-/// The node at a site's tip, or std::invalid_argument where the tip is not a node.
+/// The node at a site's tip (under Symmetry::mirror, at its mirror image in the stored
+/// quarter), or std::invalid_argument where the tip is not a node.
 std::size_t tip_node(const PeriodicGrid& g, const model::Site& site, std::size_t k) {
   const auto node = [&](double c, double h, int n, int stored) {
+    const double L = h * n;
+    if (g.mirrored() && c > 0.5 * L) c = L - c;
     const long i = std::lround(c / h);
     if (std::abs(i * h - c) > 1e-9 * h * n || i < 0 || i >= stored) {
       throw std::invalid_argument("make_cell: site " + std::to_string(k) + "'s tip is not a stored node of the grid");
@@ -132,10 +135,19 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   Cell cell;
   cell.grid = grid;
   const PeriodicGrid& g = cell.grid;
-  // Each site's surface f(r) + drop at the nodes (punch_profile: its checks of the mirror).
+  // Each site's surface f(r) + drop at the nodes. A mirrored grid needs the sites' set to
+  // be even (each site alone need not be: the lowest surface of them all is).
+  if (g.mirrored() && !model::mirror_symmetric(geometry)) {
+    throw std::invalid_argument("make_cell: a mirrored grid needs a geometry whose sites are even in x and y");
+  }
   std::vector<std::vector<double>> surface;
   for (const model::Site& site : sites) {
-    surface.push_back(punch_profile(g, site.shape, site.x, site.y));
+    surface.emplace_back(g.size());
+    for (int i = 0; i < g.stored_nx(); ++i) {
+      for (int j = 0; j < g.stored_ny(); ++j) {
+        surface.back()[g.index(i, j)] = punch_height(g, site.shape, g.x(i), g.y(j), site.x, site.y);
+      }
+    }
     for (double& v : surface.back()) v += site.drop;
     cell.tips.push_back(tip_node(g, site, cell.tips.size()));
   }
@@ -173,6 +185,14 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
     cell.level_node.push_back(std::move(own_node));
   }
   return cell;
+}
+
+PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n) {
+  if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
+  const int ny = lattice == model::LatticeKind::square
+                     ? n
+                     : 6 * std::max(1, static_cast<int>(std::lround(n * geometry.Ly / geometry.Lx / 6.0)));
+  return {n, ny, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
 }
 
 TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Symmetry symmetry) {

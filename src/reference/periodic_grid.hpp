@@ -92,13 +92,20 @@ struct Cell {
   /// For each level from 1 on: whether the node itself is that level's (its surface there
   /// the lowest, or tied).
   std::vector<std::vector<char>> level_node;
-  std::vector<std::size_t> tips;  ///< per site, in the geometry's order: the node of its tip
+  std::vector<std::size_t> tips;  ///< per site, in the geometry's order: the node of its tip (or its image's)
 };
 
 /// The cell of `geometry` on `grid` (its cell must be the geometry's, model::geometry_error
-/// empty, every tip a node, and under Symmetry::mirror every tip at 0 or half the cell along
-/// each axis; else std::invalid_argument naming what is not).
+/// empty, every tip a node, and under Symmetry::mirror the sites even in x and y,
+/// model::mirror_symmetric; else std::invalid_argument naming what is not). Under the
+/// mirror a tip outside the stored quarter is given as its image's node.
 Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
+
+/// The grid of a lattice's cell (model::lattice_cell) with `n` nodes per pitch along x (n
+/// even, >= kMinTwoLevelNodes; two_level_grid_error) and as many along y as keep the nodes
+/// near square with every site's tip a node (the hexagonal cell: a multiple of 6); its
+/// quarter (Symmetry::mirror) where the sites are even (model::mirror_symmetric).
+PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n);
 
 /// The periodic unit cell of the two-level square lattice (docs/model.md, section 3): the
 /// l x l square with the level-1 punch at the corners (0, 0) and the level-2 punch, lower by

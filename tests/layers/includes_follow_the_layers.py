@@ -33,7 +33,7 @@ ALLOWED = {
     "app": {"app", "run", "io", "sweep", "input", "map", "fit", "model", "reference"},
     "python": {"python", "app", "run", "io", "sweep", "input", "map", "fit", "model", "reference"},
 }
-MODEL_PARTS = ["numerics", "problem", "laws", "load", "contact", "paper", "shells", "periodic", "localization", "point"]
+MODEL_PARTS = ["numerics", "problem", "laws", "load", "contact", "paper", "shells", "periodic", "localization", "point", "surface"]
 KNOWN_CYCLES: list[set[str]] = []
 INCLUDE = re.compile(r'^#include "([a-z_0-9]+)/([^"]+)"', re.M)
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace punchsweep::model {
 
@@ -55,6 +56,55 @@ std::string geometry_error(const CellGeometry& g) {
     }
   }
   return {};
+}
+
+bool mirror_symmetric(const CellGeometry& g) {
+  const auto same = [](double a, double b, double L) {
+    const double d = std::fmod(std::abs(a - b), L);
+    return std::min(d, L - d) <= 1e-12 * L;
+  };
+  const auto has = [&](double x, double y, const Site& like) {
+    return std::any_of(g.sites.begin(), g.sites.end(), [&](const Site& o) {
+      return same(o.x, x, g.Lx) && same(o.y, y, g.Ly) && o.shape.s == like.shape.s && o.shape.C == like.shape.C &&
+             o.drop == like.drop && o.level == like.level;
+    });
+  };
+  return std::all_of(g.sites.begin(), g.sites.end(),
+                     [&](const Site& s) { return has(g.Lx - s.x, s.y, s) && has(s.x, g.Ly - s.y, s); });
+}
+
+std::string lattice_name(LatticeKind lattice) { return lattice == LatticeKind::square ? "square" : "hexagonal"; }
+
+CellGeometry lattice_cell(LatticeKind lattice, double l, const Shape& shape, const std::vector<double>& drops) {
+  if (drops.size() > 2) throw std::invalid_argument("lattice_cell: at most two levels below the tallest");
+  CellGeometry g;
+  const auto add = [&](double x, double y, std::size_t level) {
+    g.sites.push_back(Site{x, y, shape, level == 0 ? 0.0 : drops[level - 1], static_cast<int>(level)});
+  };
+  const std::size_t last = std::min<std::size_t>(drops.size(), 2);  // the highest level placed
+  if (lattice == LatticeKind::square) {
+    g.Lx = g.Ly = l;
+    add(0.0, 0.0, 0);
+    if (last >= 1) add(0.5 * l, 0.5 * l, 1);
+    if (last >= 2) {
+      add(0.5 * l, 0.0, 2);
+      add(0.0, 0.5 * l, 2);
+    }
+  } else {
+    const double height = l * std::sqrt(3.0);
+    g.Lx = l;
+    g.Ly = height;
+    add(0.0, 0.0, 0);
+    add(0.5 * l, 0.5 * height, 0);
+    if (last >= 1) {
+      const std::size_t down = last >= 2 ? 2 : 1;
+      add(0.5 * l, height / 6.0, 1);        // upward triangles' centres
+      add(0.0, 4.0 * height / 6.0, 1);
+      add(0.0, 2.0 * height / 6.0, down);   // downward triangles' centres
+      add(0.5 * l, 5.0 * height / 6.0, down);
+    }
+  }
+  return g;
 }
 
 CellGeometry two_level_square(const ContactProblem& problem) {

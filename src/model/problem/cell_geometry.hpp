@@ -40,6 +40,33 @@ struct CellGeometry {
 /// naming the first bad field, its value and its valid range.
 std::string geometry_error(const CellGeometry& geometry);
 
+/// Whether the sites, as a set, are even in x and in y about the cell's corner (0, 0): each
+/// site's mirror images (Lx - x, y) and (x, Ly - y), taken modulo the cell, are sites of the
+/// same shape, drop and level (positions within 1e-12 of the cell). Such a cell's fields
+/// are even, so the boundary elements may solve its quarter.
+bool mirror_symmetric(const CellGeometry& geometry);
+
+/// The lattices a texture's tallest sites may sit on.
+enum class LatticeKind {
+  /// Pitch l: the l x l cell with the tallest site at its corner; level 1 at the square's
+  /// centre (l/2, l/2) (the paper's lattice), level 2 at the edges' midpoints (l/2, 0) and
+  /// (0, l/2).
+  square,
+  /// Pitch l, the densest packing: the l x l sqrt(3) cell with the tallest sites at (0, 0)
+  /// and (l/2, l sqrt(3)/2); level 1 at the centres of the triangles between them (two per
+  /// tallest site); with a level 2, level 1 the centres of the upward triangles and level 2
+  /// those of the downward ones.
+  hexagonal,
+};
+
+/// "square" or "hexagonal".
+std::string lattice_name(LatticeKind lattice);
+
+/// A lattice of punches of one shape: the tallest at the lattice's sites, then one level
+/// per entry of `drops` (at most 2; each its depth below the tallest tip, in R) at the
+/// places Lattice names.
+CellGeometry lattice_cell(LatticeKind lattice, double l, const Shape& shape, const std::vector<double>& drops);
+
 /// The two-level square lattice of `problem` (docs/model.md, section 3): the l x l cell, the
 /// level-1 punch at its corner (0, 0), the level-2 punch, lower by dh, at its centre
 /// (l/2, l/2), both of the problem's shape.

@@ -1,0 +1,63 @@
+#pragma once
+/// @file
+/// A periodic texture in time (docs/model.md, section 17): its elastic load curve
+/// (load_curve.hpp) read at the creep-weighted load X(t) of a material and a load history.
+/// While the contact only grows, the state at t is the elastic state at X(t) (section
+/// 14.1): each level touches where X(t) reaches its touchdown load, and the areas and the
+/// sites in contact are the curve's at X(t). Units: times in the law's unit, X in E0*.
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "model/contact/regime.hpp"
+#include "model/load/creep_weighted_load.hpp"
+#include "model/surface/load_curve.hpp"
+
+namespace punchsweep::model {
+
+/// When one level touches: the classification of docs/model.md section 10 at the level's
+/// touchdown load (immediate, delayed at t*, never).
+struct LevelTouch {
+  Regime regime = Regime::never;
+  double t_star = 0.0;  ///< 0 for immediate, +infinity for never
+  double X_star = 0.0;  ///< the level's touchdown load, in E0*
+  /// Whether the curve resolves the touchdown: X* is 0, +infinity, or at or above the
+  /// curve's first sample (below it the tallest spots span too few nodes).
+  bool resolved = true;
+};
+
+/// Why a snapshot's numbers may not be trusted. The integer codes are the output's contract.
+enum class SurfaceValidity : int {
+  valid = 0,
+  /// X(t) lies below the curve's first sample: the tallest spots span fewer nodes than the
+  /// curve resolves; the areas are extrapolated as an isolated punch's (a finer grid
+  /// answers).
+  below_resolution = 1,
+  /// X(t) lies past the curve's top without full contact.
+  above_top = 2,
+  /// The pressure falls at some node between X(0) and X(t): the contact may recede, which
+  /// the correspondence does not cover (the time-stepping reference does).
+  unloading = 3,
+};
+std::string_view surface_validity_name(SurfaceValidity validity);
+
+/// The texture at one time.
+struct SurfaceSnapshot {
+  double t = 0.0;
+  double X = 0.0;  ///< the creep-weighted load X(t), in E0*
+  CurveState state;
+  SurfaceValidity validity = SurfaceValidity::valid;
+};
+
+/// The texture under a load: each level's touch and the snapshots.
+struct SurfaceHistory {
+  std::vector<LevelTouch> levels;
+  std::vector<SurfaceSnapshot> snapshots;
+};
+
+/// Reads `curve` along `load` at `times` (non-decreasing, >= 0; t = 0 is the state at 0+).
+SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times);
+
+
+}  // namespace punchsweep::model

@@ -1,0 +1,276 @@
+#include "reference/load_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "reference/contact_areas.hpp"
+
+namespace punchsweep::reference {
+
+namespace {
+
+/// One solve of the cell and what the curve keeps of it.
+struct Solved {
+  model::LoadCurveSample sample;
+  std::vector<double> p;        ///< the pressure, to start the next solve from
+  std::vector<double> h;        ///< per site: u(tallest tip) - u(its tip), in R
+  bool full = false;            ///< every node pressed
+};
+
+class CurveBuilder {
+ public:
+  CurveBuilder(const model::CellGeometry& geometry, const Cell& cell, const LoadCurveOptions& options)
+      : geometry_(geometry), cell_(cell), options_(options), solver_(cell.grid, options.solver) {
+    const PeriodicGrid& g = cell.grid;
+    levels_ = geometry.levels();
+    // The reference tip: a tallest site (drop 0, or the least drop).
+    for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+      if (geometry.sites[k].drop < geometry.sites[reference_].drop) reference_ = k;
+    }
+    curve_.cell_area = geometry.Lx * geometry.Ly;
+    curve_.nx = g.nx;
+    curve_.ny = g.ny;
+    for (const model::Site& site : geometry.sites) curve_.site_level.push_back(site.level);
+    curve_.site_touchdown.assign(geometry.sites.size(), std::numeric_limits<double>::infinity());
+    curve_.s_tallest = geometry.sites[reference_].shape.s;
+    // Each level's share of the cell (level 0's what the others leave).
+    curve_.level_share.assign(static_cast<std::size_t>(levels_), 0.0);
+    double rest = 1.0;
+    for (int level = 1; level < levels_; ++level) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < g.size(); ++k) sum += g.multiplicity(k) * cell.level_weight[static_cast<std::size_t>(level - 1)][k];
+      curve_.level_share[static_cast<std::size_t>(level)] = sum / static_cast<double>(g.nodes());
+      rest -= curve_.level_share[static_cast<std::size_t>(level)];
+    }
+    curve_.level_share[0] = rest;
+  }
+
+  model::LoadCurve build() {
+    const double X_start = start_load();
+    // The tallest sites touch at any load; any other that has touched by X_start is found
+    // below it from the uniform start.
+    Solved a = solve(X_start, {});
+    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+      if (geometry_.sites[k].drop <= geometry_.sites[reference_].drop) curve_.site_touchdown[k] = 0.0;
+    }
+    Solved floor;
+    floor.sample.X = X_start * 1e-9;
+    floor.h.assign(geometry_.sites.size(), -std::numeric_limits<double>::infinity());
+    find_touchdowns(floor, a);
+    emit(a);
+    const double step = std::pow(10.0, 1.0 / options_.samples_per_decade);
+    while (!a.full && a.sample.X < options_.X_top) {
+      options_.stop.throw_if_requested();
+      Solved b = solve(std::min(a.sample.X * step, options_.X_top), a.p);
+      if (b.full) {
+        b = first_full(a, b);
+        curve_.X_full = b.sample.X;
+      }
+      // The sites that touch within (a, b], each a knot of the curve.
+      std::vector<double> knots = find_touchdowns(a, b);
+      for (double X : knots) {
+        if (X >= b.sample.X * (1.0 - 1e-12)) continue;
+        Solved knot = solve(X, a.p);  // the bisection's upper end: touched
+        refine(a, knot, 0);
+        a = std::move(knot);
+      }
+      refine(a, b, 0);
+      a = std::move(b);
+    }
+    for (int level = 0; level < levels_; ++level) {
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+        if (geometry_.sites[k].level == level) least = std::min(least, curve_.site_touchdown[k]);
+      }
+      curve_.level_touchdown.push_back(least);
+    }
+    return std::move(curve_);
+  }
+
+ private:
+  /// The load at which each tallest site's spot, as an isolated punch's, covers
+  /// min_spot_nodes nodes: P = K_P a^(s+1) per site.
+  double start_load() const {
+    const PeriodicGrid& g = cell_.grid;
+    const double a = std::sqrt(options_.min_spot_nodes * g.cell_area() / std::numbers::pi);
+    const model::Site& tallest = geometry_.sites[reference_];
+    double count = 0.0;
+    for (const model::Site& site : geometry_.sites) count += site.drop <= tallest.drop ? 1.0 : 0.0;
+    return model::load_coefficient(tallest.shape) * std::pow(a, tallest.shape.s + 1) * count / curve_.cell_area;
+  }
+
+  /// The cell at X from `start` (empty: the uniform field), retried from the uniform field
+  /// where the warm start misses.
+  Solved solve(double X, const std::vector<double>& start) {
+    const PeriodicGrid& g = cell_.grid;
+    Solved s;
+    s.sample.X = X;
+    std::vector<double> u(g.size());
+    s.p = start.empty() ? std::vector<double>(g.size(), 0.0) : start;
+    ContactStatus status = solver_.solve(cell_.profile, X, 1.0, s.p, u);
+    ++solves_;
+    if (!status.converged && !start.empty()) {
+      std::fill(s.p.begin(), s.p.end(), 0.0);
+      status = solver_.solve(cell_.profile, X, 1.0, s.p, u);
+      ++solves_;
+    }
+    if (!status.converged) {
+      throw std::runtime_error("load curve: the contact solve at X = " + std::to_string(X) + " E0* missed its tolerance (residual " +
+                               std::to_string(status.residual) + " after " + std::to_string(status.iterations) + " iterations)");
+    }
+    if (options_.progress) options_.progress(solves_, X);
+    const std::size_t L = static_cast<std::size_t>(levels_);
+    s.sample.level_load.assign(L, 0.0);
+    s.full = true;
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      const double load = g.multiplicity(k) * g.cell_area() * s.p[k];
+      s.full = s.full && s.p[k] > 0.0;
+      double others = 0.0;
+      for (std::size_t level = 1; level < L; ++level) {
+        s.sample.level_load[level] += cell_.level_weight[level - 1][k] * load;
+        others += cell_.level_weight[level - 1][k];
+      }
+      s.sample.level_load[0] += (1.0 - others) * load;
+    }
+    // The areas from the rims of the pressure (an elastic solve's falls as the square root).
+    s.sample.level_area = level_contact_areas(g, cell_.level_weight, s.p, s.p);
+    s.h.resize(geometry_.sites.size());
+    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) s.h[k] = u[cell_.tips[reference_]] - u[cell_.tips[k]];
+    return s;
+  }
+
+  /// Whether site k has touched in state s: its gap, drop - drop of the reference tip,
+  /// closed to 1e-9 of itself (once touched it stays closed to the solve's tolerance).
+  bool touched(const Solved& s, std::size_t k) const {
+    const double gap = geometry_.sites[k].drop - geometry_.sites[reference_].drop;
+    return gap <= 0.0 || s.h[k] >= gap * (1.0 - 1e-9);
+  }
+
+  /// The sites untouched in a and touched in b: each one's touchdown by bisection in log X
+  /// (sites of the same level, drop and shape whose h agree in a and b to 1e-12 share it,
+  /// as symmetric images do). Returns the distinct touchdowns, increasing.
+  std::vector<double> find_touchdowns(const Solved& a, const Solved& b) {
+    std::vector<double> found;
+    std::vector<std::size_t> done;
+    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+      if (touched(a, k)) continue;
+      if (!touched(b, k) || curve_.site_touchdown[k] == 0.0) continue;
+      const model::Site& site = geometry_.sites[k];
+      bool shared = false;
+      for (std::size_t q : done) {
+        const model::Site& other = geometry_.sites[q];
+        const auto close = [](double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y)); };
+        if (other.level == site.level && other.drop == site.drop && other.shape.s == site.shape.s &&
+            other.shape.C == site.shape.C && close(a.h[k], a.h[q]) && close(b.h[k], b.h[q])) {
+          curve_.site_touchdown[k] = curve_.site_touchdown[q];
+          shared = true;
+          break;
+        }
+      }
+      if (shared) continue;
+      double lo = std::log(a.sample.X), hi = std::log(b.sample.X);
+      const bool from_uniform = std::isinf(a.h[k]);
+      while (hi - lo > options_.touchdown_tolerance) {
+        options_.stop.throw_if_requested();
+        const double mid = 0.5 * (lo + hi);
+        const Solved m = solve(std::exp(mid), from_uniform ? std::vector<double>{} : a.p);
+        (touched(m, k) ? hi : lo) = mid;
+      }
+      curve_.site_touchdown[k] = std::exp(hi);
+      found.push_back(std::exp(hi));
+      done.push_back(k);
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+
+  /// The first load of full contact in (a, b], b full: by bisection in log X.
+  Solved first_full(const Solved& a, Solved b) {
+    double lo = std::log(a.sample.X), hi = std::log(b.sample.X);
+    while (hi - lo > options_.touchdown_tolerance) {
+      const double mid = 0.5 * (lo + hi);
+      Solved m = solve(std::exp(mid), a.p);
+      if (m.full) {
+        hi = mid;
+        b = std::move(m);
+      } else {
+        lo = mid;
+      }
+    }
+    return b;
+  }
+
+  /// Whether the curve's reading between a and b (LoadCurve::at) meets the solve m.
+  bool interpolation_holds(const Solved& a, const Solved& m, const Solved& b) const {
+    model::LoadCurve pair;
+    pair.cell_area = curve_.cell_area;
+    pair.samples = {a.sample, b.sample};
+    pair.level_touchdown.assign(static_cast<std::size_t>(levels_), 0.0);
+    pair.level_share = curve_.level_share;
+    pair.X_full = std::numeric_limits<double>::infinity();
+    const model::CurveState s = pair.at(m.sample.X);
+    const double node_area = cell_.grid.cell_area();
+    const double X_area = m.sample.X * curve_.cell_area;
+    for (std::size_t level = 0; level < static_cast<std::size_t>(levels_); ++level) {
+      const double area = m.sample.level_area[level];
+      if (std::abs(s.level_area[level] - area) > options_.area_tolerance * area + 2.0 * node_area) return false;
+      if (std::abs(s.level_load[level] - m.sample.level_load[level]) > options_.load_tolerance * X_area) return false;
+    }
+    return true;
+  }
+
+  /// Adds the samples of (a, b] to the curve: b, after as many midpoints (in log X) as the
+  /// interpolation needs.
+  void refine(const Solved& a, const Solved& b, int depth) {
+    if (depth < options_.max_refinements) {
+      Solved m = solve(std::sqrt(a.sample.X * b.sample.X), a.p);
+      if (!interpolation_holds(a, m, b)) {
+        refine(a, m, depth + 1);
+        refine(m, b, depth + 1);
+        return;
+      }
+    }
+    emit(b);
+  }
+
+  /// Appends a sample, recording whether the pressure grew at every node since the last.
+  void emit(const Solved& s) {
+    if (!curve_.samples.empty()) {
+      double top = 0.0;
+      for (double v : s.p) top = std::max(top, v);
+      bool grew = true;
+      for (std::size_t k = 0; k < s.p.size() && grew; ++k) grew = s.p[k] >= last_p_[k] - 1e-9 * top;
+      curve_.pressure_monotone.push_back(grew ? 1 : 0);
+    }
+    curve_.samples.push_back(s.sample);
+    last_p_ = s.p;
+  }
+
+  const model::CellGeometry& geometry_;
+  const Cell& cell_;
+  LoadCurveOptions options_;
+  ContactSolver solver_;
+  int levels_ = 0;
+  std::size_t reference_ = 0;
+  int solves_ = 0;
+  std::vector<double> last_p_;
+  model::LoadCurve curve_;
+};
+
+}  // namespace
+
+model::LoadCurve build_load_curve(const model::CellGeometry& geometry, const Cell& cell, const LoadCurveOptions& options) {
+  if (!(options.X_top > 0.0) || options.min_spot_nodes < 1 || options.samples_per_decade < 1 ||
+      !(options.area_tolerance > 0.0) || !(options.load_tolerance > 0.0) || options.max_refinements < 0 ||
+      !(options.touchdown_tolerance > 0.0)) {
+    throw std::invalid_argument("build_load_curve: X_top > 0, min_spot_nodes, samples_per_decade >= 1, tolerances > 0");
+  }
+  if (cell.tips.size() != geometry.sites.size()) throw std::invalid_argument("build_load_curve: the cell is not the geometry's");
+  return CurveBuilder(geometry, cell, options).build();
+}
+
+}  // namespace punchsweep::reference

@@ -1,0 +1,155 @@
+// The elastic load curve of a periodic texture (reference/load_curve.hpp) and its reading
+// (model/surface/load_curve.hpp), against closed forms (an isolated punch), the direct
+// bisection of each level's touchdown (reference/cell_touchdown.hpp, another code path),
+// and the curve's own invariants.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "model/problem/cell_geometry.hpp"
+#include "model/problem/shape.hpp"
+#include "model/surface/load_curve.hpp"
+#include "reference/cell_touchdown.hpp"
+#include "reference/load_curve.hpp"
+#include "reference/periodic_grid.hpp"
+
+using namespace punchsweep;
+using model::LatticeKind;
+
+namespace {
+
+model::LoadCurve curve_of(const model::CellGeometry& g, LatticeKind lattice, int n, double X_top) {
+  reference::LoadCurveOptions options;
+  options.X_top = X_top;
+  return reference::build_load_curve(g, reference::make_cell(g, reference::lattice_grid(g, lattice, n)), options);
+}
+
+}  // namespace
+
+// A cap far from its neighbours (a / l = 0.1) is the isolated punch: P = K_P a^(s+1)
+// (Hertz, 4 a^3 / 3, for s = 2, C = 1/2), its area pi a^2. The lattice adds a displacement
+// that is nearly uniform over the spot; the grid error falls with the spot's nodes.
+// Measured: s = 2 off by 2.4e-2 at 6.4 node spacings across the radius, 5.9e-3 at 12.8
+// (second order: Richardson's estimate of the rest, the lattice's correction, -1.5e-4);
+// s = 3 by 2.3e-2 and 8.6e-3.
+TEST(LoadCurve, a_lone_cap_has_the_isolated_punch_area) {
+  for (const model::Shape shape : {model::Shape{2, 0.5}, model::Shape{3, 0.7}}) {
+    const double l = 4.0, a = 0.4;
+    const double X = model::load_coefficient(shape) * std::pow(a, shape.s + 1) / (l * l);
+    const model::CellGeometry g = model::lattice_cell(LatticeKind::square, l, shape, {});
+    double error[2];
+    int k = 0;
+    for (const int n : {64, 128}) {
+      const model::LoadCurve c = curve_of(g, LatticeKind::square, n, 2.0 * X);
+      const double area = c.at(X).level_area[0];
+      error[k++] = area / (std::numbers::pi * a * a) - 1.0;
+      std::printf("s = %d: a = %.2f R (%.1f spacings at n = %d): area %.6g against pi a^2 %.6g (%.2e)\n", shape.s, a,
+                  a * n / l, n, area, std::numbers::pi * a * a, error[k - 1]);
+    }
+    EXPECT_LT(std::abs(error[1]), 1e-2) << "s = " << shape.s;
+    EXPECT_LT(std::abs(error[1]), std::abs(error[0])) << "s = " << shape.s << ": the error falls with the grid";
+  }
+}
+
+// Each level's touchdown on the curve (bisection on each site's gap within the march's
+// bracket, warm-started) equals the direct bisection of cell_touchdown (from the uniform
+// field, on the level's first site) on the same grid, for three levels on the square
+// lattice and two and three on the hexagonal one; its change from one grid to the next is
+// what the grid leaves.
+TEST(LoadCurve, every_levels_touchdown_is_the_direct_solves) {
+  struct Case {
+    LatticeKind lattice;
+    std::vector<double> drops;
+    double l;
+  };
+  for (const Case& c : {Case{LatticeKind::square, {0.03, 0.05}, 0.75}, Case{LatticeKind::hexagonal, {0.05}, 1.2},
+                        Case{LatticeKind::hexagonal, {0.05, 0.08}, 1.2}}) {
+    const model::CellGeometry g = model::lattice_cell(c.lattice, c.l, model::Shape{2, 0.5}, c.drops);
+    std::vector<double> coarse;
+    for (const int n : {48, 96}) {
+      const reference::Cell cell = reference::make_cell(g, reference::lattice_grid(g, c.lattice, n));
+      reference::LoadCurveOptions options;
+      options.X_top = 0.2;
+      const model::LoadCurve curve = reference::build_load_curve(g, cell, options);
+      const std::vector<double> direct = reference::level_touchdowns(g, cell, 0.2, 1e-8);
+      for (int level = 1; level < g.levels(); ++level) {
+        const double X = curve.level_touchdown[static_cast<std::size_t>(level)];
+        std::printf("%s, %zu levels, n = %d: level %d touches at %.8g, direct %.8g", model::lattice_name(c.lattice).c_str(),
+                    c.drops.size() + 1, n, level, X, direct[static_cast<std::size_t>(level)]);
+        if (n == 96) std::printf(" (grid change %.1e)", std::abs(X / coarse[static_cast<std::size_t>(level - 1)] - 1.0));
+        std::printf("\n");
+        EXPECT_NEAR(X, direct[static_cast<std::size_t>(level)], 2e-6 * X) << "level " << level << ", n = " << n;
+        if (n == 48) coarse.push_back(X);
+        if (n == 96) {
+          EXPECT_NEAR(X, coarse[static_cast<std::size_t>(level - 1)], 2e-2 * X);
+        }
+      }
+      EXPECT_LT(curve.level_touchdown[1], curve.level_touchdown.back() * (1.0 + 1e-12));
+    }
+  }
+}
+
+// Invariants: loads sum to X Lx Ly at every sample; a level has no area before its
+// touchdown; past full contact the areas are the levels' shares and extra load spreads by
+// them; the sites' share touched counts the sites whose touchdown is passed.
+TEST(LoadCurve, reads_keep_the_balance_and_the_contact_rules) {
+  const model::CellGeometry g = model::lattice_cell(LatticeKind::hexagonal, 1.2, model::Shape{2, 0.5}, {0.05});
+  const model::LoadCurve c = curve_of(g, LatticeKind::hexagonal, 48, std::numeric_limits<double>::infinity());
+  ASSERT_EQ(model::load_curve_error(c), "");
+  ASSERT_TRUE(std::isfinite(c.X_full));
+  for (const model::LoadCurveSample& s : c.samples) {
+    EXPECT_NEAR(s.level_load[0] + s.level_load[1], s.X * c.cell_area, 1e-9 * s.X * c.cell_area);
+  }
+  EXPECT_NEAR(c.level_share[0] + c.level_share[1], 1.0, 1e-12);
+  const double X1 = c.level_touchdown[1];
+  EXPECT_EQ(c.at(0.999 * X1).level_area[1], 0.0);
+  EXPECT_GT(c.at(1.01 * X1).level_area[1], 0.0);
+  EXPECT_DOUBLE_EQ(c.at(0.999 * X1).sites_touched, 2.0 / 6.0);  // the two tallest of six sites
+  EXPECT_DOUBLE_EQ(c.at(1.001 * X1).sites_touched, 1.0);
+  const model::CurveState full = c.at(2.0 * c.X_full);
+  EXPECT_EQ(full.range, model::CurveRange::full_contact);
+  EXPECT_NEAR(full.area_fraction, 1.0, 1e-12);
+  EXPECT_NEAR(full.level_load[0] + full.level_load[1], 2.0 * c.X_full * c.cell_area, 1e-9 * c.X_full * c.cell_area);
+  EXPECT_NEAR(full.level_load[1] - c.samples.back().level_load[1], c.X_full * c.level_share[1] * c.cell_area,
+              1e-12 * c.X_full * c.cell_area);
+  // Below the first sample the areas scale as the isolated punch's, X^(2/(s+1)).
+  const model::CurveState low = c.at(0.125 * c.X_first());
+  EXPECT_EQ(low.range, model::CurveRange::below_resolution);
+  EXPECT_NEAR(low.level_area[0], c.samples.front().level_area[0] * std::pow(0.125, 2.0 / 3.0), 1e-12);
+}
+
+// The hexagonal lattice's cell: l x l sqrt(3), two tallest sites, the triangles' centres; even
+// (its quarter solves it) with two levels, not with three (the upward and downward centres
+// swap under the mirror).
+TEST(LoadCurve, the_lattices_place_their_sites) {
+  const model::CellGeometry two = model::lattice_cell(LatticeKind::hexagonal, 1.0, model::Shape{2, 0.5}, {0.1});
+  EXPECT_EQ(two.sites.size(), 6u);
+  EXPECT_DOUBLE_EQ(two.Ly, std::sqrt(3.0));
+  EXPECT_TRUE(model::mirror_symmetric(two));
+  EXPECT_EQ(model::geometry_error(two), "");
+  // Every centre is l / sqrt(3) from its three nearest tallest sites.
+  for (const model::Site& s : two.sites) {
+    if (s.level == 0) continue;
+    int near = 0;
+    for (const model::Site& t : two.sites) {
+      if (t.level != 0) continue;
+      for (int dx = -1; dx <= 1; ++dx) {
+        for (int dy = -1; dy <= 1; ++dy) {
+          near += std::abs(std::hypot(s.x - t.x - dx * two.Lx, s.y - t.y - dy * two.Ly) - 1.0 / std::sqrt(3.0)) < 1e-12;
+        }
+      }
+    }
+    EXPECT_EQ(near, 3) << "site at (" << s.x << ", " << s.y << ")";
+  }
+  const model::CellGeometry three = model::lattice_cell(LatticeKind::hexagonal, 1.0, model::Shape{2, 0.5}, {0.1, 0.2});
+  EXPECT_EQ(three.levels(), 3);
+  EXPECT_FALSE(model::mirror_symmetric(three));
+  EXPECT_EQ(reference::lattice_grid(three, LatticeKind::hexagonal, 64).symmetry, reference::Symmetry::none);
+  EXPECT_EQ(reference::lattice_grid(three, LatticeKind::hexagonal, 64).ny % 6, 0);
+  const model::CellGeometry square = model::lattice_cell(LatticeKind::square, 1.0, model::Shape{2, 0.5}, {0.1, 0.2});
+  EXPECT_TRUE(model::mirror_symmetric(square));
+  EXPECT_EQ(square.sites.size(), 4u);
+  EXPECT_THROW(model::lattice_cell(LatticeKind::square, 1.0, model::Shape{2, 0.5}, {0.1, 0.2, 0.3}), std::invalid_argument);
+}
