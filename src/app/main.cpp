@@ -8,6 +8,7 @@
 #include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
+#include "app/surface_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/periodic_tables.hpp"
 #include "app/tables_command.hpp"
@@ -30,7 +31,9 @@ constexpr const char* kTopHelp =
     "  tables     the periodic model's tables: shipped for s = 1, 2, 3, built and cached for others\n"
     "  fit        a material file from DMA isotherms or a relaxation test (Prony series, WLF)\n"
     "  design     the window of dh that meets requirements ('touch within 1s at 30kPa', 'never at\n"
-    "             5kPa') at every temperature of a range and corner of a tolerance box\n\n"
+    "             5kPa') at every temperature of a range and corner of a tolerance box\n"
+    "  surface    a square or hexagonal texture of two or three levels: each level's touch and\n"
+    "             the contact areas in time, from its cell's elastic load curve\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -62,8 +65,9 @@ int main(int argc, char** argv) {
     if (args[0] == "tables") return punchsweep::app::run_tables_command(rest, std::cout);
     if (args[0] == "fit") return punchsweep::app::run_fit_command(rest, std::cout);
     if (args[0] == "design") return punchsweep::app::run_design_command(rest, std::cout);
+    if (args[0] == "surface") return punchsweep::app::run_surface_command(rest, std::cout);
     throw punchsweep::input::UsageError("unknown command '" + args[0] +
-                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit, design; see punchsweep --help)");
+                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit, design, surface; see punchsweep --help)");
   } catch (const punchsweep::input::UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::input::kUsageExitCode;

@@ -23,6 +23,7 @@
 
 #include "input/command_options.hpp"
 #include "app/design_command.hpp"
+#include "app/surface_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
@@ -550,6 +551,8 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep fit of (option name, value text) pairs: the fit's JSON, report and material text");
   m.def("design", &app::design_json, py::arg("keywords"),
         "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
+  m.def("surface", &app::surface_json, py::arg("keywords"),
+        "punchsweep surface of (option name, value text) pairs, in-process: its JSON text");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
         py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"), py::arg("quantities"),
         "the map's per-point quantities (those named in quantities; all where it is empty) of equal-sized 1-D "

@@ -43,7 +43,7 @@ except ImportError as error:  # the package's Python files without its compiled 
                       "it with `cmake --build build --target punchsweep_python` (bash jobs/local.sh and "
                       "bash tests/run-all.sh do)") from None
 
-__all__ = ["point", "reference", "design", "classify", "open_map", "fit_material", "Material", "PointResult",
+__all__ = ["point", "reference", "design", "surface", "classify", "open_map", "fit_material", "Material", "PointResult",
            "ReferenceResult", "FitResult", "Classification", "REGIMES"]
 
 #: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
@@ -226,6 +226,28 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
     keywords = [("require", text) for text in requirements] + _keywords(
         dict(material=material, R=R, l=l, s=s, C=C, temperature=temperature, tolerance=tolerance, **options))
     return json.loads(_core.design(keywords))
+
+
+def surface(l: float | str | None = None, dh: float | str | None = None, *, lattice: str | None = None,
+            dh2: float | str | None = None, T: float | None = None, pbar: float | None = None,
+            s: int | None = None, C: float | None = None, times: Iterable[float] | str | None = None,
+            grid: int | None = None, material: str | None = None, temperature: float | str | None = None,
+            pressure: str | None = None, ramp: float | str | None = None, load_table: str | None = None,
+            **options: Any) -> dict:
+    """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
+    two levels, or three with dh2, under a material and a load, from its cell's elastic load
+    curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
+    dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
+    area_fraction, sites_touched, area_0 ... as numpy arrays; valid and reason per time),
+    curve, cell, grid, units. ValueError with the command's message for bad input."""
+    material = None if material is None else os.fspath(material)
+    keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
+                              grid=grid, material=material, temperature=temperature, pressure=pressure,
+                              ramp=ramp, load_table=load_table, **options))
+    out = json.loads(_core.surface(keywords))
+    out["series"] = {k: (np.array(v) if k not in ("valid", "reason") else v) for k, v in out["series"].items()}
+    out["series"]["valid"] = np.array(out["series"]["valid"], dtype=bool)
+    return out
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,250 @@
+#include "app/surface_command.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "input/usage_error.hpp"
+#include "reference/load_curve.hpp"
+#include "reference/periodic_grid.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: punchsweep surface --lattice square|hexagonal --l L --dh DH [--dh2 DH2] --T T --pbar P --s S [options]";
+
+/// The grid's range (nodes per pitch), and --grid auto's: the least nodes that give the
+/// smallest spot the times meet a radius of kAutoSpotRadius node spacings, within
+/// [kAutoMin, kAutoMax] (past it the snapshots below the curve's resolution are flagged).
+constexpr int kMaxGrid = 2048;
+constexpr int kAutoMin = 64;
+constexpr int kAutoMax = 512;
+constexpr double kAutoSpotRadius = 12.0;
+
+po::options_description surface_options(const input::PointMaterial& material) {
+  po::options_description opts(
+      "punchsweep surface: when each level of a periodic texture touches a creeping material, and\n"
+      "the contact areas in time, from the elastic load curve of the texture's cell (boundary\n"
+      "elements continued from first to full contact; docs/model.md, section 17).\n\n"
+      "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), areas in R^2, time in\n"
+      "T_eps (creep time), or in the material file's time_unit.\n\nOptions");
+  input::add_point_options(opts, material.spec);
+  input::add_material_options(opts);
+  opts.add_options()
+      ("lattice", po::value<std::string>()->value_name("KIND")->default_value("square"),
+       "square: level 1 at the squares' centres, level 2 at the edges' midpoints; hexagonal: the "
+       "densest packing, level 1 at the triangles' centres (with --dh2: the upward ones, level 2 the "
+       "downward ones)")
+      ("dh2", po::value<std::string>()->value_name("DH2"),
+       "a third level, this far below the tallest tips (R, or a length with --R); >= 0")
+      ("grid", po::value<std::string>()->value_name("N")->default_value("auto"),
+       "boundary-element nodes per pitch: an even integer in [4, 2048], or auto (the smallest spot the "
+       "times meet spans a radius of 12 nodes; 64 to 512)")
+      ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
+       "output format: table, json or csv");
+  return opts;
+}
+
+SurfaceRun read_surface(const po::variables_map& vm, const input::PointMaterial& material) {
+  SurfaceRun run;
+  run.inputs = input::read_point_inputs(vm, material);
+  run.times = input::read_times(vm, run.inputs.scales);
+  run.lattice = input::read_choice(vm, "lattice", {"square", "hexagonal"}) == "square" ? model::LatticeKind::square
+                                                                                       : model::LatticeKind::hexagonal;
+  std::vector<double> drops{run.inputs.problem.dh};
+  if (vm.count("dh2")) {
+    // --dh2 is dh's parameter under its own name: the same range and units.
+    model::Parameter dh2 = *std::find_if(run.inputs.values.begin(), run.inputs.values.end(), [](const auto& v) {
+                              return v.first->name == "dh";
+                            })->first;
+    dh2.name = "dh2";
+    dh2.range = "dh2 >= 0 (in R)";
+    drops.push_back(input::read_parameter(vm, dh2, &run.inputs.scales));
+  }
+  const std::string grid = vm["grid"].as<std::string>();
+  if (grid != "auto") {
+    const std::string range = "an even integer in [4, " + std::to_string(kMaxGrid) + "], or auto";
+    try {
+      std::size_t used = 0;
+      run.grid_nodes = std::stoi(grid, &used);
+      if (used != grid.size()) run.grid_nodes = -1;
+    } catch (const std::exception&) {
+      run.grid_nodes = -1;
+    }
+    if (run.grid_nodes < 4 || run.grid_nodes > kMaxGrid || run.grid_nodes % 2 != 0) {
+      throw input::UsageError("--grid = " + grid + " is outside its range: " + range);
+    }
+  }
+  run.geometry = model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
+  return run;
+}
+
+/// --grid auto: nodes per pitch that give the tallest sites' spot, as an isolated punch's, a
+/// radius of kAutoSpotRadius spacings at the least positive load the times meet.
+int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
+  double X = std::numeric_limits<double>::infinity();
+  for (const double t : run.times) {
+    const double x = t > 0.0 ? load(t) : load.initial();
+    if (x > 0.0) X = std::min(X, x);
+  }
+  if (!std::isfinite(X)) return kAutoMin;
+  double count = 0.0;
+  for (const model::Site& site : run.geometry.sites) count += site.drop == 0.0 ? 1.0 : 0.0;
+  const model::Shape& shape = run.geometry.sites.front().shape;
+  const double a = std::pow(X * run.geometry.Lx * run.geometry.Ly / count / model::load_coefficient(shape), 1.0 / (shape.s + 1));
+  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / a / 2.0) * 2.0;
+  return static_cast<int>(std::clamp(n, static_cast<double>(kAutoMin), static_cast<double>(kAutoMax)));
+}
+
+/// The curve as far as the times reach, and the history on it.
+void evaluate(SurfaceRun& run, bool progress) {
+  const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+  if (run.grid_nodes == 0) run.grid_nodes = auto_grid(run, load);
+  const reference::PeriodicGrid grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes);
+  const reference::Cell cell = reference::make_cell(run.geometry, grid);
+  reference::LoadCurveOptions options;
+  // A little past the largest load the material reaches, X(inf): a level untouched there
+  // never touches. Under unlimited creep (X(inf) infinite) to full contact, where every
+  // level has touched: each level's t* is then known whatever the times.
+  options.X_top = 1.05 * load.final();
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  if (progress) {
+    options.progress = [&](int solves, double X) {
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - last).count() < 2.0) return;
+      last = now;
+      std::cerr << "punchsweep surface: load curve, " << solves << " solves, X = " << X << " of " << options.X_top
+                << " E0*\n";
+    };
+  }
+  run.curve = reference::build_load_curve(run.geometry, cell, options);
+  run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.history = model::surface_history(run.curve, load, run.times);
+}
+
+std::string num(double v) { return input::json_number(v); }
+
+void write_json(std::ostream& out, const SurfaceRun& run) {
+  const int L = run.curve.levels();
+  out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
+  out << "  \"lattice\": " << input::json_string(model::lattice_name(run.lattice)) << ",\n";
+  out << "  \"cell\": [" << num(run.geometry.Lx) << ", " << num(run.geometry.Ly) << "],\n";
+  out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
+  out << "  \"curve\": {\"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
+      << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
+      << ", \"seconds\": " << num(run.curve_seconds) << "},\n";
+  out << "  \"levels\": [";
+  for (int level = 0; level < L; ++level) {
+    const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
+    double drop = 0.0;
+    int sites = 0;
+    for (const model::Site& site : run.geometry.sites) {
+      if (site.level == level) {
+        drop = site.drop;
+        ++sites;
+      }
+    }
+    out << (level ? ",\n    " : "\n    ") << "{\"level\": " << level << ", \"drop\": " << num(drop)
+        << ", \"sites\": " << sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
+        << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
+        << ", \"resolved\": " << (touch.resolved ? "true" : "false")
+        << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]) << "}";
+  }
+  out << "\n  ],\n  \"series\": {\n";
+  const auto series = [&](const char* name, auto value, bool last = false) {
+    out << "    \"" << name << "\": [";
+    for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) out << (k ? ", " : "") << value(run.history.snapshots[k]);
+    out << "]" << (last ? "\n" : ",\n");
+  };
+  series("t", [](const model::SurfaceSnapshot& s) { return num(s.t); });
+  series("X", [](const model::SurfaceSnapshot& s) { return num(s.X); });
+  series("area_fraction", [](const model::SurfaceSnapshot& s) { return num(s.state.area_fraction); });
+  series("sites_touched", [](const model::SurfaceSnapshot& s) { return num(s.state.sites_touched); });
+  for (int level = 0; level < L; ++level) {
+    const std::string name = "area_" + std::to_string(level);
+    series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.state.level_area[static_cast<std::size_t>(level)]); });
+  }
+  series("valid", [](const model::SurfaceSnapshot& s) { return s.validity == model::SurfaceValidity::valid ? "true" : "false"; });
+  series("reason", [](const model::SurfaceSnapshot& s) { return input::json_string(std::string(model::surface_validity_name(s.validity))); }, true);
+  out << "  },\n  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
+      << ", \"X\": \"E0*\", \"area\": \"R^2\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
+}
+
+void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
+  const int L = run.curve.levels();
+  const char* sep = csv ? "," : "  ";
+  out << (csv ? "# " : "") << "punchsweep surface: " << model::lattice_name(run.lattice) << " lattice, "
+      << run.inputs.describe() << "\n";
+  if (run.inputs.material) out << (csv ? "# " : "  ") << "material: " << run.inputs.material->describe() << "\n";
+  out << (csv ? "# " : "  ") << "load curve: " << run.curve.nx << " x " << run.curve.ny << " nodes, "
+      << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
+      << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s\n";
+  for (int level = 0; level < L; ++level) {
+    const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
+    out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);
+    if (t.regime == model::Regime::delayed) out << " at t* = " << t.t_star << " " << run.inputs.time_unit;
+    if (!t.resolved) {
+      out << " (touches at X* = " << t.X_star << " E0*, below the curve's resolution: a finer --grid answers)\n";
+    } else if (std::isfinite(t.X_star)) {
+      out << " (touches at X* = " << t.X_star << " E0*)\n";
+    } else {
+      out << " (untouched up to X = " << run.curve.X_last() << " E0*, past X(inf))\n";
+    }
+  }
+  out << "t" << sep << "X" << sep << "area_fraction" << sep << "sites_touched";
+  for (int level = 0; level < L; ++level) out << sep << "area_" << level;
+  out << sep << "valid\n";
+  for (const model::SurfaceSnapshot& s : run.history.snapshots) {
+    out << s.t << sep << s.X << sep << s.state.area_fraction << sep << s.state.sites_touched;
+    for (double a : s.state.level_area) out << sep << a;
+    out << sep << model::surface_validity_name(s.validity) << "\n";
+  }
+}
+
+}  // namespace
+
+int run_surface_command(const std::vector<std::string>& args, std::ostream& out) {
+  const input::PointMaterial material = input::find_point_material(args);
+  const po::options_description opts = surface_options(material);
+  const po::variables_map vm = input::parse_command(args, opts, "surface");
+  if (vm.count("help")) {
+    out << kUsage << "\n\n" << opts << "\n"
+        << "Example: punchsweep surface --lattice hexagonal --l 1.2 --dh 0.05 --T 2.5 --pbar 0.02 --s 2 --format json\n"
+        << "Exit codes: 0 success (a flagged snapshot is still a success: see 'valid'), 2 bad input.\n";
+    return 0;
+  }
+  SurfaceRun run = read_surface(vm, material);
+  const std::string format = input::read_choice(vm, "format", {"table", "json", "csv"});
+  evaluate(run, true);
+  if (format == "json") {
+    write_json(out, run);
+  } else {
+    write_table(out, run, format == "csv");
+  }
+  return 0;
+}
+
+SurfaceRun evaluate_surface(const input::Keywords& keywords) {
+  const input::PointMaterial material = input::find_point_material(keywords);
+  SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
+  evaluate(run, false);
+  return run;
+}
+
+std::string surface_json(const input::Keywords& keywords) {
+  std::ostringstream out;
+  write_json(out, evaluate_surface(keywords));
+  return out.str();
+}
+
+}  // namespace punchsweep::app

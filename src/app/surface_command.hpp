@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// `punchsweep surface`: a periodic texture (a square or hexagonal lattice of two or three
+/// levels) under a material and a load history, from the elastic load curve of its cell
+/// (docs/model.md, section 17): each level's touch (immediate, delayed t*, never), the areas
+/// and the sites in contact in time.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "input/command_options.hpp"
+#include "model/problem/cell_geometry.hpp"
+#include "model/surface/load_curve.hpp"
+#include "model/surface/surface_history.hpp"
+
+namespace punchsweep::app {
+
+/// One texture evaluated: its inputs, geometry, curve and history.
+struct SurfaceRun {
+  input::PointInputs inputs;
+  model::LatticeKind lattice = model::LatticeKind::square;
+  model::CellGeometry geometry;
+  std::vector<double> times;
+  int grid_nodes = 0;  ///< nodes per pitch
+  model::LoadCurve curve;
+  model::SurfaceHistory history;
+  double curve_seconds = 0.0;
+};
+
+/// `punchsweep surface ...`; returns the exit code, throws UsageError for bad input (before
+/// printing anything).
+int run_surface_command(const std::vector<std::string>& args, std::ostream& out);
+
+/// The texture of `punchsweep surface` given as keywords (Python's), evaluated by the
+/// command's own options, checks and code.
+SurfaceRun evaluate_surface(const input::Keywords& keywords);
+
+/// The same, as the command's JSON text (what `--format json` prints): Python's surface().
+std::string surface_json(const input::Keywords& keywords);
+
+}  // namespace punchsweep::app
