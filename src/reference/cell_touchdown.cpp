@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/contact_areas.hpp"
+
 namespace punchsweep::reference {
 
 namespace {
@@ -24,17 +26,7 @@ CellState cell_state(const model::CellGeometry& geometry, const Cell& cell, Cont
   s.X = X;
   s.status = solver.solve(cell.profile, X, 1.0, p, u);
   const int levels = geometry.levels();
-  s.level_load.assign(static_cast<std::size_t>(levels), 0.0);
-  for (std::size_t k = 0; k < g.size(); ++k) {
-    const double load = g.multiplicity(k) * p[k] * g.cell_area();
-    double rest = load;
-    for (int level = 1; level < levels; ++level) {
-      const double part = cell.level_weight[static_cast<std::size_t>(level - 1)][k] * load;
-      s.level_load[static_cast<std::size_t>(level)] += part;
-      rest -= part;
-    }
-    s.level_load[0] += rest;
-  }
+  s.level_load = level_loads(g, cell.level_weight, p);
   const std::vector<std::size_t> first = first_sites(geometry);
   s.h.assign(static_cast<std::size_t>(levels), 0.0);
   for (int level = 1; level < levels; ++level) {

@@ -60,4 +60,20 @@ std::vector<double> level_contact_areas(const PeriodicGrid& g, const std::vector
   return area;
 }
 
+std::vector<double> level_loads(const PeriodicGrid& g, const std::vector<std::vector<double>>& level_weight,
+                                std::span<const double> p) {
+  std::vector<double> load(level_weight.size() + 1, 0.0);
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    const double m = g.multiplicity(k);  // 1 on a whole grid: the plain sums
+    double others = 0.0;
+    for (std::size_t level = 0; level < level_weight.size(); ++level) {
+      load[level + 1] += m * (level_weight[level][k] * p[k]);
+      others += level_weight[level][k];
+    }
+    load[0] += m * ((1.0 - others) * p[k]);
+  }
+  for (double& q : load) q *= g.cell_area();
+  return load;
+}
+
 }  // namespace punchsweep::reference

@@ -27,4 +27,11 @@ namespace punchsweep::reference {
 std::vector<double> level_contact_areas(const PeriodicGrid& grid, const std::vector<std::vector<double>>& level_weight,
                                         std::span<const double> p, std::span<const double> rims);
 
+/// The load each level carries under the pressure p, in R^2 E0*: the sum over the nodes of
+/// the pressure times each level's share of the node's square (`level_weight` as for
+/// level_contact_areas; level 0 what the others leave), times the square's area. One load
+/// per level (level_weight.size() + 1); they sum to the mean pressure times the cell.
+std::vector<double> level_loads(const PeriodicGrid& grid, const std::vector<std::vector<double>>& level_weight,
+                                std::span<const double> p);
+
 }  // namespace punchsweep::reference

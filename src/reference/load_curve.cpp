@@ -122,19 +122,8 @@ class CurveBuilder {
                                std::to_string(status.residual) + " after " + std::to_string(status.iterations) + " iterations)");
     }
     if (options_.progress) options_.progress(solves_, X);
-    const std::size_t L = static_cast<std::size_t>(levels_);
-    s.sample.level_load.assign(L, 0.0);
-    s.full = true;
-    for (std::size_t k = 0; k < g.size(); ++k) {
-      const double load = g.multiplicity(k) * g.cell_area() * s.p[k];
-      s.full = s.full && s.p[k] > 0.0;
-      double others = 0.0;
-      for (std::size_t level = 1; level < L; ++level) {
-        s.sample.level_load[level] += cell_.level_weight[level - 1][k] * load;
-        others += cell_.level_weight[level - 1][k];
-      }
-      s.sample.level_load[0] += (1.0 - others) * load;
-    }
+    s.sample.level_load = level_loads(g, cell_.level_weight, s.p);
+    s.full = std::all_of(s.p.begin(), s.p.end(), [](double v) { return v > 0.0; });
     // The areas from the rims of the pressure (an elastic solve's falls as the square root).
     s.sample.level_area = level_contact_areas(g, cell_.level_weight, s.p, s.p);
     s.h.resize(geometry_.sites.size());

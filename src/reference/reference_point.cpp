@@ -132,14 +132,9 @@ ReferenceSnapshot measure_state(const TwoLevelCell& cell, std::span<const double
                                 std::span<const double> rims, std::span<const double> u, double t) {
   ReferenceSnapshot s;
   s.t = t;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double m = cell.grid.multiplicity(i);  // 1 on a whole grid: the plain sums
-    const double w2 = cell.level2_weight[i];
-    s.P1 += m * ((1.0 - w2) * p[i]);
-    s.P2 += m * (w2 * p[i]);
-  }
-  s.P1 *= cell.grid.cell_area();
-  s.P2 *= cell.grid.cell_area();
+  const std::vector<double> loads = level_loads(cell.grid, {cell.level2_weight}, p);
+  s.P1 = loads[0];
+  s.P2 = loads[1];
   const ContactAreas areas = contact_areas(cell, p, rims);
   s.area1 = areas.level1;
   s.area2 = areas.level2;
