@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "reference/contact_areas.hpp"
+#include "reference/step_sizer.hpp"
 #include "reference/viscoelastic_stepper.hpp"
 
 namespace punchsweep::reference {
@@ -19,68 +20,6 @@ namespace {
 double tip2_gap(const TwoLevelCell& cell, const ViscoelasticStepper& stepper) {
   return cell.profile[cell.tip2] + stepper.displacement()[cell.tip2] - stepper.approach();
 }
-
-/// The step lengths of StepControl: the fixed ladder, or steps of equal growth of the creep
-/// compliance.
-class StepSizer {
- public:
-  static constexpr double kSaturated = 1e-3;
-  static constexpr double kSettled = 40.0;
-
-  StepSizer(const StepControl& control, const model::CreepLaw& creep, double rise_time)
-      : control_(control), creep_(creep), rise_(rise_time), ladder_(control.first_step) {}
-
-  /// The length of the step from t (a caller may shorten it to land on a snapshot or a kink).
-  double step(double t) const {
-    if (control_.creep_growth == 0.0) return ladder_;
-    // Under a held load the contact set at t is the elastic one at J(t): steps of equal
-    // growth of log J are steps of equal change of the contact. J is non-decreasing, so
-    // the step is found by doubling, then halving, on it.
-    const double J = creep_.creep(t);
-    const double target = J * (1.0 + control_.creep_growth);
-    // Once J is within a thousandth of a step's growth of J(inf), the contact set is the
-    // long-term one to far better than a step's accuracy and no longer changes: one step
-    // to the end, however far (to t = 1e12 as cheaply as to t = 10).
-    if (t >= rise_ && creep_.creep_final() <= J * (1.0 + kSaturated * control_.creep_growth)) {
-      return std::numeric_limits<double>::infinity();
-    }
-    // The cap resolves the retardation times; once they have died out (t beyond
-    // kSettled max_step, max_step being the longest of them) only J's own growth (a
-    // dashpot's, a power law's) sizes the steps, so their number grows as log t.
-    const double cap = t > kSettled * control_.max_step ? std::numeric_limits<double>::infinity() : control_.max_step;
-    double h = control_.first_step;
-    while (h < cap && creep_.creep(t + 2.0 * h) <= target) h *= 2.0;
-    double lo = h, hi = 2.0 * h;
-    for (int k = 0; k < 8 && creep_.creep(t + lo) <= target; ++k) {  // (none when first_step overshoots)
-      const double mid = 0.5 * (lo + hi);
-      (creep_.creep(t + mid) <= target ? lo : hi) = mid;
-    }
-    h = std::min(lo, cap);
-    // While the load rises the contact is not J's alone: the ladder's lengths bound it.
-    return t < rise_ ? std::min(h, ladder_) : h;
-  }
-
-  /// The end of the step from t towards `end` (a snapshot time or a kink of the load): a
-  /// step of step(t), or `end` itself when it is at most 1.25 steps away, or half the way
-  /// when it is at most two (no sliver of a step before a snapshot). The ladder keeps its
-  /// lengths and only ever shortens a step to land.
-  double next(double t, double end) const {
-    const double h = step(t);
-    const double remaining = end - t;
-    if (control_.creep_growth == 0.0) return std::min(t + h, end);
-    if (remaining <= 1.25 * h) return end;
-    return remaining < 2.0 * h ? t + 0.5 * remaining : t + h;
-  }
-
-  /// A step was taken: the ladder grows.
-  void accepted() { ladder_ = std::min(ladder_ * control_.growth, control_.max_step); }
-
- private:
-  StepControl control_;
-  const model::CreepLaw& creep_;
-  double rise_;
-  double ladder_;
-};
 
 /// Bookkeeping of the solves of one point.
 struct SolveLog {

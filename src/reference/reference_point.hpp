@@ -19,29 +19,9 @@
 #include "model/numerics/stop_request.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
+#include "reference/step_sizer.hpp"
 
 namespace punchsweep::reference {
-
-/// The time steps. Under a held load the contact set at t is the elastic one at J(t)
-/// (the extended correspondence principle), so the contact changes as J does: each step
-/// grows J by the factor 1 + creep_growth (J's doubling-then-halving inverse, to 1/256 of
-/// the step), and is at least `first_step` and at most `max_step` (the cap lifts once t is
-/// past 40 max_step, where the retardation terms have died out; and once J is within 1e-3
-/// of a step's growth of J(inf) the next step goes to the end, however far: the number of
-/// steps grows as log t, not as t). While the load still
-/// rises, and for creep_growth = 0 throughout, the steps instead grow geometrically by
-/// `growth` from `first_step` to `max_step` (the fixed ladder). Steps also end on the
-/// snapshot times and the load's kinks: by J's rule, a snapshot at most 1.25 steps away is
-/// reached in one step, and one at most two away in two equal ones. Scaling the step lengths by k scales the
-/// time-discretisation error of the loads by about k^2 (second order; tested); under a
-/// held load and a retardation-series law the contact areas, hence t*, do not depend on
-/// the steps at all (ViscoelasticStepper).
-struct StepControl {
-  double first_step = 0.02;  ///< in T_eps, > 0
-  double growth = 1.25;      ///< >= 1
-  double max_step = 1.0;     ///< in T_eps, >= first_step
-  double creep_growth = 0.05;  ///< J(t + dt) / J(t) - 1 per step, >= 0 (0: the ladder)
-};
 
 /// The steps and t* resolution for `creep`, scaled with its retardation times lambda: first
 /// step 0.02 lambda_min, at most 2 lambda_max, t* to 1e-3 lambda_min (for the standard
