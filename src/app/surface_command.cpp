@@ -35,8 +35,8 @@ po::options_description surface_options(const input::PointMaterial& material) {
       "punchsweep surface: when each level of a periodic texture touches a creeping material, and\n"
       "the contact areas in time, from the elastic load curve of the texture's cell (boundary\n"
       "elements continued from first to full contact; docs/model.md, section 17).\n\n"
-      "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), areas in R^2, time in\n"
-      "T_eps (creep time), or in the material file's time_unit.\n\nOptions");
+      "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), areas in R^2 and loads\n"
+      "in R^2 E0* per cell, time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
   input::add_point_options(opts, material.spec);
   input::add_material_options(opts);
   opts.add_options()
@@ -174,10 +174,14 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
     const std::string name = "area_" + std::to_string(level);
     series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.state.level_area[static_cast<std::size_t>(level)]); });
   }
+  for (int level = 0; level < L; ++level) {
+    const std::string name = "load_" + std::to_string(level);
+    series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.level_load[static_cast<std::size_t>(level)]); });
+  }
   series("valid", [](const model::SurfaceSnapshot& s) { return s.validity == model::SurfaceValidity::valid ? "true" : "false"; });
   series("reason", [](const model::SurfaceSnapshot& s) { return input::json_string(std::string(model::surface_validity_name(s.validity))); }, true);
   out << "  },\n  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
-      << ", \"X\": \"E0*\", \"area\": \"R^2\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
+      << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
 }
 
 void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
@@ -203,10 +207,12 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
   }
   out << "t" << sep << "X" << sep << "area_fraction" << sep << "sites_touched";
   for (int level = 0; level < L; ++level) out << sep << "area_" << level;
+  for (int level = 0; level < L; ++level) out << sep << "load_" << level;
   out << sep << "valid\n";
   for (const model::SurfaceSnapshot& s : run.history.snapshots) {
     out << s.t << sep << s.X << sep << s.state.area_fraction << sep << s.state.sites_touched;
     for (double a : s.state.level_area) out << sep << a;
+    for (double P : s.level_load) out << sep << P;
     out << sep << model::surface_validity_name(s.validity) << "\n";
   }
 }

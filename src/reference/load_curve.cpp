@@ -198,7 +198,12 @@ class CurveBuilder {
     model::LoadCurve pair;
     pair.cell_area = curve_.cell_area;
     pair.samples = {a.sample, b.sample};
-    pair.level_touchdown.assign(static_cast<std::size_t>(levels_), 0.0);
+    // The touchdowns found so far (the interval's reading depends on whether it starts at one).
+    pair.level_touchdown.assign(static_cast<std::size_t>(levels_), std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+      double& least = pair.level_touchdown[static_cast<std::size_t>(geometry_.sites[k].level)];
+      least = std::min(least, curve_.site_touchdown[k]);
+    }
     pair.level_share = curve_.level_share;
     pair.X_full = std::numeric_limits<double>::infinity();
     const model::CurveState s = pair.at(m.sample.X);
@@ -206,7 +211,7 @@ class CurveBuilder {
     const double X_area = m.sample.X * curve_.cell_area;
     for (std::size_t level = 0; level < static_cast<std::size_t>(levels_); ++level) {
       const double area = m.sample.level_area[level];
-      if (std::abs(s.level_area[level] - area) > options_.area_tolerance * area + 2.0 * node_area) return false;
+      if (std::abs(s.level_area[level] - area) > options_.area_tolerance * area + 0.5 * node_area) return false;
       if (std::abs(s.level_load[level] - m.sample.level_load[level]) > options_.load_tolerance * X_area) return false;
     }
     return true;

@@ -29,8 +29,8 @@ struct LoadCurveOptions {
   /// The march in load: samples per decade of X before refinement.
   int samples_per_decade = 4;
   /// Refinement: an interval is halved (in log X) until the interpolation of LoadCurve::at
-  /// meets the solve at its middle, each level's area to area_tolerance of itself (plus two
-  /// nodes' area, the grid's own step) and its load share Q_L / (X Lx Ly) to
+  /// meets the solve at its middle, each level's area to area_tolerance of itself (plus half
+  /// a node's area) and its load share Q_L / (X Lx Ly) to
   /// load_tolerance.
   double area_tolerance = 1e-3;
   double load_tolerance = 1e-4;

@@ -27,11 +27,12 @@ def test_two_level_square_surface_is_the_periodic_model_at_random_points():
     """Random points, log-uniform in pbar (1e-4 to 1e-1) and l (0.3 to 3 R), dh between the
     gaps h(0) and h(inf) so that level 1 touches late (delayed): the curve on --grid auto
     (the smallest spot 12 node spacings across its radius) gives the regime, t* to 3e-3 and
-    the area fraction at every time to 2% (measured on these 5 points: t* within 1.7e-3,
-    areas within 1.2%; on 10 others within 8e-4 and 1.2%; the model's own tables hold radii
-    to about 1e-3)."""
+    the area fraction at every time to 2% and each level's load to 3e-4 of pbar l^2
+    (measured on these 5 points: t* within 1.7e-3, areas within 1.1%, loads within 2.0e-4;
+    on 10 others t* within 8e-4 and areas 1.2%; the model's own tables hold radii to about
+    1e-3)."""
     rng = np.random.default_rng(38)
-    worst_t, worst_area = 0.0, 0.0
+    worst_t, worst_area, worst_load = 0.0, 0.0, 0.0
     for _ in range(5):
         l = 10 ** rng.uniform(np.log10(0.3), np.log10(3.0))
         pbar = 10 ** rng.uniform(-4, -1)
@@ -47,7 +48,12 @@ def test_two_level_square_surface_is_the_periodic_model_at_random_points():
         worst_area = max(worst_area, np.max(np.abs(surface["series"]["area_fraction"] / model.series["area_fraction"] - 1)))
         assert level["t_star"] == pytest.approx(model.t_star, rel=3e-3), (l, pbar, dh)
         np.testing.assert_allclose(surface["series"]["area_fraction"], model.series["area_fraction"], rtol=2e-2)
-    print(f"worst t* {worst_t:.1e}, worst area fraction {worst_area:.1e}")
+        nominal = pbar * l * l
+        for mine, theirs in (("load_0", "P1"), ("load_1", "P2")):
+            difference = np.max(np.abs(surface["series"][mine] - model.series[theirs])) / nominal
+            worst_load = max(worst_load, difference)
+            assert difference < 3e-4, (l, pbar, dh, mine)
+    print(f"worst t* {worst_t:.1e}, area fraction {worst_area:.1e}, load {worst_load:.1e} of pbar l^2")
 
 
 def test_levels_touch_in_order_and_the_sites_count():

@@ -62,7 +62,11 @@ CurveState LoadCurve::at(double X) const {
       const double qa = a.level_load[level] / a.X, qb = b.level_load[level] / b.X;
       out.level_load[level] = X * (qa + w * (qb - qa));
       const double Aa = a.level_area[level], Ab = b.level_area[level];
-      out.level_area[level] = Aa > 0.0 && Ab > 0.0 ? Aa * std::pow(Ab / Aa, w) : Aa + w_linear * (Ab - Aa);
+      // From a level's touchdown its new spots grow as X - X* (their depth does, and a^2
+      // with it): linearly in X over the interval that starts there.
+      const bool starts_at_touchdown = level < level_touchdown.size() && a.X <= level_touchdown[level];
+      out.level_area[level] =
+          Aa > 0.0 && Ab > 0.0 && !starts_at_touchdown ? Aa * std::pow(Ab / Aa, w) : Aa + w_linear * (Ab - Aa);
       // Before its touchdown a level has no contact (the interval up to its touchdown's
       // sample would otherwise lend it some of the sample's first rim).
       if (level < level_touchdown.size() && X < level_touchdown[level]) out.level_area[level] = 0.0;

@@ -73,8 +73,8 @@ struct LoadCurve {
 
   /// The state at load X >= 0: between samples, each level's area interpolated linearly
   /// in log X as log area (as the isolated punch's power law, exact for it) and its load as
-  /// the share Q_L / (X Lx Ly); an interval that starts at a level's touchdown (area 0)
-  /// linearly in X.
+  /// the share Q_L / (X Lx Ly); over an interval that starts at the level's touchdown (or
+  /// at zero area) its area linearly in X, as new spots grow.
   CurveState at(double X) const;
   /// Whether the pressure grew at every node over loads [X_a, X_b] (the samples' record;
   /// true in full contact, where extra load spreads evenly).

@@ -1,6 +1,9 @@
 #include "model/surface/surface_history.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 namespace punchsweep::model {
 
@@ -10,11 +13,13 @@ std::string_view surface_validity_name(SurfaceValidity validity) {
     case SurfaceValidity::below_resolution: return "below_resolution";
     case SurfaceValidity::above_top: return "above_top";
     case SurfaceValidity::unloading: return "unloading";
+    case SurfaceValidity::history_cost: return "history_cost";
   }
   return "unknown";
 }
 
-SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times) {
+SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times,
+                               const HistoryQuadrature& quadrature) {
   SurfaceHistory out;
   for (const double X_star : curve.level_touchdown) {
     const Classification c = classify(Touchdown{0.0, X_star}, load);
@@ -22,11 +27,39 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
     out.levels.push_back({c.regime, c.t_star, X_star, resolved});
   }
   const double X0 = load.initial();
+  const auto X_at = [&](double t) { return t > 0.0 ? load(t) : X0; };
+  double t_max = 0.0;
+  for (const double t : times) t_max = std::max(t_max, t);
+
+  // Each level's load history from its touch on (Q2 its load, Q1 the rest of the cell's).
+  const std::size_t L = static_cast<std::size_t>(curve.levels());
+  const double cell_load = load.pbar0() * curve.cell_area;  // Q1 = this g(tau) before the touch
+  std::vector<std::optional<LoadHistory>> histories(L);
+  bool too_costly = false;
+  for (std::size_t level = 1; level < L; ++level) {
+    const double t0 = out.levels[level].t_star;
+    if (!(t0 <= t_max)) continue;
+    const LoadHistory::Cost cost = LoadHistory::cost(load, t0, t_max, quadrature);
+    if (cost.samples > LoadHistory::kMaxSamples || cost.kernel_pieces > LoadHistory::kMaxKernelPieces) {
+      too_costly = true;
+      continue;
+    }
+    const auto sample = [&curve, &load, level](double tau, double* Q1, double* Q2) {
+      const double X = load(tau);
+      const CurveState s = curve.at(X);
+      if (s.range == CurveRange::above_top) return false;
+      *Q2 = s.level_load[level];
+      *Q1 = X * curve.cell_area - *Q2;
+      return true;
+    };
+    histories[level].emplace(load, cell_load, t0, t_max, quadrature, sample);
+  }
+
   for (const double t : times) {
     SurfaceSnapshot s;
     s.t = t;
     // X at 0 is the load at once (X(0+)); a history without a jump starts unloaded.
-    s.X = t > 0.0 ? load(t) : load.initial();
+    s.X = X_at(t);
     s.state = curve.at(s.X);
     if (s.state.range == CurveRange::above_top) {
       s.validity = SurfaceValidity::above_top;
@@ -34,6 +67,37 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
       s.validity = SurfaceValidity::unloading;
     } else if (s.state.range == CurveRange::below_resolution && s.X > 0.0) {
       s.validity = SurfaceValidity::below_resolution;
+    }
+    const double nominal = load.nominal_pressure(t) * curve.cell_area;
+    s.level_load.assign(L, 0.0);
+    double rest = nominal;
+    for (std::size_t level = 1; level < L && s.state.range != CurveRange::above_top; ++level) {
+      if (!(out.levels[level].t_star <= t)) continue;  // untouched: no load
+      const std::optional<LoadHistory>& history = histories[level];
+      double P1 = 0.0, P2 = std::numeric_limits<double>::quiet_NaN();
+      if (history && history->ok()) {
+        const auto near = [&](double tau, double* Q1, double* Q2) {
+          const CurveState c = curve.at(load(tau));
+          *Q2 = c.level_load[level];
+          *Q1 = load(tau) * curve.cell_area - *Q2;
+          return c.range != CurveRange::above_top;
+        };
+        if (!history->load(t, s.X * curve.cell_area - s.state.level_load[level], s.state.level_load[level], &P1, &P2, near)) {
+          P2 = std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+      s.level_load[level] = P2;
+      rest -= P2;
+    }
+    s.level_load[0] = rest;
+    if (s.state.range == CurveRange::above_top) std::fill(s.level_load.begin(), s.level_load.end(), std::numeric_limits<double>::quiet_NaN());
+    if (s.validity == SurfaceValidity::valid && !std::isfinite(rest)) {
+      s.validity = too_costly ? SurfaceValidity::history_cost : SurfaceValidity::above_top;
+    }
+    // A level's load below zero (beyond the quadrature's 1e-5 of the load): some node's
+    // pressure would be negative, the contact receding (as the periodic model flags it).
+    for (const double P : s.level_load) {
+      if (s.validity == SurfaceValidity::valid && P < -1e-5 * nominal) s.validity = SurfaceValidity::unloading;
     }
     out.snapshots.push_back(std::move(s));
   }

@@ -12,6 +12,7 @@
 
 #include "model/contact/regime.hpp"
 #include "model/load/creep_weighted_load.hpp"
+#include "model/load/load_history.hpp"
 #include "model/surface/load_curve.hpp"
 
 namespace punchsweep::model {
@@ -39,6 +40,9 @@ enum class SurfaceValidity : int {
   /// The pressure falls at some node between X(0) and X(t): the contact may recede, which
   /// the correspondence does not cover (the time-stepping reference does).
   unloading = 3,
+  /// The loads' history integral would take more work than LoadHistory::kMaxSamples (a
+  /// spectrum over more decades than the times resolve): the loads are not computed.
+  history_cost = 4,
 };
 std::string_view surface_validity_name(SurfaceValidity validity);
 
@@ -46,7 +50,11 @@ std::string_view surface_validity_name(SurfaceValidity validity);
 struct SurfaceSnapshot {
   double t = 0.0;
   double X = 0.0;  ///< the creep-weighted load X(t), in E0*
-  CurveState state;
+  CurveState state;  ///< the cell at X(t): areas, sites; its level_load is Q_L(X(t))
+  /// The load each level carries at t, P_L(t) = int E(t - tau) dQ_L(X(tau)) (docs/model.md,
+  /// section 14.1, eq P1), in R^2 E0* per cell; they sum to the nominal load pbar(t) Lx Ly.
+  /// NaN where not computed (history_cost).
+  std::vector<double> level_load;
   SurfaceValidity validity = SurfaceValidity::valid;
 };
 
@@ -57,7 +65,11 @@ struct SurfaceHistory {
 };
 
 /// Reads `curve` along `load` at `times` (non-decreasing, >= 0; t = 0 is the state at 0+).
-SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times);
+/// The loads: for each level L >= 1 that touches by the last time, LoadHistory (the point's
+/// history quadrature, docs/model.md section 12.7) with Q2 = Q_L(X(tau)), Q1 the rest, from
+/// its touch on; level 0 carries what the others leave.
+SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times,
+                               const HistoryQuadrature& quadrature = {});
 
 
 }  // namespace punchsweep::model

@@ -238,7 +238,8 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     two levels, or three with dh2, under a material and a load, from its cell's elastic load
     curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
     dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
-    area_fraction, sites_touched, area_0 ... as numpy arrays; valid and reason per time),
+    area_fraction, sites_touched, area_0 ..., load_0 ... as numpy arrays; valid and reason
+    per time),
     curve, cell, grid, units. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
