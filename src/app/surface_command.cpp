@@ -10,6 +10,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "reference/load_curve.hpp"
 #include "reference/periodic_grid.hpp"
@@ -29,6 +30,42 @@ constexpr int kMaxGrid = 2048;
 constexpr int kAutoMin = 64;
 constexpr int kAutoMax = 512;
 constexpr double kAutoSpotRadius = 12.0;
+/// The largest supercell: K x K lattice cells.
+constexpr int kMaxSupercell = 32;
+
+/// --scatter's text: normal:SD, uniform:HALFWIDTH (lengths, >= 0) or list:V1,V2,...
+model::HeightScatter read_scatter(const std::string& text, const input::PhysicalScales& scales) {
+  const std::string valid = "normal:SD, uniform:HALFWIDTH (a length >= 0) or list:V1,V2,... (lengths)";
+  const std::size_t colon = text.find(':');
+  const std::string kind = text.substr(0, colon), rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+  const std::optional<input::Scale> scale = input::scale_of("R", scales);
+  const auto length = [&](const std::string& value) {
+    try {
+      return input::read_scaled(value, *scale);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError("--scatter = '" + text + "': " + e.what());
+    }
+  };
+  model::HeightScatter out;
+  if (kind == "normal" || kind == "uniform") {
+    out.kind = kind == "normal" ? model::HeightScatter::Kind::normal : model::HeightScatter::Kind::uniform;
+    out.width = length(rest);
+    if (!(std::isfinite(out.width) && out.width >= 0.0)) {
+      throw input::UsageError("--scatter = '" + text + "' is outside its range: " + valid);
+    }
+  } else if (kind == "list") {
+    out.kind = model::HeightScatter::Kind::list;
+    std::stringstream items(rest);
+    for (std::string item; std::getline(items, item, ',');) {
+      const double v = length(item);
+      if (!std::isfinite(v)) throw input::UsageError("--scatter = '" + text + "': " + item + " is not finite");
+      out.values.push_back(v);
+    }
+  } else {
+    throw input::UsageError("--scatter = '" + text + "' is not one of: " + valid);
+  }
+  return out;
+}
 
 po::options_description surface_options(const input::PointMaterial& material) {
   po::options_description opts(
@@ -46,6 +83,15 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "downward ones)")
       ("dh2", po::value<std::string>()->value_name("DH2"),
        "a third level, this far below the tallest tips (R, or a length with --R); >= 0")
+      ("supercell", po::value<int>()->value_name("K")->default_value(1),
+       "K x K lattice cells as one periodic cell, each cap's height scattered by --scatter: an integer "
+       "in [1, 32]")
+      ("scatter", po::value<std::string>()->value_name("DIST"),
+       "each cap's height change (a positive one lowers the cap): normal:SD, uniform:HALFWIDTH (lengths "
+       "in R, or with a unit and --R; >= 0) or list:V1,V2,... (one per cap of the supercell, in R); "
+       "needs --supercell")
+      ("seed", po::value<unsigned long long>()->value_name("N")->default_value(1),
+       "the seed of --scatter's draws (std::mt19937_64; the same caps on every machine)")
       ("grid", po::value<std::string>()->value_name("N")->default_value("auto"),
        "boundary-element nodes per pitch: an even integer in [4, 2048], or auto (the smallest spot the "
        "times meet spans a radius of 12 nodes; 64 to 512)")
@@ -85,6 +131,26 @@ SurfaceRun read_surface(const po::variables_map& vm, const input::PointMaterial&
     }
   }
   run.geometry = model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
+  run.supercell = vm["supercell"].as<int>();
+  if (run.supercell < 1 || run.supercell > kMaxSupercell) {
+    throw input::UsageError("--supercell = " + std::to_string(run.supercell) + " is outside its range: an integer in [1, " +
+                            std::to_string(kMaxSupercell) + "]");
+  }
+  if (vm.count("scatter")) {
+    if (run.supercell == 1 && vm["supercell"].defaulted()) {
+      throw input::UsageError("--scatter needs --supercell K (the caps whose heights scatter: K x K cells)");
+    }
+    run.scatter = read_scatter(vm["scatter"].as<std::string>(), run.inputs.scales);
+    run.scatter.seed = vm["seed"].as<unsigned long long>();
+    const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
+    if (run.scatter.kind == model::HeightScatter::Kind::list && run.scatter.values.size() != caps) {
+      throw input::UsageError("--scatter list has " + std::to_string(run.scatter.values.size()) + " values: it needs one per cap, " +
+                              std::to_string(caps) + " for " + std::to_string(run.supercell) + " x " +
+                              std::to_string(run.supercell) + " cells of " + std::to_string(run.geometry.sites.size()) +
+                              " caps");
+    }
+  }
+  if (run.supercell > 1) run.geometry = model::supercell(run.geometry, run.supercell, run.scatter);
   return run;
 }
 
@@ -97,11 +163,13 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
     if (x > 0.0) X = std::min(X, x);
   }
   if (!std::isfinite(X)) return kAutoMin;
+  // The load spread over the tallest level's caps (all of them: in a scattered supercell
+  // the nearly tallest touch at once, each with a small spot).
   double count = 0.0;
-  for (const model::Site& site : run.geometry.sites) count += site.drop == 0.0 ? 1.0 : 0.0;
+  for (const model::Site& site : run.geometry.sites) count += site.level == 0 ? 1.0 : 0.0;
   const model::Shape& shape = run.geometry.sites.front().shape;
   const double a = std::pow(X * run.geometry.Lx * run.geometry.Ly / count / model::load_coefficient(shape), 1.0 / (shape.s + 1));
-  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / a / 2.0) * 2.0;
+  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / run.supercell / a / 2.0) * 2.0;
   return static_cast<int>(std::clamp(n, static_cast<double>(kAutoMin), static_cast<double>(kAutoMax)));
 }
 
@@ -109,7 +177,7 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
 void evaluate(SurfaceRun& run, bool progress) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   if (run.grid_nodes == 0) run.grid_nodes = auto_grid(run, load);
-  const reference::PeriodicGrid grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes);
+  const reference::PeriodicGrid grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell);
   const reference::Cell cell = reference::make_cell(run.geometry, grid);
   reference::LoadCurveOptions options;
   // A little past the largest load the material reaches, X(inf): a level untouched there
@@ -140,21 +208,25 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   out << "  \"lattice\": " << input::json_string(model::lattice_name(run.lattice)) << ",\n";
   out << "  \"cell\": [" << num(run.geometry.Lx) << ", " << num(run.geometry.Ly) << "],\n";
   out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
+  out << "  \"supercell\": " << run.supercell << ",\n";
+  out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
   out << "  \"curve\": {\"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
       << ", \"seconds\": " << num(run.curve_seconds) << "},\n";
   out << "  \"levels\": [";
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
-    double drop = 0.0;
+    double drop = std::numeric_limits<double>::infinity(), drop_max = 0.0;
     int sites = 0;
     for (const model::Site& site : run.geometry.sites) {
       if (site.level == level) {
-        drop = site.drop;
+        drop = std::min(drop, site.drop);
+        drop_max = std::max(drop_max, site.drop);
         ++sites;
       }
     }
     out << (level ? ",\n    " : "\n    ") << "{\"level\": " << level << ", \"drop\": " << num(drop)
+        << ", \"drop_max\": " << num(drop_max)
         << ", \"sites\": " << sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
         << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
         << ", \"resolved\": " << (touch.resolved ? "true" : "false")
@@ -173,6 +245,10 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   for (int level = 0; level < L; ++level) {
     const std::string name = "area_" + std::to_string(level);
     series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.state.level_area[static_cast<std::size_t>(level)]); });
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::string name = "touched_" + std::to_string(level);
+    series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.state.level_sites_touched[static_cast<std::size_t>(level)]); });
   }
   for (int level = 0; level < L; ++level) {
     const std::string name = "load_" + std::to_string(level);

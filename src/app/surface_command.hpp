@@ -22,7 +22,9 @@ struct SurfaceRun {
   model::LatticeKind lattice = model::LatticeKind::square;
   model::CellGeometry geometry;
   std::vector<double> times;
-  int grid_nodes = 0;  ///< nodes per pitch
+  int supercell = 1;   ///< K: the cell is K x K lattice cells
+  model::HeightScatter scatter;
+  int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
   model::LoadCurve curve;
   model::SurfaceHistory history;
   double curve_seconds = 0.0;

@@ -187,12 +187,13 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   return cell;
 }
 
-PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n) {
+PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n, int K) {
   if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
+  if (K < 1) throw std::invalid_argument("lattice_grid: K >= 1");
   const int ny = lattice == model::LatticeKind::square
                      ? n
                      : 6 * std::max(1, static_cast<int>(std::lround(n * geometry.Ly / geometry.Lx / 6.0)));
-  return {n, ny, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
+  return {K * n, K * ny, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
 }
 
 TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Symmetry symmetry) {

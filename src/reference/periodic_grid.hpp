@@ -105,7 +105,8 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
 /// even, >= kMinTwoLevelNodes; two_level_grid_error) and as many along y as keep the nodes
 /// near square with every site's tip a node (the hexagonal cell: a multiple of 6); its
 /// quarter (Symmetry::mirror) where the sites are even (model::mirror_symmetric).
-PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n);
+/// A supercell of K x K lattice cells (model::supercell) takes K times the nodes each way.
+PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n, int K = 1);
 
 /// The periodic unit cell of the two-level square lattice (docs/model.md, section 3): the
 /// l x l square with the level-1 punch at the corners (0, 0) and the level-2 punch, lower by

@@ -94,3 +94,29 @@ def test_the_command_prints_what_python_returns_and_refuses_bad_input():
         assert run.returncode == 2 and message in run.stderr and run.stdout == "", (bad, run.stderr)
     with pytest.raises(ValueError, match="--grid"):
         punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=7)
+
+
+def test_a_scattered_supercell_counts_its_caps_and_repeats_with_its_seed():
+    """--supercell 3 --scatter normal:0.01 (R): 18 caps; the share in contact moves in steps
+    of 1/18 and never falls; the same seed gives the same caps, another seed others; the
+    curve's per-cap touchdowns are checked against time stepping in the C++ tests
+    (tests/tables/cell_stepping_surface_test.cpp)."""
+    common = dict(l=0.75, dh=0.03, T=4, pbar=0.004, s=2, supercell=3, grid=16, times=[0, 0.5, 1, 2, 5, 20])
+    first = punchsweep.surface(scatter="normal:0.01", seed=3, **common)
+    assert first["caps"] == 18 and first["supercell"] == 3 and first["grid"] == [48, 48]
+    touched = first["series"]["sites_touched"] * 18
+    np.testing.assert_allclose(touched, np.round(touched), atol=1e-9)
+    assert np.all(np.diff(touched) >= 0) and touched[0] < touched[-1]
+    again = punchsweep.surface(scatter="normal:0.01", seed=3, **common)
+    np.testing.assert_array_equal(again["series"]["sites_touched"], first["series"]["sites_touched"])
+    other = punchsweep.surface(scatter="normal:0.01", seed=4, **common)
+    assert [lv["drop_max"] for lv in other["levels"]] != [lv["drop_max"] for lv in first["levels"]]
+    base = ["--l", "0.75", "--dh", "0.03", "--T", "4", "--pbar", "0.004", "--s", "2", "--grid", "16"]
+    for bad, message in [(["--scatter", "normal:0.01"], "--scatter needs --supercell"),
+                         (["--supercell", "2", "--scatter", "gauss:0.01"], "is not one of: normal:SD"),
+                         (["--supercell", "2", "--scatter", "normal:-0.01"], "is outside its range"),
+                         (["--supercell", "2", "--scatter", "list:0.1,0.2"], "it needs one per cap, 8 for 2 x 2"),
+                         (["--supercell", "2", "--scatter", "normal:1um"], "needs R"),
+                         (["--supercell", "40"], "--supercell = 40 is outside its range")]:
+        run = cli(*base, *bad)
+        assert run.returncode == 2 and message in run.stderr and run.stdout == "", (bad, run.stderr)

@@ -91,3 +91,56 @@ TEST(CellStepping, surface_touch_times_and_areas_are_the_time_steppings) {
   }
   std::printf("worst load difference %.2e of the nominal load\n", worst_load);
 }
+
+// An 8 x 8 supercell of one level whose caps' heights scatter (normal, SD 0.01 R): the
+// share of caps in contact in time from the curve (each cap's own touchdown) against the
+// time stepping's count of pressed tips, on the same grid (16 nodes per pitch). Measured:
+// 36 of 64 caps touch at once, 61 by t = 10 T_eps, 3 never; each cap's touch time within
+// 4.0e-5 of the stepping's (to 1e-4), the share in contact equal at all 11 times, the area
+// fraction within 0.3%.
+TEST(CellStepping, a_scattered_supercells_caps_touch_when_the_stepping_says) {
+  const model::StandardLinearSolid creep(4.0);
+  const double pbar = 0.002;
+  const model::CreepWeightedLoad load(creep, pbar);
+  model::HeightScatter scatter;
+  scatter.kind = model::HeightScatter::Kind::normal;
+  scatter.width = 0.01;
+  scatter.seed = 7;
+  const model::CellGeometry lattice = model::lattice_cell(LatticeKind::square, 0.75, model::Shape{2, 0.5}, {});
+  const model::CellGeometry g = model::supercell(lattice, 8, scatter);
+  ASSERT_EQ(g.sites.size(), 64u);
+  const reference::Cell cell = reference::make_cell(g, reference::lattice_grid(g, LatticeKind::square, 16, 8));
+  reference::LoadCurveOptions curve_options;
+  curve_options.X_top = 1.05 * load.final();
+  const model::LoadCurve curve = reference::build_load_curve(g, cell, curve_options);
+  const std::vector<double> times{0.0, 0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0};
+  const model::SurfaceHistory surface = model::surface_history(curve, load, times);
+  reference::CellReferenceOptions options;
+  options.times = times;
+  options.t_star_resolution = 1e-4;
+  const reference::CellReference ref = reference::evaluate_cell_reference(g, cell, pbar, creep, {}, options);
+  ASSERT_TRUE(ref.converged);
+  int compared = 0;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < g.sites.size(); ++k) {
+    const double t_ref = ref.site_touch[k];
+    const double X_star = curve.site_touchdown[k];
+    const double t_curve = X_star <= load.initial() ? 0.0 : std::isfinite(X_star) && X_star < load.final() ? load.time_at_response(X_star / pbar) : std::numeric_limits<double>::infinity();
+    if (std::isinf(t_ref) || std::isinf(t_curve)) {
+      EXPECT_EQ(std::isinf(t_ref), std::isinf(t_curve) || t_curve > times.back()) << "cap " << k;
+      continue;
+    }
+    ++compared;
+    worst = std::max(worst, std::abs(t_curve - t_ref));
+    EXPECT_NEAR(t_curve, t_ref, 2e-4 * t_ref + options.t_star_resolution) << "cap " << k;
+  }
+  std::printf("%d of 64 caps touch by t = %g; their touch times within %.1e of the stepping's\n", compared, times.back(), worst);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    std::printf("  t = %g: caps in contact %.4f (stepping %.4f), area fraction %.5f (%.5f)\n", times[k],
+                surface.snapshots[k].state.sites_touched, ref.series[k].sites_touched, surface.snapshots[k].state.area_fraction,
+                ref.series[k].area_fraction);
+    EXPECT_DOUBLE_EQ(surface.snapshots[k].state.sites_touched, ref.series[k].sites_touched) << "t = " << times[k];
+    EXPECT_NEAR(surface.snapshots[k].state.area_fraction, ref.series[k].area_fraction, 1e-2 * ref.series[k].area_fraction);
+  }
+  EXPECT_GT(compared, 10);
+}

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -105,6 +108,55 @@ CellGeometry lattice_cell(LatticeKind lattice, double l, const Shape& shape, con
     }
   }
   return g;
+}
+
+std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count) {
+  using Kind = HeightScatter::Kind;
+  if (scatter.kind == Kind::list) {
+    if (scatter.values.size() != count) {
+      throw std::invalid_argument("scatter list: " + std::to_string(scatter.values.size()) + " values for " +
+                                  std::to_string(count) + " sites");
+    }
+    return scatter.values;
+  }
+  std::vector<double> out(count, 0.0);
+  if (scatter.kind == Kind::none) return out;
+  std::mt19937_64 engine(scatter.seed);
+  // A double in (0, 1) from the engine's top 53 bits (never 0: Box-Muller takes its log).
+  const auto unit = [&engine]() { return (static_cast<double>(engine() >> 11) + 0.5) * 0x1.0p-53; };
+  for (std::size_t k = 0; k < count; ++k) {
+    if (scatter.kind == Kind::uniform) {
+      out[k] = scatter.width * (2.0 * unit() - 1.0);
+    } else {
+      const double u1 = unit(), u2 = unit();
+      out[k] = scatter.width * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    }
+  }
+  return out;
+}
+
+CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter) {
+  if (K < 1) throw std::invalid_argument("supercell: K >= 1");
+  CellGeometry out;
+  out.Lx = K * cell.Lx;
+  out.Ly = K * cell.Ly;
+  const std::vector<double> draws = scatter_draws(scatter, static_cast<std::size_t>(K) * K * cell.sites.size());
+  std::size_t next = 0;
+  for (const Site& site : cell.sites) {
+    for (int i = 0; i < K; ++i) {
+      for (int j = 0; j < K; ++j) {
+        Site copy = site;
+        copy.x += i * cell.Lx;
+        copy.y += j * cell.Ly;
+        copy.drop += draws[next++];
+        out.sites.push_back(copy);
+      }
+    }
+  }
+  double least = std::numeric_limits<double>::infinity();
+  for (const Site& site : out.sites) least = std::min(least, site.drop);
+  for (Site& site : out.sites) site.drop -= least;
+  return out;
 }
 
 CellGeometry two_level_square(const ContactProblem& problem) {

@@ -6,6 +6,7 @@
 /// cell from it (reference/periodic_grid.hpp: make_cell); the two-level square lattice of
 /// the paper is one such geometry (two_level_square). Lengths in R.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,26 @@ std::string lattice_name(LatticeKind lattice);
 /// per entry of `drops` (at most 2; each its depth below the tallest tip, in R) at the
 /// places Lattice names.
 CellGeometry lattice_cell(LatticeKind lattice, double l, const Shape& shape, const std::vector<double>& drops);
+
+/// How the heights of a supercell's sites scatter about their lattice's.
+struct HeightScatter {
+  enum class Kind { none, normal, uniform, list };
+  Kind kind = Kind::none;
+  double width = 0.0;          ///< normal: the standard deviation; uniform: the half-width (in R, >= 0)
+  std::vector<double> values;  ///< list: one height change per site of the supercell, in R
+  unsigned long long seed = 1;
+};
+
+/// The draws of `scatter` for `count` sites, in R: normal by Box-Muller and uniform on
+/// [-width, width], both from std::mt19937_64 seeded with `seed` (the same numbers on every
+/// platform); list: its values (std::invalid_argument unless there are `count`).
+std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count);
+
+/// K x K copies of `cell` as one periodic cell (K >= 1), each copy's site raised by the
+/// next draw of `scatter` (a draw > 0 lowers the tip: it adds to the drop), the drops then
+/// taken from the tallest tip of all (the least drop becomes 0). The sites keep their
+/// levels; the copies of site k follow each other row by row.
+CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter);
 
 /// The two-level square lattice of `problem` (docs/model.md, section 3): the l x l cell, the
 /// level-1 punch at its corner (0, 0), the level-2 punch, lower by dh, at its centre

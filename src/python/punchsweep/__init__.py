@@ -231,20 +231,23 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
 def surface(l: float | str | None = None, dh: float | str | None = None, *, lattice: str | None = None,
             dh2: float | str | None = None, T: float | None = None, pbar: float | None = None,
             s: int | None = None, C: float | None = None, times: Iterable[float] | str | None = None,
-            grid: int | None = None, material: str | None = None, temperature: float | str | None = None,
+            grid: int | str | None = None, supercell: int | None = None, scatter: str | None = None,
+            seed: int | None = None, material: str | None = None, temperature: float | str | None = None,
             pressure: str | None = None, ramp: float | str | None = None, load_table: str | None = None,
             **options: Any) -> dict:
     """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
-    two levels, or three with dh2, under a material and a load, from its cell's elastic load
-    curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
+    two levels, or three with dh2, or a supercell of it whose caps' heights scatter
+    (supercell=8, scatter="normal:0.5um", seed=1), under a material and a load, from its
+    cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
     dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
     area_fraction, sites_touched, area_0 ..., load_0 ... as numpy arrays; valid and reason
     per time),
     curve, cell, grid, units. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
-                              grid=grid, material=material, temperature=temperature, pressure=pressure,
-                              ramp=ramp, load_table=load_table, **options))
+                              grid=grid, supercell=supercell, scatter=scatter, seed=seed, material=material,
+                              temperature=temperature, pressure=pressure, ramp=ramp, load_table=load_table,
+                              **options))
     out = json.loads(_core.surface(keywords))
     out["series"] = {k: (np.array(v) if k not in ("valid", "reason") else v) for k, v in out["series"].items()}
     out["series"]["valid"] = np.array(out["series"]["valid"], dtype=bool)

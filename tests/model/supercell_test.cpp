@@ -1,0 +1,71 @@
+// Scattered supercells (model/problem/cell_geometry.hpp): the draws' distribution, their
+// reproducibility, and the supercell's layout.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/problem/cell_geometry.hpp"
+
+using namespace punchsweep;
+
+TEST(Supercell, draws_have_the_stated_distribution_and_repeat_with_their_seed) {
+  model::HeightScatter normal;
+  normal.kind = model::HeightScatter::Kind::normal;
+  normal.width = 0.3;
+  normal.seed = 42;
+  const std::size_t n = 20000;
+  const std::vector<double> a = model::scatter_draws(normal, n);
+  double mean = 0.0, square = 0.0, within = 0.0;
+  for (double v : a) {
+    mean += v / n;
+    square += v * v / n;
+    within += std::abs(v) <= normal.width ? 1.0 / n : 0.0;
+  }
+  // Mean within 4 standard errors; SD within 4 of its standard error (sigma / sqrt(2n));
+  // the share within one SD is 68.27% (erf(1/sqrt(2))), within 4 of its standard error.
+  EXPECT_NEAR(mean, 0.0, 4.0 * normal.width / std::sqrt(n));
+  EXPECT_NEAR(std::sqrt(square - mean * mean), normal.width, 4.0 * normal.width / std::sqrt(2.0 * n));
+  EXPECT_NEAR(within, std::erf(1.0 / std::sqrt(2.0)), 4.0 * std::sqrt(0.6827 * 0.3173 / n));
+  EXPECT_EQ(model::scatter_draws(normal, n), a);  // the same seed, the same caps
+  normal.seed = 43;
+  EXPECT_NE(model::scatter_draws(normal, n), a);
+
+  model::HeightScatter uniform{model::HeightScatter::Kind::uniform, 0.5, {}, 1};
+  const std::vector<double> u = model::scatter_draws(uniform, n);
+  EXPECT_LE(*std::max_element(u.begin(), u.end()), 0.5);
+  EXPECT_GE(*std::min_element(u.begin(), u.end()), -0.5);
+  double u_mean = 0.0, u_square = 0.0;
+  for (double v : u) {
+    u_mean += v / n;
+    u_square += v * v / n;
+  }
+  EXPECT_NEAR(u_square, 0.25 / 3.0, 4.0 * 0.25 * std::sqrt(4.0 / 45.0 / n));  // var of U(-w, w): w^2/3
+
+  model::HeightScatter list{model::HeightScatter::Kind::list, 0.0, {0.1, -0.2}, 1};
+  EXPECT_EQ(model::scatter_draws(list, 2), list.values);
+  EXPECT_THROW(model::scatter_draws(list, 3), std::invalid_argument);
+  EXPECT_EQ(model::scatter_draws(model::HeightScatter{}, 3), std::vector<double>(3, 0.0));
+}
+
+TEST(Supercell, copies_the_cell_and_takes_drops_from_the_tallest_cap) {
+  const model::CellGeometry cell = model::lattice_cell(model::LatticeKind::square, 2.0, model::Shape{2, 0.5}, {0.1});
+  model::HeightScatter list{model::HeightScatter::Kind::list, 0.0, {}, 1};
+  for (int k = 0; k < 18; ++k) list.values.push_back(0.01 * (k % 5) - 0.02);  // 2 sites x 3 x 3 copies
+  const model::CellGeometry g = model::supercell(cell, 3, list);
+  EXPECT_EQ(g.sites.size(), 18u);
+  EXPECT_DOUBLE_EQ(g.Lx, 6.0);
+  EXPECT_EQ(model::geometry_error(g), "");
+  double least = 1.0;
+  for (const model::Site& s : g.sites) least = std::min(least, s.drop);
+  EXPECT_EQ(least, 0.0);
+  // Copy (i, j) of site k sits at its position plus (i, j) pitches, its drop raised by its draw
+  // and then all taken from the tallest (the least of drop + draw, -0.02 here).
+  EXPECT_DOUBLE_EQ(g.sites[4].x, 1.0 * 2.0);  // site 0, copy (1, 1)
+  EXPECT_DOUBLE_EQ(g.sites[4].y, 1.0 * 2.0);
+  EXPECT_NEAR(g.sites[4].drop, 0.0 + list.values[4] + 0.02, 1e-15);
+  EXPECT_NEAR(g.sites[9].drop, 0.1 + list.values[9] + 0.02, 1e-15);  // site 1, copy (0, 0)
+  EXPECT_DOUBLE_EQ(g.sites[9].x, 1.0);
+  EXPECT_EQ(g.sites[9].level, 1);
+  EXPECT_FALSE(model::mirror_symmetric(g));
+}
