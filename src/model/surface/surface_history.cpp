@@ -18,14 +18,21 @@ std::string_view surface_validity_name(SurfaceValidity validity) {
   return "unknown";
 }
 
-SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times,
-                               const HistoryQuadrature& quadrature) {
-  SurfaceHistory out;
+std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load) {
+  std::vector<LevelTouch> out;
+  out.reserve(curve.level_touchdown.size());
   for (const double X_star : curve.level_touchdown) {
     const Classification c = classify(Touchdown{0.0, X_star}, load);
     const bool resolved = X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_first();
-    out.levels.push_back({c.regime, c.t_star, X_star, resolved});
+    out.push_back({c.regime, c.t_star, X_star, resolved});
   }
+  return out;
+}
+
+SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times,
+                               const HistoryQuadrature& quadrature) {
+  SurfaceHistory out;
+  out.levels = level_touches(curve, load);
   const double X0 = load.initial();
   const auto X_at = [&](double t) { return t > 0.0 ? load(t) : X0; };
   double t_max = 0.0;

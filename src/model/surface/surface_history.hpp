@@ -64,6 +64,10 @@ struct SurfaceHistory {
   std::vector<SurfaceSnapshot> snapshots;
 };
 
+/// Each level's touch under `load`: from its touchdown load alone (no solve), what a sweep
+/// over materials, temperatures and pressures needs per point.
+std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load);
+
 /// Reads `curve` along `load` at `times` (non-decreasing, >= 0; t = 0 is the state at 0+).
 /// The loads: for each level L >= 1 that touches by the last time, LoadHistory (the point's
 /// history quadrature, docs/model.md section 12.7) with Q2 = Q_L(X(tau)), Q1 the rest, from
