@@ -10,6 +10,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "input/cell_file.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "reference/load_curve.hpp"
@@ -83,6 +84,9 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "downward ones)")
       ("dh2", po::value<std::string>()->value_name("DH2"),
        "a third level, this far below the tallest tips (R, or a length with --R); >= 0")
+      ("cell", po::value<std::string>()->value_name("FILE"),
+       "any rectangular periodic cell instead of a lattice: a [cell] file of Lx, Ly, s, C and one "
+       "'site = x, y, drop, level[, s, C]' line per punch (docs/cli.md); --grid then counts nodes along Lx")
       ("supercell", po::value<int>()->value_name("K")->default_value(1),
        "K x K lattice cells as one periodic cell, each cap's height scattered by --scatter: an integer "
        "in [1, 32]")
@@ -100,9 +104,34 @@ po::options_description surface_options(const input::PointMaterial& material) {
   return opts;
 }
 
-SurfaceRun read_surface(const po::variables_map& vm, const input::PointMaterial& material) {
+SurfaceRun read_surface(const po::variables_map& given, const input::PointMaterial& material) {
   SurfaceRun run;
+  po::variables_map vm = given;
+  std::optional<model::CellGeometry> cell;
+  if (given.count("cell")) {
+    for (const char* name : {"l", "dh", "dh2", "s", "C", "lattice"}) {
+      if (given.count(name) && !given[name].defaulted()) {
+        throw input::UsageError(std::string("--") + name + " beside --cell: the cell file gives the cell, its sites and their shapes");
+      }
+    }
+    run.cell_file = given["cell"].as<std::string>();
+    cell = input::read_cell_file(run.cell_file, input::read_physical_scales(given, material.material.get()));
+    // The point's reading of the material and the load reads a cell too: the file's (taken
+    // out of the inputs' echo below).
+    const model::Site& first = cell->sites.front();
+    const auto put = [&vm](const char* name, const std::string& text) {
+      vm.erase(name);
+      vm.emplace(name, po::variable_value(boost::any(text), false));
+    };
+    put("l", input::json_number(cell->Lx));
+    put("dh", "0");
+    put("s", std::to_string(first.shape.s));
+    put("C", input::json_number(first.shape.C));
+  }
   run.inputs = input::read_point_inputs(vm, material);
+  if (cell) {
+    std::erase_if(run.inputs.values, [](const auto& v) { return v.first->name == "l" || v.first->name == "dh" || v.first->name == "s" || v.first->name == "C"; });
+  }
   run.times = input::read_times(vm, run.inputs.scales);
   run.lattice = input::read_choice(vm, "lattice", {"square", "hexagonal"}) == "square" ? model::LatticeKind::square
                                                                                        : model::LatticeKind::hexagonal;
@@ -130,7 +159,7 @@ SurfaceRun read_surface(const po::variables_map& vm, const input::PointMaterial&
       throw input::UsageError("--grid = " + grid + " is outside its range: " + range);
     }
   }
-  run.geometry = model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
+  run.geometry = cell ? *cell : model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
   run.supercell = vm["supercell"].as<int>();
   if (run.supercell < 1 || run.supercell > kMaxSupercell) {
     throw input::UsageError("--supercell = " + std::to_string(run.supercell) + " is outside its range: an integer in [1, " +
@@ -177,7 +206,23 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
 void evaluate(SurfaceRun& run, bool progress) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   if (run.grid_nodes == 0) run.grid_nodes = auto_grid(run, load);
-  const reference::PeriodicGrid grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell);
+  reference::PeriodicGrid grid;
+  if (run.cell_file.empty()) {
+    grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell);
+  } else {
+    // A cell file's tips go to their nearest nodes: the move is reported.
+    grid = reference::cell_grid(run.geometry, run.grid_nodes * run.supercell);
+    double moved = 0.0;
+    run.geometry = reference::snap_tips(run.geometry, grid, &moved);
+    if (grid.mirrored() && !model::mirror_symmetric(run.geometry)) grid.symmetry = reference::Symmetry::none;
+    if (moved > 1e-9 * std::min(grid.hx(), grid.hy())) {
+      std::ostringstream note;
+      note.precision(3);
+      note << "the tips were moved to the nearest nodes of the " << grid.nx << " x " << grid.ny << " grid, by at most "
+           << moved << " R (" << moved / std::min(grid.hx(), grid.hy()) << " node spacings)";
+      run.inputs.notes.push_back(note.str());
+    }
+  }
   const reference::Cell cell = reference::make_cell(run.geometry, grid);
   reference::LoadCurveOptions options;
   // A little past the largest load the material reaches, X(inf): a level untouched there
@@ -205,7 +250,11 @@ std::string num(double v) { return input::json_number(v); }
 void write_json(std::ostream& out, const SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
-  out << "  \"lattice\": " << input::json_string(model::lattice_name(run.lattice)) << ",\n";
+  out << "  \"lattice\": " << input::json_string(run.cell_file.empty() ? model::lattice_name(run.lattice) : "cell") << ",\n";
+  if (!run.cell_file.empty()) out << "  \"cell_file\": " << input::json_string(run.cell_file) << ",\n";
+  out << "  \"notes\": [";
+  for (std::size_t k = 0; k < run.inputs.notes.size(); ++k) out << (k ? ", " : "") << input::json_string(run.inputs.notes[k]);
+  out << "],\n";
   out << "  \"cell\": [" << num(run.geometry.Lx) << ", " << num(run.geometry.Ly) << "],\n";
   out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
   out << "  \"supercell\": " << run.supercell << ",\n";
@@ -263,9 +312,11 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
 void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
   const int L = run.curve.levels();
   const char* sep = csv ? "," : "  ";
-  out << (csv ? "# " : "") << "punchsweep surface: " << model::lattice_name(run.lattice) << " lattice, "
+  out << (csv ? "# " : "") << "punchsweep surface: "
+      << (run.cell_file.empty() ? model::lattice_name(run.lattice) + " lattice, " : "cell " + run.cell_file + ", ")
       << run.inputs.describe() << "\n";
   if (run.inputs.material) out << (csv ? "# " : "  ") << "material: " << run.inputs.material->describe() << "\n";
+  for (const std::string& note : run.inputs.notes) out << (csv ? "# " : "  ") << "note: " << note << "\n";
   out << (csv ? "# " : "  ") << "load curve: " << run.curve.nx << " x " << run.curve.ny << " nodes, "
       << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
       << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s\n";

@@ -20,6 +20,7 @@ namespace punchsweep::app {
 struct SurfaceRun {
   input::PointInputs inputs;
   model::LatticeKind lattice = model::LatticeKind::square;
+  std::string cell_file;  ///< --cell FILE, or empty for a lattice
   model::CellGeometry geometry;
   std::vector<double> times;
   int supercell = 1;   ///< K: the cell is K x K lattice cells

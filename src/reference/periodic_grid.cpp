@@ -196,6 +196,40 @@ PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKin
   return {K * n, K * ny, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
 }
 
+PeriodicGrid cell_grid(const model::CellGeometry& geometry, int n) {
+  if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
+  // Among the even ny within 10% of square nodes, the one whose nodes lie nearest the tips
+  // (a hexagonal cell's multiple of 6 puts them on nodes), the nearer to square on a tie.
+  const double square = n * geometry.Ly / geometry.Lx;
+  int best = std::max(2, 2 * static_cast<int>(std::lround(0.5 * square)));
+  double best_miss = std::numeric_limits<double>::infinity();
+  for (int ny = std::max(2, 2 * static_cast<int>(std::floor(0.45 * square))); ny <= 2 * std::ceil(0.55 * square); ny += 2) {
+    const double h = geometry.Ly / ny;
+    double miss = 0.0;
+    for (const model::Site& site : geometry.sites) miss = std::max(miss, std::abs(site.y / h - std::nearbyint(site.y / h)));
+    miss = miss < 1e-9 ? 0.0 : miss;
+    if (miss < best_miss || (miss == best_miss && std::abs(ny - square) < std::abs(best - square))) {
+      best = ny;
+      best_miss = miss;
+    }
+  }
+  return {n, best, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
+}
+
+model::CellGeometry snap_tips(const model::CellGeometry& geometry, const PeriodicGrid& grid, double* moved) {
+  model::CellGeometry out = geometry;
+  double longest = 0.0;
+  for (model::Site& site : out.sites) {
+    const double x = std::fmod(std::nearbyint(site.x / grid.hx()), grid.nx) * grid.hx();
+    const double y = std::fmod(std::nearbyint(site.y / grid.hy()), grid.ny) * grid.hy();
+    longest = std::max(longest, std::hypot(periodic_offset(x - site.x, grid.Lx), periodic_offset(y - site.y, grid.Ly)));
+    site.x = x;
+    site.y = y;
+  }
+  if (moved != nullptr) *moved = longest;
+  return out;
+}
+
 TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Symmetry symmetry) {
   if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
   Cell cell = make_cell(model::two_level_square(problem), PeriodicGrid::square(n, problem.l, symmetry));

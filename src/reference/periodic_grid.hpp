@@ -108,6 +108,15 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
 /// A supercell of K x K lattice cells (model::supercell) takes K times the nodes each way.
 PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n, int K = 1);
 
+/// The grid of any cell with n nodes along x (n even) and, along y, the even number within
+/// 10% of square nodes (n Ly / Lx) that puts the tips nearest to nodes (on them where one
+/// does; the nearest to square among equals); its quarter where the sites are even.
+PeriodicGrid cell_grid(const model::CellGeometry& geometry, int n);
+
+/// `geometry` with every tip moved to its nearest node of `grid` (make_cell needs tips on
+/// nodes); `moved` receives the longest move, in R (at most half a node's diagonal).
+model::CellGeometry snap_tips(const model::CellGeometry& geometry, const PeriodicGrid& grid, double* moved);
+
 /// The periodic unit cell of the two-level square lattice (docs/model.md, section 3): the
 /// l x l square with the level-1 punch at the corners (0, 0) and the level-2 punch, lower by
 /// dh, at the centre (l/2, l/2).

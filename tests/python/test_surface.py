@@ -120,3 +120,55 @@ def test_a_scattered_supercell_counts_its_caps_and_repeats_with_its_seed():
                          (["--supercell", "40"], "--supercell = 40 is outside its range")]:
         run = cli(*base, *bad)
         assert run.returncode == 2 and message in run.stderr and run.stdout == "", (bad, run.stderr)
+
+
+def write_cell(tmp_path, lines: list[str]) -> Path:
+    path = tmp_path / "cell.ini"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_a_cell_file_is_the_lattice_it_writes_out(tmp_path):
+    """The hexagonal three-level lattice written as a cell file (its six sites by hand, from
+    the geometry: the triangles' centres at l/sqrt(3) from three tallest sites) gives what
+    --lattice hexagonal --dh2 gives on the same grid; lengths with units and --R read as R."""
+    l = 1.2
+    H = l * 3 ** 0.5
+    R_um = 50.0
+    um = lambda x: f"{x * R_um:.12g}um"  # noqa: E731
+    cell = write_cell(tmp_path, [
+        "[cell]", f"Lx = {um(l)}", f"Ly = {um(H)}", "s = 2", "C = 0.5",
+        "site = 0, 0, 0, 0", f"site = {um(l / 2)}, {um(H / 2)}, 0, 0",
+        f"site = {um(l / 2)}, {um(H / 6)}, {um(0.06)}, 1", f"site = 0, {um(4 * H / 6)}, {um(0.06)}, 1",
+        f"site = 0, {um(2 * H / 6)}, {um(0.09)}, 2", f"site = {um(l / 2)}, {um(5 * H / 6)}, {um(0.09)}, 2"])
+    common = dict(T=3, pbar=0.015, grid=48, times=[0, 1, 2, 5, 20])
+    from_file = punchsweep.surface(cell=str(cell), R=f"{R_um}um", **common)
+    lattice = punchsweep.surface(lattice="hexagonal", l=l, dh=0.06, dh2=0.09, s=2, **common)
+    assert from_file["lattice"] == "cell" and from_file["grid"] == lattice["grid"] == [48, 84]
+    assert from_file["notes"] == []  # every tip on a node: nothing moved
+    for a, b in zip(from_file["levels"], lattice["levels"]):
+        assert a["regime"] == b["regime"] and a["t_star"] == pytest.approx(b["t_star"], rel=1e-9)
+    for key in ("area_fraction", "area_1", "area_2", "load_2", "sites_touched"):
+        np.testing.assert_allclose(from_file["series"][key], lattice["series"][key], rtol=1e-9, atol=1e-15)
+
+
+def test_a_bad_cell_file_is_refused_by_line_and_key(tmp_path):
+    base = ["--T", "3", "--pbar", "0.01", "--grid", "16"]
+    good = ["[cell]", "Lx = 1", "Ly = 1", "site = 0, 0, 0, 0", "site = 0.5, 0.5, 0.02, 1"]
+    cases = [
+        (good[:3] + ["site = 0, 0, 0"] + good[4:], ":4: site = 0, 0, 0: give x, y, drop, level"),
+        (good + ["height = 2"], ":6: unknown key 'height'; valid: Lx, Ly, s, C, site"),
+        (["[cell]", "Ly = 1", "site = 0, 0, 0, 0"], "missing key Lx"),
+        (good[:4] + ["site = 1.5, 0.5, 0.02, 1"], "site 1: (1.5, 0.5) R is outside the cell"),
+        (good[:3] + ["site = 0, 0, 0.01, 0", "site = 0.5, 0.5, 0.02, 1"], "the least drop is 0.01"),
+        (good[:3] + ["site = 0, 0, 0, 0", "site = 0.5um, 0.5, 0.02, 1"], "needs R"),
+        (["Lx = 1"] + good, ":1: 'Lx = 1' comes before [cell]"),
+    ]
+    for lines, message in cases:
+        path = write_cell(tmp_path, lines)
+        run = cli("--cell", path, *base)
+        assert run.returncode == 2 and message in run.stderr and run.stdout == "", (lines, run.stderr)
+    run = cli("--cell", write_cell(tmp_path, good), "--l", "1", *base)
+    assert run.returncode == 2 and "--l beside --cell" in run.stderr
+    run = cli("--cell", write_cell(tmp_path, good), *base)
+    assert run.returncode == 0, run.stderr

@@ -1,0 +1,119 @@
+#include "input/cell_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "input/text_file.hpp"
+#include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
+#include "model/numerics/number_text.hpp"
+
+namespace punchsweep::input {
+
+model::CellGeometry parse_cell(const std::string& text, const std::string& origin, const PhysicalScales& scales) {
+  const std::optional<Scale> length_scale = scale_of("R", scales);
+  int line_number = 0;
+  const auto fail = [&](const std::string& what) -> void {
+    throw UsageError(origin + (line_number > 0 ? ":" + std::to_string(line_number) : std::string()) + ": " + what);
+  };
+  const auto length = [&](const std::string& key, const std::string& value) {
+    try {
+      return read_scaled(std::string(model::trim(value)), *length_scale);
+    } catch (const std::invalid_argument& e) {
+      fail(key + " = " + value + ": " + e.what());
+    }
+    return 0.0;
+  };
+  std::map<std::string, std::pair<std::string, int>> keys;  // key -> value, line
+  std::vector<std::pair<std::string, int>> sites;           // text, line
+  bool in_cell = false;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    ++line_number;
+    if (const auto hash = line.find_first_of("#;"); hash != std::string::npos) line.erase(hash);
+    line = std::string(model::trim(line));
+    if (line.empty()) continue;
+    if (line.front() == '[') {
+      if (line != "[cell]") fail("'" + line + "' is no section of a cell file; valid: [cell]");
+      if (in_cell) fail("section [cell] appears twice");
+      in_cell = true;
+      continue;
+    }
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) fail("'" + line + "' is not 'key = value'");
+    if (!in_cell) fail("'" + line + "' comes before [cell]");
+    const std::string key(model::trim(std::string_view(line).substr(0, eq)));
+    const std::string value(model::trim(std::string_view(line).substr(eq + 1)));
+    if (key == "site") {
+      sites.emplace_back(value, line_number);
+    } else if (key == "Lx" || key == "Ly" || key == "s" || key == "C") {
+      if (!keys.emplace(key, std::make_pair(value, line_number)).second) fail("key " + key + " is given twice");
+    } else {
+      fail("unknown key '" + key + "'; valid: Lx, Ly, s, C, site");
+    }
+  }
+  model::CellGeometry g;
+  model::Shape shape{};
+  for (const char* key : {"Lx", "Ly"}) {
+    const auto it = keys.find(key);
+    if (it == keys.end()) {
+      line_number = 0;
+      fail(std::string("missing key ") + key + " (the cell's length, in R or with a unit)");
+    }
+    line_number = it->second.second;
+    (std::string(key) == "Lx" ? g.Lx : g.Ly) = length(key, it->second.first);
+  }
+  if (const auto it = keys.find("s"); it != keys.end()) {
+    line_number = it->second.second;
+    shape.s = parse_integer(it->second.first, origin + ":" + std::to_string(line_number) + ": s");
+  }
+  if (const auto it = keys.find("C"); it != keys.end()) {
+    line_number = it->second.second;
+    shape.C = parse_real(it->second.first, origin + ":" + std::to_string(line_number) + ": C");
+  }
+  for (const auto& [value, line] : sites) {
+    line_number = line;
+    std::vector<std::string> fields;
+    std::istringstream items(value);
+    for (std::string item; std::getline(items, item, ',');) fields.emplace_back(model::trim(item));
+    if (fields.size() != 4 && fields.size() != 6) {
+      fail("site = " + value + ": give x, y, drop, level (and optionally s, C)");
+    }
+    model::Site site;
+    site.x = length("site x", fields[0]);
+    site.y = length("site y", fields[1]);
+    site.drop = length("site drop", fields[2]);
+    site.level = parse_integer(fields[3], origin + ":" + std::to_string(line) + ": site level");
+    site.shape = shape;
+    if (fields.size() == 6) {
+      site.shape.s = parse_integer(fields[4], origin + ":" + std::to_string(line) + ": site s");
+      site.shape.C = parse_real(fields[5], origin + ":" + std::to_string(line) + ": site C");
+    }
+    // A tip on the far edge is the near edge's: the cell is periodic.
+    if (site.x == g.Lx) site.x = 0.0;
+    if (site.y == g.Ly) site.y = 0.0;
+    g.sites.push_back(site);
+  }
+  line_number = 0;
+  if (const std::string e = model::geometry_error(g); !e.empty()) throw UsageError(origin + ": " + e);
+  double least = std::numeric_limits<double>::infinity();
+  for (const model::Site& site : g.sites) least = std::min(least, site.drop);
+  if (least != 0.0) {
+    std::ostringstream out;
+    out.precision(17);
+    out << origin << ": the least drop is " << least << " R: the tallest site's drop is 0 (drops are taken from it)";
+    throw UsageError(out.str());
+  }
+  return g;
+}
+
+model::CellGeometry read_cell_file(const std::string& path, const PhysicalScales& scales) {
+  return parse_cell(read_text_file(path, "cell file"), path, scales);
+}
+
+}  // namespace punchsweep::input
