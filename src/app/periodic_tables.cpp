@@ -122,26 +122,6 @@ bool same_area(double a_table, double a_direct, int n) {
   return std::abs(std::numbers::pi * (a_table * a_table - a_direct * a_direct)) <= 4.5 / (double(n) * n);
 }
 
-/// An exclusive lock on `file` (created 0600, not followed if a link), held while alive.
-class FileLock {
- public:
-  explicit FileLock(const std::filesystem::path& file)
-      : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600)) {
-    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
-      ::close(fd_);
-      fd_ = -1;
-    }
-  }
-  ~FileLock() {
-    if (fd_ >= 0) ::close(fd_);  // releases the lock
-  }
-  FileLock(const FileLock&) = delete;
-  FileLock& operator=(const FileLock&) = delete;
-
- private:
-  int fd_;
-};
-
 }  // namespace
 
 std::optional<model::PeriodicTable> shipped_periodic_table(int s, int n) {

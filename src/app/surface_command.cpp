@@ -10,11 +10,13 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/curve_cache.hpp"
 #include "input/cell_file.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "reference/load_curve.hpp"
 #include "reference/periodic_grid.hpp"
+#include "sweep/reproducible_fft.hpp"
 
 namespace po = boost::program_options;
 
@@ -225,10 +227,11 @@ void evaluate(SurfaceRun& run, bool progress) {
   }
   const reference::Cell cell = reference::make_cell(run.geometry, grid);
   reference::LoadCurveOptions options;
-  // A little past the largest load the material reaches, X(inf): a level untouched there
-  // never touches. Under unlimited creep (X(inf) infinite) to full contact, where every
-  // level has touched: each level's t* is then known whatever the times.
-  options.X_top = 1.05 * load.final();
+  // To full contact, where every level that can touch has: the curve is then the
+  // geometry's alone, whatever the material, temperature, pressure and times, and one
+  // cached curve serves them all. FFTW's plans are its estimate's, so that a curve and
+  // every answer read off it have the same bits in every process.
+  sweep::use_reproducible_fft_plans();
   const auto start = std::chrono::steady_clock::now();
   auto last = start;
   if (progress) {
@@ -236,11 +239,12 @@ void evaluate(SurfaceRun& run, bool progress) {
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - last).count() < 2.0) return;
       last = now;
-      std::cerr << "punchsweep surface: load curve, " << solves << " solves, X = " << X << " of " << options.X_top
-                << " E0*\n";
+      std::cerr << "punchsweep surface: load curve, " << solves << " solves, X = " << X << " E0* on the way to full contact\n";
     };
   }
-  run.curve = reference::build_load_curve(run.geometry, cell, options);
+  CurveOrigin origin = CurveOrigin::built;
+  run.curve = load_curve_for(run.geometry, cell, options, &origin);
+  run.curve_cached = origin == CurveOrigin::cache;
   run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.history = model::surface_history(run.curve, load, run.times);
 }
@@ -261,7 +265,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
   out << "  \"curve\": {\"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
-      << ", \"seconds\": " << num(run.curve_seconds) << "},\n";
+      << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false") << "},\n";
   out << "  \"levels\": [";
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
@@ -319,7 +323,8 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
   for (const std::string& note : run.inputs.notes) out << (csv ? "# " : "  ") << "note: " << note << "\n";
   out << (csv ? "# " : "  ") << "load curve: " << run.curve.nx << " x " << run.curve.ny << " nodes, "
       << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
-      << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s\n";
+      << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s"
+      << (run.curve_cached ? " (from the table cache)" : "") << "\n";
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);

@@ -29,6 +29,7 @@ struct SurfaceRun {
   model::LoadCurve curve;
   model::SurfaceHistory history;
   double curve_seconds = 0.0;
+  bool curve_cached = false;  ///< read from the table cache (app/curve_cache.hpp)
 };
 
 /// `punchsweep surface ...`; returns the exit code, throws UsageError for bad input (before

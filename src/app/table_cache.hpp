@@ -55,4 +55,18 @@ std::vector<double> read_tables(const std::filesystem::path& file);
 /// cannot be written is skipped silently (the tables are then built again next time).
 void write_tables(const std::filesystem::path& file, const std::vector<double>& tables);
 
+/// An exclusive lock on `file` (created 0600, not followed if a link), held while alive:
+/// processes that build the same cached table one after the other, the later one reading
+/// what the first saved.
+class FileLock {
+ public:
+  explicit FileLock(const std::filesystem::path& file);
+  ~FileLock();
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
 }  // namespace punchsweep::app

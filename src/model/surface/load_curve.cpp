@@ -89,6 +89,57 @@ bool LoadCurve::monotone_between(double X_a, double X_b) const {
   return true;
 }
 
+std::vector<double> LoadCurve::tables() const {
+  std::vector<double> out{kFormat, cell_area, static_cast<double>(nx), static_cast<double>(ny),
+                          static_cast<double>(levels()), static_cast<double>(sites()), static_cast<double>(s_tallest),
+                          X_full, static_cast<double>(samples.size())};
+  for (int level : site_level) out.push_back(level);
+  out.insert(out.end(), site_touchdown.begin(), site_touchdown.end());
+  out.insert(out.end(), level_touchdown.begin(), level_touchdown.end());
+  out.insert(out.end(), level_share.begin(), level_share.end());
+  for (char grew : pressure_monotone) out.push_back(grew ? 1.0 : 0.0);
+  for (const LoadCurveSample& sample : samples) {
+    out.push_back(sample.X);
+    out.insert(out.end(), sample.level_load.begin(), sample.level_load.end());
+    out.insert(out.end(), sample.level_area.begin(), sample.level_area.end());
+  }
+  return out;
+}
+
+std::optional<LoadCurve> LoadCurve::from_tables(const std::vector<double>& numbers) {
+  constexpr std::size_t kHeader = 9;
+  if (numbers.size() < kHeader || numbers[0] != kFormat) return std::nullopt;
+  const auto count = [](double v) { return v >= 0.0 && v < 1e9 && v == std::floor(v) ? static_cast<std::size_t>(v) : std::size_t{0}; };
+  const std::size_t L = count(numbers[4]), S = count(numbers[5]), N = count(numbers[8]);
+  if (L == 0 || S == 0 || N == 0 || numbers.size() != kHeader + 2 * S + 2 * L + (N - 1) + N * (1 + 2 * L)) return std::nullopt;
+  LoadCurve c;
+  c.cell_area = numbers[1];
+  c.nx = static_cast<int>(count(numbers[2]));
+  c.ny = static_cast<int>(count(numbers[3]));
+  c.s_tallest = static_cast<int>(count(numbers[6]));
+  c.X_full = numbers[7];
+  std::size_t k = kHeader;
+  const auto take = [&](std::size_t n) {
+    std::vector<double> part(numbers.begin() + static_cast<std::ptrdiff_t>(k), numbers.begin() + static_cast<std::ptrdiff_t>(k + n));
+    k += n;
+    return part;
+  };
+  for (double level : take(S)) c.site_level.push_back(static_cast<int>(count(level)));
+  c.site_touchdown = take(S);
+  c.level_touchdown = take(L);
+  c.level_share = take(L);
+  for (double grew : take(N - 1)) c.pressure_monotone.push_back(grew != 0.0 ? 1 : 0);
+  for (std::size_t n = 0; n < N; ++n) {
+    LoadCurveSample sample;
+    sample.X = take(1)[0];
+    sample.level_load = take(L);
+    sample.level_area = take(L);
+    c.samples.push_back(std::move(sample));
+  }
+  if (!load_curve_error(c).empty()) return std::nullopt;
+  return c;
+}
+
 std::string load_curve_error(const LoadCurve& c) {
   std::ostringstream out;
   const std::size_t L = c.level_touchdown.size();

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,14 @@ struct LoadCurve {
   /// Whether the pressure grew at every node over loads [X_a, X_b] (the samples' record;
   /// true in full contact, where extra load spreads evenly).
   bool monotone_between(double X_a, double X_b) const;
+
+  /// The curve as numbers (what the table cache keeps): kFormat, then the sizes, the
+  /// per-site and per-level fields, the intervals' record and the samples.
+  std::vector<double> tables() const;
+  /// The curve of tables(); nullopt for numbers of another format, sizes that do not add
+  /// up, or a curve load_curve_error refuses.
+  static std::optional<LoadCurve> from_tables(const std::vector<double>& numbers);
+  static constexpr double kFormat = 1.0;
 };
 
 /// Empty when `curve` is one the readers can use (samples increasing in X, sizes matching,
