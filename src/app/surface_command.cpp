@@ -251,6 +251,47 @@ void evaluate(SurfaceRun& run, bool progress) {
 
 std::string num(double v) { return input::json_number(v); }
 
+/// "physical": the lengths, areas, loads and loads X in R's unit, its square, N and Pa,
+/// where --R and a material give the scales (nothing otherwise).
+void write_physical(std::ostream& out, const SurfaceRun& run) {
+  const input::PhysicalScales& scales = run.inputs.scales;
+  const std::optional<input::PhysicalUnit> length = input::physical_unit("R", scales);
+  const std::optional<input::PhysicalUnit> pressure = input::physical_unit("E0/(1-nu^2)", scales);
+  const std::optional<input::PhysicalUnit> load = input::physical_unit("R^2 E0/(1-nu^2)", scales);
+  if (!length || !pressure || !load) return;
+  const double area = length->per_scaled * length->per_scaled;
+  const int L = run.curve.levels();
+  out << "  \"physical\": {\n    \"units\": {\"X\": \"Pa\", \"area\": " << input::json_string(length->units + "^2")
+      << ", \"load\": \"N\", \"drop\": " << input::json_string(length->units) << ", \"cell\": " << input::json_string(length->units)
+      << "},\n    \"cell\": [" << num(run.geometry.Lx * length->per_scaled) << ", " << num(run.geometry.Ly * length->per_scaled)
+      << "],\n    \"levels\": [";
+  for (int level = 0; level < L; ++level) {
+    double drop = std::numeric_limits<double>::infinity();
+    for (const model::Site& site : run.geometry.sites) {
+      if (site.level == level) drop = std::min(drop, site.drop);
+    }
+    out << (level ? ", " : "") << "{\"drop\": " << num(drop * length->per_scaled) << ", \"X_star\": "
+        << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled) << "}";
+  }
+  out << "],\n    \"series\": {\n";
+  const auto series = [&](const std::string& name, auto value, bool last) {
+    out << "      \"" << name << "\": [";
+    for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) out << (k ? ", " : "") << num(value(run.history.snapshots[k]));
+    out << "]" << (last ? "\n" : ",\n");
+  };
+  series("X", [&](const model::SurfaceSnapshot& s) { return s.X * pressure->per_scaled; }, false);
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("area_" + std::to_string(level), [&](const model::SurfaceSnapshot& s) { return s.state.level_area[at] * area; }, false);
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("load_" + std::to_string(level), [&](const model::SurfaceSnapshot& s) { return s.level_load[at] * load->per_scaled; },
+           level == L - 1);
+  }
+  out << "    }\n  },\n";
+}
+
 void write_json(std::ostream& out, const SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
@@ -309,7 +350,9 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   }
   series("valid", [](const model::SurfaceSnapshot& s) { return s.validity == model::SurfaceValidity::valid ? "true" : "false"; });
   series("reason", [](const model::SurfaceSnapshot& s) { return input::json_string(std::string(model::surface_validity_name(s.validity))); }, true);
-  out << "  },\n  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
+  out << "  },\n";
+  write_physical(out, run);
+  out << "  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
       << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
 }
 

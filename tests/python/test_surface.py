@@ -199,3 +199,22 @@ def test_the_curve_is_kept_in_the_table_cache_and_a_damaged_one_is_built_again(t
     rebuilt = run("--T", "2.5", "--pbar", "0.02")
     assert rebuilt["curve"]["cached"] is False
     assert rebuilt["levels"] == first["levels"] and rebuilt["series"] == first["series"]
+
+
+def test_physical_units_where_R_and_a_material_give_them():
+    """--R and a material: the JSON's "physical" gives X in Pa, areas in R's unit squared,
+    loads in N and drops in R's unit, each the scaled value times its scale (E0* from the
+    material, 20 kPa / pbar); the loads add up to the pressure times the cell's area."""
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    out = punchsweep.surface(material=str(truth), R="80um", l="250um", dh="3um", s=2, pressure="20kPa",
+                             temperature=23, times="0, 1s, 1min", grid=32)
+    physical = out["physical"]
+    assert physical["units"] == {"X": "Pa", "area": "um^2", "load": "N", "drop": "um", "cell": "um"}
+    assert physical["cell"] == pytest.approx([250.0, 250.0], rel=1e-12)
+    assert physical["levels"][1]["drop"] == pytest.approx(3.0, rel=1e-12)
+    E0_star = 20e3 / out["series"]["X"][0]  # X(0+) = pbar for a step, pbar = 20 kPa / E0*
+    np.testing.assert_allclose(physical["series"]["X"], out["series"]["X"] * E0_star, rtol=1e-12)
+    np.testing.assert_allclose(physical["series"]["area_1"], out["series"]["area_1"] * 80.0 ** 2, rtol=1e-12)
+    total = physical["series"]["load_0"] + physical["series"]["load_1"]
+    np.testing.assert_allclose(total, 20e3 * (250e-6) ** 2, rtol=1e-9)
+    assert "physical" not in punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=16)

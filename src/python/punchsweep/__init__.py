@@ -243,7 +243,8 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
     dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
     area_fraction, sites_touched, area_0 ..., load_0 ... as numpy arrays; valid and reason
-    per time),
+    per time), physical (with R and a material: X in Pa, areas, loads in N, drops, their
+    units),
     curve, cell, grid, units. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
@@ -254,6 +255,8 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     out = json.loads(_core.surface(keywords))
     out["series"] = {k: (np.array(v) if k not in ("valid", "reason") else v) for k, v in out["series"].items()}
     out["series"]["valid"] = np.array(out["series"]["valid"], dtype=bool)
+    if "physical" in out:
+        out["physical"]["series"] = {k: np.array(v) for k, v in out["physical"]["series"].items()}
     return out
 
 
