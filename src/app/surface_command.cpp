@@ -14,7 +14,9 @@
 #include "input/cell_file.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
+#include "reference/cell_stepping.hpp"
 #include "reference/load_curve.hpp"
+#include "reference/reference_point.hpp"
 #include "reference/periodic_grid.hpp"
 #include "sweep/reproducible_fft.hpp"
 
@@ -98,6 +100,9 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "needs --supercell")
       ("seed", po::value<unsigned long long>()->value_name("N")->default_value(1),
        "the seed of --scatter's draws (std::mt19937_64; the same caps on every machine)")
+      ("check", po::bool_switch(),
+       "also step the same cell in time (the time-stepping boundary elements, which assume nothing of the "
+       "contact's history) and print its touch times, areas and loads beside the curve's")
       ("grid", po::value<std::string>()->value_name("N")->default_value("auto"),
        "boundary-element nodes per pitch: an even integer in [4, 2048], or auto (the smallest spot the "
        "times meet spans a radius of 12 nodes; 64 to 512)")
@@ -161,6 +166,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
       throw input::UsageError("--grid = " + grid + " is outside its range: " + range);
     }
   }
+  run.check = vm.count("check") && vm["check"].as<bool>();
   run.geometry = cell ? *cell : model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
   run.supercell = vm["supercell"].as<int>();
   if (run.supercell < 1 || run.supercell > kMaxSupercell) {
@@ -247,6 +253,19 @@ void evaluate(SurfaceRun& run, bool progress) {
   run.curve_cached = origin == CurveOrigin::cache;
   run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.history = model::surface_history(run.curve, load, run.times);
+  if (run.check) {
+    // The time stepping of the same cell, steps scaled to the law as `reference` scales them.
+    reference::ReferenceOptions scaled;
+    reference::scale_steps_to_law(*run.inputs.creep, &scaled);
+    reference::CellReferenceOptions check;
+    check.times = run.times;
+    check.steps = scaled.steps;
+    check.t_star_resolution = scaled.t_star_resolution;
+    const auto check_start = std::chrono::steady_clock::now();
+    run.stepped = reference::evaluate_cell_reference(run.geometry, cell, run.inputs.problem.pbar0, *run.inputs.creep,
+                                                     run.inputs.problem.loading, check);
+    run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
+  }
 }
 
 std::string num(double v) { return input::json_number(v); }
@@ -288,6 +307,36 @@ void write_physical(std::ostream& out, const SurfaceRun& run) {
     const std::size_t at = static_cast<std::size_t>(level);
     series("load_" + std::to_string(level), [&](const model::SurfaceSnapshot& s) { return s.level_load[at] * load->per_scaled; },
            level == L - 1);
+  }
+  out << "    }\n  },\n";
+}
+
+/// "check": the time stepping's touch times, areas and loads at the same times.
+void write_check(std::ostream& out, const SurfaceRun& run) {
+  const reference::CellReference& r = *run.stepped;
+  const int L = run.curve.levels();
+  out << "  \"check\": {\n    \"seconds\": " << num(run.check_seconds) << ", \"steps\": " << r.steps << ", \"converged\": "
+      << (r.converged ? "true" : "false") << ",\n    \"levels\": [";
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    out << (level ? ", " : "") << "{\"regime\": " << input::json_string(std::string(model::regime_name(r.level_regime[at])))
+        << ", \"t_star\": " << num(r.level_t_star[at]) << "}";
+  }
+  out << "],\n    \"series\": {\n";
+  const auto series = [&](const std::string& name, auto value, bool last) {
+    out << "      \"" << name << "\": [";
+    for (std::size_t k = 0; k < r.series.size(); ++k) out << (k ? ", " : "") << num(value(r.series[k]));
+    out << "]" << (last ? "\n" : ",\n");
+  };
+  series("area_fraction", [](const reference::CellSnapshot& s) { return s.area_fraction; }, false);
+  series("sites_touched", [](const reference::CellSnapshot& s) { return s.sites_touched; }, false);
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("area_" + std::to_string(level), [at](const reference::CellSnapshot& s) { return s.level_area[at]; }, false);
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("load_" + std::to_string(level), [at](const reference::CellSnapshot& s) { return s.level_load[at]; }, level == L - 1);
   }
   out << "    }\n  },\n";
 }
@@ -352,6 +401,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   series("reason", [](const model::SurfaceSnapshot& s) { return input::json_string(std::string(model::surface_validity_name(s.validity))); }, true);
   out << "  },\n";
   write_physical(out, run);
+  if (run.stepped) write_check(out, run);
   out << "  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
       << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
 }
@@ -380,14 +430,29 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
       out << " (untouched up to X = " << run.curve.X_last() << " E0*, past X(inf))\n";
     }
   }
+  if (run.stepped) {
+    for (int level = 1; level < L; ++level) {
+      const std::size_t at = static_cast<std::size_t>(level);
+      out << (csv ? "# " : "  ") << "check: level " << level << " by time stepping: "
+          << model::regime_name(run.stepped->level_regime[at]);
+      if (std::isfinite(run.stepped->level_t_star[at]) && run.stepped->level_t_star[at] > 0.0) {
+        out << " at t* = " << run.stepped->level_t_star[at] << " " << run.inputs.time_unit;
+      }
+      out << "\n";
+    }
+    out << (csv ? "# " : "  ") << "check: " << run.stepped->steps << " time steps, " << run.check_seconds << " s\n";
+  }
   out << "t" << sep << "X" << sep << "area_fraction" << sep << "sites_touched";
   for (int level = 0; level < L; ++level) out << sep << "area_" << level;
   for (int level = 0; level < L; ++level) out << sep << "load_" << level;
+  if (run.stepped) out << sep << "check_area_fraction" << sep << "check_sites_touched";
   out << sep << "valid\n";
-  for (const model::SurfaceSnapshot& s : run.history.snapshots) {
+  for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) {
+    const model::SurfaceSnapshot& s = run.history.snapshots[k];
     out << s.t << sep << s.X << sep << s.state.area_fraction << sep << s.state.sites_touched;
     for (double a : s.state.level_area) out << sep << a;
     for (double P : s.level_load) out << sep << P;
+    if (run.stepped) out << sep << run.stepped->series[k].area_fraction << sep << run.stepped->series[k].sites_touched;
     out << sep << model::surface_validity_name(s.validity) << "\n";
   }
 }

@@ -6,6 +6,7 @@
 /// and the sites in contact in time.
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "model/problem/cell_geometry.hpp"
 #include "model/surface/load_curve.hpp"
 #include "model/surface/surface_history.hpp"
+#include "reference/cell_stepping.hpp"
 
 namespace punchsweep::app {
 
@@ -30,6 +32,9 @@ struct SurfaceRun {
   model::SurfaceHistory history;
   double curve_seconds = 0.0;
   bool curve_cached = false;  ///< read from the table cache (app/curve_cache.hpp)
+  bool check = false;         ///< --check: step the same cell in time too
+  std::optional<reference::CellReference> stepped;
+  double check_seconds = 0.0;
 };
 
 /// `punchsweep surface ...`; returns the exit code, throws UsageError for bad input (before

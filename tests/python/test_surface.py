@@ -218,3 +218,19 @@ def test_physical_units_where_R_and_a_material_give_them():
     total = physical["series"]["load_0"] + physical["series"]["load_1"]
     np.testing.assert_allclose(total, 20e3 * (250e-6) ** 2, rtol=1e-9)
     assert "physical" not in punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=16)
+
+
+def test_check_steps_the_same_cell_in_time():
+    """--check: the time stepping of the same cell and grid beside the curve's answers; they
+    agree to the stepping's t* resolution (1e-3 of the law's shortest time) and areas to 1%
+    (tests/tables/cell_stepping_surface_test.cpp holds the finer comparison)."""
+    out = punchsweep.surface(lattice="hexagonal", l=1.2, dh=0.06, dh2=0.09, T=4, pbar=0.015, s=2,
+                             times=[0, 1, 2, 5, 8], grid=48, check=True)
+    check = out["check"]
+    assert check["converged"]
+    for mine, stepped in zip(out["levels"], check["levels"]):
+        assert mine["regime"] == stepped["regime"]
+        assert mine["t_star"] == pytest.approx(stepped["t_star"], abs=1e-3 + 2e-4 * stepped["t_star"])
+    np.testing.assert_allclose(out["series"]["area_fraction"], check["series"]["area_fraction"], rtol=1e-2)
+    np.testing.assert_array_equal(out["series"]["sites_touched"], check["series"]["sites_touched"])
+    assert "check" not in punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=16)

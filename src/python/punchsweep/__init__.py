@@ -233,7 +233,7 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
             s: int | None = None, C: float | None = None, times: Iterable[float] | str | None = None,
             grid: int | str | None = None, cell: str | None = None, supercell: int | None = None,
             scatter: str | None = None,
-            seed: int | None = None, material: str | None = None, temperature: float | str | None = None,
+            seed: int | None = None, check: bool = False, material: str | None = None, temperature: float | str | None = None,
             pressure: str | None = None, ramp: float | str | None = None, load_table: str | None = None,
             **options: Any) -> dict:
     """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
@@ -244,17 +244,19 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
     area_fraction, sites_touched, area_0 ..., load_0 ... as numpy arrays; valid and reason
     per time), physical (with R and a material: X in Pa, areas, loads in N, drops, their
-    units),
+    units), check (with check=True: the time stepping's levels and series on the same cell),
     curve, cell, grid, units. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
                               grid=grid, cell=None if cell is None else os.fspath(cell), supercell=supercell,
-                              scatter=scatter, seed=seed, material=material,
+                              scatter=scatter, seed=seed, check="true" if check else None, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp, load_table=load_table,
                               **options))
     out = json.loads(_core.surface(keywords))
     out["series"] = {k: (np.array(v) if k not in ("valid", "reason") else v) for k, v in out["series"].items()}
     out["series"]["valid"] = np.array(out["series"]["valid"], dtype=bool)
+    if "check" in out:
+        out["check"]["series"] = {k: np.array(v) for k, v in out["check"]["series"].items()}
     if "physical" in out:
         out["physical"]["series"] = {k: np.array(v) for k, v in out["physical"]["series"].items()}
     return out
