@@ -14,10 +14,17 @@ namespace punchsweep::app {
 
 namespace {
 
-/// Everything the curve depends on, as text: the geometry, the grid and the options (a
-/// change of any gives another file).
-std::string curve_key(const model::CellGeometry& g, const reference::PeriodicGrid& grid,
-                      const reference::LoadCurveOptions& o) {
+/// Everything the curve depends on, as text: the geometry, the grid, the cell's fields and
+/// the options (a change of any gives another file).
+std::string curve_key(const model::CellGeometry& g, const reference::Cell& cell, const reference::LoadCurveOptions& o) {
+  const reference::PeriodicGrid& grid = cell.grid;
+  // The cell's own numbers too (a measured map's heights are no sites' punches): the
+  // profile and the levels' shares, hashed.
+  io::Sha256 fields;
+  fields.update(cell.profile.data(), cell.profile.size() * sizeof(double));
+  for (const std::vector<double>& weight : cell.level_weight) fields.update(weight.data(), weight.size() * sizeof(double));
+  fields.update(cell.tips.data(), cell.tips.size() * sizeof(std::size_t));
+  const io::Digest field_digest = fields.digest();
   std::ostringstream key;
   key.precision(17);
   key << "punchsweep load curve, format " << model::LoadCurve::kFormat << "; cell " << g.Lx << " x " << g.Ly << "; sites";
@@ -25,7 +32,8 @@ std::string curve_key(const model::CellGeometry& g, const reference::PeriodicGri
   key << "; grid " << grid.nx << " x " << grid.ny << (grid.mirrored() ? " quarter" : " whole") << "; top " << o.X_top
       << "; spot " << o.min_spot_nodes << "; decade " << o.samples_per_decade << "; area " << o.area_tolerance << "; load "
       << o.load_tolerance << "; refinements " << o.max_refinements << "; touchdown " << o.touchdown_tolerance << "; solver "
-      << o.solver.tolerance << ' ' << o.solver.max_iterations << ' ' << o.solver.precondition;
+      << o.solver.tolerance << ' ' << o.solver.max_iterations << ' ' << o.solver.precondition << "; fields";
+  for (unsigned char byte : field_digest) key << ' ' << static_cast<int>(byte);
   return key.str();
 }
 
@@ -51,7 +59,7 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
       !make_private_folder(*cache.folder)) {
     return reference::build_load_curve(geometry, cell, options);
   }
-  const std::string key = curve_key(geometry, cell.grid, options);
+  const std::string key = curve_key(geometry, cell, options);
   io::Sha256 hash;
   hash.update(key.data(), key.size());
   const std::vector<double> digest = digest_numbers(hash.digest());

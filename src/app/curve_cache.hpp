@@ -15,8 +15,8 @@ namespace punchsweep::app {
 enum class CurveOrigin { cache, built };
 
 /// The load curve of `geometry` on `cell`'s grid with `options`: read from the table cache
-/// where this engine saved one for the same geometry, grid and options (they are hashed
-/// into the file's name and checked inside it), else built and saved there (under a lock,
+/// where this engine saved one for the same geometry, grid, cell fields (profile, level
+/// shares, tips) and options (they are hashed into the file's name and checked inside it), else built and saved there (under a lock,
 /// so that processes asking at once build it once). Without a usable cache it is built.
 model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::Cell& cell,
                                 const reference::LoadCurveOptions& options, CurveOrigin* origin = nullptr);

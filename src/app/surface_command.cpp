@@ -12,10 +12,12 @@
 
 #include "app/curve_cache.hpp"
 #include "input/cell_file.hpp"
+#include "input/height_map.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "reference/cell_stepping.hpp"
 #include "reference/load_curve.hpp"
+#include "reference/measured_cell.hpp"
 #include "reference/reference_point.hpp"
 #include "reference/periodic_grid.hpp"
 #include "sweep/reproducible_fft.hpp"
@@ -91,6 +93,16 @@ po::options_description surface_options(const input::PointMaterial& material) {
       ("cell", po::value<std::string>()->value_name("FILE"),
        "any rectangular periodic cell instead of a lattice: a [cell] file of Lx, Ly, s, C and one "
        "'site = x, y, drop, level[, s, C]' line per punch (docs/cli.md); --grid then counts nodes along Lx")
+      ("height-map", po::value<std::string>()->value_name("FILE"),
+       "a measured period of a texture: a height map (CSV rows along y, or a 2-D float .npy), one "
+       "boundary-element node per pixel (an even count each way); its summits are the caps followed")
+      ("pixel", po::value<std::string>()->value_name("SIZE"), "the height map's pixel (a length: 0.5um with --R, or in R)")
+      ("height-unit", po::value<std::string>()->value_name("UNIT")->default_value("R"),
+       "the unit of the map's heights: R, or a length unit with --R (um, nm)")
+      ("summit-radius", po::value<std::string>()->value_name("L"),
+       "a summit is higher than every pixel within this length (default 3 pixels)")
+      ("level-gap", po::value<std::string>()->value_name("L"),
+       "summits sorted by depth start a new level where the depth jumps by more than L (default: one level)")
       ("supercell", po::value<int>()->value_name("K")->default_value(1),
        "K x K lattice cells as one periodic cell, each cap's height scattered by --scatter: an integer "
        "in [1, 32]")
@@ -111,20 +123,71 @@ po::options_description surface_options(const input::PointMaterial& material) {
   return opts;
 }
 
+/// --height-map FILE with --pixel, --height-unit, --summit-radius and --level-gap: the
+/// measured cell, lengths in R.
+reference::MeasuredCell read_measured(const po::variables_map& vm, const input::PhysicalScales& scales) {
+  const std::string path = vm["height-map"].as<std::string>();
+  const input::HeightMap map = input::read_height_map(path);
+  const std::optional<input::Scale> length = input::scale_of("R", scales);
+  const auto read_length = [&](const char* option, const std::string& text) {
+    double value = 0.0;
+    try {
+      value = input::read_scaled(text, *length);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError(std::string("--") + option + " = " + e.what());
+    }
+    if (!(std::isfinite(value) && value > 0.0)) {
+      throw input::UsageError(std::string("--") + option + " = " + text + " is outside its range: a length > 0");
+    }
+    return value;
+  };
+  if (!vm.count("pixel")) throw input::UsageError("--height-map needs --pixel SIZE, the map's pixel (a length: 0.5um with --R, or in R)");
+  const double pixel = read_length("pixel", vm["pixel"].as<std::string>());
+  const std::string unit = vm["height-unit"].as<std::string>();
+  const double per_unit = unit == "R" ? 1.0 : read_length("height-unit", "1" + unit);
+  if (map.nx % 2 != 0 || map.ny % 2 != 0) {
+    throw input::UsageError(path + ": " + std::to_string(map.nx) + " x " + std::to_string(map.ny) +
+                            " pixels; the boundary elements need an even count each way (crop a row or column)");
+  }
+  const double radius = vm.count("summit-radius") ? read_length("summit-radius", vm["summit-radius"].as<std::string>()) : 3.0 * pixel;
+  if (radius < pixel) throw input::UsageError("--summit-radius is under one pixel: a summit needs neighbours to be above");
+  const double gap = vm.count("level-gap") ? read_length("level-gap", vm["level-gap"].as<std::string>())
+                                           : std::numeric_limits<double>::infinity();
+  std::vector<double> z = map.height;
+  for (double& v : z) v *= per_unit;
+  return reference::make_measured_cell(z, map.nx, map.ny, pixel, radius, gap);
+}
+
 SurfaceRun read_surface(const po::variables_map& given, const input::PointMaterial& material) {
   SurfaceRun run;
   po::variables_map vm = given;
   std::optional<model::CellGeometry> cell;
-  if (given.count("cell")) {
+  const bool measured = given.count("height-map") > 0;
+  if (given.count("cell") || measured) {
+    const std::string source = measured ? "--height-map" : "--cell";
+    if (given.count("cell") && measured) throw input::UsageError("--cell beside --height-map: give one texture");
     for (const char* name : {"l", "dh", "dh2", "s", "C", "lattice"}) {
       if (given.count(name) && !given[name].defaulted()) {
-        throw input::UsageError(std::string("--") + name + " beside --cell: the cell file gives the cell, its sites and their shapes");
+        throw input::UsageError(std::string("--") + name + " beside " + source + ": the " +
+                                (measured ? "height map" : "cell file") + " gives the cell, its sites and their shapes");
       }
     }
-    run.cell_file = given["cell"].as<std::string>();
-    cell = input::read_cell_file(run.cell_file, input::read_physical_scales(given, material.material.get()));
-    // The point's reading of the material and the load reads a cell too: the file's (taken
-    // out of the inputs' echo below).
+    const input::PhysicalScales scales = input::read_physical_scales(given, material.material.get());
+    if (measured) {
+      for (const char* name : {"grid", "supercell", "scatter"}) {
+        if (given.count(name) && !given[name].defaulted()) {
+          throw input::UsageError(std::string("--") + name + " beside --height-map: the map's pixels are the grid and its caps");
+        }
+      }
+      run.measured = read_measured(given, scales);
+      cell = run.measured->geometry;
+      run.cell_file = given["height-map"].as<std::string>();
+    } else {
+      run.cell_file = given["cell"].as<std::string>();
+      cell = input::read_cell_file(run.cell_file, scales);
+    }
+    // The point's reading of the material and the load reads a cell too: the texture's
+    // (taken out of the inputs' echo below).
     const model::Site& first = cell->sites.front();
     const auto put = [&vm](const char* name, const std::string& text) {
       vm.erase(name);
@@ -213,9 +276,11 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
 /// The curve as far as the times reach, and the history on it.
 void evaluate(SurfaceRun& run, bool progress) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
-  if (run.grid_nodes == 0) run.grid_nodes = auto_grid(run, load);
+  if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
   reference::PeriodicGrid grid;
-  if (run.cell_file.empty()) {
+  if (run.measured) {
+    grid = run.measured->cell.grid;
+  } else if (run.cell_file.empty()) {
     grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell);
   } else {
     // A cell file's tips go to their nearest nodes: the move is reported.
@@ -231,7 +296,7 @@ void evaluate(SurfaceRun& run, bool progress) {
       run.inputs.notes.push_back(note.str());
     }
   }
-  const reference::Cell cell = reference::make_cell(run.geometry, grid);
+  const reference::Cell cell = run.measured ? run.measured->cell : reference::make_cell(run.geometry, grid);
   reference::LoadCurveOptions options;
   // To full contact, where every level that can touch has: the curve is then the
   // geometry's alone, whatever the material, temperature, pressure and times, and one
@@ -344,8 +409,10 @@ void write_check(std::ostream& out, const SurfaceRun& run) {
 void write_json(std::ostream& out, const SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
-  out << "  \"lattice\": " << input::json_string(run.cell_file.empty() ? model::lattice_name(run.lattice) : "cell") << ",\n";
-  if (!run.cell_file.empty()) out << "  \"cell_file\": " << input::json_string(run.cell_file) << ",\n";
+  out << "  \"lattice\": " << input::json_string(run.measured ? "height map" : run.cell_file.empty() ? model::lattice_name(run.lattice) : "cell") << ",\n";
+  if (!run.cell_file.empty()) {
+    out << "  \"" << (run.measured ? "height_map" : "cell_file") << "\": " << input::json_string(run.cell_file) << ",\n";
+  }
   out << "  \"notes\": [";
   for (std::size_t k = 0; k < run.inputs.notes.size(); ++k) out << (k ? ", " : "") << input::json_string(run.inputs.notes[k]);
   out << "],\n";
@@ -410,7 +477,7 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
   const int L = run.curve.levels();
   const char* sep = csv ? "," : "  ";
   out << (csv ? "# " : "") << "punchsweep surface: "
-      << (run.cell_file.empty() ? model::lattice_name(run.lattice) + " lattice, " : "cell " + run.cell_file + ", ")
+      << (run.measured ? "height map " + run.cell_file + ", " : run.cell_file.empty() ? model::lattice_name(run.lattice) + " lattice, " : "cell " + run.cell_file + ", ")
       << run.inputs.describe() << "\n";
   if (run.inputs.material) out << (csv ? "# " : "  ") << "material: " << run.inputs.material->describe() << "\n";
   for (const std::string& note : run.inputs.notes) out << (csv ? "# " : "  ") << "note: " << note << "\n";

@@ -15,6 +15,7 @@
 #include "model/surface/load_curve.hpp"
 #include "model/surface/surface_history.hpp"
 #include "reference/cell_stepping.hpp"
+#include "reference/measured_cell.hpp"
 
 namespace punchsweep::app {
 
@@ -22,7 +23,8 @@ namespace punchsweep::app {
 struct SurfaceRun {
   input::PointInputs inputs;
   model::LatticeKind lattice = model::LatticeKind::square;
-  std::string cell_file;  ///< --cell FILE, or empty for a lattice
+  std::string cell_file;  ///< --cell FILE or --height-map FILE, or empty for a lattice
+  std::optional<reference::MeasuredCell> measured;  ///< --height-map: the map's cell and summits
   model::CellGeometry geometry;
   std::vector<double> times;
   int supercell = 1;   ///< K: the cell is K x K lattice cells

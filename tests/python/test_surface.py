@@ -234,3 +234,58 @@ def test_check_steps_the_same_cell_in_time():
     np.testing.assert_allclose(out["series"]["area_fraction"], check["series"]["area_fraction"], rtol=1e-2)
     np.testing.assert_array_equal(out["series"]["sites_touched"], check["series"]["sites_touched"])
     assert "check" not in punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=16)
+
+
+def lattice_heights(l: float, n: int, dh: float) -> np.ndarray:
+    """The paper's two-level square lattice sampled as a profilometer would: n x n pixels of
+    one period, the height -min(f1, f2 + dh) (s = 2, C = 0.5), rows along y."""
+    x = np.arange(n) * (l / n)
+    X, Y = np.meshgrid(x, x)
+
+    def r(cx, cy):
+        return np.hypot((X - cx + l / 2) % l - l / 2, (Y - cy + l / 2) % l - l / 2)
+
+    return -np.minimum(0.5 * r(0, 0) ** 2, 0.5 * r(l / 2, l / 2) ** 2 + dh)
+
+
+def test_a_measured_map_of_the_lattice_is_the_lattice(tmp_path):
+    """A height map of the paper's lattice (64 x 64 pixels, as .npy in R and as CSV in um with
+    --R) finds its two summits, and with --level-gap between their depths gives the lattice's
+    answers on the same grid: t* and the areas at every time to 1e-9."""
+    l, n, dh = 0.75, 64, 0.03
+    z = lattice_heights(l, n, dh)
+    np.save(tmp_path / "map.npy", z)
+    np.savetxt(tmp_path / "map.csv", z * 80.0, delimiter=",")
+    common = dict(T=2.5, pbar=0.01, times=[0, 1, 2, 5, 20])
+    lattice = punchsweep.surface(l=l, dh=dh, s=2, grid=n, **common)
+    from_npy = punchsweep.surface(height_map=str(tmp_path / "map.npy"), pixel=l / n, level_gap=dh / 2, **common)
+    from_csv = punchsweep.surface(height_map=str(tmp_path / "map.csv"), R="80um", height_unit="um",
+                                  pixel=f"{l / n * 80}um", level_gap="1.2um", **common)
+    for measured in (from_npy, from_csv):
+        assert measured["lattice"] == "height map" and measured["caps"] == 2 and measured["grid"] == [n, n]
+        assert [lv["drop"] for lv in measured["levels"]] == pytest.approx([0.0, dh], abs=1e-12)
+        assert measured["levels"][1]["regime"] == lattice["levels"][1]["regime"] == "delayed"
+        assert measured["levels"][1]["t_star"] == pytest.approx(lattice["levels"][1]["t_star"], rel=1e-9)
+        for key in ("area_fraction", "area_0", "area_1", "sites_touched"):
+            np.testing.assert_allclose(measured["series"][key], lattice["series"][key], rtol=1e-9, atol=1e-15)
+    one_level = punchsweep.surface(height_map=str(tmp_path / "map.npy"), pixel=l / n, **common)
+    assert len(one_level["levels"]) == 1 and one_level["caps"] == 2  # no --level-gap: one level of caps
+
+
+def test_a_bad_height_map_is_refused(tmp_path):
+    z = lattice_heights(0.75, 16, 0.03)
+    np.savetxt(tmp_path / "odd.csv", z[:, :15], delimiter=",")
+    (tmp_path / "ragged.csv").write_text("1,2,3,4\n1,2,3\n1,2,3,4\n1,2,3,4\n")
+    np.save(tmp_path / "big.npy", z.astype(">f8"))
+    np.save(tmp_path / "good.npy", z)
+    base = ["--T", "2.5", "--pbar", "0.01", "--pixel", "0.05"]
+    for args, message in [(["--height-map", tmp_path / "odd.csv"], "15 x 16 pixels; the boundary elements need an even count"),
+                          (["--height-map", tmp_path / "ragged.csv"], ":2: 3 values; the first row has 4"),
+                          (["--height-map", tmp_path / "big.npy"], "valid: little-endian float64 or float32"),
+                          (["--height-map", tmp_path / "good.npy", "--grid", "32"], "--grid beside --height-map"),
+                          (["--height-map", tmp_path / "good.npy", "--l", "1"], "--l beside --height-map"),
+                          (["--height-map", tmp_path / "missing.npy"], "no regular file")]:
+        run = cli(*args, *base)
+        assert run.returncode == 2 and message in run.stderr and run.stdout == "", (args, run.stderr)
+    run = cli("--height-map", tmp_path / "good.npy", "--T", "2.5", "--pbar", "0.01")
+    assert run.returncode == 2 and "--height-map needs --pixel" in run.stderr

@@ -231,14 +231,16 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
 def surface(l: float | str | None = None, dh: float | str | None = None, *, lattice: str | None = None,
             dh2: float | str | None = None, T: float | None = None, pbar: float | None = None,
             s: int | None = None, C: float | None = None, times: Iterable[float] | str | None = None,
-            grid: int | str | None = None, cell: str | None = None, supercell: int | None = None,
+            grid: int | str | None = None, cell: str | None = None, height_map: str | None = None,
+            pixel: float | str | None = None, supercell: int | None = None,
             scatter: str | None = None,
             seed: int | None = None, check: bool = False, material: str | None = None, temperature: float | str | None = None,
             pressure: str | None = None, ramp: float | str | None = None, load_table: str | None = None,
             **options: Any) -> dict:
     """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
-    two levels, or three with dh2, or any cell (cell="FILE", docs/cli.md), or a supercell of
-    it whose caps' heights scatter
+    two levels, or three with dh2, or any cell (cell="FILE", docs/cli.md), or a measured
+    period (height_map="FILE" of CSV or .npy, pixel=, height_unit=, summit_radius=,
+    level_gap=), or a supercell of a lattice or cell whose caps' heights scatter
     (supercell=8, scatter="normal:0.5um", seed=1), under a material and a load, from its
     cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
     dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
@@ -248,7 +250,9 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     curve, cell, grid, units. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
-                              grid=grid, cell=None if cell is None else os.fspath(cell), supercell=supercell,
+                              grid=grid, cell=None if cell is None else os.fspath(cell),
+                              height_map=None if height_map is None else os.fspath(height_map), pixel=pixel,
+                              supercell=supercell,
                               scatter=scatter, seed=seed, check="true" if check else None, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp, load_table=load_table,
                               **options))
