@@ -41,6 +41,7 @@
 #include "model/contact/regime.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "model/point/validity.hpp"
+#include "model/surface/surface_history.hpp"
 #include "sweep/batch_evaluator.hpp"
 
 namespace py = pybind11;
@@ -531,6 +532,86 @@ py::dict fit_command(const input::Keywords& keywords) {
 
 }  // namespace
 
+/// `surface_classify`: each level's regime and t* of one texture (the keywords of
+/// `punchsweep surface`, without the load's) at many points of pressure, law parameters and
+/// ramp: one load curve (to full contact, cached), then the classification at each point
+/// from the levels' touchdown loads. The grid (auto) is the one the least pressure asks.
+py::dict surface_classify(const input::Keywords& texture, Column pbar, const std::vector<Column>& law, Column ramp_time) {
+  const py::ssize_t n = pbar.size();
+  const bool ramp = ramp_time.size() > 0;
+  bool equal = !ramp || ramp_time.size() == n;
+  for (const Column& c : law) equal = equal && c.size() == n;
+  if (!equal || n == 0) throw std::invalid_argument("surface_classify: the arrays must have the same size > 0 (broadcast first)");
+  const input::PointMaterial material = input::find_point_material(texture);
+  const model::CreepLawSpec& spec = material.spec;
+  std::vector<std::vector<double>> defaults;
+  std::vector<const double*> law_values;
+  for (const Column& c : law) law_values.push_back(c.data());
+  if (law.empty()) {
+    for (const double v : point_defaults(spec.parameters)) {
+      defaults.emplace_back(static_cast<std::size_t>(n), v);
+      law_values.push_back(defaults.back().data());
+    }
+  }
+  if (law_values.size() != spec.parameters.size()) {
+    throw input::UsageError("surface_classify: the creep law " + std::string(spec.name) + " takes " +
+                            std::to_string(spec.parameters.size()) + " parameters");
+  }
+  std::vector<std::pair<const model::Parameter*, const double*>> axes;
+  for (std::size_t j = 0; j < law_values.size(); ++j) axes.emplace_back(&spec.parameters[j], law_values[j]);
+  axes.emplace_back(model::find_parameter(model::kPressure), pbar.data());
+  if (ramp) axes.emplace_back(&model::ramp_time_parameter(), ramp_time.data());
+  for (const auto& [parameter, values] : axes) {
+    for (py::ssize_t i = 0; i < n; ++i) {
+      if (!parameter->admits(values[i])) throw input::UsageError(check(*parameter, values[i]));
+    }
+  }
+  // The texture's curve, from a run at the least pressure (its grid, under --grid auto).
+  py::ssize_t least = 0;
+  for (py::ssize_t i = 1; i < n; ++i) least = pbar.data()[i] < pbar.data()[least] ? i : least;
+  input::Keywords keywords = texture;
+  keywords.emplace_back("pbar", input::json_number(pbar.data()[least]));
+  for (std::size_t j = 0; j < law_values.size(); ++j) {
+    keywords.emplace_back(std::string(spec.parameters[j].name), input::json_number(law_values[j][least]));
+  }
+  keywords.emplace_back("times", "0");
+  const app::SurfaceRun run = app::evaluate_surface(keywords);
+  const std::size_t L = static_cast<std::size_t>(run.curve.levels());
+  py::array_t<double> t_star({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
+  py::array_t<std::int8_t> regime({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
+  double* t_data = t_star.mutable_data();
+  std::int8_t* r_data = regime.mutable_data();
+  {
+    py::gil_scoped_release release;
+    std::vector<double> values(law_values.size());
+    for (py::ssize_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < values.size(); ++j) values[j] = law_values[j][i];
+      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(spec, values);
+      const model::LoadShape shape = ramp && ramp_time.data()[i] > 0.0 ? model::LoadShape::ramp(ramp_time.data()[i]) : model::LoadShape{};
+      const model::CreepWeightedLoad load(*creep, pbar.data()[i], shape);
+      const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
+      for (std::size_t level = 0; level < L; ++level) {
+        t_data[static_cast<std::size_t>(i) * L + level] = touches[level].t_star;
+        r_data[static_cast<std::size_t>(i) * L + level] = static_cast<std::int8_t>(touches[level].regime);
+      }
+    }
+  }
+  py::list X_star, resolved;
+  for (const model::LevelTouch& touch : model::level_touches(run.curve, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0))) {
+    X_star.append(touch.X_star);
+    resolved.append(touch.resolved);
+  }
+  py::dict out;
+  out["t_star"] = t_star;
+  out["regime"] = regime;
+  out["X_star"] = X_star;
+  out["resolved"] = resolved;
+  out["time_unit"] = run.inputs.time_unit;
+  out["grid"] = py::make_tuple(run.curve.nx, run.curve.ny);
+  out["caps"] = run.geometry.sites.size();
+  return out;
+}
+
 PYBIND11_MODULE(_core, m) {
   m.doc() = "punchsweep's engine (the compiled part of the package punchsweep; use the package's functions)";
   // The refined model's tables from the same cache as the command line's ($PUNCHSWEEP_CACHE,
@@ -553,6 +634,9 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
   m.def("surface", &app::surface_json, py::arg("keywords"),
         "punchsweep surface of (option name, value text) pairs, in-process: its JSON text");
+  m.def("surface_classify", &surface_classify, py::arg("texture"), py::arg("pbar"), py::arg("law"), py::arg("ramp_time"),
+        "each level's regime and t* of one texture (surface's keywords without the load's) at equal-sized 1-D arrays "
+        "of pbar, the law's parameters (a list of arrays) and ramp_time (empty for a step)");
   m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
         py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"), py::arg("quantities"),
         "the map's per-point quantities (those named in quantities; all where it is empty) of equal-sized 1-D "

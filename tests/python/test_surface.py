@@ -289,3 +289,26 @@ def test_a_bad_height_map_is_refused(tmp_path):
         assert run.returncode == 2 and message in run.stderr and run.stdout == "", (args, run.stderr)
     run = cli("--height-map", tmp_path / "good.npy", "--T", "2.5", "--pbar", "0.01")
     assert run.returncode == 2 and "--height-map needs --pixel" in run.stderr
+
+
+def test_surface_classify_reads_many_loads_off_one_curve():
+    """A creep ratio x pressure grid of 2,500 points off one hexagonal three-level curve: at
+    random points of it, each level's regime and t* equal surface()'s for that point alone
+    (the same curve, the same classification: the same bits); every regime appears; the
+    arrays keep the broadcast shape with a last axis of levels."""
+    texture = dict(lattice="hexagonal", l=1.2, dh=0.06, dh2=0.09, s=2, grid=48)
+    T = np.linspace(1.5, 10, 50)[:, None]
+    pbar = np.geomspace(1e-3, 0.05, 50)[None, :]
+    out = punchsweep.surface_classify(pbar=pbar, T=T, **texture)
+    assert out["t_star"].shape == out["regime"].shape == (50, 50, 3)
+    names = {punchsweep.REGIMES[int(code)] for code in np.unique(out["regime"][..., 1:])}
+    assert names == {"immediate", "delayed", "never"}
+    rng = np.random.default_rng(5)
+    for i, j in rng.integers(0, 50, size=(6, 2)):
+        alone = punchsweep.surface(T=float(T[i, 0]), pbar=float(pbar[0, j]), times=[0], **texture)
+        for level, expected in enumerate(alone["levels"]):
+            assert punchsweep.REGIMES[int(out["regime"][i, j, level])] == expected["regime"]
+            t = out["t_star"][i, j, level]
+            assert (expected["t_star"] is None and np.isinf(t)) or t == expected["t_star"]
+    with pytest.raises(ValueError, match="pbar = -1"):
+        punchsweep.surface_classify(pbar=[0.01, -1.0], T=2.5, **texture)

@@ -43,7 +43,7 @@ except ImportError as error:  # the package's Python files without its compiled 
                       "it with `cmake --build build --target punchsweep_python` (bash jobs/local.sh and "
                       "bash tests/run-all.sh do)") from None
 
-__all__ = ["point", "reference", "design", "surface", "classify", "open_map", "fit_material", "Material", "PointResult",
+__all__ = ["point", "reference", "design", "surface", "surface_classify", "classify", "open_map", "fit_material", "Material", "PointResult",
            "ReferenceResult", "FitResult", "Classification", "REGIMES"]
 
 #: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
@@ -264,6 +264,51 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     if "physical" in out:
         out["physical"]["series"] = {k: np.array(v) for k, v in out["physical"]["series"].items()}
     return out
+
+
+def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp_time=None,
+                     material: str | None = None, R: str | None = None, **texture: Any) -> dict:
+    """Each level's regime and t* of one texture (surface()'s keywords: lattice=, l=, dh=,
+    dh2=, s=, C=, cell=, height_map=, supercell=, scatter=, grid=, ...) at many loads,
+    broadcasting pbar (or pressure= with a material), the law's parameter (T, or temperature=
+    with a material file) and ramp_time like numpy. The texture's load curve is built once
+    (to full contact, on the grid the least pressure asks under grid="auto", and kept in the
+    table cache); every point is then read off it (about 1e7 points a second): a material x
+    temperature x pressure sweep at the cost of one curve. Returns a dict: t_star and regime
+    (the map's codes, REGIMES) shaped as the broadcast inputs plus a last axis of levels,
+    X_star and resolved per level, time_unit, grid and caps. ValueError with the command
+    line's message for bad input."""
+    if pressure is not None:
+        if pbar is not None:
+            raise ValueError("surface_classify: pbar and pressure both given; valid: one of them")
+        pbar = pressure
+    if pbar is None:
+        raise ValueError("surface_classify: pbar (or pressure) is required")
+    pbar = _in_scale(pbar, "pbar", material, R)
+    if ramp_time is not None:
+        ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
+    if material is None:
+        if T is None or temperature is not None:
+            raise ValueError("surface_classify: give T (the standard linear solid), or material= (and temperature= "
+                             "where the material has a shift)")
+        law = [T]
+    else:
+        if T is not None:
+            raise ValueError("surface_classify: T is the standard linear solid's; a material's law has its own "
+                             "(temperature= where the file has a shift)")
+        law = [] if temperature is None else [temperature]
+    ramp = [] if ramp_time is None else [ramp_time]
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (pbar, *law, *ramp)))
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+    keywords = _keywords(dict(material=None if material is None else os.fspath(material), R=R, **{
+        k: (os.fspath(v) if k in ("cell", "height_map") and v is not None else v) for k, v in texture.items()}))
+    raw = _core.surface_classify(keywords, flat[0], flat[1:1 + len(law)], flat[1 + len(law)] if ramp else np.empty(0))
+    levels = len(raw["X_star"])
+    return {"t_star": np.asarray(raw["t_star"]).reshape(*shape, levels),
+            "regime": np.asarray(raw["regime"]).reshape(*shape, levels),
+            "X_star": np.asarray(raw["X_star"]), "resolved": np.asarray(raw["resolved"], dtype=bool),
+            "time_unit": raw["time_unit"], "grid": tuple(raw["grid"]), "caps": raw["caps"]}
 
 
 @dataclass(frozen=True)
