@@ -15,6 +15,7 @@
 #include "input/height_map.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
+#include "model/surface/surface_sensitivity.hpp"
 #include "reference/cell_stepping.hpp"
 #include "reference/load_curve.hpp"
 #include "reference/measured_cell.hpp"
@@ -83,6 +84,7 @@ po::options_description surface_options(const input::PointMaterial& material) {
       "in R^2 E0* per cell, time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
   input::add_point_options(opts, material.spec);
   input::add_material_options(opts);
+  input::add_tolerance_option(opts);
   opts.add_options()
       ("lattice", po::value<std::string>()->value_name("KIND")->default_value("square"),
        "square: level 1 at the squares' centres, level 2 at the edges' midpoints; hexagonal: the "
@@ -203,6 +205,14 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     std::erase_if(run.inputs.values, [](const auto& v) { return v.first->name == "l" || v.first->name == "dh" || v.first->name == "s" || v.first->name == "C"; });
   }
   run.times = input::read_times(vm, run.inputs.scales);
+  run.tolerances = input::read_tolerances(vm, run.inputs);
+  for (const model::Tolerance& t : run.tolerances) {
+    if (t.parameter->name == "l" || t.parameter->name == "dh" || t.parameter->name == "C") {
+      throw input::UsageError("--tolerance " + std::string(t.parameter->name) +
+                              ": a tolerance on the texture's geometry needs a load curve per corner; surface takes "
+                              "tolerances on the pressure and the creep law's parameters (pressure, T, temperature)");
+    }
+  }
   run.lattice = input::read_choice(vm, "lattice", {"square", "hexagonal"}) == "square" ? model::LatticeKind::square
                                                                                        : model::LatticeKind::hexagonal;
   std::vector<double> drops{run.inputs.problem.dh};
@@ -318,6 +328,23 @@ void evaluate(SurfaceRun& run, bool progress) {
   run.curve_cached = origin == CurveOrigin::cache;
   run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.history = model::surface_history(run.curve, load, run.times);
+  // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
+  const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
+                                        run.inputs.problem.loading};
+  run.derivatives.resize(static_cast<std::size_t>(run.curve.levels()));
+  run.ranges.resize(static_cast<std::size_t>(run.curve.levels()));
+  for (int level = 1; level < run.curve.levels(); ++level) {
+    const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
+    run.derivatives[static_cast<std::size_t>(level)] =
+        model::level_t_star_derivatives(run.curve, level, surface_load, touch.t_star);
+    if (!run.tolerances.empty()) {
+      try {
+        run.ranges[static_cast<std::size_t>(level)] = model::level_t_star_range(run.curve, level, surface_load, run.tolerances);
+      } catch (const std::invalid_argument& e) {
+        throw input::UsageError(std::string("--tolerance: ") + e.what());
+      }
+    }
+  }
   if (run.check) {
     // The time stepping of the same cell, steps scaled to the law as `reference` scales them.
     reference::ReferenceOptions scaled;
@@ -440,7 +467,16 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
         << ", \"sites\": " << sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
         << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
         << ", \"resolved\": " << (touch.resolved ? "true" : "false")
-        << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]) << "}";
+        << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]);
+    for (const model::TStarDerivative& d : run.derivatives[static_cast<std::size_t>(level)]) {
+      out << ", \"dt_star_d" << d.parameter->name << "\": " << num(d.derivative) << ", \"dlog_t_star_dlog_" << d.parameter->name
+          << "\": " << num(d.elasticity);
+    }
+    if (const std::optional<model::TStarRange>& r = run.ranges[static_cast<std::size_t>(level)]) {
+      out << ", \"t_star_low\": " << num(r->low) << ", \"t_star_high\": " << num(r->high) << ", \"corners_immediate\": "
+          << r->immediate << ", \"corners_delayed\": " << r->delayed << ", \"corners_never\": " << r->never;
+    }
+    out << "}";
   }
   out << "\n  ],\n  \"series\": {\n";
   const auto series = [&](const char* name, auto value, bool last = false) {
@@ -495,6 +531,21 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
       out << " (touches at X* = " << t.X_star << " E0*)\n";
     } else {
       out << " (untouched up to X = " << run.curve.X_last() << " E0*, past X(inf))\n";
+    }
+  }
+  for (int level = 1; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    for (const model::TStarDerivative& d : run.derivatives[at]) {
+      if (!std::isfinite(d.derivative)) continue;
+      out << (csv ? "# " : "  ") << "level " << level << ": d t*/d" << d.parameter->name << " = " << d.derivative << " "
+          << run.inputs.time_unit << " per " << d.parameter->scale;
+      if (std::isfinite(d.elasticity)) out << " (" << d.parameter->name << "/t* d t*/d" << d.parameter->name << " = " << d.elasticity << ")";
+      out << "\n";
+    }
+    if (const std::optional<model::TStarRange>& r = run.ranges[at]) {
+      out << (csv ? "# " : "  ") << "level " << level << ": t* from " << r->low << " to " << r->high << " " << run.inputs.time_unit
+          << " over the tolerances (" << r->immediate << " corners immediate, " << r->delayed << " delayed, " << r->never
+          << " never)\n";
     }
   }
   if (run.stepped) {

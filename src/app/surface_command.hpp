@@ -14,6 +14,7 @@
 #include "model/problem/cell_geometry.hpp"
 #include "model/surface/load_curve.hpp"
 #include "model/surface/surface_history.hpp"
+#include "model/point/sensitivity.hpp"
 #include "reference/cell_stepping.hpp"
 #include "reference/measured_cell.hpp"
 
@@ -35,6 +36,11 @@ struct SurfaceRun {
   double curve_seconds = 0.0;
   bool curve_cached = false;  ///< read from the table cache (app/curve_cache.hpp)
   bool check = false;         ///< --check: step the same cell in time too
+  std::vector<model::Tolerance> tolerances;  ///< --tolerance: on the pressure and the law's parameters
+  /// Per level: d t*/dx along pbar and the law's parameters (empty for level 0), and the
+  /// range of t* over the tolerances (none without).
+  std::vector<std::vector<model::TStarDerivative>> derivatives;
+  std::vector<std::optional<model::TStarRange>> ranges;
   std::optional<reference::CellReference> stepped;
   double check_seconds = 0.0;
 };

@@ -312,3 +312,29 @@ def test_surface_classify_reads_many_loads_off_one_curve():
             assert (expected["t_star"] is None and np.isinf(t)) or t == expected["t_star"]
     with pytest.raises(ValueError, match="pbar = -1"):
         punchsweep.surface_classify(pbar=[0.01, -1.0], T=2.5, **texture)
+
+
+def test_each_levels_t_star_moves_with_the_load_as_the_closed_form_says():
+    """The standard linear solid, J(t) = T - (T - 1) exp(-t): a level touching at X* has
+    J(t*) = X* / pbar, so d t*/d pbar = -X* / (pbar^2 (T - 1) exp(-t*)) and d t*/dT =
+    -(1 - exp(-t*)) / ((T - 1) exp(-t*)). The engine's central differences (Richardson) give
+    them to 1e-6; the range over --tolerance "pressure=5%, T=0.2" is t* at the corners (the
+    greatest pressure and T touch first)."""
+    texture = dict(lattice="hexagonal", l=1.2, dh=0.06, dh2=0.09, s=2, grid=48)
+    T, pbar = 4.0, 0.015
+    out = punchsweep.surface(T=T, pbar=pbar, times=[0], tolerance="pressure=5%, T=0.2", **texture)
+    for level in out["levels"][1:]:
+        t, X = level["t_star"], level["X_star"]
+        decay = (T - 1) * np.exp(-t)
+        assert level["dt_star_dpbar"] == pytest.approx(-X / (pbar ** 2 * decay), rel=1e-6)
+        assert level["dt_star_dT"] == pytest.approx(-(1 - np.exp(-t)) / decay, rel=1e-6)
+        assert level["dlog_t_star_dlog_pbar"] == pytest.approx(pbar / t * level["dt_star_dpbar"], rel=1e-12)
+    corners = {(p, tt): punchsweep.surface(T=tt, pbar=p, times=[0], **texture)["levels"]
+               for p in (0.95 * pbar, 1.05 * pbar) for tt in (T - 0.2, T + 0.2)}
+    for index, level in enumerate(out["levels"][1:], start=1):
+        ts = [np.inf if c[index]["t_star"] is None else c[index]["t_star"] for c in corners.values()]
+        assert level["t_star_low"] == min(ts)
+        assert (level["t_star_high"] is None and np.isinf(max(ts))) or level["t_star_high"] == max(ts)
+    run = cli("--l", "0.75", "--dh", "0.03", "--T", "2.5", "--pbar", "0.01", "--s", "2", "--grid", "16",
+              "--tolerance", "dh=0.01")
+    assert run.returncode == 2 and "needs a load curve per corner" in run.stderr
