@@ -16,18 +16,12 @@
 namespace punchsweep::input {
 
 model::CellGeometry parse_cell(const std::string& text, const std::string& origin, const PhysicalScales& scales) {
-  const std::optional<Scale> length_scale = scale_of("R", scales);
   int line_number = 0;
   const auto fail = [&](const std::string& what) -> void {
     throw UsageError(origin + (line_number > 0 ? ":" + std::to_string(line_number) : std::string()) + ": " + what);
   };
   const auto length = [&](const std::string& key, const std::string& value) {
-    try {
-      return read_scaled(std::string(model::trim(value)), *length_scale);
-    } catch (const std::invalid_argument& e) {
-      fail(key + " = " + value + ": " + e.what());
-    }
-    return 0.0;
+    return read_length(std::string(model::trim(value)), scales, origin + ":" + std::to_string(line_number) + ": " + key);
   };
   std::map<std::string, std::pair<std::string, int>> keys;  // key -> value, line
   std::vector<std::pair<std::string, int>> sites;           // text, line

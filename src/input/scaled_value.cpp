@@ -3,6 +3,7 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "input/usage_error.hpp"
 #include "model/laws/material.hpp"
 
 namespace punchsweep::input {
@@ -61,6 +62,14 @@ double read_scaled(const std::string& text, const Scale& scale) {
                                 std::string(scale.scaled_unit));
   }
   return model::in_units_of(*physical, *scale.value);
+}
+
+double read_length(const std::string& text, const PhysicalScales& scales, const std::string& what) {
+  try {
+    return read_scaled(text, *scale_of("R", scales));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(what + " = " + e.what());
+  }
 }
 
 bool has_unit(const std::string& text) {

@@ -66,6 +66,11 @@ std::optional<Scale> scale_of(std::string_view scaled_unit, const PhysicalScales
 /// of another dimension, or a unit whose scale is unknown.
 double read_scaled(const std::string& text, const Scale& scale);
 
+/// A length from its text: a bare number in R, or a number with a length unit where
+/// `scales` knows R. Throws UsageError "WHAT = 'TEXT': why" (`what` names the input: an
+/// option, or a file's line and key) for a unit without R, another dimension, or no number.
+double read_length(const std::string& text, const PhysicalScales& scales, const std::string& what);
+
 /// Whether `text` carries a unit of some dimension ("2um" yes, "0.5" no).
 bool has_unit(const std::string& text);
 

@@ -78,8 +78,8 @@ struct HeightScatter {
 };
 
 /// The draws of `scatter` for `count` sites, in R: normal by Box-Muller and uniform on
-/// [-width, width], both from std::mt19937_64 seeded with `seed` (the same numbers on every
-/// platform); list: its values (std::invalid_argument unless there are `count`).
+/// [-width, width], both from std::mt19937_64 seeded with `seed` (the engine's sequence is fixed by
+/// the C++ standard); list: its values (std::invalid_argument unless there are `count`).
 std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count);
 
 /// K x K copies of `cell` as one periodic cell (K >= 1), each copy's site raised by the

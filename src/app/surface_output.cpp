@@ -1,0 +1,241 @@
+#include "app/surface_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ostream>
+#include <string>
+
+#include "input/command_options.hpp"
+#include "model/laws/material.hpp"
+
+namespace punchsweep::app {
+
+namespace {
+
+std::string num(double v) { return input::json_number(v); }
+
+/// "physical": the lengths, areas, loads and loads X in R's unit, its square, N and Pa,
+/// where --R and a material give the scales (nothing otherwise).
+void write_physical(std::ostream& out, const SurfaceRun& run) {
+  const input::PhysicalScales& scales = run.inputs.scales;
+  const std::optional<input::PhysicalUnit> length = input::physical_unit("R", scales);
+  const std::optional<input::PhysicalUnit> pressure = input::physical_unit("E0/(1-nu^2)", scales);
+  const std::optional<input::PhysicalUnit> load = input::physical_unit("R^2 E0/(1-nu^2)", scales);
+  if (!length || !pressure || !load) return;
+  const double area = length->per_scaled * length->per_scaled;
+  const int L = run.curve.levels();
+  out << "  \"physical\": {\n    \"units\": {\"X\": \"Pa\", \"area\": " << input::json_string(length->units + "^2")
+      << ", \"load\": \"N\", \"drop\": " << input::json_string(length->units) << ", \"cell\": " << input::json_string(length->units)
+      << "},\n    \"cell\": [" << num(run.geometry.Lx * length->per_scaled) << ", " << num(run.geometry.Ly * length->per_scaled)
+      << "],\n    \"levels\": [";
+  for (int level = 0; level < L; ++level) {
+    double drop = std::numeric_limits<double>::infinity();
+    for (const model::Site& site : run.geometry.sites) {
+      if (site.level == level) drop = std::min(drop, site.drop);
+    }
+    out << (level ? ", " : "") << "{\"drop\": " << num(drop * length->per_scaled) << ", \"X_star\": "
+        << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled) << "}";
+  }
+  out << "],\n    \"series\": {\n";
+  const auto series = [&](const std::string& name, auto value, bool last) {
+    out << "      \"" << name << "\": [";
+    for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) out << (k ? ", " : "") << num(value(run.history.snapshots[k]));
+    out << "]" << (last ? "\n" : ",\n");
+  };
+  series("X", [&](const model::SurfaceSnapshot& s) { return s.X * pressure->per_scaled; }, false);
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("area_" + std::to_string(level), [&](const model::SurfaceSnapshot& s) { return s.state.level_area[at] * area; }, false);
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("load_" + std::to_string(level), [&](const model::SurfaceSnapshot& s) { return s.level_load[at] * load->per_scaled; },
+           level == L - 1);
+  }
+  out << "    }\n  },\n";
+}
+
+/// "check": the time stepping's touch times, areas and loads at the same times.
+void write_check(std::ostream& out, const SurfaceRun& run) {
+  const reference::CellReference& r = *run.stepped;
+  const int L = run.curve.levels();
+  out << "  \"check\": {\n    \"seconds\": " << num(run.check_seconds) << ", \"steps\": " << r.steps << ", \"converged\": "
+      << (r.converged ? "true" : "false") << ",\n    \"levels\": [";
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    out << (level ? ", " : "") << "{\"regime\": " << input::json_string(std::string(model::regime_name(r.level_regime[at])))
+        << ", \"t_star\": " << num(r.level_t_star[at]) << "}";
+  }
+  out << "],\n    \"series\": {\n";
+  const auto series = [&](const std::string& name, auto value, bool last) {
+    out << "      \"" << name << "\": [";
+    for (std::size_t k = 0; k < r.series.size(); ++k) out << (k ? ", " : "") << num(value(r.series[k]));
+    out << "]" << (last ? "\n" : ",\n");
+  };
+  series("area_fraction", [](const reference::CellSnapshot& s) { return s.area_fraction; }, false);
+  series("sites_touched", [](const reference::CellSnapshot& s) { return s.sites_touched; }, false);
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("area_" + std::to_string(level), [at](const reference::CellSnapshot& s) { return s.level_area[at]; }, false);
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    series("load_" + std::to_string(level), [at](const reference::CellSnapshot& s) { return s.level_load[at]; }, level == L - 1);
+  }
+  out << "    }\n  },\n";
+}
+
+void write_json(std::ostream& out, const SurfaceRun& run) {
+  const int L = run.curve.levels();
+  out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
+  out << "  \"lattice\": " << input::json_string(run.measured ? "height map" : run.cell_file.empty() ? model::lattice_name(run.lattice) : "cell") << ",\n";
+  if (!run.cell_file.empty()) {
+    out << "  \"" << (run.measured ? "height_map" : "cell_file") << "\": " << input::json_string(run.cell_file) << ",\n";
+  }
+  out << "  \"notes\": [";
+  for (std::size_t k = 0; k < run.inputs.notes.size(); ++k) out << (k ? ", " : "") << input::json_string(run.inputs.notes[k]);
+  out << "],\n";
+  out << "  \"cell\": [" << num(run.geometry.Lx) << ", " << num(run.geometry.Ly) << "],\n";
+  out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
+  out << "  \"supercell\": " << run.supercell << ",\n";
+  out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
+  out << "  \"curve\": {\"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
+      << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
+      << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false") << "},\n";
+  out << "  \"levels\": [";
+  for (int level = 0; level < L; ++level) {
+    const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
+    double drop = std::numeric_limits<double>::infinity(), drop_max = 0.0;
+    int sites = 0;
+    for (const model::Site& site : run.geometry.sites) {
+      if (site.level == level) {
+        drop = std::min(drop, site.drop);
+        drop_max = std::max(drop_max, site.drop);
+        ++sites;
+      }
+    }
+    out << (level ? ",\n    " : "\n    ") << "{\"level\": " << level << ", \"drop\": " << num(drop)
+        << ", \"drop_max\": " << num(drop_max)
+        << ", \"sites\": " << sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
+        << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
+        << ", \"resolved\": " << (touch.resolved ? "true" : "false")
+        << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]);
+    for (const model::TStarDerivative& d : run.derivatives[static_cast<std::size_t>(level)]) {
+      out << ", \"dt_star_d" << d.parameter->name << "\": " << num(d.derivative) << ", \"dlog_t_star_dlog_" << d.parameter->name
+          << "\": " << num(d.elasticity);
+    }
+    if (const std::optional<model::TStarRange>& r = run.ranges[static_cast<std::size_t>(level)]) {
+      out << ", \"t_star_low\": " << num(r->low) << ", \"t_star_high\": " << num(r->high) << ", \"corners_immediate\": "
+          << r->immediate << ", \"corners_delayed\": " << r->delayed << ", \"corners_never\": " << r->never;
+    }
+    out << "}";
+  }
+  out << "\n  ],\n  \"series\": {\n";
+  const auto series = [&](const char* name, auto value, bool last = false) {
+    out << "    \"" << name << "\": [";
+    for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) out << (k ? ", " : "") << value(run.history.snapshots[k]);
+    out << "]" << (last ? "\n" : ",\n");
+  };
+  series("t", [](const model::SurfaceSnapshot& s) { return num(s.t); });
+  series("X", [](const model::SurfaceSnapshot& s) { return num(s.X); });
+  series("area_fraction", [](const model::SurfaceSnapshot& s) { return num(s.state.area_fraction); });
+  series("sites_touched", [](const model::SurfaceSnapshot& s) { return num(s.state.sites_touched); });
+  for (int level = 0; level < L; ++level) {
+    const std::string name = "area_" + std::to_string(level);
+    series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.state.level_area[static_cast<std::size_t>(level)]); });
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::string name = "touched_" + std::to_string(level);
+    series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.state.level_sites_touched[static_cast<std::size_t>(level)]); });
+  }
+  for (int level = 0; level < L; ++level) {
+    const std::string name = "load_" + std::to_string(level);
+    series(name.c_str(), [&](const model::SurfaceSnapshot& s) { return num(s.level_load[static_cast<std::size_t>(level)]); });
+  }
+  series("valid", [](const model::SurfaceSnapshot& s) { return s.validity == model::SurfaceValidity::valid ? "true" : "false"; });
+  series("reason", [](const model::SurfaceSnapshot& s) { return input::json_string(std::string(model::surface_validity_name(s.validity))); }, true);
+  out << "  },\n";
+  write_physical(out, run);
+  if (run.stepped) write_check(out, run);
+  out << "  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
+      << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
+}
+
+void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
+  const int L = run.curve.levels();
+  const char* sep = csv ? "," : "  ";
+  out << (csv ? "# " : "") << "punchsweep surface: "
+      << (run.measured ? "height map " + run.cell_file + ", " : run.cell_file.empty() ? model::lattice_name(run.lattice) + " lattice, " : "cell " + run.cell_file + ", ")
+      << run.inputs.describe() << "\n";
+  if (run.inputs.material) out << (csv ? "# " : "  ") << "material: " << run.inputs.material->describe() << "\n";
+  for (const std::string& note : run.inputs.notes) out << (csv ? "# " : "  ") << "note: " << note << "\n";
+  out << (csv ? "# " : "  ") << "load curve: " << run.curve.nx << " x " << run.curve.ny << " nodes, "
+      << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
+      << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s"
+      << (run.curve_cached ? " (from the table cache)" : "") << "\n";
+  for (int level = 0; level < L; ++level) {
+    const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
+    out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);
+    if (t.regime == model::Regime::delayed) out << " at t* = " << t.t_star << " " << run.inputs.time_unit;
+    if (!t.resolved) {
+      out << " (touches at X* = " << t.X_star << " E0*, below the curve's resolution: a finer --grid answers)\n";
+    } else if (std::isfinite(t.X_star)) {
+      out << " (touches at X* = " << t.X_star << " E0*)\n";
+    } else {
+      out << " (untouched up to X = " << run.curve.X_last() << " E0*, past X(inf))\n";
+    }
+  }
+  for (int level = 1; level < L; ++level) {
+    const std::size_t at = static_cast<std::size_t>(level);
+    for (const model::TStarDerivative& d : run.derivatives[at]) {
+      if (!std::isfinite(d.derivative)) continue;
+      out << (csv ? "# " : "  ") << "level " << level << ": d t*/d" << d.parameter->name << " = " << d.derivative << " "
+          << run.inputs.time_unit << " per " << d.parameter->scale;
+      if (std::isfinite(d.elasticity)) out << " (" << d.parameter->name << "/t* d t*/d" << d.parameter->name << " = " << d.elasticity << ")";
+      out << "\n";
+    }
+    if (const std::optional<model::TStarRange>& r = run.ranges[at]) {
+      out << (csv ? "# " : "  ") << "level " << level << ": t* from " << r->low << " to " << r->high << " " << run.inputs.time_unit
+          << " over the tolerances (" << r->immediate << " corners immediate, " << r->delayed << " delayed, " << r->never
+          << " never)\n";
+    }
+  }
+  if (run.stepped) {
+    for (int level = 1; level < L; ++level) {
+      const std::size_t at = static_cast<std::size_t>(level);
+      out << (csv ? "# " : "  ") << "check: level " << level << " by time stepping: "
+          << model::regime_name(run.stepped->level_regime[at]);
+      if (std::isfinite(run.stepped->level_t_star[at]) && run.stepped->level_t_star[at] > 0.0) {
+        out << " at t* = " << run.stepped->level_t_star[at] << " " << run.inputs.time_unit;
+      }
+      out << "\n";
+    }
+    out << (csv ? "# " : "  ") << "check: " << run.stepped->steps << " time steps, " << run.check_seconds << " s\n";
+  }
+  out << "t" << sep << "X" << sep << "area_fraction" << sep << "sites_touched";
+  for (int level = 0; level < L; ++level) out << sep << "area_" << level;
+  for (int level = 0; level < L; ++level) out << sep << "load_" << level;
+  if (run.stepped) out << sep << "check_area_fraction" << sep << "check_sites_touched";
+  out << sep << "valid\n";
+  for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) {
+    const model::SurfaceSnapshot& s = run.history.snapshots[k];
+    out << s.t << sep << s.X << sep << s.state.area_fraction << sep << s.state.sites_touched;
+    for (double a : s.state.level_area) out << sep << a;
+    for (double P : s.level_load) out << sep << P;
+    if (run.stepped) out << sep << run.stepped->series[k].area_fraction << sep << run.stepped->series[k].sites_touched;
+    out << sep << model::surface_validity_name(s.validity) << "\n";
+  }
+}
+
+}  // namespace
+
+void write_surface(std::ostream& out, OutputFormat format, const SurfaceRun& run) {
+  if (format == OutputFormat::json) {
+    write_json(out, run);
+  } else {
+    write_table(out, run, format == OutputFormat::csv);
+  }
+}
+
+}  // namespace punchsweep::app
