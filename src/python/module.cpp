@@ -264,6 +264,27 @@ std::vector<const map::QuantitySpec*> classify_outputs(const std::vector<std::st
 /// once. `law` holds the creep law's parameters (the standard linear solid's T, or a
 /// material file's temperature where it has a shift), `ramp_time` the load's rise time
 /// (empty: a step).
+/// The law's parameters as columns of n points: the given ones, or each left out at the
+/// point command's default (a material's T_ref). Throws UsageError `wrong_count` where the
+/// columns are not one per parameter of `spec`.
+struct LawColumns {
+  std::vector<std::vector<double>> defaults;  ///< the columns made of defaults
+  std::vector<const double*> values;          ///< one per parameter, n values each
+};
+LawColumns law_columns(const std::vector<Column>& law, const model::CreepLawSpec& spec, py::ssize_t n,
+                       const std::string& wrong_count) {
+  LawColumns out;
+  for (const Column& c : law) out.values.push_back(c.data());
+  if (law.empty()) {
+    for (const double v : point_defaults(spec.parameters)) {
+      out.defaults.emplace_back(static_cast<std::size_t>(n), v);
+      out.values.push_back(out.defaults.back().data());
+    }
+  }
+  if (out.values.size() != spec.parameters.size()) throw input::UsageError(wrong_count);
+  return out;
+}
+
 py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<Column>& law, Column ramp_time,
                   double C, const std::string& localization, const std::string& material_file,
                   const std::vector<std::string>& quantities) {
@@ -283,20 +304,12 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
   }
   const model::CreepLawSpec spec = material ? material->spec() : model::creep_laws().front();
   // A law's parameters left out take the point command's defaults (a material's T_ref).
-  std::vector<std::vector<double>> defaults;
-  std::vector<const double*> law_values;
-  for (const Column& c : law) law_values.push_back(c.data());
-  if (law.empty()) {
-    for (const double v : point_defaults(spec.parameters)) {
-      defaults.emplace_back(static_cast<std::size_t>(n), v);
-      law_values.push_back(defaults.back().data());
-    }
-  }
-  if (law_values.size() != spec.parameters.size()) {
-    throw input::UsageError(material ? "classify: " + no_shift(material_file)
-                                   : "classify: the creep law " + std::string(spec.name) + " takes " +
-                                         std::to_string(spec.parameters.size()) + " parameters");
-  }
+  const LawColumns columns =
+      law_columns(law, spec, n,
+                  material ? "classify: " + no_shift(material_file)
+                           : "classify: the creep law " + std::string(spec.name) + " takes " +
+                                 std::to_string(spec.parameters.size()) + " parameters");
+  const std::vector<const double*>& law_values = columns.values;
   if (const std::string e = check(*model::find_parameter(model::kShapeConstant), C); !e.empty()) {
     throw input::UsageError(e);
   }
@@ -544,19 +557,10 @@ py::dict surface_classify(const input::Keywords& texture, Column pbar, const std
   if (!equal || n == 0) throw std::invalid_argument("surface_classify: the arrays must have the same size > 0 (broadcast first)");
   const input::PointMaterial material = input::find_point_material(texture);
   const model::CreepLawSpec& spec = material.spec;
-  std::vector<std::vector<double>> defaults;
-  std::vector<const double*> law_values;
-  for (const Column& c : law) law_values.push_back(c.data());
-  if (law.empty()) {
-    for (const double v : point_defaults(spec.parameters)) {
-      defaults.emplace_back(static_cast<std::size_t>(n), v);
-      law_values.push_back(defaults.back().data());
-    }
-  }
-  if (law_values.size() != spec.parameters.size()) {
-    throw input::UsageError("surface_classify: the creep law " + std::string(spec.name) + " takes " +
-                            std::to_string(spec.parameters.size()) + " parameters");
-  }
+  const LawColumns columns = law_columns(law, spec, n,
+                                         "surface_classify: the creep law " + std::string(spec.name) + " takes " +
+                                             std::to_string(spec.parameters.size()) + " parameters");
+  const std::vector<const double*>& law_values = columns.values;
   std::vector<std::pair<const model::Parameter*, const double*>> axes;
   for (std::size_t j = 0; j < law_values.size(); ++j) axes.emplace_back(&spec.parameters[j], law_values[j]);
   axes.emplace_back(model::find_parameter(model::kPressure), pbar.data());

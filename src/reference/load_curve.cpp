@@ -61,6 +61,8 @@ class CurveBuilder {
     floor.h.assign(geometry_.sites.size(), -std::numeric_limits<double>::infinity());
     find_touchdowns(floor, a);
     emit(a);
+    // A grid so coarse that the first resolved spot already fills the cell: full there.
+    if (a.full) curve_.X_full = a.sample.X;
     const double step = std::pow(10.0, 1.0 / options_.samples_per_decade);
     while (!a.full && a.sample.X < options_.X_top) {
       options_.stop.throw_if_requested();

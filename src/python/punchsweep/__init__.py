@@ -287,16 +287,7 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
     pbar = _in_scale(pbar, "pbar", material, R)
     if ramp_time is not None:
         ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
-    if material is None:
-        if T is None or temperature is not None:
-            raise ValueError("surface_classify: give T (the standard linear solid), or material= (and temperature= "
-                             "where the material has a shift)")
-        law = [T]
-    else:
-        if T is not None:
-            raise ValueError("surface_classify: T is the standard linear solid's; a material's law has its own "
-                             "(temperature= where the file has a shift)")
-        law = [] if temperature is None else [temperature]
+    law = _law_arrays("surface_classify", T, temperature, material)
     ramp = [] if ramp_time is None else [ramp_time]
     arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (pbar, *law, *ramp)))
     shape = arrays[0].shape
@@ -503,6 +494,21 @@ def _in_scale(values, name: str, material, R):
     return np.vectorize(lambda v: _core.scaled(str(v), name, path, R), otypes=[float])(array)
 
 
+def _law_arrays(who: str, T, temperature, material) -> list:
+    """The law's parameter arrays of a vectorized call: [T] for the standard linear solid, or
+    with a material [temperature] ([] for its reference temperature, or one without a
+    shift). ValueError for T beside a material or neither."""
+    if material is None:
+        if T is None or temperature is not None:
+            raise ValueError(f"{who}: give T (the standard linear solid), or material= (and temperature= "
+                             "where the material has a shift)")
+        return [T]
+    if T is not None:
+        raise ValueError(f"{who}: T is the standard linear solid's; a material's law has its own "
+                         "(temperature= where the file has a shift)")
+    return [] if temperature is None else [temperature]
+
+
 def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str | None = None, *,
              material: str | None = None, temperature=None, ramp_time=None, pressure=None,
              R: str | None = None, quantities: Iterable[str] | None = None) -> Classification:
@@ -541,16 +547,7 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     l, dh, pbar = (_in_scale(v, n, material, R) for v, n in ((l, "l"), (dh, "dh"), (pbar, "pbar")))
     if ramp_time is not None:
         ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
-    if material is None:
-        if T is None or temperature is not None:
-            raise ValueError("classify: give T (the standard linear solid), or material= (and temperature= "
-                             "where the material has a shift)")
-        law = [T]
-    else:
-        if T is not None:
-            raise ValueError("classify: T is the standard linear solid's; a material's law has its own "
-                             "(temperature= where the file has a shift)")
-        law = [] if temperature is None else [temperature]
+    law = _law_arrays("classify", T, temperature, material)
     ramp = [] if ramp_time is None else [ramp_time]
     arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, pbar, s, *law, *ramp)))
     shape = arrays[0].shape
