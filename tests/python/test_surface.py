@@ -338,3 +338,14 @@ def test_each_levels_t_star_moves_with_the_load_as_the_closed_form_says():
     run = cli("--l", "0.75", "--dh", "0.03", "--T", "2.5", "--pbar", "0.01", "--s", "2", "--grid", "16",
               "--tolerance", "dh=0.01")
     assert run.returncode == 2 and "needs a load curve per corner" in run.stderr
+
+
+def test_the_documented_cell_example_runs():
+    """docs/cli.md's example: examples/cells/hexagonal_two_level.ini with --R 80um: 4 caps,
+    the shorter ones 3 um (0.0375 R) lower, every tip on a node of the grid."""
+    run = cli("--cell", REPO / "examples" / "cells" / "hexagonal_two_level.ini", "--R", "80um", "--T", "3",
+              "--pbar", "0.01", "--grid", "32", "--format", "json")
+    assert run.returncode == 0, run.stderr
+    out = json.loads(run.stdout)
+    assert out["caps"] == 4 and out["notes"] == [] and out["lattice"] == "cell"
+    assert [lv["drop"] for lv in out["levels"]] == pytest.approx([0.0, 3.0 / 80.0], rel=1e-9)
