@@ -349,3 +349,30 @@ def test_the_documented_cell_example_runs():
     out = json.loads(run.stdout)
     assert out["caps"] == 4 and out["notes"] == [] and out["lattice"] == "cell"
     assert [lv["drop"] for lv in out["levels"]] == pytest.approx([0.0, 3.0 / 80.0], rel=1e-9)
+
+
+def test_surface_map_has_a_curve_per_geometry_and_reads_the_loads_off_it(tmp_path):
+    """dh as a list is a geometry axis (one curve each), pbar and T as lists load axes read
+    off each curve: every value equals surface_classify's for that dh alone; the Dataset
+    keeps units and the regime's flag codes, and writes to and reads back from HDF5
+    (netCDF-4 by h5netcdf) unchanged."""
+    texture = dict(lattice="hexagonal", l=1.2, dh2=0.09, s=2, grid=32)
+    pbar = np.geomspace(2e-3, 0.05, 5)
+    T = [2.0, 4.0, 8.0]
+    ds = punchsweep.surface_map(dh=[0.04, 0.06], pbar=pbar, T=T, **texture)
+    assert ds.t_star.dims == ("dh", "pbar", "T", "level") and ds.t_star.shape == (2, 5, 3, 3)
+    assert ds.t_star.attrs["units"] == "T_eps" and ds.pbar.attrs["units"] == "E0/(1-nu^2)"
+    assert ds.regime.attrs["flag_meanings"] == "immediate delayed never"
+    for k, dh in enumerate([0.04, 0.06]):
+        alone = punchsweep.surface_classify(pbar=pbar[:, None], T=np.asarray(T)[None, :], dh=dh, **texture)
+        np.testing.assert_array_equal(ds.t_star.values[k], alone["t_star"])
+        np.testing.assert_array_equal(ds.regime.values[k], alone["regime"])
+        np.testing.assert_array_equal(ds.X_star.values[k], alone["X_star"])
+    path = tmp_path / "surface_map.h5"
+    ds.to_netcdf(path, engine="h5netcdf")
+    import xarray
+    back = xarray.open_dataset(path, engine="h5netcdf")
+    np.testing.assert_array_equal(back.t_star.values, ds.t_star.values)
+    np.testing.assert_array_equal(back.regime.values, ds.regime.values)
+    one = punchsweep.surface_map(dh=0.05, pbar=0.01, T=T, **texture)
+    assert one.t_star.dims == ("T", "level")
