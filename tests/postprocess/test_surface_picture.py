@@ -1,0 +1,49 @@
+"""postprocess/surface_picture.py: each level's t* over a map punchsweep.surface_map wrote
+(netCDF-4 by h5netcdf). What it draws is checked by another route than the image: the
+nearest values --at picks, the panels' arrays against the map's own, and the refusals."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO / "postprocess"))
+import surface_picture  # noqa: E402
+from script_runner import call  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def hex_map(tmp_path_factory):
+    path = tmp_path_factory.mktemp("surface") / "hex.nc"
+    punchsweep.surface_map(lattice="hexagonal", l=1.2, dh=[0.04, 0.05, 0.06], dh2=0.09, s=2, grid=32,
+                           pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0]).to_netcdf(path, engine="h5netcdf")
+    return path
+
+
+def test_a_slice_is_drawn_per_level(hex_map, tmp_path):
+    rc, out, err = call(surface_picture, hex_map, "--at", "T=4.3", "-o", tmp_path / "hex.png")
+    assert rc == 0, err
+    assert (tmp_path / "hex.png").stat().st_size > 10_000
+    ds, said = surface_picture.select(surface_picture.read_map(str(hex_map)), ["T=4.3"])
+    assert said == ["T = 4"]  # the nearest value, said
+    whole = surface_picture.read_map(str(hex_map))
+    np.testing.assert_array_equal(ds.t_star.values, whole.t_star.sel(T=4.0).values)
+    fig = surface_picture.render(ds, said)
+    assert len(fig.axes) >= 2  # a panel per level below the tallest (2), with colour bars
+    rc, _, err = call(surface_picture, hex_map, "--at", "T=4", "dh=0.05", "-o", tmp_path / "line.png")
+    assert rc == 0, err
+
+
+def test_refusals_name_the_problem(hex_map, tmp_path):
+    rc, _, err = call(surface_picture, hex_map, "-o", tmp_path / "x.png")
+    assert rc == 2 and "3 axes of several values (dh, pbar, T); fix all but two with --at" in err
+    rc, _, err = call(surface_picture, hex_map, "--at", "l=1", "-o", tmp_path / "x.png")
+    assert rc == 2 and "no axis 'l' (the map's: dh, pbar, T)" in err
+    (tmp_path / "not.nc").write_text("hello")
+    rc, _, err = call(surface_picture, tmp_path / "not.nc", "-o", tmp_path / "x.png")
+    assert rc == 2 and "not a map surface_map wrote" in err
