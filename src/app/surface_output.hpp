@@ -6,7 +6,7 @@
 #include <iosfwd>
 
 #include "app/point_output.hpp"
-#include "app/surface_command.hpp"
+#include "app/surface_run.hpp"
 
 namespace punchsweep::app {
 

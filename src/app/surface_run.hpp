@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// One texture as `punchsweep surface` evaluates it (surface_command.hpp) and prints it
+/// (surface_output.hpp): its inputs, geometry, curve, history and checks.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "input/command_options.hpp"
+#include "model/point/sensitivity.hpp"
+#include "model/problem/cell_geometry.hpp"
+#include "model/surface/load_curve.hpp"
+#include "model/surface/surface_history.hpp"
+#include "reference/cell_stepping.hpp"
+#include "reference/measured_cell.hpp"
+
+namespace punchsweep::app {
+
+/// One texture evaluated: its inputs, geometry, curve and history.
+struct SurfaceRun {
+  input::PointInputs inputs;
+  model::LatticeKind lattice = model::LatticeKind::square;
+  std::string cell_file;  ///< --cell FILE or --height-map FILE, or empty for a lattice
+  std::optional<reference::MeasuredCell> measured;  ///< --height-map: the map's cell and summits
+  model::CellGeometry geometry;
+  std::vector<double> times;
+  int supercell = 1;   ///< K: the cell is K x K lattice cells
+  model::HeightScatter scatter;
+  int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
+  model::LoadCurve curve;
+  model::SurfaceHistory history;
+  double curve_seconds = 0.0;
+  bool curve_cached = false;  ///< read from the table cache (app/curve_cache.hpp)
+  bool check = false;         ///< --check: step the same cell in time too
+  std::vector<model::Tolerance> tolerances;  ///< --tolerance: on the pressure and the law's parameters
+  /// Per level: d t*/dx along pbar and the law's parameters (empty for level 0), and the
+  /// range of t* over the tolerances (none without).
+  std::vector<std::vector<model::TStarDerivative>> derivatives;
+  std::vector<std::optional<model::TStarRange>> ranges;
+  std::optional<reference::CellReference> stepped;
+  double check_seconds = 0.0;
+};
+
+}  // namespace punchsweep::app
