@@ -38,7 +38,7 @@ constexpr const char* kUsage =
 constexpr int kMaxGrid = 2048;
 constexpr int kAutoMin = 64;
 constexpr int kAutoMax = 512;
-constexpr double kAutoSpotRadius = 12.0;
+constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
 
@@ -113,7 +113,7 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "contact's history) and print its touch times, areas and loads beside the curve's")
       ("grid", po::value<std::string>()->value_name("N")->default_value("auto"),
        "boundary-element nodes per pitch: an even integer in [4, 2048], or auto (the smallest spot the "
-       "times meet spans a radius of 12 nodes; 64 to 512)")
+       "times meet spans a radius of 13 nodes; 64 to 512)")
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
   return opts;

@@ -101,6 +101,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   out << "  \"supercell\": " << run.supercell << ",\n";
   out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
   out << "  \"curve\": {\"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
+      << ", \"X_resolved\": " << num(run.curve.X_resolved)
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
       << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false") << "},\n";
   out << "  \"levels\": [";

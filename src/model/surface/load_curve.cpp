@@ -92,7 +92,7 @@ bool LoadCurve::monotone_between(double X_a, double X_b) const {
 std::vector<double> LoadCurve::tables() const {
   std::vector<double> out{kFormat, cell_area, static_cast<double>(nx), static_cast<double>(ny),
                           static_cast<double>(levels()), static_cast<double>(sites()), static_cast<double>(s_tallest),
-                          X_full, static_cast<double>(samples.size())};
+                          X_full, static_cast<double>(samples.size()), X_resolved};
   for (int level : site_level) out.push_back(level);
   out.insert(out.end(), site_touchdown.begin(), site_touchdown.end());
   out.insert(out.end(), level_touchdown.begin(), level_touchdown.end());
@@ -107,7 +107,7 @@ std::vector<double> LoadCurve::tables() const {
 }
 
 std::optional<LoadCurve> LoadCurve::from_tables(const std::vector<double>& numbers) {
-  constexpr std::size_t kHeader = 9;
+  constexpr std::size_t kHeader = 10;
   if (numbers.size() < kHeader || numbers[0] != kFormat) return std::nullopt;
   const auto count = [](double v) { return v >= 0.0 && v < 1e9 && v == std::floor(v) ? static_cast<std::size_t>(v) : std::size_t{0}; };
   const std::size_t L = count(numbers[4]), S = count(numbers[5]), N = count(numbers[8]);
@@ -118,6 +118,7 @@ std::optional<LoadCurve> LoadCurve::from_tables(const std::vector<double>& numbe
   c.ny = static_cast<int>(count(numbers[3]));
   c.s_tallest = static_cast<int>(count(numbers[6]));
   c.X_full = numbers[7];
+  c.X_resolved = numbers[9];
   std::size_t k = kHeader;
   const auto take = [&](std::size_t n) {
     std::vector<double> part(numbers.begin() + static_cast<std::ptrdiff_t>(k), numbers.begin() + static_cast<std::ptrdiff_t>(k + n));

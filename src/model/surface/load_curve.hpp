@@ -25,8 +25,8 @@ struct LoadCurveSample {
 
 /// Where a load falls on the curve.
 enum class CurveRange {
-  /// Below the first sample: the tallest sites' spots span fewer than the curve's
-  /// min_spot_nodes nodes. Areas follow the isolated punch's a^(s+1) ~ load from the first
+  /// Below the first sample (the tallest sites' spots span fewer than the curve's
+  /// min_spot_nodes nodes): areas follow the isolated punch's a^(s+1) ~ load from the first
   /// sample down; the loads are the first sample's shares.
   below_resolution,
   sampled,       ///< between the samples: interpolated (see LoadCurve::at)
@@ -66,6 +66,10 @@ struct LoadCurve {
   /// The load of full contact (every node pressed), the last sample; +infinity where the
   /// curve stops at its top before.
   double X_full = std::numeric_limits<double>::infinity();
+  /// From this load on the tallest spots span enough nodes for the curve to answer for the
+  /// continuum (reference::LoadCurveOptions::resolved_spot_nodes); below it a reading is the
+  /// grid's own and flagged.
+  double X_resolved = 0.0;
 
   int levels() const { return static_cast<int>(level_touchdown.size()); }
   std::size_t sites() const { return site_level.size(); }
@@ -87,7 +91,7 @@ struct LoadCurve {
   /// The curve of tables(); nullopt for numbers of another format, sizes that do not add
   /// up, or a curve load_curve_error refuses.
   static std::optional<LoadCurve> from_tables(const std::vector<double>& numbers);
-  static constexpr double kFormat = 1.0;
+  static constexpr double kFormat = 3.0;  ///< 2: touchdowns by the tip's pressure; 3: X_resolved
 };
 
 /// Empty when `curve` is one the readers can use (samples increasing in X, sizes matching,

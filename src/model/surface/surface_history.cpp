@@ -23,7 +23,7 @@ std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeighte
   out.reserve(curve.level_touchdown.size());
   for (const double X_star : curve.level_touchdown) {
     const Classification c = classify(Touchdown{0.0, X_star}, load);
-    const bool resolved = X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_first();
+    const bool resolved = X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_resolved;
     out.push_back({c.regime, c.t_star, X_star, resolved});
   }
   return out;
@@ -72,7 +72,7 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
       s.validity = SurfaceValidity::above_top;
     } else if (!curve.monotone_between(std::min(X0, s.X), s.X)) {
       s.validity = SurfaceValidity::unloading;
-    } else if (s.state.range == CurveRange::below_resolution && s.X > 0.0) {
+    } else if (s.X > 0.0 && s.X < curve.X_resolved) {
       s.validity = SurfaceValidity::below_resolution;
     }
     const double nominal = load.nominal_pressure(t) * curve.cell_area;

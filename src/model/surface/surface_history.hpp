@@ -24,16 +24,16 @@ struct LevelTouch {
   double t_star = 0.0;  ///< 0 for immediate, +infinity for never
   double X_star = 0.0;  ///< the level's touchdown load, in E0*
   /// Whether the curve resolves the touchdown: X* is 0, +infinity, or at or above the
-  /// curve's first sample (below it the tallest spots span too few nodes).
+  /// curve's X_resolved (below it the tallest spots span too few nodes).
   bool resolved = true;
 };
 
 /// Why a snapshot's numbers may not be trusted. The integer codes are the output's contract.
 enum class SurfaceValidity : int {
   valid = 0,
-  /// X(t) lies below the curve's first sample: the tallest spots span fewer nodes than the
-  /// curve resolves; the areas are extrapolated as an isolated punch's (a finer grid
-  /// answers).
+  /// X(t) lies below the curve's X_resolved: the tallest spots span fewer nodes than the
+  /// continuum needs (below its first sample the areas are extrapolated as an isolated
+  /// punch's); a finer grid answers.
   below_resolution = 1,
   /// X(t) lies past the curve's top without full contact.
   above_top = 2,
