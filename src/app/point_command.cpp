@@ -90,10 +90,7 @@ int run_point_command(const std::vector<std::string>& args, std::ostream& out) {
   std::vector<model::Tolerance> tolerances;
   std::optional<double> cap_radius;
   PointRun run = read_point(vm, material, &options, &tolerances, &cap_radius);
-  const std::string format_text = input::read_choice(vm, "format", {"table", "json", "csv"});
-  const OutputFormat format = format_text == "json"  ? OutputFormat::json
-                              : format_text == "csv" ? OutputFormat::csv
-                                                     : OutputFormat::table;
+  const OutputFormat format = read_output_format(vm);
   evaluate(run, options, tolerances, cap_radius);
   write_point(out, format, run.inputs, run.result);
   return 0;

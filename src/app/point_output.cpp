@@ -11,6 +11,11 @@
 #include "model/laws/material.hpp"
 
 namespace punchsweep::app {
+
+OutputFormat read_output_format(const boost::program_options::variables_map& vm) {
+  const std::string text = input::read_choice(vm, "format", {"table", "json", "csv"});
+  return text == "json" ? OutputFormat::json : text == "csv" ? OutputFormat::csv : OutputFormat::table;
+}
 namespace {
 
 using map::kQuantities;

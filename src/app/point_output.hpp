@@ -5,12 +5,17 @@
 #include <string_view>
 #include <vector>
 
+#include <boost/program_options/variables_map.hpp>
+
 #include "input/command_options.hpp"
 #include "model/point/point_evaluation.hpp"
 
 namespace punchsweep::app {
 
 enum class OutputFormat { table, json, csv };
+
+/// --format table|json|csv (input::read_choice's refusal for another).
+OutputFormat read_output_format(const boost::program_options::variables_map& vm);
 
 /// Receives a point's output fields, as visit_point hands them out.
 struct PointFields {

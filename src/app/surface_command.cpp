@@ -16,6 +16,7 @@
 #include "input/height_map.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
 #include "model/surface/surface_sensitivity.hpp"
 #include "reference/cell_stepping.hpp"
 #include "reference/load_curve.hpp"
@@ -217,11 +218,9 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   if (grid != "auto") {
     const std::string range = "an even integer in [4, " + std::to_string(kMaxGrid) + "], or auto";
     try {
-      std::size_t used = 0;
-      run.grid_nodes = std::stoi(grid, &used);
-      if (used != grid.size()) run.grid_nodes = -1;
-    } catch (const std::exception&) {
-      run.grid_nodes = -1;
+      run.grid_nodes = input::parse_integer(grid, "--grid");
+    } catch (const input::UsageError&) {
+      run.grid_nodes = -1;  // refused below with the option's range
     }
     if (run.grid_nodes < 4 || run.grid_nodes > kMaxGrid || run.grid_nodes % 2 != 0) {
       throw input::UsageError("--grid = " + grid + " is outside its range: " + range);
@@ -361,9 +360,9 @@ int run_surface_command(const std::vector<std::string>& args, std::ostream& out)
     return 0;
   }
   SurfaceRun run = read_surface(vm, material);
-  const std::string format = input::read_choice(vm, "format", {"table", "json", "csv"});
+  const OutputFormat format = read_output_format(vm);
   evaluate(run, true);
-  write_surface(out, format == "json" ? OutputFormat::json : format == "csv" ? OutputFormat::csv : OutputFormat::table, run);
+  write_surface(out, format, run);
   return 0;
 }
 

@@ -15,6 +15,23 @@ namespace {
 
 std::string num(double v) { return input::json_number(v); }
 
+/// A level's sites: how many, and their least and greatest drop.
+struct DropRange {
+  double least = std::numeric_limits<double>::infinity();
+  double greatest = 0.0;
+  int sites = 0;
+};
+DropRange drop_range(const model::CellGeometry& geometry, int level) {
+  DropRange out;
+  for (const model::Site& site : geometry.sites) {
+    if (site.level != level) continue;
+    out.least = std::min(out.least, site.drop);
+    out.greatest = std::max(out.greatest, site.drop);
+    ++out.sites;
+  }
+  return out;
+}
+
 /// "physical": the lengths, areas, loads and loads X in R's unit, its square, N and Pa,
 /// where --R and a material give the scales (nothing otherwise).
 void write_physical(std::ostream& out, const SurfaceRun& run) {
@@ -30,10 +47,7 @@ void write_physical(std::ostream& out, const SurfaceRun& run) {
       << "},\n    \"cell\": [" << num(run.geometry.Lx * length->per_scaled) << ", " << num(run.geometry.Ly * length->per_scaled)
       << "],\n    \"levels\": [";
   for (int level = 0; level < L; ++level) {
-    double drop = std::numeric_limits<double>::infinity();
-    for (const model::Site& site : run.geometry.sites) {
-      if (site.level == level) drop = std::min(drop, site.drop);
-    }
+    const double drop = drop_range(run.geometry, level).least;
     out << (level ? ", " : "") << "{\"drop\": " << num(drop * length->per_scaled) << ", \"X_star\": "
         << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled) << "}";
   }
@@ -107,18 +121,10 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   out << "  \"levels\": [";
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
-    double drop = std::numeric_limits<double>::infinity(), drop_max = 0.0;
-    int sites = 0;
-    for (const model::Site& site : run.geometry.sites) {
-      if (site.level == level) {
-        drop = std::min(drop, site.drop);
-        drop_max = std::max(drop_max, site.drop);
-        ++sites;
-      }
-    }
-    out << (level ? ",\n    " : "\n    ") << "{\"level\": " << level << ", \"drop\": " << num(drop)
-        << ", \"drop_max\": " << num(drop_max)
-        << ", \"sites\": " << sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
+    const DropRange drops = drop_range(run.geometry, level);
+    out << (level ? ",\n    " : "\n    ") << "{\"level\": " << level << ", \"drop\": " << num(drops.least)
+        << ", \"drop_max\": " << num(drops.greatest)
+        << ", \"sites\": " << drops.sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
         << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
         << ", \"resolved\": " << (touch.resolved ? "true" : "false")
         << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]);

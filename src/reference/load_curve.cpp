@@ -40,9 +40,7 @@ class CurveBuilder {
     curve_.level_share.assign(static_cast<std::size_t>(levels_), 0.0);
     double rest = 1.0;
     for (int level = 1; level < levels_; ++level) {
-      double sum = 0.0;
-      for (std::size_t k = 0; k < g.size(); ++k) sum += g.multiplicity(k) * cell.level_weight[static_cast<std::size_t>(level - 1)][k];
-      curve_.level_share[static_cast<std::size_t>(level)] = sum / static_cast<double>(g.nodes());
+      curve_.level_share[static_cast<std::size_t>(level)] = level_share(g, cell.level_weight[static_cast<std::size_t>(level - 1)]);
       rest -= curve_.level_share[static_cast<std::size_t>(level)];
     }
     curve_.level_share[0] = rest;
@@ -83,13 +81,7 @@ class CurveBuilder {
       refine(a, b, 0);
       a = std::move(b);
     }
-    for (int level = 0; level < levels_; ++level) {
-      double least = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-        if (geometry_.sites[k].level == level) least = std::min(least, curve_.site_touchdown[k]);
-      }
-      curve_.level_touchdown.push_back(least);
-    }
+    curve_.level_touchdown = level_touchdowns_found();
     return std::move(curve_);
   }
 
@@ -239,17 +231,23 @@ class CurveBuilder {
     return b;
   }
 
+  /// Each level's touchdown: the least of its sites' found so far (+infinity for none).
+  std::vector<double> level_touchdowns_found() const {
+    std::vector<double> least(static_cast<std::size_t>(levels_), std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+      double& level = least[static_cast<std::size_t>(geometry_.sites[k].level)];
+      level = std::min(level, curve_.site_touchdown[k]);
+    }
+    return least;
+  }
+
   /// Whether the curve's reading between a and b (LoadCurve::at) meets the solve m.
   bool interpolation_holds(const Solved& a, const Solved& m, const Solved& b) const {
     model::LoadCurve pair;
     pair.cell_area = curve_.cell_area;
     pair.samples = {a.sample, b.sample};
     // The touchdowns found so far (the interval's reading depends on whether it starts at one).
-    pair.level_touchdown.assign(static_cast<std::size_t>(levels_), std::numeric_limits<double>::infinity());
-    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      double& least = pair.level_touchdown[static_cast<std::size_t>(geometry_.sites[k].level)];
-      least = std::min(least, curve_.site_touchdown[k]);
-    }
+    pair.level_touchdown = level_touchdowns_found();
     pair.level_share = curve_.level_share;
     pair.X_full = std::numeric_limits<double>::infinity();
     const model::CurveState s = pair.at(m.sample.X);

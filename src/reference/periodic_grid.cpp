@@ -243,10 +243,12 @@ TwoLevelCell make_two_level_cell(const model::ContactProblem& problem, int n, Sy
   return out;
 }
 
-double level2_share(const TwoLevelCell& cell) {
+double level_share(const PeriodicGrid& grid, const std::vector<double>& weight) {
   double sum = 0.0;
-  for (std::size_t k = 0; k < cell.level2_weight.size(); ++k) sum += cell.grid.multiplicity(k) * cell.level2_weight[k];
-  return sum / static_cast<double>(cell.grid.nodes());
+  for (std::size_t k = 0; k < weight.size(); ++k) sum += grid.multiplicity(k) * weight[k];
+  return sum / static_cast<double>(grid.nodes());
 }
+
+double level2_share(const TwoLevelCell& cell) { return level_share(cell.grid, cell.level2_weight); }
 
 }  // namespace punchsweep::reference

@@ -138,8 +138,11 @@ struct TwoLevelCell {
   std::size_t tip2 = 0;  ///< node of the level-2 tip M = (l/2, l/2)
 };
 
-/// The level-2 share of the cell's area: the nodes' level2_weight, each times its
-/// multiplicity, over the cell's nodes.
+/// A level's share of the cell's area: the nodes' `weight` in it (Cell::level_weight),
+/// each times its multiplicity, over the cell's nodes.
+double level_share(const PeriodicGrid& grid, const std::vector<double>& weight);
+
+/// The level-2 share of the two-level cell: level_share of its level2_weight.
 double level2_share(const TwoLevelCell& cell);
 
 /// Relative difference under which the two punch surfaces count as tied at a node.

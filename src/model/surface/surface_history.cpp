@@ -42,6 +42,18 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
   const std::size_t L = static_cast<std::size_t>(curve.levels());
   const double cell_load = load.pbar0() * curve.cell_area;  // Q1 = this g(tau) before the touch
   std::vector<std::optional<LoadHistory>> histories(L);
+  // Q of `level` at tau off the curve: Q2 its load, Q1 the rest of the cell's (what a
+  // history samples, and again near t for a narrow kernel).
+  const auto sampler = [&curve, &load](std::size_t level) -> LoadHistory::Sampler {
+    return [&curve, &load, level](double tau, double* Q1, double* Q2) {
+      const double X = load(tau);
+      const CurveState s = curve.at(X);
+      if (s.range == CurveRange::above_top) return false;
+      *Q2 = s.level_load[level];
+      *Q1 = X * curve.cell_area - *Q2;
+      return true;
+    };
+  };
   bool too_costly = false;
   for (std::size_t level = 1; level < L; ++level) {
     const double t0 = out.levels[level].t_star;
@@ -51,15 +63,7 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
       too_costly = true;
       continue;
     }
-    const auto sample = [&curve, &load, level](double tau, double* Q1, double* Q2) {
-      const double X = load(tau);
-      const CurveState s = curve.at(X);
-      if (s.range == CurveRange::above_top) return false;
-      *Q2 = s.level_load[level];
-      *Q1 = X * curve.cell_area - *Q2;
-      return true;
-    };
-    histories[level].emplace(load, cell_load, t0, t_max, quadrature, sample);
+    histories[level].emplace(load, cell_load, t0, t_max, quadrature, sampler(level));
   }
 
   for (const double t : times) {
@@ -83,13 +87,8 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
       const std::optional<LoadHistory>& history = histories[level];
       double P1 = 0.0, P2 = std::numeric_limits<double>::quiet_NaN();
       if (history && history->ok()) {
-        const auto near = [&](double tau, double* Q1, double* Q2) {
-          const CurveState c = curve.at(load(tau));
-          *Q2 = c.level_load[level];
-          *Q1 = load(tau) * curve.cell_area - *Q2;
-          return c.range != CurveRange::above_top;
-        };
-        if (!history->load(t, s.X * curve.cell_area - s.state.level_load[level], s.state.level_load[level], &P1, &P2, near)) {
+        if (!history->load(t, s.X * curve.cell_area - s.state.level_load[level], s.state.level_load[level], &P1, &P2,
+                           sampler(level))) {
           P2 = std::numeric_limits<double>::quiet_NaN();
         }
       }
