@@ -17,6 +17,8 @@
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
+#include "model/periodic/periodic_model.hpp"
+#include "model/surface/periodic_curve.hpp"
 #include "model/surface/surface_sensitivity.hpp"
 #include "reference/cell_stepping.hpp"
 #include "reference/load_curve.hpp"
@@ -112,6 +114,10 @@ po::options_description surface_options(const input::PointMaterial& material) {
       ("check", po::bool_switch(),
        "also step the same cell in time (the time-stepping boundary elements, which assume nothing of the "
        "contact's history) and print its touch times, areas and loads beside the curve's")
+      ("curve", po::value<std::string>()->value_name("KIND")->default_value("auto"),
+       "where the elastic load curve comes from: tables (the periodic model's, n = 512 with the small-spot "
+       "table below: the two-level square lattice only, as `point` reads them), cell (the cell's own "
+       "boundary elements), or auto (tables where they answer, else cell; a --grid asks for cell)")
       ("grid", po::value<std::string>()->value_name("N")->default_value("auto"),
        "boundary-element nodes per pitch: an even integer in [4, 2048], or auto (the smallest spot the "
        "times meet spans a radius of 13 nodes; 64 to 512)")
@@ -227,6 +233,20 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     }
   }
   run.check = vm.count("check") && vm["check"].as<bool>();
+  // The periodic model's tables are the two-level square lattice's, on their own grid.
+  const std::string curve = input::read_choice(vm, "curve", {"auto", "tables", "cell"});
+  const bool paper_lattice = !cell && run.lattice == model::LatticeKind::square && drops.size() == 1 &&
+                             vm["supercell"].as<int>() == 1;
+  if (curve == "tables" && !paper_lattice) {
+    throw input::UsageError("--curve tables: the periodic model's tables are the two-level square lattice's (without --dh2, "
+                            "--cell, --height-map, --supercell or --lattice hexagonal); use --curve cell or auto");
+  }
+  if (curve == "tables" && run.grid_nodes != 0) {
+    throw input::UsageError("--grid beside --curve tables: the tables' grid is their own (512 nodes per pitch)");
+  }
+  run.curve_source = curve == "cell" || !paper_lattice || run.grid_nodes != 0 ? CurveSource::cell
+                     : curve == "tables"                                      ? CurveSource::tables
+                                                                              : CurveSource::tables_or_cell;
   run.geometry = cell ? *cell : model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
   run.supercell = vm["supercell"].as<int>();
   if (run.supercell < 1 || run.supercell > kMaxSupercell) {
@@ -270,49 +290,83 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
   return static_cast<int>(std::clamp(n, static_cast<double>(kAutoMin), static_cast<double>(kAutoMax)));
 }
 
+/// The cell the boundary elements solve (the curve's, or --check's): its grid, the tips
+/// snapped to its nodes for a cell file (with a note).
+reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load) {
+  if (run.measured) return run.measured->cell;
+  if (run.grid_nodes == 0) run.grid_nodes = auto_grid(run, load);
+  if (run.cell_file.empty()) {
+    return reference::make_cell(run.geometry, reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell));
+  }
+  // A cell file's tips go to their nearest nodes: the move is reported.
+  reference::PeriodicGrid grid = reference::cell_grid(run.geometry, run.grid_nodes * run.supercell);
+  double moved = 0.0;
+  run.geometry = reference::snap_tips(run.geometry, grid, &moved);
+  if (grid.mirrored() && !model::mirror_symmetric(run.geometry)) grid.symmetry = reference::Symmetry::none;
+  if (moved > 1e-9 * std::min(grid.hx(), grid.hy())) {
+    std::ostringstream note;
+    note.precision(3);
+    note << "the tips were moved to the nearest nodes of the " << grid.nx << " x " << grid.ny << " grid, by at most "
+         << moved << " R (" << moved / std::min(grid.hx(), grid.hy()) << " node spacings)";
+    run.inputs.notes.push_back(note.str());
+  }
+  return reference::make_cell(run.geometry, grid);
+}
+
+/// The two-level square lattice's curve off the periodic model's tables, where they reach
+/// its dh (else empty).
+std::optional<model::LoadCurve> tables_curve(const SurfaceRun& run) {
+  const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
+  return model::periodic_load_curve(solution, run.inputs.problem);
+}
+
 /// The curve as far as the times reach, and the history on it.
 void evaluate(SurfaceRun& run, bool progress) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
-  if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
-  reference::PeriodicGrid grid;
-  if (run.measured) {
-    grid = run.measured->cell.grid;
-  } else if (run.cell_file.empty()) {
-    grid = reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell);
-  } else {
-    // A cell file's tips go to their nearest nodes: the move is reported.
-    grid = reference::cell_grid(run.geometry, run.grid_nodes * run.supercell);
-    double moved = 0.0;
-    run.geometry = reference::snap_tips(run.geometry, grid, &moved);
-    if (grid.mirrored() && !model::mirror_symmetric(run.geometry)) grid.symmetry = reference::Symmetry::none;
-    if (moved > 1e-9 * std::min(grid.hx(), grid.hy())) {
-      std::ostringstream note;
-      note.precision(3);
-      note << "the tips were moved to the nearest nodes of the " << grid.nx << " x " << grid.ny << " grid, by at most "
-           << moved << " R (" << moved / std::min(grid.hx(), grid.hy()) << " node spacings)";
-      run.inputs.notes.push_back(note.str());
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<model::LoadCurve> tabulated;
+  if (run.curve_source != CurveSource::cell) {
+    tabulated = tables_curve(run);
+    if (!tabulated && run.curve_source == CurveSource::tables) {
+      const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
+      const model::PeriodicScales scales(run.inputs.problem);
+      std::ostringstream why;
+      why << "--curve tables: dh = " << run.inputs.problem.dh << " R is outside the tables' range: dh <= "
+          << solution.delta_top() * scales.h_unit << " R (their top), or dh >= " << solution.delta_hidden() * scales.h_unit
+          << " R (level 1 hidden under the tall punches); use --curve cell";
+      throw input::UsageError(why.str());
+    }
+    if (!tabulated) {
+      run.inputs.notes.push_back("dh lies between the periodic tables' top and where level 1 hides: the curve is the cell's "
+                                 "own boundary elements'");
     }
   }
-  const reference::Cell cell = run.measured ? run.measured->cell : reference::make_cell(run.geometry, grid);
-  reference::LoadCurveOptions options;
-  // To full contact, where every level that can touch has: the curve is then the
-  // geometry's alone, whatever the material, temperature, pressure and times, and one
-  // cached curve serves them all. FFTW's plans are its estimate's, so that a curve and
-  // every answer read off it have the same bits in every process.
-  sweep::use_reproducible_fft_plans();
-  const auto start = std::chrono::steady_clock::now();
-  auto last = start;
-  if (progress) {
-    options.progress = [&](int solves, double X) {
-      const auto now = std::chrono::steady_clock::now();
-      if (std::chrono::duration<double>(now - last).count() < 2.0) return;
-      last = now;
-      std::cerr << "punchsweep surface: load curve, " << solves << " solves, X = " << X << " E0* on the way to full contact\n";
-    };
+  std::optional<reference::Cell> cell;
+  if (tabulated) {
+    run.curve_source = CurveSource::tables;
+    run.curve = std::move(*tabulated);
+  } else {
+    run.curve_source = CurveSource::cell;
+    cell = boundary_element_cell(run, load);
+    reference::LoadCurveOptions options;
+    // To full contact, where every level that can touch has: the curve is then the
+    // geometry's alone, whatever the material, temperature, pressure and times, and one
+    // cached curve serves them all. FFTW's plans are its estimate's, so that a curve and
+    // every answer read off it have the same bits in every process.
+    sweep::use_reproducible_fft_plans();
+    auto last = start;
+    if (progress) {
+      options.progress = [&](int solves, double X) {
+        const auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - last).count() < 2.0) return;
+        last = now;
+        std::cerr << "punchsweep surface: load curve, " << solves << " solves, X = " << X << " E0* on the way to full contact\n";
+      };
+    }
+    CurveOrigin origin = CurveOrigin::built;
+    run.curve = load_curve_for(run.geometry, *cell, options, &origin);
+    run.curve_cached = origin == CurveOrigin::cache;
   }
-  CurveOrigin origin = CurveOrigin::built;
-  run.curve = load_curve_for(run.geometry, cell, options, &origin);
-  run.curve_cached = origin == CurveOrigin::cache;
   run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.history = model::surface_history(run.curve, load, run.times);
   // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
@@ -340,8 +394,12 @@ void evaluate(SurfaceRun& run, bool progress) {
     check.times = run.times;
     check.steps = scaled.steps;
     check.t_star_resolution = scaled.t_star_resolution;
+    if (!cell) {
+      sweep::use_reproducible_fft_plans();
+      cell = boundary_element_cell(run, load);
+    }
     const auto check_start = std::chrono::steady_clock::now();
-    run.stepped = reference::evaluate_cell_reference(run.geometry, cell, run.inputs.problem.pbar0, *run.inputs.creep,
+    run.stepped = reference::evaluate_cell_reference(run.geometry, *cell, run.inputs.problem.pbar0, *run.inputs.creep,
                                                      run.inputs.problem.loading, check);
     run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
   }

@@ -100,6 +100,10 @@ void write_check(std::ostream& out, const SurfaceRun& run) {
   out << "    }\n  },\n";
 }
 
+/// Where the curve came from: "tables" (the periodic model's) or "cell" (the cell's own
+/// boundary elements).
+std::string curve_source_name(const SurfaceRun& run) { return run.curve_source == CurveSource::tables ? "tables" : "cell"; }
+
 void write_json(std::ostream& out, const SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
@@ -114,7 +118,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
   out << "  \"supercell\": " << run.supercell << ",\n";
   out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
-  out << "  \"curve\": {\"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
+  out << "  \"curve\": {\"source\": " << input::json_string(curve_source_name(run)) << ", \"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_resolved\": " << num(run.curve.X_resolved)
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
       << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false") << "},\n";
@@ -177,7 +181,9 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
       << run.inputs.describe() << "\n";
   if (run.inputs.material) out << (csv ? "# " : "  ") << "material: " << run.inputs.material->describe() << "\n";
   for (const std::string& note : run.inputs.notes) out << (csv ? "# " : "  ") << "note: " << note << "\n";
-  out << (csv ? "# " : "  ") << "load curve: " << run.curve.nx << " x " << run.curve.ny << " nodes, "
+  out << (csv ? "# " : "  ") << "load curve: "
+      << (run.curve_source == CurveSource::tables ? "the periodic model's tables (with their small-spot table), " : "")
+      << run.curve.nx << " x " << run.curve.ny << " nodes, "
       << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
       << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s"
       << (run.curve_cached ? " (from the table cache)" : "") << "\n";

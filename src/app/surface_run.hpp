@@ -17,6 +17,12 @@
 
 namespace punchsweep::app {
 
+/// Where a texture's load curve comes from (--curve): the periodic model's tables
+/// (model/surface/periodic_curve.hpp; the two-level square lattice), the cell's own boundary
+/// elements (reference/load_curve.hpp), or the tables where they reach the lattice's dh and
+/// the cell otherwise (--curve auto on the two-level square lattice).
+enum class CurveSource { tables, cell, tables_or_cell };
+
 /// One texture evaluated: its inputs, geometry, curve and history.
 struct SurfaceRun {
   input::PointInputs inputs;
@@ -28,6 +34,7 @@ struct SurfaceRun {
   int supercell = 1;   ///< K: the cell is K x K lattice cells
   model::HeightScatter scatter;
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
+  CurveSource curve_source = CurveSource::cell;  ///< asked; after evaluation tables or cell, what served
   model::LoadCurve curve;
   model::SurfaceHistory history;
   double curve_seconds = 0.0;

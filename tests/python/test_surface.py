@@ -23,13 +23,55 @@ def cli(*args) -> subprocess.CompletedProcess:
     return subprocess.run([BINARY, "surface", *map(str, args)], capture_output=True, text=True)
 
 
-def test_two_level_square_surface_is_the_periodic_model_at_random_points():
-    """Random points, log-uniform in pbar (1e-4 to 1e-1) and l (0.3 to 3 R), dh between the
-    gaps h(0) and h(inf) so that level 1 touches late (delayed): the curve on --grid auto
-    (the smallest spot 13 node spacings across its radius) gives the regime, t* to 3e-3 and
-    the area fraction at every time to 2% and each level's load to 3e-4 of pbar l^2
-    (measured on these 5 points: t* within 1.0e-3, areas within 1.0%, loads within 1.3e-4;
-    the model's own tables hold radii to about 1e-3)."""
+def test_two_level_square_surface_reads_the_periodic_tables_at_random_points():
+    """The issue's check: on the two-level square lattice `surface` reads the periodic model's
+    tables (--curve auto), so at random points over the whole range users reach (log-uniform
+    in pbar 1e-7 to 1e-1 and l 0.1 to 10 R, s = 1, 2, 3, dh uniform in [0, 1.3 h_inf] so that
+    every regime occurs) it gives `point`'s regime, t* to 1e-6 (the same touchdown load and
+    the same classification), each level's load to 1e-4 of pbar l^2 and the area fraction to
+    5e-4 (the curve samples the tables 96 times a decade: linear interpolation between them
+    leaves, measured on 200 such points, areas within 6.4e-5 and loads within 5.1e-6; 24 a
+    decade left 4.4e-4 and 8.6e-5, second order)."""
+    rng = np.random.default_rng(38)
+    times = [0, 0.1, 0.5, 1, 2, 5, 50, 1e3]
+    regimes = set()
+    worst_t, worst_area, worst_load = 0.0, 0.0, 0.0
+    for _ in range(40):
+        l = 10 ** rng.uniform(-1, 1)
+        pbar = 10 ** rng.uniform(-7, -1)
+        s = int(rng.integers(1, 4))
+        gaps = punchsweep.point(l=l, dh=1e-12, T=2.5, pbar=pbar, s=s, times=[0])
+        dh = gaps.h_inf * rng.uniform(0.0, 1.3)
+        model = punchsweep.point(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times)
+        surface = punchsweep.surface(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times)
+        assert surface["curve"]["source"] == "tables"
+        level = surface["levels"][1]
+        point = (l, pbar, dh, s)
+        assert level["regime"] == model.regime, point
+        regimes.add(model.regime)
+        assert level["resolved"] and surface["series"]["valid"].all() == model.valid, point
+        if model.regime == "delayed":
+            worst_t = max(worst_t, abs(level["t_star"] / model.t_star - 1))
+            assert level["t_star"] == pytest.approx(model.t_star, rel=1e-6), point
+        area = np.max(np.abs(surface["series"]["area_fraction"] / model.series["area_fraction"] - 1))
+        worst_area = max(worst_area, area)
+        assert area < 5e-4, point
+        for mine, theirs in (("load_0", "P1"), ("load_1", "P2")):
+            difference = np.max(np.abs(surface["series"][mine] - model.series[theirs])) / (pbar * l * l)
+            worst_load = max(worst_load, difference)
+            assert difference < 1e-4, (point, mine)
+    assert regimes == {"immediate", "delayed", "never"}
+    print(f"worst t* {worst_t:.1e}, area fraction {worst_area:.1e}, load {worst_load:.1e} of pbar l^2")
+
+
+def test_two_level_square_cell_curve_is_the_periodic_model_at_random_points():
+    """The cell's own boundary elements (--curve cell) against the tables: random points,
+    log-uniform in pbar (1e-4 to 1e-1) and l (0.3 to 3 R), dh between the gaps h(0) and
+    h(inf) so that level 1 touches late (delayed): the curve on --grid auto (the smallest
+    spot 13 node spacings across its radius) gives the regime, t* to 3e-3 and the area
+    fraction at every time to 2% and each level's load to 3e-4 of pbar l^2 (measured on
+    these 5 points: t* within 1.0e-3, areas within 1.0%, loads within 1.3e-4; the model's
+    own tables hold radii to about 1e-3)."""
     rng = np.random.default_rng(38)
     worst_t, worst_area, worst_load = 0.0, 0.0, 0.0
     for _ in range(5):
@@ -38,7 +80,8 @@ def test_two_level_square_surface_is_the_periodic_model_at_random_points():
         gaps = punchsweep.point(l=l, dh=1e-9, T=2.5, pbar=pbar, s=2, times=[0])
         dh = gaps.h_0 + (gaps.h_inf - gaps.h_0) * rng.uniform(0.1, 0.9)
         model = punchsweep.point(l=l, dh=dh, T=2.5, pbar=pbar, s=2, times=TIMES)
-        surface = punchsweep.surface(l=l, dh=dh, T=2.5, pbar=pbar, s=2, times=TIMES)
+        surface = punchsweep.surface(l=l, dh=dh, T=2.5, pbar=pbar, s=2, times=TIMES, curve="cell")
+        assert surface["curve"]["source"] == "cell"
         level = surface["levels"][1]
         assert level["regime"] == model.regime == "delayed", (l, pbar, dh)
         assert level["resolved"]
@@ -86,11 +129,17 @@ def test_the_command_prints_what_python_returns_and_refuses_bad_input():
     assert table.returncode == 0 and "level 1: delayed at t* = " in table.stdout
     for bad, message in [(["--grid", "5"], "--grid = 5 is outside its range"),
                          (["--lattice", "tri"], "--lattice"),
-                         (["--dh2", "-1"], "--dh2 = -1 is outside its range")]:
+                         (["--dh2", "-1"], "--dh2 = -1 is outside its range"),
+                         (["--curve", "bem"], "--curve"),
+                         (["--curve", "tables", "--grid", "64"], "--grid beside --curve tables"),
+                         (["--curve", "tables", "--lattice", "hexagonal"], "--curve tables: the periodic model's tables")]:
         run = cli(*args[:-2], *bad)
         assert run.returncode == 2 and message in run.stderr and run.stdout == "", (bad, run.stderr)
     with pytest.raises(ValueError, match="--grid"):
         punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=7)
+    # Past the tables' top (0.99 of where level 1 hides, C (l/sqrt 2)^s = 0.140625 R here).
+    run = cli("--l", "0.75", "--dh", "0.14", "--T", "2.5", "--pbar", "0.01", "--s", "2", "--curve", "tables")
+    assert run.returncode == 2 and "dh <= 0.139219 R (their top), or dh >= 0.140625 R" in run.stderr, run.stderr
 
 
 def test_a_scattered_supercell_counts_its_caps_and_repeats_with_its_seed():
