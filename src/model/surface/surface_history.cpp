@@ -18,6 +18,13 @@ std::string_view surface_validity_name(SurfaceValidity validity) {
   return "unknown";
 }
 
+SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveState& state) {
+  if (state.range == CurveRange::above_top) return SurfaceValidity::above_top;
+  if (!curve.monotone_between(std::min(X0, state.X), state.X)) return SurfaceValidity::unloading;
+  if (state.X > 0.0 && state.X < curve.X_resolved) return SurfaceValidity::below_resolution;
+  return SurfaceValidity::valid;
+}
+
 std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load) {
   std::vector<LevelTouch> out;
   out.reserve(curve.level_touchdown.size());
@@ -72,13 +79,7 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
     // X at 0 is the load at once (X(0+)); a history without a jump starts unloaded.
     s.X = X_at(t);
     s.state = curve.at(s.X);
-    if (s.state.range == CurveRange::above_top) {
-      s.validity = SurfaceValidity::above_top;
-    } else if (!curve.monotone_between(std::min(X0, s.X), s.X)) {
-      s.validity = SurfaceValidity::unloading;
-    } else if (s.X > 0.0 && s.X < curve.X_resolved) {
-      s.validity = SurfaceValidity::below_resolution;
-    }
+    s.validity = reading_validity(curve, X0, s.state);
     const double nominal = load.nominal_pressure(t) * curve.cell_area;
     s.level_load.assign(L, 0.0);
     double rest = nominal;

@@ -64,6 +64,11 @@ struct SurfaceHistory {
   std::vector<SurfaceSnapshot> snapshots;
 };
 
+/// Why the curve's reading `state` (at X = state.X, the load having started at X0) may not
+/// be trusted: above_top, unloading (the pressure fell somewhere between X0 and X) or
+/// below_resolution; valid otherwise. (history_cost is the loads' alone.)
+SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveState& state);
+
 /// Each level's touch under `load`: from its touchdown load alone (no solve), what a sweep
 /// over materials, temperatures and pressures needs per point.
 std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load);
