@@ -1,17 +1,17 @@
 #!/usr/bin/python3
 """Each level's touch time over a texture's map: the picture of `punchsweep.surface_map`.
 
-Reads a map that punchsweep.surface_map() returned and .to_netcdf(engine="h5netcdf") wrote,
-and draws, for every level below the tallest, its t* over the map's two remaining axes (the
+Reads a map `punchsweep surface-map --output MAP.nc` (or punchsweep.surface_map(output=...))
+wrote, or a Dataset surface_map returned saved by .to_netcdf(engine="h5netcdf"), and draws, for every level below the tallest, its t* over the map's two remaining axes (the
 pressure along x, log-scaled where it spans a decade), or along one axis as a line: log t*
 in colour where the level touches late, grey where it touches at once (immediate), dark
-where it never does. Axes beyond two are fixed by --at NAME=VALUE (the nearest value is used
+where it never does; and, where the map has them, the share of caps in contact at one of
+its times (--time, default the last), blank where that snapshot is flagged. Axes beyond two are fixed by --at NAME=VALUE (the nearest value is used
 and said); an axis of one value needs none.
 
 Example:
-  python3 -c 'import punchsweep; punchsweep.surface_map(lattice="hexagonal", l=1.2,
-      dh=[0.04, 0.05, 0.06], dh2=0.09, s=2, pbar=[0.002, 0.005, 0.01, 0.02, 0.05],
-      T=[2, 4, 8]).to_netcdf("hex.nc", engine="h5netcdf")'
+  mpirun -n 2 punchsweep surface-map --lattice hexagonal --l 1.2 --dh 0.04,0.05,0.06 --dh2 0.09 \
+      --s 2 --pbar 0.002,0.005,0.01,0.02,0.05 --T 2,4,8 --output hex.nc
   postprocess/surface_picture.py hex.nc --at T=4 -o hex.png
 """
 from __future__ import annotations
@@ -33,10 +33,12 @@ IMMEDIATE, DELAYED, NEVER = 0, 1, 2
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
     p = pm.Parser(prog="surface_picture.py", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("map", metavar="MAP.nc", help="written by punchsweep.surface_map(...).to_netcdf(engine='h5netcdf')")
+    p.add_argument("map", metavar="MAP.nc", help="written by punchsweep surface-map (or punchsweep.surface_map)")
     p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
     p.add_argument("--at", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
                    help="fix an axis beyond the two drawn at its nearest value (said in the title)")
+    p.add_argument("--time", type=float, default=None, metavar="T",
+                   help="the time of the caps-in-contact panel (the map's nearest; default its last)")
     return p.parse_args(argv)
 
 
@@ -75,7 +77,30 @@ def select(ds, at: list[str]):
     return ds, said
 
 
-def render(ds, said: list[str]):
+def edges(values: np.ndarray, log: bool) -> np.ndarray:
+    """Cell edges about each value: midway between neighbours (geometrically where the axis
+    is drawn log-scaled, so that each value's cell is centred on it there)."""
+    v = np.log10(values) if log else values.astype(float)
+    if v.size == 1:
+        middle = np.array([v[0] - 0.5, v[0] + 0.5]) if not log else np.array([v[0] - 0.05, v[0] + 0.05])
+    else:
+        inner = 0.5 * (v[1:] + v[:-1])
+        middle = np.concatenate([[2 * v[0] - inner[0]], inner, [2 * v[-1] - inner[-1]]])
+    return 10 ** middle if log else middle
+
+
+def log_scaled(values: np.ndarray) -> bool:
+    """An axis drawn log-scaled: positive values over a decade or more."""
+    return values.size > 1 and values.min() > 0 and values.max() / values.min() >= 10
+
+
+def unit_of(variable) -> str:
+    """A variable's unit as a label: its scale where it is a pure number in one (units "1",
+    scaled_by "T_eps"), else its units."""
+    return variable.attrs.get("scaled_by", variable.attrs.get("units", ""))
+
+
+def render(ds, said: list[str], time: float | None = None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -86,9 +111,11 @@ def render(ds, said: list[str]):
     # The pressure along x where it is one of the axes.
     axes.sort(key=lambda d: 0 if d in ("pbar", "pressure") else 1)
     levels = [int(v) for v in ds.level.values if int(v) > 0]
-    fig, panels = plt.subplots(1, len(levels), figsize=(4.6 * len(levels) + 0.6, 4.0), layout="constrained",
-                               squeeze=False)
-    unit = ds.t_star.attrs.get("units", "")
+    # The share of caps in contact at one time (a map surface-map wrote has it), one panel more.
+    touched = "touched" in ds and "t" in ds.touched.dims and ds.sizes["t"] > 0
+    fig, panels = plt.subplots(1, len(levels) + touched, figsize=(4.6 * (len(levels) + touched) + 0.6, 4.0),
+                               layout="constrained", squeeze=False)
+    unit = unit_of(ds.t_star)
     for panel, level in zip(panels[0], levels):
         t = ds.t_star.sel(level=level).transpose(*axes[::-1]) if axes else ds.t_star.sel(level=level)
         r = ds.regime.sel(level=level).transpose(*axes[::-1]) if axes else ds.regime.sel(level=level)
@@ -96,14 +123,17 @@ def render(ds, said: list[str]):
         if len(axes) == 2:
             y = ds[axes[1]].values.astype(float)
             shade = np.where(r.values == IMMEDIATE, 0, np.where(r.values == NEVER, 1, np.nan))
-            panel.pcolormesh(x, y, shade, cmap=ListedColormap(["#d9d9d9", "#404040"]), vmin=0, vmax=1, shading="nearest")
+            xe, ye = edges(x, log_scaled(x)), edges(y, log_scaled(y))
+            panel.pcolormesh(xe, ye, shade, cmap=ListedColormap(["#d9d9d9", "#404040"]), vmin=0, vmax=1, shading="flat")
             late = np.where(r.values == DELAYED, np.log10(np.maximum(t.values, 1e-300)), np.nan)
-            mesh = panel.pcolormesh(x, y, late, cmap="viridis", shading="nearest")
+            mesh = panel.pcolormesh(xe, ye, late, cmap="viridis", shading="flat")
+            if log_scaled(y):
+                panel.set_yscale("log")
             if np.isfinite(late).any():
                 fig.colorbar(mesh, ax=panel, label=f"log10 t* ({unit})")
             panel.legend(handles=[Patch(color="#d9d9d9", label="touches at once"),
                                   Patch(color="#404040", label="never touches")], fontsize=7, loc="upper left")
-            panel.set_ylabel(f"{axes[1]} ({ds[axes[1]].attrs.get('units', '')})")
+            panel.set_ylabel(f"{axes[1]} ({unit_of(ds[axes[1]])})")
         else:
             late = np.where(r.values == DELAYED, t.values, np.nan)
             panel.plot(x, late, marker="o", label="delayed: t*")
@@ -115,11 +145,36 @@ def render(ds, said: list[str]):
             panel.set_yscale("log")
             panel.set_ylabel(f"t* ({unit})")
             panel.legend(fontsize=7)
-        if x.size > 1 and x.min() > 0 and x.max() / x.min() >= 10:
+        if log_scaled(x):
             panel.set_xscale("log")
-        panel.set_xlabel(f"{axes[0]} ({ds[axes[0]].attrs.get('units', '')})" if axes else "")
+        panel.set_xlabel(f"{axes[0]} ({unit_of(ds[axes[0]])})" if axes else "")
         panel.set_title(f"level {level}: X* = " + ", ".join(f"{v:.3g}" for v in np.atleast_1d(ds.X_star.sel(level=level).values))
                         + " E0*", fontsize=9)
+    if touched:
+        panel = panels[0][-1]
+        at = ds.t.values[-1] if time is None else float(ds.t.sel(t=time, method="nearest"))
+        share = ds.touched.sel(t=at).transpose(*axes[::-1]) if axes else ds.touched.sel(t=at)
+        # A snapshot the curve cannot vouch for (below its resolution, past its top,
+        # unloading) is left blank, not drawn.
+        trusted = np.where(ds.valid.sel(t=at).transpose(*axes[::-1]).values == 0, share.values, np.nan)
+        x = ds[axes[0]].values.astype(float)
+        if len(axes) == 2:
+            y = ds[axes[1]].values.astype(float)
+            mesh = panel.pcolormesh(edges(x, log_scaled(x)), edges(y, log_scaled(y)), trusted, cmap="magma",
+                                    vmin=0, vmax=1, shading="flat")
+            fig.colorbar(mesh, ax=panel, label="share of caps in contact")
+            if log_scaled(y):
+                panel.set_yscale("log")
+            panel.set_ylabel(f"{axes[1]} ({unit_of(ds[axes[1]])})")
+        else:
+            panel.plot(x, trusted, marker="o")
+            panel.set_ylim(-0.02, 1.02)
+            panel.set_ylabel("share of caps in contact")
+        if log_scaled(x):
+            panel.set_xscale("log")
+        panel.set_xlabel(f"{axes[0]} ({unit_of(ds[axes[0]])})")
+        blank = " (blank: flagged)" if np.isnan(trusted).any() else ""
+        panel.set_title(f"caps in contact at t = {at:.4g} {unit_of(ds.t)}{blank}", fontsize=9)
     texture = json.loads(ds.attrs.get("texture", "{}"))
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if v not in ("None", ""))
     fig.suptitle(f"each level's touch time: {words}" + (f"; {', '.join(said)}" if said else ""), fontsize=9)
@@ -130,7 +185,7 @@ def main(argv: list[str]) -> int:
     args = parse_args(argv)
     out = pm.check_output(args.output, inputs=[args.map])
     ds, said = select(read_map(args.map), args.at)
-    pm.save_figure(render(ds, said), out, dpi=FIG_DPI, inputs=[args.map])
+    pm.save_figure(render(ds, said, args.time), out, dpi=FIG_DPI, inputs=[args.map])
     print(f"wrote {args.output}")
     return 0
 

@@ -9,6 +9,7 @@
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/surface_command.hpp"
+#include "app/surface_map_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/periodic_tables.hpp"
 #include "app/tables_command.hpp"
@@ -33,7 +34,9 @@ constexpr const char* kTopHelp =
     "  design     the window of dh that meets requirements ('touch within 1s at 30kPa', 'never at\n"
     "             5kPa') at every temperature of a range and corner of a tolerance box\n"
     "  surface    a square or hexagonal texture of two or three levels: each level's touch and\n"
-    "             the contact areas in time, from its cell's elastic load curve\n\n"
+    "             the contact areas in time, from its cell's elastic load curve\n"
+    "  surface-map  a texture over geometry and load axes on MPI ranks (a curve per geometry, the\n"
+    "             loads read off it) into a netCDF-4 map with a level axis\n\n"
     "options:\n"
     "  --help     this text; 'punchsweep <command> --help' explains a command\n"
     "  --version  print the version and git revision\n\n"
@@ -66,8 +69,9 @@ int main(int argc, char** argv) {
     if (args[0] == "fit") return punchsweep::app::run_fit_command(rest, std::cout);
     if (args[0] == "design") return punchsweep::app::run_design_command(rest, std::cout);
     if (args[0] == "surface") return punchsweep::app::run_surface_command(rest, std::cout);
+    if (args[0] == "surface-map") return punchsweep::app::run_surface_map_command(rest);
     throw punchsweep::input::UsageError("unknown command '" + args[0] +
-                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit, design, surface; see punchsweep --help)");
+                     "' (commands: point, sweep, single-level, elastic, reference, tables, fit, design, surface, surface-map; see punchsweep --help)");
   } catch (const punchsweep::input::UsageError& e) {
     std::cerr << "punchsweep: " << e.what() << "\n";
     return punchsweep::input::kUsageExitCode;

@@ -72,6 +72,8 @@ model::HeightScatter read_scatter(const std::string& text, const input::Physical
   return out;
 }
 
+}  // namespace
+
 po::options_description surface_options(const input::PointMaterial& material) {
   po::options_description opts(
       "punchsweep surface: when each level of a periodic texture touches a creeping material, and\n"
@@ -125,6 +127,8 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "output format: table, json or csv");
   return opts;
 }
+
+namespace {
 
 /// --height-map FILE with --pixel, --height-unit, --summit-radius and --level-gap: the
 /// measured cell, lengths in R.

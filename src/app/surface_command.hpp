@@ -5,6 +5,8 @@
 /// history, from the elastic load curve of its cell (docs/model.md, section 17): each
 /// level's touch (immediate, delayed t*, never), the areas and the sites in contact in time.
 
+#include <boost/program_options/options_description.hpp>
+
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -13,6 +15,10 @@
 #include "input/command_options.hpp"
 
 namespace punchsweep::app {
+
+/// The command's options (the point's for `material`'s law, the texture's, the grid's):
+/// `surface-map` takes the same.
+boost::program_options::options_description surface_options(const input::PointMaterial& material);
 
 /// `punchsweep surface ...`; returns the exit code, throws UsageError for bad input (before
 /// printing anything).

@@ -24,6 +24,7 @@
 #include "input/command_options.hpp"
 #include "app/design_command.hpp"
 #include "app/surface_command.hpp"
+#include "app/surface_map_command.hpp"
 #include "app/fit_command.hpp"
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
@@ -636,6 +637,9 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep fit of (option name, value text) pairs: the fit's JSON, report and material text");
   m.def("design", &app::design_json, py::arg("keywords"),
         "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
+  m.def("surface_map", &app::surface_map_file, py::arg("keywords"),
+        "punchsweep surface-map of (option name, value text) pairs on this process alone: writes the map to the "
+        "keyword output and returns its path");
   m.def("surface", &app::surface_json, py::arg("keywords"),
         "punchsweep surface of (option name, value text) pairs, in-process: its JSON text");
   m.def("surface_classify", &surface_classify, py::arg("texture"), py::arg("pbar"), py::arg("law"), py::arg("ramp_time"),

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <csignal>
+#include <vector>
 
 #include "sweep/scheduler.hpp"
 
@@ -32,6 +33,18 @@ class MpiSession {
 /// Rank 0's value, on every rank (collective).
 int share_from_root(int value);
 std::uint64_t share_from_root(std::uint64_t value);
+
+/// The greatest of every rank's status, and the lowest rank that has it (collective): after
+/// a step each rank may fail in alone, the one that says why.
+struct RankStatus {
+  int status = 0;
+  int rank = 0;
+};
+RankStatus worst_status(int status);
+
+/// Every rank's `mine`, one after the other in rank order, on rank 0 (empty on the others;
+/// collective).
+std::vector<double> gather_to_root(const std::vector<double>& mine);
 
 /// run_schedule over all the ranks of the session.
 ScheduleResult run_world_schedule(const TileRanges& pending, const TileWork& work, const TileSink& sink,

@@ -1,5 +1,5 @@
-"""postprocess/surface_picture.py: each level's t* over a map punchsweep.surface_map wrote
-(netCDF-4 by h5netcdf). What it draws is checked by another route than the image: the
+"""postprocess/surface_picture.py: each level's t* over a map surface-map wrote (netCDF-4,
+every axis a dimension, one value or more). What it draws is checked by another route than the image: the
 nearest values --at picks, the panels' arrays against the map's own, and the refusals."""
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from script_runner import call  # noqa: E402
 def hex_map(tmp_path_factory):
     path = tmp_path_factory.mktemp("surface") / "hex.nc"
     punchsweep.surface_map(lattice="hexagonal", l=1.2, dh=[0.04, 0.05, 0.06], dh2=0.09, s=2, grid=32,
-                           pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0]).to_netcdf(path, engine="h5netcdf")
+                           pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0], times=[0, 1, 5], output=path)
     return path
 
 
@@ -32,9 +32,16 @@ def test_a_slice_is_drawn_per_level(hex_map, tmp_path):
     ds, said = surface_picture.select(surface_picture.read_map(str(hex_map)), ["T=4.3"])
     assert said == ["T = 4"]  # the nearest value, said
     whole = surface_picture.read_map(str(hex_map))
-    np.testing.assert_array_equal(ds.t_star.values, whole.t_star.sel(T=4.0).values)
-    fig = surface_picture.render(ds, said)
-    assert len(fig.axes) >= 2  # a panel per level below the tallest (2), with colour bars
+    np.testing.assert_array_equal(ds.t_star.values, whole.t_star.sel(T=4.0).squeeze(["l", "dh2"]).values)
+    fig = surface_picture.render(ds, said, time=1.2)
+    assert len(fig.axes) >= 3  # a panel per level below the tallest (2) and the caps', with colour bars
+    # The caps' panel: the map's share at its nearest time (1), blank where it is flagged.
+    caps = [a for a in fig.axes if a.get_title().startswith("caps in contact at t = 1 ")]
+    assert len(caps) == 1
+    at = ds.sel(t=1.0)
+    expected = np.where(at.valid.transpose("dh", "pbar").values == 0, at.touched.transpose("dh", "pbar").values, np.nan)
+    drawn = np.ma.filled(caps[0].collections[0].get_array(), np.nan).reshape(expected.shape)
+    np.testing.assert_array_equal(drawn, expected)
     rc, _, err = call(surface_picture, hex_map, "--at", "T=4", "dh=0.05", "-o", tmp_path / "line.png")
     assert rc == 0, err
 
@@ -42,8 +49,8 @@ def test_a_slice_is_drawn_per_level(hex_map, tmp_path):
 def test_refusals_name_the_problem(hex_map, tmp_path):
     rc, _, err = call(surface_picture, hex_map, "-o", tmp_path / "x.png")
     assert rc == 2 and "3 axes of several values (dh, pbar, T); fix all but two with --at" in err
-    rc, _, err = call(surface_picture, hex_map, "--at", "l=1", "-o", tmp_path / "x.png")
-    assert rc == 2 and "no axis 'l' (the map's: dh, pbar, T)" in err
+    rc, _, err = call(surface_picture, hex_map, "--at", "z=1", "-o", tmp_path / "x.png")
+    assert rc == 2 and "no axis 'z' (the map's: l, dh, dh2, pbar, T)" in err
     (tmp_path / "not.nc").write_text("hello")
     rc, _, err = call(surface_picture, tmp_path / "not.nc", "-o", tmp_path / "x.png")
     assert rc == 2 and "not a map surface_map wrote" in err

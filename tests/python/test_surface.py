@@ -401,26 +401,58 @@ def test_the_documented_cell_example_runs():
 
 def test_surface_map_has_a_curve_per_geometry_and_reads_the_loads_off_it(tmp_path):
     """dh as a list is a geometry axis (one curve each), pbar and T as lists load axes read
-    off each curve: every value equals surface_classify's for that dh alone; the Dataset
-    keeps units and the regime's flag codes, and writes to and reads back from HDF5
-    (netCDF-4 by h5netcdf) unchanged."""
+    off each curve: every level's t* and regime equal surface_classify's for that dh alone,
+    and at every point and time the share of caps touched and the area fraction equal
+    surface()'s for that point alone; units and flag codes on every variable; the file
+    (`output`) is the command's netCDF-4 and reads back unchanged."""
     texture = dict(lattice="hexagonal", l=1.2, dh2=0.09, s=2, grid=32)
     pbar = np.geomspace(2e-3, 0.05, 5)
     T = [2.0, 4.0, 8.0]
-    ds = punchsweep.surface_map(dh=[0.04, 0.06], pbar=pbar, T=T, **texture)
+    times = [0, 1, 5]
+    path = tmp_path / "surface_map.nc"
+    ds = punchsweep.surface_map(dh=[0.04, 0.06], pbar=pbar, T=T, times=times, output=path, **texture)
     assert ds.t_star.dims == ("dh", "pbar", "T", "level") and ds.t_star.shape == (2, 5, 3, 3)
-    assert ds.t_star.attrs["units"] == "T_eps" and ds.pbar.attrs["units"] == "E0/(1-nu^2)"
+    assert ds.touched.dims == ("dh", "pbar", "T", "t") and list(ds.t.values) == times
+    assert ds.t_star.attrs["units"] == "1" and ds.t_star.attrs["scaled_by"] == "T_eps"
+    assert ds.pbar.attrs["scaled_by"] == "E0/(1-nu^2)" and ds.dh.attrs["scaled_by"] == "R"
     assert ds.regime.attrs["flag_meanings"] == "immediate delayed never"
+    assert ds.valid.attrs["flag_meanings"] == "valid below_resolution above_top unloading"
+    pbar = ds.pbar.values  # as the axis holds them (15 significant digits)
     for k, dh in enumerate([0.04, 0.06]):
         alone = punchsweep.surface_classify(pbar=pbar[:, None], T=np.asarray(T)[None, :], dh=dh, **texture)
         np.testing.assert_array_equal(ds.t_star.values[k], alone["t_star"])
         np.testing.assert_array_equal(ds.regime.values[k], alone["regime"])
         np.testing.assert_array_equal(ds.X_star.values[k], alone["X_star"])
-    path = tmp_path / "surface_map.h5"
-    ds.to_netcdf(path, engine="h5netcdf")
+        for i in (0, 2, 4):
+            for j in (0, 2):
+                one = punchsweep.surface(dh=dh, pbar=float(pbar[i]), T=T[j], times=times, **texture)
+                np.testing.assert_array_equal(ds.touched.values[k, i, j], one["series"]["sites_touched"])
+                np.testing.assert_array_equal(ds.area_fraction.values[k, i, j], one["series"]["area_fraction"])
+                np.testing.assert_array_equal(ds.valid.values[k, i, j] == 0, one["series"]["valid"])
     import xarray
-    back = xarray.open_dataset(path, engine="h5netcdf")
-    np.testing.assert_array_equal(back.t_star.values, ds.t_star.values)
-    np.testing.assert_array_equal(back.regime.values, ds.regime.values)
+    with xarray.open_dataset(path, engine="h5netcdf") as back:  # every axis, one value or more
+        assert back.t_star.dims == ("l", "dh", "dh2", "pbar", "T", "level")
+        np.testing.assert_array_equal(back.t_star.squeeze(["l", "dh2"]).values, ds.t_star.values)
+        np.testing.assert_array_equal(back.regime.squeeze(["l", "dh2"]).values, ds.regime.values)
     one = punchsweep.surface_map(dh=0.05, pbar=0.01, T=T, **texture)
     assert one.t_star.dims == ("T", "level")
+    with pytest.raises(ValueError, match="exists: give --overwrite"):
+        punchsweep.surface_map(dh=0.05, pbar=0.01, T=T, output=path, **texture)
+
+
+def test_surface_map_in_physical_units_from_a_material(tmp_path):
+    """pressure= in kPa and temperature= in degC with a material: pbar is the pressure over
+    the material's E0* (the map's pressure variable gives it back in Pa), t* in the
+    material's time unit, and each point equals surface() at that pressure and temperature."""
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    ds = punchsweep.surface_map(material=str(truth), R="80um", l="250um", dh=["2um", "3um"], s=2,
+                                pressure=["5kPa", "20kPa"], temperature=[20, 40], times="0, 1s")
+    assert ds.t_star.dims == ("dh", "pbar", "temperature", "level")
+    assert ds.t_star.attrs["units"] == "s" and ds.pressure.attrs["units"] == "Pa"
+    np.testing.assert_allclose(ds.pressure.values, [5e3, 2e4], rtol=1e-12)
+    np.testing.assert_allclose(ds.dh.values, [2 / 80, 3 / 80], rtol=1e-12)
+    one = punchsweep.surface(material=str(truth), R="80um", l="250um", dh="3um", s=2, pressure="20kPa",
+                             temperature=40, times="0, 1s")
+    assert [x["regime"] for x in one["levels"]] == [punchsweep.REGIMES[int(c)] for c in ds.regime.values[1, 1, 1]]
+    t = [np.inf if x["t_star"] is None else x["t_star"] for x in one["levels"]]
+    np.testing.assert_allclose(ds.t_star.values[1, 1, 1], t, rtol=1e-12)

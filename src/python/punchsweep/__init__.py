@@ -22,7 +22,6 @@ E0* = E0/(1-nu^2), loads in R^2 E0*, time in T_eps (or a material file's time_un
 """
 from __future__ import annotations
 
-import itertools
 import json
 import os
 import shutil
@@ -303,77 +302,37 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
             "time_unit": raw["time_unit"], "grid": tuple(raw["grid"]), "caps": raw["caps"]}
 
 
-#: The texture keywords surface_map takes as geometry axes (a list: one load curve a value).
-_GEOMETRY_AXES = ("l", "dh", "dh2")
-
 
 def surface_map(*, pbar=None, pressure=None, T=None, temperature=None, material: str | None = None,
-                R: str | None = None, **texture: Any) -> "xarray.Dataset":  # noqa: F821
-    """Each level's regime and t* of a texture over a grid, as an xarray.Dataset (save it with
-    .to_netcdf(engine="h5netcdf")). The geometry's l, dh and dh2 may be lists: each value is
-    one load curve (cached); the load's pbar (or pressure= with a material) and T (or
-    temperature=) may be lists: they are read off each curve (surface_classify). The
-    Dataset's dimensions are the listed geometry keywords, then pbar (or pressure) and T (or
-    temperature) where given as lists, then level; t_star (in time_unit, +inf never),
-    regime (the map's codes, flag_values and flag_meanings as a regime map's) and X_star
-    (per geometry and level, E0*). Units on every coordinate."""
+                R: str | None = None, output: str | os.PathLike | None = None, overwrite: bool = False,
+                **texture: Any) -> "xarray.Dataset":  # noqa: F821
+    """`punchsweep surface-map` in this process: each level's regime and t* of a texture over
+    a grid, and at each time the share of caps in contact and the area fraction, as an
+    xarray.Dataset. The geometry's l, dh and dh2 (and scatter="normal:..." widths) may be
+    lists: each value is one load curve (cached); the load's pbar (or pressure= with a
+    material) and the law's parameters (T, or temperature=) may be lists: they are read off
+    each curve. The Dataset's dimensions are the geometry keywords given as lists, then pbar
+    and the law's given as lists, then level (t_star, regime) or t (touched, area_fraction,
+    valid); a keyword given as one value is no dimension. The file (netCDF-4, the command's)
+    is written to `output` where given (overwrite=True replaces one), else to a temporary
+    file read back. Units on every variable (units, scaled_by)."""
+    import tempfile
     import xarray
-    geometry = {k: list(np.atleast_1d(texture.pop(k))) for k in _GEOMETRY_AXES
-                if k in texture and np.ndim(texture[k]) == 1}
-    load_name = "pressure" if pressure is not None else "pbar"
-    load_values = pressure if pressure is not None else pbar
-    law_name = "temperature" if temperature is not None else "T"
-    law_values = temperature if temperature is not None else T
-    load_axis = np.ndim(load_values) == 1
-    law_axis = law_values is not None and np.ndim(law_values) == 1
-    loads = np.atleast_1d(np.asarray(load_values, dtype=object if load_name == "pressure" else float))
-    laws = None if law_values is None else np.atleast_1d(np.asarray(law_values, dtype=float))
-    t_star, regime, X_star, unit = [], [], [], None
-    for values in itertools.product(*geometry.values()):
-        one = dict(zip(geometry, values))
-        kwargs = {load_name: loads[:, None] if laws is not None else loads}
-        if laws is not None:
-            kwargs[law_name] = laws[None, :]
-        out = surface_classify(material=material, R=R, **kwargs, **texture, **one)
-        shape = (len(loads),) + ((len(laws),) if laws is not None else ()) + (len(out["X_star"]),)
-        t_star.append(np.broadcast_to(out["t_star"], shape))
-        regime.append(np.broadcast_to(out["regime"], shape))
-        X_star.append(out["X_star"])
-        unit = out["time_unit"]
-    levels = {len(x) for x in X_star}
-    if len(levels) != 1:
-        raise ValueError(f"surface_map: the geometries have {sorted(levels)} levels; valid: one count for all")
-    gshape = tuple(len(v) for v in geometry.values())
-    t_star = np.stack(t_star).reshape(*gshape, *t_star[0].shape)
-    regime = np.stack(regime).reshape(*gshape, *regime[0].shape)
-    X_star = np.stack(X_star).reshape(*gshape, -1)
-    # The load's and the law's axes where given as lists; a single value is squeezed out.
-    dims = list(geometry) + [load_name] + ([law_name] if laws is not None else []) + ["level"]
-    if not load_axis:
-        t_star, regime = t_star.squeeze(len(geometry)), regime.squeeze(len(geometry))
-        dims.remove(load_name)
-    if laws is not None and not law_axis:
-        axis = len(geometry) + (1 if load_axis else 0)
-        t_star, regime = t_star.squeeze(axis), regime.squeeze(axis)
-        dims.remove(law_name)
-    length_unit = "R" if R is None else f"R = {R}"
-    coords = {k: (k, np.asarray([str(v) for v in vals]) if any(isinstance(v, str) for v in vals) else np.asarray(vals, float),
-                  {"units": length_unit}) for k, vals in geometry.items()}
-    if load_axis:
-        coords[load_name] = (load_name, loads if load_name == "pressure" else loads.astype(float),
-                             {"units": "E0/(1-nu^2)" if load_name == "pbar" else "as given"})
-    if law_axis:
-        coords[law_name] = (law_name, laws, {"units": "1" if law_name == "T" else "degC"})
-    coords["level"] = ("level", np.arange(X_star.shape[-1]), {"long_name": "level: 0 the tallest caps"})
-    codes = sorted(REGIMES)
-    return xarray.Dataset(
-        {"t_star": (dims, t_star, {"units": unit, "long_name": "each level's touch time (+inf: never)"}),
-         "regime": (dims, regime, {"flag_values": np.asarray(codes, dtype=np.int8),
-                                   "flag_meanings": " ".join(REGIMES[c] for c in codes)}),
-         "X_star": (list(geometry) + ["level"], X_star, {"units": "E0/(1-nu^2)",
-                                                          "long_name": "each level's touchdown load"})},
-        coords=coords, attrs={"texture": json.dumps({k: str(v) for k, v in texture.items()}),
-                              "material": "" if material is None else os.fspath(material)})
+    given = dict(texture, pbar=pbar, pressure=pressure, T=T, temperature=temperature)
+    axes = [k for k, v in given.items() if v is not None and not isinstance(v, str) and np.ndim(v) == 1]
+    if isinstance(texture.get("scatter"), str) and "," in texture["scatter"]:
+        axes.append("scatter_width")
+    axes = ["pbar" if k == "pressure" else k for k in axes]
+    keywords = _keywords(dict(texture, pbar=pbar, pressure=pressure, T=T, temperature=temperature,
+                              material=None if material is None else os.fspath(material), R=R,
+                              overwrite="true" if overwrite else None))
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.fspath(output) if output is not None else os.path.join(folder, "surface_map.nc")
+        _core.surface_map(keywords + [("output", path)])
+        with xarray.open_dataset(path, engine="h5netcdf") as ds:
+            ds = ds.load()
+    single = [d for d in ds.dims if d not in axes and d not in ("level", "t") and ds.sizes[d] == 1]
+    return ds.squeeze(dim=single) if single else ds
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,559 @@
+#include "app/surface_map_command.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "app/surface_command.hpp"
+#include "input/axis_parser.hpp"
+#include "input/scaled_value.hpp"
+#include "input/usage_error.hpp"
+#include "io/netcdf_file.hpp"
+#include "io/output_file.hpp"
+#include "model/contact/regime.hpp"
+#include "model/laws/creep_laws.hpp"
+#include "model/point/parameters.hpp"
+#include "model/surface/surface_history.hpp"
+#include "sweep/mpi_session.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::app {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::int8_t kNotComputed = -1;
+
+/// The texture's lengths that may be axes, each one load curve per value.
+constexpr const char* kGeometryKeys[] = {"l", "dh", "dh2"};
+/// The map's own keywords (not the texture's).
+constexpr const char* kOutput = "output";
+constexpr const char* kOverwrite = "overwrite";
+
+/// The options `surface` has that a map does not take, and why.
+struct Refused {
+  const char* key;
+  const char* why;
+};
+constexpr Refused kRefused[] = {
+    {"check", "the time stepping is one texture's check (punchsweep surface --check)"},
+    {"format", "the map is a netCDF-4 file (--output)"},
+    {"tolerance", "a tolerance box is one texture's (punchsweep surface --tolerance)"},
+};
+
+const std::string* find(const input::Keywords& keywords, const std::string& name) {
+  for (const auto& [key, value] : keywords) {
+    if (key == name) return &value;
+  }
+  return nullptr;
+}
+
+/// An axis of `text` measured as `parameter` (its scale, units, range), named `name`.
+SurfaceMapAxis read_axis(const std::string& name, const std::string& text, const model::Parameter& parameter,
+                         const input::PhysicalScales& scales, bool units_required = false) {
+  map::Axis axis;
+  try {
+    const std::optional<input::Scale> scale = input::scale_of(parameter.scale, scales);
+    axis = scale ? input::read_scaled_axis(text, parameter.integer, *scale, units_required)
+                 : input::parse_axis(text, parameter.integer);
+  } catch (const std::invalid_argument& e) {
+    throw input::UsageError("--" + name + " = '" + text + "': " + e.what());
+  }
+  for (const double v : axis.values) {
+    if (!parameter.admits(v)) throw input::UsageError("--" + name + " = '" + text + "': " + parameter.error(v));
+  }
+  return {name, axis.values, std::string(parameter.scale), std::string(parameter.long_name)};
+}
+
+/// The map's reading of its keywords: the texture's own, the axes, the load's axes.
+struct MapInputs {
+  input::Keywords texture;  ///< every keyword but the axes' and the map's own
+  std::vector<SurfaceMapAxis> geometry;
+  std::string scatter_kind;  ///< "normal" / "uniform" where the scatter's width is an axis
+  SurfaceMapAxis pbar;
+  std::vector<SurfaceMapAxis> law;           ///< the law's parameters given
+  std::vector<std::size_t> law_index;        ///< each one's place in the law's parameters
+  /// The material (or law) the keywords name: its law spec is what the load points build.
+  std::shared_ptr<const input::PointMaterial> material;
+  const model::CreepLawSpec* spec = nullptr;  ///< material->spec
+};
+
+MapInputs read_map_inputs(const input::Keywords& keywords) {
+  MapInputs in;
+  in.material = std::make_shared<const input::PointMaterial>(input::find_point_material(keywords));
+  const input::PointMaterial& material = *in.material;
+  in.spec = &material.spec;
+  std::optional<model::Physical> R;
+  if (const std::string* text = find(keywords, "R")) {
+    try {
+      R = input::read_length_scale(*text);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError(std::string("--R = '") + *text + "': " + e.what());
+    }
+  }
+  const input::PhysicalScales scales = input::scales_of(material.material.get(), R);
+  const model::Parameter length{"l", "R", "length", "a length", "> 0 (in R, or a length with --R)",
+                                [](double v) { return v > 0.0; }};
+  const model::Parameter drop{"dh", "R", "length", "a length", ">= 0 (in R, or a length with --R)",
+                              [](double v) { return v >= 0.0; }};
+  for (const auto& [key, value] : keywords) {
+    if (key == kOutput || key == kOverwrite) continue;
+    for (const Refused& r : kRefused) {
+      if (key == r.key) throw input::UsageError("--" + key + " is not a map's: " + r.why);
+    }
+    const bool geometry = std::find(std::begin(kGeometryKeys), std::end(kGeometryKeys), key) != std::end(kGeometryKeys);
+    if (geometry) {
+      const model::Parameter* p = model::find_parameter(key);
+      const model::Parameter& as = p ? *p : (key == "l" ? length : drop);
+      SurfaceMapAxis axis = read_axis(key, value, as, scales);
+      axis.scale = "R";  // lengths are read in R, with --R's unit or without
+      axis.long_name = key == "l" ? "lattice pitch" : key == "dh" ? "level 1's drop below the tallest tips"
+                                                                  : "level 2's drop below the tallest tips";
+      in.geometry.push_back(std::move(axis));
+    } else if (key == "scatter" && (value.rfind("normal:", 0) == 0 || value.rfind("uniform:", 0) == 0)) {
+      const std::size_t colon = value.find(':');
+      in.scatter_kind = value.substr(0, colon);
+      SurfaceMapAxis axis = read_axis("scatter", value.substr(colon + 1), drop, scales);
+      axis.name = "scatter_width";
+      axis.scale = "R";
+      axis.long_name = in.scatter_kind == "normal" ? "the caps' height scatter: standard deviation"
+                                                   : "the caps' height scatter: half-width";
+      in.geometry.push_back(std::move(axis));
+    } else if (key == "pbar" || key == "pressure") {
+      if (!in.pbar.name.empty()) throw input::UsageError("--pbar beside --pressure: give the load once");
+      in.pbar = read_axis(key, value, *model::find_parameter(model::kPressure), scales, key == "pressure");
+      in.pbar.name = "pbar";
+    } else {
+      bool law = false;
+      for (std::size_t j = 0; j < in.spec->parameters.size(); ++j) {
+        if (key != in.spec->parameters[j].name) continue;
+        in.law.push_back(read_axis(key, value, in.spec->parameters[j], scales));
+        in.law_index.push_back(j);
+        law = true;
+      }
+      if (!law) in.texture.emplace_back(key, value);
+    }
+  }
+  if (in.pbar.name.empty()) throw input::UsageError("--pbar (or --pressure with a material) is required: the load's axis");
+  // The geometry's axes in one order, whatever the keywords' (l, dh, dh2, scatter_width).
+  const auto place = [](const SurfaceMapAxis& a) {
+    const auto* at = std::find(std::begin(kGeometryKeys), std::end(kGeometryKeys), a.name);
+    return at - std::begin(kGeometryKeys);
+  };
+  std::stable_sort(in.geometry.begin(), in.geometry.end(), [&](const auto& a, const auto& b) { return place(a) < place(b); });
+  // The law's in its parameters' order.
+  std::vector<std::size_t> order(in.law.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return in.law_index[a] < in.law_index[b]; });
+  std::vector<SurfaceMapAxis> law;
+  std::vector<std::size_t> index;
+  for (const std::size_t k : order) {
+    law.push_back(in.law[k]);
+    index.push_back(in.law_index[k]);
+  }
+  in.law = std::move(law);
+  in.law_index = std::move(index);
+  return in;
+}
+
+/// The point's keyword text of a value in its scaled unit.
+std::string text_of(double value) { return input::json_number(value); }
+
+/// The digits of row-major index k over `sizes`.
+std::vector<std::size_t> digits_of(std::size_t k, const std::vector<std::size_t>& sizes) {
+  std::vector<std::size_t> out(sizes.size());
+  for (std::size_t d = sizes.size(); d-- > 0;) {
+    out[d] = k % sizes[d];
+    k /= sizes[d];
+  }
+  return out;
+}
+
+std::vector<std::size_t> sizes_of(const std::vector<SurfaceMapAxis>& axes) {
+  std::vector<std::size_t> out;
+  for (const SurfaceMapAxis& a : axes) out.push_back(a.values.size());
+  return out;
+}
+
+std::string json_keywords(const input::Keywords& keywords) {
+  std::string out = "{";
+  for (std::size_t k = 0; k < keywords.size(); ++k) {
+    out += (k ? ", " : "") + input::json_string(keywords[k].first) + ": " + input::json_string(keywords[k].second);
+  }
+  return out + "}";
+}
+
+}  // namespace
+
+std::size_t SurfaceMap::geometries() const {
+  std::size_t n = 1;
+  for (const SurfaceMapAxis& a : geometry) n *= a.values.size();
+  return n;
+}
+
+std::size_t SurfaceMap::load_points() const {
+  std::size_t n = 1;
+  for (const SurfaceMapAxis& a : load) n *= a.values.size();
+  return n;
+}
+
+SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int ranks, bool progress) {
+  const MapInputs in = read_map_inputs(keywords);
+  SurfaceMap map;
+  map.geometry = in.geometry;
+  map.load.push_back(in.pbar);
+  for (const SurfaceMapAxis& a : in.law) map.load.push_back(a);
+  map.texture = json_keywords(in.texture);
+  if (const std::string* m = find(keywords, "material")) map.material = *m;
+  if (const std::string* R = find(keywords, "R")) map.R = *R;
+  const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
+  const std::size_t G = map.geometries(), P = map.load_points();
+  const double least_pbar = *std::min_element(in.pbar.values.begin(), in.pbar.values.end());
+
+  // Every geometry's keywords: the texture's, its lengths, and the least pressure (the
+  // grid --grid auto picks is the one the smallest spot asks) at the law's first values.
+  const auto point_keywords = [&](std::size_t g) {
+    input::Keywords k = in.texture;
+    const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
+    for (std::size_t d = 0; d < map.geometry.size(); ++d) {
+      const double v = map.geometry[d].values[at[d]];
+      if (map.geometry[d].name == "scatter_width") {
+        k.emplace_back("scatter", in.scatter_kind + ":" + text_of(v));
+      } else {
+        k.emplace_back(map.geometry[d].name, text_of(v));
+      }
+    }
+    k.emplace_back("pbar", text_of(least_pbar));
+    for (const SurfaceMapAxis& a : in.law) k.emplace_back(a.name, text_of(a.values.front()));
+    return k;
+  };
+
+  // A rank's first geometry sizes its arrays (levels, caps, times: the same for every
+  // geometry of a map); rank 0's is the first of all.
+  bool sized = false;
+  for (std::size_t g = static_cast<std::size_t>(rank); g < G; g += static_cast<std::size_t>(ranks)) {
+    const auto start = std::chrono::steady_clock::now();
+    const SurfaceRun run = evaluate_surface(point_keywords(g));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::size_t L = static_cast<std::size_t>(run.curve.levels());
+    if (!sized) {
+      map.levels = run.curve.levels();
+      map.caps = run.geometry.sites.size();
+      map.times = run.times;
+      map.time_unit = run.inputs.time_unit;
+      if (run.inputs.scales.E0_star) map.E0_star_Pa = run.inputs.scales.E0_star->si();
+      const std::size_t T = map.times.size();
+      map.t_star.assign(G * P * L, kNaN);
+      map.regime.assign(G * P * L, kNotComputed);
+      map.X_star.assign(G * L, kNaN);
+      map.resolved.assign(G * L, kNotComputed);
+      map.touched.assign(G * P * T, kNaN);
+      map.area_fraction.assign(G * P * T, kNaN);
+      map.valid.assign(G * P * T, kNotComputed);
+      map.grid.assign(G, kNaN);
+      map.from_tables.assign(G, kNotComputed);
+      map.curve_seconds.assign(G, kNaN);
+      sized = true;
+    }
+    if (L != static_cast<std::size_t>(map.levels)) {
+      throw input::UsageError("the geometries have different numbers of levels (" + std::to_string(map.levels) + " and " +
+                              std::to_string(L) + "): a map's geometries share their levels");
+    }
+    map.grid[g] = run.curve.nx;
+    map.from_tables[g] = run.curve_source == CurveSource::tables ? 1 : 0;
+    map.curve_seconds[g] = seconds;
+    const std::vector<model::LevelTouch> first =
+        model::level_touches(run.curve, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading));
+    for (std::size_t level = 0; level < L; ++level) {
+      map.X_star[g * L + level] = first[level].X_star;
+      map.resolved[g * L + level] = first[level].resolved ? 1 : 0;
+    }
+    // Each load point off the curve: the law's values (the run's, the axes' in place).
+    std::vector<double> law_values = run.inputs.law_values;
+    const std::size_t T = map.times.size();
+    for (std::size_t p = 0; p < P; ++p) {
+      const std::vector<std::size_t> at = digits_of(p, load_sizes);
+      const double pbar = map.load[0].values[at[0]];
+      for (std::size_t a = 0; a < in.law.size(); ++a) law_values[in.law_index[a]] = in.law[a].values[at[a + 1]];
+      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(*in.spec, law_values);
+      const model::CreepWeightedLoad load(*creep, pbar, run.inputs.problem.loading);
+      const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
+      const std::size_t row = g * P + p;
+      for (std::size_t level = 0; level < L; ++level) {
+        map.t_star[row * L + level] = touches[level].t_star;
+        map.regime[row * L + level] = static_cast<std::int8_t>(touches[level].regime);
+      }
+      const double X0 = load.initial();
+      for (std::size_t k = 0; k < T; ++k) {
+        const double t = map.times[k];
+        const model::CurveState state = run.curve.at(t > 0.0 ? load(t) : X0);
+        const model::SurfaceValidity validity = model::reading_validity(run.curve, X0, state);
+        map.valid[row * T + k] = static_cast<std::int8_t>(validity);
+        map.touched[row * T + k] = state.sites_touched;
+        map.area_fraction[row * T + k] = state.range == model::CurveRange::above_top ? kNaN : state.area_fraction;
+      }
+    }
+    if (progress) {
+      std::ostringstream line;
+      line << "punchsweep surface-map: geometry " << g + 1 << " of " << G;
+      const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
+      for (std::size_t d = 0; d < map.geometry.size(); ++d) {
+        line << (d ? ", " : " (") << map.geometry[d].name << " = " << map.geometry[d].values[at[d]] << " R"
+             << (d + 1 == map.geometry.size() ? ")" : "");
+      }
+      line << ": curve " << (run.curve_source == CurveSource::tables ? "from the periodic tables" : run.curve_cached ? "from the cache" : "built")
+           << " in " << seconds << " s, " << P << " load points read (rank " << rank << ")\n";
+      std::cerr << line.str();
+    }
+  }
+  return map;
+}
+
+void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite) {
+  if (const std::string problem = io::output_file_problem(path); !problem.empty()) throw input::UsageError(problem);
+  if (!overwrite && std::filesystem::exists(path)) {
+    throw input::UsageError(path + " exists: give --overwrite to replace it");
+  }
+  const std::string partial = path + ".partial";
+  try {
+    io::NetcdfFile file(partial);
+    file.attribute("Conventions", "CF-1.8");
+    file.attribute("title", "punchsweep surface map: each level's touch time over a texture's geometry and load");
+    file.attribute("texture", map.texture);
+    file.attribute("material", map.material);
+    if (!map.R.empty()) file.attribute("R", map.R);
+    file.attribute("time_unit", map.time_unit);
+    const auto units = [&](const std::string& scale) -> io::Attributes {
+      if (scale == "T_eps" && map.time_unit != "T_eps") return {{"units", map.time_unit}};
+      if (scale == "degC") return {{"units", "degC"}};
+      if (scale == "1") return {{"units", "1"}};
+      return {{"units", "1"}, {"scaled_by", scale}};
+    };
+    const auto with = [](io::Attributes a, const io::Attributes& more) {
+      a.insert(a.end(), more.begin(), more.end());
+      return a;
+    };
+    std::vector<std::string> geometry_dims, load_dims;
+    for (const SurfaceMapAxis& a : map.geometry) {
+      file.coordinate(a.name, a.values, with(units(a.scale), {{"long_name", a.long_name}}));
+      geometry_dims.push_back(a.name);
+    }
+    for (const SurfaceMapAxis& a : map.load) {
+      file.coordinate(a.name, a.values, with(units(a.scale), {{"long_name", a.long_name}}));
+      load_dims.push_back(a.name);
+    }
+    std::vector<double> levels, sized_levels;
+    for (int level = 0; level < map.levels; ++level) levels.push_back(level);
+    file.coordinate("level", levels, {{"units", "1"}, {"long_name", "level: 0 the tallest caps"}});
+    file.coordinate("t", map.times, with(units("T_eps"), {{"long_name", "time since the load was applied"}}));
+    const auto dims = [&](std::initializer_list<const std::vector<std::string>*> parts, const char* last) {
+      std::vector<std::string> out;
+      for (const auto* part : parts) out.insert(out.end(), part->begin(), part->end());
+      if (last) out.emplace_back(last);
+      return out;
+    };
+    std::vector<std::int8_t> regime_codes;
+    std::string regime_names;
+    for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
+      regime_codes.push_back(static_cast<std::int8_t>(r));
+      regime_names += std::string(regime_names.empty() ? "" : " ") + std::string(model::regime_name(r));
+    }
+    file.variable("t_star", dims({&geometry_dims, &load_dims}, "level"), map.t_star,
+                  with(units("T_eps"), {{"long_name", "each level's touch time (0 at once, +inf never)"}}));
+    file.variable("regime", dims({&geometry_dims, &load_dims}, "level"), map.regime,
+                  {{"long_name", "each level's regime"}, {"flag_meanings", regime_names}}, regime_codes);
+    file.variable("X_star", dims({&geometry_dims}, "level"), map.X_star,
+                  with(units("E0/(1-nu^2)"), {{"long_name", "each level's touchdown load (creep-weighted)"}}));
+    file.variable("resolved", dims({&geometry_dims}, "level"), map.resolved,
+                  {{"long_name", "whether the curve resolves the level's touchdown (1) or it lies below its resolution (0)"}},
+                  {0, 1});
+    file.variable("touched", dims({&geometry_dims, &load_dims}, "t"), map.touched,
+                  {{"units", "1"}, {"long_name", "share of the caps whose tip has touched"}});
+    file.variable("area_fraction", dims({&geometry_dims, &load_dims}, "t"), map.area_fraction,
+                  {{"units", "1"}, {"long_name", "contact area over the cell's"}});
+    std::vector<std::int8_t> validity_codes;
+    std::string validity_names;
+    for (const model::SurfaceValidity v : {model::SurfaceValidity::valid, model::SurfaceValidity::below_resolution,
+                                           model::SurfaceValidity::above_top, model::SurfaceValidity::unloading}) {
+      validity_codes.push_back(static_cast<std::int8_t>(v));
+      validity_names += std::string(validity_names.empty() ? "" : " ") + std::string(model::surface_validity_name(v));
+    }
+    file.variable("valid", dims({&geometry_dims, &load_dims}, "t"), map.valid,
+                  {{"long_name", "whether touched and area_fraction may be trusted at the time"}, {"flag_meanings", validity_names}},
+                  validity_codes);
+    file.variable("grid", geometry_dims, map.grid, {{"units", "1"}, {"long_name", "boundary-element nodes along x of the curve"}});
+    file.variable("from_tables", geometry_dims, map.from_tables,
+                  {{"long_name", "the curve came from the periodic model's tables (1) or the cell's boundary elements (0)"}},
+                  {0, 1});
+    file.variable("curve_seconds", geometry_dims, map.curve_seconds, {{"units", "s"}, {"long_name", "time to get the curve"}});
+    if (map.E0_star_Pa > 0.0) {
+      std::vector<double> pressure;
+      for (const double p : map.load.front().values) pressure.push_back(p * map.E0_star_Pa);
+      file.variable("pressure", {"pbar"}, pressure, {{"units", "Pa"}, {"long_name", "nominal pressure"}});
+    }
+    file.close();
+  } catch (...) {
+    std::remove(partial.c_str());
+    throw;
+  }
+  std::filesystem::rename(partial, path);
+}
+
+namespace {
+
+/// The command line's options as keywords: each as given (a switch as "true").
+input::Keywords keywords_of(const std::vector<std::string>& args, const po::options_description& opts) {
+  input::Keywords out;
+  for (const po::option& o : po::command_line_parser(args).options(opts).run().options) {
+    out.emplace_back(o.string_key, o.value.empty() ? "true" : o.value.front());
+  }
+  return out;
+}
+
+po::options_description map_options(const input::PointMaterial& material) {
+  po::options_description opts = surface_options(material);
+  opts.add_options()
+      ("output", po::value<std::string>()->value_name("FILE"), "the map to write (netCDF-4): required")
+      ("overwrite", po::bool_switch(), "replace FILE where it exists");
+  return opts;
+}
+
+constexpr const char* kMapUsage =
+    "usage: mpirun -n N punchsweep surface-map --lattice square|hexagonal --l AXIS --dh AXIS [--dh2 AXIS]\n"
+    "           --pbar AXIS (or --pressure AXIS with --material) [--T AXIS | --temperature AXIS]\n"
+    "           [--times LIST] [surface's texture options] --output FILE\n\n"
+    "An AXIS is one value, a list 'a, b, c', linspace(a, b, n) or logspace(a, b, n); --scatter\n"
+    "normal:AXIS (or uniform:AXIS) makes the scatter's width an axis. Each geometry value is one\n"
+    "load curve, built by one rank; the pressures and the law's values are read off it.";
+
+}  // namespace
+
+int run_surface_map_command(const std::vector<std::string>& args) {
+  sweep::MpiSession mpi;
+  const bool root = mpi.rank() == 0;
+  input::Keywords keywords;
+  std::string output;
+  bool overwrite = false;
+  try {
+    const input::PointMaterial material = input::find_point_material(args);
+    const po::options_description opts = map_options(material);
+    const po::variables_map vm = input::parse_command(args, opts, "surface-map");
+    if (vm.count("help")) {
+      if (root) std::cout << kMapUsage << "\n\n" << opts << "\nExit codes: 0 success, 2 bad input, 1 failure.\n";
+      return 0;
+    }
+    if (!vm.count("output")) throw input::UsageError("--output FILE is required: the map to write");
+    output = vm["output"].as<std::string>();
+    overwrite = vm["overwrite"].as<bool>();
+    keywords = keywords_of(args, opts);
+    // Rank 0 checks the output before any curve is built; every rank learns the verdict.
+    int refused = 0;
+    if (root) {
+      const std::string problem = io::output_file_problem(output);
+      if (!problem.empty() || (!overwrite && std::filesystem::exists(output))) {
+        std::cerr << "punchsweep surface-map: " << (problem.empty() ? output + " exists: give --overwrite to replace it" : problem) << "\n";
+        refused = 1;
+      }
+    }
+    if (sweep::share_from_root(refused)) return input::kUsageExitCode;
+  } catch (const input::UsageError& e) {
+    if (root) std::cerr << "punchsweep surface-map: " << e.what() << "\n";
+    return input::kUsageExitCode;
+  }
+  // Each rank its geometries; a failure on any stops them all, said once (by the lowest
+  // rank that failed: bad input fails alike everywhere).
+  SurfaceMap map;
+  int failed = 0;
+  std::string why;
+  try {
+    map = evaluate_surface_map(keywords, mpi.rank(), mpi.size(), true);
+  } catch (const input::UsageError& e) {
+    failed = input::kUsageExitCode;
+    why = e.what();
+  } catch (const std::exception& e) {
+    failed = 1;
+    why = "rank " + std::to_string(mpi.rank()) + ": " + e.what();
+  }
+  const sweep::RankStatus verdict = sweep::worst_status(failed);
+  if (verdict.status != 0) {
+    if (verdict.rank == mpi.rank()) std::cerr << "punchsweep surface-map: " << why << "\n";
+    return verdict.status;
+  }
+  // Every rank's geometries to rank 0, in the order they were dealt.
+  const std::size_t G = map.geometries(), P = map.load_points(), L = static_cast<std::size_t>(map.levels),
+                    T = map.times.size();
+  const auto pack = [&](std::size_t g, std::vector<double>& out) {
+    const auto put = [&out](const auto& v, std::size_t from, std::size_t n) {
+      for (std::size_t k = from; k < from + n; ++k) out.push_back(static_cast<double>(v[k]));
+    };
+    put(map.t_star, g * P * L, P * L);
+    put(map.regime, g * P * L, P * L);
+    put(map.X_star, g * L, L);
+    put(map.resolved, g * L, L);
+    put(map.touched, g * P * T, P * T);
+    put(map.area_fraction, g * P * T, P * T);
+    put(map.valid, g * P * T, P * T);
+    put(map.grid, g, 1);
+    put(map.from_tables, g, 1);
+    put(map.curve_seconds, g, 1);
+  };
+  std::vector<double> mine;
+  for (std::size_t g = static_cast<std::size_t>(mpi.rank()); g < G; g += static_cast<std::size_t>(mpi.size())) pack(g, mine);
+  const std::vector<double> all = mpi.size() > 1 ? sweep::gather_to_root(mine) : mine;
+  int status = 0;
+  if (root) {
+    std::size_t k = 0;
+    const auto take = [&](auto& v, std::size_t from, std::size_t n) {
+      using T0 = typename std::decay_t<decltype(v)>::value_type;
+      for (std::size_t i = from; i < from + n; ++i) v[i] = static_cast<T0>(all[k++]);
+    };
+    for (int r = 0; r < mpi.size(); ++r) {
+      for (std::size_t g = static_cast<std::size_t>(r); g < G; g += static_cast<std::size_t>(mpi.size())) {
+        take(map.t_star, g * P * L, P * L);
+        take(map.regime, g * P * L, P * L);
+        take(map.X_star, g * L, L);
+        take(map.resolved, g * L, L);
+        take(map.touched, g * P * T, P * T);
+        take(map.area_fraction, g * P * T, P * T);
+        take(map.valid, g * P * T, P * T);
+        take(map.grid, g, 1);
+        take(map.from_tables, g, 1);
+        take(map.curve_seconds, g, 1);
+      }
+    }
+    try {
+      write_surface_map(output, map, overwrite);
+      std::cerr << "punchsweep surface-map: wrote " << output << " (" << G << " geometr" << (G == 1 ? "y" : "ies") << " x "
+                << P << " load points x " << L << " levels, " << T << " times)\n";
+    } catch (const input::UsageError& e) {
+      std::cerr << "punchsweep surface-map: " << e.what() << "\n";
+      status = input::kUsageExitCode;
+    } catch (const std::exception& e) {
+      std::cerr << "punchsweep surface-map: " << e.what() << "\n";
+      status = 1;
+    }
+  }
+  return mpi.size() > 1 ? sweep::share_from_root(status) : status;
+}
+
+std::string surface_map_file(const input::Keywords& keywords) {
+  const std::string* output = find(keywords, kOutput);
+  if (!output) throw input::UsageError("surface_map: output is required");
+  const std::string* overwrite = find(keywords, kOverwrite);
+  const SurfaceMap map = evaluate_surface_map(keywords, 0, 1, false);
+  write_surface_map(*output, map, overwrite && *overwrite == "true");
+  return *output;
+}
+
+}  // namespace punchsweep::app

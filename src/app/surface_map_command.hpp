@@ -1,0 +1,70 @@
+#pragma once
+/// @file
+/// `punchsweep surface-map`: a texture's map over geometry and load axes (docs/cli.md,
+/// docs/model.md section 17.5). Each geometry value (a pitch l, a level's drop dh or dh2,
+/// a scatter's width) is one load curve, built by one MPI rank (geometries dealt round the
+/// ranks); the pressure and the creep law's parameters are then read off each curve: every
+/// level's regime and t*, and at each time the share of caps in contact, the area fraction
+/// and their validity. Rank 0 writes the map, a netCDF-4 file, whole.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "input/command_options.hpp"
+
+namespace punchsweep::app {
+
+/// One axis of the map: its name (an option of `surface`), values and how they are measured.
+struct SurfaceMapAxis {
+  std::string name;
+  std::vector<double> values;
+  std::string scale;      ///< "R", "E0/(1-nu^2)", "1", "degC", ...
+  std::string long_name;
+};
+
+/// The map: its axes and arrays, row-major over the geometry axes, then the load's (pbar,
+/// then the law's given parameters), then level or time.
+struct SurfaceMap {
+  std::vector<SurfaceMapAxis> geometry;  ///< l, dh, dh2, scatter_width where given
+  std::vector<SurfaceMapAxis> load;      ///< pbar, then the creep law's parameters given
+  std::vector<double> times;
+  std::string time_unit = "T_eps";
+  int levels = 0;
+  std::size_t caps = 0;                 ///< per cell (per supercell)
+  std::vector<double> t_star;           ///< [geometry, load, level], in time_unit; +inf never
+  std::vector<std::int8_t> regime;      ///< [geometry, load, level] (model::Regime)
+  std::vector<double> X_star;           ///< [geometry, level], in E0*
+  std::vector<std::int8_t> resolved;    ///< [geometry, level]: the curve resolves X*
+  std::vector<double> touched;          ///< [geometry, load, time]: the share of caps touched
+  std::vector<double> area_fraction;    ///< [geometry, load, time]
+  std::vector<std::int8_t> valid;       ///< [geometry, load, time] (model::SurfaceValidity)
+  std::vector<double> grid;             ///< [geometry]: nodes along x of its curve
+  std::vector<std::int8_t> from_tables;  ///< [geometry]: the periodic model's tables served
+  std::vector<double> curve_seconds;    ///< [geometry]
+  double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
+  std::string texture;                  ///< the texture's keywords, as JSON
+  std::string material;                 ///< the material file, or empty
+  std::string R;                        ///< --R as given, or empty
+
+  std::size_t geometries() const;
+  std::size_t load_points() const;
+};
+
+/// The map of `keywords` (surface's, with axes where they take several values, and
+/// `output`), the geometries g with g % ranks == rank computed (the others left as NaN),
+/// with a line on stderr per curve when `progress`.
+SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int ranks, bool progress);
+
+/// Writes `map` to `path` whole (a temporary name renamed), checking the path as every
+/// output is (io::output_file_problem); `overwrite` allows replacing a file.
+void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite);
+
+/// `mpirun -n N punchsweep surface-map ...`: the exit code (2 for bad input, said by rank 0).
+int run_surface_map_command(const std::vector<std::string>& args);
+
+/// Python's surface_map: the map of `keywords` on this process alone, written to their
+/// `output`; returns that path.
+std::string surface_map_file(const input::Keywords& keywords);
+
+}  // namespace punchsweep::app

@@ -1,0 +1,103 @@
+#include "io/netcdf_file.hpp"
+
+#include <H5DSpublic.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include "io/hdf5_attributes.hpp"
+
+namespace punchsweep::io {
+
+NetcdfFile::NetcdfFile(const std::string& path) : path_(path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const Handle fcpl = make_property_list(H5P_FILE_CREATE, "make file creation properties for " + path_);
+  // netCDF-4 tracks the creation order of links and attributes (readers list them so).
+  check(H5Pset_link_creation_order(fcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set link order in " + path_);
+  check(H5Pset_attr_creation_order(fcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order in " + path_);
+  if (::unlink(path_.c_str()) != 0 && errno != ENOENT) {
+    throw std::runtime_error("cannot replace " + path_ + ": " + std::strerror(errno));
+  }
+  file_ = Handle(H5Fcreate(path_.c_str(), H5F_ACC_EXCL, fcpl, H5P_DEFAULT), H5Fclose, "create " + path_);
+}
+
+void NetcdfFile::attribute(const std::string& name, const std::string& value) {
+  write_string_attribute(file_, name.c_str(), value, "in " + path_);
+}
+
+Handle NetcdfFile::create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type,
+                          std::size_t count) {
+  const std::string where = "'" + name + "' in " + path_;
+  std::vector<hsize_t> shape;
+  for (const std::string& dim : dims) {
+    const auto found = std::find_if(coordinates_.begin(), coordinates_.end(), [&](const auto& c) { return c.first == dim; });
+    if (found == coordinates_.end()) throw std::invalid_argument("NetcdfFile: no coordinate '" + dim + "' for " + where);
+    shape.push_back(static_cast<hsize_t>(H5Sget_simple_extent_npoints(Handle(H5Dget_space(found->second), H5Sclose, "space of " + dim))));
+  }
+  std::size_t expected = 1;
+  for (const hsize_t n : shape) expected *= static_cast<std::size_t>(n);
+  if (expected != count) throw std::invalid_argument("NetcdfFile: " + where + " has " + std::to_string(count) + " values for " + std::to_string(expected));
+  const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, "make dataspace of " + where);
+  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
+  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order of " + where);
+  if (!shape.empty() && count > 0) {
+    check(H5Pset_chunk(dcpl, static_cast<int>(shape.size()), shape.data()), "set chunk shape of " + where);
+    check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
+    check(H5Pset_deflate(dcpl, 4), "set deflate filter of " + where);
+  }
+  return Handle(H5Dcreate2(file_, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose, "create " + where);
+}
+
+void NetcdfFile::finish(hid_t dataset, const std::string& name, const std::vector<std::string>& dims,
+                        const Attributes& attributes) {
+  const std::string where = "on '" + name + "' in " + path_;
+  for (std::size_t d = 0; d < dims.size(); ++d) {
+    const auto found = std::find_if(coordinates_.begin(), coordinates_.end(), [&](const auto& c) { return c.first == dims[d]; });
+    check(H5DSattach_scale(dataset, found->second, static_cast<unsigned>(d)), "attach dimension " + dims[d] + " " + where);
+  }
+  for (const auto& [key, value] : attributes) write_string_attribute(dataset, key.c_str(), value, where);
+}
+
+void NetcdfFile::coordinate(const std::string& name, const std::vector<double>& values, const Attributes& attributes) {
+  const std::string where = "'" + name + "' in " + path_;
+  const auto n = static_cast<hsize_t>(values.size());
+  const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "make dataspace of " + where);
+  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
+  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order of " + where);
+  Handle dataset(H5Dcreate2(file_, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose,
+                 "create coordinate " + where);
+  if (!values.empty()) check(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + where);
+  check(H5DSset_scale(dataset, name.c_str()), "make dimension scale of " + where);
+  for (const auto& [key, value] : attributes) write_string_attribute(dataset, key.c_str(), value, "on " + where);
+  coordinates_.emplace_back(name, std::move(dataset));
+}
+
+void NetcdfFile::variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<double>& values,
+                          const Attributes& attributes) {
+  const Handle dataset = create(name, dims, H5T_IEEE_F64LE, values.size());
+  check(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write '" + name + "' in " + path_);
+  finish(dataset, name, dims, attributes);
+}
+
+void NetcdfFile::variable(const std::string& name, const std::vector<std::string>& dims,
+                          const std::vector<std::int8_t>& values, const Attributes& attributes,
+                          const std::vector<std::int8_t>& flag_values) {
+  const Handle dataset = create(name, dims, H5T_STD_I8LE, values.size());
+  check(H5Dwrite(dataset, H5T_NATIVE_INT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write '" + name + "' in " + path_);
+  finish(dataset, name, dims, attributes);
+  if (!flag_values.empty()) {
+    write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, flag_values.data(), flag_values.size(),
+                    "on '" + name + "' in " + path_);
+  }
+}
+
+void NetcdfFile::close() {
+  coordinates_.clear();
+  if (file_.get() >= 0) check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + path_);
+  file_.reset();
+}
+
+}  // namespace punchsweep::io

@@ -1,0 +1,47 @@
+#pragma once
+/// @file
+/// A small netCDF-4 file written through HDF5's C API, whole: coordinates as dimension
+/// scales, variables over them with their attributes, global attributes; what xarray
+/// (h5netcdf) and netCDF readers open. The regime map has its own writer (tiles, chunks,
+/// resume); this one serves maps held in memory (the surface map).
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/hdf5_handle.hpp"
+
+namespace punchsweep::io {
+
+/// String attributes, in the order written.
+using Attributes = std::vector<std::pair<std::string, std::string>>;
+
+class NetcdfFile {
+ public:
+  /// Creates `path` (replacing what is there; nothing is half written where the caller
+  /// writes to a temporary name and renames, as write_surface_map does).
+  explicit NetcdfFile(const std::string& path);
+
+  void attribute(const std::string& name, const std::string& value);
+  /// A coordinate: a dimension of its own name and its values.
+  void coordinate(const std::string& name, const std::vector<double>& values, const Attributes& attributes);
+  /// A variable over `dims` (coordinates made before), row-major, compressed.
+  void variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<double>& values,
+                const Attributes& attributes);
+  /// The same for int8 codes, with flag_values (an int8 array) where given.
+  void variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<std::int8_t>& values,
+                const Attributes& attributes, const std::vector<std::int8_t>& flag_values = {});
+  /// Closes the file (flushes); the destructor does too, without reporting failure.
+  void close();
+
+ private:
+  Handle create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type, std::size_t count);
+  void finish(hid_t dataset, const std::string& name, const std::vector<std::string>& dims, const Attributes& attributes);
+
+  std::string path_;
+  Handle file_;
+  std::vector<std::pair<std::string, Handle>> coordinates_;
+};
+
+}  // namespace punchsweep::io
