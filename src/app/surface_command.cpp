@@ -95,9 +95,11 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "any rectangular periodic cell instead of a lattice: a [cell] file of Lx, Ly, s, C and one "
        "'site = x, y, drop, level[, s, C]' line per punch (docs/cli.md); --grid then counts nodes along Lx")
       ("height-map", po::value<std::string>()->value_name("FILE"),
-       "a measured period of a texture: a height map (CSV rows along y, or a 2-D float .npy), one "
+       "a measured period of a texture: a height map (CSV rows along y, a 2-D float .npy, or the NetCDF-3 "
+       "file SurfaceTopography's to_netcdf writes, its lengths and unit read from it), one "
        "boundary-element node per pixel (an even count each way); its summits are the caps followed")
-      ("pixel", po::value<std::string>()->value_name("SIZE"), "the height map's pixel (a length: 0.5um with --R, or in R)")
+      ("pixel", po::value<std::string>()->value_name("SIZE"),
+       "the height map's pixel (a length: 0.5um with --R, or in R); a NetCDF map that states its lengths gives it")
       ("height-unit", po::value<std::string>()->value_name("UNIT")->default_value("R"),
        "the unit of the map's heights: R, or a length unit with --R (um, nm)")
       ("summit-radius", po::value<std::string>()->value_name("L"),
@@ -131,8 +133,11 @@ po::options_description surface_options(const input::PointMaterial& material) {
 namespace {
 
 /// --height-map FILE with --pixel, --height-unit, --summit-radius and --level-gap: the
-/// measured cell, lengths in R.
-reference::MeasuredCell read_measured(const po::variables_map& vm, const input::PhysicalScales& scales) {
+/// measured cell, lengths in R. A NetCDF map that states its lengths and unit gives the
+/// pixel and the heights' unit (the options then override it); `notes` gets what the
+/// reading says of the map.
+reference::MeasuredCell read_measured(const po::variables_map& vm, const input::PhysicalScales& scales,
+                                      std::vector<std::string>* notes) {
   const std::string path = vm["height-map"].as<std::string>();
   const input::HeightMap map = input::read_height_map(path);
   const auto read_length = [&](const char* option, const std::string& text) {
@@ -142,10 +147,34 @@ reference::MeasuredCell read_measured(const po::variables_map& vm, const input::
     }
     return value;
   };
-  if (!vm.count("pixel")) throw input::UsageError("--height-map needs --pixel SIZE, the map's pixel (a length: 0.5um with --R, or in R)");
-  const double pixel = read_length("pixel", vm["pixel"].as<std::string>());
-  const std::string unit = vm["height-unit"].as<std::string>();
+  // The file's own lengths (a NetCDF map): its pixel, square, in its unit (or in R without one).
+  std::optional<std::string> stated_pixel;
+  if (map.length_x > 0.0 && map.length_y > 0.0) {
+    const double px = map.length_x / static_cast<double>(map.nx), py = map.length_y / static_cast<double>(map.ny);
+    if (std::abs(px - py) > 1e-9 * px) {
+      throw input::UsageError(path + ": pixels of " + input::json_number(px) + " x " + input::json_number(py) + " " +
+                              (map.unit.empty() ? "R" : map.unit) + "; the boundary elements need square pixels");
+    }
+    stated_pixel = input::json_number(px) + map.unit;
+    if (!map.unit.empty() && !scales.R && !vm.count("pixel")) {
+      throw input::UsageError(path + ": its lengths and heights are in " + map.unit +
+                              ": give --R (the punch's radius of curvature, e.g. 80um) to read them in R");
+    }
+  }
+  if (!vm.count("pixel") && !stated_pixel) {
+    throw input::UsageError("--height-map needs --pixel SIZE, the map's pixel (a length: 0.5um with --R, or in R)");
+  }
+  if (vm.count("pixel") && stated_pixel) {
+    notes->push_back("--pixel " + vm["pixel"].as<std::string>() + " replaces the map's own pixel, " + *stated_pixel);
+  }
+  const double pixel = read_length("pixel", vm.count("pixel") ? vm["pixel"].as<std::string>() : *stated_pixel);
+  // The heights' unit: --height-unit where given, else the file's, else R.
+  const std::string unit = !vm["height-unit"].defaulted() || map.unit.empty() ? vm["height-unit"].as<std::string>() : map.unit;
   const double per_unit = unit == "R" ? 1.0 : read_length("height-unit", "1" + unit);
+  if (map.periodic == 0) {
+    notes->push_back(path + " says it is not periodic (x:periodic = 0): the engine repeats it as one period, so its "
+                     "opposite edges meet; crop it to a whole period for a texture's answer");
+  }
   if (map.nx % 2 != 0 || map.ny % 2 != 0) {
     throw input::UsageError(path + ": " + std::to_string(map.nx) + " x " + std::to_string(map.ny) +
                             " pixels; the boundary elements need an even count each way (crop a row or column)");
@@ -163,6 +192,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   SurfaceRun run;
   po::variables_map vm = given;
   std::optional<model::CellGeometry> cell;
+  std::vector<std::string> map_notes;  // what reading a height map says of it
   const bool measured = given.count("height-map") > 0;
   if (given.count("cell") || measured) {
     const std::string source = measured ? "--height-map" : "--cell";
@@ -180,7 +210,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
           throw input::UsageError(std::string("--") + name + " beside --height-map: the map's pixels are the grid and its caps");
         }
       }
-      run.measured = read_measured(given, scales);
+      run.measured = read_measured(given, scales, &map_notes);
       cell = run.measured->geometry;
       run.cell_file = given["height-map"].as<std::string>();
     } else {
@@ -200,6 +230,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     put("C", input::json_number(first.shape.C));
   }
   run.inputs = input::read_point_inputs(vm, material);
+  run.inputs.notes.insert(run.inputs.notes.end(), map_notes.begin(), map_notes.end());
   if (cell) {
     std::erase_if(run.inputs.values, [](const auto& v) { return v.first->name == "l" || v.first->name == "dh" || v.first->name == "s" || v.first->name == "C"; });
   }

@@ -1,5 +1,6 @@
 #include "input/height_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -73,6 +74,219 @@ HeightMap read_npy(const std::string& path, const std::string& bytes) {
   return map;
 }
 
+/// NetCDF-3 (classic, 64-bit offset, CDF-5) as Unidata's format specification lays it out:
+/// a header of dimensions, attributes and variables, big-endian, then the variables' data.
+class NetcdfClassic {
+ public:
+  NetcdfClassic(const std::string& path, const std::string& bytes) : path_(path), bytes_(bytes) {
+    version_ = static_cast<unsigned char>(bytes_.at(3));
+    if (version_ != 1 && version_ != 2 && version_ != 5) fail("NetCDF version byte " + std::to_string(version_) + "; valid: 1, 2 or 5");
+    at_ = 4;
+    count();  // numrecs
+    if (tag() == kDimension) {
+      for (std::uint64_t n = count(), k = 0; k < n; ++k) {
+        const std::string name = text();
+        dims_.push_back({name, count()});
+      }
+    }
+    global_ = attributes();
+    if (tag() == kVariable) {
+      for (std::uint64_t n = count(), k = 0; k < n; ++k) {
+        Variable v;
+        v.name = text();
+        for (std::uint64_t d = count(), i = 0; i < d; ++i) {
+          const std::uint64_t id = count();
+          if (id >= dims_.size()) fail("variable " + v.name + " names dimension " + std::to_string(id) + ", which is not there");
+          v.dims.push_back(id);
+        }
+        v.attributes = attributes();
+        v.type = static_cast<int>(unsigned_of(4));
+        count();  // vsize
+        v.begin = version_ == 1 ? unsigned_of(4) : unsigned_of(8);
+        variables_.push_back(std::move(v));
+      }
+    }
+  }
+
+  struct Dimension {
+    std::string name;
+    std::uint64_t length = 0;
+  };
+  struct Attribute {
+    int type = 0;
+    std::string text;            ///< NC_CHAR
+    std::vector<double> values;  ///< the numeric types
+  };
+  using Attributes = std::vector<std::pair<std::string, Attribute>>;
+  struct Variable {
+    std::string name;
+    std::vector<std::uint64_t> dims;
+    Attributes attributes;
+    int type = 0;
+    std::uint64_t begin = 0;
+  };
+
+  const Variable* variable(const std::string& name) const {
+    for (const Variable& v : variables_) {
+      if (v.name == name) return &v;
+    }
+    return nullptr;
+  }
+  const Dimension& dimension(std::uint64_t id) const { return dims_[id]; }
+  static const Attribute* attribute(const Variable& v, const std::string& name) {
+    for (const auto& [key, a] : v.attributes) {
+      if (key == name) return &a;
+    }
+    return nullptr;
+  }
+  /// The values of a fixed-size numeric variable, in the file's (C) order.
+  std::vector<double> values(const Variable& v) const {
+    std::uint64_t n = 1;
+    for (const std::uint64_t d : v.dims) {
+      if (dims_[d].length == 0) fail("variable " + v.name + " is a record variable (unlimited dimension): valid: fixed dimensions");
+      n *= dims_[d].length;
+    }
+    std::vector<double> out;
+    out.reserve(n);
+    std::size_t at = v.begin;
+    const std::size_t size = type_size(v.type);
+    if (at + n * size > bytes_.size()) fail("variable " + v.name + "'s data runs past the end of the file");
+    for (std::uint64_t k = 0; k < n; ++k, at += size) out.push_back(number(v.type, at));
+    return out;
+  }
+  [[noreturn]] void fail(const std::string& what) const { throw UsageError(path_ + ": " + what + " (NetCDF)"); }
+
+ private:
+  static constexpr std::uint32_t kDimension = 0x0A, kVariable = 0x0B, kAttribute = 0x0C;
+
+  std::uint64_t unsigned_of(std::size_t width) {
+    if (at_ + width > bytes_.size()) fail("the header ends early");
+    std::uint64_t v = 0;
+    for (std::size_t k = 0; k < width; ++k) v = (v << 8) | static_cast<unsigned char>(bytes_[at_ + k]);
+    at_ += width;
+    return v;
+  }
+  std::uint64_t count() { return unsigned_of(version_ == 5 ? 8 : 4); }
+  /// A list's tag: the list's kind, or 0 (ABSENT, its count 0 then).
+  std::uint32_t tag() {
+    const auto t = static_cast<std::uint32_t>(unsigned_of(4));
+    if (t == 0) count();
+    return t;
+  }
+  void pad() { at_ = (at_ + 3) / 4 * 4; }
+  std::string text() {
+    const std::uint64_t n = count();
+    if (at_ + n > bytes_.size()) fail("the header ends early");
+    std::string out = bytes_.substr(at_, n);
+    at_ += n;
+    pad();
+    return out;
+  }
+  static std::size_t type_size(int type) {
+    switch (type) {
+      case 1: case 2: case 7: return 1;
+      case 3: case 8: return 2;
+      case 4: case 5: case 9: return 4;
+      case 6: case 10: case 11: return 8;
+      default: return 0;
+    }
+  }
+  double number(int type, std::size_t at) const {
+    std::uint64_t raw = 0;
+    const std::size_t size = type_size(type);
+    for (std::size_t k = 0; k < size; ++k) raw = (raw << 8) | static_cast<unsigned char>(bytes_[at + k]);
+    switch (type) {
+      case 1: return static_cast<std::int8_t>(raw);
+      case 3: return static_cast<std::int16_t>(raw);
+      case 4: return static_cast<std::int32_t>(raw);
+      case 5: {
+        const auto bits = static_cast<std::uint32_t>(raw);
+        float f;
+        std::memcpy(&f, &bits, 4);
+        return f;
+      }
+      case 6: {
+        double d;
+        std::memcpy(&d, &raw, 8);
+        return d;
+      }
+      case 7: case 8: case 9: case 11: return static_cast<double>(raw);
+      case 10: return static_cast<double>(static_cast<std::int64_t>(raw));
+      default: fail("a value of NetCDF type " + std::to_string(type) + ", which is no number");
+    }
+  }
+  Attributes attributes() {
+    Attributes out;
+    if (tag() != kAttribute) return out;
+    for (std::uint64_t n = count(), k = 0; k < n; ++k) {
+      std::string name = text();
+      Attribute a;
+      a.type = static_cast<int>(unsigned_of(4));
+      const std::uint64_t values = count();
+      const std::size_t size = type_size(a.type);
+      if (size == 0) fail("attribute " + name + " has NetCDF type " + std::to_string(a.type));
+      if (at_ + values * size > bytes_.size()) fail("the header ends early");
+      if (a.type == 2) {
+        a.text = bytes_.substr(at_, values);
+        while (!a.text.empty() && a.text.back() == '\0') a.text.pop_back();
+      } else {
+        for (std::uint64_t i = 0; i < values; ++i) a.values.push_back(number(a.type, at_ + i * size));
+      }
+      at_ += values * size;
+      pad();
+      out.emplace_back(std::move(name), std::move(a));
+    }
+    return out;
+  }
+
+  std::string path_;
+  const std::string& bytes_;
+  int version_ = 1;
+  std::size_t at_ = 0;
+  std::vector<Dimension> dims_;
+  Attributes global_;
+  std::vector<Variable> variables_;
+};
+
+/// SurfaceTopography's NetCDF map: heights(x, y), the first index along x; the lengths,
+/// unit and periodicity from the variables x and y where they say them.
+HeightMap read_netcdf(const std::string& path, const std::string& bytes) {
+  const NetcdfClassic nc(path, bytes);
+  const NetcdfClassic::Variable* heights = nc.variable("heights");
+  if (!heights) nc.fail("no variable 'heights' (a SurfaceTopography map holds heights(x, y))");
+  if (heights->dims.size() != 2) nc.fail("'heights' has " + std::to_string(heights->dims.size()) + " dimensions; valid: 2 (x, y)");
+  HeightMap map;
+  map.nx = nc.dimension(heights->dims[0]).length;
+  map.ny = nc.dimension(heights->dims[1]).length;
+  if (map.nx * map.ny > kMaxPixels) nc.fail("more than 4096 x 4096 pixels");
+  const std::vector<double> values = nc.values(*heights);
+  map.height.resize(map.nx * map.ny);
+  for (std::size_t i = 0; i < map.nx; ++i) {
+    for (std::size_t j = 0; j < map.ny; ++j) {
+      const double v = values[i * map.ny + j];
+      if (!std::isfinite(v)) nc.fail("heights(" + std::to_string(i) + ", " + std::to_string(j) + ") is not a finite number");
+      map.height[j * map.nx + i] = v;
+    }
+  }
+  // The lengths, unit and periodicity, where the variables x and y say them.
+  for (const char* axis : {"x", "y"}) {
+    const NetcdfClassic::Variable* v = nc.variable(axis);
+    if (!v) continue;
+    if (const auto* a = NetcdfClassic::attribute(*v, "length"); a && a->values.size() == 1) {
+      if (!(std::isfinite(a->values[0]) && a->values[0] > 0.0)) nc.fail(std::string(axis) + ":length is not a length > 0");
+      (axis[0] == 'x' ? map.length_x : map.length_y) = a->values[0];
+    }
+    if (const auto* a = NetcdfClassic::attribute(*v, "length_unit"); a && !a->text.empty()) {
+      if (!map.unit.empty() && map.unit != a->text) nc.fail("x and y have different length units (" + map.unit + ", " + a->text + ")");
+      map.unit = a->text;
+    }
+    if (const auto* a = NetcdfClassic::attribute(*v, "periodic"); a && a->values.size() == 1) {
+      map.periodic = std::min(map.periodic < 0 ? 1 : map.periodic, a->values[0] != 0.0 ? 1 : 0);
+    }
+  }
+  return map;
+}
+
 HeightMap read_csv(const std::string& path, std::istream& lines) {
   HeightMap map;
   int line_number = 0;
@@ -107,15 +321,24 @@ HeightMap read_csv(const std::string& path, std::istream& lines) {
 
 HeightMap read_height_map(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw UsageError(path + ": no regular file (a height map: CSV or .npy)");
+  if (!std::filesystem::is_regular_file(path, ec)) throw UsageError(path + ": no regular file (a height map: CSV, .npy or NetCDF)");
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw UsageError(path + ": cannot be read (a height map: CSV or .npy)");
+  if (!file) throw UsageError(path + ": cannot be read (a height map: CSV, .npy or NetCDF)");
   char magic[6] = {};
   file.read(magic, 6);
   if (file.gcount() == 6 && std::memcmp(magic, "\x93NUMPY", 6) == 0) {
     file.seekg(0);
     const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     return checked(read_npy(path, bytes), path);
+  }
+  if (file.gcount() >= 4 && std::memcmp(magic, "CDF", 3) == 0) {
+    file.seekg(0);
+    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    return checked(read_netcdf(path, bytes), path);
+  }
+  if (file.gcount() >= 4 && std::memcmp(magic, "\x89HDF", 4) == 0) {
+    throw UsageError(path + ": a NetCDF-4 (HDF5) file; valid: NetCDF-3 as SurfaceTopography's to_netcdf writes it, "
+                     "CSV or .npy");
   }
   file.seekg(0);
   return checked(read_csv(path, file), path);

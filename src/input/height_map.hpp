@@ -1,8 +1,11 @@
 #pragma once
 /// @file
 /// A measured height map of one period of a texture, as a profilometer exports it: a CSV
-/// grid (one row per line, values separated by commas, semicolons, tabs or spaces) or a
-/// NumPy .npy array (2-D, float64 or float32, little-endian, C order), rows along y.
+/// grid (one row per line, values separated by commas, semicolons, tabs or spaces), a
+/// NumPy .npy array (2-D, float64 or float32, little-endian, C order), rows along y; or the
+/// NetCDF container the SurfaceTopography ecosystem writes (Topography.to_netcdf: classic or
+/// 64-bit-offset NetCDF-3, a variable `heights(x, y)`, and on the variables `x` and `y` the
+/// attributes `length`, `periodic` and `length_unit`; the heights in that unit too).
 
 #include <cstddef>
 #include <string>
@@ -14,9 +17,14 @@ struct HeightMap {
   std::size_t nx = 0;          ///< columns: pixels along x
   std::size_t ny = 0;          ///< rows: pixels along y
   std::vector<double> height;  ///< row-major: height[j nx + i] at pixel (i, j), in the file's unit
+  /// What a NetCDF map states of itself (0, empty, -1 where it does not): its lengths along
+  /// x and y, the unit of lengths and heights, and whether it is periodic.
+  double length_x = 0.0, length_y = 0.0;
+  std::string unit;
+  int periodic = -1;
 };
 
-/// The map in `path` (.npy by its magic string, else CSV). Throws UsageError naming the
+/// The map in `path` (.npy and NetCDF by their magic strings, else CSV). Throws UsageError naming the
 /// file and the problem (ragged rows, a value that is no finite number, an unsupported
 /// dtype or order, fewer than 4 x 4 pixels).
 HeightMap read_height_map(const std::string& path);

@@ -320,6 +320,71 @@ def test_a_measured_map_of_the_lattice_is_the_lattice(tmp_path):
     assert len(one_level["levels"]) == 1 and one_level["caps"] == 2  # no --level-gap: one level of caps
 
 
+def write_surface_topography_nc(path, heights_xy, lengths=None, unit=None, periodic=1, version=2):
+    """A map as SurfaceTopography's Topography.to_netcdf writes it (its NC.py: scipy's
+    netcdf_file, NetCDF-3 64-bit offset by default; heights(x, y), the first index along x;
+    x and y with length, periodic and length_unit), by Debian's scipy."""
+    from scipy.io import netcdf_file
+    nx, ny = heights_xy.shape
+    with netcdf_file(path, "w", version=version) as nc:
+        nc.createDimension("x", nx)
+        nc.createDimension("y", ny)
+        if lengths is not None:
+            for name, count, length in (("x", nx, lengths[0]), ("y", ny, lengths[1])):
+                v = nc.createVariable(name, "f8", (name,))
+                v.length = length
+                v.periodic = periodic
+                if unit is not None:
+                    v.length_unit = unit
+                v[...] = (np.arange(count) + 0.5) * length / count
+        nc.createVariable("heights", "f8", ("x", "y"))[...] = heights_xy
+
+
+def test_a_surface_topography_netcdf_map_is_read_as_its_npy(tmp_path):
+    """SurfaceTopography's NetCDF container (what Topography.to_netcdf writes): two cells of
+    the paper's lattice along x (128 x 64 pixels, so that x and y cannot be swapped), in um
+    with its lengths stated, gives the .npy map's answers on the same grid to 1e-12 with no
+    --pixel or --height-unit (the file's); a classic NetCDF-3 file without lengths needs
+    --pixel; a map marked non-periodic is read with a note."""
+    l, n, dh = 0.75, 64, 0.03
+    z = np.tile(lattice_heights(l, n, dh), (1, 2))  # rows along y: 64 x 128
+    np.save(tmp_path / "map.npy", z)
+    write_surface_topography_nc(tmp_path / "map.nc", z.T * 80.0, lengths=(2 * l * 80.0, l * 80.0), unit="um")
+    write_surface_topography_nc(tmp_path / "bare.nc", z.T, version=1)
+    write_surface_topography_nc(tmp_path / "open.nc", z.T, lengths=(2 * l, l), periodic=0)
+    common = dict(T=2.5, pbar=0.01, times=[0, 1, 2, 5, 20], level_gap=dh / 2)
+    from_npy = punchsweep.surface(height_map=str(tmp_path / "map.npy"), pixel=l / n, **common)
+    from_nc = punchsweep.surface(height_map=str(tmp_path / "map.nc"), R="80um", **dict(common, level_gap="1.2um"))
+    bare = punchsweep.surface(height_map=str(tmp_path / "bare.nc"), pixel=l / n, **common)
+    open_map = punchsweep.surface(height_map=str(tmp_path / "open.nc"), **common)
+    assert from_npy["caps"] == 4 and from_npy["cell"] == pytest.approx([2 * l, l], rel=1e-12)
+    for measured in (from_nc, bare, open_map):
+        assert measured["caps"] == 4 and measured["grid"] == [2 * n, n]
+        assert measured["cell"] == pytest.approx([2 * l, l], rel=1e-12)
+        assert measured["levels"][1]["t_star"] == pytest.approx(from_npy["levels"][1]["t_star"], rel=1e-12)
+        for key in ("area_fraction", "area_0", "area_1", "sites_touched"):
+            np.testing.assert_allclose(measured["series"][key], from_npy["series"][key], rtol=1e-12, atol=1e-15)
+    assert any("not periodic" in note for note in open_map["notes"])
+    assert not any("not periodic" in note for note in from_nc["notes"])
+    with pytest.raises(ValueError, match="needs --pixel"):
+        punchsweep.surface(height_map=str(tmp_path / "bare.nc"), **common)
+    with pytest.raises(ValueError, match="lengths and heights are in um: give --R"):
+        punchsweep.surface(height_map=str(tmp_path / "map.nc"), **common)
+    write_surface_topography_nc(tmp_path / "oblong.nc", z.T, lengths=(2 * l, 1.1 * l))
+    with pytest.raises(ValueError, match="the boundary elements need square pixels"):
+        punchsweep.surface(height_map=str(tmp_path / "oblong.nc"), **common)
+    import xarray
+    xarray.Dataset({"heights": (("x", "y"), z.T)}).to_netcdf(tmp_path / "four.nc", engine="h5netcdf")
+    with pytest.raises(ValueError, match="a NetCDF-4 \\(HDF5\\) file; valid: NetCDF-3"):
+        punchsweep.surface(height_map=str(tmp_path / "four.nc"), pixel=l / n, **common)
+    from scipy.io import netcdf_file
+    with netcdf_file(tmp_path / "other.nc", "w") as nc:
+        nc.createDimension("x", 4)
+        nc.createVariable("z", "f8", ("x",))[...] = np.zeros(4)
+    with pytest.raises(ValueError, match="no variable 'heights'"):
+        punchsweep.surface(height_map=str(tmp_path / "other.nc"), pixel=l / n, **common)
+
+
 def test_a_bad_height_map_is_refused(tmp_path):
     z = lattice_heights(0.75, 16, 0.03)
     np.savetxt(tmp_path / "odd.csv", z[:, :15], delimiter=",")
