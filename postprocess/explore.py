@@ -3,6 +3,11 @@
 
   postprocess/explore.py MAP.h5 -o map.html
 
+A map `punchsweep surface-map` wrote is drawn the same way: its axes (level a slider,
+level 1 first), each level's regime and t* and X*, the caps in contact and the area
+fraction per time (colour by, with the time slider; flagged snapshots blank), and a click
+gives the `punchsweep surface` command of the cell.
+
 The page works offline from file:// (no server, no network): plotly.js is embedded from
 Debian's python3-plotly (/usr/share/python3-plotly/plotly.js, plotly.js 2.6.3, MIT
 licence) and the map's data with it, each variable deflate-compressed and decoded in the
@@ -52,8 +57,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p = pm.Parser(prog="explore.py", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("map", metavar="MAP.h5", help="regime map written by `punchsweep sweep`")
     p.add_argument("-o", "--output", required=True, help="the page to write (.html)")
-    p.add_argument("--x", default="pbar", metavar="AXIS", help="the axis across (default pbar)")
-    p.add_argument("--y", default="dh", metavar="AXIS", help="the axis up (default dh)")
+    p.add_argument("--x", default=None, metavar="AXIS", help="the axis across (default pbar)")
+    p.add_argument("--y", default=None, metavar="AXIS",
+                   help="the axis up (default dh; on a surface map the first geometry axis of several values)")
     p.add_argument("--every", nargs="+", action="extend", default=[], metavar="AXIS=K",
                    help="keep every K-th value of AXIS (its first and then each K-th), to fit --max-mb")
     p.add_argument("--design", metavar="WINDOW.json",
@@ -61,7 +67,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                         "lines across wherever its quantity (dh or l) is an axis of the picture")
     p.add_argument("--max-mb", type=float, default=DEFAULT_MAX_MB,
                    help=f"the largest page written, in MB (default {DEFAULT_MAX_MB:g})")
-    return p.parse_args(argv)
+    args = p.parse_args(argv)
+    args.x_given, args.y_given = args.x is not None, args.y is not None
+    args.x = args.x or "pbar"
+    args.y = args.y or "dh"
+    return args
 
 
 def packed(values: np.ndarray, dtype: str) -> str:
@@ -299,6 +309,87 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
     }
 
 
+def is_surface_map(path: str) -> bool:
+    """Whether `path` is a map `punchsweep surface-map` wrote (regime over a level axis, the
+    caps touched over time), not a regime map."""
+    import h5py
+    try:
+        with h5py.File(path, "r") as f:
+            return "touched" in f and "regime" in f and "level" in f
+    except OSError:
+        return False
+
+
+def open_surface_map(path: str):
+    import xarray
+    try:
+        return xarray.open_dataset(path, engine="h5netcdf").load()
+    except (OSError, ValueError) as e:
+        raise pm.MapError(f"{path}: not a readable surface map ({e})") from None
+
+
+def surface_unit(variable) -> str:
+    """The unit a surface map's variable is shown in: its scale where it is a pure number in
+    one (units "1", scaled_by "R"), else its units."""
+    return str(variable.attrs.get("scaled_by", variable.attrs.get("units", "")))
+
+
+def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
+    """A surface map (surface-map's file) as the page reads a regime map: its axes (the
+    geometry's, the load's and level: a slider, level 1 first), each level's regime and t*
+    and X* per cell, and the caps touched and the area fraction per time (NaN where the
+    snapshot is flagged: not valid is never shown as a number); clicking a cell gives the
+    `punchsweep surface` command of that point."""
+    names = list(ds["regime"].dims)
+    movable = [n for n in names if n != "level"]
+    x = x or "pbar"
+    y = y or next((n for n in movable if n != x and ds.sizes[n] > 1), next(n for n in movable if n != x))
+    for name, option in ((x, "--x"), (y, "--y")):
+        if name not in names:
+            raise pm.MapError(f"{option} {name}: not an axis of the map (axes: {', '.join(names)})")
+    if x == y:
+        raise pm.MapError(f"--x and --y are both {x}; choose two axes")
+    axes = []
+    for n in names:
+        values = np.asarray(ds[n].values, dtype=float)
+        log = values.size > 2 and values.min() > 0 and values.max() / values.min() >= 10
+        unit = surface_unit(ds[n])
+        axes.append({"name": n, "values": [float(v) for v in values], "scaled": [float(v) for v in values],
+                     "unit": unit, "log": bool(log), "labels": None,
+                     "label": f"{n}: {attr_text(ds[n].attrs.get('long_name', n))}" + (f" [{unit}]" if unit not in ("", "1") else "")})
+    regime = ds["regime"].transpose(*names)
+    flags = {"regime": {"data": packed(regime.values, "<i1"),
+                        "codes": {str(int(c)): m for c, m in zip(np.atleast_1d(regime.attrs["flag_values"]),
+                                                                 attr_text(regime.attrs["flag_meanings"]).split())}}}
+    variables = {}
+    for v in ("t_star", "X_star"):
+        da = ds[v].broadcast_like(regime).transpose(*names)
+        variables[v] = {"unit": surface_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
+                        "data": packed(da.values, "<f8")}
+    series = {}
+    trusted = ds["valid"] == 0
+    for v in ("touched", "area_fraction"):
+        da = ds[v].where(trusted).broadcast_like(regime).transpose(*names, "t")
+        series[v] = {"unit": surface_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
+                     "data": packed(da.values, "<f8")}
+    texture = json.loads(attr_text(ds.attrs.get("texture", "{}")))
+    words = ", ".join(f"{k} = {v}" for k, v in texture.items() if k != "times")
+    return {
+        "source": Path(map_path).name,
+        "title": f"surface map: {words}",
+        "material": attr_text(ds.attrs.get("material", "")), "material_path": "",
+        "localization": "", "creep_law": "", "C": 0.5, "R": "",
+        "time_unit": attr_text(ds.attrs.get("time_unit", "T_eps")),
+        "axes": axes, "x": x, "y": y, "shape": [len(a["values"]) for a in axes],
+        "variables": variables, "flags": flags, "series": series,
+        "time": [float(t) for t in ds["t"].values],
+        "colours": pm.REGIME_COLOURS, "coarsened": {},
+        "initial": {"level": 1 if ds.sizes["level"] > 1 else 0},
+        "surface": {"texture": {k: v for k, v in texture.items() if k != "times"},
+                    "scatter": attr_text(ds.attrs.get("scatter_kind", ""))},
+    }
+
+
 PAGE = """<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <title>__TITLE__</title>
@@ -319,7 +410,7 @@ h1 { font-size: 18px; margin: 4px 0; }
 <div class="note" id="subtitle"></div>
 <div id="controls"></div>
 <div id="plot"></div>
-<div class="note">Hover a cell to read it; click it for the <code>punchsweep point</code> command that reproduces it.</div>
+<div class="note">Hover a cell to read it; click it for the <code>punchsweep</code> command that reproduces it.</div>
 <div id="readout"></div>
 <div id="command"></div>
 <script id="map-data" type="application/json">__DATA__</script>
@@ -342,7 +433,7 @@ async function loadPlotly() {
 }
 
 const state = { x: MAP.axes.findIndex(a => a.name === MAP.x), y: MAP.axes.findIndex(a => a.name === MAP.y),
-                fixed: MAP.axes.map(() => 0), colour: "regime", time: 0 };
+                fixed: MAP.axes.map(a => (MAP.initial || {})[a.name] ?? 0), colour: "regime", time: 0 };
 const data = { variables: {}, flags: {}, series: {} };
 const strides = MAP.shape.map((_, k) => MAP.shape.slice(k + 1).reduce((a, b) => a * b, 1));
 
@@ -382,7 +473,10 @@ function readout(index) {
   if (MAP.time.length) {
     const nt = MAP.time.length;
     for (const [name, v] of Object.entries(MAP.series)) {
-      lines.push(`${name}(t = ${fmt(MAP.time[state.time])}) = ${fmt(data.series[name][k * nt + state.time])}${unitText(v.unit)}`);
+      const value = data.series[name][k * nt + state.time];
+      // A surface map leaves a flagged snapshot blank (NaN): said so, not as a number.
+      const said = MAP.surface && Number.isNaN(value) ? "flagged (not valid)" : `${fmt(value)}${unitText(v.unit)}`;
+      lines.push(`${name}(t = ${fmt(MAP.time[state.time])}) = ${said}`);
     }
   }
   return lines;
@@ -391,7 +485,22 @@ function readout(index) {
 // Units the command line takes as they are (a length with --R, a pressure with a material):
 // the clicked point's command is written in them, as the map shows its axes.
 const PHYSICAL = new Set(["m", "mm", "um", "nm", "Pa", "kPa", "MPa", "GPa"]);
+// A surface map's cell: `punchsweep surface` with the map's texture keywords and the cell's
+// axes (level is the answer's, not an input).
+function surfaceCommand(index) {
+  const parts = ["punchsweep surface"];
+  for (const [key, value] of Object.entries(MAP.surface.texture)) parts.push(`--${key} ${shellWord(value)}`);
+  MAP.axes.forEach((a, j) => {
+    if (a.name === "level") return;
+    if (a.name === "scatter_width") parts.push(`--scatter ${MAP.surface.scatter}:${a.values[index[j]]}`);
+    else parts.push(`--${a.name} ${a.values[index[j]]}`);
+  });
+  if (MAP.time.length) parts.push(`--times ${MAP.time.join(",")}`);
+  return parts.join(" ");
+}
+
 function pointCommand(index) {
+  if (MAP.surface) return surfaceCommand(index);
   const parts = ["punchsweep point"];
   const physical = a => PHYSICAL.has(a.unit);
   MAP.axes.forEach((a, j) => {
@@ -564,7 +673,7 @@ const ready = (async () => {
   for (const [name, v] of Object.entries(MAP.flags)) data.flags[name] = await unpack(v.data, Int8Array);
   for (const [name, v] of Object.entries(MAP.series)) if (v.data) data.series[name] = await unpack(v.data, Float64Array);
   // The area fractions the page computes: pi (a1^2 + a2^2) / l^2 (explore.py's DERIVED).
-  const li = MAP.axes.findIndex(a => a.name === "l"), nl = MAP.axes[li].values.length;
+  const li = MAP.axes.findIndex(a => a.name === "l"), nl = li >= 0 ? MAP.axes[li].values.length : 1;
   const areaFraction = (a1, a2, per) => Float64Array.from(a1, (v, i) => {
     const l = MAP.axes[li].values[Math.floor(i / per) % nl];
     return Math.PI * (v * v + a2[i] * a2[i]) / (l * l);
@@ -617,6 +726,17 @@ def main(argv: list[str]) -> int:
     out = pm.check_output(args.output, suffixes=(), inputs=[args.map] + ([args.design] if args.design else []))
     if not PLOTLY_JS.is_file():
         raise pm.MapError(f"{PLOTLY_JS} not found: install Debian's python3-plotly (bash cmake/install-deps.sh)")
+    if is_surface_map(args.map):
+        ds = open_surface_map(args.map)
+        data = surface_payload(ds, args.x if args.x_given else None, args.y if args.y_given else None, args.map)
+        data["design"] = None
+        page = render(data, plotly_packed())
+        size_mb = len(page.encode("utf-8")) / 1e6
+        if size_mb > args.max_mb:
+            raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g}: raise --max-mb")
+        pm.write_whole(out, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"), inputs=[args.map])
+        print(f"explore.py: wrote {out} ({size_mb:.1f} MB, a surface map)")
+        return 0
     ds = pm.open_map(args.map)
     if not pm.is_completed(ds):
         raise pm.MapError(f"{args.map} is not completed (resume the sweep first)")

@@ -215,6 +215,7 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   map.load.push_back(in.pbar);
   for (const SurfaceMapAxis& a : in.law) map.load.push_back(a);
   map.texture = json_keywords(in.texture);
+  map.scatter_kind = in.scatter_kind;
   if (const std::string* m = find(keywords, "material")) map.material = *m;
   if (const std::string* R = find(keywords, "R")) map.R = *R;
   const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
@@ -333,6 +334,7 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
     file.attribute("texture", map.texture);
     file.attribute("material", map.material);
     if (!map.R.empty()) file.attribute("R", map.R);
+    if (!map.scatter_kind.empty()) file.attribute("scatter_kind", map.scatter_kind);
     file.attribute("time_unit", map.time_unit);
     const auto units = [&](const std::string& scale) -> io::Attributes {
       if (scale == "T_eps" && map.time_unit != "T_eps") return {{"units", map.time_unit}};

@@ -46,6 +46,7 @@ struct SurfaceMap {
   std::string texture;                  ///< the texture's keywords, as JSON
   std::string material;                 ///< the material file, or empty
   std::string R;                        ///< --R as given, or empty
+  std::string scatter_kind;             ///< normal or uniform where the scatter's width is an axis
 
   std::size_t geometries() const;
   std::size_t load_points() const;

@@ -52,6 +52,8 @@ try {
                area_fraction_inf: e.valueAt("area_fraction_inf", k),
                area_fraction: e.data.series.area_fraction ? Array.from(e.data.series.area_fraction.slice(
                  k * e.MAP.time.length, (k + 1) * e.MAP.time.length)) : null,
+               touched: e.data.series.touched ? Array.from(e.data.series.touched.slice(
+                 k * e.MAP.time.length, (k + 1) * e.MAP.time.length)) : null,
                readout: document.getElementById("readout").textContent };
     }, [ix, iy]);
     out.cells.push(read);
@@ -80,7 +82,9 @@ try {
   // The time slider moves a series.
   out.time_slider = null;
   if (await page.$("#slider-time")) {
-    await page.selectOption("#colour", "a2");
+    // a2 on a regime map; a surface map's first series (the caps touched).
+    const colours = await page.$$eval("#colour option", os => os.map(o => o.value));
+    await page.selectOption("#colour", colours.includes("a2") ? "a2" : colours[1]);
     const before = await picture();
     await page.$eval("#slider-time", r => { r.value = r.max; r.dispatchEvent(new Event("input")); });
     out.time_slider = { changed: before !== await picture() };

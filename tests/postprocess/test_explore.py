@@ -368,3 +368,44 @@ def test_a_pressure_window_is_drawn_across_the_pressure_axis(tmp_path):
     assert "pressure lower edge 12.38 kPa" in lower_name and "pressure upper edge 12.95 kPa" in upper_name
     assert lower_x == pytest.approx([d["physical"]["lower"]] * 2, rel=1e-12)
     assert upper_x == pytest.approx([d["physical"]["upper"]] * 2, rel=1e-12)
+
+
+@pytest.mark.browser
+def test_a_surface_map_in_chromium(tmp_path):
+    """Issue 38: a map `surface-map` wrote (hexagonal three levels, dh x pbar x T) on the
+    page: level is a slider (level 1 first), each cell's regime, t* and caps touched are the
+    file's (NaN where a snapshot is flagged), and each cell's command, run, is `punchsweep
+    surface` at that point and gives the same regime and t* for level 1."""
+    import punchsweep
+    path = tmp_path / "surface.nc"
+    punchsweep.surface_map(lattice="hexagonal", l=1.2, dh=[0.04, 0.05, 0.06], dh2=0.09, s=2, grid=48,
+                           pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0], times=[0, 1, 5], output=path)
+    page = tmp_path / "surface.html"
+    done = explore(path, "-o", page)
+    assert done.returncode == 0, done.stderr
+    r, _ = in_chromium(page, [[0, 0], [4, 2], [2, 1], [3, 0]], tmp_path)
+    with h5py.File(path) as f:
+        names = [dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
+        meanings = f["regime"].attrs["flag_meanings"]
+        meanings = (meanings.decode() if isinstance(meanings, bytes) else meanings).split()
+        codes = dict(zip(f["regime"].attrs["flag_values"], meanings))
+        for cell in r["cells"]:
+            index = tuple(cell["index"])
+            assert index[names.index("pbar")] == cell["ix"] and index[names.index("dh")] == cell["iy"]
+            assert index[names.index("level")] == 1
+            assert cell["regime"] == codes[f["regime"][index]]
+            t = f["t_star"][index]
+            assert cell["t_star"] == (None if np.isinf(t) else t) or (np.isinf(t) and cell["t_star"] is None)
+            at = index[:names.index("level")]
+            want = np.where(f["valid"][at] == 0, f["touched"][at], np.nan)
+            got = np.array([np.nan if v is None else v for v in cell["touched"]])
+            np.testing.assert_array_equal(got, want)
+            argv = shlex.split(cell["command"])
+            assert argv[:2] == ["punchsweep", "surface"] and "--level" not in argv
+            run = subprocess.run([ENGINE, *argv[1:], "--format", "json"], capture_output=True, text=True)
+            assert run.returncode == 0, (argv, run.stderr)
+            level = json.loads(run.stdout)["levels"][1]
+            assert level["regime"] == cell["regime"]
+            assert (level["t_star"] is None and np.isinf(t)) or level["t_star"] == pytest.approx(t, rel=1e-12)
+    assert r["slider"] is not None and r["slider"]["changed"]
+    assert r["time_slider"] == {"changed": True}
