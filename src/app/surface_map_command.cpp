@@ -431,6 +431,23 @@ po::options_description map_options(const input::PointMaterial& material) {
   return opts;
 }
 
+/// Each of geometry g's blocks of the map's arrays, as (array, first, count), in the order
+/// they travel to rank 0.
+template <class Visit>
+void for_each_block(SurfaceMap& map, std::size_t g, Visit&& visit) {
+  const std::size_t P = map.load_points(), L = static_cast<std::size_t>(map.levels), T = map.times.size();
+  visit(map.t_star, g * P * L, P * L);
+  visit(map.regime, g * P * L, P * L);
+  visit(map.X_star, g * L, L);
+  visit(map.resolved, g * L, L);
+  visit(map.touched, g * P * T, P * T);
+  visit(map.area_fraction, g * P * T, P * T);
+  visit(map.valid, g * P * T, P * T);
+  visit(map.grid, g, 1);
+  visit(map.from_tables, g, 1);
+  visit(map.curve_seconds, g, 1);
+}
+
 constexpr const char* kMapUsage =
     "usage: mpirun -n N punchsweep surface-map --lattice square|hexagonal --l AXIS --dh AXIS [--dh2 AXIS]\n"
     "           --pbar AXIS (or --pressure AXIS with --material) [--T AXIS | --temperature AXIS]\n"
@@ -495,43 +512,22 @@ int run_surface_map_command(const std::vector<std::string>& args) {
   // Every rank's geometries to rank 0, in the order they were dealt.
   const std::size_t G = map.geometries(), P = map.load_points(), L = static_cast<std::size_t>(map.levels),
                     T = map.times.size();
-  const auto pack = [&](std::size_t g, std::vector<double>& out) {
-    const auto put = [&out](const auto& v, std::size_t from, std::size_t n) {
-      for (std::size_t k = from; k < from + n; ++k) out.push_back(static_cast<double>(v[k]));
-    };
-    put(map.t_star, g * P * L, P * L);
-    put(map.regime, g * P * L, P * L);
-    put(map.X_star, g * L, L);
-    put(map.resolved, g * L, L);
-    put(map.touched, g * P * T, P * T);
-    put(map.area_fraction, g * P * T, P * T);
-    put(map.valid, g * P * T, P * T);
-    put(map.grid, g, 1);
-    put(map.from_tables, g, 1);
-    put(map.curve_seconds, g, 1);
-  };
   std::vector<double> mine;
-  for (std::size_t g = static_cast<std::size_t>(mpi.rank()); g < G; g += static_cast<std::size_t>(mpi.size())) pack(g, mine);
+  for (std::size_t g = static_cast<std::size_t>(mpi.rank()); g < G; g += static_cast<std::size_t>(mpi.size())) {
+    for_each_block(map, g, [&mine](const auto& v, std::size_t from, std::size_t n) {
+      for (std::size_t k = from; k < from + n; ++k) mine.push_back(static_cast<double>(v[k]));
+    });
+  }
   const std::vector<double> all = mpi.size() > 1 ? sweep::gather_to_root(mine) : mine;
   int status = 0;
   if (root) {
     std::size_t k = 0;
-    const auto take = [&](auto& v, std::size_t from, std::size_t n) {
-      using T0 = typename std::decay_t<decltype(v)>::value_type;
-      for (std::size_t i = from; i < from + n; ++i) v[i] = static_cast<T0>(all[k++]);
-    };
     for (int r = 0; r < mpi.size(); ++r) {
       for (std::size_t g = static_cast<std::size_t>(r); g < G; g += static_cast<std::size_t>(mpi.size())) {
-        take(map.t_star, g * P * L, P * L);
-        take(map.regime, g * P * L, P * L);
-        take(map.X_star, g * L, L);
-        take(map.resolved, g * L, L);
-        take(map.touched, g * P * T, P * T);
-        take(map.area_fraction, g * P * T, P * T);
-        take(map.valid, g * P * T, P * T);
-        take(map.grid, g, 1);
-        take(map.from_tables, g, 1);
-        take(map.curve_seconds, g, 1);
+        for_each_block(map, g, [&](auto& v, std::size_t from, std::size_t n) {
+          using Value = typename std::decay_t<decltype(v)>::value_type;
+          for (std::size_t i = from; i < from + n; ++i) v[i] = static_cast<Value>(all[k++]);
+        });
       }
     }
     try {
