@@ -247,13 +247,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
                                                                                        : model::LatticeKind::hexagonal;
   std::vector<double> drops{run.inputs.problem.dh};
   if (vm.count("dh2")) {
-    // --dh2 is dh's parameter under its own name: the same range and units.
-    model::Parameter dh2 = *std::find_if(run.inputs.values.begin(), run.inputs.values.end(), [](const auto& v) {
-                              return v.first->name == "dh";
-                            })->first;
-    dh2.name = "dh2";
-    dh2.range = "dh2 >= 0 (in R)";
-    drops.push_back(input::read_parameter(vm, dh2, &run.inputs.scales));
+    drops.push_back(input::read_parameter(vm, *model::texture_parameter(model::kThirdLevelDrop), &run.inputs.scales));
   }
   const std::string grid = vm["grid"].as<std::string>();
   if (grid != "auto") {

@@ -35,8 +35,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::int8_t kNotComputed = -1;
 
-/// The texture's lengths that may be axes, each one load curve per value.
-constexpr const char* kGeometryKeys[] = {"l", "dh", "dh2"};
+/// The texture's lengths that may be axes, each one load curve per value, in the map's order.
+constexpr std::string_view kGeometryKeys[] = {model::kPitch, model::kHeightDifference, model::kThirdLevelDrop,
+                                              model::kScatterWidth};
 /// The map's own keywords (not the texture's).
 constexpr const char* kOutput = "output";
 constexpr const char* kOverwrite = "overwrite";
@@ -103,32 +104,20 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
     }
   }
   const input::PhysicalScales scales = input::scales_of(material.material.get(), R);
-  const model::Parameter length{"l", "R", "length", "a length", "> 0 (in R, or a length with --R)",
-                                [](double v) { return v > 0.0; }};
-  const model::Parameter drop{"dh", "R", "length", "a length", ">= 0 (in R, or a length with --R)",
-                              [](double v) { return v >= 0.0; }};
   for (const auto& [key, value] : keywords) {
     if (key == kOutput || key == kOverwrite) continue;
     for (const Refused& r : kRefused) {
       if (key == r.key) throw input::UsageError("--" + key + " is not a map's: " + r.why);
     }
-    const bool geometry = std::find(std::begin(kGeometryKeys), std::end(kGeometryKeys), key) != std::end(kGeometryKeys);
+    const bool geometry = key == model::kPitch || key == model::kHeightDifference || key == model::kThirdLevelDrop;
     if (geometry) {
-      const model::Parameter* p = model::find_parameter(key);
-      const model::Parameter& as = p ? *p : (key == "l" ? length : drop);
-      SurfaceMapAxis axis = read_axis(key, value, as, scales);
-      axis.scale = "R";  // lengths are read in R, with --R's unit or without
-      axis.long_name = key == "l" ? "lattice pitch" : key == "dh" ? "level 1's drop below the tallest tips"
-                                                                  : "level 2's drop below the tallest tips";
-      in.geometry.push_back(std::move(axis));
+      const model::Parameter* p = model::problem_parameter(key);
+      in.geometry.push_back(read_axis(key, value, p ? *p : *model::texture_parameter(key), scales));
     } else if (key == "scatter" && (value.rfind("normal:", 0) == 0 || value.rfind("uniform:", 0) == 0)) {
       const std::size_t colon = value.find(':');
       in.scatter_kind = value.substr(0, colon);
-      SurfaceMapAxis axis = read_axis("scatter", value.substr(colon + 1), drop, scales);
-      axis.name = "scatter_width";
-      axis.scale = "R";
-      axis.long_name = in.scatter_kind == "normal" ? "the caps' height scatter: standard deviation"
-                                                   : "the caps' height scatter: half-width";
+      SurfaceMapAxis axis = read_axis("scatter", value.substr(colon + 1), *model::texture_parameter(model::kScatterWidth), scales);
+      axis.name = model::kScatterWidth;
       in.geometry.push_back(std::move(axis));
     } else if (key == "pbar" || key == "pressure") {
       if (!in.pbar.name.empty()) throw input::UsageError("--pbar beside --pressure: give the load once");

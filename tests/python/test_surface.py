@@ -521,3 +521,17 @@ def test_surface_map_in_physical_units_from_a_material(tmp_path):
     assert [x["regime"] for x in one["levels"]] == [punchsweep.REGIMES[int(c)] for c in ds.regime.values[1, 1, 1]]
     t = [np.inf if x["t_star"] is None else x["t_star"] for x in one["levels"]]
     np.testing.assert_allclose(ds.t_star.values[1, 1, 1], t, rtol=1e-12)
+
+
+def test_surface_map_takes_the_scatter_width_as_an_axis():
+    """scatter="normal:0.005, 0.01" on a 3 x 3 supercell: the scatter's width is a geometry
+    axis (one curve each, the same seed), and each width's caps in contact at every time
+    equal surface()'s with that width alone."""
+    common = dict(l=0.75, dh=0.03, s=2, supercell=3, grid=16, T=4, times=[0, 1, 5])
+    ds = punchsweep.surface_map(scatter="normal:0.005, 0.01", pbar=[0.004, 0.01], **common)
+    assert ds.t_star.dims == ("scatter_width", "pbar", "level") and ds.scatter_width.attrs["scaled_by"] == "R"
+    for k, width in enumerate([0.005, 0.01]):
+        for i, pbar in enumerate([0.004, 0.01]):
+            one = punchsweep.surface(scatter=f"normal:{width}", pbar=pbar, **common)
+            np.testing.assert_array_equal(ds.touched.values[k, i], one["series"]["sites_touched"])
+            assert [lv["regime"] for lv in one["levels"]] == [punchsweep.REGIMES[int(c)] for c in ds.regime.values[k, i]]

@@ -24,6 +24,15 @@ constexpr std::array<Parameter, 5> kProblemParameters{{
      "C > 0", [](double v) { return v > 0.0; }, false, "0.5", {}},
 }};
 
+/// A texture's lengths beyond the two-level problem's (`surface`, `surface-map`).
+constexpr std::array<Parameter, 2> kTextureParameters{{
+    {kThirdLevelDrop, "R", "drop of the third level", "how far level 2 lies below the tallest tips, in R",
+     "dh2 >= 0 (in R)", [](double v) { return v >= 0.0; }},
+    {kScatterWidth, "R", "width of the caps' height scatter",
+     "the standard deviation (normal) or half-width (uniform) of the caps' height changes, in R",
+     "a width >= 0 (in R)", [](double v) { return v >= 0.0; }},
+}};
+
 }  // namespace
 
 bool Parameter::admits(double value) const {
@@ -42,6 +51,13 @@ std::span<const Parameter> problem_parameters() { return kProblemParameters; }
 
 const Parameter* problem_parameter(std::string_view name) {
   for (const Parameter& p : kProblemParameters) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+const Parameter* texture_parameter(std::string_view name) {
+  for (const Parameter& p : kTextureParameters) {
     if (p.name == name) return &p;
   }
   return nullptr;

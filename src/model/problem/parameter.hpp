@@ -56,6 +56,13 @@ std::span<const Parameter> problem_parameters();
 /// The contact problem's parameter called `name` (l, dh, pbar, s, C); nullptr if none.
 const Parameter* problem_parameter(std::string_view name);
 
+/// A texture's lengths beyond the two-level problem's (docs/model.md, section 17): the third
+/// level's drop (`--dh2`) and the caps' height scatter's width (a surface map's axis).
+inline constexpr std::string_view kThirdLevelDrop = "dh2";
+inline constexpr std::string_view kScatterWidth = "scatter_width";
+/// The texture's parameter called `name`; nullptr if none.
+const Parameter* texture_parameter(std::string_view name);
+
 struct Shape;
 /// Empty when the shape is usable, else a sentence naming the bad field and its range (its
 /// parameters' declarations, s and C, above).
