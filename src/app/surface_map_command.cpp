@@ -413,10 +413,12 @@ input::Keywords keywords_of(const std::vector<std::string>& args, const po::opti
 }
 
 po::options_description map_options(const input::PointMaterial& material) {
-  po::options_description opts = surface_options(material);
-  opts.add_options()
+  po::options_description own("The map's own options");
+  own.add_options()
       ("output", po::value<std::string>()->value_name("FILE"), "the map to write (netCDF-4): required")
       ("overwrite", po::bool_switch(), "replace FILE where it exists");
+  po::options_description opts;
+  opts.add(own).add(surface_options(material));
   return opts;
 }
 
