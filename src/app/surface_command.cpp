@@ -95,7 +95,7 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "any rectangular periodic cell instead of a lattice: a [cell] file of Lx, Ly, s, C and one "
        "'site = x, y, drop, level[, s, C]' line per punch (docs/cli.md); --grid then counts nodes along Lx")
       ("height-map", po::value<std::string>()->value_name("FILE"),
-       "a measured period of a texture: a height map (CSV rows along y, a 2-D float .npy, or the NetCDF-3 "
+       "a measured period of a texture: a height map (CSV rows along y, a 2-D float .npy, or the NetCDF "
        "file SurfaceTopography's to_netcdf writes, its lengths and unit read from it), one "
        "boundary-element node per pixel (an even count each way); its summits are the caps followed")
       ("pixel", po::value<std::string>()->value_name("SIZE"),

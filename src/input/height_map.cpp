@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "input/usage_error.hpp"
+#include "io/netcdf_file.hpp"
 
 namespace punchsweep::input {
 
@@ -337,8 +338,31 @@ HeightMap read_height_map(const std::string& path) {
     return checked(read_netcdf(path, bytes), path);
   }
   if (file.gcount() >= 4 && std::memcmp(magic, "\x89HDF", 4) == 0) {
-    throw UsageError(path + ": a NetCDF-4 (HDF5) file; valid: NetCDF-3 as SurfaceTopography's to_netcdf writes it, "
-                     "CSV or .npy");
+    // NetCDF-4: HDF5, as SurfaceTopography's parallel to_netcdf writes it.
+    io::NetcdfHeights nc;
+    try {
+      nc = io::read_netcdf4_heights(path);
+    } catch (const std::runtime_error& e) {
+      throw UsageError(e.what());
+    }
+    HeightMap map;
+    map.nx = nc.nx;
+    map.ny = nc.ny;
+    map.height.resize(nc.values.size());
+    for (std::size_t i = 0; i < map.nx; ++i) {
+      for (std::size_t j = 0; j < map.ny; ++j) {
+        const double v = nc.values[i * map.ny + j];
+        if (!std::isfinite(v)) {
+          throw UsageError(path + ": heights(" + std::to_string(i) + ", " + std::to_string(j) + ") is not a finite number");
+        }
+        map.height[j * map.nx + i] = v;
+      }
+    }
+    map.length_x = nc.length_x;
+    map.length_y = nc.length_y;
+    map.unit = nc.unit;
+    map.periodic = nc.periodic;
+    return checked(std::move(map), path);
   }
   file.seekg(0);
   return checked(read_csv(path, file), path);

@@ -4,8 +4,9 @@
 /// grid (one row per line, values separated by commas, semicolons, tabs or spaces), a
 /// NumPy .npy array (2-D, float64 or float32, little-endian, C order), rows along y; or the
 /// NetCDF container the SurfaceTopography ecosystem writes (Topography.to_netcdf: classic or
-/// 64-bit-offset NetCDF-3, a variable `heights(x, y)`, and on the variables `x` and `y` the
-/// attributes `length`, `periodic` and `length_unit`; the heights in that unit too).
+/// 64-bit-offset NetCDF-3 in serial, NetCDF-4 in parallel; a variable `heights(x, y)`, and
+/// on the variables `x` and `y` the attributes `length`, `periodic` and `length_unit`; the
+/// heights in that unit too).
 
 #include <cstddef>
 #include <string>

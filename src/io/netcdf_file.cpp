@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "io/hdf5_attributes.hpp"
@@ -98,6 +100,87 @@ void NetcdfFile::close() {
   coordinates_.clear();
   if (file_.get() >= 0) check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + path_);
   file_.reset();
+}
+
+}  // namespace punchsweep::io
+
+namespace punchsweep::io {
+namespace {
+
+/// A numeric attribute's first value, if `object` has `name` and it is numeric.
+std::optional<double> number_attribute(hid_t object, const char* name) {
+  if (H5Aexists(object, name) <= 0) return std::nullopt;
+  Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose, std::string("open attribute ") + name);
+  Handle type(H5Aget_type(attribute), H5Tclose, std::string("type of attribute ") + name);
+  const H5T_class_t cls = H5Tget_class(type);
+  if (cls != H5T_INTEGER && cls != H5T_FLOAT) return std::nullopt;
+  Handle space(H5Aget_space(attribute), H5Sclose, std::string("space of attribute ") + name);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  if (n < 1) return std::nullopt;
+  std::vector<double> values(static_cast<std::size_t>(n));
+  check(H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()), std::string("read attribute ") + name);
+  return values.front();
+}
+
+/// A string attribute (fixed or variable length), if `object` has `name` and it is one.
+std::optional<std::string> text_attribute(hid_t object, const char* name) {
+  if (H5Aexists(object, name) <= 0) return std::nullopt;
+  Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose, std::string("open attribute ") + name);
+  Handle type(H5Aget_type(attribute), H5Tclose, std::string("type of attribute ") + name);
+  if (H5Tget_class(type) != H5T_STRING) return std::nullopt;
+  if (H5Tis_variable_str(type) > 0) {
+    Handle memory = string_type(std::string("string type for ") + name);
+    char* text = nullptr;
+    check(H5Aread(attribute, memory, &text), std::string("read attribute ") + name);
+    std::string out = text ? text : "";
+    H5free_memory(text);
+    return out;
+  }
+  const std::size_t size = H5Tget_size(type);
+  std::string out(size, '\0');
+  check(H5Aread(attribute, type, out.data()), std::string("read attribute ") + name);
+  while (!out.empty() && out.back() == '\0') out.pop_back();
+  return out;
+}
+
+}  // namespace
+
+NetcdfHeights read_netcdf4_heights(const std::string& path, const std::string& variable) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const auto fail = [&](const std::string& what) { return std::runtime_error(path + ": " + what + " (NetCDF-4)"); };
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path);
+  if (H5Lexists(file, variable.c_str(), H5P_DEFAULT) <= 0) {
+    throw fail("no variable '" + variable + "' (a SurfaceTopography map holds heights(x, y))");
+  }
+  Handle dataset(H5Dopen2(file, variable.c_str(), H5P_DEFAULT), H5Dclose, "open " + variable + " in " + path);
+  Handle space(H5Dget_space(dataset), H5Sclose, "space of " + variable + " in " + path);
+  if (H5Sget_simple_extent_ndims(space) != 2) throw fail("'" + variable + "' is not 2-D (x, y)");
+  hsize_t dims[2] = {0, 0};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  NetcdfHeights out;
+  out.nx = static_cast<std::size_t>(dims[0]);
+  out.ny = static_cast<std::size_t>(dims[1]);
+  if (out.nx * out.ny > (std::size_t{1} << 24)) throw fail("more than 4096 x 4096 pixels");
+  Handle type(H5Dget_type(dataset), H5Tclose, "type of " + variable);
+  if (H5Tget_class(type) != H5T_FLOAT && H5Tget_class(type) != H5T_INTEGER) throw fail("'" + variable + "' holds no numbers");
+  out.values.resize(out.nx * out.ny);
+  check(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data()), "read " + variable + " in " + path);
+  for (const char* axis : {"x", "y"}) {
+    if (H5Lexists(file, axis, H5P_DEFAULT) <= 0) continue;
+    Handle v(H5Oopen(file, axis, H5P_DEFAULT), H5Oclose, std::string("open ") + axis + " in " + path);
+    if (const std::optional<double> length = number_attribute(v, "length")) {
+      if (!(std::isfinite(*length) && *length > 0.0)) throw fail(std::string(axis) + ":length is not a length > 0");
+      (axis[0] == 'x' ? out.length_x : out.length_y) = *length;
+    }
+    if (const std::optional<std::string> unit = text_attribute(v, "length_unit"); unit && !unit->empty()) {
+      if (!out.unit.empty() && out.unit != *unit) throw fail("x and y have different length units (" + out.unit + ", " + *unit + ")");
+      out.unit = *unit;
+    }
+    if (const std::optional<double> periodic = number_attribute(v, "periodic")) {
+      out.periodic = std::min(out.periodic < 0 ? 1 : out.periodic, *periodic != 0.0 ? 1 : 0);
+    }
+  }
+  return out;
 }
 
 }  // namespace punchsweep::io

@@ -5,6 +5,7 @@
 /// (h5netcdf) and netCDF readers open. The regime map has its own writer (tiles, chunks,
 /// resume); this one serves maps held in memory (the surface map).
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -43,5 +44,24 @@ class NetcdfFile {
   Handle file_;
   std::vector<std::pair<std::string, Handle>> coordinates_;
 };
+
+}  // namespace punchsweep::io
+
+namespace punchsweep::io {
+
+/// A NetCDF-4 (HDF5) file's 2-D variable and the attributes of its dimensions' variables,
+/// as SurfaceTopography's parallel to_netcdf writes a height map: `heights(x, y)`, and on
+/// `x` and `y` the attributes `length`, `length_unit`, `periodic`.
+struct NetcdfHeights {
+  std::size_t nx = 0, ny = 0;   ///< along the first index (x) and the second (y)
+  std::vector<double> values;   ///< C order: values[i ny + j] at (x_i, y_j)
+  double length_x = 0.0, length_y = 0.0;  ///< 0 where not stated
+  std::string unit;             ///< empty where not stated
+  int periodic = -1;            ///< -1 where not stated
+};
+
+/// Reads `variable` of the HDF5 file `path` and the attributes of `x` and `y`. Throws
+/// std::runtime_error naming the file and what is missing or unreadable.
+NetcdfHeights read_netcdf4_heights(const std::string& path, const std::string& variable = "heights");
 
 }  // namespace punchsweep::io

@@ -345,8 +345,9 @@ def test_a_surface_topography_netcdf_map_is_read_as_its_npy(tmp_path):
     """SurfaceTopography's NetCDF container (what Topography.to_netcdf writes): two cells of
     the paper's lattice along x (128 x 64 pixels, so that x and y cannot be swapped), in um
     with its lengths stated, gives the .npy map's answers on the same grid to 1e-12 with no
-    --pixel or --height-unit (the file's); a classic NetCDF-3 file without lengths needs
-    --pixel; a map marked non-periodic is read with a note."""
+    --pixel or --height-unit (the file's), as NetCDF-3 (64-bit offset) and NetCDF-4; a
+    classic NetCDF-3 file without lengths needs --pixel; a map marked non-periodic is read
+    with a note."""
     l, n, dh = 0.75, 64, 0.03
     z = np.tile(lattice_heights(l, n, dh), (1, 2))  # rows along y: 64 x 128
     np.save(tmp_path / "map.npy", z)
@@ -374,10 +375,18 @@ def test_a_surface_topography_netcdf_map_is_read_as_its_npy(tmp_path):
     write_surface_topography_nc(tmp_path / "oblong.nc", z.T, lengths=(2 * l, 1.1 * l))
     with pytest.raises(ValueError, match="the boundary elements need square pixels"):
         punchsweep.surface(height_map=str(tmp_path / "oblong.nc"), **common)
+    # NetCDF-4 (what SurfaceTopography's parallel writer makes), by h5netcdf: the same map.
     import xarray
-    xarray.Dataset({"heights": (("x", "y"), z.T)}).to_netcdf(tmp_path / "four.nc", engine="h5netcdf")
-    with pytest.raises(ValueError, match="a NetCDF-4 \\(HDF5\\) file; valid: NetCDF-3"):
-        punchsweep.surface(height_map=str(tmp_path / "four.nc"), pixel=l / n, **common)
+    axes = {name: (name, np.arange(count) * 1.0, {"length": length * 80.0, "periodic": 1, "length_unit": "um"})
+            for name, count, length in (("x", 2 * n, 2 * l), ("y", n, l))}
+    xarray.Dataset({"heights": (("x", "y"), z.T * 80.0)}, coords=axes).to_netcdf(tmp_path / "four.nc", engine="h5netcdf")
+    four = punchsweep.surface(height_map=str(tmp_path / "four.nc"), R="80um", **dict(common, level_gap="1.2um"))
+    assert four["caps"] == 4 and four["grid"] == [2 * n, n]
+    assert four["levels"][1]["t_star"] == pytest.approx(from_npy["levels"][1]["t_star"], rel=1e-12)
+    np.testing.assert_allclose(four["series"]["area_fraction"], from_npy["series"]["area_fraction"], rtol=1e-12)
+    xarray.Dataset({"z": (("x", "y"), z.T)}).to_netcdf(tmp_path / "other4.nc", engine="h5netcdf")
+    with pytest.raises(ValueError, match="no variable 'heights'"):
+        punchsweep.surface(height_map=str(tmp_path / "other4.nc"), pixel=l / n, **common)
     from scipy.io import netcdf_file
     with netcdf_file(tmp_path / "other.nc", "w") as nc:
         nc.createDimension("x", 4)
