@@ -218,7 +218,7 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
     const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
     for (std::size_t d = 0; d < map.geometry.size(); ++d) {
       const double v = map.geometry[d].values[at[d]];
-      if (map.geometry[d].name == "scatter_width") {
+      if (map.geometry[d].name == model::kScatterWidth) {
         k.emplace_back("scatter", in.scatter_kind + ":" + text_of(v));
       } else {
         k.emplace_back(map.geometry[d].name, text_of(v));
