@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -249,42 +250,51 @@ class NetcdfClassic {
   std::vector<Variable> variables_;
 };
 
-/// SurfaceTopography's NetCDF map: heights(x, y), the first index along x; the lengths,
+/// SurfaceTopography's NetCDF-3 map: heights(x, y), the first index along x; the lengths,
 /// unit and periodicity from the variables x and y where they say them.
-HeightMap read_netcdf(const std::string& path, const std::string& bytes) {
+io::NetcdfHeights read_netcdf(const std::string& path, const std::string& bytes) {
   const NetcdfClassic nc(path, bytes);
   const NetcdfClassic::Variable* heights = nc.variable("heights");
   if (!heights) nc.fail("no variable 'heights' (a SurfaceTopography map holds heights(x, y))");
   if (heights->dims.size() != 2) nc.fail("'heights' has " + std::to_string(heights->dims.size()) + " dimensions; valid: 2 (x, y)");
+  io::NetcdfHeights out;
+  out.nx = nc.dimension(heights->dims[0]).length;
+  out.ny = nc.dimension(heights->dims[1]).length;
+  if (out.nx * out.ny > kMaxPixels) nc.fail("more than 4096 x 4096 pixels");
+  out.values = nc.values(*heights);
+  for (const char axis : {'x', 'y'}) {
+    const NetcdfClassic::Variable* v = nc.variable(std::string(1, axis));
+    if (!v) continue;
+    const auto number = [&](const char* name) -> std::optional<double> {
+      const auto* a = NetcdfClassic::attribute(*v, name);
+      return a && a->values.size() == 1 ? std::optional<double>(a->values[0]) : std::nullopt;
+    };
+    const auto* unit = NetcdfClassic::attribute(*v, "length_unit");
+    io::take_axis_attributes(out, axis, number("length"), unit ? std::optional<std::string>(unit->text) : std::nullopt,
+                             number("periodic"), path, "NetCDF");
+  }
+  return out;
+}
+
+/// A NetCDF map (either format) in the map's order: rows along y.
+HeightMap from_netcdf(const io::NetcdfHeights& nc, const std::string& path) {
   HeightMap map;
-  map.nx = nc.dimension(heights->dims[0]).length;
-  map.ny = nc.dimension(heights->dims[1]).length;
-  if (map.nx * map.ny > kMaxPixels) nc.fail("more than 4096 x 4096 pixels");
-  const std::vector<double> values = nc.values(*heights);
-  map.height.resize(map.nx * map.ny);
+  map.nx = nc.nx;
+  map.ny = nc.ny;
+  map.height.resize(nc.values.size());
   for (std::size_t i = 0; i < map.nx; ++i) {
     for (std::size_t j = 0; j < map.ny; ++j) {
-      const double v = values[i * map.ny + j];
-      if (!std::isfinite(v)) nc.fail("heights(" + std::to_string(i) + ", " + std::to_string(j) + ") is not a finite number");
+      const double v = nc.values[i * map.ny + j];
+      if (!std::isfinite(v)) {
+        throw UsageError(path + ": heights(" + std::to_string(i) + ", " + std::to_string(j) + ") is not a finite number");
+      }
       map.height[j * map.nx + i] = v;
     }
   }
-  // The lengths, unit and periodicity, where the variables x and y say them.
-  for (const char* axis : {"x", "y"}) {
-    const NetcdfClassic::Variable* v = nc.variable(axis);
-    if (!v) continue;
-    if (const auto* a = NetcdfClassic::attribute(*v, "length"); a && a->values.size() == 1) {
-      if (!(std::isfinite(a->values[0]) && a->values[0] > 0.0)) nc.fail(std::string(axis) + ":length is not a length > 0");
-      (axis[0] == 'x' ? map.length_x : map.length_y) = a->values[0];
-    }
-    if (const auto* a = NetcdfClassic::attribute(*v, "length_unit"); a && !a->text.empty()) {
-      if (!map.unit.empty() && map.unit != a->text) nc.fail("x and y have different length units (" + map.unit + ", " + a->text + ")");
-      map.unit = a->text;
-    }
-    if (const auto* a = NetcdfClassic::attribute(*v, "periodic"); a && a->values.size() == 1) {
-      map.periodic = std::min(map.periodic < 0 ? 1 : map.periodic, a->values[0] != 0.0 ? 1 : 0);
-    }
-  }
+  map.length_x = nc.length_x;
+  map.length_y = nc.length_y;
+  map.unit = nc.unit;
+  map.periodic = nc.periodic;
   return map;
 }
 
@@ -332,37 +342,25 @@ HeightMap read_height_map(const std::string& path) {
     const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     return checked(read_npy(path, bytes), path);
   }
-  if (file.gcount() >= 4 && std::memcmp(magic, "CDF", 3) == 0) {
-    file.seekg(0);
-    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    return checked(read_netcdf(path, bytes), path);
-  }
-  if (file.gcount() >= 4 && std::memcmp(magic, "\x89HDF", 4) == 0) {
-    // NetCDF-4: HDF5, as SurfaceTopography's parallel to_netcdf writes it.
+  const bool classic = file.gcount() >= 4 && std::memcmp(magic, "CDF", 3) == 0;
+  if (classic || (file.gcount() >= 4 && std::memcmp(magic, "\x89HDF", 4) == 0)) {
+    // NetCDF-3 as SurfaceTopography's to_netcdf writes it, or NetCDF-4 (HDF5) as its
+    // parallel writer does.
     io::NetcdfHeights nc;
     try {
-      nc = io::read_netcdf4_heights(path);
+      if (classic) {
+        file.seekg(0);
+        const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        nc = read_netcdf(path, bytes);
+      } else {
+        nc = io::read_netcdf4_heights(path);
+      }
+    } catch (const UsageError&) {
+      throw;
     } catch (const std::runtime_error& e) {
       throw UsageError(e.what());
     }
-    HeightMap map;
-    map.nx = nc.nx;
-    map.ny = nc.ny;
-    map.height.resize(nc.values.size());
-    for (std::size_t i = 0; i < map.nx; ++i) {
-      for (std::size_t j = 0; j < map.ny; ++j) {
-        const double v = nc.values[i * map.ny + j];
-        if (!std::isfinite(v)) {
-          throw UsageError(path + ": heights(" + std::to_string(i) + ", " + std::to_string(j) + ") is not a finite number");
-        }
-        map.height[j * map.nx + i] = v;
-      }
-    }
-    map.length_x = nc.length_x;
-    map.length_y = nc.length_y;
-    map.unit = nc.unit;
-    map.periodic = nc.periodic;
-    return checked(std::move(map), path);
+    return checked(from_netcdf(nc, path), path);
   }
   file.seekg(0);
   return checked(read_csv(path, file), path);

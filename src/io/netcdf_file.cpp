@@ -145,6 +145,23 @@ std::optional<std::string> text_attribute(hid_t object, const char* name) {
 
 }  // namespace
 
+void take_axis_attributes(NetcdfHeights& heights, char axis, std::optional<double> length,
+                          const std::optional<std::string>& unit, std::optional<double> periodic,
+                          const std::string& path, const std::string& format) {
+  const auto fail = [&](const std::string& what) { return std::runtime_error(path + ": " + what + " (" + format + ")"); };
+  if (length) {
+    if (!(std::isfinite(*length) && *length > 0.0)) throw fail(std::string(1, axis) + ":length is not a length > 0");
+    (axis == 'x' ? heights.length_x : heights.length_y) = *length;
+  }
+  if (unit && !unit->empty()) {
+    if (!heights.unit.empty() && heights.unit != *unit) {
+      throw fail("x and y have different length units (" + heights.unit + ", " + *unit + ")");
+    }
+    heights.unit = *unit;
+  }
+  if (periodic) heights.periodic = std::min(heights.periodic < 0 ? 1 : heights.periodic, *periodic != 0.0 ? 1 : 0);
+}
+
 NetcdfHeights read_netcdf4_heights(const std::string& path, const std::string& variable) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const auto fail = [&](const std::string& what) { return std::runtime_error(path + ": " + what + " (NetCDF-4)"); };
@@ -165,20 +182,12 @@ NetcdfHeights read_netcdf4_heights(const std::string& path, const std::string& v
   if (H5Tget_class(type) != H5T_FLOAT && H5Tget_class(type) != H5T_INTEGER) throw fail("'" + variable + "' holds no numbers");
   out.values.resize(out.nx * out.ny);
   check(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data()), "read " + variable + " in " + path);
-  for (const char* axis : {"x", "y"}) {
-    if (H5Lexists(file, axis, H5P_DEFAULT) <= 0) continue;
-    Handle v(H5Oopen(file, axis, H5P_DEFAULT), H5Oclose, std::string("open ") + axis + " in " + path);
-    if (const std::optional<double> length = number_attribute(v, "length")) {
-      if (!(std::isfinite(*length) && *length > 0.0)) throw fail(std::string(axis) + ":length is not a length > 0");
-      (axis[0] == 'x' ? out.length_x : out.length_y) = *length;
-    }
-    if (const std::optional<std::string> unit = text_attribute(v, "length_unit"); unit && !unit->empty()) {
-      if (!out.unit.empty() && out.unit != *unit) throw fail("x and y have different length units (" + out.unit + ", " + *unit + ")");
-      out.unit = *unit;
-    }
-    if (const std::optional<double> periodic = number_attribute(v, "periodic")) {
-      out.periodic = std::min(out.periodic < 0 ? 1 : out.periodic, *periodic != 0.0 ? 1 : 0);
-    }
+  for (const char axis : {'x', 'y'}) {
+    const std::string name(1, axis);
+    if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) continue;
+    Handle v(H5Oopen(file, name.c_str(), H5P_DEFAULT), H5Oclose, "open " + name + " in " + path);
+    take_axis_attributes(out, axis, number_attribute(v, "length"), text_attribute(v, "length_unit"),
+                         number_attribute(v, "periodic"), path, "NetCDF-4");
   }
   return out;
 }

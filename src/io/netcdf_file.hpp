@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +60,14 @@ struct NetcdfHeights {
   std::string unit;             ///< empty where not stated
   int periodic = -1;            ///< -1 where not stated
 };
+
+/// Takes what one of the variables `x` and `y` says (`axis` 'x' or 'y'; each attribute
+/// where present) into `heights`: a length > 0, one unit for both, periodic only if both say
+/// so. Throws std::runtime_error "PATH: WHAT (FORMAT)" for a bad length or two units. Both
+/// NetCDF readers (NetCDF-4 here, NetCDF-3 in input/height_map.cpp) go through it.
+void take_axis_attributes(NetcdfHeights& heights, char axis, std::optional<double> length,
+                          const std::optional<std::string>& unit, std::optional<double> periodic,
+                          const std::string& path, const std::string& format);
 
 /// Reads `variable` of the HDF5 file `path` and the attributes of `x` and `y`. Throws
 /// std::runtime_error naming the file and what is missing or unreadable.
