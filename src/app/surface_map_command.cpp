@@ -263,11 +263,11 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
     map.grid[g] = run.curve.nx;
     map.from_tables[g] = run.curve_source == CurveSource::tables ? 1 : 0;
     map.curve_seconds[g] = seconds;
-    const std::vector<model::LevelTouch> first =
-        model::level_touches(run.curve, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading));
+    // Each level's touchdown load and whether the curve resolves it: the geometry's alone,
+    // as the run read them.
     for (std::size_t level = 0; level < L; ++level) {
-      map.X_star[g * L + level] = first[level].X_star;
-      map.resolved[g * L + level] = first[level].resolved ? 1 : 0;
+      map.X_star[g * L + level] = run.history.levels[level].X_star;
+      map.resolved[g * L + level] = run.history.levels[level].resolved ? 1 : 0;
     }
     // Each load point off the curve: the law's values (the run's, the axes' in place).
     std::vector<double> law_values = run.inputs.law_values;
@@ -310,11 +310,18 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   return map;
 }
 
+namespace {
+/// Why the map may not be written to `path` (io::output_file_problem's rule, and an existing
+/// file without `overwrite`), or empty.
+std::string map_output_problem(const std::string& path, bool overwrite) {
+  if (std::string problem = io::output_file_problem(path); !problem.empty()) return problem;
+  if (!overwrite && std::filesystem::exists(path)) return path + " exists: give --overwrite to replace it";
+  return {};
+}
+}  // namespace
+
 void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite) {
-  if (const std::string problem = io::output_file_problem(path); !problem.empty()) throw input::UsageError(problem);
-  if (!overwrite && std::filesystem::exists(path)) {
-    throw input::UsageError(path + " exists: give --overwrite to replace it");
-  }
+  if (const std::string problem = map_output_problem(path, overwrite); !problem.empty()) throw input::UsageError(problem);
   const std::string partial = path + ".partial";
   try {
     io::NetcdfFile file(partial);
@@ -470,9 +477,8 @@ int run_surface_map_command(const std::vector<std::string>& args) {
     // Rank 0 checks the output before any curve is built; every rank learns the verdict.
     int refused = 0;
     if (root) {
-      const std::string problem = io::output_file_problem(output);
-      if (!problem.empty() || (!overwrite && std::filesystem::exists(output))) {
-        std::cerr << "punchsweep surface-map: " << (problem.empty() ? output + " exists: give --overwrite to replace it" : problem) << "\n";
+      if (const std::string problem = map_output_problem(output, overwrite); !problem.empty()) {
+        std::cerr << "punchsweep surface-map: " << problem << "\n";
         refused = 1;
       }
     }
