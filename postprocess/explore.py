@@ -328,12 +328,6 @@ def open_surface_map(path: str):
         raise pm.MapError(f"{path}: not a readable surface map ({e})") from None
 
 
-def surface_unit(variable) -> str:
-    """The unit a surface map's variable is shown in: its scale where it is a pure number in
-    one (units "1", scaled_by "R"), else its units."""
-    return str(variable.attrs.get("scaled_by", variable.attrs.get("units", "")))
-
-
 def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
     """A surface map (surface-map's file) as the page reads a regime map: its axes (the
     geometry's, the load's and level: a slider, level 1 first), each level's regime and t*
@@ -353,24 +347,23 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
     for n in names:
         values = np.asarray(ds[n].values, dtype=float)
         log = values.size > 2 and values.min() > 0 and values.max() / values.min() >= 10
-        unit = surface_unit(ds[n])
+        unit = pm.scaled_unit(ds[n])
         axes.append({"name": n, "values": [float(v) for v in values], "scaled": [float(v) for v in values],
                      "unit": unit, "log": bool(log), "labels": None,
                      "label": f"{n}: {attr_text(ds[n].attrs.get('long_name', n))}" + (f" [{unit}]" if unit not in ("", "1") else "")})
     regime = ds["regime"].transpose(*names)
-    flags = {"regime": {"data": packed(regime.values, "<i1"),
-                        "codes": {str(int(c)): m for c, m in zip(np.atleast_1d(regime.attrs["flag_values"]),
-                                                                 attr_text(regime.attrs["flag_meanings"]).split())}}}
+    f = pm.flags(ds, "regime")
+    flags = {"regime": {"data": packed(regime.values, "<i1"), "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}}
     variables = {}
     for v in ("t_star", "X_star"):
         da = ds[v].broadcast_like(regime).transpose(*names)
-        variables[v] = {"unit": surface_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
+        variables[v] = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
                         "data": packed(da.values, "<f8")}
     series = {}
     trusted = ds["valid"] == 0
     for v in ("touched", "area_fraction"):
         da = ds[v].where(trusted).broadcast_like(regime).transpose(*names, "t")
-        series[v] = {"unit": surface_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
+        series[v] = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
                      "data": packed(da.values, "<f8")}
     texture = json.loads(attr_text(ds.attrs.get("texture", "{}")))
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if k != "times")

@@ -240,6 +240,13 @@ def value_text(value) -> str:
     return value if isinstance(value, str) else f"{value:.6g}"
 
 
+def scaled_unit(variable) -> str:
+    """A variable's unit as a file the engine wrote without open_map's conversion (a surface
+    map) labels it: its scale where it is a pure number in one (units "1", scaled_by "R"),
+    else its units."""
+    return str(variable.attrs.get("scaled_by", variable.attrs.get("units", "")))
+
+
 def units(ds, name: str) -> str:
     """The unit a variable is shown in, as open_map leaves it in `units`: physical where the
     map knows the scale (um, kPa, s, N), else the scale ("R", "E0/(1-nu^2)", "T_eps", "1")."""

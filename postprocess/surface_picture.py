@@ -94,12 +94,6 @@ def log_scaled(values: np.ndarray) -> bool:
     return values.size > 1 and values.min() > 0 and values.max() / values.min() >= 10
 
 
-def unit_of(variable) -> str:
-    """A variable's unit as a label: its scale where it is a pure number in one (units "1",
-    scaled_by "T_eps"), else its units."""
-    return variable.attrs.get("scaled_by", variable.attrs.get("units", ""))
-
-
 def render(ds, said: list[str], time: float | None = None):
     import matplotlib
     matplotlib.use("Agg")
@@ -115,7 +109,7 @@ def render(ds, said: list[str], time: float | None = None):
     touched = "touched" in ds and "t" in ds.touched.dims and ds.sizes["t"] > 0
     fig, panels = plt.subplots(1, len(levels) + touched, figsize=(4.6 * (len(levels) + touched) + 0.6, 4.0),
                                layout="constrained", squeeze=False)
-    unit = unit_of(ds.t_star)
+    unit = pm.scaled_unit(ds.t_star)
     for panel, level in zip(panels[0], levels):
         t = ds.t_star.sel(level=level).transpose(*axes[::-1]) if axes else ds.t_star.sel(level=level)
         r = ds.regime.sel(level=level).transpose(*axes[::-1]) if axes else ds.regime.sel(level=level)
@@ -133,7 +127,7 @@ def render(ds, said: list[str], time: float | None = None):
                 fig.colorbar(mesh, ax=panel, label=f"log10 t* ({unit})")
             panel.legend(handles=[Patch(color="#d9d9d9", label="touches at once"),
                                   Patch(color="#404040", label="never touches")], fontsize=7, loc="upper left")
-            panel.set_ylabel(f"{axes[1]} ({unit_of(ds[axes[1]])})")
+            panel.set_ylabel(f"{axes[1]} ({pm.scaled_unit(ds[axes[1]])})")
         else:
             late = np.where(r.values == DELAYED, t.values, np.nan)
             panel.plot(x, late, marker="o", label="delayed: t*")
@@ -147,7 +141,7 @@ def render(ds, said: list[str], time: float | None = None):
             panel.legend(fontsize=7)
         if log_scaled(x):
             panel.set_xscale("log")
-        panel.set_xlabel(f"{axes[0]} ({unit_of(ds[axes[0]])})" if axes else "")
+        panel.set_xlabel(f"{axes[0]} ({pm.scaled_unit(ds[axes[0]])})" if axes else "")
         panel.set_title(f"level {level}: X* = " + ", ".join(f"{v:.3g}" for v in np.atleast_1d(ds.X_star.sel(level=level).values))
                         + " E0*", fontsize=9)
     if touched:
@@ -165,16 +159,16 @@ def render(ds, said: list[str], time: float | None = None):
             fig.colorbar(mesh, ax=panel, label="share of caps in contact")
             if log_scaled(y):
                 panel.set_yscale("log")
-            panel.set_ylabel(f"{axes[1]} ({unit_of(ds[axes[1]])})")
+            panel.set_ylabel(f"{axes[1]} ({pm.scaled_unit(ds[axes[1]])})")
         else:
             panel.plot(x, trusted, marker="o")
             panel.set_ylim(-0.02, 1.02)
             panel.set_ylabel("share of caps in contact")
         if log_scaled(x):
             panel.set_xscale("log")
-        panel.set_xlabel(f"{axes[0]} ({unit_of(ds[axes[0]])})")
+        panel.set_xlabel(f"{axes[0]} ({pm.scaled_unit(ds[axes[0]])})")
         blank = " (blank: flagged)" if np.isnan(trusted).any() else ""
-        panel.set_title(f"caps in contact at t = {at:.4g} {unit_of(ds.t)}{blank}", fontsize=9)
+        panel.set_title(f"caps in contact at t = {at:.4g} {pm.scaled_unit(ds.t)}{blank}", fontsize=9)
     texture = json.loads(ds.attrs.get("texture", "{}"))
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if v not in ("None", ""))
     fig.suptitle(f"each level's touch time: {words}" + (f"; {', '.join(said)}" if said else ""), fontsize=9)

@@ -126,16 +126,21 @@ def in_chromium(page: Path, cells: list, tmp_path: Path):
     return r, shot
 
 
+def regime_axes_and_codes(f):
+    """A map file's regime: its dimensions' names in order, and its codes by meaning."""
+    names = [dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
+    meanings = f["regime"].attrs["flag_meanings"]
+    meanings = (meanings.decode() if isinstance(meanings, bytes) else meanings).split()
+    return names, dict(zip(f["regime"].attrs["flag_values"], meanings))
+
+
 @pytest.mark.browser
 @pytest.mark.parametrize("which", ["default", "material"])
 def test_the_page_in_chromium(maps, tmp_path, which):
     path, page = maps[which]
     r, shot = in_chromium(page, [[0, 0], [4, 6], [9, 11], [7, 3]], tmp_path)
     with h5py.File(path) as f:
-        names = [dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
-        meanings = f["regime"].attrs["flag_meanings"]
-        meanings = (meanings.decode() if isinstance(meanings, bytes) else meanings).split()
-        codes = dict(zip(f["regime"].attrs["flag_values"], meanings))
+        names, codes = regime_axes_and_codes(f)
         length = 50.0 if which == "material" else 1.0  # the page shows lengths in um
         for cell in r["cells"]:
             index = tuple(cell["index"])
@@ -385,10 +390,7 @@ def test_a_surface_map_in_chromium(tmp_path):
     assert done.returncode == 0, done.stderr
     r, _ = in_chromium(page, [[0, 0], [4, 2], [2, 1], [3, 0]], tmp_path)
     with h5py.File(path) as f:
-        names = [dim[0].name.rsplit("/", 1)[-1] for dim in f["regime"].dims]
-        meanings = f["regime"].attrs["flag_meanings"]
-        meanings = (meanings.decode() if isinstance(meanings, bytes) else meanings).split()
-        codes = dict(zip(f["regime"].attrs["flag_values"], meanings))
+        names, codes = regime_axes_and_codes(f)
         for cell in r["cells"]:
             index = tuple(cell["index"])
             assert index[names.index("pbar")] == cell["ix"] and index[names.index("dh")] == cell["iy"]
