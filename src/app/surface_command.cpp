@@ -342,22 +342,17 @@ reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeighte
   return reference::make_cell(run.geometry, grid);
 }
 
-/// The two-level square lattice's curve off the periodic model's tables, where they reach
-/// its dh (else empty).
-std::optional<model::LoadCurve> tables_curve(const SurfaceRun& run) {
-  const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
-  return model::periodic_load_curve(solution, run.inputs.problem);
-}
-
 /// The curve as far as the times reach, and the history on it.
 void evaluate(SurfaceRun& run, bool progress) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   const auto start = std::chrono::steady_clock::now();
   std::optional<model::LoadCurve> tabulated;
   if (run.curve_source != CurveSource::cell) {
-    tabulated = tables_curve(run);
+    // The two-level square lattice's curve off the periodic model's tables, where they
+    // reach its dh.
+    const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
+    tabulated = model::periodic_load_curve(solution, run.inputs.problem);
     if (!tabulated && run.curve_source == CurveSource::tables) {
-      const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
       const model::PeriodicScales scales(run.inputs.problem);
       std::ostringstream why;
       why << "--curve tables: dh = " << run.inputs.problem.dh << " R is outside the tables' range: dh <= "
