@@ -30,14 +30,19 @@ void NetcdfFile::attribute(const std::string& name, const std::string& value) {
   write_string_attribute(file_, name.c_str(), value, "in " + path_);
 }
 
+hid_t NetcdfFile::scale(const std::string& dim, const std::string& where) const {
+  const auto found = std::find_if(coordinates_.begin(), coordinates_.end(), [&](const auto& c) { return c.first == dim; });
+  if (found == coordinates_.end()) throw std::invalid_argument("NetcdfFile: no coordinate '" + dim + "' for " + where);
+  return found->second;
+}
+
 Handle NetcdfFile::create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type,
                           std::size_t count) {
   const std::string where = "'" + name + "' in " + path_;
   std::vector<hsize_t> shape;
   for (const std::string& dim : dims) {
-    const auto found = std::find_if(coordinates_.begin(), coordinates_.end(), [&](const auto& c) { return c.first == dim; });
-    if (found == coordinates_.end()) throw std::invalid_argument("NetcdfFile: no coordinate '" + dim + "' for " + where);
-    shape.push_back(static_cast<hsize_t>(H5Sget_simple_extent_npoints(Handle(H5Dget_space(found->second), H5Sclose, "space of " + dim))));
+    shape.push_back(static_cast<hsize_t>(
+        H5Sget_simple_extent_npoints(Handle(H5Dget_space(scale(dim, where)), H5Sclose, "space of " + dim))));
   }
   std::size_t expected = 1;
   for (const hsize_t n : shape) expected *= static_cast<std::size_t>(n);
@@ -57,8 +62,7 @@ void NetcdfFile::finish(hid_t dataset, const std::string& name, const std::vecto
                         const Attributes& attributes) {
   const std::string where = "on '" + name + "' in " + path_;
   for (std::size_t d = 0; d < dims.size(); ++d) {
-    const auto found = std::find_if(coordinates_.begin(), coordinates_.end(), [&](const auto& c) { return c.first == dims[d]; });
-    check(H5DSattach_scale(dataset, found->second, static_cast<unsigned>(d)), "attach dimension " + dims[d] + " " + where);
+    check(H5DSattach_scale(dataset, scale(dims[d], where), static_cast<unsigned>(d)), "attach dimension " + dims[d] + " " + where);
   }
   for (const auto& [key, value] : attributes) write_string_attribute(dataset, key.c_str(), value, where);
 }

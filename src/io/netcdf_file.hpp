@@ -38,6 +38,8 @@ class NetcdfFile {
   void close();
 
  private:
+  /// The coordinate (dimension scale) called `dim`; std::invalid_argument naming `where` if none.
+  hid_t scale(const std::string& dim, const std::string& where) const;
   Handle create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type, std::size_t count);
   void finish(hid_t dataset, const std::string& name, const std::vector<std::string>& dims, const Attributes& attributes);
 
