@@ -18,6 +18,7 @@
 #include "input/value_parsing.hpp"
 #include "input/axis_parser.hpp"
 #include "model/point/parameters.hpp"
+#include "model/point/point_axes.hpp"
 
 namespace po = boost::program_options;
 
@@ -266,25 +267,23 @@ PointInputs read_point_inputs(const po::variables_map& vm, const model::CreepLaw
   PointInputs inputs;
   inputs.scales = scales;
   // Each parameter read once, in the order of the options, so the first bad one is reported.
-  std::vector<const model::Parameter*> parameters = model::sweep_axes(law.parameters);
-  parameters.push_back(model::find_parameter(model::kShapeConstant));
-  for (const model::Parameter* p : parameters) {
-    const bool given = pbar && p->name == model::kPressure;
+  const model::PointAxes axes(law.parameters, false);
+  std::vector<double> values;
+  for (const model::PointAxis& axis : axes) {
+    const model::Parameter* p = axis.parameter;
+    const bool given = pbar && axis.coordinate == model::Coordinate::pressure;
     if (given && !p->admits(*pbar)) throw UsageError("--pressure gives " + p->error(*pbar));
-    inputs.values.emplace_back(p, given ? *pbar : read_parameter(vm, *p, &scales));
+    values.push_back(given ? *pbar : read_parameter(vm, *p, &scales));
+    inputs.values.emplace_back(p, values.back());
   }
-  const auto value = [&](std::string_view name) {
-    for (const auto& [p, v] : inputs.values) {
-      if (p->name == name) return v;
-    }
-    return 0.0;  // every name asked for is among the parameters read
-  };
-  inputs.problem.l = value(model::kPitch);
-  inputs.problem.dh = value(model::kHeightDifference);
-  inputs.problem.pbar0 = value(model::kPressure);
-  inputs.problem.shape = model::Shape{static_cast<int>(value(model::kExponent)), value(model::kShapeConstant)};
+  const model::Parameter& C = *model::find_parameter(model::kShapeConstant);
+  inputs.values.emplace_back(&C, read_parameter(vm, C, &scales));
+  model::PointValues point;
+  point.problem.shape.C = inputs.values.back().second;
+  axes.set(values, &point);
+  inputs.problem = point.problem;
   inputs.law = &law;
-  for (const model::Parameter& p : law.parameters) inputs.law_values.push_back(value(p.name));
+  inputs.law_values = point.law;
   try {
     inputs.creep = model::make_creep_law(law, inputs.law_values);
   } catch (const std::invalid_argument& e) {

@@ -2,6 +2,7 @@
 
 #include "model/laws/creep_laws.hpp"
 #include "model/laws/material.hpp"
+#include "model/point/point_axes.hpp"
 #include "model/problem/load_shape.hpp"
 
 namespace punchsweep::model {
@@ -20,11 +21,8 @@ const Parameter* find_parameter(std::string_view name) {
 }
 
 std::vector<const Parameter*> sweep_axes(std::span<const Parameter> law) {
-  const auto problem = [](std::string_view name) { return find_parameter(name); };
-  std::vector<const Parameter*> axes{problem(kPitch), problem(kHeightDifference)};
-  for (const Parameter& p : law) axes.push_back(&p);
-  axes.push_back(problem(kPressure));
-  axes.push_back(problem(kExponent));
+  std::vector<const Parameter*> axes;
+  for (const PointAxis& axis : PointAxes(law, false)) axes.push_back(axis.parameter);
   return axes;
 }
 

@@ -16,8 +16,9 @@ namespace punchsweep::model {
 /// (temperature) and the load's (ramp_time); nullptr if none.
 const Parameter* find_parameter(std::string_view name);
 
-/// A sweep's axes for a creep law with parameters `law`: l, dh, the law's parameters, pbar,
-/// s (for the standard linear solid: l, dh, T, pbar, s).
+/// A sweep's axes for a creep law with parameters `law`: the parameters of
+/// PointAxes(law, false) (point_axes.hpp), l, dh, the law's parameters, pbar, s (for the
+/// standard linear solid: l, dh, T, pbar, s).
 std::vector<const Parameter*> sweep_axes(std::span<const Parameter> law);
 
 }  // namespace punchsweep::model
