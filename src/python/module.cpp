@@ -9,10 +9,13 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
+#include <functional>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -38,6 +41,7 @@
 #include "model/laws/creep_laws.hpp"
 #include "model/load/creep_weighted_load.hpp"
 #include "model/point/parameters.hpp"
+#include "model/point/point_axes.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/contact/regime.hpp"
 #include "model/numerics/stop_request.hpp"
@@ -265,36 +269,70 @@ std::vector<const map::QuantitySpec*> classify_outputs(const std::vector<std::st
 /// once. `law` holds the creep law's parameters (the standard linear solid's T, or a
 /// material file's temperature where it has a shift), `ramp_time` the load's rise time
 /// (empty: a step).
-/// The law's parameters as columns of n points: the given ones, or each left out at the
-/// point command's default (a material's T_ref). Throws UsageError `wrong_count` where the
-/// columns are not one per parameter of `spec`.
-struct LawColumns {
+/// Python's columns of points by coordinate name ("l", "dh", "T", "pbar", "s", "ramp_time", ...).
+using Columns = std::map<std::string, Column>;
+
+/// The columns of n points, one per coordinate of `axes` (model::PointAxes), from `given`:
+/// a law parameter left out at the point command's default where it has one (a material's
+/// T_ref); the texture's coordinates (l, dh, s) skipped where `texture` is true. Every value
+/// is checked against its parameter's range, axis by axis in the command line's order.
+/// UsageError (`who`: the call) naming a coordinate that is not among `axes` (`unknown`
+/// says why, where it knows better), one missing, arrays of unequal size, or the first
+/// value out of range.
+struct AxisColumns {
   std::vector<std::vector<double>> defaults;  ///< the columns made of defaults
-  std::vector<const double*> values;          ///< one per parameter, n values each
+  std::vector<const double*> values;          ///< one per axis; nullptr where skipped
+  std::size_t n = 0;
 };
-LawColumns law_columns(const std::vector<Column>& law, const model::CreepLawSpec& spec, py::ssize_t n,
-                       const std::string& wrong_count) {
-  LawColumns out;
-  for (const Column& c : law) out.values.push_back(c.data());
-  if (law.empty()) {
-    for (const double v : point_defaults(spec.parameters)) {
-      out.defaults.emplace_back(static_cast<std::size_t>(n), v);
+AxisColumns axis_columns(const Columns& given, const model::PointAxes& axes, bool texture, const std::string& who,
+                         const std::function<std::string(const std::string&)>& unknown = {}) {
+  const auto skipped = [&](const model::PointAxis& axis) {
+    return texture && axis.coordinate <= model::Coordinate::height_difference;
+  };
+  std::string valid;
+  for (const model::PointAxis& axis : axes) {
+    if (!skipped(axis)) valid += (valid.empty() ? "" : ", ") + std::string(axis.parameter->name);
+  }
+  AxisColumns out;
+  bool first = true;
+  for (const auto& [name, column] : given) {
+    const std::size_t j = axes.find(name);
+    if (j == axes.size() || skipped(axes[j])) {
+      const std::string why = unknown ? unknown(name) : std::string();
+      throw input::UsageError(who + ": " + (why.empty() ? name + " is no coordinate of these points; valid: " + valid : why));
+    }
+    if (!first && static_cast<std::size_t>(column.size()) != out.n) {
+      throw std::invalid_argument(who + ": the arrays must have the same size (broadcast first)");
+    }
+    out.n = static_cast<std::size_t>(column.size());
+    first = false;
+  }
+  for (const model::PointAxis& axis : axes) {
+    const model::Parameter& p = *axis.parameter;
+    if (skipped(axis)) {
+      out.values.push_back(nullptr);
+    } else if (const auto found = given.find(std::string(p.name)); found != given.end()) {
+      out.values.push_back(found->second.data());
+    } else if (axis.coordinate == model::Coordinate::law && !p.point_default.empty()) {
+      out.defaults.emplace_back(out.n, std::stod(std::string(p.point_default)));
       out.values.push_back(out.defaults.back().data());
+    } else {
+      throw input::UsageError(who + ": " + std::string(p.name) + " is required (" + std::string(p.meaning) + ")");
     }
   }
-  if (out.values.size() != spec.parameters.size()) throw input::UsageError(wrong_count);
+  for (std::size_t j = 0; j < axes.size(); ++j) {
+    if (out.values[j] == nullptr) continue;
+    for (std::size_t i = 0; i < out.n; ++i) {
+      // admits() first: the message's string costs a scattered call 3% of its time.
+      if (!axes[j].parameter->admits(out.values[j][i])) throw input::UsageError(check(*axes[j].parameter, out.values[j][i]));
+    }
+  }
   return out;
 }
 
-py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<Column>& law, Column ramp_time,
-                  double C, const std::string& localization, const std::string& material_file,
+py::dict classify(const Columns& given, double C, const std::string& localization, const std::string& material_file,
                   const std::vector<std::string>& quantities) {
   const std::vector<const map::QuantitySpec*> wanted = classify_outputs(quantities);
-  const py::ssize_t n = l.size();
-  const bool ramp = ramp_time.size() > 0;
-  bool equal = dh.size() == n && pbar.size() == n && s.size() == n && (!ramp || ramp_time.size() == n);
-  for (const Column& c : law) equal = equal && c.size() == n;
-  if (!equal) throw std::invalid_argument("classify: the arrays must have the same size (broadcast first)");
   std::shared_ptr<const model::Material> material;
   if (!material_file.empty()) material = read_material(material_file);
   model::Localization model_localization;
@@ -304,29 +342,15 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
     throw input::UsageError(std::string("--localization: ") + e.what());  // as input::read_localization says it
   }
   const model::CreepLawSpec spec = material ? material->spec() : model::creep_laws().front();
-  // A law's parameters left out take the point command's defaults (a material's T_ref).
-  const LawColumns columns =
-      law_columns(law, spec, n,
-                  material ? "classify: " + no_shift(material_file)
-                           : "classify: the creep law " + std::string(spec.name) + " takes " +
-                                 std::to_string(spec.parameters.size()) + " parameters");
-  const std::vector<const double*>& law_values = columns.values;
   if (const std::string e = check(*model::find_parameter(model::kShapeConstant), C); !e.empty()) {
     throw input::UsageError(e);
   }
-  // The first value outside its range, axis by axis in the command line's order.
-  std::vector<std::pair<const model::Parameter*, const double*>> axes{
-      {model::find_parameter(model::kPitch), l.data()}, {model::find_parameter(model::kHeightDifference), dh.data()}};
-  for (std::size_t j = 0; j < law_values.size(); ++j) axes.emplace_back(&spec.parameters[j], law_values[j]);
-  axes.emplace_back(model::find_parameter(model::kPressure), pbar.data());
-  axes.emplace_back(model::find_parameter(model::kExponent), s.data());
-  if (ramp) axes.emplace_back(&model::ramp_time_parameter(), ramp_time.data());
-  for (const auto& [parameter, values] : axes) {
-    for (py::ssize_t i = 0; i < n; ++i) {
-      // admits() first: the message's string costs a scattered call 3% of its time.
-      if (!parameter->admits(values[i])) throw input::UsageError(check(*parameter, values[i]));
-    }
-  }
+  const model::PointAxes axes(spec.parameters, given.contains(std::string(model::ramp_time_parameter().name)));
+  // A law's parameters left out take the point command's defaults (a material's T_ref).
+  const AxisColumns columns = axis_columns(given, axes, false, "classify", [&](const std::string& name) {
+    return material && name == model::temperature_parameter().name ? no_shift(material_file) : std::string();
+  });
+  const auto n = static_cast<py::ssize_t>(columns.n);
 
   // classify's outputs: every per-point quantity of the model in the registry, in its order,
   // each under its registry name: a real as float64, a flag as its codes (the map's); the
@@ -358,43 +382,43 @@ py::dict classify(Column l, Column dh, Column pbar, Column s, const std::vector<
     // is then one run that shares its touchdown and branch, and the evaluator reads and
     // this writes memory in order (scattered points went at 5.6e5 points/s read through
     // the permutation, 6.6e5 sorted; issue 23).
+    // The points sorted by the coordinates a batch's runs are made of (l, s, dh: their
+    // touchdown and branch), their columns copied in that order: each run then shares its
+    // parts, and the evaluator reads and this writes memory in order (scattered points went
+    // at 5.6e5 points/s read through the permutation, 6.6e5 sorted; issue 23).
     const auto N = static_cast<std::size_t>(n);
-    const double* S = s.data();
-    const double* L = l.data();
-    const double* DH = dh.data();
+    const std::vector<std::size_t> nesting = axes.nesting();
+    constexpr std::size_t R = model::kRunCoordinates;
     // The keys sorted with the points' positions (within a run the points keep their order:
     // a grid's then runs over its later axes), held together so that the sort reads memory
     // in order (sorting positions through the arrays took 12% of a scattered call).
     struct Key {
-      double s, l, dh;
+      std::array<double, R> run;
       std::size_t i;
     };
     std::vector<Key> keys(N);
-    for (std::size_t i = 0; i < N; ++i) keys[i] = {S[i], L[i], DH[i], i};
-    std::sort(keys.begin(), keys.end(),
-              [](const Key& a, const Key& b) { return std::tie(a.s, a.l, a.dh, a.i) < std::tie(b.s, b.l, b.dh, b.i); });
-    const std::size_t width = 4 + law_values.size() + (ramp ? 1 : 0);
+    for (std::size_t q = 0; q < R; ++q) {
+      const double* column = columns.values[nesting[q]];
+      for (std::size_t i = 0; i < N; ++i) keys[i].run[q] = column[i];
+    }
+    for (std::size_t i = 0; i < N; ++i) keys[i].i = i;
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return std::tie(a.run, a.i) < std::tie(b.run, b.i); });
+    const std::size_t width = axes.size();
     // Every element is written below: left uninitialized (zeroing them cost 2% of a call).
     const auto sorted = std::make_unique_for_overwrite<double[]>(width * N);
     const auto order = std::make_unique_for_overwrite<std::size_t[]>(N);
     for (std::size_t k = 0; k < N; ++k) {
       order[k] = keys[k].i;
-      sorted[k] = keys[k].l;
-      sorted[N + k] = keys[k].dh;
-      sorted[3 * N + k] = keys[k].s;
+      for (std::size_t q = 0; q < R; ++q) sorted[nesting[q] * N + k] = keys[k].run[q];
     }
     std::vector<Key>().swap(keys);
-    std::vector<const double*> sources{pbar.data()};  // the columns from 2 on, but s
-    sources.insert(sources.end(), law_values.begin(), law_values.end());
-    if (ramp) sources.push_back(ramp_time.data());
-    for (std::size_t j = 0; j < sources.size(); ++j) {
-      double* column = &sorted[(j == 0 ? 2 : 3 + j) * N];
-      for (std::size_t k = 0; k < N; ++k) column[k] = sources[j][order[k]];
+    for (std::size_t q = R; q < width; ++q) {
+      const double* from = columns.values[nesting[q]];
+      double* column = &sorted[nesting[q] * N];
+      for (std::size_t k = 0; k < N; ++k) column[k] = from[order[k]];
     }
-    const auto column = [&](std::size_t j) { return std::span<const double>(&sorted[j * N], N); };
-    sweep::PointColumns points{column(0), column(1), column(2), column(3), {}, {}};
-    for (std::size_t j = 0; j < law_values.size(); ++j) points.law.push_back(column(4 + j));
-    if (ramp) points.ramp_time = column(width - 1);
+    sweep::PointColumns points{&axes, {}};
+    for (std::size_t j = 0; j < width; ++j) points.columns.emplace_back(&sorted[j * N], N);
 
     // Each point's answers read off its summary as the registry says, in sorted order, then
     // put back in the points' order: writing each straight to its point's position took
@@ -550,32 +574,21 @@ py::dict fit_command(const input::Keywords& keywords) {
 /// `punchsweep surface`, without the load's) at many points of pressure, law parameters and
 /// ramp: one load curve (to full contact, cached), then the classification at each point
 /// from the levels' touchdown loads. The grid (auto) is the one the least pressure asks.
-py::dict surface_classify(const input::Keywords& texture, Column pbar, const std::vector<Column>& law, Column ramp_time) {
-  const py::ssize_t n = pbar.size();
-  const bool ramp = ramp_time.size() > 0;
-  bool equal = !ramp || ramp_time.size() == n;
-  for (const Column& c : law) equal = equal && c.size() == n;
-  if (!equal || n == 0) throw std::invalid_argument("surface_classify: the arrays must have the same size > 0 (broadcast first)");
+py::dict surface_classify(const input::Keywords& texture, const Columns& given) {
   const input::PointMaterial material = input::find_point_material(texture);
   const model::CreepLawSpec& spec = material.spec;
-  const LawColumns columns = law_columns(law, spec, n,
-                                         "surface_classify: the creep law " + std::string(spec.name) + " takes " +
-                                             std::to_string(spec.parameters.size()) + " parameters");
-  const std::vector<const double*>& law_values = columns.values;
-  std::vector<std::pair<const model::Parameter*, const double*>> axes;
-  for (std::size_t j = 0; j < law_values.size(); ++j) axes.emplace_back(&spec.parameters[j], law_values[j]);
-  axes.emplace_back(model::find_parameter(model::kPressure), pbar.data());
-  if (ramp) axes.emplace_back(&model::ramp_time_parameter(), ramp_time.data());
-  for (const auto& [parameter, values] : axes) {
-    for (py::ssize_t i = 0; i < n; ++i) {
-      if (!parameter->admits(values[i])) throw input::UsageError(check(*parameter, values[i]));
-    }
-  }
+  const model::PointAxes axes(spec.parameters, given.contains(std::string(model::ramp_time_parameter().name)));
+  const AxisColumns columns = axis_columns(given, axes, true, "surface_classify");
+  if (columns.n == 0) throw std::invalid_argument("surface_classify: the arrays must have the same size > 0");
+  const auto n = static_cast<py::ssize_t>(columns.n);
+  const double* pbar = columns.values[axes.find(model::Coordinate::pressure)];
+  std::vector<const double*> law_values;
+  for (const std::size_t j : axes.law()) law_values.push_back(columns.values[j]);
   // The texture's curve, from a run at the least pressure (its grid, under --grid auto).
   py::ssize_t least = 0;
-  for (py::ssize_t i = 1; i < n; ++i) least = pbar.data()[i] < pbar.data()[least] ? i : least;
+  for (py::ssize_t i = 1; i < n; ++i) least = pbar[i] < pbar[least] ? i : least;
   input::Keywords keywords = texture;
-  keywords.emplace_back("pbar", input::json_number(pbar.data()[least]));
+  keywords.emplace_back("pbar", input::json_number(pbar[least]));
   for (std::size_t j = 0; j < law_values.size(); ++j) {
     keywords.emplace_back(std::string(spec.parameters[j].name), input::json_number(law_values[j][least]));
   }
@@ -588,12 +601,14 @@ py::dict surface_classify(const input::Keywords& texture, Column pbar, const std
   std::int8_t* r_data = regime.mutable_data();
   {
     py::gil_scoped_release release;
-    std::vector<double> values(law_values.size());
+    model::PointValues point;
+    point.law.resize(law_values.size());
     for (py::ssize_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < values.size(); ++j) values[j] = law_values[j][i];
-      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(spec, values);
-      const model::LoadShape shape = ramp && ramp_time.data()[i] > 0.0 ? model::LoadShape::ramp(ramp_time.data()[i]) : model::LoadShape{};
-      const model::CreepWeightedLoad load(*creep, pbar.data()[i], shape);
+      for (std::size_t j = 0; j < axes.size(); ++j) {
+        if (columns.values[j] != nullptr) model::set_coordinate(axes[j], columns.values[j][i], &point);
+      }
+      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(spec, point.law);
+      const model::CreepWeightedLoad load(*creep, point.problem.pbar0, point.problem.loading);
       const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
       for (std::size_t level = 0; level < L; ++level) {
         t_data[static_cast<std::size_t>(i) * L + level] = touches[level].t_star;
@@ -642,14 +657,15 @@ PYBIND11_MODULE(_core, m) {
         "keyword output and returns its path");
   m.def("surface", &app::surface_json, py::arg("keywords"),
         "punchsweep surface of (option name, value text) pairs, in-process: its JSON text");
-  m.def("surface_classify", &surface_classify, py::arg("texture"), py::arg("pbar"), py::arg("law"), py::arg("ramp_time"),
-        "each level's regime and t* of one texture (surface's keywords without the load's) at equal-sized 1-D arrays "
-        "of pbar, the law's parameters (a list of arrays) and ramp_time (empty for a step)");
-  m.def("classify", &classify, py::arg("l"), py::arg("dh"), py::arg("pbar"), py::arg("s"), py::arg("law"),
-        py::arg("ramp_time"), py::arg("C"), py::arg("localization"), py::arg("material"), py::arg("quantities"),
-        "the map's per-point quantities (those named in quantities; all where it is empty) of equal-sized 1-D "
-        "arrays of points, the creep law's parameters as a list of such arrays, ramp_time empty for a step (the "
-        "GIL released)");
+  m.def("surface_classify", &surface_classify, py::arg("texture"), py::arg("columns"),
+        "each level's regime and t* of one texture (surface's keywords without the load's) at points given as "
+        "equal-sized 1-D arrays by coordinate name (pbar, the law's parameters, ramp_time: point_axes without the "
+        "texture's)");
+  m.def("classify", &classify, py::arg("columns"), py::arg("C"), py::arg("localization"), py::arg("material"),
+        py::arg("quantities"),
+        "the map's per-point quantities (those named in quantities; all where it is empty) of points given as "
+        "equal-sized 1-D arrays by coordinate name (point_axes: l, dh, the law's parameters, pbar, s, ramp_time "
+        "for a ramp; a law's parameter left out at its default where it has one; the GIL released)");
   m.def("regime_codes", &regime_codes, "the map's regime codes and their names");
   m.def("has_unit", &input::has_unit, py::arg("text"),
         "whether TEXT carries a unit (2kPa yes, 0.5 and 1e-3 no): the engine's rule for a physical value");

@@ -13,6 +13,14 @@
 #include "model/problem/load_shape.hpp"
 
 namespace punchsweep::sweep {
+
+/// PointColumns' columns by what they set: each part of a point depends on its own few.
+struct BatchEvaluator::Columns {
+  std::span<const double> l, dh, pbar, s;
+  std::vector<std::span<const double>> law;
+  std::span<const double> ramp_time;  ///< empty: every point has the evaluator's loading
+};
+
 namespace {
 
 // Bounds on the caches (entries). A run's parts for the paper's model hold a long-term
@@ -31,7 +39,8 @@ bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::b
 
 // Appends what tells point k's material from another's: its creep-law values, then its
 // ramp_time (0 where every point has the evaluator's loading).
-void append_material_key(const PointColumns& points, std::size_t k, std::vector<double>* key) {
+template <class Columns>
+void append_material_key(const Columns& points, std::size_t k, std::vector<double>* key) {
   for (const std::span<const double> column : points.law) key->push_back(column[k]);
   key->push_back(points.ramp_time.empty() ? 0.0 : points.ramp_time[k]);
 }
@@ -51,7 +60,7 @@ BatchEvaluator::BatchEvaluator(const model::CreepLawSpec& law, double C, model::
       elastic_(kLog2Elastic),
       runs_(5 + law.parameters.size(), kMaxRuns) {}
 
-const BatchEvaluator::Material& BatchEvaluator::material_at(const PointColumns& points, std::size_t k) {
+const BatchEvaluator::Material& BatchEvaluator::material_at(const Columns& points, std::size_t k) {
   key_.clear();
   append_material_key(points, k, &key_);
   const bool cached = memory_ == Memory::run;
@@ -82,17 +91,30 @@ model::SingleLevelEnds BatchEvaluator::ends_at(const model::ContactProblem& prob
   return {single_at(problem, load.initial(), cached).h, final_state.h, final_state.a1};
 }
 
-void BatchEvaluator::summarize(const PointColumns& points, BatchSink& sink, const model::StopRequest& stop) {
-  const std::size_t n = points.size();
-  if (points.law.size() != law_.parameters.size()) {
+void BatchEvaluator::summarize(const PointColumns& columns, BatchSink& sink, const model::StopRequest& stop) {
+  const model::PointAxes& axes = *columns.axes;
+  const std::size_t n = columns.size();
+  bool fits = columns.columns.size() == axes.size() && axes.law().size() == law_.parameters.size();
+  for (std::size_t j = 0; fits && j < axes.law().size(); ++j) {
+    fits = axes[axes.law()[j]].parameter->name == law_.parameters[j].name;
+  }
+  if (!fits) {
     throw std::invalid_argument("batch: the creep law " + std::string(law_.name) + " has " +
                                 std::to_string(law_.parameters.size()) + " parameters, the points " +
-                                std::to_string(points.law.size()));
+                                std::to_string(axes.law().size()) + " and " + std::to_string(columns.columns.size()) +
+                                " columns for " + std::to_string(axes.size()) + " coordinates");
   }
-  bool equal = points.dh.size() == n && points.pbar.size() == n && points.s.size() == n &&
-               (points.ramp_time.empty() || points.ramp_time.size() == n);
-  for (const std::span<const double> column : points.law) equal = equal && column.size() == n;
+  bool equal = true;
+  for (const std::span<const double> column : columns.columns) equal = equal && column.size() == n;
   if (!equal) throw std::invalid_argument("batch: the point columns differ in length");
+  const auto column = [&](model::Coordinate c) {
+    const std::size_t j = axes.find(c);
+    return j < axes.size() ? columns.columns[j] : std::span<const double>();
+  };
+  Columns points{column(model::Coordinate::pitch), column(model::Coordinate::height_difference),
+                 column(model::Coordinate::pressure), column(model::Coordinate::exponent), {},
+                 column(model::Coordinate::ramp_time)};
+  for (const std::size_t j : axes.law()) points.law.push_back(columns.columns[j]);
 
   model::ContactProblem problem;
   problem.localization = localization_;

@@ -9,20 +9,20 @@
 #include "model/problem/contact_problem.hpp"
 #include "model/laws/creep_law.hpp"
 #include "model/laws/creep_laws.hpp"
+#include "model/point/point_axes.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "sweep/value_cache.hpp"
 
 namespace punchsweep::sweep {
 
-/// Points as columns of equal length: the problem's coordinates, the creep law's
-/// parameters (in its order, model::CreepLawSpec::parameters) and, where the load is a
-/// ramp of its own at each point, ramp_time (model::ramp_time_parameter()).
+/// Points as columns of equal length, one per coordinate of `axes` (model::PointAxes: l,
+/// dh, the creep law's parameters, pbar, s, and ramp_time where each point has a ramp of
+/// its own), in its order.
 struct PointColumns {
-  std::span<const double> l, dh, pbar, s;
-  std::vector<std::span<const double>> law;
-  std::span<const double> ramp_time;  ///< empty: every point has the evaluator's loading
-  std::size_t size() const { return l.size(); }
+  const model::PointAxes* axes;
+  std::vector<std::span<const double>> columns;
+  std::size_t size() const { return columns.empty() ? 0 : columns.front().size(); }
 };
 
 /// One evaluated point, as the batch evaluator hands it on.
@@ -67,8 +67,8 @@ class BatchEvaluator {
   /// Hands every point of `points` to `sink`, in the columns' order. `stop` is checked
   /// before the first point, then every 64 points and before building a run's parts once
   /// 8 points have passed (model::Stopped).
-  /// Throws std::invalid_argument when the columns do not fit the law (a missing or extra
-  /// parameter, unequal lengths).
+  /// Throws std::invalid_argument when the columns do not fit the law (axes of another
+  /// law, a column missing or extra, unequal lengths).
   void summarize(const PointColumns& points, BatchSink& sink, const model::StopRequest& stop = {});
 
  private:
@@ -77,7 +77,8 @@ class BatchEvaluator {
     std::unique_ptr<model::CreepLaw> creep;
     model::LoadShape loading;
   };
-  const Material& material_at(const PointColumns& points, std::size_t k);
+  struct Columns;  // the columns by what they set
+  const Material& material_at(const Columns& points, std::size_t k);
   model::SingleLevelState single_at(const model::ContactProblem& problem, double X, bool cached);
   model::SingleLevelEnds ends_at(const model::ContactProblem& problem, const model::CreepLaw& creep, bool cached);
 

@@ -94,26 +94,20 @@ TileEvaluator::TileEvaluator(const map::Grid& grid, const model::CreepLawSpec& l
       C_(C),
       times_(std::move(times)),
       quantities_(quantities),
-      l_(require_axis(grid, model::kPitch)),
-      dh_(require_axis(grid, model::kHeightDifference)),
-      pbar_(require_axis(grid, model::kPressure)),
-      s_(require_axis(grid, model::kExponent)),
+      axes_(law.parameters, grid.find(model::ramp_time_parameter().name) < grid.rank()),
       loading_(std::move(loading)),
       localization_(localization),
       tolerance_(std::move(tolerance)),
       batch_(law, C, localization, loading_) {
-  for (const model::Parameter& p : law.parameters) material_.push_back(require_axis(grid, p.name));
+  for (const model::PointAxis& axis : axes_) grid_axis_.push_back(require_axis(grid, axis.parameter->name));
+  if (grid.rank() != axes_.size()) {
+    throw std::invalid_argument("sweep: the grid has axes beyond the model's and the creep law's parameters");
+  }
+  nesting_ = axes_.nesting();
   for (model::StatedTolerance& t : tolerance_) {
     for (const model::Parameter& p : law.parameters) {
       if (p.name == t.parameter->name) t.parameter = &p;
     }
-  }
-  law_axes_ = material_.size();
-  if (const std::size_t ramp = grid.find(model::ramp_time_parameter().name); ramp < grid.rank()) {
-    material_.push_back(ramp);
-  }
-  if (grid.rank() != 4 + material_.size()) {
-    throw std::invalid_argument("sweep: the grid has axes beyond the model's and the creep law's parameters");
   }
   if (reference.on()) {
     if (reference.rule == ReferenceConfig::SampleRule::count) {
@@ -159,7 +153,7 @@ class TileSink final : public BatchSink {
   // t* over the box about the point, and the regimes at its ends (map::Source::tolerance).
   void store_range(const BatchPoint& p, std::size_t i) {
     law_values_.clear();
-    for (const std::span<const double>& column : columns_.law) law_values_.push_back(column[p.k]);
+    for (const std::size_t j : columns_.axes->law()) law_values_.push_back(columns_.columns[j][p.k]);
     model::PointSummary range;
     try {
       range.t_star_range = model::t_star_range(p.problem, law_, law_values_, tolerance_);
@@ -188,53 +182,33 @@ void TileEvaluator::evaluate(const map::TileBox& box, map::TileData* out, Refere
   const map::Index& c = box.count;
   const auto value = [&](std::size_t axis, std::size_t i) { return grid_.axes[axis].values[box.start[axis] + i]; };
 
-  // The box's points as columns, in the order (l, s, dh, the material axes, pbar), so that
-  // each (s, l, dh) is one run for the batch evaluator; index maps them to the tile's
+  // The box's points as columns, one per coordinate, in the order of a batch's runs
+  // (model::PointAxes::nesting: l, s, dh, the law's parameters, ramp_time, pbar), so that
+  // each (l, s, dh) is one run for the batch evaluator; index maps them to the tile's
   // row-major positions.
   map::Index stride(c.size(), 1);
   for (std::size_t a = c.size() - 1; a-- > 0;) stride[a] = stride[a + 1] * c[a + 1];
-  std::size_t materials = 1;
-  for (const std::size_t a : material_) materials *= c[a];
-  std::vector<double> material_values(materials * material_.size());
-  std::vector<std::size_t> material_offset(materials);  // in the box, from the strides
-  for (std::size_t m = 0; m < materials; ++m) {
-    std::size_t rest = m;
-    material_offset[m] = 0;
-    for (std::size_t k = material_.size(); k-- > 0; rest /= c[material_[k]]) {
-      const std::size_t a = material_[k];
-      const std::size_t i = rest % c[a];  // the position on material axis a within the box
-      material_offset[m] += i * stride[a];
-      material_values[m * material_.size() + k] = value(a, i);
-    }
-  }
   const std::size_t points = box.points();
-  const std::size_t columns = 4 + material_.size();
-  columns_.resize(points * columns);
+  const std::size_t width = axes_.size();
+  columns_.resize(points * width);
   index_.resize(points);
-  const auto column = [&](std::size_t j) { return std::span<double>(&columns_[j * points], points); };
-  const std::span<double> l = column(0), dh = column(1), pbar = column(2), s = column(3);
-  std::size_t k = 0;
-  for (std::size_t il = 0; il < c[l_]; ++il) {
-    for (std::size_t is = 0; is < c[s_]; ++is) {
-      for (std::size_t idh = 0; idh < c[dh_]; ++idh) {
-        for (std::size_t m = 0; m < materials; ++m) {
-          for (std::size_t ip = 0; ip < c[pbar_]; ++ip, ++k) {
-            l[k] = value(l_, il);
-            s[k] = value(s_, is);
-            dh[k] = value(dh_, idh);
-            pbar[k] = value(pbar_, ip);
-            for (std::size_t j = 0; j < material_.size(); ++j) {
-              columns_[(4 + j) * points + k] = material_values[m * material_.size() + j];
-            }
-            index_[k] = il * stride[l_] + idh * stride[dh_] + material_offset[m] + ip * stride[pbar_] + is * stride[s_];
-          }
-        }
-      }
+  std::vector<std::size_t> at(width, 0);  // each coordinate's position within the box
+  for (std::size_t k = 0; k < points; ++k) {
+    std::size_t index = 0;
+    for (std::size_t j = 0; j < width; ++j) {
+      const std::size_t a = grid_axis_[j];
+      columns_[j * points + k] = value(a, at[j]);
+      index += at[j] * stride[a];
+    }
+    index_[k] = index;
+    for (std::size_t q = width; q-- > 0;) {  // the next point: the innermost coordinate first
+      const std::size_t j = nesting_[q];
+      if (++at[j] < c[grid_axis_[j]]) break;
+      at[j] = 0;
     }
   }
-  PointColumns batch{l, dh, pbar, s, {}, {}};
-  for (std::size_t j = 0; j < law_axes_; ++j) batch.law.push_back(column(4 + j));
-  if (material_.size() > law_axes_) batch.ramp_time = column(4 + law_axes_);
+  PointColumns batch{&axes_, {}};
+  for (std::size_t j = 0; j < width; ++j) batch.columns.emplace_back(&columns_[j * points], points);
   const model::EvaluationOptions options{times_, {}};
   TileSink sink(out, index_, full ? &options : nullptr, tolerance_, law_, batch);
   batch_.summarize(batch, sink, stop);
@@ -285,28 +259,25 @@ std::vector<std::uint64_t> TileEvaluator::chosen_by_model(ReferenceConfig::Sampl
   return chosen;
 }
 
-model::ContactProblem TileEvaluator::problem_at(const map::Index& at, std::vector<double>* law_values) const {
-  const auto value = [&](std::size_t axis) { return grid_.axes[axis].values[at[axis]]; };
-  model::ContactProblem problem;
-  problem.l = value(l_);
-  problem.dh = value(dh_);
-  problem.pbar0 = value(pbar_);
-  problem.shape = model::Shape{static_cast<int>(value(s_)), C_};
-  problem.localization = localization_;
-  law_values->clear();
-  for (std::size_t k = 0; k < law_axes_; ++k) law_values->push_back(value(material_[k]));
-  problem.loading = material_.size() > law_axes_ ? model::LoadShape::ramp(value(material_.back())) : loading_;
-  return problem;
+model::PointValues TileEvaluator::point_at(const map::Index& at) const {
+  model::PointValues point;
+  point.problem.shape.C = C_;
+  point.problem.localization = localization_;
+  point.problem.loading = loading_;
+  std::vector<double> values;
+  for (const std::size_t a : grid_axis_) values.push_back(grid_.axes[a].values[at[a]]);
+  axes_.set(values, &point);
+  return point;
 }
 
 void TileEvaluator::evaluate_reference(const map::TileBox& box, map::TileData* out,
                                        const model::StopRequest& stop) const {
-  std::vector<double> law_values;
   for (std::size_t i = 0; i < box.points(); ++i) {
     const map::Index at = box.position(i);
     if (!sample_->contains(grid_.flat_index(at))) continue;
-    const model::ContactProblem problem = problem_at(at, &law_values);
-    const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(law_, law_values);
+    const model::PointValues point = point_at(at);
+    const model::ContactProblem& problem = point.problem;
+    const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(law_, point.law);
     reference::ReferenceOptions options = reference_options_;
     reference::scale_steps_to_law(*creep, &options);
     options.stop = stop;

@@ -6,6 +6,7 @@
 
 #include "map/grid.hpp"
 #include "map/quantities.hpp"
+#include "model/point/point_axes.hpp"
 #include "model/point/sensitivity.hpp"
 #include "map/tile_data.hpp"
 #include "model/laws/creep_laws.hpp"
@@ -20,9 +21,9 @@
 namespace punchsweep::sweep {
 
 /// Evaluates every point of a tile with the model (the same functions as
-/// `punchsweep point`). The grid's axes are the model's parameters by name
-/// (model::sweep_axes): l, dh, pbar, s and the creep law's own (for the standard linear
-/// solid T), and ramp_time when the load is a ramp. The points go through the
+/// `punchsweep point`). The grid's axes are a point's coordinates by name
+/// (model::PointAxes): l, dh, the creep law's own (for the standard linear solid T), pbar,
+/// s, and ramp_time when the load is a ramp. The points go through the
 /// BatchEvaluator (as Python's classify does), which keeps the parts that depend on fewer
 /// coordinates for the whole run of this process; each is a pure function of its
 /// coordinates, so no value depends on the tiling or the rank count. What a point stores is
@@ -38,7 +39,7 @@ namespace punchsweep::sweep {
 /// Not thread-safe (one evaluator per rank).
 class TileEvaluator {
  public:
-  /// Throws std::invalid_argument when the grid's axes are not model::sweep_axes of `law`
+  /// Throws std::invalid_argument when the grid's axes are not model::PointAxes of `law`
   /// or the reference sample does not fit the grid.
   /// `loading` is the load's shape where the grid has no ramp_time axis (a step by default);
   /// `localization` the model's (the paper's by default).
@@ -72,18 +73,18 @@ class TileEvaluator {
   /// The reference at the sampled points of `box` into out's bem_* arrays (sized already).
   void evaluate_reference(const map::TileBox& box, map::TileData* out, const model::StopRequest& stop) const;
   /// The contact problem and the creep law's parameter values at grid position `at`.
-  model::ContactProblem problem_at(const map::Index& at, std::vector<double>* law_values) const;
+  model::PointValues point_at(const map::Index& at) const;
 
   map::Grid grid_;
   const model::CreepLawSpec& law_;
   double C_;
   std::vector<double> times_;
   map::Quantities quantities_;
-  std::size_t l_, dh_, pbar_, s_;          ///< positions of the problem's axes in the grid
-  /// Positions of the law's parameters, in its order, then of ramp_time when the grid has
-  /// it: the axes that make the material and its loading.
-  std::vector<std::size_t> material_;
-  std::size_t law_axes_ = 0;               ///< how many of material_ are the law's
+  /// The point's coordinates (the law's; ramp_time where the grid has it), each coordinate's
+  /// axis in the grid, and the coordinates in the order a batch's runs nest.
+  model::PointAxes axes_;
+  std::vector<std::size_t> grid_axis_;
+  std::vector<std::size_t> nesting_;
   model::LoadShape loading_;               ///< without a ramp_time axis
   model::Localization localization_;
   std::optional<ReferenceSample> sample_;

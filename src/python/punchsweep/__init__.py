@@ -288,13 +288,10 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
     if ramp_time is not None:
         ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
     law = _law_arrays("surface_classify", T, temperature, material)
-    ramp = [] if ramp_time is None else [ramp_time]
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (pbar, *law, *ramp)))
-    shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+    shape, columns = _point_columns(dict(pbar=pbar, **law, ramp_time=ramp_time))
     keywords = _keywords(dict(material=None if material is None else os.fspath(material), R=R, **{
         k: (os.fspath(v) if k in ("cell", "height_map") and v is not None else v) for k, v in texture.items()}))
-    raw = _core.surface_classify(keywords, flat[0], flat[1:1 + len(law)], flat[1 + len(law)] if ramp else np.empty(0))
+    raw = _core.surface_classify(keywords, columns)
     levels = len(raw["X_star"])
     return {"t_star": np.asarray(raw["t_star"]).reshape(*shape, levels),
             "regime": np.asarray(raw["regime"]).reshape(*shape, levels),
@@ -527,19 +524,28 @@ def _in_scale(values, name: str, material, R):
     return np.vectorize(lambda v: _core.scaled(str(v), name, path, R), otypes=[float])(array)
 
 
-def _law_arrays(who: str, T, temperature, material) -> list:
-    """The law's parameter arrays of a vectorized call: [T] for the standard linear solid, or
-    with a material [temperature] ([] for its reference temperature, or one without a
-    shift). ValueError for T beside a material or neither."""
+def _law_arrays(who: str, T, temperature, material) -> dict:
+    """The law's parameters of a vectorized call by name: {"T": T} for the standard linear
+    solid, or with a material {"temperature": temperature} ({} for its reference temperature,
+    or one without a shift). ValueError for T beside a material or neither."""
     if material is None:
         if T is None or temperature is not None:
             raise ValueError(f"{who}: give T (the standard linear solid), or material= (and temperature= "
                              "where the material has a shift)")
-        return [T]
+        return {"T": T}
     if T is not None:
         raise ValueError(f"{who}: T is the standard linear solid's; a material's law has its own "
                          "(temperature= where the file has a shift)")
-    return [] if temperature is None else [temperature]
+    return {} if temperature is None else {"temperature": temperature}
+
+
+def _point_columns(coordinates: dict) -> tuple[tuple, dict]:
+    """The points' coordinates (name: number or array) broadcast like numpy: their shape and
+    each as a flat float64 array under its name, as _core's vectorized calls take them (the
+    engine puts each name in its place among the point's coordinates)."""
+    given = {k: v for k, v in coordinates.items() if v is not None}
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in given.values()))
+    return arrays[0].shape, {k: np.ascontiguousarray(a).reshape(-1) for k, a in zip(given, arrays)}
 
 
 def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str | None = None, *,
@@ -581,12 +587,8 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     if ramp_time is not None:
         ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
     law = _law_arrays("classify", T, temperature, material)
-    ramp = [] if ramp_time is None else [ramp_time]
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (l, dh, pbar, s, *law, *ramp)))
-    shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-    raw = _core.classify(*flat[:4], flat[4:4 + len(law)], flat[4 + len(law)] if ramp else np.empty(0),
-                         float(C), _core.default_localization if localization is None else str(localization),
+    shape, columns = _point_columns(dict(l=l, dh=dh, pbar=pbar, s=s, **law, ramp_time=ramp_time))
+    raw = _core.classify(columns, float(C), _core.default_localization if localization is None else str(localization),
                          "" if material is None else os.fspath(material),
                          [] if quantities is None else [quantities] if isinstance(quantities, str) else list(quantities))
     unit = raw.pop("time_unit")
