@@ -474,6 +474,18 @@ def test_the_documented_cell_example_runs():
     assert [lv["drop"] for lv in out["levels"]] == pytest.approx([0.0, 3.0 / 80.0], rel=1e-9)
 
 
+
+def test_surface_with_a_ramp_reads_no_load_at_t_0():
+    """A ramp starts from no load (X(0) = 0): the JSON's series hold each level's caps
+    touched there too (0, none pressed), as the text does, and every series has one value a
+    time (a reading without load once left the per-level shares empty and crashed JSON)."""
+    out = punchsweep.surface(l=0.75, dh=0.03, s=2, T=2.5, pbar=0.01, ramp=2, times=[0, 1, 5])
+    series = out["series"]
+    assert series["X"][0] == 0 and series["sites_touched"][0] == 0
+    assert series["touched_0"][0] == 0 and series["touched_1"][0] == 0
+    assert all(len(v) == 3 for v in series.values())
+    assert series["touched_0"][1] == 1 and series["touched_1"][2] == 1  # the tall at once, the short by t = 5
+
 def test_surface_map_has_a_curve_per_geometry_and_reads_the_loads_off_it(tmp_path):
     """dh as a list is a geometry axis (one curve each), pbar and T as lists load axes read
     off each curve: every level's t* and regime equal surface_classify's for that dh alone,
@@ -545,3 +557,4 @@ def test_surface_map_takes_the_scatter_width_as_an_axis():
             one = punchsweep.surface(scatter=f"normal:{width}", pbar=pbar, **common)
             np.testing.assert_array_equal(ds.touched.values[k, i], one["series"]["sites_touched"])
             assert [lv["regime"] for lv in one["levels"]] == [punchsweep.REGIMES[int(c)] for c in ds.regime.values[k, i]]
+

@@ -28,6 +28,7 @@ CurveState LoadCurve::at(double X) const {
   const std::size_t L = static_cast<std::size_t>(levels());
   out.level_load.assign(L, 0.0);
   out.level_area.assign(L, 0.0);
+  out.level_sites_touched.assign(L, 0.0);  // where it returns early (no load, past the top) as sites_touched
   if (X <= 0.0) {
     out.range = CurveRange::below_resolution;
     return out;
@@ -76,7 +77,6 @@ CurveState LoadCurve::at(double X) const {
   for (double a : out.level_area) area += a;
   out.area_fraction = area / cell_area;
   out.sites_touched = touched_share(*this, X, -1);
-  out.level_sites_touched.resize(L);
   for (std::size_t level = 0; level < L; ++level) out.level_sites_touched[level] = touched_share(*this, X, static_cast<int>(level));
   return out;
 }
