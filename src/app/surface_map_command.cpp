@@ -24,6 +24,7 @@
 #include "model/contact/regime.hpp"
 #include "model/laws/creep_laws.hpp"
 #include "model/point/parameters.hpp"
+#include "model/point/point_axes.hpp"
 #include "model/surface/surface_history.hpp"
 #include "sweep/mpi_session.hpp"
 
@@ -82,13 +83,25 @@ struct MapInputs {
   input::Keywords texture;  ///< every keyword but the axes' and the map's own
   std::vector<SurfaceMapAxis> geometry;
   std::string scatter_kind;  ///< "normal" / "uniform" where the scatter's width is an axis
-  SurfaceMapAxis pbar;
-  std::vector<SurfaceMapAxis> law;           ///< the law's parameters given
-  std::vector<std::size_t> law_index;        ///< each one's place in the law's parameters
+  /// The load's axes: pbar, then the point's other coordinates given (the creep law's
+  /// parameters, ramp_time), in model::PointAxes' order; and the coordinate each sets.
+  std::vector<SurfaceMapAxis> load;
+  std::vector<model::PointAxis> load_coordinates;
   /// The material (or law) the keywords name: its law spec is what the load points build.
   std::shared_ptr<const input::PointMaterial> material;
   const model::CreepLawSpec* spec = nullptr;  ///< material->spec
 };
+
+/// The coordinate of a load point that option `key` gives (--pbar or --pressure, a creep
+/// law's parameter, --ramp: model::PointAxes without the texture's l, s, dh), if any.
+std::optional<model::PointAxis> load_coordinate(const model::PointAxes& axes, const std::string& key) {
+  const std::string name = key == "pressure" ? std::string(model::kPressure)
+                           : key == "ramp"   ? std::string(model::ramp_time_parameter().name)
+                                             : key;
+  const std::size_t j = axes.find(name);
+  if (j == axes.size() || axes[j].coordinate <= model::Coordinate::height_difference) return std::nullopt;
+  return axes[j];
+}
 
 MapInputs read_map_inputs(const input::Keywords& keywords) {
   MapInputs in;
@@ -104,6 +117,7 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
     }
   }
   const input::PhysicalScales scales = input::scales_of(material.material.get(), R);
+  const model::PointAxes point_axes(in.spec->parameters, true);
   for (const auto& [key, value] : keywords) {
     if (key == kOutput || key == kOverwrite) continue;
     for (const Refused& r : kRefused) {
@@ -119,40 +133,53 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
       SurfaceMapAxis axis = read_axis("scatter", value.substr(colon + 1), *model::texture_parameter(model::kScatterWidth), scales);
       axis.name = model::kScatterWidth;
       in.geometry.push_back(std::move(axis));
-    } else if (key == "pbar" || key == "pressure") {
-      if (!in.pbar.name.empty()) throw input::UsageError("--pbar beside --pressure: give the load once");
-      in.pbar = read_axis(key, value, *model::find_parameter(model::kPressure), scales, key == "pressure");
-      in.pbar.name = "pbar";
-    } else {
-      bool law = false;
-      for (std::size_t j = 0; j < in.spec->parameters.size(); ++j) {
-        if (key != in.spec->parameters[j].name) continue;
-        in.law.push_back(read_axis(key, value, in.spec->parameters[j], scales));
-        in.law_index.push_back(j);
-        law = true;
+    } else if (const std::optional<model::PointAxis> coordinate = load_coordinate(point_axes, key)) {
+      for (const model::PointAxis& c : in.load_coordinates) {
+        if (c.parameter == coordinate->parameter) {
+          throw input::UsageError("--" + key + ": the " + std::string(c.parameter->long_name) +
+                                  " is given twice (--pbar and --pressure are one axis); give it once");
+        }
       }
-      if (!law) in.texture.emplace_back(key, value);
+      SurfaceMapAxis axis = read_axis(key, value, *coordinate->parameter, scales, key == "pressure");
+      axis.name = std::string(coordinate->parameter->name);
+      in.load.push_back(std::move(axis));
+      in.load_coordinates.push_back(*coordinate);
+    } else {
+      in.texture.emplace_back(key, value);
     }
   }
-  if (in.pbar.name.empty()) throw input::UsageError("--pbar (or --pressure with a material) is required: the load's axis");
+  const auto given = [&](model::Coordinate c) {
+    return std::any_of(in.load_coordinates.begin(), in.load_coordinates.end(),
+                       [&](const model::PointAxis& a) { return a.coordinate == c; });
+  };
+  if (!given(model::Coordinate::pressure)) {
+    throw input::UsageError("--pbar (or --pressure with a material) is required: the load's axis");
+  }
+  if (given(model::Coordinate::ramp_time) && find(in.texture, "load-table") != nullptr) {
+    throw input::UsageError("--ramp and --load-table both given; valid: one of them");
+  }
   // The geometry's axes in one order, whatever the keywords' (l, dh, dh2, scatter_width).
   const auto place = [](const SurfaceMapAxis& a) {
     const auto* at = std::find(std::begin(kGeometryKeys), std::end(kGeometryKeys), a.name);
     return at - std::begin(kGeometryKeys);
   };
   std::stable_sort(in.geometry.begin(), in.geometry.end(), [&](const auto& a, const auto& b) { return place(a) < place(b); });
-  // The law's in its parameters' order.
-  std::vector<std::size_t> order(in.law.size());
+  // The load's: pbar first, then in the point's order.
+  const auto rank = [&](std::size_t k) {
+    const model::PointAxis& a = in.load_coordinates[k];
+    return a.coordinate == model::Coordinate::pressure ? 0 : 1 + point_axes.find(a.parameter->name);
+  };
+  std::vector<std::size_t> order(in.load.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return in.law_index[a] < in.law_index[b]; });
-  std::vector<SurfaceMapAxis> law;
-  std::vector<std::size_t> index;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  std::vector<SurfaceMapAxis> load;
+  std::vector<model::PointAxis> coordinates;
   for (const std::size_t k : order) {
-    law.push_back(in.law[k]);
-    index.push_back(in.law_index[k]);
+    load.push_back(in.load[k]);
+    coordinates.push_back(in.load_coordinates[k]);
   }
-  in.law = std::move(law);
-  in.law_index = std::move(index);
+  in.load = std::move(load);
+  in.load_coordinates = std::move(coordinates);
   return in;
 }
 
@@ -201,15 +228,14 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   const MapInputs in = read_map_inputs(keywords);
   SurfaceMap map;
   map.geometry = in.geometry;
-  map.load.push_back(in.pbar);
-  for (const SurfaceMapAxis& a : in.law) map.load.push_back(a);
+  map.load = in.load;
   map.texture = json_keywords(in.texture);
   map.scatter_kind = in.scatter_kind;
   if (const std::string* m = find(keywords, "material")) map.material = *m;
   if (const std::string* R = find(keywords, "R")) map.R = *R;
   const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
   const std::size_t G = map.geometries(), P = map.load_points();
-  const double least_pbar = *std::min_element(in.pbar.values.begin(), in.pbar.values.end());
+  const double least_pbar = *std::min_element(in.load[0].values.begin(), in.load[0].values.end());
 
   // Every geometry's keywords: the texture's, its lengths, and the least pressure (the
   // grid --grid auto picks is the one the smallest spot asks) at the law's first values.
@@ -225,7 +251,11 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
       }
     }
     k.emplace_back("pbar", text_of(least_pbar));
-    for (const SurfaceMapAxis& a : in.law) k.emplace_back(a.name, text_of(a.values.front()));
+    for (std::size_t a = 1; a < in.load.size(); ++a) {  // the law's (the curve is elastic: no ramp)
+      if (in.load_coordinates[a].coordinate == model::Coordinate::law) {
+        k.emplace_back(in.load[a].name, text_of(in.load[a].values.front()));
+      }
+    }
     return k;
   };
 
@@ -269,15 +299,16 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
       map.X_star[g * L + level] = run.history.levels[level].X_star;
       map.resolved[g * L + level] = run.history.levels[level].resolved ? 1 : 0;
     }
-    // Each load point off the curve: the law's values (the run's, the axes' in place).
-    std::vector<double> law_values = run.inputs.law_values;
+    // Each load point off the curve: the run's point, with the load axes' values put in.
+    model::PointValues point{run.inputs.problem, run.inputs.law_values};
     const std::size_t T = map.times.size();
     for (std::size_t p = 0; p < P; ++p) {
       const std::vector<std::size_t> at = digits_of(p, load_sizes);
-      const double pbar = map.load[0].values[at[0]];
-      for (std::size_t a = 0; a < in.law.size(); ++a) law_values[in.law_index[a]] = in.law[a].values[at[a + 1]];
-      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(*in.spec, law_values);
-      const model::CreepWeightedLoad load(*creep, pbar, run.inputs.problem.loading);
+      for (std::size_t a = 0; a < map.load.size(); ++a) {
+        model::set_coordinate(in.load_coordinates[a], map.load[a].values[at[a]], &point);
+      }
+      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(*in.spec, point.law);
+      const model::CreepWeightedLoad load(*creep, point.problem.pbar0, point.problem.loading);
       const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
       const std::size_t row = g * P + p;
       for (std::size_t level = 0; level < L; ++level) {
@@ -449,10 +480,11 @@ void for_each_block(SurfaceMap& map, std::size_t g, Visit&& visit) {
 constexpr const char* kMapUsage =
     "usage: mpirun -n N punchsweep surface-map --lattice square|hexagonal --l AXIS --dh AXIS [--dh2 AXIS]\n"
     "           --pbar AXIS (or --pressure AXIS with --material) [--T AXIS | --temperature AXIS]\n"
-    "           [--times LIST] [surface's texture options] --output FILE\n\n"
+    "           [--ramp AXIS] [--times LIST] [surface's texture options] --output FILE\n\n"
     "An AXIS is one value, a list 'a, b, c', linspace(a, b, n) or logspace(a, b, n); --scatter\n"
     "normal:AXIS (or uniform:AXIS) makes the scatter's width an axis. Each geometry value is one\n"
-    "load curve, built by one rank; the pressures and the law's values are read off it.";
+    "load curve, built by one rank; the pressures, the law's values and the ramp times (the\n"
+    "map's ramp_time axis) are read off it.";
 
 }  // namespace
 

@@ -558,3 +558,29 @@ def test_surface_map_takes_the_scatter_width_as_an_axis():
             np.testing.assert_array_equal(ds.touched.values[k, i], one["series"]["sites_touched"])
             assert [lv["regime"] for lv in one["levels"]] == [punchsweep.REGIMES[int(c)] for c in ds.regime.values[k, i]]
 
+
+def test_surface_map_takes_the_ramp_time_as_an_axis():
+    """ramp=['0s', '2s', '30s'] with a material: the load's rise time is a load axis
+    (ramp_time, in the material's time unit, read off the one curve), and each ramp's levels
+    (regime, t*) and caps touched at every time equal surface() with that --ramp alone (the
+    point command's reading of the ramp, not the map's)."""
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    common = dict(material=str(truth), R="80um", l="250um", dh="3um", s=2, temperature=30, times="0, 1s, 10s, 100s")
+    ramps = ["0s", "2s", "30s"]
+    ds = punchsweep.surface_map(pressure=["5kPa", "20kPa"], ramp=ramps, **common)
+    assert ds.t_star.dims == ("pbar", "ramp_time", "level") and ds.ramp_time.attrs["units"] == "s"
+    np.testing.assert_array_equal(ds.ramp_time.values, [0.0, 2.0, 30.0])
+    moved = False
+    for i, pressure in enumerate(["5kPa", "20kPa"]):
+        for k, ramp in enumerate(ramps):
+            one = punchsweep.surface(pressure=pressure, ramp=ramp, **common)  # JSON with a ramp: X(0) = 0
+            if ramp != "0s":
+                assert one["series"]["X"][0] == 0 and one["series"]["touched_1"][0] == 0
+            assert [lv["regime"] for lv in one["levels"]] == [punchsweep.REGIMES[int(c)] for c in ds.regime.values[i, k]]
+            t = [np.inf if lv["t_star"] is None else lv["t_star"] for lv in one["levels"]]
+            np.testing.assert_allclose(ds.t_star.values[i, k], t, rtol=1e-12)
+            np.testing.assert_array_equal(ds.touched.values[i, k], one["series"]["sites_touched"])
+            moved = moved or not np.array_equal(ds.t_star.values[i, k], ds.t_star.values[i, 0])
+    assert moved, "no ramp moved a touch time: the axis would not be tested"
+    with pytest.raises(ValueError, match="--ramp and --load-table both given"):
+        punchsweep.surface_map(pressure="5kPa", ramp=ramps, load_table="0 0; 1s 1", **common)

@@ -307,10 +307,11 @@ def surface_map(*, pbar=None, pressure=None, T=None, temperature=None, material:
     a grid, and at each time the share of caps in contact and the area fraction, as an
     xarray.Dataset. The geometry's l, dh and dh2 (and scatter="normal:..." widths) may be
     lists: each value is one load curve (cached); the load's pbar (or pressure= with a
-    material) and the law's parameters (T, or temperature=) may be lists: they are read off
-    each curve. The Dataset's dimensions are the geometry keywords given as lists, then pbar
-    and the law's given as lists, then level (t_star, regime) or t (touched, area_fraction,
-    valid); a keyword given as one value is no dimension. The file (netCDF-4, the command's)
+    material) the law's parameters (T, or temperature=) and ramp (ramp times, '30s' with a
+    material) may be lists: they are read off each curve. The Dataset's dimensions are the
+    geometry keywords given as lists, then pbar, the law's and ramp_time given as lists, then
+    level (t_star, regime) or t (touched, area_fraction, valid); a keyword given as one value
+    is no dimension. The file (netCDF-4, the command's)
     is written to `output` where given (overwrite=True replaces one), else to a temporary
     file read back. Units on every variable (units, scaled_by)."""
     import tempfile
@@ -319,7 +320,7 @@ def surface_map(*, pbar=None, pressure=None, T=None, temperature=None, material:
     axes = [k for k, v in given.items() if v is not None and not isinstance(v, str) and np.ndim(v) == 1]
     if isinstance(texture.get("scatter"), str) and "," in texture["scatter"]:
         axes.append("scatter_width")
-    axes = ["pbar" if k == "pressure" else k for k in axes]
+    axes = [{"pressure": "pbar", "ramp": "ramp_time"}.get(k, k) for k in axes]
     keywords = _keywords(dict(texture, pbar=pbar, pressure=pressure, T=T, temperature=temperature,
                               material=None if material is None else os.fspath(material), R=R,
                               overwrite="true" if overwrite else None))
