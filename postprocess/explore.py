@@ -480,13 +480,18 @@ function readout(index) {
 const PHYSICAL = new Set(["m", "mm", "um", "nm", "Pa", "kPa", "MPa", "GPa"]);
 // A surface map's cell: `punchsweep surface` with the map's texture keywords and the cell's
 // axes (level is the answer's, not an input).
+// The point commands' option for a map's axis: its name, but --pressure for a pressure in
+// its unit and --ramp for ramp_time (the load's rise time; a sweep's grid.ramp_time).
+const OPTION = {ramp_time: "ramp"};
+const optionOf = (a, physical) => (physical && a.name === "pbar" ? "pressure" : OPTION[a.name] || a.name);
+
 function surfaceCommand(index) {
   const parts = ["punchsweep surface"];
   for (const [key, value] of Object.entries(MAP.surface.texture)) parts.push(`--${key} ${shellWord(value)}`);
   MAP.axes.forEach((a, j) => {
     if (a.name === "level") return;
     if (a.name === "scatter_width") parts.push(`--scatter ${MAP.surface.scatter}:${a.values[index[j]]}`);
-    else parts.push(`--${a.name} ${a.values[index[j]]}`);
+    else parts.push(`--${optionOf(a, false)} ${a.values[index[j]]}`);
   });
   if (MAP.time.length) parts.push(`--times ${MAP.time.join(",")}`);
   return parts.join(" ");
@@ -499,8 +504,8 @@ function pointCommand(index) {
   MAP.axes.forEach((a, j) => {
     if (a.name === "material") parts.push(`--material ${shellWord(`${a.labels ? a.labels[index[j]] : index[j]}.ini`)}`);
     else if (a.name === "time") return;
-    else if (physical(a)) parts.push(`--${a.name === "pbar" ? "pressure" : a.name} ${String(a.values[index[j]])}${a.unit}`);
-    else parts.push(`--${a.name.replace("_", "-")} ${a.scaled[index[j]]}`);
+    else if (physical(a)) parts.push(`--${optionOf(a, true)} ${String(a.values[index[j]])}${a.unit}`);
+    else parts.push(`--${optionOf(a, false)} ${a.scaled[index[j]]}`);
   });
   if (MAP.R && MAP.axes.some(a => physical(a) && a.name !== "pbar")) parts.push(`--R ${MAP.R.replace(/ /g, "")}`);
   const unnamed = MAP.material && !MAP.material_path && !MAP.axes.some(a => a.name === "material");

@@ -42,7 +42,7 @@ def maps(tmp_path_factory):
     subprocess.run([ENGINE, "sweep", "--model.material", REPO / "materials" / "pla_prusament_chapuis2025.ini",
                     "--model.R", "50um", "--grid.l", "150um", "--grid.dh", "linspace(0.05um,3um,12)",
                     "--grid.pressure", "logspace(0.2MPa,20MPa,10)", "--grid.temperature", "50,60,70", "--grid.s", "2",
-                    "--output", material, "--quiet"], check=True)
+                    "--grid.ramp_time", "10s,30s", "--output", material, "--quiet"], check=True)
     pages = {}
     for name, path in (("default", default), ("material", material)):
         page = tmp / f"{name}.html"
@@ -377,14 +377,16 @@ def test_a_pressure_window_is_drawn_across_the_pressure_axis(tmp_path):
 
 @pytest.mark.browser
 def test_a_surface_map_in_chromium(tmp_path):
-    """Issue 38: a map `surface-map` wrote (hexagonal three levels, dh x pbar x T) on the
-    page: level is a slider (level 1 first), each cell's regime, t* and caps touched are the
-    file's (NaN where a snapshot is flagged), and each cell's command, run, is `punchsweep
-    surface` at that point and gives the same regime and t* for level 1."""
+    """Issue 38: a map `surface-map` wrote (hexagonal three levels, dh x pbar x T, a ramp) on
+    the page: level is a slider (level 1 first), each cell's regime, t* and caps touched are
+    the file's (NaN where a snapshot is flagged), and each cell's command, run, is `punchsweep
+    surface` at that point (the ramp_time axis as --ramp) and gives the same regime and t*
+    for level 1."""
     import punchsweep
     path = tmp_path / "surface.nc"
     punchsweep.surface_map(lattice="hexagonal", l=1.2, dh=[0.04, 0.05, 0.06], dh2=0.09, s=2, grid=48,
-                           pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0], times=[0, 1, 5], output=path)
+                           pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0], ramp=0.5, times=[0, 1, 5],
+                           output=path)
     page = tmp_path / "surface.html"
     done = explore(path, "-o", page)
     assert done.returncode == 0, done.stderr
