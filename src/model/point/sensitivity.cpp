@@ -163,7 +163,7 @@ TStarRange range_over(Point& point, const CreepLawSpec& law, std::span<const dou
     return problem_field(point.problem, point.parameters[k]->name) == nullptr;
   });
   const std::unique_ptr<CreepLaw> fixed_law = law_varies ? nullptr : make_creep_law(law, law_values);
-  TStarRange r{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  TStarRange r;
   for (unsigned corner = 0; corner < (1u << index.size()); ++corner) {
     Point p = point;
     for (std::size_t j = 0; j < index.size(); ++j) {
@@ -172,27 +172,31 @@ TStarRange range_over(Point& point, const CreepLawSpec& law, std::span<const dou
     }
     const Classification c =
         classify(p.problem, fixed_law ? *fixed_law : *make_creep_law(*p.law, p.law_values));
-    if (std::isnan(c.t_star)) {
-      ++r.not_computed;
-      continue;
-    }
-    ++(c.regime == Regime::immediate ? r.immediate : c.regime == Regime::never ? r.never : r.delayed);
-    // (Under a ramp an immediate touch has t* > 0: the regimes order as their t* do.)
-    const bool first = r.immediate + r.delayed + r.never == 1;
-    if (first || c.t_star < r.low || (c.t_star == r.low && c.regime < r.regime_low)) {
-      r.low = c.t_star;
-      r.regime_low = c.regime;
-    }
-    if (first || c.t_star > r.high || (c.t_star == r.high && c.regime > r.regime_high)) {
-      r.high = c.t_star;
-      r.regime_high = c.regime;
-    }
+    r.take(c.t_star, c.regime);
   }
   if (r.not_computed > 0) r.low = r.high = std::numeric_limits<double>::quiet_NaN();
   return r;
 }
 
 }  // namespace
+
+void TStarRange::take(double t_star, Regime regime) {
+  if (std::isnan(t_star)) {
+    ++not_computed;
+    return;
+  }
+  ++(regime == Regime::immediate ? immediate : regime == Regime::never ? never : delayed);
+  // (Under a ramp an immediate touch has t* > 0: the regimes order as their t* do.)
+  const bool first = immediate + delayed + never == 1;
+  if (first || t_star < low || (t_star == low && regime < regime_low)) {
+    low = t_star;
+    regime_low = regime;
+  }
+  if (first || t_star > high || (t_star == high && regime > regime_high)) {
+    high = t_star;
+    regime_high = regime;
+  }
+}
 
 TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
                         std::span<const Tolerance> tolerances) {

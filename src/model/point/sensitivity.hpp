@@ -85,6 +85,10 @@ struct TStarRange {
   /// holds across the box (t* is monotone; the regimes are ordered by t*).
   Regime regime_low = Regime::immediate, regime_high = Regime::never;
   int immediate = 0, delayed = 0, never = 0, not_computed = 0;  ///< corners in each
+  /// Counts a corner of t* `t_star` (NaN: not computed) and regime `regime`, and keeps it
+  /// as the low or high end where its t* is the least or greatest so far (of equal t*, the
+  /// lesser regime low and the greater high: all corners never gives never at both ends).
+  void take(double t_star, Regime regime);
 };
 TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, std::span<const double> law_values,
                         std::span<const Tolerance> tolerances);

@@ -78,8 +78,6 @@ TStarRange level_t_star_range(const LoadCurve& curve, int level, const SurfaceLo
     }
   }
   TStarRange range;
-  range.low = std::numeric_limits<double>::infinity();
-  range.high = -std::numeric_limits<double>::infinity();
   const std::size_t corners = std::size_t{1} << tolerances.size();
   for (std::size_t corner = 0; corner < corners; ++corner) {
     SurfaceLoad moved = load;
@@ -94,15 +92,7 @@ TStarRange level_t_star_range(const LoadCurve& curve, int level, const SurfaceLo
     }
     double t = 0.0;
     const Regime regime = level_regime(curve, level, moved, &t);
-    (regime == Regime::immediate ? range.immediate : regime == Regime::delayed ? range.delayed : range.never) += 1;
-    if (t < range.low) {
-      range.low = t;
-      range.regime_low = regime;
-    }
-    if (t > range.high) {
-      range.high = t;
-      range.regime_high = regime;
-    }
+    range.take(t, regime);
   }
   return range;
 }
