@@ -25,6 +25,8 @@
 #include "model/laws/creep_laws.hpp"
 #include "model/point/parameters.hpp"
 #include "model/point/point_axes.hpp"
+#include "model/point/sensitivity.hpp"
+#include "model/surface/surface_sensitivity.hpp"
 #include "model/surface/surface_history.hpp"
 #include "sweep/mpi_session.hpp"
 
@@ -51,7 +53,6 @@ struct Refused {
 constexpr Refused kRefused[] = {
     {"check", "the time stepping is one texture's check (punchsweep surface --check)"},
     {"format", "the map is a netCDF-4 file (--output)"},
-    {"tolerance", "a tolerance box is one texture's (punchsweep surface --tolerance)"},
 };
 
 const std::string* find(const input::Keywords& keywords, const std::string& name) {
@@ -87,6 +88,11 @@ struct MapInputs {
   /// parameters, ramp_time), in model::PointAxes' order; and the coordinate each sets.
   std::vector<SurfaceMapAxis> load;
   std::vector<model::PointAxis> load_coordinates;
+  /// A box of tolerances about every load point (--tolerance, its text): on the pressure and
+  /// the law's parameters, each with its coordinate.
+  std::string tolerance_text;
+  std::vector<model::StatedTolerance> tolerance;
+  std::vector<model::PointAxis> tolerance_coordinates;
   /// The material (or law) the keywords name: its law spec is what the load points build.
   std::shared_ptr<const input::PointMaterial> material;
   const model::CreepLawSpec* spec = nullptr;  ///< material->spec
@@ -120,6 +126,10 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
   const model::PointAxes point_axes(in.spec->parameters, true);
   for (const auto& [key, value] : keywords) {
     if (key == kOutput || key == kOverwrite) continue;
+    if (key == "tolerance") {
+      in.tolerance_text = value;
+      continue;
+    }
     for (const Refused& r : kRefused) {
       if (key == r.key) throw input::UsageError("--" + key + " is not a map's: " + r.why);
     }
@@ -157,6 +167,24 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
   }
   if (given(model::Coordinate::ramp_time) && find(in.texture, "load-table") != nullptr) {
     throw input::UsageError("--ramp and --load-table both given; valid: one of them");
+  }
+  if (!in.tolerance_text.empty()) {
+    // On the load's inputs only: a corner of the geometry would be a load curve of its own.
+    std::string names = "pbar or pressure";
+    for (const std::size_t j : point_axes.law()) names += ", " + std::string(point_axes[j].parameter->name);
+    const auto known = [&](std::string_view name) -> const model::Parameter* {
+      const std::size_t j = point_axes.find(name);
+      if (j == point_axes.size()) return nullptr;
+      const model::Coordinate c = point_axes[j].coordinate;
+      return c == model::Coordinate::pressure || c == model::Coordinate::law ? point_axes[j].parameter : nullptr;
+    };
+    in.tolerance = input::parse_tolerances(
+        in.tolerance_text, "--tolerance", known, scales, names,
+        "is no load input of a surface map (a tolerance on the texture's geometry needs a load curve per corner)");
+    if (in.tolerance.size() > model::kMaxTolerances) {
+      throw input::UsageError("--tolerance: at most " + std::to_string(model::kMaxTolerances) + " tolerances");
+    }
+    for (const model::StatedTolerance& t : in.tolerance) in.tolerance_coordinates.push_back(point_axes[point_axes.find(t.parameter->name)]);
   }
   // The geometry's axes in one order, whatever the keywords' (l, dh, dh2, scatter_width).
   const auto place = [](const SurfaceMapAxis& a) {
@@ -231,6 +259,7 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   map.load = in.load;
   map.texture = json_keywords(in.texture);
   map.scatter_kind = in.scatter_kind;
+  map.tolerance = in.tolerance_text;
   if (const std::string* m = find(keywords, "material")) map.material = *m;
   if (const std::string* R = find(keywords, "R")) map.R = *R;
   const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
@@ -281,6 +310,12 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
       map.touched.assign(G * P * T, kNaN);
       map.area_fraction.assign(G * P * T, kNaN);
       map.valid.assign(G * P * T, kNotComputed);
+      if (!in.tolerance.empty()) {
+        map.t_star_low.assign(G * P * L, kNaN);
+        map.t_star_high.assign(G * P * L, kNaN);
+        map.regime_low.assign(G * P * L, kNotComputed);
+        map.regime_high.assign(G * P * L, kNotComputed);
+      }
       map.grid.assign(G, kNaN);
       map.from_tables.assign(G, kNotComputed);
       map.curve_seconds.assign(G, kNaN);
@@ -314,6 +349,30 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
       for (std::size_t level = 0; level < L; ++level) {
         map.t_star[row * L + level] = touches[level].t_star;
         map.regime[row * L + level] = static_cast<std::int8_t>(touches[level].regime);
+      }
+      if (!in.tolerance.empty()) {
+        // The box about this point (each tolerance about its own value here), each level's
+        // t* at its corners (model::level_t_star_range, as surface --tolerance).
+        std::vector<model::Tolerance> box;
+        for (std::size_t k = 0; k < in.tolerance.size(); ++k) {
+          const model::PointAxis& c = in.tolerance_coordinates[k];
+          box.push_back(in.tolerance[k].at(c.coordinate == model::Coordinate::pressure ? point.problem.pbar0
+                                                                                       : point.law[c.law_index]));
+        }
+        const model::SurfaceLoad surface_load{point.problem.pbar0, in.spec, point.law, point.problem.loading};
+        for (std::size_t level = 0; level < L; ++level) {
+          model::TStarRange r;
+          try {
+            r = model::level_t_star_range(run.curve, static_cast<int>(level), surface_load, box);
+          } catch (const std::invalid_argument&) {
+            continue;  // a corner outside a parameter's range (T < 1): NaN, not computed, as a sweep's map
+          }
+          if (r.not_computed > 0) continue;
+          map.t_star_low[row * L + level] = r.low;
+          map.t_star_high[row * L + level] = r.high;
+          map.regime_low[row * L + level] = static_cast<std::int8_t>(r.regime_low);
+          map.regime_high[row * L + level] = static_cast<std::int8_t>(r.regime_high);
+        }
       }
       const double X0 = load.initial();
       for (std::size_t k = 0; k < T; ++k) {
@@ -402,6 +461,21 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
                   with(units("T_eps"), {{"long_name", "each level's touch time (0 at once, +inf never)"}}));
     file.variable("regime", dims({&geometry_dims, &load_dims}, "level"), map.regime,
                   {{"long_name", "each level's regime"}, {"flag_meanings", regime_names}}, regime_codes);
+    if (!map.tolerance.empty()) {
+      file.attribute("tolerance", map.tolerance);
+      const std::string box = " over the box of tolerances (" + map.tolerance + ") about the point";
+      file.variable("t_star_low", dims({&geometry_dims, &load_dims}, "level"), map.t_star_low,
+                    with(units("T_eps"), {{"long_name", "each level's least touch time" + box}}));
+      file.variable("t_star_high", dims({&geometry_dims, &load_dims}, "level"), map.t_star_high,
+                    with(units("T_eps"), {{"long_name", "each level's greatest touch time" + box}}));
+      std::vector<std::int8_t> codes{kNotComputed};
+      codes.insert(codes.end(), regime_codes.begin(), regime_codes.end());
+      const std::string meanings = "not_computed " + regime_names;
+      file.variable("regime_low", dims({&geometry_dims, &load_dims}, "level"), map.regime_low,
+                    {{"long_name", "each level's regime at the corner of least t*" + box}, {"flag_meanings", meanings}}, codes);
+      file.variable("regime_high", dims({&geometry_dims, &load_dims}, "level"), map.regime_high,
+                    {{"long_name", "each level's regime at the corner of greatest t*" + box}, {"flag_meanings", meanings}}, codes);
+    }
     file.variable("X_star", dims({&geometry_dims}, "level"), map.X_star,
                   with(units("E0/(1-nu^2)"), {{"long_name", "each level's touchdown load (creep-weighted)"}}));
     file.variable("resolved", dims({&geometry_dims}, "level"), map.resolved,
@@ -472,6 +546,12 @@ void for_each_block(SurfaceMap& map, std::size_t g, Visit&& visit) {
   visit(map.touched, g * P * T, P * T);
   visit(map.area_fraction, g * P * T, P * T);
   visit(map.valid, g * P * T, P * T);
+  if (!map.tolerance.empty()) {
+    visit(map.t_star_low, g * P * L, P * L);
+    visit(map.t_star_high, g * P * L, P * L);
+    visit(map.regime_low, g * P * L, P * L);
+    visit(map.regime_high, g * P * L, P * L);
+  }
   visit(map.grid, g, 1);
   visit(map.from_tables, g, 1);
   visit(map.curve_seconds, g, 1);
@@ -480,11 +560,13 @@ void for_each_block(SurfaceMap& map, std::size_t g, Visit&& visit) {
 constexpr const char* kMapUsage =
     "usage: mpirun -n N punchsweep surface-map --lattice square|hexagonal --l AXIS --dh AXIS [--dh2 AXIS]\n"
     "           --pbar AXIS (or --pressure AXIS with --material) [--T AXIS | --temperature AXIS]\n"
-    "           [--ramp AXIS] [--times LIST] [surface's texture options] --output FILE\n\n"
+    "           [--ramp AXIS] [--tolerance LIST] [--times LIST] [surface's texture options]\n"
+    "           --output FILE\n\n"
     "An AXIS is one value, a list 'a, b, c', linspace(a, b, n) or logspace(a, b, n); --scatter\n"
     "normal:AXIS (or uniform:AXIS) makes the scatter's width an axis. Each geometry value is one\n"
     "load curve, built by one rank; the pressures, the law's values and the ramp times (the\n"
-    "map's ramp_time axis) are read off it.";
+    "map's ramp_time axis) are read off it. --tolerance 'pressure=10%, T=0.2' adds each level's\n"
+    "least and greatest t* over that box about every load point.";
 
 }  // namespace
 

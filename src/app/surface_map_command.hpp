@@ -39,6 +39,12 @@ struct SurfaceMap {
   std::vector<double> touched;          ///< [geometry, load, time]: the share of caps touched
   std::vector<double> area_fraction;    ///< [geometry, load, time]
   std::vector<std::int8_t> valid;       ///< [geometry, load, time] (model::SurfaceValidity)
+  /// With a box of tolerances (`tolerance`, as stated): each level's least and greatest t*
+  /// over the box about each load point, and the regimes at those corners (NaN and
+  /// kNotComputed where a corner leaves a parameter's range); empty without one.
+  std::string tolerance;
+  std::vector<double> t_star_low, t_star_high;        ///< [geometry, load, level]
+  std::vector<std::int8_t> regime_low, regime_high;  ///< [geometry, load, level]
   std::vector<double> grid;             ///< [geometry]: nodes along x of its curve
   std::vector<std::int8_t> from_tables;  ///< [geometry]: the periodic model's tables served
   std::vector<double> curve_seconds;    ///< [geometry]

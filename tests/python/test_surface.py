@@ -584,3 +584,39 @@ def test_surface_map_takes_the_ramp_time_as_an_axis():
     assert moved, "no ramp moved a touch time: the axis would not be tested"
     with pytest.raises(ValueError, match="--ramp and --load-table both given"):
         punchsweep.surface_map(pressure="5kPa", ramp=ramps, load_table="0 0; 1s 1", **common)
+
+
+def test_surface_map_reads_a_box_of_tolerances_about_every_point():
+    """tolerance="pbar=10%, T=0.2" on the paper's lattice: at every point each level's
+    t_star_low and t_star_high are the least and greatest t* of surface_classify at the box's
+    four corners (each corner read as an ordinary point, not through the map's range), t*
+    lies between them, and regime_low/high are the corners' least and greatest regimes; a
+    corner outside T's range (T - 0.2 < 1) leaves the point NaN and not_computed; a tolerance
+    on the geometry is refused."""
+    texture = dict(l=0.75, dh=0.03, s=2)
+    T = [2.5, 4.0, 8.0]
+    ds = punchsweep.surface_map(pbar=np.geomspace(1e-3, 0.05, 6), T=T, tolerance="pbar=10%, T=0.2", times=[0, 1],
+                                **texture)
+    assert ds.t_star_low.dims == ("pbar", "T", "level") and ds.attrs["tolerance"] == "pbar=10%, T=0.2"
+    assert ds.t_star_low.attrs["scaled_by"] == "T_eps"
+    assert ds.regime_low.attrs["flag_meanings"] == "not_computed immediate delayed never"
+    wide = 0
+    for i, p in enumerate(ds.pbar.values):
+        for j, t in enumerate(T):
+            corners = punchsweep.surface_classify(pbar=np.array([p - 0.1 * p, p + 0.1 * p])[:, None],
+                                                  T=np.array([t - 0.2, t + 0.2])[None, :], **texture)
+            t_star = corners["t_star"].reshape(4, -1)
+            regime = corners["regime"].reshape(4, -1)
+            np.testing.assert_allclose(ds.t_star_low.values[i, j], t_star.min(axis=0), rtol=1e-12)
+            np.testing.assert_allclose(ds.t_star_high.values[i, j], t_star.max(axis=0), rtol=1e-12)
+            np.testing.assert_array_equal(ds.regime_low.values[i, j], regime.min(axis=0))
+            np.testing.assert_array_equal(ds.regime_high.values[i, j], regime.max(axis=0))
+            assert np.all(ds.t_star_low.values[i, j] <= ds.t_star.values[i, j])
+            assert np.all(ds.t_star.values[i, j] <= ds.t_star_high.values[i, j])
+            wide += int(np.any(ds.t_star_low.values[i, j] < ds.t_star_high.values[i, j]))
+    assert wide >= 3, "the box moved t* at too few points for the test to mean anything"
+    edge = punchsweep.surface_map(pbar=0.01, T=[1.1, 2.5], tolerance="T=0.2", **texture)
+    assert np.isnan(edge.t_star_low.values[0]).all() and (edge.regime_low.values[0] == -1).all()
+    assert not np.isnan(edge.t_star_low.values[1]).any()
+    with pytest.raises(ValueError, match="'dh' is no load input of a surface map"):
+        punchsweep.surface_map(pbar=0.01, T=2.5, tolerance="dh=0.001", **texture)
