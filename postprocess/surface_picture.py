@@ -6,7 +6,9 @@ wrote, or a Dataset surface_map returned saved by .to_netcdf(engine="h5netcdf"),
 pressure along x, log-scaled where it spans a decade), or along one axis as a line: log t*
 in colour where the level touches late, grey where it touches at once (immediate), dark
 where it never does; and, where the map has them, the share of caps in contact at one of
-its times (--time, default the last), blank where that snapshot is flagged. Axes beyond two are fixed by --at NAME=VALUE (the nearest value is used
+its times (--time, default the last), blank where that snapshot is flagged. A map with a box
+of tolerances (surface-map --tolerance) has the cells whose regime differs between the box's
+ends hatched: there the answer depends on where in the box the part falls. Axes beyond two are fixed by --at NAME=VALUE (the nearest value is used
 and said); an axis of one value needs none.
 
 Example:
@@ -94,12 +96,23 @@ def log_scaled(values: np.ndarray) -> bool:
     return values.size > 1 and values.min() > 0 and values.max() / values.min() >= 10
 
 
+def tolerance_band(ds, level: int, order: list[str]) -> np.ndarray | None:
+    """Level `level`'s cells (dimensions `order`) whose regime differs between the ends of the
+    map's box of tolerances (regime_low, regime_high; both computed): None without a box."""
+    if "regime_low" not in ds:
+        return None
+    low = ds.regime_low.sel(level=level).transpose(*order).values
+    high = ds.regime_high.sel(level=level).transpose(*order).values
+    return (low >= 0) & (high >= 0) & (low != high)
+
+
 def render(ds, said: list[str], time: float | None = None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.collections import PatchCollection
     from matplotlib.colors import ListedColormap
-    from matplotlib.patches import Patch
+    from matplotlib.patches import Patch, Rectangle
 
     axes = [d for d in ds.t_star.dims if d != "level"]
     # The pressure along x where it is one of the axes.
@@ -125,8 +138,15 @@ def render(ds, said: list[str], time: float | None = None):
                 panel.set_yscale("log")
             if np.isfinite(late).any():
                 fig.colorbar(mesh, ax=panel, label=f"log10 t* ({unit})")
-            panel.legend(handles=[Patch(color="#d9d9d9", label="touches at once"),
-                                  Patch(color="#404040", label="never touches")], fontsize=7, loc="upper left")
+            handles = [Patch(color="#d9d9d9", label="touches at once"), Patch(color="#404040", label="never touches")]
+            band = tolerance_band(ds, level, axes[::-1])
+            if band is not None and band.any():
+                rects = [Rectangle((xe[i], ye[j]), xe[i + 1] - xe[i], ye[j + 1] - ye[j])
+                         for j, i in zip(*np.nonzero(band))]
+                panel.add_collection(PatchCollection(rects, facecolor="none", edgecolor="0.5", hatch="xx", linewidth=0))
+                handles.append(Patch(facecolor="white", edgecolor="0.5", hatch="xx", linewidth=0,
+                                     label=f"regime depends on\nthe tolerance ({ds.attrs.get('tolerance', '')})"))
+            panel.legend(handles=handles, fontsize=7, loc="upper left")
             panel.set_ylabel(f"{axes[1]} ({pm.scaled_unit(ds[axes[1]])})")
         else:
             late = np.where(r.values == DELAYED, t.values, np.nan)

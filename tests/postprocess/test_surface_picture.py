@@ -54,3 +54,23 @@ def test_refusals_name_the_problem(hex_map, tmp_path):
     (tmp_path / "not.nc").write_text("hello")
     rc, _, err = call(surface_picture, tmp_path / "not.nc", "-o", tmp_path / "x.png")
     assert rc == 2 and "not a map surface_map wrote" in err
+
+
+def test_cells_whose_regime_the_tolerance_decides_are_hatched(tmp_path):
+    """A map with a box of tolerances: the cells of each level whose regime differs between
+    regime_low and regime_high (as the file holds them) are hatched, and no others."""
+    path = tmp_path / "tol.nc"
+    punchsweep.surface_map(l=0.75, dh=list(np.linspace(0.01, 0.05, 9)), s=2, pbar=list(np.geomspace(1e-3, 0.05, 8)),
+                           T=4, tolerance="pbar=20%, T=0.5", output=path)
+    ds, said = surface_picture.select(surface_picture.read_map(str(path)), [])
+    band = surface_picture.tolerance_band(ds, 1, ["dh", "pbar"])
+    low, high = (ds[v].sel(level=1).transpose("dh", "pbar").values for v in ("regime_low", "regime_high"))
+    np.testing.assert_array_equal(band, low != high)
+    assert 0 < band.sum() < band.size  # some cells decided by the box, some not
+    fig = surface_picture.render(ds, said)
+    panel = [a for a in fig.axes if a.get_title().startswith("level 1")][0]
+    hatched = [c for c in panel.collections if c.get_hatch() == "xx"]
+    assert len(hatched) == 1 and len(hatched[0].get_paths()) == band.sum()
+    assert any("tolerance (pbar=20%, T=0.5)" in t.get_text() for t in panel.get_legend().get_texts())
+    rc, _, err = call(surface_picture, path, "-o", tmp_path / "tol.png")
+    assert rc == 0, err
