@@ -311,7 +311,9 @@ def surface_map(*, pbar=None, pressure=None, T=None, temperature=None, material:
     material) may be lists: they are read off each curve. The Dataset's dimensions are the
     geometry keywords given as lists, then pbar, the law's and ramp_time given as lists, then
     level (t_star, regime) or t (touched, area_fraction, valid); a keyword given as one value
-    is no dimension. The file (netCDF-4, the command's)
+    is no dimension. tolerance="pressure=10%, T=0.2" adds t_star_low, t_star_high,
+    regime_low and regime_high: each level's t* and regimes at the ends of that box about
+    every point. The file (netCDF-4, the command's)
     is written to `output` where given (overwrite=True replaces one), else to a temporary
     file read back. Units on every variable (units, scaled_by)."""
     import tempfile
