@@ -331,7 +331,8 @@ def open_surface_map(path: str):
 def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
     """A surface map (surface-map's file) as the page reads a regime map: its axes (the
     geometry's, the load's and level: a slider, level 1 first), each level's regime and t*
-    and X* per cell, and the caps touched and the area fraction per time (NaN where the
+    and X* per cell (and, with a box of tolerances, t* and the regimes at its ends), and the
+    caps touched and the area fraction per time (NaN where the
     snapshot is flagged: not valid is never shown as a number); clicking a cell gives the
     `punchsweep surface` command of that point."""
     names = list(ds["regime"].dims)
@@ -352,10 +353,17 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
                      "unit": unit, "log": bool(log), "labels": None,
                      "label": f"{n}: {attr_text(ds[n].attrs.get('long_name', n))}" + (f" [{unit}]" if unit not in ("", "1") else "")})
     regime = ds["regime"].transpose(*names)
-    f = pm.flags(ds, "regime")
-    flags = {"regime": {"data": packed(regime.values, "<i1"), "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}}
+    # Every per-level variable over (some of) the map's axes, as the file declares them: the
+    # flags (regime; with a box of tolerances regime_low, regime_high) and the reals (t*, X*;
+    # t_star_low, t_star_high), so that one the command gains reaches the page unchanged.
+    per_cell = [v for v in ds.data_vars if "level" in ds[v].dims and set(ds[v].dims) <= set(names)]
+    flags = {}
+    for v in [v for v in per_cell if "flag_meanings" in ds[v].attrs]:
+        f = pm.flags(ds, v)
+        flags[v] = {"data": packed(ds[v].transpose(*names).values, "<i1"),
+                    "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}
     variables = {}
-    for v in ("t_star", "X_star"):
+    for v in [v for v in per_cell if v not in flags and ds[v].dtype.kind == "f"]:
         da = ds[v].broadcast_like(regime).transpose(*names)
         variables[v] = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
                         "data": packed(da.values, "<f8")}

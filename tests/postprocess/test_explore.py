@@ -377,16 +377,17 @@ def test_a_pressure_window_is_drawn_across_the_pressure_axis(tmp_path):
 
 @pytest.mark.browser
 def test_a_surface_map_in_chromium(tmp_path):
-    """Issue 38: a map `surface-map` wrote (hexagonal three levels, dh x pbar x T, a ramp) on
-    the page: level is a slider (level 1 first), each cell's regime, t* and caps touched are
-    the file's (NaN where a snapshot is flagged), and each cell's command, run, is `punchsweep
-    surface` at that point (the ramp_time axis as --ramp) and gives the same regime and t*
-    for level 1."""
+    """Issue 38: a map `surface-map` wrote (hexagonal three levels, dh x pbar x T, a ramp, a
+    box of tolerances) on the page: level is a slider (level 1 first), each cell's regime, t*
+    and caps touched are the file's (NaN where a snapshot is flagged), its read-out gives the
+    box's t* and regimes at its ends as the file has them, and each cell's command, run, is
+    `punchsweep surface` at that point (the ramp_time axis as --ramp) and gives the same
+    regime and t* for level 1."""
     import punchsweep
     path = tmp_path / "surface.nc"
     punchsweep.surface_map(lattice="hexagonal", l=1.2, dh=[0.04, 0.05, 0.06], dh2=0.09, s=2, grid=48,
                            pbar=[0.002, 0.005, 0.01, 0.02, 0.05], T=[2.0, 4.0, 8.0], ramp=0.5, times=[0, 1, 5],
-                           output=path)
+                           tolerance="pbar=10%, T=0.5", output=path)
     page = tmp_path / "surface.html"
     done = explore(path, "-o", page)
     assert done.returncode == 0, done.stderr
@@ -404,6 +405,15 @@ def test_a_surface_map_in_chromium(tmp_path):
             want = np.where(f["valid"][at] == 0, f["touched"][at], np.nan)
             got = np.array([np.nan if v is None else v for v in cell["touched"]])
             np.testing.assert_array_equal(got, want)
+            # The box of tolerances in the hover read-out: t* at its ends (6 digits) and the
+            # regimes there, the file's.
+            shown = dict(line.split(" = ", 1) for line in cell["readout"].splitlines() if " = " in line)
+            for name in ("t_star_low", "t_star_high"):
+                number, value = shown[name].split()[0], f[name][index]
+                assert (number == "Infinity" and np.isinf(value)) or float(number) == pytest.approx(value, rel=1e-5), name
+            low_codes = dict(zip(f["regime_low"].attrs["flag_values"], f["regime_low"].attrs["flag_meanings"].split()))
+            for name in ("regime_low", "regime_high"):
+                assert f"{name}: {low_codes[f[name][index]]}" in cell["readout"], (name, cell["readout"])
             argv = shlex.split(cell["command"])
             assert argv[:2] == ["punchsweep", "surface"] and "--level" not in argv
             run = subprocess.run([ENGINE, *argv[1:], "--format", "json"], capture_output=True, text=True)
