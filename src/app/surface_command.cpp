@@ -398,17 +398,18 @@ void evaluate(SurfaceRun& run, bool progress) {
                                         run.inputs.problem.loading};
   run.derivatives.resize(static_cast<std::size_t>(run.curve.levels()));
   run.ranges.resize(static_cast<std::size_t>(run.curve.levels()));
-  for (int level = 1; level < run.curve.levels(); ++level) {
-    const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
-    run.derivatives[static_cast<std::size_t>(level)] =
-        model::level_t_star_derivatives(run.curve, level, surface_load, touch.t_star);
-    if (!run.tolerances.empty()) {
-      try {
-        run.ranges[static_cast<std::size_t>(level)] = model::level_t_star_range(run.curve, level, surface_load, run.tolerances);
-      } catch (const std::invalid_argument& e) {
-        throw input::UsageError(std::string("--tolerance: ") + e.what());
-      }
+  std::vector<model::TStarRange> ranges;
+  if (!run.tolerances.empty()) {
+    try {
+      ranges = model::level_t_star_ranges(run.curve, surface_load, run.tolerances);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError(std::string("--tolerance: ") + e.what());
     }
+  }
+  for (int level = 1; level < run.curve.levels(); ++level) {  // the tallest touch at once
+    const std::size_t at = static_cast<std::size_t>(level);
+    run.derivatives[at] = model::level_t_star_derivatives(run.curve, level, surface_load, run.history.levels[at].t_star);
+    if (!ranges.empty()) run.ranges[at] = ranges[at];
   }
   if (run.check) {
     // The time stepping of the same cell, steps scaled to the law as `reference` scales them.

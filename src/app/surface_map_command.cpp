@@ -352,7 +352,7 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
       }
       if (!in.tolerance.empty()) {
         // The box about this point (each tolerance about its own value here), each level's
-        // t* at its corners (model::level_t_star_range, as surface --tolerance).
+        // t* at its corners (model::level_t_star_ranges, as surface --tolerance).
         std::vector<model::Tolerance> box;
         for (std::size_t k = 0; k < in.tolerance.size(); ++k) {
           const model::PointAxis& c = in.tolerance_coordinates[k];
@@ -360,13 +360,14 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
                                                                                        : point.law[c.law_index]));
         }
         const model::SurfaceLoad surface_load{point.problem.pbar0, in.spec, point.law, point.problem.loading};
-        for (std::size_t level = 0; level < L; ++level) {
-          model::TStarRange r;
-          try {
-            r = model::level_t_star_range(run.curve, static_cast<int>(level), surface_load, box);
-          } catch (const std::invalid_argument&) {
-            continue;  // a corner outside a parameter's range (T < 1): NaN, not computed, as a sweep's map
-          }
+        std::vector<model::TStarRange> ranges;
+        try {
+          ranges = model::level_t_star_ranges(run.curve, surface_load, box);
+        } catch (const std::invalid_argument&) {
+          // A corner outside a parameter's range (T < 1): NaN, not computed, as a sweep's map.
+        }
+        for (std::size_t level = 0; level < ranges.size(); ++level) {
+          const model::TStarRange& r = ranges[level];
           if (r.not_computed > 0) continue;
           map.t_star_low[row * L + level] = r.low;
           map.t_star_high[row * L + level] = r.high;

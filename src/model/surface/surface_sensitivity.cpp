@@ -65,8 +65,8 @@ std::vector<TStarDerivative> level_t_star_derivatives(const LoadCurve& curve, in
   return out;
 }
 
-TStarRange level_t_star_range(const LoadCurve& curve, int level, const SurfaceLoad& load,
-                              std::span<const Tolerance> tolerances) {
+std::vector<TStarRange> level_t_star_ranges(const LoadCurve& curve, const SurfaceLoad& load,
+                                            std::span<const Tolerance> tolerances) {
   if (tolerances.size() > kMaxTolerances) throw std::invalid_argument("at most 6 tolerances");
   std::vector<int> index;
   for (const Tolerance& t : tolerances) {
@@ -77,7 +77,7 @@ TStarRange level_t_star_range(const LoadCurve& curve, int level, const SurfaceLo
                                   "tolerances on the pressure and the creep law's parameters");
     }
   }
-  TStarRange range;
+  std::vector<TStarRange> ranges(static_cast<std::size_t>(curve.levels()));
   const std::size_t corners = std::size_t{1} << tolerances.size();
   for (std::size_t corner = 0; corner < corners; ++corner) {
     SurfaceLoad moved = load;
@@ -90,11 +90,12 @@ TStarRange level_t_star_range(const LoadCurve& curve, int level, const SurfaceLo
                                     std::string(tolerances[k].parameter->range));
       }
     }
-    double t = 0.0;
-    const Regime regime = level_regime(curve, level, moved, &t);
-    range.take(t, regime);
+    // Every level's touch at this corner from one creep law and one reading of the curve.
+    const std::unique_ptr<CreepLaw> creep = make_creep_law(*moved.law, moved.law_values);
+    const std::vector<LevelTouch> touches = level_touches(curve, CreepWeightedLoad(*creep, moved.pbar0, moved.shape));
+    for (std::size_t level = 0; level < ranges.size(); ++level) ranges[level].take(touches[level].t_star, touches[level].regime);
   }
-  return range;
+  return ranges;
 }
 
 }  // namespace punchsweep::model

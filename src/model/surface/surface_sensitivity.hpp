@@ -33,10 +33,11 @@ double level_t_star(const LoadCurve& curve, int level, const SurfaceLoad& load);
 std::vector<TStarDerivative> level_t_star_derivatives(const LoadCurve& curve, int level, const SurfaceLoad& load,
                                                       double t_star);
 
-/// The least and greatest t* of `level` over the corners of `tolerances` (each on pbar or
-/// one of the law's parameters; std::invalid_argument naming one on another parameter, or
-/// one that takes its parameter out of range), with the corners' regimes counted.
-TStarRange level_t_star_range(const LoadCurve& curve, int level, const SurfaceLoad& load,
-                              std::span<const Tolerance> tolerances);
+/// Each level's least and greatest t* over the corners of `tolerances` (each on pbar or one
+/// of the law's parameters; std::invalid_argument naming one on another parameter, or one
+/// that takes its parameter out of range), with the corners' regimes counted: one entry
+/// per level, every corner's creep law made and the curve read once for all levels.
+std::vector<TStarRange> level_t_star_ranges(const LoadCurve& curve, const SurfaceLoad& load,
+                                            std::span<const Tolerance> tolerances);
 
 }  // namespace punchsweep::model
