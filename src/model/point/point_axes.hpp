@@ -63,8 +63,6 @@ class PointAxes {
   std::size_t find(std::string_view name) const;
   /// The positions of the law's parameters, in the law's order.
   const std::vector<std::size_t>& law() const { return law_; }
-  /// Whether the points carry a ramp_time of their own.
-  bool ramp() const { return find(Coordinate::ramp_time) < size(); }
   /// Every position, in the order a batch's runs nest (by Coordinate, then axis order):
   /// l, s, dh, the law's parameters, ramp_time, pbar.
   std::vector<std::size_t> nesting() const;
