@@ -108,15 +108,15 @@ def coarsening(ds, items: list[str]) -> dict[str, int]:
     return steps
 
 
-def point_variables(ds) -> tuple[list[str], list[str]]:
+def point_variables(ds, over=None) -> tuple[list[str], list[str]]:
     """The map's per-point variables, as the file declares them (the engine writes one per
     map::kQuantities entry it stores, in that order): the reals and the flags (those with
-    flag_meanings) over the grid's axes. A quantity the engine gains reaches the page with
-    no change here."""
+    flag_meanings) over the grid's axes, or over the dimensions `over(dims)` accepts. A
+    quantity the engine gains reaches the page with no change here."""
     grid = ds["regime"].dims
-    over_grid = [v for v in ds.data_vars if ds[v].dims == grid]
-    flags = [v for v in over_grid if "flag_meanings" in ds[v].attrs]
-    reals = [v for v in over_grid if v not in flags and ds[v].dtype.kind == "f"]
+    chosen = [v for v in ds.data_vars if (over(ds[v].dims) if over else ds[v].dims == grid)]
+    flags = [v for v in chosen if "flag_meanings" in ds[v].attrs]
+    reals = [v for v in chosen if v not in flags and ds[v].dtype.kind == "f"]
     return reals, flags
 
 
@@ -356,14 +356,14 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
     # Every per-level variable over (some of) the map's axes, as the file declares them: the
     # flags (regime; with a box of tolerances regime_low, regime_high) and the reals (t*, X*;
     # t_star_low, t_star_high), so that one the command gains reaches the page unchanged.
-    per_cell = [v for v in ds.data_vars if "level" in ds[v].dims and set(ds[v].dims) <= set(names)]
+    reals, flag_names = point_variables(ds, over=lambda dims: "level" in dims and set(dims) <= set(names))
     flags = {}
-    for v in [v for v in per_cell if "flag_meanings" in ds[v].attrs]:
+    for v in flag_names:
         f = pm.flags(ds, v)
         flags[v] = {"data": packed(ds[v].transpose(*names).values, "<i1"),
                     "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}
     variables = {}
-    for v in [v for v in per_cell if v not in flags and ds[v].dtype.kind == "f"]:
+    for v in reals:
         da = ds[v].broadcast_like(regime).transpose(*names)
         variables[v] = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
                         "data": packed(da.values, "<f8")}
