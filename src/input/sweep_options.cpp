@@ -28,6 +28,7 @@
 #include "model/laws/material.hpp"
 #include "model/numerics/number_text.hpp"
 #include "model/point/parameters.hpp"
+#include "model/point/point_axes.hpp"
 #include "reference/reference_point.hpp"
 #include "run/text_lines.hpp"
 #include "input/axis_parser.hpp"
@@ -823,14 +824,15 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
     }
     config.creep_law = config.material_spec.get();
   }
-  // The grid: the creep law's sweep axes, in their order, and ramp_time last when it is set.
-  // A [grid] key set for a parameter the law does not have is refused.
+  // The grid: a point's coordinates under the creep law (model::PointAxes), in their order,
+  // ramp_time last when it is set. A [grid] key set for a parameter the law does not have is
+  // refused.
   config.grid.axes.clear();
-  std::vector<const model::Parameter*> wanted = model::sweep_axes(config.creep_law->parameters);
   const std::size_t ramp_key = key_index(&model::ramp_time_parameter());
   config.ramp = settings[ramp_key].source != Source::default_value;
-  if (config.ramp) wanted.push_back(&model::ramp_time_parameter());
-  for (const model::Parameter* p : wanted) {
+  const model::PointAxes wanted(config.creep_law->parameters, config.ramp);
+  for (const model::PointAxis& coordinate : wanted) {
+    const model::Parameter* p = coordinate.parameter;
     if (p->name == model::material_parameter().name) {
       // The categorical axis of the material files, labelled by their names.
       map::Axis axis;
@@ -897,7 +899,7 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
   for (std::size_t k = 0; k < keys().size(); ++k) {
     const KeySpec& spec = keys()[k];
     if (spec.fixed != Fixed::none || settings[k].source == Source::default_value) continue;
-    if (std::none_of(wanted.begin(), wanted.end(), [&](const model::Parameter* p) { return p->name == spec.name; })) {
+    if (wanted.find(spec.name) == wanted.size()) {
       problems.push_back(dotted(spec) + " = " + settings[k].text + ": the creep law " +
                          std::string(config.creep_law->name) + " has no parameter " + spec.name +
                          "; valid range: the axes of that law's grid");
