@@ -7,10 +7,15 @@
 # PUNCHSWEEP=/path/to/punchsweep skips the install and build steps.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-config=$(realpath "${1:-$root/sweeps/default.ini}")
+# shellcheck source=jobs/run_folder.sh
+source "$root/jobs/run_folder.sh"
+config=$(realpath -m "${1:-$root/sweeps/default.ini}")
 name=$(basename "$config" .ini)
 run=${2:-"$root/runs/$name-$(date -u +%Y%m%d-%H%M%S)"}
 cores=$(getconf _NPROCESSORS_ONLN)  # not nproc: it honours OMP_NUM_THREADS
+# The config is checked before anything is built or written (the engine's check once it is
+# built): a missing or refused config leaves no run folder, config.ini or provenance.txt.
+check_config "$config" || exit 2
 
 binary=${PUNCHSWEEP:-}  # an engine already built elsewhere (the tests use this)
 if [ -z "$binary" ]; then
@@ -24,8 +29,7 @@ if [ -z "$binary" ]; then
   binary="$root/build/src/app/punchsweep"
 fi
 
-# shellcheck source=jobs/run_folder.sh
-source "$root/jobs/run_folder.sh"
+check_config "$config" "$binary" || exit 2
 mkdir -p "$run"
 run=$(realpath "$run")
 prepare_run "$config" "$run" "$binary" || exit 2

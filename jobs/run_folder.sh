@@ -4,6 +4,23 @@
 # draws the pictures (PUNCHSWEEP_PYTHON names another).
 python=${PUNCHSWEEP_PYTHON:-/usr/bin/python3}
 
+# check_config CONFIG [BINARY]: whether CONFIG is a file and, given the engine, one it accepts
+# (sweep --dry-run, which writes nothing): asked before a run folder is made or anything is
+# written into one, so that a missing or refused config leaves nothing behind; the engine's
+# own message says why.
+check_config() {
+  local config=$1 binary=${2:-}
+  if [ ! -f "$config" ]; then
+    echo "punchsweep: config $config: $([ -e "$config" ] && echo "not a file" || echo "no such file");" \
+      "nothing was written" >&2
+    return 2
+  fi
+  [ -z "$binary" ] || "$binary" sweep --config "$config" --dry-run > /dev/null || {
+    echo "punchsweep: config $config was refused by the engine (above); nothing was written" >&2
+    return 2
+  }
+}
+
 # prepare_run CONFIG RUN BINARY: RUN/config.ini and RUN/materials/, copied from CONFIG and
 # the material files it names (relative paths taken from the config's own folder), so that
 # the folder runs and resumes by itself. Into a folder that holds a run already, the copy is

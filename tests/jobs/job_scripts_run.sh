@@ -87,6 +87,19 @@ kill -INT -- "-$job"
 set +e; wait "$job"; code=$?; set -e
 [ "$code" = 130 ] || { echo "FAIL: Ctrl-C while staging: exit $code"; cat interrupted.log; exit 1; }
 [ -z "$(ls -A interrupted | grep '^\.config-')" ] || { echo "FAIL: Ctrl-C left a staged config"; ls -A interrupted; exit 1; }
+# 4e) A config the engine refuses (an unknown key), and one that does not exist: the engine's
+#     message, a non-zero exit, and no run folder (no config.ini, no provenance.txt).
+printf '[grid]\nl = 0.75\nbogus_key = 1\n' > refused.ini
+for config in refused.ini missing.ini; do
+  set +e; bash "$root/jobs/local.sh" "$config" "$PWD/refused-run" > refused.log 2>&1; code=$?; set -e
+  [ "$code" != 0 ] || { echo "FAIL: jobs/local.sh with $config: exit 0"; cat refused.log; exit 1; }
+  [ ! -e refused-run ] || { echo "FAIL: jobs/local.sh with $config left a run folder"; ls -A refused-run; exit 1; }
+  grep -q "nothing was written" refused.log || { echo "FAIL: the refusal of $config does not say so"; cat refused.log; exit 1; }
+done
+grep -q "no such file" refused.log || { echo "FAIL: a missing config is not named"; cat refused.log; exit 1; }
+set +e; bash "$root/jobs/local.sh" refused.ini "$PWD/refused-run" > refused.log 2>&1; set -e
+grep -q "punchsweep sweep: .*unknown key grid.bogus_key" refused.log ||
+  { echo "FAIL: the engine's message on a refused config is not shown"; cat refused.log; exit 1; }
 SLURM_JOB_ID=6161 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/elsewhere/slurm-nbr" \
   bash "$root/jobs/slurm.sbatch" "$root/sweeps/materials/nbr.ini" > slurm-nbr.log 2>&1 ||
   { echo "FAIL: slurm.sbatch with sweeps/materials/nbr.ini"; cat slurm-nbr.log; exit 1; }
