@@ -39,6 +39,7 @@ import functools
 import html
 import json
 import math
+import re
 import sys
 import zlib
 from pathlib import Path
@@ -93,12 +94,18 @@ def plotly_mb() -> float:
     return len(plotly_packed()) / 1e6
 
 
-def coarsening(ds, items: list[str]) -> dict[str, int]:
+def coarsening(ds, items: list[str], thinned: tuple[str, ...] | None = None) -> dict[str, int]:
+    """--every's steps by axis, each axis one of `thinned` (default the map's axes; a surface
+    map's level is not thinned: its levels are the answer, not a grid)."""
+    thinned = tuple(pm.axes(ds)) if thinned is None else thinned
     steps = {}
     for item in items:
         name, _, k = item.partition("=")
-        if name not in pm.axes(ds):
-            raise pm.MapError(f"--every {item}: '{name}' is not an axis of the map (axes: {', '.join(pm.axes(ds))})")
+        if name not in thinned and name in pm.axes(ds):
+            raise pm.MapError(f"--every {item}: the levels are the map's answer, not a grid; thin one of "
+                              f"{', '.join(thinned)}")
+        if name not in thinned:
+            raise pm.MapError(f"--every {item}: '{name}' is not an axis of the map (axes: {', '.join(thinned)})")
         try:
             steps[name] = int(k)
         except ValueError:
@@ -151,6 +158,10 @@ def embedded(ds) -> list[tuple[str, str]]:
     return names
 
 
+PAGE_OVERHEAD = 200_000
+"""Bytes of the page besides plotly.js and the arrays: its own code and the axes' values."""
+
+
 def estimate_mb(ds, steps: dict[str, int], samples: int = 8, block: int = 1 << 14) -> float:
     """The page's size in MB, estimated before it is built, from the map's metadata and a few
     blocks of each array: plotly.js, and per array its size (after `steps`) times the
@@ -158,7 +169,7 @@ def estimate_mb(ds, steps: dict[str, int], samples: int = 8, block: int = 1 << 1
     Reads about samples x block values per array, whatever the map's size."""
     sel = {n: slice(None, None, k) for n, k in steps.items()}
     ds = ds.isel(sel) if sel else ds
-    total = len(plotly_packed()) + 200_000  # the page's own code and the axes' values
+    total = len(plotly_packed()) + PAGE_OVERHEAD
     for name, dtype in embedded(ds):
         da = ds[name]
         size = int(np.prod(da.shape))
@@ -190,20 +201,38 @@ def estimate_mb(ds, steps: dict[str, int], samples: int = 8, block: int = 1 << 1
     return total / 1e6
 
 
-def every_that_fits(ds, axis: str, max_mb: float) -> int:
+def every_that_fits(ds, axis: str, max_mb: float, estimate=None) -> int:
     """The smallest K for which `--every AXIS=K` gives a page estimated within max_mb (with
-    10% to spare for the estimate), 0 if none does."""
+    10% to spare for the estimate), 0 if none does; `estimate(ds, steps)` is the page's
+    estimate (estimate_mb, or surface_estimate_mb for a surface map)."""
+    estimate = estimate or estimate_mb
     plotly = plotly_mb()
-    whole = estimate_mb(ds, {})
+    whole = estimate(ds, {})
     if whole <= 0.9 * max_mb:
         return 1
     n = ds.sizes[axis]
     k = max(2, int(np.ceil((whole - plotly) / max(0.9 * max_mb - plotly, 1e-9))))
     while k <= n:
-        if estimate_mb(ds, {axis: k}) <= 0.9 * max_mb:
+        if estimate(ds, {axis: k}) <= 0.9 * max_mb:
             return k
         k += 1
     return 0
+
+
+def refuse_if_far_too_large(ds, steps: dict[str, int], max_mb: float, thinned: tuple[str, ...],
+                            estimate=None, slack: float = 1.5) -> None:
+    """MapError, before the page is built, where its estimate is above slack x max_mb (a
+    regime map's estimate runs up to 25% high, a surface map's up to 12%: docs/maps.md),
+    naming the estimate, the limit and the --every on the longest of the `thinned` axes that
+    fits (an 8e6-point map took 49 s and 1.5 GB to be refused when the page was built first)."""
+    estimate = estimate or estimate_mb
+    size = estimate(ds, steps)
+    if size > slack * max_mb:
+        biggest = max(thinned, key=lambda n: ds.sizes[n])
+        k = every_that_fits(ds, biggest, max_mb, estimate)
+        hint = f"--every {biggest}={k}" if k else f"--every on more than one axis (even every {biggest} alone is too much)"
+        raise pm.MapError(f"the page would be about {size:.0f} MB (estimated), above --max-mb {max_mb:g} "
+                          f"(plotly.js is {plotly_mb():.1f} MB of it): coarsen the map, e.g. {hint}, or raise --max-mb")
 
 
 def attr_text(value) -> str:
@@ -215,14 +244,37 @@ def design_window(path: str | None) -> dict | None:
     finite edges (in R), each named for the legend; None without one."""
     if path is None:
         return None
-    d = pm.read_design_window(path)
-    q, name, unit = d["quantity"], pm.design_quantity(d), d["physical"]["unit"]
+    try:
+        d = pm.read_design_window(path)
+    except pm.MapError as e:
+        raise pm.MapError(f"--design {e}") from None
+    physical = d.get("physical")
+    if not isinstance(physical, dict):
+        raise pm.MapError(f"--design {path}: physical = {json.dumps(physical)} is not an object (the window in the "
+                          f"quantity's physical unit: lower, upper, unit)")
+    if not isinstance(d.get("empty"), bool):
+        raise pm.MapError(f"--design {path}: empty = {json.dumps(d.get('empty'))} is not true or false")
+    if not isinstance(physical.get("unit"), str):
+        raise pm.MapError(f"--design {path}: physical.unit = {json.dumps(physical.get('unit'))} is not a unit's name")
+    q, name, unit = d["quantity"], pm.design_quantity(d), physical["unit"]
+
+    def number(where: dict, key: str, field: str, meaning: str) -> float | None:
+        value = where.get(key)
+        if value is None or (isinstance(value, (int, float)) and not isinstance(value, bool)):
+            return value
+        raise pm.MapError(f"--design {path}: {field} = {json.dumps(value)} is not a number or null ({meaning})")
+
+    scale = d["unit"] if isinstance(d.get("unit"), str) else "the map's scale"
     edges = []
-    for side, value, physical in (("lower", d["lower"], d["physical"]["lower"]),
-                                  ("upper", d["upper"], d["physical"]["upper"])):
+    for side in ("lower", "upper"):
+        value = number(d, side, side, f"the window's {side} edge in {scale}")
+        shown = number(physical, side, f"physical.{side}", f"the window's {side} edge in {unit}")
         if value is not None and math.isfinite(value) and not d["empty"]:
-            edges.append((f"design window: {name} {side} edge {physical:.4g} {unit}", float(value)))
-    return {"quantity": q, "edges": edges, "empty": bool(d["empty"])}
+            if shown is None or not math.isfinite(shown):
+                raise pm.MapError(f"--design {path}: physical.{side} = {json.dumps(shown)} is not a finite number "
+                                  f"(the window's {side} edge in {unit}; {side} is {value:g})")
+            edges.append((f"design window: {name} {side} edge {shown:.4g} {unit}", float(value)))
+    return {"quantity": q, "edges": edges, "empty": d["empty"]}
 
 
 def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
@@ -312,7 +364,11 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
 def is_surface_map(path: str) -> bool:
     """Whether `path` is a map `punchsweep surface-map` wrote (regime over a level axis, the
     caps touched over time), not a regime map."""
+    import os
+
     import h5py
+    if not os.path.isfile(path):  # not a file (a pipe would block h5py): open_map says what it is
+        return False
     try:
         with h5py.File(path, "r") as f:
             return "touched" in f and "regime" in f and "level" in f
@@ -321,29 +377,142 @@ def is_surface_map(path: str) -> bool:
 
 
 def open_surface_map(path: str):
+    """A surface map as an xarray Dataset, read lazily: the size of its page is estimated
+    (surface_estimate_mb) before its arrays are read."""
     import xarray
     try:
-        return xarray.open_dataset(path, engine="h5netcdf").load()
+        return xarray.open_dataset(path, engine="h5netcdf")
     except (OSError, ValueError) as e:
         raise pm.MapError(f"{path}: not a readable surface map ({e})") from None
 
 
-def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
-    """A surface map (surface-map's file) as the page reads a regime map: its axes (the
-    geometry's, the load's and level: a slider, level 1 first), each level's regime and t*
-    and X* per cell (and, with a box of tolerances, t* and the regimes at its ends), and the
-    caps touched and the area fraction per time (NaN where the
-    snapshot is flagged: not valid is never shown as a number); clicking a cell gives the
-    `punchsweep surface` command of that point."""
+def movable_axes(ds) -> tuple[str, ...]:
+    """A surface map's axes but level: the geometry's and the load's (those --every thins)."""
+    return tuple(n for n in ds["regime"].dims if n != "level")
+
+
+def surface_axes(ds, x: str | None, y: str | None) -> tuple[str, str]:
+    """The page's axes across and up: as given, else pbar across (or the first axis of several
+    values) and up the first other axis of several values. A map with one axis besides level
+    (a height map's texture over the pressure) has it across and level up: a heat map needs
+    two axes, and each level's answer over that one is the picture."""
     names = list(ds["regime"].dims)
-    movable = [n for n in names if n != "level"]
-    x = x or "pbar"
-    y = y or next((n for n in movable if n != x and ds.sizes[n] > 1), next(n for n in movable if n != x))
+    movable = movable_axes(ds)
+    if not movable:
+        raise pm.MapError("the surface map has no axis but level: the page draws a heat map over an axis of the "
+                          "geometry or the load (make the map over --pbar, say)")
+    several = [n for n in movable if ds.sizes[n] > 1]
+    x = x or ("pbar" if "pbar" in movable else (several or list(movable))[0])
+    y = y or next((n for n in several if n != x), next((n for n in movable if n != x), "level"))
     for name, option in ((x, "--x"), (y, "--y")):
         if name not in names:
             raise pm.MapError(f"{option} {name}: not an axis of the map (axes: {', '.join(names)})")
     if x == y:
         raise pm.MapError(f"--x and --y are both {x}; choose two axes")
+    return x, y
+
+
+OPTION_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]*")
+"""A texture keyword as `punchsweep surface` takes it (--lattice, --height-map, --C)."""
+
+
+def surface_texture(ds) -> dict:
+    """The texture's keywords (the map's `texture` attribute, JSON), each a plain option name:
+    a clicked cell's command is pasted into a shell, so a key such as `lattice; touch x; #`
+    (a forged attribute) is refused, not written into it."""
+    text = attr_text(ds.attrs.get("texture", "{}"))
+    try:
+        texture = json.loads(text)
+    except ValueError:
+        texture = None
+    if not isinstance(texture, dict):
+        raise pm.MapError(f"the map's texture attribute is not a JSON object of the texture's keywords: {text[:80]!r}")
+    for key in texture:
+        if not OPTION_NAME.fullmatch(key):
+            raise pm.MapError(f"the map's texture names the keyword {key!r}, which is no option of punchsweep "
+                              f"surface (letters, digits, '-', '_' and '.')")
+    scatter = attr_text(ds.attrs.get("scatter_kind", ""))
+    if scatter and not OPTION_NAME.fullmatch(scatter):
+        raise pm.MapError(f"the map's scatter_kind {scatter!r} is no scatter of punchsweep surface (normal, uniform)")
+    return texture
+
+
+def surface_arrays(ds) -> list[tuple[str, str, str]]:
+    """What a surface map's page embeds, as (kind, variable, type): every per-level variable
+    over (some of) the map's axes, as the file declares them: the flags (regime; with a box of
+    tolerances regime_low, regime_high) and the reals (t*, X*; t_star_low, t_star_high), so
+    that one the command gains reaches the page unchanged; and the series over time (the caps
+    touched, the area fraction)."""
+    names = list(ds["regime"].dims)
+    reals, flag_names = point_variables(ds, over=lambda dims: "level" in dims and set(dims) <= set(names))
+    return ([("flags", v, "<i1") for v in flag_names] + [("variables", v, "<f8") for v in reals]
+            + [("series", v, "<f8") for v in ("touched", "area_fraction")])
+
+
+def surface_array(ds, kind: str, name: str) -> np.ndarray:
+    """One array of a surface map's page, over the map's axes in its order (C order), the
+    series with time last: the reals broadcast over every axis; the series NaN where the
+    snapshot is flagged (`valid` not 0: not valid is never shown as a number)."""
+    names = list(ds["regime"].dims)
+    if kind == "flags":
+        return ds[name].transpose(*names).values
+    if kind == "variables":
+        return ds[name].broadcast_like(ds["regime"]).transpose(*names).values
+    return ds[name].where(ds["valid"] == 0).broadcast_like(ds["regime"]).transpose(*names, "t").values
+
+
+SERIES_DEFLATE = 1.25
+"""A trusted snapshot's series take up to 1.25 times their bytes in the file on the page
+(deflated alone; the file shuffles their bytes first): 0.91 to 1.25 measured over five maps."""
+
+
+def surface_estimate_mb(ds, steps: dict[str, int]) -> float:
+    """A surface map's page size in MB, estimated before any of its arrays is read: each page
+    array's values counted from the axes' lengths (after `steps`), at the bytes its source
+    variable takes in the file (deflated, a metadata query; the writer stores each variable as
+    one compressed chunk, so reading even a block of it would inflate it whole); the series
+    only where a snapshot is trusted (the int8 `valid` flags, the one array read: the page
+    blanks the rest), a broadcast array at least 1/300 of its raw size (deflate codes a
+    repeat in matches of at most 258 bytes), and base64's 4/3. Measured 2% to 12% above the
+    page (docs/maps.md)."""
+    sel = {n: slice(None, None, k) for n, k in steps.items()}
+    thinned = ds.isel(sel) if sel else ds
+    names = tuple(thinned["regime"].dims)
+    valid = thinned["valid"].values
+    trusted = float(np.mean(valid == 0)) if valid.size else 1.0
+    arrays = surface_arrays(thinned)
+    stored = stored_bytes(ds, [name for _, name, _ in arrays])
+    total = len(plotly_packed()) + PAGE_OVERHEAD
+    for kind, name, dtype in arrays:
+        kept = stored[name] * thinned[name].size / max(ds[name].size, 1)
+        dims = names + (("t",) if kind == "series" else ())
+        raw = np.dtype(dtype).itemsize * int(np.prod([thinned.sizes[d] for d in dims]))
+        deflated = kept * (SERIES_DEFLATE * trusted if kind == "series" else 1.0)
+        total += max(deflated, raw / 300) * 4 / 3
+    return total / 1e6
+
+
+def stored_bytes(ds, names: list[str]) -> dict[str, int]:
+    """The bytes each variable takes in the map's file (compressed), from its metadata."""
+    import h5py
+    with h5py.File(ds.encoding["source"], "r") as f:
+        return {name: int(f[name].id.get_storage_size()) for name in names}
+
+
+def surface_payload(ds, x: str | None, y: str | None, map_path: str, steps: dict[str, int] | None = None) -> dict:
+    """A surface map (surface-map's file) as the page reads a regime map: its axes (the
+    geometry's, the load's and level: a slider, level 1 first), each level's regime and t*
+    and X* per cell (and, with a box of tolerances, t* and the regimes at its ends), and the
+    caps touched and the area fraction per time (NaN where the
+    snapshot is flagged: not valid is never shown as a number); clicking a cell gives the
+    `punchsweep surface` command of that point. `steps` keeps every K-th value of an axis
+    (--every)."""
+    steps = steps or {}
+    x, y = surface_axes(ds, x, y)
+    texture = surface_texture(ds)
+    sel = {n: slice(None, None, k) for n, k in steps.items()}
+    ds = (ds.isel(sel) if sel else ds).load()
+    names = list(ds["regime"].dims)
     axes = []
     for n in names:
         values = np.asarray(ds[n].values, dtype=float)
@@ -352,28 +521,15 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
         axes.append({"name": n, "values": [float(v) for v in values], "scaled": [float(v) for v in values],
                      "unit": unit, "log": bool(log), "labels": None,
                      "label": f"{n}: {attr_text(ds[n].attrs.get('long_name', n))}" + (f" [{unit}]" if unit not in ("", "1") else "")})
-    regime = ds["regime"].transpose(*names)
-    # Every per-level variable over (some of) the map's axes, as the file declares them: the
-    # flags (regime; with a box of tolerances regime_low, regime_high) and the reals (t*, X*;
-    # t_star_low, t_star_high), so that one the command gains reaches the page unchanged.
-    reals, flag_names = point_variables(ds, over=lambda dims: "level" in dims and set(dims) <= set(names))
-    flags = {}
-    for v in flag_names:
-        f = pm.flags(ds, v)
-        flags[v] = {"data": packed(ds[v].transpose(*names).values, "<i1"),
-                    "codes": {str(c): m for c, m in zip(f.codes, f.meanings)}}
-    variables = {}
-    for v in reals:
-        da = ds[v].broadcast_like(regime).transpose(*names)
-        variables[v] = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
-                        "data": packed(da.values, "<f8")}
-    series = {}
-    trusted = ds["valid"] == 0
-    for v in ("touched", "area_fraction"):
-        da = ds[v].where(trusted).broadcast_like(regime).transpose(*names, "t")
-        series[v] = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)),
-                     "data": packed(da.values, "<f8")}
-    texture = json.loads(attr_text(ds.attrs.get("texture", "{}")))
+    parts = {"flags": {}, "variables": {}, "series": {}}
+    for kind, v, dtype in surface_arrays(ds):
+        entry = {"data": packed(surface_array(ds, kind, v), dtype)}
+        if kind == "flags":
+            f = pm.flags(ds, v)
+            entry["codes"] = {str(c): m for c, m in zip(f.codes, f.meanings)}
+        else:
+            entry = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)), **entry}
+        parts[kind][v] = entry
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if k != "times")
     return {
         "source": Path(map_path).name,
@@ -382,9 +538,9 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str) -> dict:
         "localization": "", "creep_law": "", "C": 0.5, "R": "",
         "time_unit": attr_text(ds.attrs.get("time_unit", "T_eps")),
         "axes": axes, "x": x, "y": y, "shape": [len(a["values"]) for a in axes],
-        "variables": variables, "flags": flags, "series": series,
+        "variables": parts["variables"], "flags": parts["flags"], "series": parts["series"],
         "time": [float(t) for t in ds["t"].values],
-        "colours": pm.REGIME_COLOURS, "coarsened": {},
+        "colours": pm.REGIME_COLOURS, "coarsened": {n: k for n, k in steps.items() if k > 1},
         "initial": {"level": 1 if ds.sizes["level"] > 1 else 0},
         "surface": {"texture": {k: v for k, v in texture.items() if k != "times"},
                     "scatter": attr_text(ds.attrs.get("scatter_kind", ""))},
@@ -444,7 +600,13 @@ function fmt(v) { return v === null || Number.isNaN(v) ? "NaN" : (Math.abs(v) >=
 // hover text (<a href>, <b>, <br>, entities), so &, < and > are given as entities.
 function plain(text) { return String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;"); }
 // A word of a shell command, quoted where the shell would read it otherwise.
-function shellWord(word) { return /^[A-Za-z0-9_.,:=@%+\\/-]+$/.test(word) ? word : "'" + word.replace(/'/g, "'\\''") + "'"; }
+function shellWord(word) {
+  const w = String(word);
+  return /^[A-Za-z0-9_.,:=@%+\\/-]+$/.test(w) ? w : "'" + w.replace(/'/g, "'\\''") + "'";
+}
+// A command line from its words, each quoted for the shell: option names too (a map's
+// attributes and axis names are the file's text, and a pasted command runs what they say).
+function commandLine(words) { return words.map(shellWord).join(" "); }
 function unitText(u) { return u && u !== "1" ? " " + u : ""; }
 function axisValueText(a, i) { return a.labels ? a.labels[i] : fmt(a.values[i]) + unitText(a.unit); }
 
@@ -494,35 +656,35 @@ const OPTION = {ramp_time: "ramp"};
 const optionOf = (a, physical) => (physical && a.name === "pbar" ? "pressure" : OPTION[a.name] || a.name);
 
 function surfaceCommand(index) {
-  const parts = ["punchsweep surface"];
-  for (const [key, value] of Object.entries(MAP.surface.texture)) parts.push(`--${key} ${shellWord(value)}`);
+  const words = ["punchsweep", "surface"];
+  for (const [key, value] of Object.entries(MAP.surface.texture)) words.push(`--${key}`, value);
   MAP.axes.forEach((a, j) => {
     if (a.name === "level") return;
-    if (a.name === "scatter_width") parts.push(`--scatter ${MAP.surface.scatter}:${a.values[index[j]]}`);
-    else parts.push(`--${optionOf(a, false)} ${a.values[index[j]]}`);
+    if (a.name === "scatter_width") words.push("--scatter", `${MAP.surface.scatter}:${a.values[index[j]]}`);
+    else words.push(`--${optionOf(a, false)}`, a.values[index[j]]);
   });
-  if (MAP.time.length) parts.push(`--times ${MAP.time.join(",")}`);
-  return parts.join(" ");
+  if (MAP.time.length) words.push("--times", MAP.time.join(","));
+  return commandLine(words);
 }
 
 function pointCommand(index) {
   if (MAP.surface) return surfaceCommand(index);
-  const parts = ["punchsweep point"];
+  const words = ["punchsweep", "point"];
   const physical = a => PHYSICAL.has(a.unit);
   MAP.axes.forEach((a, j) => {
-    if (a.name === "material") parts.push(`--material ${shellWord(`${a.labels ? a.labels[index[j]] : index[j]}.ini`)}`);
+    if (a.name === "material") words.push("--material", `${a.labels ? a.labels[index[j]] : index[j]}.ini`);
     else if (a.name === "time") return;
-    else if (physical(a)) parts.push(`--${optionOf(a, true)} ${String(a.values[index[j]])}${a.unit}`);
-    else parts.push(`--${optionOf(a, false)} ${a.scaled[index[j]]}`);
+    else if (physical(a)) words.push(`--${optionOf(a, true)}`, `${String(a.values[index[j]])}${a.unit}`);
+    else words.push(`--${optionOf(a, false)}`, a.scaled[index[j]]);
   });
-  if (MAP.R && MAP.axes.some(a => physical(a) && a.name !== "pbar")) parts.push(`--R ${MAP.R.replace(/ /g, "")}`);
+  if (MAP.R && MAP.axes.some(a => physical(a) && a.name !== "pbar")) words.push("--R", MAP.R.replace(/ /g, ""));
   const unnamed = MAP.material && !MAP.material_path && !MAP.axes.some(a => a.name === "material");
-  if (MAP.material_path && !MAP.axes.some(a => a.name === "material")) parts.push(`--material ${shellWord(MAP.material_path)}`);
-  if (unnamed) parts.push("--material MATERIAL.ini");
-  if (!MAP.axes.some(a => a.name === "C")) parts.push(`--C ${MAP.C}`);
-  parts.push(`--localization ${MAP.localization}`);
-  if (MAP.time.length) parts.push(`--times ${MAP.time.join(",")}`);
-  return parts.join(" ") + (unnamed ? "\\n(MATERIAL.ini: the map's material_file attribute holds its text)" :
+  if (MAP.material_path && !MAP.axes.some(a => a.name === "material")) words.push("--material", MAP.material_path);
+  if (unnamed) words.push("--material", "MATERIAL.ini");
+  if (!MAP.axes.some(a => a.name === "C")) words.push("--C", MAP.C);
+  words.push("--localization", MAP.localization);
+  if (MAP.time.length) words.push("--times", MAP.time.join(","));
+  return commandLine(words) + (unnamed ? "\\n(MATERIAL.ini: the map's material_file attribute holds its text)" :
     MAP.material_path ? "\\n(the material file as the sweep was given it, relative to where it ran)" : "");
 }
 
@@ -732,32 +894,17 @@ def main(argv: list[str]) -> int:
     out = pm.check_output(args.output, suffixes=(), inputs=[args.map] + ([args.design] if args.design else []))
     if not PLOTLY_JS.is_file():
         raise pm.MapError(f"{PLOTLY_JS} not found: install Debian's python3-plotly (bash cmake/install-deps.sh)")
+    design = design_window(args.design)  # a window that is no window is refused before the map is read
     if is_surface_map(args.map):
-        ds = open_surface_map(args.map)
-        data = surface_payload(ds, args.x if args.x_given else None, args.y if args.y_given else None, args.map)
-        data["design"] = None
-        page = render(data, plotly_packed())
-        size_mb = len(page.encode("utf-8")) / 1e6
-        if size_mb > args.max_mb:
-            raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g}: raise --max-mb")
-        pm.write_whole(out, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"), inputs=[args.map])
-        print(f"explore.py: wrote {out} ({size_mb:.1f} MB, a surface map)")
-        return 0
+        return surface_page(args, out, design)
     ds = pm.open_map(args.map)
     if not pm.is_completed(ds):
         raise pm.MapError(f"{args.map} is not completed (resume the sweep first)")
     steps = coarsening(ds, args.every)
-    # The size is estimated first: a map far too large is refused without building its page
-    # (an 8e6-point map took 49 s and 1.5 GB to be refused when the page was built first).
-    estimate = estimate_mb(ds, steps)
-    if estimate > 1.5 * args.max_mb:  # the estimate runs up to 25% high (docs/maps.md)
-        biggest = max(pm.axes(ds), key=lambda n: ds.sizes[n])
-        k = every_that_fits(ds, biggest, args.max_mb)
-        hint = f"--every {biggest}={k}" if k else f"--every on more than one axis (even every {biggest} alone is too much)"
-        raise pm.MapError(f"the page would be about {estimate:.0f} MB (estimated), above --max-mb {args.max_mb:g} "
-                          f"(plotly.js is {plotly_mb():.1f} MB of it): coarsen the map, e.g. {hint}, or raise --max-mb")
+    # The size is estimated first: a map far too large is refused without building its page.
+    refuse_if_far_too_large(ds, steps, args.max_mb, pm.axes(ds))
     data = payload(ds, args.x, args.y, steps, args.map)
-    data["design"] = design_window(args.design)
+    data["design"] = design
     if data["design"] and data["design"]["quantity"] not in (args.x, args.y):
         print(f"explore.py: note: the design window is of {data['design']['quantity']}, which is neither --x nor "
               f"--y; it is drawn when the page's axes show it", file=sys.stderr)
@@ -770,6 +917,36 @@ def main(argv: list[str]) -> int:
     pm.write_whole(out, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"), inputs=[args.map])
     print(f"explore.py: wrote {out} ({size_mb:.1f} MB: plotly.js {plotly_mb():.1f} MB compressed, the map "
           f"{size_mb - plotly_mb():.1f} MB)")
+    return 0
+
+
+def surface_page(args: argparse.Namespace, out: Path, design: dict | None) -> int:
+    """The page of a surface map: its axes, texture and --every checked and its size estimated
+    from the axes' lengths (and a few blocks of each array) before any array is read whole, so
+    a map far above --max-mb is refused at once, naming the --every that fits."""
+    ds = open_surface_map(args.map)
+    x, y = surface_axes(ds, args.x if args.x_given else None, args.y if args.y_given else None)
+    surface_texture(ds)
+    thinned = movable_axes(ds)
+    steps = coarsening(ds, args.every, thinned)
+    refuse_if_far_too_large(ds, steps, args.max_mb, thinned, surface_estimate_mb, slack=1.25)
+    if y == "level" and not args.y_given:
+        print(f"explore.py: note: the map has one axis besides level ({x}): drawn across, the levels up",
+              file=sys.stderr)
+    if design:
+        print("explore.py: note: a design window (the two-level square lattice's) is not drawn on a surface "
+              "map's page", file=sys.stderr)
+    data = surface_payload(ds, x, y, args.map, steps)
+    data["design"] = None
+    page = render(data, plotly_packed())
+    size_mb = len(page.encode("utf-8")) / 1e6
+    if size_mb > args.max_mb:
+        biggest = max(thinned, key=lambda n: ds.sizes[n])
+        k = max(2, every_that_fits(ds, biggest, args.max_mb, surface_estimate_mb))
+        raise pm.MapError(f"the page would be {size_mb:.1f} MB, above --max-mb {args.max_mb:g} (plotly.js is "
+                          f"{plotly_mb():.1f} MB of it): coarsen the map, e.g. --every {biggest}={k}, or raise --max-mb")
+    pm.write_whole(out, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"), inputs=[args.map])
+    print(f"explore.py: wrote {out} ({size_mb:.1f} MB, a surface map)")
     return 0
 
 

@@ -543,10 +543,7 @@ def output_problem(path: str | Path, inputs=()) -> str | None:
     if stat.S_ISLNK(st.st_mode):
         return f"'{path}' is a symbolic link; punchsweep writes no file through a link: remove it or choose another name"
     if not stat.S_ISREG(st.st_mode):
-        kind = ("a folder" if stat.S_ISDIR(st.st_mode) else "a character device" if stat.S_ISCHR(st.st_mode)
-                else "a block device" if stat.S_ISBLK(st.st_mode) else "a pipe" if stat.S_ISFIFO(st.st_mode)
-                else "a socket" if stat.S_ISSOCK(st.st_mode) else "not a regular file")
-        return f"'{path}' is {kind}, which a written file would replace; choose another name"
+        return f"'{path}' is {file_kind(st.st_mode)}, which a written file would replace; choose another name"
     for source in inputs:
         try:
             si = os.stat(source)
@@ -557,12 +554,30 @@ def output_problem(path: str | Path, inputs=()) -> str | None:
     return None
 
 
+def file_kind(mode: int) -> str:
+    """What a file that is not a regular file is, by its st_mode: "a folder", "a pipe", ..."""
+    import stat
+
+    return ("a folder" if stat.S_ISDIR(mode) else "a character device" if stat.S_ISCHR(mode)
+            else "a block device" if stat.S_ISBLK(mode) else "a pipe" if stat.S_ISFIFO(mode)
+            else "a socket" if stat.S_ISSOCK(mode) else "not a regular file")
+
+
 def read_json(path: str | Path, what: str, is_it, not_it: str) -> dict:
     """A JSON object an engine command wrote (`what`, "a fit's details"), refused with
-    MapError naming the file where it cannot be read or `is_it(d)` is false (`not_it` says
-    what it is not)."""
+    MapError naming the file where it cannot be read, is not a regular file (a pipe would
+    block the reader until something writes to it; a device may never end) or `is_it(d)` is
+    false (`not_it` says what it is not)."""
     import json
+    import os
+    import stat
 
+    try:
+        mode = os.stat(path).st_mode
+    except OSError as e:
+        raise MapError(f"{path}: cannot read {what}: {e.strerror or e}") from None
+    if not stat.S_ISREG(mode):
+        raise MapError(f"{path} is {file_kind(mode)}, not a file: give the file that holds {what}")
     try:
         with open(path, encoding="utf-8") as f:
             d = json.load(f)
