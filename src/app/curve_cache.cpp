@@ -24,6 +24,7 @@ std::string curve_key(const model::CellGeometry& g, const reference::Cell& cell,
   fields.update(cell.profile.data(), cell.profile.size() * sizeof(double));
   for (const std::vector<double>& weight : cell.level_weight) fields.update(weight.data(), weight.size() * sizeof(double));
   fields.update(cell.tips.data(), cell.tips.size() * sizeof(std::size_t));
+  fields.update(cell.tip_exposed.data(), cell.tip_exposed.size());
   const io::Digest field_digest = fields.digest();
   std::ostringstream key;
   key.precision(17);

@@ -103,6 +103,24 @@ model::CellGeometry parse_cell(const std::string& text, const std::string& origi
     out << origin << ": the least drop is " << least << " R: the tallest site's drop is 0 (drops are taken from it)";
     throw UsageError(out.str());
   }
+  // Every tip on the texture's surface: a site under a taller cap (or on another's tip)
+  // would never touch as a punch of its own.
+  std::size_t by = 0;
+  if (const std::size_t k = model::covered_site(g, model::SurfaceLocator(g), &by); k < g.sites.size()) {
+    std::ostringstream out;
+    out.precision(6);
+    const model::Site& site = g.sites[k];
+    const model::Site& other = g.sites[by];
+    out << origin << ":" << sites[k].second << ": site = " << sites[k].first << ": its tip ";
+    if (other.x == site.x && other.y == site.y) {
+      out << "is the tip of the site on line " << sites[by].second << ": give each cap once";
+    } else {
+      out << "lies under the surface of the site on line " << sites[by].second << " (" << sites[by].first
+          << "): it would never touch as a cap of its own; every tip must be on the texture's surface (raise it, or move it "
+             "away from the taller cap)";
+    }
+    throw UsageError(out.str());
+  }
   return g;
 }
 

@@ -54,7 +54,7 @@ CellReference evaluate_cell_reference(const model::CellGeometry& geometry, const
   double least_drop = std::numeric_limits<double>::infinity();
   for (const model::Site& site : geometry.sites) least_drop = std::min(least_drop, site.drop);
   result.site_touch.assign(sites, std::numeric_limits<double>::infinity());
-  const auto pressed = [&](std::size_t k) { return stepper.pressure()[cell.tips[k]] > 0.0; };
+  const auto pressed = [&](std::size_t k) { return cell.touched(k, stepper.pressure()); };
   // The sites untouched so far whose tips the present state presses.
   const auto newly_pressed = [&]() {
     std::vector<std::size_t> out;
@@ -65,7 +65,7 @@ CellReference evaluate_cell_reference(const model::CellGeometry& geometry, const
   };
   log(stepper.start());
   for (std::size_t k = 0; k < sites; ++k) {
-    if (geometry.sites[k].drop == least_drop || pressed(k)) result.site_touch[k] = 0.0;
+    if ((geometry.sites[k].drop == least_drop && cell.tip_exposed[k] != 0) || pressed(k)) result.site_touch[k] = 0.0;
   }
   StepSizer sizer(options.steps, creep, loading.rise_time());
   for (const double target : options.times) {
@@ -109,7 +109,7 @@ CellReference evaluate_cell_reference(const model::CellGeometry& geometry, const
     ContactSolver solver(cell.grid, options.solver);
     std::vector<double> p(stepper.pressure().begin(), stepper.pressure().end()), u(p.size());
     log(solver.solve(cell.profile, pbar0, J_inf, p, u));
-    for (std::size_t k = 0; k < sites; ++k) long_term[k] = p[cell.tips[k]] > 0.0;
+    for (std::size_t k = 0; k < sites; ++k) long_term[k] = cell.touched(k, p);
   }
   const double rise = loading.rise_time();
   for (int level = 0; level < levels; ++level) {

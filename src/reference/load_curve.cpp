@@ -53,7 +53,7 @@ class CurveBuilder {
     // below it from the uniform start.
     Solved a = solve(X_start, {});
     for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      if (geometry_.sites[k].drop <= geometry_.sites[reference_].drop) curve_.site_touchdown[k] = 0.0;
+      if (geometry_.sites[k].drop <= geometry_.sites[reference_].drop && cell_.tip_exposed[k] != 0) curve_.site_touchdown[k] = 0.0;
     }
     Solved floor;
     floor.sample.X = X_start * 1e-9;
@@ -132,7 +132,8 @@ class CurveBuilder {
   /// relative to their range: at 512 nodes a level was found 3,000 times late).
   bool touched(const Solved& s, std::size_t k) const {
     // (The floor below the first sample has no pressure: nothing but the tallest touches.)
-    return geometry_.sites[k].drop <= geometry_.sites[reference_].drop || (!s.p.empty() && s.p[cell_.tips[k]] > 0.0);
+    if (cell_.tip_exposed[k] == 0) return false;  // under a taller cap: never a punch of its own
+    return geometry_.sites[k].drop <= geometry_.sites[reference_].drop || (!s.p.empty() && cell_.touched(k, s.p));
   }
   /// Site k's remaining gap in state s: its drop below the reference tip less h.
   double gap(const Solved& s, std::size_t k) const {

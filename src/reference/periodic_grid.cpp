@@ -37,6 +37,7 @@ double punch_height(const PeriodicGrid& grid, const model::Shape& shape, double 
 /// f1 - (f2 + dh), level 1's surface above level 2's: > 0 where level 2 is the lower one,
 /// 0 where they tie (within kProfileTieTolerance).
 double level2_excess(double f1, double lower2) {
+  if (std::isinf(f1) || std::isinf(lower2)) return f1 - lower2;  // (one reaches the point, the other not)
   return std::abs(f1 - lower2) <= kProfileTieTolerance * std::max(f1, lower2) ? 0.0 : f1 - lower2;
 }
 
@@ -135,34 +136,52 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   Cell cell;
   cell.grid = grid;
   const PeriodicGrid& g = cell.grid;
-  // Each site's surface f(r) + drop at the nodes. A mirrored grid needs the sites' set to
-  // be even (each site alone need not be: the lowest surface of them all is).
+  // A mirrored grid needs the sites' set to be even (each site alone need not be: the
+  // lowest surface of them all is).
   if (g.mirrored() && !model::mirror_symmetric(geometry)) {
     throw std::invalid_argument("make_cell: a mirrored grid needs a geometry whose sites are even in x and y");
   }
-  std::vector<std::vector<double>> surface;
-  for (const model::Site& site : sites) {
-    surface.emplace_back(g.size());
-    for (int i = 0; i < g.stored_nx(); ++i) {
-      for (int j = 0; j < g.stored_ny(); ++j) {
-        surface.back()[g.index(i, j)] = punch_height(g, site.shape, g.x(i), g.y(j), site.x, site.y);
+  const model::SurfaceLocator locator(geometry);
+  const std::size_t levels = static_cast<std::size_t>(geometry.levels());
+  // Each level's lowest surface f(r) + drop at the nodes, each site read over its reach
+  // alone (never a grid per site: a supercell has thousands).
+  std::vector<std::vector<double>> level_low(levels, std::vector<double>(g.size(), std::numeric_limits<double>::infinity()));
+  // The nodes i (along one axis of n nodes, `stored` of them kept) within `reach` of c.
+  const auto window = [](double c, double reach, double h, int n, int stored, std::vector<int>* out) {
+    out->clear();
+    const double first = std::ceil((c - reach) / h), last = std::floor((c + reach) / h);
+    const bool all = !(last - first + 1.0 < n);
+    const long from = all ? 0 : static_cast<long>(first), to = all ? n - 1 : static_cast<long>(last);
+    for (long i = from; i <= to; ++i) {
+      const int wrapped = static_cast<int>(((i % n) + n) % n);
+      if (wrapped < stored) out->push_back(wrapped);
+    }
+  };
+  std::vector<int> rows, columns;
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const model::Site& site = sites[k];
+    cell.tips.push_back(tip_node(g, site, k));
+    cell.tip_exposed.push_back(model::tip_exposed(geometry, locator, k) ? 1 : 0);
+    if (locator.reach(k) < 0.0) continue;  // nowhere the lowest
+    window(site.x, locator.reach(k), g.hx(), g.nx, g.stored_nx(), &rows);
+    window(site.y, locator.reach(k), g.hy(), g.ny, g.stored_ny(), &columns);
+    std::vector<double>& low = level_low[static_cast<std::size_t>(site.level)];
+    for (const int i : rows) {
+      for (const int j : columns) {
+        double& v = low[g.index(i, j)];
+        v = std::min(v, punch_height(g, site.shape, g.x(i), g.y(j), site.x, site.y) + site.drop);
       }
     }
-    for (double& v : surface.back()) v += site.drop;
-    cell.tips.push_back(tip_node(g, site, cell.tips.size()));
   }
-  // The lowest surface among the sites of `level` (own) or of the others, at a point.
-  const auto lowest = [&](double px, double py, int level, bool own) {
-    double low = std::numeric_limits<double>::infinity();
-    for (const model::Site& site : sites) {
-      if ((site.level == level) == own) low = std::min(low, punch_height(g, site.shape, px, py, site.x, site.y) + site.drop);
-    }
-    return low;
-  };
   cell.profile.assign(g.size(), std::numeric_limits<double>::infinity());
-  for (const std::vector<double>& f : surface) {
-    for (std::size_t k = 0; k < g.size(); ++k) cell.profile[k] = std::min(cell.profile[k], f[k]);
+  for (const std::vector<double>& low : level_low) {
+    for (std::size_t k = 0; k < g.size(); ++k) cell.profile[k] = std::min(cell.profile[k], low[k]);
   }
+  // The lowest surface among the sites of `level` (own) or of the others, at a point
+  // (+infinity where none of them reaches it: there it lies above the texture's).
+  const auto lowest = [&](double px, double py, int level, bool own) {
+    return locator.lowest(px, py, [&](std::size_t q) { return (sites[q].level == level) == own; }).first;
+  };
   for (int level = 1; level < geometry.levels(); ++level) {
     std::vector<double> weight(g.size());
     std::vector<char> own_node(g.size());
@@ -170,13 +189,12 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
     for (int i = 0; i < g.stored_nx(); ++i) {
       for (int j = 0; j < g.stored_ny(); ++j) {
         const std::size_t k = g.index(i, j);
-        double others = std::numeric_limits<double>::infinity(), own = others;
-        for (std::size_t q = 0; q < sites.size(); ++q) {
-          double& low = sites[q].level == level ? own : others;
-          low = std::min(low, surface[q][k]);
+        double others = std::numeric_limits<double>::infinity();
+        for (std::size_t q = 0; q < levels; ++q) {
+          if (q != static_cast<std::size_t>(level)) others = std::min(others, level_low[q][k]);
         }
         // The node itself belongs to the level that is lowest there; ties to both.
-        const double centre = level2_excess(others, own);
+        const double centre = level2_excess(others, level_low[static_cast<std::size_t>(level)][k]);
         own_node[k] = centre >= 0.0;
         weight[k] = level_fraction(g, excess, g.x(i), g.y(j), centre);
       }

@@ -4,6 +4,7 @@
 /// it. Units as in model/numerics/units.hpp: lengths in R (pressures in E0*, time in T_eps).
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,14 @@ struct Cell {
   /// the lowest, or tied).
   std::vector<std::vector<char>> level_node;
   std::vector<std::size_t> tips;  ///< per site, in the geometry's order: the node of its tip (or its image's)
+  /// Per site: whether its tip is on the texture's surface (model::tip_exposed). A site
+  /// under a taller cap, or hidden under the tall caps entirely, never touches as a punch of
+  /// its own: its tip's node is pressed only when the taller cap's contact spreads over it.
+  std::vector<char> tip_exposed;
+
+  /// Whether site k has touched under pressure p: its tip is on the surface and its node
+  /// carries pressure (the discrete contact's own test, the curve's and the time stepping's).
+  bool touched(std::size_t k, std::span<const double> p) const { return tip_exposed[k] != 0 && p[tips[k]] > 0.0; }
 };
 
 /// The cell of `geometry` on `grid` (its cell must be the geometry's, model::geometry_error

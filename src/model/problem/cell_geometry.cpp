@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/numerics/integer_power.hpp"
+
 namespace punchsweep::model {
 
 int CellGeometry::levels() const {
@@ -24,7 +26,7 @@ std::string geometry_error(const CellGeometry& g) {
     return out.str();
   }
   if (g.sites.empty()) return "the cell has no site: it needs at least one punch";
-  std::vector<bool> seen(static_cast<std::size_t>(std::max(g.levels(), 0)), false);
+  std::vector<bool> seen(g.sites.size(), false);
   for (std::size_t k = 0; k < g.sites.size(); ++k) {
     const Site& site = g.sites[k];
     out << "site " << k << ": ";
@@ -45,20 +47,116 @@ std::string geometry_error(const CellGeometry& g) {
       out << "drop = " << site.drop << " R is outside its range: finite and >= 0";
       return out.str();
     }
-    if (site.level < 0) {
-      out << "level = " << site.level << " is outside its range: >= 0";
+    // (Numbered without gaps, the levels are fewer than the sites: a larger number is
+    // refused before it sizes anything.)
+    if (site.level < 0 || static_cast<std::size_t>(site.level) >= g.sites.size()) {
+      out << "level = " << site.level << " is outside its range: an integer in [0, " << g.sites.size() - 1
+          << "], the levels numbered 0, 1, ... without gaps";
       return out.str();
     }
     seen[static_cast<std::size_t>(site.level)] = true;
     out.str("");
   }
-  for (std::size_t level = 0; level < seen.size(); ++level) {
+  const std::size_t levels = static_cast<std::size_t>(g.levels());
+  for (std::size_t level = 0; level < levels; ++level) {
     if (!seen[level]) {
-      out << "level " << level << " has no site: the levels are numbered 0 .. " << seen.size() - 1 << " without gaps";
+      out << "level " << level << " has no site: the levels are numbered 0 .. " << levels - 1 << " without gaps";
       return out.str();
     }
   }
   return {};
+}
+
+namespace {
+/// d wrapped into [-L/2, L/2]: the offset to the nearest periodic image.
+double wrapped(double d, double L) { return d - L * std::nearbyint(d / L); }
+}  // namespace
+
+SurfaceLocator::SurfaceLocator(const CellGeometry& geometry) : geometry_(geometry) {
+  const std::vector<Site>& sites = geometry.sites;
+  const double n = static_cast<double>(std::max<std::size_t>(sites.size(), 1));
+  // Buckets of about the mean spacing (at most 2048 each way).
+  const double spacing = std::sqrt(geometry.Lx * geometry.Ly / n);
+  const auto count = [&](double L) { return static_cast<int>(std::clamp(std::floor(L / spacing), 1.0, 2048.0)); };
+  bx_ = count(geometry.Lx);
+  by_ = count(geometry.Ly);
+  wx_ = geometry.Lx / bx_;
+  wy_ = geometry.Ly / by_;
+  buckets_.resize(static_cast<std::size_t>(bx_) * static_cast<std::size_t>(by_));
+  for (std::size_t k = 0; k < sites.size(); ++k) buckets_[bucket_of(sites[k].x, sites[k].y)].push_back(k);
+  // The bound of the surface: each point x lies within `half` (a coarse cell's half
+  // diagonal) of a coarse point p, and z(x) <= f_k(d(p, k) + half) + drop_k for any site k
+  // (f grows with r); the least of these over the sites about p, the greatest over p.
+  reach_.assign(sites.size(), std::numeric_limits<double>::infinity());
+  span_x_ = span_y_ = 2;
+  const int cx = 2 * bx_, cy = 2 * by_;
+  const double half = 0.5 * std::hypot(geometry.Lx / cx, geometry.Ly / cy);
+  top_ = -std::numeric_limits<double>::infinity();
+  for (int a = 0; a < cx; ++a) {
+    for (int b = 0; b < cy; ++b) {
+      const double px = (a + 0.5) * geometry.Lx / cx, py = (b + 0.5) * geometry.Ly / cy;
+      double bound = std::numeric_limits<double>::infinity();
+      for (int span = 2; !std::isfinite(bound); span *= 2) {
+        span_x_ = span_y_ = span;
+        visit(px, py, [&](std::size_t k, double r) { bound = std::min(bound, surface(k, r + half)); });
+        if (span > 2 * std::max(bx_, by_)) break;  // every bucket read
+      }
+      top_ = std::max(top_, bound);
+    }
+  }
+  double longest = 0.0;
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const Site& site = sites[k];
+    reach_[k] = top_ >= site.drop ? std::pow((top_ - site.drop) / site.shape.C, 1.0 / site.shape.s) : -1.0;
+    longest = std::max(longest, reach_[k]);
+  }
+  const auto span = [](double reach, double width, int buckets) {
+    return static_cast<int>(std::min(std::ceil(reach / width), static_cast<double>(buckets)));
+  };
+  span_x_ = span(longest, wx_, bx_);
+  span_y_ = span(longest, wy_, by_);
+}
+
+double SurfaceLocator::surface(std::size_t k, double r) const {
+  const Site& site = geometry_.sites[k];
+  return site.shape.C * ipow(r, site.shape.s) + site.drop;
+}
+
+double SurfaceLocator::distance(double x, double y, std::size_t k) const {
+  const Site& site = geometry_.sites[k];
+  return std::hypot(wrapped(x - site.x, geometry_.Lx), wrapped(y - site.y, geometry_.Ly));
+}
+
+std::size_t SurfaceLocator::bucket_of(double x, double y) const {
+  const auto index = [](double c, double L, double w, int n) {
+    const double inside = c - L * std::floor(c / L);
+    return static_cast<std::size_t>(std::clamp(static_cast<int>(std::floor(inside / w)), 0, n - 1));
+  };
+  return index(x, geometry_.Lx, wx_, bx_) * static_cast<std::size_t>(by_) + index(y, geometry_.Ly, wy_, by_);
+}
+
+bool tip_exposed(const CellGeometry& geometry, const SurfaceLocator& surface, std::size_t k, std::size_t* by) {
+  const Site& site = geometry.sites[k];
+  const double same = 1e-12 * std::max(geometry.Lx, geometry.Ly);
+  // An earlier site at the same tip (a duplicate) covers it.
+  std::size_t cover =
+      surface.lowest(site.x, site.y, [&](std::size_t q) { return q < k && surface.distance(site.x, site.y, q) <= same; }).second;
+  if (cover == geometry.sites.size()) {
+    const auto [low, q] = surface.lowest(site.x, site.y, [k](std::size_t other) { return other != k; });
+    // (A tie counts as covered, as the periodic tables count dh at the tall caps' surface
+    // hidden: the tip then never stands out of the taller cap.)
+    if (q < geometry.sites.size() && low - site.drop <= 1e-12 * std::max(std::abs(site.drop), std::abs(low))) cover = q;
+  }
+  if (by != nullptr) *by = cover;
+  return cover == geometry.sites.size();
+}
+
+std::size_t covered_site(const CellGeometry& geometry, const SurfaceLocator& surface, std::size_t* by) {
+  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+    if (!tip_exposed(geometry, surface, k, by)) return k;
+  }
+  if (by != nullptr) *by = geometry.sites.size();
+  return geometry.sites.size();
 }
 
 bool mirror_symmetric(const CellGeometry& g) {

@@ -6,8 +6,11 @@
 /// cell from it (reference/periodic_grid.hpp: make_cell); the two-level square lattice of
 /// the paper is one such geometry (two_level_square). Lengths in R.
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/problem/contact_problem.hpp"
@@ -40,6 +43,80 @@ struct CellGeometry {
 /// drop >= 0; the levels numbered 0 .. levels() - 1, each with a site. Else one sentence
 /// naming the first bad field, its value and its valid range.
 std::string geometry_error(const CellGeometry& geometry);
+
+/// The texture's surface, the lowest of the sites' f(r) + drop (r to the nearest periodic
+/// image of the tip), found from the sites near a point alone. Every point of the cell lies
+/// within the covering radius rho of some site (bounded from a coarse scan of the cell), so
+/// the surface is nowhere above top = max_k (C_k rho^s_k + drop_k); a site can be the lowest
+/// only within its reach, where C r^s + drop <= top. Sites are kept in square buckets of
+/// about the mean spacing, and a query reads the buckets within the longest reach: the cost
+/// of a point is that of its neighbourhood, not of the cell's site count.
+class SurfaceLocator {
+ public:
+  explicit SurfaceLocator(const CellGeometry& geometry);
+
+  /// The lowest f(r) + drop at (x, y) among the sites k with accept(k) (in R), and that
+  /// site; +infinity and sites() where no accepted site reaches the point (then every
+  /// accepted site's surface there lies above the texture's).
+  template <class Accept>
+  std::pair<double, std::size_t> lowest(double x, double y, const Accept& accept) const {
+    std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), geometry_.sites.size()};
+    visit(x, y, [&](std::size_t k, double r) {
+      if (r > reach_[k] || !accept(k)) return;
+      const double f = surface(k, r);
+      if (f < best.first) best = {f, k};
+    });
+    return best;
+  }
+  /// Site k's f(r) + drop at distance r from its tip.
+  double surface(std::size_t k, double r) const;
+  /// How far from its tip site k can be the lowest surface (the window a grid pass visits).
+  double reach(std::size_t k) const { return reach_[k]; }
+  /// The bound of the surface over the cell (above every point's lowest surface).
+  double top() const { return top_; }
+  /// The distance from (x, y) to the tip of site k (to its nearest periodic image).
+  double distance(double x, double y, std::size_t k) const;
+
+ private:
+  template <class Visit>
+  void visit(double x, double y, const Visit& f) const;
+  std::size_t bucket_of(double x, double y) const;
+
+  const CellGeometry& geometry_;
+  int bx_ = 1, by_ = 1;        ///< buckets along x and y
+  double wx_ = 1.0, wy_ = 1.0; ///< their widths, in R
+  int span_x_ = 0, span_y_ = 0;  ///< buckets read each side of a query's own
+  std::vector<std::vector<std::size_t>> buckets_;
+  std::vector<double> reach_;
+  double top_ = 0.0;
+};
+
+template <class Visit>
+void SurfaceLocator::visit(double x, double y, const Visit& f) const {
+  const std::size_t home = bucket_of(x, y);
+  const int hi = static_cast<int>(home / static_cast<std::size_t>(by_)), hj = static_cast<int>(home % static_cast<std::size_t>(by_));
+  // Each bucket once, even where the span wraps past the cell.
+  const int nx = std::min(2 * span_x_ + 1, bx_), ny = std::min(2 * span_y_ + 1, by_);
+  for (int a = 0; a < nx; ++a) {
+    const int i = ((hi - std::min(span_x_, (bx_ - 1) / 2) + a) % bx_ + bx_) % bx_;
+    for (int b = 0; b < ny; ++b) {
+      const int j = ((hj - std::min(span_y_, (by_ - 1) / 2) + b) % by_ + by_) % by_;
+      for (const std::size_t k : buckets_[static_cast<std::size_t>(i) * static_cast<std::size_t>(by_) + static_cast<std::size_t>(j)]) {
+        f(k, distance(x, y, k));
+      }
+    }
+  }
+}
+
+/// The first site whose tip is not on the texture's surface (or sites.size() where every
+/// tip is): a site that lies under another's surface at its tip or on it (f(r) + drop at
+/// most its own drop, ties within a relative 1e-12) or shares an earlier site's tip (within
+/// 1e-12 of the cell). Such a site never touches as a punch of its own; `by` receives the site that
+/// covers it.
+std::size_t covered_site(const CellGeometry& geometry, const SurfaceLocator& surface, std::size_t* by = nullptr);
+
+/// Whether site k's tip is on the texture's surface (covered_site's test for one site).
+bool tip_exposed(const CellGeometry& geometry, const SurfaceLocator& surface, std::size_t k, std::size_t* by = nullptr);
 
 /// Whether the sites, as a set, are even in x and in y about the cell's corner (0, 0): each
 /// site's mirror images (Lx - x, y) and (x, Ly - y), taken modulo the cell, are sites of the
