@@ -17,30 +17,79 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
     throw std::invalid_argument("make_measured_cell: pixel > 0 and a summit radius of at least one pixel");
   }
   const int NX = static_cast<int>(nx), NY = static_cast<int>(ny);
-  const auto at = [&](int i, int j) { return z[static_cast<std::size_t>(((j % NY) + NY) % NY) * nx + static_cast<std::size_t>(((i % NX) + NX) % NX)]; };
+  const auto index = [&](int i, int j) {
+    return static_cast<std::size_t>(((j % NY) + NY) % NY) * nx + static_cast<std::size_t>(((i % NX) + NX) % NX);
+  };
+  const auto at = [&](int i, int j) { return z[index(i, j)]; };
   const double top = *std::max_element(z.begin(), z.end());
-  // Summits: higher than every pixel within the radius (ties: the earlier pixel wins).
-  const int reach = static_cast<int>(std::floor(summit_radius / pixel));
+  // Pixels in one total order: the higher first, a tie to the pixel first in row order.
+  const auto beats = [&](std::size_t a, std::size_t b) { return z[a] > z[b] || (z[a] == z[b] && a < b); };
+  // The disc of the summit radius as offsets, nearest first (a pixel that is no summit
+  // meets one that beats it early); each other pixel once: offsets within half the cell.
+  const int reach = static_cast<int>(std::min(std::floor(summit_radius / pixel), static_cast<double>(NX + NY)));
+  const int rx = std::min(reach, NX / 2), ry = std::min(reach, NY / 2);
+  std::vector<std::pair<int, int>> disc;
+  for (int dj = -ry; dj <= ry; ++dj) {
+    for (int di = -rx; di <= rx; ++di) {
+      const bool twice = 2 * di == -NX || 2 * dj == -NY;  // the same pixel as +NX/2 (+NY/2)
+      if ((di != 0 || dj != 0) && !twice && static_cast<long>(di) * di + static_cast<long>(dj) * dj <= static_cast<long>(reach) * reach) {
+        disc.emplace_back(di, dj);
+      }
+    }
+  }
+  std::stable_sort(disc.begin(), disc.end(),
+                   [](const auto& a, const auto& b) { return a.first * a.first + a.second * a.second < b.first * b.first + b.second * b.second; });
+  // Each pixel climbs to a summit (the watershed of the heights turned over): to its best
+  // neighbour (the disc's nearest ring) while one beats it, from a local top to the first
+  // pixel of its disc that beats it. A pixel is thus the summit's whose cap is highest
+  // there, the surface lowest, as the lattice's cells assign their nodes (for caps, the
+  // climb stays on one cap's surface), not its nearest summit's, which a tall cap's
+  // contact crosses.
+  std::vector<std::size_t> up(z.size());
+  for (int j = 0; j < NY; ++j) {
+    for (int i = 0; i < NX; ++i) {
+      const std::size_t k = index(i, j);
+      std::size_t best = k;
+      for (const auto& [di, dj] : disc) {
+        if (std::abs(di) > 1 || std::abs(dj) > 1) break;  // (nearest first: the ring is done)
+        if (const std::size_t q = index(i + di, j + dj); beats(q, best)) best = q;
+      }
+      up[k] = best;
+    }
+  }
   struct Summit {
     int i, j;
     double drop;
   };
   std::vector<Summit> summits;
+  std::vector<std::size_t> summit_of(z.size(), z.size());
   for (int j = 0; j < NY; ++j) {
     for (int i = 0; i < NX; ++i) {
-      const double h = at(i, j);
-      bool highest = true;
-      for (int dj = -reach; dj <= reach && highest; ++dj) {
-        for (int di = -reach; di <= reach && highest; ++di) {
-          if ((di == 0 && dj == 0) || di * di + dj * dj > reach * reach) continue;
-          const double other = at(i + di, j + dj);
-          // A tie goes to the pixel first in row order (within the periodic cell).
-          const int oi = ((i + di) % NX + NX) % NX, oj = ((j + dj) % NY + NY) % NY;
-          highest = other < h || (other == h && (oj > j || (oj == j && oi > i)));
+      const std::size_t k = index(i, j);
+      if (up[k] != k) continue;  // not even a local top
+      for (const auto& [di, dj] : disc) {
+        if (const std::size_t q = index(i + di, j + dj); beats(q, k)) {
+          up[k] = q;
+          break;
         }
       }
-      if (highest) summits.push_back({i, j, top - h});
+      if (up[k] == k) {
+        summit_of[k] = summits.size();
+        summits.push_back({i, j, top - z[k]});
+      }
     }
+  }
+  // Each pixel's summit: follow the climb (every step beats the last, so it ends), then
+  // give the path its end.
+  std::vector<std::size_t> path;
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    std::size_t q = k;
+    path.clear();
+    while (summit_of[q] == z.size()) {
+      path.push_back(q);
+      q = up[q];
+    }
+    for (const std::size_t p : path) summit_of[p] = summit_of[q];
   }
   // Levels by drop: a gap of more than level_gap between consecutive drops starts one.
   std::vector<std::size_t> order(summits.size());
@@ -72,21 +121,14 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
     for (int j = 0; j < NY; ++j) cell.profile[grid.index(i, j)] = top - at(i, j);
   }
   for (const Summit& s : summits) cell.tips.push_back(grid.index(s.i, s.j));
+  cell.tip_exposed.assign(summits.size(), 1);  // a summit is the highest pixel about it
   const int levels = g.levels();
   cell.level_weight.assign(static_cast<std::size_t>(std::max(levels - 1, 0)), std::vector<double>(grid.size(), 0.0));
   cell.level_node.assign(static_cast<std::size_t>(std::max(levels - 1, 0)), std::vector<char>(grid.size(), 0));
   if (levels > 1) {
     for (int i = 0; i < NX; ++i) {
       for (int j = 0; j < NY; ++j) {
-        double nearest = std::numeric_limits<double>::infinity();
-        int owner = 0;
-        for (std::size_t k = 0; k < summits.size(); ++k) {
-          const double d = std::hypot(periodic_offset((i - summits[k].i) * pixel, g.Lx), periodic_offset((j - summits[k].j) * pixel, g.Ly));
-          if (d < nearest) {
-            nearest = d;
-            owner = level[k];
-          }
-        }
+        const int owner = level[summit_of[index(i, j)]];
         if (owner > 0) {
           cell.level_weight[static_cast<std::size_t>(owner - 1)][grid.index(i, j)] = 1.0;
           cell.level_node[static_cast<std::size_t>(owner - 1)][grid.index(i, j)] = 1;

@@ -25,7 +25,8 @@ struct MeasuredCell {
 /// there (s = 2, C = -(z_xx + z_yy) / 4 by central differences; only the curve's first
 /// sample and the areas below it use it). Levels: sorted by drop, a gap between drops of
 /// more than `level_gap` starts a new level (+infinity: one level); each node belongs to
-/// its nearest summit's level. Throws std::invalid_argument for odd sizes or a radius under
+/// the level of the summit it climbs to (the cap whose surface is highest there). A radius
+/// of a period or more leaves the highest pixel the one summit. Throws std::invalid_argument for odd sizes or a radius under
 /// one pixel.
 MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, std::size_t ny, double pixel,
                                 double summit_radius, double level_gap);
