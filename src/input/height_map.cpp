@@ -1,18 +1,23 @@
 #include "input/height_map.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <regex>
 #include <sstream>
 
+#include "input/csv_cells.hpp"
 #include "input/usage_error.hpp"
 #include "io/netcdf_file.hpp"
+#include "model/numerics/number_text.hpp"
+#include "model/numerics/units.hpp"
 
 namespace punchsweep::input {
 
@@ -20,12 +25,30 @@ namespace {
 
 constexpr std::size_t kMaxPixels = std::size_t{1} << 24;  // 4096 x 4096
 
+void note_edges(HeightMap& map, const std::string& path);
+
 HeightMap checked(HeightMap map, const std::string& path) {
   if (map.nx < 4 || map.ny < 4) {
     throw UsageError(path + ": a height map of " + std::to_string(map.nx) + " x " + std::to_string(map.ny) +
                      " pixels; valid: at least 4 x 4");
   }
+  note_edges(map, path);
   return map;
+}
+
+/// a b, or nothing where it does not fit in 64 bits.
+std::optional<std::uint64_t> product(std::uint64_t a, std::uint64_t b) {
+  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a) return std::nullopt;
+  return a * b;
+}
+
+/// A decimal count as a .npy header writes one ("4096"), or nothing where it is none or
+/// does not fit in 64 bits.
+std::optional<std::uint64_t> decimal_count(const std::string& text) {
+  std::uint64_t value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+  return value;
 }
 
 HeightMap read_npy(const std::string& path, const std::string& bytes) {
@@ -43,25 +66,47 @@ HeightMap read_npy(const std::string& path, const std::string& bytes) {
   } else {
     fail(".npy format version " + std::to_string(major) + "; valid: 1, 2 or 3");
   }
-  if (start + header_length > bytes.size()) fail("a .npy header longer than the file");
+  if (header_length > bytes.size() - start) fail("a .npy header longer than the file");
   const std::string header = bytes.substr(start, header_length);
+  const std::string valid_dtype = "valid: little-endian float64 or float32 ('<f8', '<f4')";
   std::smatch m;
-  if (!std::regex_search(header, m, std::regex(R"('descr'\s*:\s*'([<>|=]?)([fi])(\d+)')"))) fail("a .npy header without 'descr'");
-  const std::string order = m[1], kind = m[2];
-  const int size = std::stoi(m[3]);
-  if (order == ">" || kind != "f" || (size != 8 && size != 4)) {
-    fail("dtype '" + order + kind + std::to_string(size) + "'; valid: little-endian float64 or float32 ('<f8', '<f4')");
+  if (!std::regex_search(header, m, std::regex(R"('descr'\s*:\s*'([^']*)')"))) fail("a .npy header without 'descr'");
+  const std::string descr = m[1];
+  // The item size is read as written, digits only: "<f99999999999" is a dtype, no number to parse.
+  std::size_t size = 0;
+  if (std::regex_match(descr, m, std::regex(R"(([<|=]?)f(\d+))"))) {
+    const std::optional<std::uint64_t> written = decimal_count(m[2]);
+    if (written && (*written == 4 || *written == 8)) size = static_cast<std::size_t>(*written);
   }
+  if (size == 0) fail("'descr' (dtype) '" + descr + "'; " + valid_dtype);
   if (std::regex_search(header, std::regex(R"('fortran_order'\s*:\s*True)"))) fail("a Fortran-order array; valid: C order");
-  if (!std::regex_search(header, m, std::regex(R"('shape'\s*:\s*\(\s*(\d+)\s*,\s*(\d+)\s*,?\s*\))"))) {
-    fail("a .npy array that is not 2-D");
+  if (!std::regex_search(header, m, std::regex(R"('shape'\s*:\s*\(([^)]*)\))"))) fail("a .npy header without 'shape'");
+  const std::string shape = m[1];
+  std::vector<std::uint64_t> dims;
+  {
+    std::istringstream counts(shape);
+    for (std::string item; std::getline(counts, item, ',');) {
+      const std::string count(model::trim(item, " \t"));
+      if (count.empty() && counts.eof() && !dims.empty()) break;  // "(16, )": a tuple's last comma
+      const std::optional<std::uint64_t> n = decimal_count(count);
+      if (!n) fail("'shape' (" + shape + "): '" + count + "' is no count of pixels (a decimal integer below 2^64)");
+      dims.push_back(*n);
+    }
   }
-  HeightMap map;
-  map.ny = std::stoull(m[1]);
-  map.nx = std::stoull(m[2]);
-  if (map.nx * map.ny > kMaxPixels) fail("more than 4096 x 4096 pixels");
+  if (dims.size() != 2) fail("'shape' (" + shape + "): a .npy array that is not 2-D");
   const std::size_t data = start + header_length;
-  if (bytes.size() != data + map.nx * map.ny * static_cast<std::size_t>(size)) fail("a .npy file whose size does not match its shape");
+  const std::size_t items = (bytes.size() - data) / size;
+  const std::optional<std::uint64_t> pixels = product(dims[0], dims[1]);
+  if (!pixels || *pixels != items || (bytes.size() - data) % size != 0) {
+    const std::size_t left = (bytes.size() - data) % size;
+    fail("'shape' (" + shape + ") does not match the data: the file holds " + std::to_string(items) + " values of " +
+         std::to_string(size) + " bytes after its header" + (left != 0 ? " and " + std::to_string(left) + " bytes more" : std::string()) +
+         "; valid: two counts whose product is the number of values");
+  }
+  if (*pixels > kMaxPixels) fail("'shape' (" + shape + "): more than 4096 x 4096 pixels");
+  HeightMap map;
+  map.ny = static_cast<std::size_t>(dims[0]);
+  map.nx = static_cast<std::size_t>(dims[1]);
   map.height.resize(map.nx * map.ny);
   for (std::size_t k = 0; k < map.height.size(); ++k) {
     if (size == 8) {
@@ -143,17 +188,20 @@ class NetcdfClassic {
   }
   /// The values of a fixed-size numeric variable, in the file's (C) order.
   std::vector<double> values(const Variable& v) const {
-    std::uint64_t n = 1;
+    std::optional<std::uint64_t> n = 1;
     for (const std::uint64_t d : v.dims) {
       if (dims_[d].length == 0) fail("variable " + v.name + " is a record variable (unlimited dimension): valid: fixed dimensions");
-      n *= dims_[d].length;
+      if (n) n = product(*n, dims_[d].length);
     }
-    std::vector<double> out;
-    out.reserve(n);
     std::size_t at = v.begin;
     const std::size_t size = type_size(v.type);
-    if (at + n * size > bytes_.size()) fail("variable " + v.name + "'s data runs past the end of the file");
-    for (std::uint64_t k = 0; k < n; ++k, at += size) out.push_back(number(v.type, at));
+    const std::optional<std::uint64_t> length = n ? product(*n, size) : std::nullopt;
+    if (!length || at > bytes_.size() || *length > bytes_.size() - at) {
+      fail("variable " + v.name + "'s data runs past the end of the file");
+    }
+    std::vector<double> out;
+    out.reserve(*n);
+    for (std::uint64_t k = 0; k < *n; ++k, at += size) out.push_back(number(v.type, at));
     return out;
   }
   [[noreturn]] void fail(const std::string& what) const { throw UsageError(path_ + ": " + what + " (NetCDF)"); }
@@ -178,7 +226,7 @@ class NetcdfClassic {
   void pad() { at_ = (at_ + 3) / 4 * 4; }
   std::string text() {
     const std::uint64_t n = count();
-    if (at_ + n > bytes_.size()) fail("the header ends early");
+    if (at_ > bytes_.size() || n > bytes_.size() - at_) fail("the header ends early");
     std::string out = bytes_.substr(at_, n);
     at_ += n;
     pad();
@@ -227,7 +275,7 @@ class NetcdfClassic {
       const std::uint64_t values = count();
       const std::size_t size = type_size(a.type);
       if (size == 0) fail("attribute " + name + " has NetCDF type " + std::to_string(a.type));
-      if (at_ + values * size > bytes_.size()) fail("the header ends early");
+      if (at_ > bytes_.size() || values > (bytes_.size() - at_) / size) fail("the header ends early");
       if (a.type == 2) {
         a.text = bytes_.substr(at_, values);
         while (!a.text.empty() && a.text.back() == '\0') a.text.pop_back();
@@ -260,7 +308,8 @@ io::NetcdfHeights read_netcdf(const std::string& path, const std::string& bytes)
   io::NetcdfHeights out;
   out.nx = nc.dimension(heights->dims[0]).length;
   out.ny = nc.dimension(heights->dims[1]).length;
-  if (out.nx * out.ny > kMaxPixels) nc.fail("more than 4096 x 4096 pixels");
+  const std::optional<std::uint64_t> pixels = product(out.nx, out.ny);
+  if (!pixels || *pixels > kMaxPixels) nc.fail("more than 4096 x 4096 pixels");
   out.values = nc.values(*heights);
   for (const char axis : {'x', 'y'}) {
     const NetcdfClassic::Variable* v = nc.variable(std::string(1, axis));
@@ -293,39 +342,127 @@ HeightMap from_netcdf(const io::NetcdfHeights& nc, const std::string& path) {
   }
   map.length_x = nc.length_x;
   map.length_y = nc.length_y;
-  map.unit = nc.unit;
+  // A length unit by its one spelling: SurfaceTopography writes micrometres as "µm" (with
+  // either micro sign, U+00B5 or U+03BC, in UTF-8; or the one byte 0xB5 of Latin-1, as
+  // Windows software may), which the options and messages spell "um".
+  const model::Unit* unit = model::find_unit(model::Dimension::length, nc.unit == "\xB5m" ? std::string("um") : nc.unit);
+  map.unit = unit ? std::string(unit->name) : nc.unit;
   map.periodic = nc.periodic;
   return map;
+}
+
+/// The separator of a CSV map, from its first row: ';' or a tab (a comma in a value is then
+/// its decimal point), a comma, or blanks alone.
+char csv_separator(const std::string& first_row) {
+  if (first_row.find_first_of(";\t,") == std::string::npos) return ' ';
+  return separator_of(first_row);
+}
+
+std::string separator_name(char sep) {
+  return sep == ';' ? "';' (decimal commas read as points)" : sep == '\t' ? "tabs (decimal commas read as points)"
+                    : sep == ','   ? "commas"
+                                   : "blanks";
 }
 
 HeightMap read_csv(const std::string& path, std::istream& lines) {
   HeightMap map;
   int line_number = 0;
+  std::optional<char> sep;
+  const auto where = [&] { return path + ":" + std::to_string(line_number) + ": "; };
   for (std::string line; std::getline(lines, line);) {
     ++line_number;
-    for (char& c : line) {
-      if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte-order mark
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (!sep) sep = csv_separator(line);
+    std::vector<std::string> cells;
+    if (*sep == ' ') {
+      std::istringstream values(line);
+      for (std::string value; values >> value;) cells.push_back(value);
+    } else {
+      cells = split_cells(line, *sep);
+      while (!cells.empty() && cells.back().empty()) cells.pop_back();  // a separator ending the row
+      if (cells.empty()) continue;  // a spreadsheet's empty row: separators alone
     }
-    std::istringstream values(line);
-    std::size_t count = 0;
-    for (std::string value; values >> value; ++count) {
-      char* end = nullptr;
-      const double v = std::strtod(value.c_str(), &end);
-      if (end != value.c_str() + value.size() || !std::isfinite(v)) {
-        throw UsageError(path + ":" + std::to_string(line_number) + ": '" + value + "' is not a finite number");
+    for (const std::string& cell : cells) {
+      if (cell.empty()) throw UsageError(where() + "an empty value (two separators in a row); a height map is a full grid");
+      // Between commas, a value with blanks inside is two numbers, or a number written with
+      // a decimal comma in a file separated by blanks: either way, not this layout.
+      if (*sep == ',' && cell.find_first_of(" \t") != std::string::npos) {
+        throw UsageError(where() + "'" + cell + "' between two commas: values separated by commas and by blanks "
+                         "(decimal commas? separate such values by ';' or tabs, or write decimal points)");
       }
-      map.height.push_back(v);
+      const std::optional<double> v = cell_number(cell, decimal_comma_with(*sep));
+      if (!v) {
+        throw UsageError(where() + "'" + cell + "' is not a finite number (values separated by " + separator_name(*sep) +
+                         ", as in the first row)");
+      }
+      map.height.push_back(*v);
     }
-    if (count == 0) continue;
-    if (map.nx == 0) map.nx = count;
-    if (count != map.nx) {
-      throw UsageError(path + ":" + std::to_string(line_number) + ": " + std::to_string(count) + " values; the first row has " +
-                       std::to_string(map.nx) + " (a height map is a full grid)");
+    if (map.nx == 0) map.nx = cells.size();
+    if (cells.size() != map.nx) {
+      throw UsageError(where() + std::to_string(cells.size()) + " values; the first row has " + std::to_string(map.nx) +
+                       " (row " + std::to_string(map.ny + 1) + " of the map; a height map is a full grid)");
     }
     ++map.ny;
     if (map.height.size() > kMaxPixels) throw UsageError(path + ": more than 4096 x 4096 pixels");
   }
   return map;
+}
+
+/// The root mean square of h(k) - h(k') over the pixel pairs (k, k') `pair` gives for
+/// i < n, along a row or a column.
+template <class Pair>
+double rms_step(std::size_t n, const std::vector<double>& h, Pair pair) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [a, b] = pair(i);
+    sum += (h[a] - h[b]) * (h[a] - h[b]);
+  }
+  return std::sqrt(sum / static_cast<double>(n));
+}
+
+/// The step across the map's edge (its last row to its first, or last column to its first)
+/// beside the largest between neighbouring rows (columns) inside it.
+struct EdgeStep {
+  double across = 0.0;  ///< the RMS step across the edge
+  double inside = 0.0;  ///< the largest RMS step between neighbouring rows (columns) inside
+};
+EdgeStep edge_step(const HeightMap& map, bool along_y) {
+  const std::size_t nx = map.nx, ny = map.ny;
+  const std::size_t lines = along_y ? ny : nx, width = along_y ? nx : ny;
+  const auto at = [&](std::size_t line, std::size_t i) { return along_y ? line * nx + i : i * nx + line; };
+  EdgeStep out;
+  for (std::size_t line = 0; line + 1 < lines; ++line) {
+    out.inside = std::max(out.inside, rms_step(width, map.height, [&](std::size_t i) { return std::pair{at(line + 1, i), at(line, i)}; }));
+  }
+  out.across = rms_step(width, map.height, [&](std::size_t i) { return std::pair{at(0, i), at(lines - 1, i)}; });
+  return out;
+}
+
+/// A note where the map's opposite edges do not meet: the step across an edge is more than
+/// kEdgeStepFactor times the largest between neighbouring rows (columns) inside the map, so
+/// the map is no whole period (a tilt not levelled, a crop off the period). A map that says it
+/// is not periodic has its own note.
+constexpr double kEdgeStepFactor = 2.0;
+
+void note_edges(HeightMap& map, const std::string& path) {
+  if (map.periodic == 0) return;
+  const auto [lo, hi] = std::minmax_element(map.height.begin(), map.height.end());
+  const double range = *hi - *lo;
+  std::vector<std::string> edges;
+  for (const bool along_y : {false, true}) {
+    const EdgeStep e = edge_step(map, along_y);
+    if (e.across > kEdgeStepFactor * e.inside && e.across > 1e-9 * range) {
+      const std::string factor = e.inside > 0.0 ? model::number_text(e.across / e.inside, 3) + " times" : "above";
+      edges.push_back(std::string(along_y ? "its last row to its first" : "its last column to its first") + " steps " +
+                      factor + " the largest step between neighbouring " + (along_y ? "rows" : "columns"));
+    }
+  }
+  if (edges.empty()) return;
+  std::string which = edges[0];
+  if (edges.size() > 1) which += ", and " + edges[1];
+  map.notes.push_back(path + ": its opposite edges do not meet (" + which + "): it looks like no whole period; the engine "
+                      "repeats it as one period, so crop it to a whole period (or level its tilt) for a texture's answer");
 }
 
 }  // namespace

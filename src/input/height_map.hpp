@@ -23,11 +23,20 @@ struct HeightMap {
   double length_x = 0.0, length_y = 0.0;
   std::string unit;
   int periodic = -1;
+  /// What the reader found worth saying of the map, one sentence each, for the run's notes:
+  /// where its opposite edges do not meet (the step across an edge more than twice the
+  /// largest between neighbouring rows or columns inside it), so that it looks like no whole
+  /// period. (A map that says it is not periodic, periodic = 0, gets no such note here.)
+  std::vector<std::string> notes;
 };
 
 /// The map in `path` (.npy and NetCDF by their magic strings, else CSV). Throws UsageError naming the
-/// file and the problem (ragged rows, a value that is no finite number, an unsupported
-/// dtype or order, fewer than 4 x 4 pixels).
+/// file and the problem (ragged rows, a value that is no finite number, a CSV layout that
+/// mixes commas and blanks between values, an unsupported dtype or order, a .npy shape that
+/// is no two decimal counts or does not match its data, fewer than 4 x 4 pixels).
+/// A CSV map's separator is its first row's: with ';' or tabs between values a decimal comma
+/// is a point ("1,5;2,25"), as spreadsheets in many locales write it (input/csv_cells.hpp).
+/// A NetCDF map's unit "µm" (either micro sign) comes back as "um".
 HeightMap read_height_map(const std::string& path);
 
 }  // namespace punchsweep::input

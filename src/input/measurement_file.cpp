@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 
+#include "input/csv_cells.hpp"
 #include "input/text_file.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
@@ -36,7 +37,7 @@ const std::array<ColumnSpec, 7>& column_specs() {
       {Column::storage, {"storage", "storagemodulus", "e'"}, "Pa, kPa, MPa or GPa"},
       {Column::loss, {"loss", "lossmodulus", "e''"}, "Pa, kPa, MPa or GPa"},
       {Column::tan_delta, {"tandelta", "tan(delta)", "tand", "tan\xce\xb4", "tan(\xce\xb4)", "lossfactor"}, "- or 1"},
-      {Column::time, {"time"}, "s, min or h"},
+      {Column::time, {"time"}, "s, ms, min or h"},
       {Column::modulus, {"modulus", "relaxationmodulus", "e(t)"}, "Pa, kPa, MPa or GPa"},
   }};
   return specs;
@@ -45,9 +46,6 @@ const std::array<ColumnSpec, 7>& column_specs() {
 /// How far loss / storage and a tan_delta column of the same reading may differ.
 constexpr double kTanDeltaAgreement = 0.02;
 
-/// A cell or header without blanks and the quotes spreadsheets put around it.
-std::string trim(std::string_view s) { return std::string(model::trim(s, " \t\r\"")); }
-
 std::string normalized(std::string_view s) {
   std::string out;
   for (const char c : s) {
@@ -55,32 +53,6 @@ std::string normalized(std::string_view s) {
     out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
   return out;
-}
-
-/// The cells of a line: split at `sep` outside double quotes (a spreadsheet quotes a cell
-/// that holds the separator, and doubles a quote inside one: "a ""b"", c").
-std::vector<std::string> split(std::string_view line, char sep) {
-  std::vector<std::string> cells;
-  std::string cell;
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '"') {
-      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
-        cell += '"';
-        ++i;
-      } else {
-        quoted = !quoted;
-      }
-    } else if (c == sep && !quoted) {
-      cells.push_back(trim(cell));
-      cell.clear();
-    } else {
-      cell += c;
-    }
-  }
-  cells.push_back(trim(cell));
-  return cells;
 }
 
 /// How a column's numbers become SI: v -> v * factor + offset.
@@ -144,35 +116,19 @@ HeaderCell header_cell(const std::string& cell) {
   }
   if (open == std::string::npos || close == std::string::npos || close < open) return out;
   out.spec = named(normalized(cell.substr(0, open)));
-  out.unit = trim(cell.substr(open + 1, close - open - 1));
+  out.unit = trim_cell(cell.substr(open + 1, close - open - 1));
   out.has_unit = true;
   return out;
-}
-
-/// The separator of a line: a semicolon or a tab where it has one, else a comma.
-char separator_of(const std::string& line) {
-  return line.find(';') != std::string::npos ? ';' : line.find('\t') != std::string::npos ? '\t' : ',';
 }
 
 /// Whether a line is the header: it names the readings' abscissa, frequency or time. Lines
 /// above it are the instrument's preamble (sample, geometry, procedure, date).
 bool names_the_abscissa(const std::string& line) {
-  for (const std::string& cell : split(line, separator_of(line))) {
+  for (const std::string& cell : split_cells(line, separator_of(line))) {
     const ColumnSpec* spec = header_cell(cell).spec;
     if (spec != nullptr && (spec->column == Column::frequency || spec->column == Column::time)) return true;
   }
   return false;
-}
-
-/// A cell's number: a leading '+' allowed; with `decimal_comma` (a file separated by
-/// semicolons or tabs, as spreadsheets in many locales write it) "4,52" is 4.52.
-std::optional<double> cell_number(const std::string& written, bool decimal_comma) {
-  std::string cell = !written.empty() && written[0] == '+' ? written.substr(1) : written;
-  if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
-  double x = 0.0;
-  const auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
-  if (ec != std::errc() || ptr != cell.data() + cell.size() || !std::isfinite(x)) return std::nullopt;
-  return x;
 }
 
 }  // namespace
@@ -213,7 +169,7 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
   // The sample's name, where the preamble gives it: "Sample name<sep>TPE-A", "Sample:;TPE-A".
   std::string sample;
   for (std::size_t k = 0; k < h && sample.empty(); ++k) {
-    const std::vector<std::string> cells = split(lines[k].second, separator_of(lines[k].second));
+    const std::vector<std::string> cells = split_cells(lines[k].second, separator_of(lines[k].second));
     std::string key = normalized(cells[0]);
     if (!key.empty() && key.back() == ':') key.pop_back();
     if ((key == "sample" || key == "samplename") && cells.size() > 1) sample = cells[1];
@@ -221,10 +177,10 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
   into->samples.push_back(sample);
   const std::size_t header_no = lines[h].first;
   const char sep = separator_of(lines[h].second);
-  const bool decimal_comma = sep != ',';
+  const bool decimal_comma = decimal_comma_with(sep);
   // A row's cells, less the empty ones past `width` (exports often end a line with a separator).
   const auto cells_of = [&](const std::string& line, std::size_t width) {
-    std::vector<std::string> cells = split(line, sep);
+    std::vector<std::string> cells = split_cells(line, sep);
     while (cells.size() > std::max<std::size_t>(width, 1) && cells.back().empty()) cells.pop_back();
     return cells;
   };
@@ -339,13 +295,13 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
 }
 
 double read_temperature(const std::string& text, const std::string& option) {
-  const std::string t = trim(text);
+  const std::string t = trim_cell(text);
   double x = 0.0;
   const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
   if (ec != std::errc() || !std::isfinite(x)) {
     throw UsageError(option + " = '" + text + "' is not a temperature (a number in degC, or with its unit: 23C, 296.15K)");
   }
-  const std::string unit = trim(std::string_view(ptr, static_cast<std::size_t>(t.data() + t.size() - ptr)));
+  const std::string unit = trim_cell(std::string_view(ptr, static_cast<std::size_t>(t.data() + t.size() - ptr)));
   if (!unit.empty()) {
     const std::optional<ToSi> si = unit_of(Column::temperature, unit);
     if (!si) throw UsageError(option + " = '" + text + "': '" + unit + "' is not a temperature unit (valid: C, degC or K)");

@@ -9,7 +9,7 @@
 ///   temperature  C, degC or K (or absent: the file's temperature given as FILE@40C)
 ///   frequency    Hz or rad/s
 ///   storage      E', in Pa, kPa, MPa or GPa; with `loss` (same units) or `tan_delta` [-]
-///   time         s, min or h; with `modulus` (Pa..GPa): a relaxation test E(t)
+///   time         s, ms, min or h; with `modulus` (Pa..GPa): a relaxation test E(t)
 /// Commas, semicolons or tabs separate (with semicolons or tabs a decimal comma is a
 /// point); `#` starts a comment line. Readings come out in SI (degC, rad/s, s, Pa).
 

@@ -1,6 +1,7 @@
 #include "input/value_parsing.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -45,6 +46,18 @@ int parse_integer(const std::string& text, const std::string& option) {
     return static_cast<int>(real);
   }
   throw UsageError(option + " = '" + text + "' is not an integer");
+}
+
+std::uint64_t parse_seed(const std::string& text, const std::string& option) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (!digits || ec != std::errc() || ptr != end) {
+    throw UsageError(option + " = '" + text + "' is outside its range: an integer in [0, 2^64-1 = " +
+                     std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
+  }
+  return value;
 }
 
 std::vector<double> parse_real_list(const std::string& text, const std::string& option) {
