@@ -110,7 +110,7 @@ def open_map(path: str | Path):
 
 # Physical units an --at value may carry, in SI (the engine's units: docs/cli.md, "Units").
 _SI = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9, "Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9,
-       "N": 1.0, "s": 1.0, "min": 60.0, "h": 3600.0}
+       "N": 1.0, "s": 1.0, "ms": 1e-3, "min": 60.0, "h": 3600.0}
 
 
 def physical_scales(ds) -> dict[str, tuple[float, str]]:
@@ -355,7 +355,7 @@ def _at_number(ds, name: str, text: str) -> float:
 
 def _dimension(unit: str) -> str:
     return {"m": "length", "mm": "length", "um": "length", "nm": "length", "N": "force",
-            "s": "time", "min": "time", "h": "time"}.get(unit, "pressure")
+            "s": "time", "ms": "time", "min": "time", "h": "time"}.get(unit, "pressure")
 
 
 def _given(value) -> str:

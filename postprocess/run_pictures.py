@@ -57,7 +57,7 @@ def main(argv: list[str]) -> int:
         regime_at = fixed_values(ds, {"pbar", "dh", "s"} if facet else {"pbar", "dh"})
         chart_at = fixed_values(ds, {"pbar", "dh", critical_dh.CURVE_AXIS, critical_dh.PANEL_AXIS})
         # A map in physical time marks the times a user thinks in.
-        physical = pm.units(ds, "t_star") in ("s", "min", "h")
+        physical = pm.units(ds, "t_star") in ("s", "ms", "min", "h")
         touch_by = ["--touch-by", USER_TIMES] if physical else []
     code = regime_map.main([path, "--x", "pbar", "--y", "dh", *(["--at", *regime_at] if regime_at else []), *facet,
                             "-o", str(folder / "regime_map.png")])

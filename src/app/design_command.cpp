@@ -17,6 +17,7 @@
 #include "app/point_command.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
+#include "model/laws/time_shift.hpp"
 #include "model/numerics/number_text.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/problem/parameter.hpp"
@@ -30,6 +31,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Temperatures a range is checked at (evenly spaced, both ends included).
 constexpr int kTemperatureSamples = 9;
+/// The hottest temperature a design takes, in degC: no polymer's shift was ever measured
+/// near it (a material's own T_max, where it states one, is the tighter bound).
+constexpr double kMaxTemperature = 1e4;
 
 constexpr const char* kUsage =
     "usage: punchsweep design --require \"touch within 1s at 30kPa\" [--require \"never at 5kPa\" ...]\n"
@@ -57,6 +61,22 @@ struct DesignArgs {
 
 DesignArgs split_keywords(const input::Keywords& keywords) {
   DesignArgs a;
+  // Every option once, as the other commands take them (--require repeats, one per
+  // requirement); --pbar and --pressure are one option, the pressure.
+  std::vector<std::string> seen;
+  for (const auto& [name, value] : keywords) {
+    if (name == "require") continue;
+    for (const std::string& earlier : seen) {
+      if (earlier == name) {
+        throw input::UsageError("option '--" + name + "' cannot be specified more than once (see punchsweep design --help)");
+      }
+      if ((earlier == "pbar" && name == "pressure") || (earlier == "pressure" && name == "pbar")) {
+        throw input::UsageError("--" + name + " beside --" + earlier + ": the pressure is given twice (--pbar and "
+                                "--pressure are one option); give it once");
+      }
+    }
+    seen.push_back(name);
+  }
   for (const auto& [name, value] : keywords) {
     if (name == "require") {
       a.requirement_texts.push_back(value);
@@ -133,7 +153,9 @@ std::string trimmed(const std::string& s) { return std::string(model::trim(s, " 
 
 /// One of the requirement's forms (kRequirementForms), its time and pressure read in the
 /// point's scales; without a pressure (NaN) where the design finds it (`find_pressure`).
-Requirement read_requirement(const std::string& text, const input::PhysicalScales& scales, bool find_pressure) {
+/// `pressure_written` gets the pressure as the requirement writes it.
+Requirement read_requirement(const std::string& text, const input::PhysicalScales& scales, bool find_pressure,
+                             std::string* pressure_written) {
   const auto bad = [&](const std::string& why) {
     return input::UsageError("--require '" + text + "': " + why + " (" + kRequirementForms + ")");
   };
@@ -163,6 +185,7 @@ Requirement read_requirement(const std::string& text, const input::PhysicalScale
     throw bad("not a requirement");
   }
   pressure_text = m[m.size() - 1];
+  *pressure_written = trimmed(pressure_text);
   if (find_pressure && !pressure_text.empty()) {
     throw bad("the design finds the pressure (--find pressure): state the requirement without 'at " + pressure_text + "'");
   }
@@ -211,7 +234,13 @@ double read_temperature(std::string text, const std::string& unit_after, const s
                             "\xC2\xB0" "C or K, as 20C, or a range 20..40C)");
   }
   if (!std::isfinite(v)) throw input::UsageError(option + ": the temperature is not finite");
-  return unit == "K" ? v - 273.15 : v;
+  const double celsius = unit == "K" ? v - model::kZeroCelsius : v;
+  if (!(celsius > -model::kZeroCelsius && celsius <= kMaxTemperature)) {
+    throw input::UsageError(option + ": " + model::number_text(celsius, 10) + " degC is outside its range: a temperature " +
+                            "above absolute zero (-273.15 C) and at most " + model::number_text(kMaxTemperature, 10) +
+                            " C (a material's shift holds only where it was measured)");
+  }
+  return celsius;
 }
 
 /// --temperature: one temperature or a range A..B (degC unless a unit says K; the end's unit
@@ -394,7 +423,16 @@ DesignResult design(const DesignArgs& a) {
   const input::PointInputs scales_of_point = point_at(probe, "");
   std::vector<Requirement> requirements;
   for (const std::string& text : a.requirement_texts) {
-    requirements.push_back(read_requirement(text, scales_of_point.scales, by_pressure));
+    std::string pressure;
+    requirements.push_back(read_requirement(text, scales_of_point.scales, by_pressure, &pressure));
+    // A bare number is in the scale (docs/cli.md, "Units"), but beside a material that
+    // gives a modulus a pressure is meant in Pa as often as not: say how it was read.
+    if (!pressure.empty() && !input::has_unit(pressure) && scales_of_point.scales.E0_star) {
+      out.notes.push_back("'" + requirements.back().text + "': its pressure " + pressure +
+                          " has no unit, so it is in E0* = E0/(1-nu^2) of the material (docs/cli.md, Units): " +
+                          pressure_text(requirements.back().pbar, scales_of_point) + "; give a unit (" + pressure +
+                          "kPa) for a pressure in Pa");
+    }
   }
   if (a.tolerance) out.tolerance = read_tolerance(*a.tolerance, scales_of_point);
   const DesignTolerance& box = out.tolerance;

@@ -65,7 +65,7 @@ po::options_description fit_options() {
        "readings whose temperatures (sorted) lie within this many K of the previous one\n"
        "form one isotherm (instruments log each reading's measured temperature)")
       ("time-window", po::value<std::string>()->default_value("1e-10s, 1e12s")->value_name("LO,HI"),
-       "the times the material is to hold, at T_ref (s, min or h): the series is fitted\n"
+       "the times the material is to hold, at T_ref (s, ms, min or h): the series is fitted\n"
        "to every reading, then terms slower than HI join E_inf (frozen) and terms faster\n"
        "than LO are dropped (relaxed); at most 24 decades, which the engine's\n"
        "interconversion resolves")
@@ -312,7 +312,7 @@ void read_window(const po::variables_map& vm, fit::MaterialFitRequest* request) 
   const auto comma = text.find(',');
   const auto bad = [&](const std::string& why) {
     return input::UsageError("--time-window = '" + text + "' " + why +
-                             " (valid: LO,HI in s, min or h, 0 < LO < HI <= LO x 1e24, e.g. 1e-10s,1e12s)");
+                             " (valid: LO,HI in s, ms, min or h, 0 < LO < HI <= LO x 1e24, e.g. 1e-10s,1e12s)");
   };
   if (comma == std::string::npos) throw bad("is not two times");
   double v[2];

@@ -27,7 +27,7 @@ struct MapAttributes {
   std::string creep_law;
   double C = 0.0;  ///< shape constant of f(r) = C r^s / R^(s-1)
   /// The unit of every time: "T_eps" (then a scale, written as scaled_by) or a material's
-  /// time unit ("s", "min", "h"; then written as units).
+  /// time unit ("s", "ms", "min", "h"; then written as units).
   std::string time_unit = "T_eps";
   /// A material map (empty name: none): the file's name line and text, its instantaneous
   /// Young's modulus E_0 and the plane-strain E0* = E_0/(1 - nu^2) in Pa, nu.

@@ -26,7 +26,7 @@ const std::string kExample = R"([material]
 name = example, made up for the test
 law = prony
 modulus_unit = MPa                 # Pa, kPa, MPa or GPa
-time_unit = s                      # s, min or h
+time_unit = s                      # s, ms, min or h
 poisson = 0.35
 E_inf = 1.0
 E_i = 2.0, 1.5                     # or E_0 = ... with g_i = ...
@@ -117,7 +117,7 @@ TEST(Material, refuses_every_bad_file_with_key_value_and_range) {
       {"tau_i = 0.5, 20", "tau_i = 0.5", "1 times for 2 values", "one time per term"},
       {"poisson = 0.35\n", "", "[material] poisson", "is missing"},
       {"modulus_unit = MPa", "modulus_unit = psi", "modulus_unit = psi", "Pa, kPa, MPa or GPa"},
-      {"time_unit = s", "time_unit = days", "time_unit = days", "s, min or h"},
+      {"time_unit = s", "time_unit = days", "time_unit = days", "s, ms, min or h"},
       {"poisson = 0.35", "poisson = 0.7", "poisson = 0.7", "-1 < poisson <= 0.5"},
       {"law = prony", "law = maxwell", "law = maxwell", "prony, kelvin"},
       {"E_inf = 1.0", "E_inf = 1.0\nE_infinity = 2", "no key 'E_infinity'", "valid: name, law"},

@@ -66,7 +66,7 @@ TEST(Units, a_number_and_a_unit_is_its_si_value_and_a_bare_number_is_none) {
   EXPECT_FALSE(parse_physical("0.75", Dimension::length).has_value());
   EXPECT_FALSE(parse_physical("1e-3", Dimension::pressure).has_value());
   EXPECT_EQ(unit_names(Dimension::pressure), "Pa, kPa, MPa or GPa");
-  EXPECT_EQ(unit_names(Dimension::time), "s, min or h");
+  EXPECT_EQ(unit_names(Dimension::time), "s, ms, min or h");
 }
 
 TEST(Units, a_unit_of_another_dimension_or_no_number_is_refused_with_the_valid_units) {
@@ -74,7 +74,7 @@ TEST(Units, a_unit_of_another_dimension_or_no_number_is_refused_with_the_valid_u
                                        std::tuple{"20 psi", Dimension::pressure, "'psi' is not a pressure unit; valid: Pa, kPa, MPa or GPa"},
                                        std::tuple{"2 min", Dimension::length, "'min' is a time, not a length"},
                                        std::tuple{"um", Dimension::length, "is not a number, or a number and a length unit"},
-                                       std::tuple{"", Dimension::time, "is not a number, or a number and a time unit (s, min or h)"}}) {
+                                       std::tuple{"", Dimension::time, "is not a number, or a number and a time unit (s, ms, min or h)"}}) {
     try {
       parse_physical(text, d);
       ADD_FAILURE() << text;

@@ -29,7 +29,10 @@ def cli(*args) -> subprocess.CompletedProcess:
 
 
 def design(material, *args) -> dict:
-    r = cli("design", "--material", material, *GEOMETRY, *args, "--format", "json")
+    # Each option once (design refuses one given twice): a pitch range in args (--find l)
+    # takes the place of GEOMETRY's --l.
+    geometry = [*GEOMETRY[:2], *GEOMETRY[4:]] if "--l" in args else GEOMETRY
+    r = cli("design", "--material", material, *geometry, *args, "--format", "json")
     assert r.returncode == 0, r.stderr
     return json.loads(r.stdout)
 

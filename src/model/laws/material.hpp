@@ -56,7 +56,7 @@ class Material {
   const std::string& name() const { return name_; }
   /// The law's name, one of material_laws(): "prony", "kelvin", "power_law".
   const std::string& law() const { return law_; }
-  /// The unit of time of every t, tau_i, t* ("s", "min" or "h"): UDUNITS reads each.
+  /// The unit of time of every t, tau_i, t* ("s", "ms", "min" or "h"): UDUNITS reads each.
   const std::string& time_unit() const { return time_unit_; }
   /// The instantaneous Young's modulus E_0, in Pa.
   double instantaneous_modulus_Pa() const { return E0_Pa_; }

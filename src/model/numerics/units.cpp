@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::array<Unit, 4> kLength = {{{"m", 1.0}, {"mm", 1e-3}, {"um", 1e-6}, {"nm", 1e-9}}};
 constexpr std::array<Unit, 4> kPressure = {{{"Pa", 1.0}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}}};
-constexpr std::array<Unit, 3> kTime = {{{"s", 1.0}, {"min", 60.0}, {"h", 3600.0}}};
+constexpr std::array<Unit, 4> kTime = {{{"s", 1.0}, {"ms", 1e-3}, {"min", 60.0}, {"h", 3600.0}}};
 
 }  // namespace
 

@@ -33,7 +33,7 @@ struct Unit {
 };
 
 /// The units a dimension is accepted in, its SI unit first: m, mm, um, nm; Pa, kPa, MPa,
-/// GPa; s, min, h.
+/// GPa; s, ms, min, h.
 std::span<const Unit> units_of(Dimension dimension);
 
 /// The unit of `dimension` named `name` (exact spelling; "µm" is um), or nullptr.

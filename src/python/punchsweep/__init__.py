@@ -432,7 +432,7 @@ class Material:
               name: str = "a Prony series given in Python", shift: Mapping[str, Any] | None = None,
               path=None) -> "Material":
         """A material from arrays: E(t) = E_inf + sum_i E_i exp(-t / tau_i) (moduli in
-        modulus_unit: Pa, kPa, MPa or GPa; times in time_unit: s, min or h), Poisson's ratio,
+        modulus_unit: Pa, kPa, MPa or GPa; times in time_unit: s, ms, min or h), Poisson's ratio,
         and optionally a temperature shift as the file's [shift] keys (e.g. dict(kind="wlf",
         C1=17.4, C2=51.6, T_ref=65)). It is written as a material file, to `path` when given
         (to keep or share it), else to a private temporary file removed with the object, and
