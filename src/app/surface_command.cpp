@@ -42,6 +42,16 @@ constexpr int kMaxGrid = 2048;
 constexpr int kAutoMin = 64;
 constexpr int kAutoMax = 512;
 constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
+/// --grid auto's accuracy: each level's t* moves by at most this share of itself from the
+/// grid of half the nodes to the one taken (the accuracy the documentation states).
+constexpr double kAutoTStarAccuracy = 1e-3;
+/// The budget of one curve: at most kMaxNodes nodes (a 4096 x 4096 height map; the
+/// boundary elements hold about kBytesPerNode a node, measured: 68 MB for 512 x 512), and
+/// nodes x caps at most kMaxNodeCaps (measured: an 8 x 8 two-level supercell, 128 caps on
+/// 512 x 512 nodes, 3.4e7 node-caps, took 470 s on one core; the budget is some 30 times that).
+constexpr double kMaxNodes = 4096.0 * 4096.0;
+constexpr double kBytesPerNode = 260.0;
+constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
 
@@ -113,8 +123,8 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "each cap's height change (a positive one lowers the cap): normal:SD, uniform:HALFWIDTH (lengths "
        "in R, or with a unit and --R; >= 0) or list:V1,V2,... (one per cap of the supercell, in R); "
        "needs --supercell")
-      ("seed", po::value<unsigned long long>()->value_name("N")->default_value(1),
-       "the seed of --scatter's draws (std::mt19937_64, fully specified: the same seed gives the same caps)")
+      ("seed", po::value<std::string>()->value_name("N")->default_value("1"),
+       "the seed of --scatter's draws, an integer in [0, 2^64-1] (std::mt19937_64, fully specified: the same seed gives the same caps)")
       ("check", po::bool_switch(),
        "also step the same cell in time (the time-stepping boundary elements, which assume nothing of the "
        "contact's history) and print its touch times, areas and loads beside the curve's")
@@ -140,6 +150,7 @@ reference::MeasuredCell read_measured(const po::variables_map& vm, const input::
                                       std::vector<std::string>* notes) {
   const std::string path = vm["height-map"].as<std::string>();
   const input::HeightMap map = input::read_height_map(path);
+  notes->insert(notes->end(), map.notes.begin(), map.notes.end());
   const auto read_length = [&](const char* option, const std::string& text) {
     const double value = input::read_length(text, scales, std::string("--") + option);
     if (!(std::isfinite(value) && value > 0.0)) {
@@ -282,12 +293,13 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     throw input::UsageError("--supercell = " + std::to_string(run.supercell) + " is outside its range: an integer in [1, " +
                             std::to_string(kMaxSupercell) + "]");
   }
+  const std::uint64_t seed = input::parse_seed(vm["seed"].as<std::string>(), "--seed");
   if (vm.count("scatter")) {
     if (run.supercell == 1 && vm["supercell"].defaulted()) {
       throw input::UsageError("--scatter needs --supercell K (the caps whose heights scatter: K x K cells)");
     }
     run.scatter = read_scatter(vm["scatter"].as<std::string>(), run.inputs.scales);
-    run.scatter.seed = vm["seed"].as<unsigned long long>();
+    run.scatter.seed = seed;
     const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
     if (run.scatter.kind == model::HeightScatter::Kind::list && run.scatter.values.size() != caps) {
       throw input::UsageError("--scatter list has " + std::to_string(run.scatter.values.size()) + " values: it needs one per cap, " +
@@ -315,20 +327,112 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
   for (const model::Site& site : run.geometry.sites) count += site.level == 0 ? 1.0 : 0.0;
   const model::Shape& shape = run.geometry.sites.front().shape;
   const double a = std::pow(X * run.geometry.Lx * run.geometry.Ly / count / model::load_coefficient(shape), 1.0 / (shape.s + 1));
-  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / run.supercell / a / 2.0) * 2.0;
+  // (A multiple of 4: the grid of half its nodes, which the curve is held to, is even.)
+  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / run.supercell / a / 4.0) * 4.0;
   return static_cast<int>(std::clamp(n, static_cast<double>(kAutoMin), static_cast<double>(kAutoMax)));
 }
 
-/// The cell the boundary elements solve (the curve's, or --check's): its grid, the tips
-/// snapped to its nodes for a cell file (with a note).
-reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load) {
-  if (run.measured) return run.measured->cell;
-  if (run.grid_nodes == 0) run.grid_nodes = auto_grid(run, load);
-  if (run.cell_file.empty()) {
-    return reference::make_cell(run.geometry, reference::lattice_grid(run.geometry, run.lattice, run.grid_nodes, run.supercell));
+reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes);
+std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid);
+
+/// --grid auto: the curve on the grid auto_grid picks, held to the curve on half its nodes:
+/// where some level's t* (under `load`) moves between them by more than kAutoTStarAccuracy
+/// of itself, or its regime changes, the nodes double (up to kAutoMax) and the finer is held
+/// to the last. Each level's move on the grid taken is kept (SurfaceRun::grid_t_star_change:
+/// it bounds the taken grid's error where t* converges at first order or faster); a level
+/// still moving at kAutoMax is marked unresolved, with a note.
+template <class CurveOn>
+model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad& load, const CurveOn& curve_on, bool progress) {
+  int n = auto_grid(run, load);
+  model::LoadCurve coarse = curve_on(n / 2);
+  model::LoadCurve fine = curve_on(n);
+  const std::size_t L = static_cast<std::size_t>(fine.levels());
+  std::vector<double> change(L, 0.0);
+  for (;;) {
+    const std::vector<model::LevelTouch> a = model::level_touches(coarse, load), b = model::level_touches(fine, load);
+    double worst = 0.0;
+    for (std::size_t level = 0; level < L; ++level) {
+      change[level] = a[level].regime != b[level].regime ? std::numeric_limits<double>::infinity()
+                      : b[level].regime == model::Regime::delayed ? std::abs(b[level].t_star - a[level].t_star) / b[level].t_star
+                                                                  : 0.0;
+      worst = std::max(worst, change[level]);
+    }
+    if (worst <= kAutoTStarAccuracy || 2 * n > kAutoMax) break;
+    if (const std::string problem = budget_problem(run, curve_grid(run, 2 * n)); !problem.empty()) {
+      run.inputs.notes.push_back("--grid auto stopped at " + std::to_string(n) + " nodes a pitch: " + problem);
+      break;
+    }
+    if (progress) {
+      std::cerr << "punchsweep surface: --grid auto: t* moves by " << worst << " of itself from " << n / 2 << " to " << n
+                << " nodes a pitch (more than " << kAutoTStarAccuracy << "): the curve on " << 2 * n << "\n";
+    }
+    coarse = std::move(fine);
+    n *= 2;
+    fine = curve_on(n);
   }
+  run.grid_coarser = n / 2;
+  run.grid_t_star_change = change;
+  std::vector<model::LevelTouch> touches = model::level_touches(fine, load);
+  for (std::size_t level = 1; level < L; ++level) {
+    if (change[level] <= kAutoTStarAccuracy) continue;
+    std::ostringstream note;
+    note.precision(3);
+    note << "level " << level << ": --grid auto stopped at " << n << " nodes a pitch, where t* still ";
+    if (std::isinf(change[level])) {
+      note << "changes regime from " << n / 2 << " nodes";
+    } else {
+      note << "moves by " << change[level] << " of itself from " << n / 2 << " nodes";
+    }
+    note << " (the stated accuracy: " << kAutoTStarAccuracy << "): the level is marked unresolved; --grid N up to " << kMaxGrid
+         << " refines further";
+    run.inputs.notes.push_back(note.str());
+    run.unresolved_levels.push_back(static_cast<int>(level));
+  }
+  return fine;
+}
+
+/// The grid of the curve at `nodes` a pitch: the lattice's (K cells each way), a cell file's
+/// (its tips snapped to it, when the cell is made), or the measured map's pixels.
+reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes) {
+  if (run.measured) return run.measured->cell.grid;
+  if (run.cell_file.empty()) return reference::lattice_grid(run.geometry, run.lattice, nodes, run.supercell);
+  return reference::cell_grid(run.geometry, nodes * run.supercell);
+}
+
+/// Why a curve on `grid` is beyond what the engine takes on (empty where it is not): more
+/// than kMaxNodes nodes (memory: about kBytesPerNode a node), or nodes x caps beyond
+/// kMaxNodeCaps (each cap that touches apart costs its own search of some 20 solves of the
+/// whole grid). Both are said with the estimate and what brings it down.
+std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
+  const double nodes = static_cast<double>(grid.nodes());
+  const double caps = static_cast<double>(run.geometry.sites.size());
+  const double levels = static_cast<double>(std::max(run.geometry.levels(), 1));
+  const double gigabytes = static_cast<double>(grid.size()) * (kBytesPerNode + 17.0 * levels) / 1e9;
+  std::ostringstream out;
+  out.precision(3);
+  const std::string lower = run.measured ? "crop or resample the map" : "give a smaller --grid (nodes a pitch)" +
+                                                                           std::string(run.supercell > 1 ? " or --supercell" : "");
+  if (nodes > kMaxNodes) {
+    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes (about " << gigabytes
+        << " GB), is beyond the engine's budget of " << kMaxNodes << " nodes: " << lower;
+  } else if (nodes * caps > kMaxNodeCaps) {
+    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size() << " caps (" << nodes * caps
+        << " node-caps, about " << gigabytes << " GB), is beyond the engine's budget of " << kMaxNodeCaps
+        << " node-caps (each cap that touches apart is its own search over the whole grid: hours): " << lower;
+  }
+  return out.str();
+}
+
+/// The cell the boundary elements solve (the curve's, or --check's): its grid, the tips
+/// snapped to its nodes for a cell file (with a note). A grid beyond the budget is refused
+/// (budget_problem) before anything is allocated.
+reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load) {
+  if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
+  reference::PeriodicGrid grid = curve_grid(run, run.grid_nodes);
+  if (const std::string problem = budget_problem(run, grid); !problem.empty()) throw input::UsageError(problem);
+  if (run.measured) return run.measured->cell;
+  if (run.cell_file.empty()) return reference::make_cell(run.geometry, grid);
   // A cell file's tips go to their nearest nodes: the move is reported.
-  reference::PeriodicGrid grid = reference::cell_grid(run.geometry, run.grid_nodes * run.supercell);
   double moved = 0.0;
   run.geometry = reference::snap_tips(run.geometry, grid, &moved);
   if (grid.mirrored() && !model::mirror_symmetric(run.geometry)) grid.symmetry = reference::Symmetry::none;
@@ -340,6 +444,50 @@ reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeighte
     run.inputs.notes.push_back(note.str());
   }
   return reference::make_cell(run.geometry, grid);
+}
+
+/// The curve held to its own time stepping (--check), on the same cell: a level whose
+/// regime differs, or whose t* differs by more than the stepping's resolution and 1e-3 of
+/// itself, is not resolved; a valid snapshot whose area fraction differs by more than 1% and
+/// half a node per cap is flagged check_disagrees. Either gets a note with the numbers.
+void hold_to_check(SurfaceRun& run, double t_resolution) {
+  const reference::CellReference& stepped = *run.stepped;
+  for (std::size_t level = 1; level < run.history.levels.size(); ++level) {
+    model::LevelTouch& mine = run.history.levels[level];
+    const double theirs = stepped.level_t_star[level];
+    const bool same_regime = mine.regime == stepped.level_regime[level];
+    const bool close = same_regime && (mine.regime != model::Regime::delayed ||
+                                       std::abs(mine.t_star - theirs) <= t_resolution + 1e-3 * theirs);
+    if (close) continue;
+    mine.resolved = false;
+    std::ostringstream note;
+    note.precision(6);
+    note << "level " << level << ": the curve says " << model::regime_name(mine.regime) << " (t* = " << mine.t_star
+         << ") and its time stepping " << model::regime_name(stepped.level_regime[level]) << " (t* = " << theirs
+         << ") beyond their accuracy: the level is marked unresolved; a finer --grid decides";
+    run.inputs.notes.push_back(note.str());
+  }
+  const double half_nodes = 0.5 * static_cast<double>(run.geometry.sites.size()) /
+                            (static_cast<double>(run.curve.nx) * static_cast<double>(run.curve.ny));
+  int flagged = 0;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) {
+    model::SurfaceSnapshot& s = run.history.snapshots[k];
+    const double theirs = stepped.series[k].area_fraction;
+    const double miss = std::abs(s.state.area_fraction - theirs);
+    if (s.validity != model::SurfaceValidity::valid || miss <= 0.01 * theirs + half_nodes) continue;
+    s.validity = model::SurfaceValidity::check_disagrees;
+    ++flagged;
+    worst = std::max(worst, miss / std::max(theirs, 1e-300));
+  }
+  if (flagged > 0) {
+    std::ostringstream note;
+    note.precision(3);
+    note << flagged << " snapshot" << (flagged == 1 ? "" : "s") << "' area fraction differ" << (flagged == 1 ? "s" : "")
+         << " from the time stepping's by up to " << 100.0 * worst
+         << "% (the curve's stated accuracy: 1% and half a node per cap): flagged check_disagrees";
+    run.inputs.notes.push_back(note.str());
+  }
 }
 
 /// The curve as far as the times reach, and the history on it.
@@ -371,7 +519,6 @@ void evaluate(SurfaceRun& run, bool progress) {
     run.curve = std::move(*tabulated);
   } else {
     run.curve_source = CurveSource::cell;
-    cell = boundary_element_cell(run, load);
     reference::LoadCurveOptions options;
     // To full contact, where every level that can touch has: the curve is then the
     // geometry's alone, whatever the material, temperature, pressure and times, and one
@@ -384,15 +531,35 @@ void evaluate(SurfaceRun& run, bool progress) {
         const auto now = std::chrono::steady_clock::now();
         if (std::chrono::duration<double>(now - last).count() < 2.0) return;
         last = now;
-        std::cerr << "punchsweep surface: load curve, " << solves << " solves, X = " << X << " E0* on the way to full contact\n";
+        std::cerr << "punchsweep surface: load curve on " << run.grid_nodes << " nodes a pitch, " << solves << " solves, X = " << X
+                  << " E0* on the way to full contact\n";
       };
     }
-    CurveOrigin origin = CurveOrigin::built;
-    run.curve = load_curve_for(run.geometry, *cell, options, &origin);
-    run.curve_cached = origin == CurveOrigin::cache;
+    // The curve on `nodes` a pitch (0: the measured map's pixels): the given geometry's
+    // tips snapped to that grid, its note the last grid's alone.
+    const model::CellGeometry given = run.geometry;
+    const std::vector<std::string> notes = run.inputs.notes;
+    bool cached = true;
+    const auto curve_on = [&](int nodes) {
+      run.geometry = given;
+      run.inputs.notes = notes;
+      run.grid_nodes = nodes;
+      cell = boundary_element_cell(run, load);
+      CurveOrigin origin = CurveOrigin::built;
+      model::LoadCurve curve = load_curve_for(run.geometry, *cell, options, &origin);
+      cached = cached && origin == CurveOrigin::cache;
+      return curve;
+    };
+    if (run.grid_nodes != 0 || run.measured) {
+      run.curve = curve_on(run.grid_nodes);
+    } else {
+      run.curve = auto_grid_curve(run, load, curve_on, progress);
+    }
+    run.curve_cached = cached;
   }
   run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.history = model::surface_history(run.curve, load, run.times);
+  for (const int level : run.unresolved_levels) run.history.levels[static_cast<std::size_t>(level)].resolved = false;
   // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
   const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
                                         run.inputs.problem.loading};
@@ -410,6 +577,19 @@ void evaluate(SurfaceRun& run, bool progress) {
     const std::size_t at = static_cast<std::size_t>(level);
     run.derivatives[at] = model::level_t_star_derivatives(run.curve, level, surface_load, run.history.levels[at].t_star);
     if (!ranges.empty()) run.ranges[at] = ranges[at];
+    // A level on a knife edge says so, as `point` does: the input whose 1% moves t* most,
+    // where that is more than 10% (t* then asks more of the curve than its grid's accuracy).
+    const model::TStarDerivative* steepest = nullptr;
+    for (const model::TStarDerivative& d : run.derivatives[at]) {
+      if (std::isfinite(d.elasticity) && (!steepest || std::abs(d.elasticity) > std::abs(steepest->elasticity))) steepest = &d;
+    }
+    if (steepest && std::abs(steepest->elasticity) > 10.0) {
+      std::ostringstream note;
+      note.precision(3);
+      note << "level " << level << ": t* is on a knife edge: x/t* d t*/dx = " << steepest->elasticity << " for "
+           << steepest->parameter->name << " (a 1% change moves t* by far more than 1%); --tolerance gives its range";
+      run.inputs.notes.push_back(note.str());
+    }
   }
   if (run.check) {
     // The time stepping of the same cell, steps scaled to the law as `reference` scales them.
@@ -427,6 +607,7 @@ void evaluate(SurfaceRun& run, bool progress) {
     run.stepped = reference::evaluate_cell_reference(run.geometry, *cell, run.inputs.problem.pbar0, *run.inputs.creep,
                                                      run.inputs.problem.loading, check);
     run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
+    hold_to_check(run, check.t_star_resolution);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <string>
 
 #include "input/command_options.hpp"
@@ -100,6 +101,33 @@ void write_check(std::ostream& out, const SurfaceRun& run) {
   out << "    }\n  },\n";
 }
 
+/// Why a level never touches, one rule whatever served the curve: its caps lie under the
+/// taller ones' surface (hidden: their tips are not on the texture's surface, and the
+/// contact reaches them only as the taller caps' spreads), or the load never reaches its
+/// touchdown before full contact or the curve's end.
+/// Whether every cap of `level` lies under the taller caps' surface (model::tip_exposed).
+bool level_hidden(const SurfaceRun& run, int level) {
+  if (run.measured) return false;  // a summit is the highest pixel about it
+  const model::SurfaceLocator surface(run.geometry);
+  bool hidden = true;
+  for (std::size_t k = 0; k < run.geometry.sites.size() && hidden; ++k) {
+    if (run.geometry.sites[k].level == level) hidden = !model::tip_exposed(run.geometry, surface, k);
+  }
+  return hidden;
+}
+
+std::string never_reason(const SurfaceRun& run, int level) {
+  std::ostringstream out;
+  if (level_hidden(run, level)) {
+    out << "hidden: its tips lie under the taller caps' surface, so it never touches as a cap of its own";
+  } else if (std::isfinite(run.curve.X_full)) {
+    out << "untouched up to full contact, X = " << run.curve.X_full << " E0*";
+  } else {
+    out << "untouched up to X = " << run.curve.X_last() << " E0*, where the curve ends";
+  }
+  return out.str();
+}
+
 /// Where the curve came from: "tables" (the periodic model's) or "cell" (the cell's own
 /// boundary elements).
 std::string curve_source_name(const SurfaceRun& run) { return run.curve_source == CurveSource::tables ? "tables" : "cell"; }
@@ -121,7 +149,8 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   out << "  \"curve\": {\"source\": " << input::json_string(curve_source_name(run)) << ", \"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_resolved\": " << num(run.curve.X_resolved)
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
-      << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false") << "},\n";
+      << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false")
+      << ", \"held_to_grid\": " << (run.grid_coarser > 0 ? std::to_string(run.grid_coarser) : std::string("null")) << "},\n";
   out << "  \"levels\": [";
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
@@ -131,6 +160,9 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
         << ", \"sites\": " << drops.sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
         << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
         << ", \"resolved\": " << (touch.resolved ? "true" : "false")
+        << ", \"hidden\": " << (level > 0 && level_hidden(run, level) ? "true" : "false")
+        << ", \"t_star_grid_change\": "
+        << (run.grid_t_star_change.empty() ? std::string("null") : num(run.grid_t_star_change[static_cast<std::size_t>(level)]))
         << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]);
     for (const model::TStarDerivative& d : run.derivatives[static_cast<std::size_t>(level)]) {
       out << ", \"dt_star_d" << d.parameter->name << "\": " << num(d.derivative) << ", \"dlog_t_star_dlog_" << d.parameter->name
@@ -187,6 +219,12 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
       << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
       << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s"
       << (run.curve_cached ? " (from the table cache)" : "") << "\n";
+  if (run.grid_coarser > 0) {
+    double worst = 0.0;
+    for (const double c : run.grid_t_star_change) worst = std::max(worst, c);
+    out << (csv ? "# " : "  ") << "grid: --grid auto held it to " << run.grid_coarser << " nodes a pitch: t* moved by at most "
+        << worst << " of itself\n";
+  }
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);
@@ -196,7 +234,7 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
     } else if (std::isfinite(t.X_star)) {
       out << " (touches at X* = " << t.X_star << " E0*)\n";
     } else {
-      out << " (untouched up to X = " << run.curve.X_last() << " E0*, past X(inf))\n";
+      out << " (" << never_reason(run, level) << ")\n";
     }
   }
   for (int level = 1; level < L; ++level) {

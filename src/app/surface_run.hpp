@@ -34,6 +34,12 @@ struct SurfaceRun {
   int supercell = 1;   ///< K: the cell is K x K lattice cells
   model::HeightScatter scatter;
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
+  /// --grid auto: the grid the taken one was held to (half its nodes; 0 where not held),
+  /// each level's relative move of t* between them (+infinity where the regime changed),
+  /// and the levels still moving at the grid's top (marked unresolved).
+  int grid_coarser = 0;
+  std::vector<double> grid_t_star_change;
+  std::vector<int> unresolved_levels;
   CurveSource curve_source = CurveSource::cell;  ///< asked; after evaluation tables or cell, what served
   model::LoadCurve curve;
   model::SurfaceHistory history;

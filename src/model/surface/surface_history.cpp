@@ -14,6 +14,7 @@ std::string_view surface_validity_name(SurfaceValidity validity) {
     case SurfaceValidity::above_top: return "above_top";
     case SurfaceValidity::unloading: return "unloading";
     case SurfaceValidity::history_cost: return "history_cost";
+    case SurfaceValidity::check_disagrees: return "check_disagrees";
   }
   return "unknown";
 }

@@ -43,6 +43,9 @@ enum class SurfaceValidity : int {
   /// The loads' history integral would take more work than LoadHistory::kMaxSamples (a
   /// spectrum over more decades than the times resolve): the loads are not computed.
   history_cost = 4,
+  /// `surface --check` stepped the same cell in time and its area differs from the curve's
+  /// beyond the curve's stated accuracy (1% and half a node per cap): one of them is wrong.
+  check_disagrees = 5,
 };
 std::string_view surface_validity_name(SurfaceValidity validity);
 
