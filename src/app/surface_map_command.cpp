@@ -55,6 +55,11 @@ constexpr Refused kRefused[] = {
     {"format", "the map is a netCDF-4 file (--output)"},
 };
 
+/// A map's limits (refused up front): geometries, each a load curve; geometries x load
+/// points, held on rank 0 (with three levels and ten times, about 150 bytes a point).
+constexpr std::size_t kMaxGeometries = 10000;
+constexpr double kMaxMapPoints = 1e7;
+
 const std::string* find(const input::Keywords& keywords, const std::string& name) {
   for (const auto& [key, value] : keywords) {
     if (key == name) return &value;
@@ -264,6 +269,17 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   if (const std::string* R = find(keywords, "R")) map.R = *R;
   const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
   const std::size_t G = map.geometries(), P = map.load_points();
+  // Up front, what the map asks: a load curve per geometry (seconds to minutes each), and
+  // every point's values held on rank 0 until the file is written.
+  if (G > kMaxGeometries) {
+    throw input::UsageError("the map has " + std::to_string(G) + " geometries, each its own load curve (seconds to minutes): at most " +
+                            std::to_string(kMaxGeometries) + " in one map; split the geometry axes over several maps");
+  }
+  if (static_cast<double>(G) * static_cast<double>(P) > kMaxMapPoints) {
+    throw input::UsageError("the map has " + std::to_string(G) + " geometries x " + std::to_string(P) + " load points, beyond " +
+                            input::json_number(kMaxMapPoints) +
+                            " points (a surface map is held in memory until it is written whole): split its axes over several maps");
+  }
   const double least_pbar = *std::min_element(in.load[0].values.begin(), in.load[0].values.end());
 
   // Every geometry's keywords: the texture's, its lengths, and the least pressure (the
@@ -402,17 +418,33 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
 }
 
 namespace {
-/// Why the map may not be written to `path` (io::output_file_problem's rule, and an existing
-/// file without `overwrite`), or empty.
-std::string map_output_problem(const std::string& path, bool overwrite) {
-  if (std::string problem = io::output_file_problem(path); !problem.empty()) return problem;
+/// The files a map reads: its material, cell file or height map.
+std::vector<std::string> map_input_files(const input::Keywords& keywords) {
+  std::vector<std::string> files;
+  for (const char* key : {"material", "cell", "height-map"}) {
+    if (const std::string* path = find(keywords, key)) files.push_back(*path);
+  }
+  return files;
+}
+
+/// Why the map may not be written to `path` (io::output_file_problem's rule for it and for
+/// its .partial, neither of them one of the map's input files, and an existing file without
+/// `overwrite`), or empty. An input is refused before the existing file, so that the
+/// refusal never invites --overwrite onto an input.
+std::string map_output_problem(const std::string& path, bool overwrite, const input::Keywords& keywords) {
+  const std::vector<std::string> inputs = map_input_files(keywords);
+  for (const std::string& file : {path, path + ".partial"}) {
+    if (std::string problem = io::output_file_problem(file, inputs); !problem.empty()) return problem;
+  }
   if (!overwrite && std::filesystem::exists(path)) return path + " exists: give --overwrite to replace it";
   return {};
 }
 }  // namespace
 
-void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite) {
-  if (const std::string problem = map_output_problem(path, overwrite); !problem.empty()) throw input::UsageError(problem);
+void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite, const input::Keywords& keywords) {
+  if (const std::string problem = map_output_problem(path, overwrite, keywords); !problem.empty()) {
+    throw input::UsageError(problem);
+  }
   const std::string partial = path + ".partial";
   try {
     io::NetcdfFile file(partial);
@@ -469,8 +501,11 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
                     with(units("T_eps"), {{"long_name", "each level's least touch time" + box}}));
       file.variable("t_star_high", dims({&geometry_dims, &load_dims}, "level"), map.t_star_high,
                     with(units("T_eps"), {{"long_name", "each level's greatest touch time" + box}}));
-      std::vector<std::int8_t> codes{kNotComputed};
-      codes.insert(codes.end(), regime_codes.begin(), regime_codes.end());
+      // (Element by element: GCC 12's -Warray-bounds misreads an insert into a vector of one.)
+      std::vector<std::int8_t> codes;
+      codes.reserve(regime_codes.size() + 1);
+      codes.push_back(kNotComputed);
+      for (const std::int8_t code : regime_codes) codes.push_back(code);
       const std::string meanings = "not_computed " + regime_names;
       file.variable("regime_low", dims({&geometry_dims, &load_dims}, "level"), map.regime_low,
                     {{"long_name", "each level's regime at the corner of least t*" + box}, {"flag_meanings", meanings}}, codes);
@@ -592,7 +627,7 @@ int run_surface_map_command(const std::vector<std::string>& args) {
     // Rank 0 checks the output before any curve is built; every rank learns the verdict.
     int refused = 0;
     if (root) {
-      if (const std::string problem = map_output_problem(output, overwrite); !problem.empty()) {
+      if (const std::string problem = map_output_problem(output, overwrite, keywords); !problem.empty()) {
         std::cerr << "punchsweep surface-map: " << problem << "\n";
         refused = 1;
       }
@@ -643,7 +678,7 @@ int run_surface_map_command(const std::vector<std::string>& args) {
       }
     }
     try {
-      write_surface_map(output, map, overwrite);
+      write_surface_map(output, map, overwrite, keywords);
       std::cerr << "punchsweep surface-map: wrote " << output << " (" << G << " geometr" << (G == 1 ? "y" : "ies") << " x "
                 << P << " load points x " << L << " levels, " << T << " times)\n";
     } catch (const input::UsageError& e) {
@@ -660,9 +695,14 @@ int run_surface_map_command(const std::vector<std::string>& args) {
 std::string surface_map_file(const input::Keywords& keywords) {
   const std::string* output = find(keywords, kOutput);
   if (!output) throw input::UsageError("surface_map: output is required");
-  const std::string* overwrite = find(keywords, kOverwrite);
+  const std::string* overwrite_text = find(keywords, kOverwrite);
+  const bool overwrite = overwrite_text && *overwrite_text == "true";
+  // The output is checked before any curve is built, and again as it is written.
+  if (const std::string problem = map_output_problem(*output, overwrite, keywords); !problem.empty()) {
+    throw input::UsageError(problem);
+  }
   const SurfaceMap map = evaluate_surface_map(keywords, 0, 1, false);
-  write_surface_map(*output, map, overwrite && *overwrite == "true");
+  write_surface_map(*output, map, overwrite, keywords);
   return *output;
 }
 

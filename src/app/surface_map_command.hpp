@@ -64,8 +64,9 @@ struct SurfaceMap {
 SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int ranks, bool progress);
 
 /// Writes `map` to `path` whole (a temporary name renamed), checking the path as every
-/// output is (io::output_file_problem); `overwrite` allows replacing a file.
-void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite);
+/// output is (io::output_file_problem, for it and its .partial) and that it is none of the
+/// files `keywords` reads (material, cell, height-map); `overwrite` allows replacing a file.
+void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite, const input::Keywords& keywords);
 
 /// `mpirun -n N punchsweep surface-map ...`: the exit code (2 for bad input, said by rank 0).
 int run_surface_map_command(const std::vector<std::string>& args);
