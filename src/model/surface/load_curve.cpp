@@ -51,6 +51,14 @@ CurveState LoadCurve::at(double X) const {
       out.level_load[level] = first.level_load[level] * (X / first.X);
       out.level_area[level] = first.level_area[level] * area_scale;
     }
+    // A level that touches between X and the first sample has no contact yet at X: no area,
+    // and its share of the load is the tallest level's (the loads still sum to X Lx Ly).
+    for (std::size_t level = 1; level < L && level < level_touchdown.size(); ++level) {
+      if (X >= level_touchdown[level]) continue;
+      out.level_area[level] = 0.0;
+      out.level_load[0] += out.level_load[level];
+      out.level_load[level] = 0.0;
+    }
   } else {
     out.range = CurveRange::sampled;
     const auto after = std::upper_bound(samples.begin(), samples.end(), X,

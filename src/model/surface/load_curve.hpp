@@ -27,7 +27,8 @@ struct LoadCurveSample {
 enum class CurveRange {
   /// Below the first sample (the tallest sites' spots span fewer than the curve's
   /// min_spot_nodes nodes): areas follow the isolated punch's a^(s+1) ~ load from the first
-  /// sample down; the loads are the first sample's shares.
+  /// sample down; the loads are the first sample's shares; a level not yet at its touchdown
+  /// has neither (its share of the load is the tallest level's).
   below_resolution,
   sampled,       ///< between the samples: interpolated (see LoadCurve::at)
   full_contact,  ///< every node in contact: exact (areas the levels' shares, loads grow by them)
