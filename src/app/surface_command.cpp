@@ -45,6 +45,9 @@ constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sa
 /// --grid auto's accuracy: each level's t* moves by at most this share of itself from the
 /// grid of half the nodes to the one taken (the accuracy the documentation states).
 constexpr double kAutoTStarAccuracy = 1e-3;
+/// --grid auto's accuracy of an area fraction (the stated 1%), estimated as a third of its
+/// move from the grid of half the nodes.
+constexpr double kAutoAreaAccuracy = 1e-2;
 /// The budget of one curve: at most kMaxNodes nodes (a 4096 x 4096 height map; the
 /// boundary elements hold about kBytesPerNode a node, measured: 68 MB for 512 x 512), and
 /// nodes x caps at most kMaxNodeCaps (measured: an 8 x 8 two-level supercell, 128 caps on
@@ -372,7 +375,13 @@ model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad
   }
   run.grid_coarser = n / 2;
   run.grid_t_star_change = change;
-  std::vector<model::LevelTouch> touches = model::level_touches(fine, load);
+  // Each snapshot's area fraction on both grids: a third of its move is the taken grid's
+  // error where the areas converge at second order (a lone cap's do: docs/model.md 17.3).
+  for (const double t : run.times) {
+    const double X = t > 0.0 ? load(t) : load.initial();
+    const double a = coarse.at(X).area_fraction, b = fine.at(X).area_fraction;
+    run.grid_area_error.push_back(b > 0.0 ? std::abs(b - a) / (3.0 * b) : 0.0);
+  }
   for (std::size_t level = 1; level < L; ++level) {
     if (change[level] <= kAutoTStarAccuracy) continue;
     std::ostringstream note;
@@ -560,6 +569,19 @@ void evaluate(SurfaceRun& run, bool progress) {
   run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.history = model::surface_history(run.curve, load, run.times);
   for (const int level : run.unresolved_levels) run.history.levels[static_cast<std::size_t>(level)].resolved = false;
+  // --grid auto: a valid snapshot whose area the grid leaves more than 1% uncertain is
+  // flagged below_resolution (a finer --grid answers it).
+  int uncertain = 0;
+  for (std::size_t k = 0; k < run.grid_area_error.size() && k < run.history.snapshots.size(); ++k) {
+    model::SurfaceSnapshot& snapshot = run.history.snapshots[k];
+    if (snapshot.validity != model::SurfaceValidity::valid || run.grid_area_error[k] <= kAutoAreaAccuracy) continue;
+    snapshot.validity = model::SurfaceValidity::below_resolution;
+    ++uncertain;
+  }
+  if (uncertain > 0) {
+    run.inputs.notes.push_back(std::to_string(uncertain) + " snapshot(s) flagged below_resolution: their area fraction moves by more than " +
+                               "3% from the grid of half the nodes (an error beyond 1% on the grid taken); a finer --grid answers");
+  }
   // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
   const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
                                         run.inputs.problem.loading};

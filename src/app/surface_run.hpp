@@ -40,6 +40,9 @@ struct SurfaceRun {
   int grid_coarser = 0;
   std::vector<double> grid_t_star_change;
   std::vector<int> unresolved_levels;
+  /// --grid auto: per time, the estimated relative error of the area fraction on the grid
+  /// taken (a third of its move from the coarser grid; empty where not held).
+  std::vector<double> grid_area_error;
   CurveSource curve_source = CurveSource::cell;  ///< asked; after evaluation tables or cell, what served
   model::LoadCurve curve;
   model::SurfaceHistory history;
