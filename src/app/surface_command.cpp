@@ -53,6 +53,10 @@ constexpr double kAutoAreaAccuracy = 1e-2;
 /// nodes x caps at most kMaxNodeCaps (measured: an 8 x 8 two-level supercell, 128 caps on
 /// 512 x 512 nodes, 3.4e7 node-caps, took 470 s on one core; the budget is some 30 times that).
 constexpr double kMaxNodes = 4096.0 * 4096.0;
+/// The scales the boundary elements take (scale_problem): cell lengths and the relief over
+/// the cell, in R.
+constexpr double kMinCellLength = 1e-6, kMaxCellLength = 1e6;
+constexpr double kMinRelief = 1e-30, kMaxRelief = 1e8;
 constexpr double kBytesPerNode = 260.0;
 constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
 /// The largest supercell: K x K lattice cells.
@@ -432,10 +436,35 @@ std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid&
   return out.str();
 }
 
+/// Why the boundary elements cannot take the texture's scales (empty where they can): its
+/// cell's lengths outside [kMinCellLength, kMaxCellLength] R, or its relief (the greatest
+/// separation over the cell, from the highest tip) outside [kMinRelief, kMaxRelief] R, where
+/// the solve's numbers leave double precision (--l 1e300, --C 1e300 or a cell 1e5 R long
+/// ended in an internal error, --l 1e-300 ran without end).
+std::string scale_problem(const SurfaceRun& run) {
+  std::ostringstream out;
+  out.precision(3);
+  const double Lx = run.geometry.Lx, Ly = run.geometry.Ly;
+  if (!(Lx >= kMinCellLength && Lx <= kMaxCellLength && Ly >= kMinCellLength && Ly <= kMaxCellLength)) {
+    out << "the cell is " << Lx << " x " << Ly << " R: the boundary elements take cells whose lengths lie in ["
+        << kMinCellLength << ", " << kMaxCellLength << "] R";
+    return out.str();
+  }
+  const double relief = run.measured ? *std::max_element(run.measured->cell.profile.begin(), run.measured->cell.profile.end())
+                                     : model::SurfaceLocator(run.geometry).top();
+  if (!(relief >= kMinRelief && relief <= kMaxRelief)) {
+    out << "the texture's relief over its cell (the deepest point below the highest tip) is about " << relief
+        << " R: the boundary elements take reliefs in [" << kMinRelief << ", " << kMaxRelief << "] R (C, s and the pitch set it)";
+  }
+  return out.str();
+}
+
 /// The cell the boundary elements solve (the curve's, or --check's): its grid, the tips
-/// snapped to its nodes for a cell file (with a note). A grid beyond the budget is refused
-/// (budget_problem) before anything is allocated.
+/// snapped to its nodes for a cell file (with a note). A texture whose scales the solve
+/// cannot take (scale_problem) or a grid beyond the budget (budget_problem) is refused
+/// before anything is allocated.
 reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load) {
+  if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
   if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
   reference::PeriodicGrid grid = curve_grid(run, run.grid_nodes);
   if (const std::string problem = budget_problem(run, grid); !problem.empty()) throw input::UsageError(problem);

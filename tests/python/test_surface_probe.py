@@ -230,3 +230,18 @@ def test_every_valid_snapshot_of_the_cell_curve_is_within_one_percent_of_the_tab
     assert valid.sum() >= 4
     mine, theirs = np.asarray(out["series"]["area_fraction"]), np.asarray(ref.series["area_fraction"])
     np.testing.assert_allclose(mine[valid], theirs[valid], rtol=1e-2)
+
+
+def test_scales_the_boundary_elements_cannot_take_are_refused_as_bad_input(tmp_path):
+    """--l 1e300 and --C 1e300 with --curve cell ended in 'internal error' (exit 1), a cell
+    1e5 R long in 'missed its tolerance' (exit 1), --l 1e-300 ran without end: each is bad
+    input (exit 2) naming the range of lengths or relief the solve takes."""
+    base = ["--dh", 0.01, "--T", 2.5, "--pbar", 0.01, "--s", 2, "--curve", "cell"]
+    for args, message in ((["--l", "1e300"], "lengths lie in [1e-06, 1e+06] R"),
+                          (["--l", "1e-300"], "lengths lie in [1e-06, 1e+06] R"),
+                          (["--l", 0.75, "--C", "1e300"], "reliefs in [1e-30, 1e+08] R")):
+        run = cli("surface", *args, *base)
+        assert run.returncode == 2 and message in run.stderr, (args, run.stderr)
+    wide = write_cell(tmp_path, ["[cell]", "Lx = 100000", "Ly = 1", "site = 0, 0, 0, 0"])
+    run = cli("surface", "--cell", wide, "--T", 2.5, "--pbar", 0.01, "--grid", 64)
+    assert run.returncode == 2 and "relief" in run.stderr, run.stderr
