@@ -47,6 +47,9 @@ PointRun read_point(const po::variables_map& vm, const input::PointMaterial& mat
                     std::vector<model::Tolerance>* tolerances, std::optional<double>* cap_radius) {
   PointRun run{input::read_point_inputs(vm, material), {}};
   run.inputs.problem.localization = input::read_localization(vm);
+  if (const std::string e = run.inputs.problem.localization.exponent_error(run.inputs.problem.shape.s); !e.empty()) {
+    throw input::UsageError(e);
+  }
   options->times = input::read_times(vm, run.inputs.scales);
   *tolerances = input::read_tolerances(vm, run.inputs);
   *cap_radius = input::read_cap_radius(vm, run.inputs);

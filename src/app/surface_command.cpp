@@ -288,10 +288,13 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     throw input::UsageError("--curve tables: the periodic model's tables are the two-level square lattice's (without --dh2, "
                             "--cell, --height-map, --supercell or --lattice hexagonal); use --curve cell or auto");
   }
+  // (The tables answer s up to Localization::kMaxPeriodicExponent; auto takes the cell beyond.)
+  const std::string beyond_tables = model::Localization{.periodic = true}.exponent_error(run.inputs.problem.shape.s);
+  if (curve == "tables" && !beyond_tables.empty()) throw input::UsageError("--curve tables: " + beyond_tables);
   if (curve == "tables" && run.grid_nodes != 0) {
     throw input::UsageError("--grid beside --curve tables: the tables' grid is their own (512 nodes per pitch)");
   }
-  run.curve_source = curve == "cell" || !paper_lattice || run.grid_nodes != 0 ? CurveSource::cell
+  run.curve_source = curve == "cell" || !paper_lattice || run.grid_nodes != 0 || !beyond_tables.empty() ? CurveSource::cell
                      : curve == "tables"                                      ? CurveSource::tables
                                                                               : CurveSource::tables_or_cell;
   run.geometry = cell ? *cell : model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);

@@ -853,6 +853,16 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
         check_axis(std::string(p->sweep_default), p->integer, [](double) { return true; }, axis);
         axis.name = spec.name;
       }
+      // The shape exponent is held to the localization's reach (the periodic model's tables
+      // answer s up to Localization::kMaxPeriodicExponent).
+      if (p->name == model::kExponent) {
+        for (const double v : axis.values) {
+          if (const std::string e = config.localization.exponent_error(static_cast<int>(v)); !e.empty()) {
+            problems.push_back(dotted(spec) + " = " + settings[k].text + ": " + e);
+            break;
+          }
+        }
+      }
       // A material's temperature is also held to its shift's range (WLF diverges below
       // T_ref - C2).
       if (p->name == model::temperature_parameter().name) {

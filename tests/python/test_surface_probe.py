@@ -245,3 +245,20 @@ def test_scales_the_boundary_elements_cannot_take_are_refused_as_bad_input(tmp_p
     wide = write_cell(tmp_path, ["[cell]", "Lx = 100000", "Ly = 1", "site = 0, 0, 0, 0"])
     run = cli("surface", "--cell", wide, "--T", 2.5, "--pbar", 0.01, "--grid", 64)
     assert run.returncode == 2 and "relief" in run.stderr, run.stderr
+
+
+def test_the_periodic_model_refuses_the_exponents_its_tables_do_not_reach(tmp_path):
+    """`point` ended in 'internal error: the small-spot table of s = 8 found no two-level
+    state ... dh / (C l^s) = 0' (exit 1) for s = 7 to 32, which the docs allowed: the periodic
+    model now refuses them as bad input naming its range and the models that answer, and so
+    does a sweep's s axis; `surface` takes the cell's own curve there."""
+    run = cli("point", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8)
+    assert run.returncode == 2 and "s = 8 is outside the periodic model's range: an integer in [1, 6]" in run.stderr
+    paper = cli("point", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8, "--localization", "paper")
+    assert paper.returncode == 0, paper.stderr
+    sweep = cli("sweep", "--grid.s", "2,8", "--output", tmp_path / "m.h5", "--dry-run")
+    assert sweep.returncode == 2 and "grid.s = 2,8: s = 8 is outside" in sweep.stderr
+    out = punchsweep.surface(l=0.75, dh=0.01, T=2.5, pbar=0.02, s=8, grid=16, times=[0, 1])
+    assert out["curve"]["source"] == "cell"
+    tables = cli("surface", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8, "--curve", "tables")
+    assert tables.returncode == 2 and "--curve tables: s = 8" in tables.stderr

@@ -44,4 +44,12 @@ Localization parse_localization(std::string_view text) {
                               localization_spellings());
 }
 
+std::string Localization::exponent_error(int s) const {
+  if (!periodic || s <= kMaxPeriodicExponent) return {};
+  return "s = " + std::to_string(s) + " is outside the periodic model's range: an integer in [1, " +
+         std::to_string(kMaxPeriodicExponent) +
+         "] (its small-spot table finds no two-level state beyond); --localization refined or paper answers s up to 32, "
+         "and `punchsweep surface --curve cell` the cell's own boundary elements";
+}
+
 }  // namespace punchsweep::model

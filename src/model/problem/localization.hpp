@@ -39,6 +39,13 @@ struct Localization {
   /// best (docs/model.md, section 11): the neighbours within this many distances, spread.
   static constexpr int kRefinedShells = 200;
 
+  /// The periodic model's reach in s: its small-spot table's two-level solve finds no state
+  /// near touchdown beyond it (s = 7 to 32 failed; docs/model.md, section 14.7).
+  static constexpr int kMaxPeriodicExponent = 6;
+  /// Empty where this model answers shape exponent s, else one sentence naming s, the
+  /// model's range and the models that answer it.
+  std::string exponent_error(int s) const;
+
   /// The spelling "paper": the engine's own eqs 9.5/9.10 and 9.12-9.19.
   bool is_paper() const { return shells == 2 && !distributed && !periodic; }
   /// "paper", "periodic", "shells:D" (distributed) or "point-shells:D".
