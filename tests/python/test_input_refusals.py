@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from lattice_maps import lattice_heights
 
 REPO = Path(__file__).resolve().parents[2]
 BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
@@ -39,16 +40,6 @@ def surface_json(*args) -> dict:
     assert run.returncode == 0, run.stderr
     return json.loads(run.stdout)
 
-
-def lattice_heights(l: float, n: int, dh: float) -> np.ndarray:
-    """The paper's two-level square lattice, n x n pixels of one period, rows along y."""
-    x = np.arange(n) * (l / n)
-    X, Y = np.meshgrid(x, x)
-
-    def r(cx, cy):
-        return np.hypot((X - cx + l / 2) % l - l / 2, (Y - cy + l / 2) % l - l / 2)
-
-    return -np.minimum(0.5 * r(0, 0) ** 2, 0.5 * r(l / 2, l / 2) ** 2 + dh)
 
 
 def write_npy(path: Path, dictionary: str, values) -> Path:

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import punchsweep
+from lattice_maps import lattice_heights
 
 REPO = Path(__file__).resolve().parents[2]
 BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
@@ -284,17 +285,6 @@ def test_check_steps_the_same_cell_in_time():
     np.testing.assert_array_equal(out["series"]["sites_touched"], check["series"]["sites_touched"])
     assert "check" not in punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=16)
 
-
-def lattice_heights(l: float, n: int, dh: float) -> np.ndarray:
-    """The paper's two-level square lattice sampled as a profilometer would: n x n pixels of
-    one period, the height -min(f1, f2 + dh) (s = 2, C = 0.5), rows along y."""
-    x = np.arange(n) * (l / n)
-    X, Y = np.meshgrid(x, x)
-
-    def r(cx, cy):
-        return np.hypot((X - cx + l / 2) % l - l / 2, (Y - cy + l / 2) % l - l / 2)
-
-    return -np.minimum(0.5 * r(0, 0) ** 2, 0.5 * r(l / 2, l / 2) ** 2 + dh)
 
 
 def test_a_measured_map_of_the_lattice_is_the_lattice(tmp_path):

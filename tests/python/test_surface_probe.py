@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import punchsweep
+from lattice_maps import lattice_heights
 
 REPO = Path(__file__).resolve().parents[2]
 BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
@@ -36,16 +37,6 @@ def write_cell(folder: Path, lines: list[str], name: str = "cell.ini") -> Path:
     path.write_text("\n".join(lines) + "\n")
     return path
 
-
-def lattice_heights(l: float, n: int, dh: float) -> np.ndarray:
-    """The paper's lattice as a profilometer samples it: -min(f1, f2 + dh), s = 2, C = 0.5."""
-    x = np.arange(n) * (l / n)
-    X, Y = np.meshgrid(x, x)
-
-    def r(cx, cy):
-        return np.hypot((X - cx + l / 2) % l - l / 2, (Y - cy + l / 2) % l - l / 2)
-
-    return -np.minimum(0.5 * r(0, 0) ** 2, 0.5 * r(l / 2, l / 2) ** 2 + dh)
 
 
 def test_a_measured_map_books_each_pixel_to_the_cap_whose_surface_is_lowest(tmp_path):
