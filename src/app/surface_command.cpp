@@ -210,7 +210,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   SurfaceRun run;
   po::variables_map vm = given;
   std::optional<model::CellGeometry> cell;
-  std::vector<std::string> map_notes;  // what reading a height map says of it
+  std::vector<std::string> map_notes;  // what reading a height map or a cell file says of it
   const bool measured = given.count("height-map") > 0;
   if (given.count("cell") || measured) {
     const std::string source = measured ? "--height-map" : "--cell";
@@ -233,7 +233,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
       run.cell_file = given["height-map"].as<std::string>();
     } else {
       run.cell_file = given["cell"].as<std::string>();
-      cell = input::read_cell_file(run.cell_file, scales);
+      cell = input::read_cell_file(run.cell_file, scales, &map_notes);
     }
     // The point's reading of the material and the load reads a cell too: the texture's
     // (taken out of the inputs' echo below).

@@ -15,13 +15,26 @@
 
 namespace punchsweep::input {
 
-model::CellGeometry parse_cell(const std::string& text, const std::string& origin, const PhysicalScales& scales) {
+model::CellGeometry parse_cell(const std::string& text, const std::string& origin, const PhysicalScales& scales,
+                               std::vector<std::string>* notes) {
   int line_number = 0;
+  // Lengths given with a unit, and the first nonzero one given bare (read in R).
+  bool any_unit = false;
+  std::string first_bare;
+  int bare_count = 0;
   const auto fail = [&](const std::string& what) -> void {
     throw UsageError(origin + (line_number > 0 ? ":" + std::to_string(line_number) : std::string()) + ": " + what);
   };
   const auto length = [&](const std::string& key, const std::string& value) {
-    return read_length(std::string(model::trim(value)), scales, origin + ":" + std::to_string(line_number) + ": " + key);
+    const std::string text(model::trim(value));
+    const double v = read_length(text, scales, origin + ":" + std::to_string(line_number) + ": " + key);
+    const bool has_unit = text.find_first_not_of("0123456789.+-eE") != std::string::npos;  // (read_length took it)
+    if (has_unit) {
+      any_unit = true;
+    } else if (v != 0.0) {
+      if (bare_count++ == 0) first_bare = "line " + std::to_string(line_number) + ", " + key + " = " + text;
+    }
+    return v;
   };
   std::map<std::string, std::pair<std::string, int>> keys;  // key -> value, line
   std::vector<std::pair<std::string, int>> sites;           // text, line
@@ -103,6 +116,27 @@ model::CellGeometry parse_cell(const std::string& text, const std::string& origi
     out << origin << ": the least drop is " << least << " R: the tallest site's drop is 0 (drops are taken from it)";
     throw UsageError(out.str());
   }
+  if (notes != nullptr) {
+    if (any_unit && bare_count > 0) {
+      notes->push_back(origin + ": " + std::to_string(bare_count) + " length" + (bare_count == 1 ? "" : "s") +
+                       " without a unit beside lengths with units (the first: " + first_bare +
+                       ") read in R, the punch's radius of curvature; give a unit to mean a physical length");
+    }
+    // Level 0 is the tallest: its caps touch at once.
+    double level0 = std::numeric_limits<double>::infinity();
+    for (const model::Site& site : g.sites) {
+      if (site.level == 0) level0 = std::min(level0, site.drop);
+    }
+    if (level0 > 0.0) {
+      for (std::size_t k = 0; k < g.sites.size(); ++k) {
+        if (g.sites[k].drop != 0.0) continue;
+        notes->push_back(origin + ":" + std::to_string(sites[k].second) + ": the tallest site is of level " +
+                         std::to_string(g.sites[k].level) + ", not 0: levels are read as numbered, level 0 first, " +
+                         "though level 0's caps are not the first to touch");
+        break;
+      }
+    }
+  }
   // Every tip on the texture's surface: a site under a taller cap (or on another's tip)
   // would never touch as a punch of its own.
   std::size_t by = 0;
@@ -124,8 +158,8 @@ model::CellGeometry parse_cell(const std::string& text, const std::string& origi
   return g;
 }
 
-model::CellGeometry read_cell_file(const std::string& path, const PhysicalScales& scales) {
-  return parse_cell(read_text_file(path, "cell file"), path, scales);
+model::CellGeometry read_cell_file(const std::string& path, const PhysicalScales& scales, std::vector<std::string>* notes) {
+  return parse_cell(read_text_file(path, "cell file"), path, scales, notes);
 }
 
 }  // namespace punchsweep::input

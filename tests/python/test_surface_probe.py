@@ -253,3 +253,15 @@ def test_the_periodic_model_refuses_the_exponents_its_tables_do_not_reach(tmp_pa
     assert out["curve"]["source"] == "cell"
     tables = cli("surface", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8, "--curve", "tables")
     assert tables.returncode == 2 and "--curve tables: s = 8" in tables.stderr
+
+
+def test_a_cell_file_says_what_it_leaves_to_a_guess(tmp_path):
+    """A cell file whose level 0 is not the tallest, and a bare drop beside lengths in um,
+    were answered without a note: each gets one (the bare drop read in R, as the rule is)."""
+    cell = write_cell(tmp_path, ["[cell]", "Lx = 50um", "Ly = 50um", "site = 0, 0, 0.02, 0", "site = 25um, 25um, 0, 1"])
+    out = punchsweep.surface(cell=str(cell), R="50um", T=2.5, pbar=0.01, grid=16, times=[0, 1])
+    notes = " ".join(out["notes"])
+    assert "1 length without a unit beside lengths with units (the first: line 4, site drop = 0.02) read in R" in notes
+    assert "cell.ini:5: the tallest site is of level 1, not 0" in notes
+    plain = write_cell(tmp_path, ["[cell]", "Lx = 1", "Ly = 1", "site = 0, 0, 0, 0", "site = 0.5, 0.5, 0.02, 1"], "plain.ini")
+    assert punchsweep.surface(cell=str(plain), T=2.5, pbar=0.01, grid=16, times=[0, 1])["notes"] == []
