@@ -63,6 +63,7 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
   };
   std::vector<Summit> summits;
   std::vector<std::size_t> summit_of(z.size(), z.size());
+  std::vector<std::size_t> tops;  // pixels no pixel of their disc beats, in row order
   for (int j = 0; j < NY; ++j) {
     for (int i = 0; i < NX; ++i) {
       const std::size_t k = index(i, j);
@@ -73,9 +74,37 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
           break;
         }
       }
-      if (up[k] == k) {
-        summit_of[k] = summits.size();
-        summits.push_back({i, j, top - z[k]});
+      if (up[k] == k) tops.push_back(k);
+    }
+  }
+  // A flat top (8-connected pixels of exactly one height) is one summit however wide: the
+  // row order's tie rule would make a second where the top wraps round the cell's edge (a
+  // flat cap at a corner gave two). Its other tops climb to its first in row order (which
+  // beats them: the same height, earlier).
+  std::vector<char> on_top(z.size(), 0);
+  for (const std::size_t k : tops) on_top[k] = 1;
+  std::vector<char> filled(z.size(), 0);
+  std::vector<std::size_t> front;
+  for (const std::size_t k : tops) {
+    if (up[k] != k) continue;  // merged into an earlier top
+    const int i = static_cast<int>(k % nx), j = static_cast<int>(k / nx);
+    summit_of[k] = summits.size();
+    summits.push_back({i, j, top - z[k]});
+    front.assign(1, k);
+    filled[k] = 1;
+    while (!front.empty()) {
+      const std::size_t q = front.back();
+      front.pop_back();
+      if (on_top[q] && q != k) up[q] = k;
+      const int qi = static_cast<int>(q % nx), qj = static_cast<int>(q / nx);
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+          const std::size_t r = index(qi + di, qj + dj);
+          if (!filled[r] && z[r] == z[k]) {
+            filled[r] = 1;
+            front.push_back(r);
+          }
+        }
       }
     }
   }

@@ -265,3 +265,21 @@ def test_a_cell_file_says_what_it_leaves_to_a_guess(tmp_path):
     assert "cell.ini:5: the tallest site is of level 1, not 0" in notes
     plain = write_cell(tmp_path, ["[cell]", "Lx = 1", "Ly = 1", "site = 0, 0, 0, 0", "site = 0.5, 0.5, 0.02, 1"], "plain.ini")
     assert punchsweep.surface(cell=str(plain), T=2.5, pbar=0.01, grid=16, times=[0, 1])["notes"] == []
+
+
+def test_flat_topped_caps_are_one_summit_each(tmp_path):
+    """Caps with flat tops (f = 0.5 (r - 0.1)^2 outside r = 0.1 R: tops 17 pixels across,
+    wider than the summit radius) gave four summits for two caps: the tall cap's top wraps
+    round the cell's corner, and the row order's tie rule made a summit on each side."""
+    l, n, dh, r0 = 0.75, 64, 0.03, 0.1
+    x = np.arange(n) * (l / n)
+    X, Y = np.meshgrid(x, x)
+
+    def f(cx, cy):
+        r = np.hypot((X - cx + l / 2) % l - l / 2, (Y - cy + l / 2) % l - l / 2)
+        return 0.5 * np.maximum(r - r0, 0.0) ** 2
+
+    np.save(tmp_path / "flat.npy", -np.minimum(f(0, 0), f(l / 2, l / 2) + dh))
+    out = punchsweep.surface(height_map=str(tmp_path / "flat.npy"), pixel=l / n, level_gap=dh / 2, T=2.5, pbar=0.01,
+                             times=[0, 1])
+    assert out["caps"] == 2 and [lv["drop"] for lv in out["levels"]] == pytest.approx([0.0, dh], abs=1e-12)
