@@ -58,6 +58,8 @@ constexpr double kMaxNodes = 4096.0 * 4096.0;
 constexpr double kMinCellLength = 1e-6, kMaxCellLength = 1e6;
 constexpr double kMinRelief = 1e-30, kMaxRelief = 1e8;
 constexpr double kBytesPerNode = 260.0;
+/// From this many nodes a curve's setup is said on stderr, with its memory.
+constexpr double kLargeGrid = 1048576.0;
 constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
@@ -466,11 +468,16 @@ std::string scale_problem(const SurfaceRun& run) {
 /// snapped to its nodes for a cell file (with a note). A texture whose scales the solve
 /// cannot take (scale_problem) or a grid beyond the budget (budget_problem) is refused
 /// before anything is allocated.
-reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load) {
+reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load, bool progress) {
   if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
   if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
   reference::PeriodicGrid grid = curve_grid(run, run.grid_nodes);
   if (const std::string problem = budget_problem(run, grid); !problem.empty()) throw input::UsageError(problem);
+  if (progress && static_cast<double>(grid.nodes()) >= kLargeGrid) {
+    std::cerr << "punchsweep surface: the cell on " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size()
+              << " caps (about " << static_cast<double>(grid.size()) * kBytesPerNode / 1e9
+              << " GB); its curve takes minutes or more, with progress below\n";
+  }
   if (run.measured) return run.measured->cell;
   if (run.cell_file.empty()) return reference::make_cell(run.geometry, grid);
   // A cell file's tips go to their nearest nodes: the move is reported.
@@ -585,7 +592,7 @@ void evaluate(SurfaceRun& run, bool progress) {
       run.geometry = given;
       run.inputs.notes = notes;
       run.grid_nodes = nodes;
-      cell = boundary_element_cell(run, load);
+      cell = boundary_element_cell(run, load, progress);
       CurveOrigin origin = CurveOrigin::built;
       model::LoadCurve curve = load_curve_for(run.geometry, *cell, options, &origin);
       cached = cached && origin == CurveOrigin::cache;
@@ -655,7 +662,7 @@ void evaluate(SurfaceRun& run, bool progress) {
     check.t_star_resolution = scaled.t_star_resolution;
     if (!cell) {
       sweep::use_reproducible_fft_plans();
-      cell = boundary_element_cell(run, load);
+      cell = boundary_element_cell(run, load, false);
     }
     const auto check_start = std::chrono::steady_clock::now();
     run.stepped = reference::evaluate_cell_reference(run.geometry, *cell, run.inputs.problem.pbar0, *run.inputs.creep,
