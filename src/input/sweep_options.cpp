@@ -855,7 +855,9 @@ std::vector<std::string> apply_settings(const std::vector<Setting>& settings, sw
       }
       // The shape exponent is held to the localization's reach (the periodic model's tables
       // answer s up to Localization::kMaxPeriodicExponent).
-      if (p->name == model::kExponent) {
+      // (One line a key: an axis already outside the parameter's range says that alone.)
+      const bool in_range = std::all_of(axis.values.begin(), axis.values.end(), [&](double v) { return p->admits(v); });
+      if (p->name == model::kExponent && in_range) {
         for (const double v : axis.values) {
           if (const std::string e = config.localization.exponent_error(static_cast<int>(v)); !e.empty()) {
             problems.push_back(dotted(spec) + " = " + settings[k].text + ": " + e);
