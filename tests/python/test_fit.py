@@ -177,15 +177,25 @@ def test_one_file_per_temperature_and_tan_delta_give_the_same_fit(fitted, tmp_pa
 REFINED = 1e-5
 
 
-def assert_same_fit(a, b):
+def assert_same_fit(a, b, x_rtol=1e-8, moduli_rtol=REFINED):
     ia, ib = (np.lexsort((r.readings["x"], r.readings["temperature"])) for r in (a, b))
-    for key, rtol in (("x_reduced", 1e-8), ("storage_fit", REFINED), ("loss_fit", REFINED)):
+    for key, rtol in (("x_reduced", x_rtol), ("storage_fit", moduli_rtol), ("loss_fit", moduli_rtol)):
         assert np.allclose(b.readings[key][ib], a.readings[key][ia], rtol=rtol, atol=0), key
+
+
+# Where the law is fitted together with the series (joint), the joint residual has
+# neighbouring minima a rounding may choose between: on one machine (its libm) readings moved
+# by 1e-15 gave C2 = 118.573 or 118.715 K, a_T 0.26% apart and the moduli 6.4e-4 apart (the
+# engine before issue 48 alike). The fits then agree to a tenth of their stated accuracy
+# (docs/fitting.md: the law within 0.03 decades, 7% in a_T; E' and E'' within the 1% noise).
+JOINT_X, JOINT_MODULI = 7e-3, 1e-3
 
 
 def test_the_fit_does_not_depend_on_the_inputs_rounding(tmp_path):
     """Readings moved by 1e-15 (what another machine's libm or a unit conversion leaves) give
-    the same fit to REFINED: the refinement converges, it does not stop where rounding leaves it."""
+    the same fit to REFINED where the law is the overlap's: the refinement converges, it does
+    not stop where rounding leaves it; where the law is fitted with the series (joint), to a
+    tenth of the stated accuracy (JOINT_X, JOINT_MODULI)."""
     rows = np.array(write_dma(tmp_path / "all.csv"))
     header = "temperature [C],frequency [Hz],storage [MPa],loss [MPa]\n"
     fits = []
@@ -196,7 +206,10 @@ def test_the_fit_does_not_depend_on_the_inputs_rounding(tmp_path):
         path.write_text(header + "".join(",".join(repr(float(v)) for v in r) + "\n" for r in moved))
         fits.append(punchsweep.fit_material(path, reference_temperature=23, poisson=0.5))
     for b in fits[1:]:
-        assert_same_fit(fits[0], b)
+        if fits[0].shift["joint"] or b.shift["joint"]:
+            assert_same_fit(fits[0], b, x_rtol=JOINT_X, moduli_rtol=JOINT_MODULI)
+        else:
+            assert_same_fit(fits[0], b)
 
 
 @pytest.mark.parametrize("header, rows, message", [

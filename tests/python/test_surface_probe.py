@@ -171,7 +171,7 @@ def test_a_curve_beyond_the_budget_is_refused_before_anything_is_allocated(tmp_p
     run = cli("surface", "--l", 0.75, "--dh", 0.03, "--T", 2.5, "--pbar", 0.01, "--s", 2, "--supercell", 32,
               "--scatter", "normal:0.002")
     assert run.returncode == 2 and "beyond the engine's budget" in run.stderr and "2048 caps" in run.stderr
-    long_cell = write_cell(tmp_path, ["[cell]", "Lx = 1", "Ly = 100000", "site = 0, 0, 0, 0"])
+    long_cell = write_cell(tmp_path, ["[cell]", "Lx = 1", "Ly = 10000", "site = 0, 0, 0, 0"])  # 64 x 640,000 nodes
     run = cli("surface", "--cell", long_cell, "--T", 2.5, "--pbar", 0.01, "--grid", 64)
     assert run.returncode == 2 and "nodes" in run.stderr and "budget" in run.stderr, run.stderr
     # Within the budget, a 16 x 16 supercell of 512 caps on a coarse grid is made at once.
