@@ -24,6 +24,7 @@
 #include <tuple>
 #include <vector>
 
+#include "input/axis_parser.hpp"
 #include "input/command_options.hpp"
 #include "app/design_command.hpp"
 #include "app/surface_command.hpp"
@@ -570,6 +571,22 @@ py::dict fit_command(const input::Keywords& keywords) {
 
 }  // namespace
 
+namespace {
+
+/// A value the parameter `p` admits, where a texture's curve is read without a point
+/// (surface_classify of an empty input): the point command's default, else the first value of
+/// a sweep's (pbar 0.005, T 2).
+std::string nominal_value(const model::Parameter& p) {
+  if (!p.point_default.empty()) return std::string(p.point_default);
+  if (p.sweep_default.empty()) {
+    throw input::UsageError("surface_classify: no points, and " + std::string(p.name) + " has no default to read the "
+                            "texture's curve at; give at least one point");
+  }
+  return input::json_number(input::parse_axis(std::string(p.sweep_default), p.integer).values.front());
+}
+
+}  // namespace
+
 /// `surface_classify`: each level's regime and t* of one texture (the keywords of
 /// `punchsweep surface`, without the load's) at many points of pressure, law parameters and
 /// ramp: one load curve (to full contact, cached), then the classification at each point
@@ -579,18 +596,21 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
   const model::CreepLawSpec& spec = material.spec;
   const model::PointAxes axes(spec.parameters, given.contains(std::string(model::ramp_time_parameter().name)));
   const AxisColumns columns = axis_columns(given, axes, true, "surface_classify");
-  if (columns.n == 0) throw std::invalid_argument("surface_classify: the arrays must have the same size > 0");
   const auto n = static_cast<py::ssize_t>(columns.n);
   const double* pbar = columns.values[axes.find(model::Coordinate::pressure)];
   std::vector<const double*> law_values;
   for (const std::size_t j : axes.law()) law_values.push_back(columns.values[j]);
   // The texture's curve, from a run at the least pressure (its grid, under --grid auto).
+  // No points (an empty input) give empty answers, as classify's; the curve is read all the
+  // same, for the answers' axis of levels and X_star, at a nominal load (nominal_value).
   py::ssize_t least = 0;
   for (py::ssize_t i = 1; i < n; ++i) least = pbar[i] < pbar[least] ? i : least;
   input::Keywords keywords = texture;
-  keywords.emplace_back("pbar", input::json_number(pbar[least]));
+  keywords.emplace_back("pbar", n > 0 ? input::json_number(pbar[least])
+                                      : nominal_value(*model::find_parameter(model::kPressure)));
   for (std::size_t j = 0; j < law_values.size(); ++j) {
-    keywords.emplace_back(std::string(spec.parameters[j].name), input::json_number(law_values[j][least]));
+    keywords.emplace_back(std::string(spec.parameters[j].name),
+                          n > 0 ? input::json_number(law_values[j][least]) : nominal_value(spec.parameters[j]));
   }
   keywords.emplace_back("times", "0");
   const app::SurfaceRun run = app::evaluate_surface(keywords);

@@ -50,20 +50,44 @@ __all__ = ["point", "reference", "design", "surface", "surface_classify", "surfa
 REGIMES: dict[int, str] = {int(k): v for k, v in _core.regime_codes().items()}
 
 
-def _option_text(value: Any) -> str:
+def _option_text(value: Any, name: str = "an option") -> str:
     """A keyword's value as the command line reads it: floats in their shortest exact form
-    (repr), sequences comma-separated, text as given."""
+    (repr), sequences comma-separated, text as given. `name` (the keyword) is named where
+    the value cannot be an option's: a bool (an option that is a switch takes _flag), or a
+    list of lists or an array of more than one dimension (an option's list is 1-D; it was
+    flattened, its shape lost)."""
     if isinstance(value, str):
         return value
     if isinstance(value, (bool, np.bool_)):
-        raise TypeError("a punchsweep option takes a number or text, not a bool")
+        raise TypeError(f"{name} = {value!r}: a punchsweep option takes a number or text, not a bool")
     if isinstance(value, (int, np.integer)):
         return str(int(value))
     if isinstance(value, (float, np.floating)):
         return repr(float(value))
+    if isinstance(value, (complex, np.complexfloating)):
+        raise ValueError(f"{name} = {value!r}: a complex number; valid: real numbers (or text with a unit)")
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return _option_text(value.item(), name)
     if isinstance(value, Iterable):
-        return ",".join(_option_text(v) for v in value)
+        values = list(value)
+        if (isinstance(value, np.ndarray) and value.ndim > 1) or any(
+                isinstance(v, Iterable) and not isinstance(v, (str, bytes)) for v in values):
+            try:
+                shape = f"of shape {np.shape(value)}"
+            except ValueError:  # a ragged nesting
+                shape = "of lists"
+            raise ValueError(f"{name} = {_one_line(value)}: an array {shape}; valid: one value or a 1-D list "
+                             f"of values")
+        return ",".join(_option_text(v, name) for v in values)
     return str(value)
+
+
+def _flag(value: Any, name: str) -> bool:
+    """A switch keyword's value: True or False (numpy's bools too), else TypeError naming it
+    (a string such as 'false' or 'no' is truthy, and would turn the switch on)."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise TypeError(f"{name} = {value!r}: valid: True or False (a bool)")
 
 
 def _keywords(options: dict[str, Any]) -> list[tuple[str, str]]:
@@ -71,7 +95,7 @@ def _keywords(options: dict[str, Any]) -> list[tuple[str, str]]:
     (load_table is the option load-table), values as _option_text; None is left out (the
     command's default). The engine stores each as its option, through the same declarations
     and checks as the command line; no command line is built."""
-    return [(name.replace("_", "-"), _option_text(value)) for name, value in options.items() if value is not None]
+    return [(name.replace("_", "-"), _option_text(value, name)) for name, value in options.items() if value is not None]
 
 
 def _result(cls, raw: dict, consumed=lambda key: False):
@@ -177,7 +201,7 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     parameters go in **options. ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)  # a path or a Material
     if isinstance(options.get("tolerance"), Mapping):  # {"dh": "0.05um", "pressure": "5%"}
-        options["tolerance"] = ", ".join(f"{k}={_option_text(v)}" for k, v in options["tolerance"].items())
+        options["tolerance"] = ", ".join(f"{k}={_option_text(v, f'tolerance[{k!r}]')}" for k, v in options["tolerance"].items())
     keywords = _keywords(dict(l=l, dh=dh, T=T, pbar=pbar, s=s, C=C, times=times, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp,
                               load_table=load_table, localization=localization, **options))
@@ -221,7 +245,7 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
     message for bad input."""
     material = None if material is None else os.fspath(material)
     if isinstance(tolerance, Mapping):
-        tolerance = ", ".join(f"{k}={_option_text(v)}" for k, v in tolerance.items())
+        tolerance = ", ".join(f"{k}={_option_text(v, f'tolerance[{k!r}]')}" for k, v in tolerance.items())
     requirements = [require] if isinstance(require, str) else list(require)
     keywords = [("require", text) for text in requirements] + _keywords(
         dict(material=material, R=R, l=l, s=s, C=C, temperature=temperature, tolerance=tolerance, **options))
@@ -253,7 +277,7 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
                               grid=grid, cell=None if cell is None else os.fspath(cell),
                               height_map=None if height_map is None else os.fspath(height_map), pixel=pixel,
                               supercell=supercell,
-                              scatter=scatter, seed=seed, check="true" if check else None, material=material,
+                              scatter=scatter, seed=seed, check="true" if _flag(check, "check") else None, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp, load_table=load_table,
                               **options))
     out = json.loads(_core.surface(keywords))
@@ -276,17 +300,25 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
     table cache); every point is then read off it (about 1e7 points a second): a material x
     temperature x pressure sweep at the cost of one curve. Returns a dict: t_star and regime
     (the map's codes, REGIMES) shaped as the broadcast inputs plus a last axis of levels,
-    X_star and resolved per level, time_unit, grid and caps. ValueError with the command
-    line's message for bad input."""
+    X_star and resolved per level, time_unit, grid and caps. Empty inputs give empty arrays of
+    their shape (the curve is read all the same, for the levels, at a nominal load).
+    ValueError with the command line's message for bad input, and naming the argument for a
+    complex number, a bool or a list that mixes values with and without a unit."""
     if pressure is not None:
         if pbar is not None:
             raise ValueError("surface_classify: pbar and pressure both given; valid: one of them")
         pbar = pressure
     if pbar is None:
         raise ValueError("surface_classify: pbar (or pressure) is required")
-    pbar = _in_scale(pbar, "pbar", material, R)
+    # As classify's: every array checked (a complex one lost its imaginary part to a numpy
+    # warning, a bool was taken as 1), a list that mixes values with and without a unit refused.
+    load = "pressure" if pressure is not None else "pbar"
+    for value, name in ((pbar, load), (T, "T"), (temperature, "temperature"), (ramp_time, "ramp_time")):
+        if value is not None:
+            _real(value, f"surface_classify: {name}")
+    pbar = _in_scale(pbar, "pbar", material, R, f"surface_classify: {load}")
     if ramp_time is not None:
-        ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
+        ramp_time = _in_scale(ramp_time, "ramp_time", material, R, "surface_classify: ramp_time")
     law = _law_arrays("surface_classify", T, temperature, material)
     shape, columns = _point_columns(dict(pbar=pbar, **law, ramp_time=ramp_time))
     keywords = _keywords(dict(material=None if material is None else os.fspath(material), R=R, **{
@@ -325,7 +357,7 @@ def surface_map(*, pbar=None, pressure=None, T=None, temperature=None, material:
     axes = [{"pressure": "pbar", "ramp": "ramp_time"}.get(k, k) for k in axes]
     keywords = _keywords(dict(texture, pbar=pbar, pressure=pressure, T=T, temperature=temperature,
                               material=None if material is None else os.fspath(material), R=R,
-                              overwrite="true" if overwrite else None))
+                              overwrite="true" if _flag(overwrite, "overwrite") else None))
     with tempfile.TemporaryDirectory() as folder:
         path = os.fspath(output) if output is not None else os.path.join(folder, "surface_map.nc")
         _core.surface_map(keywords + [("output", path)])
@@ -344,8 +376,10 @@ class FitResult:
     report: what `punchsweep fit` prints; kind: "dma" or "relaxation"; readings: arrays per
     reading (temperature (its isotherm's), x (rad/s or s, as measured), x_reduced (omega a_T
     or t / a_T), storage/loss or modulus, their *_fit, used (within the time window));
-    shift: temperatures, measured_log10_aT, law_log10_aT, and the law (law, T_ref, C1, C2,
-    E_a, rms_log10); prony: E_inf, E_i, tau_i, rms_relative, bic, candidates, chosen;
+    shift: temperatures, measured_log10_aT (on the law's zero), law_log10_aT, and the law
+    (law, T_ref, C1, C2, E_a, rms_log10); prony: E_inf, E_i, tau_i, rms_relative, bic,
+    candidates, chosen, fitted (the readings the series was fitted to: every one, or over 300
+    the bins of them);
     problems: the fit's verdict, each check it fails with its numbers (empty for a good fit;
     a poor fit is returned only with accept_poor_fit=True, else ValueError names them)."""
     material: "Material | None"
@@ -369,9 +403,9 @@ def fit_material(dma=None, *, relaxation=None, reference_temperature=None, poiss
     def files(v):
         return [] if v is None else [os.fspath(v)] if isinstance(v, (str, os.PathLike)) else [os.fspath(p) for p in v]
     keywords = [("dma", f) for f in files(dma)] + [("relaxation", f) for f in files(relaxation)]
-    if options.pop("accept_poor_fit", False):
+    if _flag(options.pop("accept_poor_fit", False), "accept_poor_fit"):
         keywords.append(("accept-poor-fit", "true"))
-    keywords += [("refine", "yes" if options.pop("refine", True) else "no")] + _keywords(dict(reference_temperature=reference_temperature, poisson=poisson,
+    keywords += [("refine", "yes" if _flag(options.pop("refine", True), "refine") else "no")] + _keywords(dict(reference_temperature=reference_temperature, poisson=poisson,
                                        output=None if output is None else os.fspath(output), **options))
     raw = _core.fit(keywords)
     details = json.loads(raw["details"])
@@ -474,7 +508,7 @@ class Material:
             raise ValueError(f"t = {t!r} is not a time; valid: numbers >= 0 in {self.time_unit}, or text with a "
                              f"time unit ('1s', '2min', '1h')") from None
         flat = np.ascontiguousarray(times).reshape(-1)
-        T = float("nan") if temperature is None else float(temperature)
+        T = float("nan") if temperature is None else float(_real(temperature, "temperature"))
         return self._file.evaluate(flat, T, relaxation).reshape(times.shape)
 
     def J(self, t, temperature=None) -> np.ndarray:
@@ -492,7 +526,7 @@ class Material:
         """The shift factor a_T at `temperature` (degC; numbers or an array): times at the
         temperature are times at the reference one times a_T. ValueError outside the
         shift's range, or for a file without a shift."""
-        T = np.asarray(temperature, dtype=float)
+        T = np.asarray(_real(temperature, "temperature"), dtype=float)
         values = np.array([10.0 ** self._file.log10_shift(float(x)) for x in T.reshape(-1)]).reshape(T.shape)
         return float(values) if values.shape == () else values
 
@@ -514,14 +548,48 @@ def _real(values, name: str):
     return values
 
 
-def _in_scale(values, name: str, material, R):
+def _one_line(value) -> str:
+    """A value as a message shows it: its repr on one line (an array's rows joined)."""
+    return " ".join(repr(value).split())
+
+
+def _refuse_mixed_units(flat, values, who: str) -> None:
+    """ValueError naming `who` where the values `flat` (of the argument `values`) mix numbers
+    with a unit and bare ones: the engine's rule for a list (docs/cli.md, "Units"): every
+    value with a unit, or every one bare (in the scale); 0 is 0 in every unit. A bare number
+    beside '2kPa' would be read in E0*, a scale a thousand times or more from the value meant."""
+    def text(v):
+        return v.decode(errors="replace") if isinstance(v, bytes) else v
+
+    def bare_nonzero(v) -> bool:
+        v = text(v)
+        if isinstance(v, str):
+            if _core.has_unit(v):
+                return False
+            try:
+                return float(v) != 0.0
+            except ValueError:
+                return False  # not a number: the engine's reading names it
+        return v != 0
+
+    if any(isinstance(text(v), str) and _core.has_unit(text(v)) for v in flat) and any(map(bare_nonzero, flat)):
+        raise ValueError(f"{who} = {_one_line(values)}: it mixes values with and without a unit (a bare number is "
+                         f"in the model's scale, one with a unit physical: docs/cli.md, Units); valid: every value "
+                         f"with a unit, or every value a bare number")
+
+
+def _in_scale(values, name: str, material, R, who: str = ""):
     """values (numbers, or text with units: '150um', ['1kPa', '2kPa']) in the scale of
-    parameter `name`, by the engine's rule (docs/cli.md, "Units")."""
+    parameter `name`, by the engine's rule (docs/cli.md, "Units"); ValueError naming `who`
+    (the argument as the caller calls it; `name` where not given) for a list that mixes
+    values with and without a unit."""
     if isinstance(values, np.ndarray) and values.dtype.kind in "biuf":
         return values  # numbers: already in the scale (no per-element look)
     array = np.asarray(values, dtype=object)
-    if not any(isinstance(v, (str, bytes)) for v in array.reshape(-1)):
+    flat = array.reshape(-1)
+    if not any(isinstance(v, (str, bytes)) for v in flat):
         return values
+    _refuse_mixed_units(flat, values, who or name)
     path = "" if material is None else os.fspath(material)
     R = "" if R is None else str(R)
     return np.vectorize(lambda v: _core.scaled(str(v), name, path, R), otypes=[float])(array)
@@ -574,6 +642,7 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     if pressure is not None:
         if pbar is not None:
             raise ValueError("classify: pbar and pressure both given; valid: one of them")
+        _refuse_mixed_units(np.asarray(pressure, dtype=object).reshape(-1), pressure, "classify: pressure")
         if not all(isinstance(v, str) and _core.has_unit(v)
                    for v in np.asarray(pressure, dtype=object).reshape(-1)):
             raise ValueError(f"pressure = {pressure!r}: no unit; valid: text with a pressure unit ('2kPa', "
@@ -583,12 +652,15 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
         raise ValueError("classify: pbar (or pressure) and s are required")
     for value, name in ((l, "l"), (dh, "dh"), (pbar, "pbar"), (s, "s"), (T if material is None else 0.0, "T")):
         _real(value, f"classify: {name}")
-    if np.ndim(C) != 0 or isinstance(C, (bool, np.bool_, complex, str)):
+    for value, name in ((temperature, "temperature"), (ramp_time, "ramp_time")):
+        if value is not None:
+            _real(value, f"classify: {name}")
+    if np.ndim(C) != 0 or isinstance(C, (bool, np.bool_, complex, np.complexfloating, str)):
         raise ValueError(f"classify: C = {C!r}; valid: one number > 0, the shape constant of every point "
                          f"(points of several C: one call each)")
-    l, dh, pbar = (_in_scale(v, n, material, R) for v, n in ((l, "l"), (dh, "dh"), (pbar, "pbar")))
+    l, dh, pbar = (_in_scale(v, n, material, R, f"classify: {n}") for v, n in ((l, "l"), (dh, "dh"), (pbar, "pbar")))
     if ramp_time is not None:
-        ramp_time = _in_scale(ramp_time, "ramp_time", material, R)
+        ramp_time = _in_scale(ramp_time, "ramp_time", material, R, "classify: ramp_time")
     law = _law_arrays("classify", T, temperature, material)
     shape, columns = _point_columns(dict(l=l, dh=dh, pbar=pbar, s=s, **law, ramp_time=ramp_time))
     raw = _core.classify(columns, float(C), _core.default_localization if localization is None else str(localization),
