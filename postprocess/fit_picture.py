@@ -7,8 +7,8 @@ file (or `punchsweep.fit_material(..., output=...)`), and draws three panels:
   master curve  E' and E'' (or E(t)) of every reading at its reduced frequency omega a_T
                 (reduced time t / a_T), coloured by its isotherm's temperature; the fitted
                 Prony series as lines; readings outside the fit's time window hollow grey;
-  shifts        log10 a_T measured from the isotherms' overlap (points) and the shift law
-                (line), against temperature;
+  shifts        log10 a_T measured from the isotherms' overlap (points, on the law's zero as
+                `punchsweep fit` writes them) and the shift law (line), against temperature;
   residuals     fit / reading - 1 in percent, against the reduced abscissa.
 
 The title names the material, the reference temperature, the number of terms and the RMS
@@ -101,7 +101,7 @@ def render(d: dict):
     shift = d["shift"]
     measured = np.asarray(shift["measured_log10_aT"], dtype=float)
     if np.isfinite(measured).any():
-        ax_shift.plot(temps, measured, "o", color="k", ms=4, label="measured (overlap)")
+        ax_shift.plot(temps, measured, "o", color="k", ms=4, label="measured (overlap, on the law's zero)")
     if shift.get("law"):
         tt = np.linspace(temps.min(), temps.max(), 200)
         if shift["law"] == "wlf":

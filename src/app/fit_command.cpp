@@ -3,12 +3,15 @@
 #include <boost/program_options.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <filesystem>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
+#include "app/version.hpp"
 #include "input/material_file.hpp"
 #include "input/value_parsing.hpp"
 #include "input/measurement_file.hpp"
@@ -117,6 +120,35 @@ std::string name_problem(const std::string& name) {
     return "holds a line break, a control character, # or ; (# and ; start a comment in a material file)";
   }
   return {};
+}
+
+/// `word` as one word of a POSIX shell: as it is where it holds only characters no shell
+/// reads specially, else in single quotes.
+std::string shell_word(const std::string& word) {
+  const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("/._-+=:,@%").find(c) != std::string_view::npos;
+  });
+  if (plain) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+/// The command that draws the fit's picture, runnable from any folder: the script by its
+/// absolute path in the source tree this binary was built from (app::kSourceDir), and the
+/// details by theirs. Where that tree is gone (an installed binary), the script's path in
+/// punchsweep's source tree, said as such.
+std::string picture_command(const std::string& details) {
+  std::error_code ec;
+  std::filesystem::path file = std::filesystem::absolute(details, ec);
+  if (ec) file = details;
+  const std::filesystem::path script = std::filesystem::path(kSourceDir) / "postprocess" / "fit_picture.py";
+  if (std::filesystem::is_regular_file(script, ec)) {
+    return "/usr/bin/python3 " + shell_word(script.lexically_normal().string()) + " " +
+           shell_word(file.lexically_normal().string()) + " -o fit.png";
+  }
+  return "/usr/bin/python3 postprocess/fit_picture.py " + shell_word(file.lexically_normal().string()) +
+         " -o fit.png   (postprocess/ of punchsweep's source tree)";
 }
 
 /// How a law fitted with the series came about, for the material file and the report.
@@ -233,6 +265,7 @@ std::string details_json(const FitRun& run) {
   s << "}, \"window\": [" << input::json_number(run.window_lo) << ", " << input::json_number(run.window_hi)
     << "], \"frozen\": " << f.frozen << ", \"dropped\": " << f.dropped;
   s << ", \"bic\": " << input::json_number(f.prony.bic) << ", \"residuals\": " << f.prony.residuals
+    << ", \"fitted\": " << f.fitted
     << ",\n    \"candidates\": [";
   for (std::size_t i = 0; i < f.prony.candidates.size(); ++i) {
     const fit::PronyCandidate& c = f.prony.candidates[i];
@@ -259,6 +292,10 @@ std::string report(const FitRun& run) {
     } else {
       s << " (given)";
     }
+    if (!std::isnan(f.master.measured_log10_aT.front())) {
+      s << "\n  (the measured shifts are relative to each other: shown on the law's zero, log10 a_T = 0 at "
+        << model::number_text(f.master.law->T_ref, 6) << " degC, by the constant that best matches the law)";
+    }
     s << "\n  T [degC]   log10 a_T measured   log10 a_T law\n";
     for (std::size_t i = 0; i < f.master.temperatures.size(); ++i) {
       char line[128];
@@ -266,6 +303,12 @@ std::string report(const FitRun& run) {
                     f.master.law_log10_aT[i]);
       s << line;
     }
+  }
+  if (f.fitted < f.readings.size()) {
+    s << "the " << f.readings.size() << " readings were binned to " << f.fitted
+      << " for the fit (per isotherm, bins of equal width in log10 " << (dma ? "frequency" : "time")
+      << ", each at its readings' geometric means and weighted by their number: the fit's time grows with the "
+         "readings it is fitted to); the errors below are over every reading\n";
   }
   s << "Prony series: densities tried (terms per decade: grid terms, terms kept, BIC)\n";
   for (std::size_t i = 0; i < f.prony.candidates.size(); ++i) {
@@ -292,7 +335,7 @@ std::string report(const FitRun& run) {
   }
   if (!run.output.empty()) {
     s << "wrote " << run.output << " and " << run.details << "\n"
-      << "picture: /usr/bin/python3 postprocess/fit_picture.py " << run.details << " -o fit.png\n";
+      << "picture: " << picture_command(run.details) << "\n";
   }
   return s.str();
 }

@@ -40,8 +40,9 @@ struct ShiftRequest {
 inline constexpr double kWlfC2Max = 1e4;
 
 /// The master curve's shifts: per isotherm (in temperature order) the shift measured from
-/// the overlaps (relative to T_ref, after the law's fit fixes the zero), the law's value,
-/// and the law itself.
+/// the overlaps (relative to each other; on the law's zero, log10 a_T(T_ref) = 0, by the
+/// constant that best matches the law: its fitted zero, or with `joint` the mean offset
+/// from the law fitted with the series), the law's value, and the law itself.
 struct MasterCurve {
   std::vector<double> temperatures;       ///< degC, increasing
   std::vector<double> measured_log10_aT;  ///< NaN where the law was given (nothing measured)

@@ -71,6 +71,10 @@ struct MaterialFit {
   PronyFit prony;
   std::vector<ReducedReading> readings;
   std::size_t used = 0;  ///< readings within the window
+  /// The readings the series (and a law fitted with it) were fitted to: every one, or where
+  /// there are more than 300 (a long export) as many bins of them, per isotherm in log10 of
+  /// the abscissa, each weighted by the readings it holds (fit_material).
+  std::size_t fitted = 0;
   /// The terms moved by the window: slower ones joined to E_inf, faster ones dropped.
   int frozen = 0, dropped = 0;
   /// RMS relative errors of the fit before the window, over every reading (prony's are

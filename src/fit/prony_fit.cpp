@@ -42,11 +42,13 @@ namespace {
 
 enum class Quantity { storage, loss, relaxation };
 
-/// One reading: what it measures, where, and its value.
+/// One reading: what it measures, where, its value, and the square root of its weight (the
+/// factor on its residual).
 struct Reading {
   Quantity what;
   double x;
   double value;
+  double root_weight = 1.0;
 };
 
 /// The least-squares problem over given relaxation times: rows are the readings' relative
@@ -78,7 +80,7 @@ class Problem {
     Eigen::VectorXd b = Eigen::VectorXd::Zero(n + penalties);
     for (Eigen::Index r = 0; r < n; ++r) {
       const Reading& d = readings_[static_cast<std::size_t>(r)];
-      const double w = scale_ / d.value;
+      const double w = scale_ / d.value * d.root_weight;
       A(r, 0) = d.what == Quantity::loss ? 0.0 : w;
       for (Eigen::Index i = 0; i < m; ++i) {
         const double t = tau[static_cast<std::size_t>(i)];
@@ -87,7 +89,7 @@ class Problem {
                            : d.what == Quantity::loss  ? wt / (1.0 + wt * wt)
                                                        : std::exp(-d.x / t));
       }
-      b(r) = 1.0;
+      b(r) = d.root_weight;
     }
     const double s = std::sqrt(smoothing_);
     for (Eigen::Index k = 0; k < penalties; ++k) {
@@ -257,25 +259,42 @@ void check_sizes(std::size_t a, std::size_t b, const char* what) {
   if (a != b) throw std::invalid_argument(std::string("the readings' ") + what + " differ in length");
 }
 
+/// The square roots of `weights` (each 1 where empty), checked: as many as the readings,
+/// each finite and > 0.
+std::vector<double> root_weights(std::span<const double> weights, std::size_t n) {
+  if (weights.empty()) return std::vector<double>(n, 1.0);
+  check_sizes(n, weights.size(), "abscissae and weights");
+  std::vector<double> roots;
+  for (const double w : weights) {
+    if (!(std::isfinite(w) && w > 0.0)) throw std::invalid_argument("a reading's weight is not finite and > 0");
+    roots.push_back(std::sqrt(w));
+  }
+  return roots;
+}
+
 }  // namespace
 
 PronyFit fit_prony_frequency(std::span<const double> omega, std::span<const double> storage,
-                             std::span<const double> loss, const PronyOptions& options) {
+                             std::span<const double> loss, const PronyOptions& options,
+                             std::span<const double> weights) {
   check_sizes(omega.size(), storage.size(), "frequencies and storage moduli");
   check_sizes(omega.size(), loss.size(), "frequencies and loss moduli");
+  const std::vector<double> roots = root_weights(weights, omega.size());
   std::vector<Reading> readings;
   for (std::size_t i = 0; i < omega.size(); ++i) {
-    readings.push_back({Quantity::storage, omega[i], storage[i]});
-    readings.push_back({Quantity::loss, omega[i], loss[i]});
+    readings.push_back({Quantity::storage, omega[i], storage[i], roots[i]});
+    readings.push_back({Quantity::loss, omega[i], loss[i], roots[i]});
   }
   const auto [lo, hi] = std::minmax_element(omega.begin(), omega.end());
   return fit(std::move(readings), omega.empty() ? 1.0 : 1.0 / *hi, omega.empty() ? 0.0 : 1.0 / *lo, options, true);
 }
 
-PronyFit fit_prony_relaxation(std::span<const double> t, std::span<const double> modulus, const PronyOptions& options) {
+PronyFit fit_prony_relaxation(std::span<const double> t, std::span<const double> modulus, const PronyOptions& options,
+                              std::span<const double> weights) {
   check_sizes(t.size(), modulus.size(), "times and moduli");
+  const std::vector<double> roots = root_weights(weights, t.size());
   std::vector<Reading> readings;
-  for (std::size_t i = 0; i < t.size(); ++i) readings.push_back({Quantity::relaxation, t[i], modulus[i]});
+  for (std::size_t i = 0; i < t.size(); ++i) readings.push_back({Quantity::relaxation, t[i], modulus[i], roots[i]});
   const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
   return fit(std::move(readings), t.empty() ? 1.0 : *lo, t.empty() ? 0.0 : *hi, options, false);
 }

@@ -52,18 +52,22 @@ struct PronyFit {
   double rss = 0.0;           ///< after refinement
   double bic = 0.0;           ///< after refinement
   /// RMS relative error of each fitted quantity: E' and E'' (frequency data), or E(t) in
-  /// `first` (relaxation data; `second` 0).
+  /// `first` (relaxation data; `second` 0), over the readings fitted (unweighted).
   double rms_first = 0.0, rms_second = 0.0;
   int residuals = 0;
 };
 
-/// Fits E' and E'' at reduced angular frequencies omega (rad/s; Pa). Throws
-/// std::invalid_argument when the data are too few (fewer than 4 readings) or not positive.
-/// E_inf may come out 0 where the data do not reach a rubbery plateau.
+/// Fits E' and E'' at reduced angular frequencies omega (rad/s; Pa). `weights` (empty: each
+/// 1) weigh each reading's squared residuals: a reading that stands for several (a bin of a
+/// long export, fit::fit_material) counts as many times. Throws std::invalid_argument when
+/// the data are too few (fewer than 4 readings) or not positive. E_inf may come out 0 where
+/// the data do not reach a rubbery plateau.
 PronyFit fit_prony_frequency(std::span<const double> omega, std::span<const double> storage,
-                             std::span<const double> loss, const PronyOptions& options);
+                             std::span<const double> loss, const PronyOptions& options,
+                             std::span<const double> weights = {});
 
 /// Fits E(t) at reduced times t (s; Pa), as fit_prony_frequency.
-PronyFit fit_prony_relaxation(std::span<const double> t, std::span<const double> modulus, const PronyOptions& options);
+PronyFit fit_prony_relaxation(std::span<const double> t, std::span<const double> modulus, const PronyOptions& options,
+                              std::span<const double> weights = {});
 
 }  // namespace punchsweep::fit

@@ -26,19 +26,20 @@ enum class Column { temperature, frequency, storage, loss, tan_delta, time, modu
 
 struct ColumnSpec {
   Column column;
-  std::vector<std::string_view> names;
+  std::vector<std::string_view> names;  ///< normalized (normalized())
   std::string_view units;  ///< for messages
+  std::string_view label;  ///< the column in messages, as docs/fitting.md names it
 };
 
 const std::array<ColumnSpec, 7>& column_specs() {
   static const std::array<ColumnSpec, 7> specs{{
-      {Column::temperature, {"temperature", "temp", "temp."}, "C, degC or K"},
-      {Column::frequency, {"frequency", "freq", "angularfrequency", "freq."}, "Hz or rad/s"},
-      {Column::storage, {"storage", "storagemodulus", "e'"}, "Pa, kPa, MPa or GPa"},
-      {Column::loss, {"loss", "lossmodulus", "e''"}, "Pa, kPa, MPa or GPa"},
-      {Column::tan_delta, {"tandelta", "tan(delta)", "tand", "tan\xce\xb4", "tan(\xce\xb4)", "lossfactor"}, "- or 1"},
-      {Column::time, {"time"}, "s, ms, min or h"},
-      {Column::modulus, {"modulus", "relaxationmodulus", "e(t)"}, "Pa, kPa, MPa or GPa"},
+      {Column::temperature, {"temperature", "temp", "temp."}, "C, degC or K", "temperature"},
+      {Column::frequency, {"frequency", "freq", "angularfrequency", "freq."}, "Hz or rad/s", "frequency"},
+      {Column::storage, {"storage", "storagemodulus", "e'"}, "Pa, kPa, MPa or GPa", "storage"},
+      {Column::loss, {"loss", "lossmodulus", "e''"}, "Pa, kPa, MPa or GPa", "loss"},
+      {Column::tan_delta, {"tandelta", "tan(delta)", "tand", "tan\xce\xb4", "tan(\xce\xb4)", "lossfactor"}, "- or 1", "tan_delta"},
+      {Column::time, {"time"}, "s, ms, min or h", "time"},
+      {Column::modulus, {"modulus", "relaxationmodulus", "e(t)"}, "Pa, kPa, MPa or GPa", "modulus"},
   }};
   return specs;
 }
@@ -46,10 +47,23 @@ const std::array<ColumnSpec, 7>& column_specs() {
 /// How far loss / storage and a tan_delta column of the same reading may differ.
 constexpr double kTanDeltaAgreement = 0.02;
 
+/// A header cell as its names are matched: without blanks, '_' and '-', in lower case, the
+/// Greek capitals (UTF-8 U+0391..U+03A9) too, so that "TAN \xce\x94" (capital delta, as
+/// some instruments write tan delta in upper case) is "tan\xce\xb4".
 std::string normalized(std::string_view s) {
   std::string out;
-  for (const char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
     if (c == ' ' || c == '_' || c == '-' || c == '\t') continue;
+    const auto next = i + 1 < s.size() ? static_cast<unsigned char>(s[i + 1]) : 0u;
+    if (static_cast<unsigned char>(c) == 0xce && next >= 0x91 && next <= 0xa9 && next != 0xa2) {
+      // U+0391..U+039F (0xce 0x91..0x9f) lower to U+03B1..U+03BF (0xce 0xb1..0xbf),
+      // U+03A0..U+03A9 (0xce 0xa0..0xa9) to U+03C0..U+03C9 (0xcf 0x80..0x89); U+03A2 is unassigned.
+      out += next <= 0x9f ? "\xce" : "\xcf";
+      out += static_cast<char>(next <= 0x9f ? next + 0x20 : next - 0x20);
+      ++i;
+      continue;
+    }
     out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
   return out;
@@ -119,6 +133,24 @@ HeaderCell header_cell(const std::string& cell) {
   out.unit = trim_cell(cell.substr(open + 1, close - open - 1));
   out.has_unit = true;
   return out;
+}
+
+/// What a header holds and what it might: each of its columns as written with the column it
+/// was taken for ("not used": a column the fit ignores, or a name it does not know), and the
+/// names each column the fit uses goes by. For the refusals of a header that lacks a column,
+/// so that a name the reader does not know is seen.
+std::string header_words(const std::vector<std::string>& cells) {
+  std::string seen, taken;
+  for (const std::string& cell : cells) {
+    const ColumnSpec* spec = header_cell(cell).spec;
+    seen += (seen.empty() ? "\"" : ", \"") + cell + "\" (" + (spec ? std::string(spec->label) : "not used") + ")";
+  }
+  for (const ColumnSpec& spec : column_specs()) {
+    taken += (taken.empty() ? "" : "; ") + std::string(spec.label) + " =";
+    for (std::size_t k = 0; k < spec.names.size(); ++k) taken += (k ? ", " : " ") + std::string(spec.names[k]);
+  }
+  return "the header's columns: " + seen + "; the names taken (any case; blanks, _ and - ignored; the unit after "
+         "the name in [] or ()): " + taken;
 }
 
 /// Whether a line is the header: it names the readings' abscissa, frequency or time. Lines
@@ -201,7 +233,7 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
     const HeaderCell cell = header_cell(names[c]);
     if (cell.spec == nullptr) continue;  // a column the fit does not use (e.g. strain amplitude)
     if (std::any_of(found.begin(), found.end(), [&](const Found& f) { return f.cell.spec == cell.spec; })) {
-      fail(origin, header_no, "two columns are '" + std::string(cell.spec->names[0]) + "'");
+      fail(origin, header_no, "two columns are '" + std::string(cell.spec->label) + "'");
     }
     found.push_back({c, cell, header_no});
   }
@@ -243,14 +275,18 @@ void read_measurements(std::string_view raw, const std::string& origin, double t
   if (dma == relaxation) {
     fail(origin, header_no, "the header names " + std::string(dma ? "both frequency and time" : "neither frequency nor time") +
                                 ": a DMA file has 'frequency [Hz]', 'storage [MPa]' and 'loss [MPa]' (or "
-                                "'tan_delta'), a relaxation test 'time [s]' and 'modulus [MPa]'");
+                                "'tan_delta'), a relaxation test 'time [s]' and 'modulus [MPa]'; " + header_words(names));
   }
   if (dma && (!columns.count(Column::storage) || !(columns.count(Column::loss) || columns.count(Column::tan_delta)))) {
-    fail(origin, header_no, "a DMA file needs 'storage [unit]' and 'loss [unit]' (or 'tan_delta') columns");
+    fail(origin, header_no, "a DMA file needs 'storage [unit]' and 'loss [unit]' (or 'tan_delta') columns; " +
+                                header_words(names));
   }
-  if (relaxation && !columns.count(Column::modulus)) fail(origin, header_no, "a relaxation test needs a 'modulus [unit]' column");
+  if (relaxation && !columns.count(Column::modulus)) {
+    fail(origin, header_no, "a relaxation test needs a 'modulus [unit]' column; " + header_words(names));
+  }
   if (!columns.count(Column::temperature) && std::isnan(temperature)) {
-    fail(origin, header_no, "no 'temperature [C]' column: give the file's temperature as " + origin + "@23C");
+    fail(origin, header_no, "no 'temperature [C]' column: give the file's temperature as " + origin + "@23C; " +
+                                header_words(names));
   }
   if (columns.count(Column::temperature) && !std::isnan(temperature)) {
     fail(origin, header_no, "the file has a 'temperature' column and a temperature was given after '@': give one "
