@@ -660,6 +660,7 @@ void evaluate(SurfaceRun& run, bool progress) {
     check.times = run.times;
     check.steps = scaled.steps;
     check.t_star_resolution = scaled.t_star_resolution;
+    run.check_t_star_resolution = check.t_star_resolution;
     if (!cell) {
       sweep::use_reproducible_fft_plans();
       cell = boundary_element_cell(run, load, false);

@@ -76,7 +76,8 @@ void write_check(std::ostream& out, const SurfaceRun& run) {
   const reference::CellReference& r = *run.stepped;
   const int L = run.curve.levels();
   out << "  \"check\": {\n    \"seconds\": " << num(run.check_seconds) << ", \"steps\": " << r.steps << ", \"converged\": "
-      << (r.converged ? "true" : "false") << ",\n    \"levels\": [";
+      << (r.converged ? "true" : "false") << ", \"t_star_resolution\": " << num(run.check_t_star_resolution)
+      << ",\n    \"levels\": [";
   for (int level = 0; level < L; ++level) {
     const std::size_t at = static_cast<std::size_t>(level);
     out << (level ? ", " : "") << "{\"regime\": " << input::json_string(std::string(model::regime_name(r.level_regime[at])))
@@ -258,7 +259,8 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
       out << (csv ? "# " : "  ") << "check: level " << level << " by time stepping: "
           << model::regime_name(run.stepped->level_regime[at]);
       if (std::isfinite(run.stepped->level_t_star[at]) && run.stepped->level_t_star[at] > 0.0) {
-        out << " at t* = " << run.stepped->level_t_star[at] << " " << run.inputs.time_unit;
+        out << " at t* = " << run.stepped->level_t_star[at] << " +- " << 0.5 * run.check_t_star_resolution << " "
+            << run.inputs.time_unit;
       }
       out << "\n";
     }

@@ -56,6 +56,9 @@ struct SurfaceRun {
   std::vector<std::optional<model::TStarRange>> ranges;
   std::optional<reference::CellReference> stepped;
   double check_seconds = 0.0;
+  /// The stepping's touch times are the middles of intervals this wide (their uncertainty
+  /// is half of it): reference::CellReferenceOptions::t_star_resolution, scaled to the law.
+  double check_t_star_resolution = 0.0;
 };
 
 }  // namespace punchsweep::app
