@@ -3,6 +3,7 @@
 #include <boost/program_options.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -354,20 +355,35 @@ std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid&
 /// it bounds the taken grid's error where t* converges at first order or faster); a level
 /// still moving at kAutoMax is marked unresolved, with a note.
 template <class CurveOn>
-model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad& load, const CurveOn& curve_on, bool progress) {
+model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad& load, const CurveOn& curve_on, bool progress,
+                                 const MoreLoadPoints& also_held) {
   int n = auto_grid(run, load);
   model::LoadCurve coarse = curve_on(n / 2);
   model::LoadCurve fine = curve_on(n);
   const std::size_t L = static_cast<std::size_t>(fine.levels());
   std::vector<double> change(L, 0.0);
+  // Each level's touch at the run's load and at every other load point asked.
+  const auto touches = [&](const model::LoadCurve& curve) {
+    std::vector<std::vector<model::LevelTouch>> rows{model::level_touches(curve, load)};
+    if (also_held) {
+      std::vector<std::vector<model::LevelTouch>> more = also_held(run, curve);
+      rows.insert(rows.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+    }
+    return rows;
+  };
   for (;;) {
-    const std::vector<model::LevelTouch> a = model::level_touches(coarse, load), b = model::level_touches(fine, load);
+    const std::vector<std::vector<model::LevelTouch>> a = touches(coarse), b = touches(fine);
     double worst = 0.0;
-    for (std::size_t level = 0; level < L; ++level) {
-      change[level] = a[level].regime != b[level].regime ? std::numeric_limits<double>::infinity()
-                      : b[level].regime == model::Regime::delayed ? std::abs(b[level].t_star - a[level].t_star) / b[level].t_star
-                                                                  : 0.0;
-      worst = std::max(worst, change[level]);
+    std::fill(change.begin(), change.end(), 0.0);
+    for (std::size_t row = 0; row < a.size(); ++row) {
+      for (std::size_t level = 0; level < L; ++level) {
+        const model::LevelTouch &x = a[row][level], &y = b[row][level];
+        const double moved = x.regime != y.regime                ? std::numeric_limits<double>::infinity()
+                             : y.regime == model::Regime::delayed ? std::abs(y.t_star - x.t_star) / y.t_star
+                                                                   : 0.0;
+        change[level] = std::max(change[level], moved);
+        worst = std::max(worst, moved);
+      }
     }
     if (worst <= kAutoTStarAccuracy || 2 * n > kAutoMax) break;
     if (const std::string problem = budget_problem(run, curve_grid(run, 2 * n)); !problem.empty()) {
@@ -539,7 +555,7 @@ void hold_to_check(SurfaceRun& run, double t_resolution) {
 }
 
 /// The curve as far as the times reach, and the history on it.
-void evaluate(SurfaceRun& run, bool progress) {
+void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = {}) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   const auto start = std::chrono::steady_clock::now();
   std::optional<model::LoadCurve> tabulated;
@@ -601,7 +617,7 @@ void evaluate(SurfaceRun& run, bool progress) {
     if (run.grid_nodes != 0 || run.measured) {
       run.curve = curve_on(run.grid_nodes);
     } else {
-      run.curve = auto_grid_curve(run, load, curve_on, progress);
+      run.curve = auto_grid_curve(run, load, curve_on, progress, also_held);
     }
     run.curve_cached = cached;
   }
@@ -692,10 +708,10 @@ int run_surface_command(const std::vector<std::string>& args, std::ostream& out)
   return 0;
 }
 
-SurfaceRun evaluate_surface(const input::Keywords& keywords) {
+SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
   const input::PointMaterial material = input::find_point_material(keywords);
   SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
-  evaluate(run, false);
+  evaluate(run, false, also_held);
   return run;
 }
 

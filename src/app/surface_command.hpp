@@ -7,6 +7,7 @@
 
 #include <boost/program_options/options_description.hpp>
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -24,9 +25,15 @@ boost::program_options::options_description surface_options(const input::PointMa
 /// printing anything).
 int run_surface_command(const std::vector<std::string>& args, std::ostream& out);
 
+/// Each level's touch at more load points than the run's own, read off a curve of the run's
+/// texture (surface-map's pressures and law values, one row a point): `--grid auto` holds
+/// every one of them to its accuracy, as it holds the run's own.
+using MoreLoadPoints = std::function<std::vector<std::vector<model::LevelTouch>>(const SurfaceRun&, const model::LoadCurve&)>;
+
 /// The texture of `punchsweep surface` given as keywords (Python's), evaluated by the
-/// command's own options, checks and code.
-SurfaceRun evaluate_surface(const input::Keywords& keywords);
+/// command's own options, checks and code; `also_held`: the load points --grid auto holds
+/// beside the run's own.
+SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
 
 /// The same, as the command's JSON text (what `--format json` prints): Python's surface().
 std::string surface_json(const input::Keywords& keywords);

@@ -304,12 +304,38 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
     return k;
   };
 
+  // Load point p of a run: its point with the load axes' values put in, its law and load.
+  struct LoadPoint {
+    model::PointValues point;
+    std::unique_ptr<model::CreepLaw> creep;
+    std::optional<model::CreepWeightedLoad> load;
+  };
+  const auto load_point = [&](const SurfaceRun& run, std::size_t p) {
+    LoadPoint out{{run.inputs.problem, run.inputs.law_values}, nullptr, std::nullopt};
+    const std::vector<std::size_t> at = digits_of(p, load_sizes);
+    for (std::size_t a = 0; a < map.load.size(); ++a) {
+      model::set_coordinate(in.load_coordinates[a], map.load[a].values[at[a]], &out.point);
+    }
+    out.creep = model::make_creep_law(*in.spec, out.point.law);
+    out.load.emplace(*out.creep, out.point.problem.pbar0, out.point.problem.loading);
+    return out;
+  };
+  // --grid auto holds every load point's t* (not only the least pressure's, which sizes
+  // the grid): a level whose touch load the grid moves by a little moves t* most where the
+  // creep-weighted load reaches it slowly.
+  const MoreLoadPoints hold_every_load_point = [&](const SurfaceRun& run, const model::LoadCurve& curve) {
+    std::vector<std::vector<model::LevelTouch>> rows;
+    rows.reserve(P);
+    for (std::size_t p = 0; p < P; ++p) rows.push_back(model::level_touches(curve, *load_point(run, p).load));
+    return rows;
+  };
+
   // A rank's first geometry sizes its arrays (levels, caps, times: the same for every
   // geometry of a map); rank 0's is the first of all.
   bool sized = false;
   for (std::size_t g = static_cast<std::size_t>(rank); g < G; g += static_cast<std::size_t>(ranks)) {
     const auto start = std::chrono::steady_clock::now();
-    const SurfaceRun run = evaluate_surface(point_keywords(g));
+    const SurfaceRun run = evaluate_surface(point_keywords(g), hold_every_load_point);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::size_t L = static_cast<std::size_t>(run.curve.levels());
     if (!sized) {
@@ -350,16 +376,12 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
       map.X_star[g * L + level] = run.history.levels[level].X_star;
       map.resolved[g * L + level] = run.history.levels[level].resolved ? 1 : 0;
     }
-    // Each load point off the curve: the run's point, with the load axes' values put in.
-    model::PointValues point{run.inputs.problem, run.inputs.law_values};
+    // Each load point off the curve.
     const std::size_t T = map.times.size();
     for (std::size_t p = 0; p < P; ++p) {
-      const std::vector<std::size_t> at = digits_of(p, load_sizes);
-      for (std::size_t a = 0; a < map.load.size(); ++a) {
-        model::set_coordinate(in.load_coordinates[a], map.load[a].values[at[a]], &point);
-      }
-      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(*in.spec, point.law);
-      const model::CreepWeightedLoad load(*creep, point.problem.pbar0, point.problem.loading);
+      const LoadPoint at_p = load_point(run, p);
+      const model::PointValues& point = at_p.point;
+      const model::CreepWeightedLoad& load = *at_p.load;
       const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
       const std::size_t row = g * P + p;
       for (std::size_t level = 0; level < L; ++level) {

@@ -283,3 +283,25 @@ def test_flat_topped_caps_are_one_summit_each(tmp_path):
     out = punchsweep.surface(height_map=str(tmp_path / "flat.npy"), pixel=l / n, level_gap=dh / 2, T=2.5, pbar=0.01,
                              times=[0, 1])
     assert out["caps"] == 2 and [lv["drop"] for lv in out["levels"]] == pytest.approx([0.0, dh], abs=1e-12)
+
+
+def test_grid_auto_holds_every_load_point_of_a_surface_map(tmp_path):
+    """`surface-map --grid auto` held each geometry's grid only at the map's least pressure:
+    where level 1 never touches there, nothing moved and the grid stayed at its first size
+    (80 nodes here), and at pbar 0.0078, where t* is near the edge of never (x/t* dt*/dpbar
+    about -8), t* was read 1.2e-3 off the periodic model's tables (4.3e-3 from 40 nodes to 80)
+    and marked resolved. Now every load point's t* is held to 1e-3 of the grid of half the
+    nodes: the grid doubles, and t* is within 1e-3 of the tables' (`point`)."""
+    common = ["--l", 0.75, "--dh", 0.03, "--s", 2, "--T", 2.5]
+    out = tmp_path / "m.nc"
+    run = cli("surface-map", *common, "--pbar", "0.005,0.0078", "--curve", "cell", "--times", "0,1", "--output", out)
+    assert run.returncode == 0, run.stderr
+    import h5py
+    with h5py.File(out, "r") as f:
+        grid = float(np.asarray(f["grid"]).ravel()[0])
+        t_star = np.asarray(f["t_star"]).reshape(2, 2)  # (pbar, level)
+        resolved = np.asarray(f["resolved"]).ravel()
+    point = json.loads(cli("point", *common, "--pbar", 0.0078, "--format", "json").stdout)
+    assert grid >= 160 and all(resolved == 1)
+    assert np.isinf(t_star[0, 1]) and point["regime"] == "delayed"
+    assert t_star[1, 1] == pytest.approx(point["t_star"], rel=1e-3)
