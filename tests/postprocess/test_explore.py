@@ -326,27 +326,36 @@ def test_an_area_fraction_the_radii_do_not_give_is_embedded(maps, tmp_path):
     assert "data" in data["variables"]["area_fraction_inf"] and "derived" not in data["variables"]["area_fraction_inf"]
 
 
+def tpe_map_and_window(tmp_path, design_args: list[str], dh_values=9, pressures=8):
+    """A TPE-A regime map over dh and the pressure at 20 C (l 250 um, R 80 um, s 2) and a
+    design window for it (`punchsweep design ... --format json`): the map's path and the
+    design's JSON text."""
+    tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    path = tmp_path / "tpe.h5"
+    subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
+                    f"linspace(4um, 12um, {dh_values})", "--grid.pressure", f"logspace(3kPa, 50kPa, {pressures})",
+                    "--grid.temperature", "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path],
+                   check=True)
+    done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
+                           "--temperature", "20..40C", *design_args, "--format", "json"],
+                          capture_output=True, text=True, check=True)
+    return path, done.stdout
+
+
 def drawn_window(tmp_path, design_args: list[str], explore_args: list[str], along: str):
     """A design window (`punchsweep design ... --format json`) drawn on the page of a TPE-A
     map over dh and the pressure at 20 C: the design's JSON, and the window's lines as
     Chromium has them, (name, their `along` coordinates), sorted by name."""
-    tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
-    path = tmp_path / "tpe.h5"
-    subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
-                    "linspace(4um, 12um, 9)", "--grid.pressure", "logspace(3kPa, 50kPa, 8)", "--grid.temperature",
-                    "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path], check=True)
-    done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
-                           "--temperature", "20..40C", *design_args, "--format", "json"],
-                          capture_output=True, text=True, check=True)
+    path, text = tpe_map_and_window(tmp_path, design_args)
     window = tmp_path / "window.json"
-    window.write_text(done.stdout)
+    window.write_text(text)
     page = tmp_path / "p.html"
     r = explore(path, "-o", page, *explore_args, "--design", window)
     assert r.returncode == 0, r.stderr
     out, _ = in_chromium(page, [[0, 0]], tmp_path)
     drawn = sorted((line["name"], line[along]) for line in out["lines"] if line["name"].startswith("design window"))
     assert len(drawn) == 2, out["lines"]
-    return json.loads(done.stdout), drawn
+    return json.loads(text), drawn
 
 
 @pytest.mark.browser

@@ -16,7 +16,7 @@ import subprocess
 import h5py
 import pytest
 
-from test_explore import ENGINE, REPO, embedded, explore, in_chromium
+from test_explore import ENGINE, REPO, embedded, explore, in_chromium, tpe_map_and_window
 
 
 def surface_map(path, *axes: str) -> None:
@@ -166,16 +166,10 @@ def test_every_word_of_a_clicked_cells_command_is_quoted_for_the_shell(tmp_path)
 def window(tmp_path_factory):
     """A regime map over dh and the pressure, and a design window of dh
     (`punchsweep design --format json`) for it."""
-    tmp = tmp_path_factory.mktemp("design")
-    tpe = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
-    path = tmp / "tpe.h5"
-    subprocess.run([ENGINE, "sweep", "--model.material", tpe, "--model.R", "80um", "--grid.l", "250um", "--grid.dh",
-                    "linspace(4um, 12um, 5)", "--grid.pressure", "logspace(3kPa, 50kPa, 4)", "--grid.temperature",
-                    "20", "--grid.s", "2", "--quantities", "regime", "--quiet", "--output", path], check=True)
-    done = subprocess.run([ENGINE, "design", "--material", tpe, "--R", "80um", "--l", "250um", "--s", "2",
-                           "--temperature", "20..40C", "--require", "touch within 1s at 30kPa", "--require",
-                           "never at 5kPa", "--format", "json"], capture_output=True, text=True, check=True)
-    return path, json.loads(done.stdout)
+    path, text = tpe_map_and_window(tmp_path_factory.mktemp("design"),
+                                    ["--require", "touch within 1s at 30kPa", "--require", "never at 5kPa"],
+                                    dh_values=5, pressures=4)
+    return path, json.loads(text)
 
 
 @pytest.mark.parametrize("tamper, field", [
