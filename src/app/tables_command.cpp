@@ -9,10 +9,12 @@
 
 #include "app/periodic_tables.hpp"
 #include "app/table_cache.hpp"
+#include "input/command_options.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
 #include "io/output_file.hpp"
 #include "app/version.hpp"
+#include "model/problem/localization.hpp"
 #include "model/problem/shape.hpp"
 #include "model/periodic/small_spot_builder.hpp"
 #include "sweep/reproducible_fft.hpp"
@@ -72,8 +74,9 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
   }
   std::vector<int> exponents;
   for (const double s : input::parse_real_list(vm["s"].as<std::string>(), "--s")) {
-    if (s != std::floor(s) || s < model::Shape::kMinExponent || s > model::Shape::kMaxExponent) {
-      throw input::UsageError("--s: " + std::to_string(s) + " is not an integer in [1, 32]");
+    if (s != std::floor(s) || s < model::Shape::kMinExponent || s > model::Localization::kMaxPeriodicExponent) {
+      throw input::UsageError("--s: " + input::json_number(s) + " is not an integer in [1, " +
+                              std::to_string(model::Localization::kMaxPeriodicExponent) + "] (the periodic model's exponents)");
     }
     exponents.push_back(static_cast<int>(s));
   }

@@ -238,21 +238,39 @@ def test_scales_the_boundary_elements_cannot_take_are_refused_as_bad_input(tmp_p
     assert run.returncode == 2 and "relief" in run.stderr, run.stderr
 
 
-def test_the_periodic_model_refuses_the_exponents_its_tables_do_not_reach(tmp_path):
+def test_the_periodic_model_answers_to_s_16_and_refuses_beyond(tmp_path):
     """`point` ended in 'internal error: the small-spot table of s = 8 found no two-level
-    state ... dh / (C l^s) = 0' (exit 1) for s = 7 to 32, which the docs allowed: the periodic
-    model now refuses them as bad input naming its range and the models that answer, and so
-    does a sweep's s axis; `surface` takes the cell's own curve there."""
-    run = cli("point", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8)
-    assert run.returncode == 2 and "s = 8 is outside the periodic model's range: an integer in [1, 6]" in run.stderr
-    paper = cli("point", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8, "--localization", "paper")
-    assert paper.returncode == 0, paper.stderr
+    state ... dh / (C l^s) = 0' (exit 1) for s = 7 to 32, which the docs allowed: at one
+    height (eta = 0) the table's top put two flat caps' spots within 2% of merging. The
+    tables of s = 8 are now built (on first use, about a minute) and give the cell's own
+    boundary elements' t* (grid 256, which moves it by 4e-5 from 512) within the stated 1e-3;
+    a sweep's s axis takes 8 too. Beyond s = 16 the tables' caps are too flat for their grid
+    (t* 1.5e-3 off at s = 24): the periodic model refuses as bad input, naming its range and
+    the models that answer, and `surface` takes the cell's own curve."""
+    args = ["--l", 0.66, "--dh", 2.06e-5, "--T", 1.42, "--pbar", 3.79e-5, "--s", 8]
+    run = cli("point", *args, "--format", "json")
+    assert run.returncode == 0, run.stderr
+    point = json.loads(run.stdout)
+    cell = json.loads(cli("surface", "--lattice", "square", *args, "--curve", "cell", "--grid", 256,
+                          "--format", "json").stdout)["levels"][1]
+    assert point["regime"] == cell["regime"] == "delayed" and point["valid"] and cell["resolved"]
+    assert point["t_star"] == pytest.approx(cell["t_star"], rel=1e-3)
+    tables = json.loads(cli("surface", "--lattice", "square", *args, "--format", "json").stdout)
+    assert tables["curve"]["source"] == "tables"
+    assert tables["levels"][1]["t_star"] == pytest.approx(point["t_star"], rel=1e-9)
     sweep = cli("sweep", "--grid.s", "2,8", "--output", tmp_path / "m.h5", "--dry-run")
-    assert sweep.returncode == 2 and "grid.s = 2,8: s = 8 is outside" in sweep.stderr
-    out = punchsweep.surface(l=0.75, dh=0.01, T=2.5, pbar=0.02, s=8, grid=16, times=[0, 1])
+    assert sweep.returncode == 0, sweep.stderr
+
+    far = ["--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 20]
+    run = cli("point", *far)
+    assert run.returncode == 2 and "s = 20 is outside the periodic model's range: an integer in [1, 16]" in run.stderr
+    assert cli("point", *far, "--localization", "paper").returncode == 0
+    sweep = cli("sweep", "--grid.s", "2,20", "--output", tmp_path / "m.h5", "--dry-run")
+    assert sweep.returncode == 2 and "grid.s = 2,20: s = 20 is outside" in sweep.stderr
+    out = punchsweep.surface(l=0.75, dh=0.01, T=2.5, pbar=0.02, s=20, grid=16, times=[0, 1])
     assert out["curve"]["source"] == "cell"
-    tables = cli("surface", "--l", 0.75, "--dh", 0.01, "--T", 2.5, "--pbar", 0.02, "--s", 8, "--curve", "tables")
-    assert tables.returncode == 2 and "--curve tables: s = 8" in tables.stderr
+    tables = cli("surface", *far, "--curve", "tables")
+    assert tables.returncode == 2 and "--curve tables: s = 20" in tables.stderr
 
 
 def test_a_cell_file_says_what_it_leaves_to_a_guess(tmp_path):

@@ -16,7 +16,16 @@ namespace punchsweep::model {
 SmallSpotOptions::Bands hand_over_radii(int s) {
   if (s <= 1) return {0.08, 0.14, 0.22, 0.28};
   if (s == 2) return {0.09, 0.15, 0.30, 0.35};
-  return {0.12, 0.18, 0.34, 0.40};
+  if (s <= 6) return {0.12, 0.18, 0.34, 0.40};
+  // Flatter caps' radii grow slowly with the load: at two equal levels (eta = 0) each spot is
+  // nearly the single level's, so a band to 0.40 l left them within 2% of merging at the
+  // table's top (a1 + a2 = 0.696 l, s = 7), where the two-level solve has no state.
+  return {0.12, 0.18, 0.28, 0.34};
+}
+
+SmallSpotOptions::Samples small_spot_samples(int s) {
+  if (s <= 6) return {64, 32};
+  return {64, 128};
 }
 
 SmallSpotTable build_small_spot_table(int s, const SmallSpotOptions& options) {
@@ -31,8 +40,9 @@ SmallSpotTable build_small_spot_table(int s, const SmallSpotOptions& options) {
 
   SmallSpotTable t;
   t.s = s;
-  t.M = options.v_intervals;
-  t.Z = options.zeta_intervals;
+  const SmallSpotOptions::Samples samples = options.samples.v_intervals > 0 ? options.samples : small_spot_samples(s);
+  t.M = samples.v_intervals;
+  t.Z = samples.zeta_intervals;
   t.shells = options.shells;
   // The localization's far field per unit load, h - K_d a^s as a -> 0 (its gap at a = 0
   // under unit load: what its kept neighbours and the nominal pressure beyond them give),
@@ -90,7 +100,8 @@ SmallSpotTable build_small_spot_table(int s, const SmallSpotOptions& options) {
       }
       if (!solved.converged) {
         throw std::runtime_error("the small-spot table of s = " + std::to_string(s) + " found no two-level state at xi = " +
-                                 number_text(xi, 6) + ", dh / (C l^s) = " + number_text(problem.dh, 6));
+                                 number_text(xi, 6) + ", dh = " + number_text(t.eta_of_zeta(t.sample_zeta(m)), 6) +
+                                 " h(xi) = " + number_text(problem.dh, 6) + " C l^s");
       }
       TwoLevelState state = solved.state;
       if (m == t.Z) {

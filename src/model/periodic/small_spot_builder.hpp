@@ -15,8 +15,11 @@ namespace punchsweep::model {
 /// The samples and the hand-over. The defaults are what the engine uses (their accuracy:
 /// docs/model.md, section 14.7).
 struct SmallSpotOptions {
-  int v_intervals = 64;     ///< M
-  int zeta_intervals = 32;  ///< Z
+  /// The samples, M intervals in v and Z in zeta (0: the engine's, small_spot_samples).
+  struct Samples {
+    int v_intervals = 0;     ///< M
+    int zeta_intervals = 0;  ///< Z
+  } samples{};
   /// The hand-over bands, by the single level's contact radius a1 / l (0: the engine's,
   /// hand_over_radii): the gap h, and the rest (radii, loads, the two levels).
   struct Bands {
@@ -40,6 +43,12 @@ struct SmallSpotOptions {
 /// differences, the more so the larger s; the small spots' where spots are large). Narrow:
 /// in a band a point reads both tables.
 SmallSpotOptions::Bands hand_over_radii(int s);
+
+/// The engine's samples of s: 64 in v and 32 across the height difference (eta = 1 - zeta^s)
+/// up to s = 6; 64 and 128 beyond, where eta's range from 0 to 1/2 spans a few samples of
+/// zeta (two at s = 16 with 32), so the two levels' radii between them were up to 3e-4 of
+/// a1 off the localization (with 128: 2e-5).
+SmallSpotOptions::Samples small_spot_samples(int s);
 
 /// The table of shape exponent s (1 <= s <= 32). Throws std::runtime_error where a state
 /// has no root (naming it) and Stopped on a stop request.

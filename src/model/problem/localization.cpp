@@ -48,7 +48,7 @@ std::string Localization::exponent_error(int s) const {
   if (!periodic || s <= kMaxPeriodicExponent) return {};
   return "s = " + std::to_string(s) + " is outside the periodic model's range: an integer in [1, " +
          std::to_string(kMaxPeriodicExponent) +
-         "] (its small-spot table finds no two-level state beyond); --localization refined or paper answers s up to 32, "
+         "] (beyond, its tables' caps are too flat for their grid); --localization refined or paper answers s up to 32, "
          "and `punchsweep surface --curve cell` the cell's own boundary elements";
 }
 

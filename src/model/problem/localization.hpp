@@ -39,9 +39,10 @@ struct Localization {
   /// best (docs/model.md, section 11): the neighbours within this many distances, spread.
   static constexpr int kRefinedShells = 200;
 
-  /// The periodic model's reach in s: its small-spot table's two-level solve finds no state
-  /// near touchdown beyond it (s = 7 to 32 failed; docs/model.md, section 14.7).
-  static constexpr int kMaxPeriodicExponent = 6;
+  /// The periodic model's reach in s: up to it its tables give t* within 2e-4 of the cell's
+  /// own boundary elements; beyond, flatter caps' edges are more than their grid resolves
+  /// (1.5e-3 at s = 24; at s = 32 a contact solve misses its tolerance). docs/model.md 14.7.
+  static constexpr int kMaxPeriodicExponent = 16;
   /// Empty where this model answers shape exponent s, else one sentence naming s, the
   /// model's range and the models that answer it.
   std::string exponent_error(int s) const;
