@@ -323,3 +323,20 @@ def test_grid_auto_holds_every_load_point_of_a_surface_map(tmp_path):
     assert grid >= 160 and all(resolved == 1)
     assert np.isinf(t_star[0, 1]) and point["regime"] == "delayed"
     assert t_star[1, 1] == pytest.approx(point["t_star"], rel=1e-3)
+
+
+def test_a_texture_of_tiny_relief_is_solved_as_its_scaled_copy():
+    """Elastic contact is linear: a texture whose heights (C, dh) and load (pbar) are all
+    scaled by the same factor has the same contact areas and touch times. A cap of s = 10 at
+    l = 0.16 R has a relief of 1e-11 R, below the contact solver's tolerance 1e-10, which it
+    took as absolute where the uniform first guess leaves u flat: every load was full contact
+    from the first sample (area fraction 1 at t = 0, level 1 'immediate', all valid, where
+    the periodic tables give area 0.76 at long times). The test is now relative to the relief,
+    and the curve is the 1e6 times taller copy's, number for number."""
+    common = dict(lattice="square", l=0.16, T=3.137, s=10, curve="cell", grid=64, times=[0, 0.5, 5])
+    tiny = punchsweep.surface(dh=1.0789e-12, pbar=7.5917e-12, C=0.5, **common)
+    tall = punchsweep.surface(dh=1.0789e-6, pbar=7.5917e-6, C=0.5e6, **common)
+    assert tall["levels"][1]["regime"] == "delayed" and tall["series"]["area_fraction"][0] < 0.5
+    assert tiny["levels"][1]["regime"] == "delayed"
+    assert tiny["levels"][1]["t_star"] == pytest.approx(tall["levels"][1]["t_star"], rel=1e-9)
+    np.testing.assert_allclose(tiny["series"]["area_fraction"], tall["series"]["area_fraction"], rtol=1e-9)

@@ -92,7 +92,7 @@ struct LoadCurve {
   /// The curve of tables(); nullopt for numbers of another format, sizes that do not add
   /// up, or a curve load_curve_error refuses.
   static std::optional<LoadCurve> from_tables(const std::vector<double>& numbers);
-  static constexpr double kFormat = 3.0;  ///< 2: touchdowns by the tip's pressure; 3: X_resolved
+  static constexpr double kFormat = 4.0;  ///< 2: touchdowns by the tip's pressure; 3: X_resolved; 4: solves scale-free at any relief
 };
 
 /// Empty when `curve` is one the readers can use (samples increasing in X, sizes matching,
