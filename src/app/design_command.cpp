@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "app/point_command.hpp"
+#include "app/surface_command.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
@@ -366,6 +367,16 @@ DesignResult design(const DesignArgs& a) {
   if (a.requirement_texts.empty()) throw input::UsageError("give at least one --require (" + std::string(kRequirementForms) + ")");
   const input::PointMaterial material = input::find_point_material(a.point);
   const po::options_description opts = point_options(material);
+  // A texture option of `surface` (--lattice, --dh2, --cell, ...) was "unknown option" with
+  // no hint: the design searches the paper's two-level square lattice alone.
+  const po::options_description texture = surface_options(material);
+  for (const auto& [name, value] : a.point) {
+    if (opts.find_nothrow(name, false) == nullptr && texture.find_nothrow(name, false) != nullptr) {
+      throw input::UsageError("--" + name + " is a texture option of `punchsweep surface` and `surface-map`: design searches "
+                              "the two-level square lattice alone (--l, --dh, --s, --C); for another texture map its drop, "
+                              "pitch or pressure with `punchsweep surface-map` and read the window off its t*");
+    }
+  }
   const bool has_temperature =
       std::any_of(material.spec.parameters.begin(), material.spec.parameters.end(),
                   [](const model::Parameter& p) { return p.name == model::temperature_parameter().name; });
