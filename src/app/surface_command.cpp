@@ -3,10 +3,10 @@
 #include <boost/program_options.hpp>
 
 #include <algorithm>
-#include <iterator>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <ostream>
 #include <sstream>
@@ -654,18 +654,10 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = 
     const std::size_t at = static_cast<std::size_t>(level);
     run.derivatives[at] = model::level_t_star_derivatives(run.curve, level, surface_load, run.history.levels[at].t_star);
     if (!ranges.empty()) run.ranges[at] = ranges[at];
-    // A level on a knife edge says so, as `point` does: the input whose 1% moves t* most,
-    // where that is more than 10% (t* then asks more of the curve than its grid's accuracy).
-    const model::TStarDerivative* steepest = nullptr;
-    for (const model::TStarDerivative& d : run.derivatives[at]) {
-      if (std::isfinite(d.elasticity) && (!steepest || std::abs(d.elasticity) > std::abs(steepest->elasticity))) steepest = &d;
-    }
-    if (steepest && std::abs(steepest->elasticity) > 10.0) {
-      std::ostringstream note;
-      note.precision(3);
-      note << "level " << level << ": t* is on a knife edge: x/t* d t*/dx = " << steepest->elasticity << " for "
-           << steepest->parameter->name << " (a 1% change moves t* by far more than 1%); --tolerance gives its range";
-      run.inputs.notes.push_back(note.str());
+    // A level on a knife edge says so, as `point` does (t* then asks more of the curve than
+    // its grid's accuracy).
+    if (const std::string note = knife_edge_note(run.derivatives[at]); !note.empty()) {
+      run.inputs.notes.push_back("level " + std::to_string(level) + ": " + note);
     }
   }
   if (run.check) {
