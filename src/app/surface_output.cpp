@@ -6,6 +6,7 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "input/command_options.hpp"
 #include "model/laws/material.hpp"
@@ -102,24 +103,28 @@ void write_check(std::ostream& out, const SurfaceRun& run) {
   out << "    }\n  },\n";
 }
 
-/// Why a level never touches, one rule whatever served the curve: its caps lie under the
-/// taller ones' surface (hidden: their tips are not on the texture's surface, and the
-/// contact reaches them only as the taller caps' spreads), or the load never reaches its
-/// touchdown before full contact or the curve's end.
-/// Whether every cap of `level` lies under the taller caps' surface (model::tip_exposed).
-bool level_hidden(const SurfaceRun& run, int level) {
-  if (run.measured) return false;  // a summit is the highest pixel about it
+/// Per level, whether every cap of it lies under the taller caps' surface
+/// (model::tip_exposed); level 0 never does. One scan of the cell for all levels.
+std::vector<char> hidden_levels(const SurfaceRun& run) {
+  const std::size_t L = static_cast<std::size_t>(run.curve.levels());
+  std::vector<char> hidden(L, 0);
+  if (run.measured) return hidden;  // a summit is the highest pixel about it
   const model::SurfaceLocator surface(run.geometry);
-  bool hidden = true;
-  for (std::size_t k = 0; k < run.geometry.sites.size() && hidden; ++k) {
-    if (run.geometry.sites[k].level == level) hidden = !model::tip_exposed(run.geometry, surface, k);
+  for (std::size_t level = 1; level < L; ++level) hidden[level] = 1;
+  for (std::size_t k = 0; k < run.geometry.sites.size(); ++k) {
+    const std::size_t level = static_cast<std::size_t>(run.geometry.sites[k].level);
+    if (level < L && hidden[level] && model::tip_exposed(run.geometry, surface, k)) hidden[level] = 0;
   }
   return hidden;
 }
 
-std::string never_reason(const SurfaceRun& run, int level) {
+/// Why a level never touches, one rule whatever served the curve: its caps lie under the
+/// taller ones' surface (hidden: their tips are not on the texture's surface, and the
+/// contact reaches them only as the taller caps' spreads), or the load never reaches its
+/// touchdown before full contact or the curve's end.
+std::string never_reason(const SurfaceRun& run, bool hidden) {
   std::ostringstream out;
-  if (level_hidden(run, level)) {
+  if (hidden) {
     out << "hidden: its tips lie under the taller caps' surface, so it never touches as a cap of its own";
   } else if (std::isfinite(run.curve.X_full)) {
     out << "untouched up to full contact, X = " << run.curve.X_full << " E0*";
@@ -153,6 +158,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
       << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false")
       << ", \"held_to_grid\": " << (run.grid_coarser > 0 ? std::to_string(run.grid_coarser) : std::string("null")) << "},\n";
   out << "  \"levels\": [";
+  const std::vector<char> hidden = hidden_levels(run);
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& touch = run.history.levels[static_cast<std::size_t>(level)];
     const DropRange drops = drop_range(run.geometry, level);
@@ -161,7 +167,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
         << ", \"sites\": " << drops.sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
         << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
         << ", \"resolved\": " << (touch.resolved ? "true" : "false")
-        << ", \"hidden\": " << (level > 0 && level_hidden(run, level) ? "true" : "false")
+        << ", \"hidden\": " << (hidden[static_cast<std::size_t>(level)] ? "true" : "false")
         << ", \"t_star_grid_change\": "
         << (run.grid_t_star_change.empty() ? std::string("null") : num(run.grid_t_star_change[static_cast<std::size_t>(level)]))
         << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]);
@@ -226,6 +232,7 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
     out << (csv ? "# " : "  ") << "grid: --grid auto held it to " << run.grid_coarser << " nodes a pitch: t* moved by at most "
         << worst << " of itself\n";
   }
+  const std::vector<char> hidden = hidden_levels(run);
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);
@@ -235,7 +242,7 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
     } else if (std::isfinite(t.X_star)) {
       out << " (touches at X* = " << t.X_star << " E0*)\n";
     } else {
-      out << " (" << never_reason(run, level) << ")\n";
+      out << " (" << never_reason(run, hidden[static_cast<std::size_t>(level)] != 0) << ")\n";
     }
   }
   for (int level = 1; level < L; ++level) {
