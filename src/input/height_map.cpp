@@ -1,7 +1,6 @@
 #include "input/height_map.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -15,6 +14,7 @@
 
 #include "input/csv_cells.hpp"
 #include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
 #include "io/netcdf_file.hpp"
 #include "model/numerics/number_text.hpp"
 #include "model/numerics/units.hpp"
@@ -42,15 +42,6 @@ std::optional<std::uint64_t> product(std::uint64_t a, std::uint64_t b) {
   return a * b;
 }
 
-/// A decimal count as a .npy header writes one ("4096"), or nothing where it is none or
-/// does not fit in 64 bits.
-std::optional<std::uint64_t> decimal_count(const std::string& text) {
-  std::uint64_t value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
 HeightMap read_npy(const std::string& path, const std::string& bytes) {
   const auto fail = [&](const std::string& what) { throw UsageError(path + ": " + what); };
   if (bytes.size() < 10) fail("a .npy file too short for its header");
@@ -75,7 +66,7 @@ HeightMap read_npy(const std::string& path, const std::string& bytes) {
   // The item size is read as written, digits only: "<f99999999999" is a dtype, no number to parse.
   std::size_t size = 0;
   if (std::regex_match(descr, m, std::regex(R"(([<|=]?)f(\d+))"))) {
-    const std::optional<std::uint64_t> written = decimal_count(m[2]);
+    const std::optional<std::uint64_t> written = decimal_uint64(m[2].str());
     if (written && (*written == 4 || *written == 8)) size = static_cast<std::size_t>(*written);
   }
   if (size == 0) fail("'descr' (dtype) '" + descr + "'; " + valid_dtype);
@@ -88,7 +79,7 @@ HeightMap read_npy(const std::string& path, const std::string& bytes) {
     for (std::string item; std::getline(counts, item, ',');) {
       const std::string count(model::trim(item, " \t"));
       if (count.empty() && counts.eof() && !dims.empty()) break;  // "(16, )": a tuple's last comma
-      const std::optional<std::uint64_t> n = decimal_count(count);
+      const std::optional<std::uint64_t> n = decimal_uint64(count);
       if (!n) fail("'shape' (" + shape + "): '" + count + "' is no count of pixels (a decimal integer below 2^64)");
       dims.push_back(*n);
     }

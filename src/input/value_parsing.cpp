@@ -48,16 +48,19 @@ int parse_integer(const std::string& text, const std::string& option) {
   throw UsageError(option + " = '" + text + "' is not an integer");
 }
 
-std::uint64_t parse_seed(const std::string& text, const std::string& option) {
+std::optional<std::uint64_t> decimal_uint64(std::string_view text) {
   std::uint64_t value = 0;
   const char* end = text.data() + text.size();
-  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  // (from_chars takes neither a sign nor blanks for an unsigned type: digits alone.)
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (!digits || ec != std::errc() || ptr != end) {
-    throw UsageError(option + " = '" + text + "' is outside its range: an integer in [0, 2^64-1 = " +
-                     std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
-  }
+  if (text.empty() || ec != std::errc() || ptr != end) return std::nullopt;
   return value;
+}
+
+std::uint64_t parse_seed(const std::string& text, const std::string& option) {
+  if (const std::optional<std::uint64_t> value = decimal_uint64(text)) return *value;
+  throw UsageError(option + " = '" + text + "' is outside its range: an integer in [0, 2^64-1 = " +
+                   std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
 }
 
 std::vector<double> parse_real_list(const std::string& text, const std::string& option) {
