@@ -1,0 +1,84 @@
+#include "reference/level_closure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace punchsweep::reference {
+
+namespace {
+
+/// How far above the depth where it would be hidden a level's sites are set: a relative
+/// 1e-8 keeps their tips on the texture's surface (model::tip_exposed ties within 1e-12).
+constexpr double kExposedMargin = 1e-8;
+
+bool in_level(const model::CellGeometry& geometry, int level, std::size_t k) { return geometry.sites[k].level == level; }
+
+}  // namespace
+
+LevelClosure::LevelClosure(const model::CellGeometry& geometry, int level, const PeriodicGrid& grid,
+                           ContactSolverOptions solver)
+    : geometry_(geometry), solver_(grid, solver), level_(level) {
+  if (level < 1 || level >= geometry.levels()) {
+    throw std::invalid_argument("level closure: level " + std::to_string(level) + " is not one of the geometry's levels 1 to " +
+                                std::to_string(geometry.levels() - 1));
+  }
+  // The reference tip: a tallest site (the least drop) of another level.
+  std::size_t reference = geometry.sites.size();
+  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+    if (!in_level(geometry, level, k) && (reference == geometry.sites.size() || geometry.sites[k].drop < geometry.sites[reference].drop)) {
+      reference = k;
+    }
+  }
+  reference_ = reference;
+  // The deepest exposed drop: at each of the level's tips, the lowest of the other sites'
+  // surfaces there (every other site, each to its nearest image: the level's own sites are
+  // left out, so a locator's reach, which assumes them, does not apply).
+  const model::SurfaceLocator surface(geometry);
+  deepest_ = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+    if (!in_level(geometry, level, k)) continue;
+    for (std::size_t j = 0; j < geometry.sites.size(); ++j) {
+      if (in_level(geometry, level, j)) continue;
+      deepest_ = std::min(deepest_, surface.surface(j, surface.distance(geometry.sites[k].x, geometry.sites[k].y, j)));
+    }
+  }
+  if (!(deepest_ > geometry.sites[reference_].drop) || !std::isfinite(deepest_)) {
+    throw std::invalid_argument("level closure: level " + std::to_string(level) + " has no depth at which it is a punch of its own");
+  }
+  for (model::Site& site : geometry_.sites) {
+    if (site.level == level) site.drop = deepest_ * (1.0 - kExposedMargin);
+  }
+  cell_ = make_cell(geometry_, grid);
+}
+
+LevelClosed LevelClosure::at(double X) {
+  LevelClosed out;
+  if (!(X >= 0.0)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not >= 0");
+  if (X == 0.0) {
+    out.status.converged = true;
+    return out;
+  }
+  const PeriodicGrid& g = cell_.grid;
+  std::vector<double> p(g.size(), 0.0), u(g.size());
+  out.status = solver_.solve(cell_.profile, X, 1.0, p, u);
+  if (!out.status.converged) {
+    throw std::runtime_error("level closure: the contact solve at X = " + std::to_string(X) + " E0* missed its tolerance (residual " +
+                             std::to_string(out.status.residual) + " after " + std::to_string(out.status.iterations) +
+                             " iterations)");
+  }
+  const double reference_drop = geometry_.sites[reference_].drop;
+  const double u_reference = u[cell_.tips[reference_]];
+  double closed = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+    if (geometry_.sites[k].level != level_) continue;
+    if (cell_.touched(k, p)) out.every_drop = true;
+    closed = std::max(closed, reference_drop + u_reference - u[cell_.tips[k]]);
+  }
+  out.drop = out.every_drop ? deepest_ : std::clamp(closed, 0.0, deepest_);
+  return out;
+}
+
+}  // namespace punchsweep::reference

@@ -1,0 +1,78 @@
+// The drop a level closes at a load (reference/level_closure.hpp), against the load curve
+// of the same geometry (reference/load_curve.hpp, another code path: a march in load with a
+// bisection of each site's touchdown by its tip's pressure): at a level's touchdown load
+// X*, the closure of that level is the level's own drop.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "model/problem/cell_geometry.hpp"
+#include "model/problem/shape.hpp"
+#include "reference/level_closure.hpp"
+#include "reference/load_curve.hpp"
+#include "reference/periodic_grid.hpp"
+
+using namespace punchsweep;
+using model::LatticeKind;
+
+namespace {
+
+struct Case {
+  LatticeKind lattice;
+  double l;
+  std::vector<double> drops;
+};
+
+}  // namespace
+
+// Square and hexagonal lattices of two and three levels (drops from 0.005 to 0.05 R, the
+// study's 2 and 5 um under 60 um caps among them): each level's closure at its touchdown on
+// the curve is its drop. The curve finds X* to 1e-7 of itself and the closure grows about
+// as X^(2/3) (Hertz's approach) and never faster than X, so 1e-6 of the drop bounds what the
+// two methods may differ by; both solve to 1e-10 of the displacement range.
+TEST(LevelClosure, closes_each_level_at_its_touchdown_on_the_curve) {
+  const model::Shape shape{2, 0.5};
+  const int n = 32;
+  for (const Case& c : {Case{LatticeKind::square, 3.0, {0.02}}, Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0}},
+                        Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0, 5.0 / 60.0}},
+                        Case{LatticeKind::square, 2.5, {0.005, 0.05}}}) {
+    const model::CellGeometry g = model::lattice_cell(c.lattice, c.l, shape, c.drops);
+    const reference::PeriodicGrid grid = reference::lattice_grid(g, c.lattice, n);
+    reference::LoadCurveOptions options;
+    options.X_top = 1.0;
+    const model::LoadCurve curve = reference::build_load_curve(g, reference::make_cell(g, grid), options);
+    for (int level = 1; level < g.levels(); ++level) {
+      const double X = curve.level_touchdown[static_cast<std::size_t>(level)];
+      ASSERT_TRUE(std::isfinite(X)) << "level " << level << " touches on the curve";
+      reference::LevelClosure closure(g, level, grid);
+      const reference::LevelClosed closed = closure.at(X);
+      const double drop = c.drops[static_cast<std::size_t>(level - 1)];
+      std::printf("%s l = %.4g, level %d of %d: X* = %.9g, closure %.9g against drop %.9g (%.1e)\n",
+                  model::lattice_name(c.lattice).c_str(), c.l, level, g.levels(), X, closed.drop, drop, closed.drop / drop - 1.0);
+      EXPECT_FALSE(closed.every_drop);
+      EXPECT_NEAR(closed.drop, drop, 1e-6 * drop) << "level " << level;
+      // Just short of X* the level has not closed its drop; just past, it has.
+      EXPECT_LT(closure.at(X * (1.0 - 1e-4)).drop, drop);
+      EXPECT_GT(closure.at(X * (1.0 + 1e-4)).drop, drop);
+    }
+  }
+}
+
+// Past full contact of the other levels, every node is pressed: the level touches at any
+// drop it can have, and the closure says so with the deepest (where the tall caps' own
+// surfaces reach its tips: on the square lattice's centre, two tall caps' C r^2 at r = l/sqrt(2)
+// in R, so l^2/4 for C = 1/2).
+TEST(LevelClosure, says_every_drop_past_full_contact) {
+  const model::Shape shape{2, 0.5};
+  const double l = 2.0;
+  const model::CellGeometry g = model::lattice_cell(LatticeKind::square, l, shape, {0.1});
+  reference::LevelClosure closure(g, 1, reference::lattice_grid(g, LatticeKind::square, 16));
+  EXPECT_NEAR(closure.deepest(), l * l / 4.0, 1e-12);
+  const reference::LevelClosed closed = closure.at(10.0);
+  EXPECT_TRUE(closed.every_drop);
+  EXPECT_EQ(closed.drop, closure.deepest());
+  EXPECT_EQ(closure.at(0.0).drop, 0.0);
+  EXPECT_THROW(reference::LevelClosure(g, 0, reference::lattice_grid(g, LatticeKind::square, 16)), std::invalid_argument);
+  EXPECT_THROW(reference::LevelClosure(g, 2, reference::lattice_grid(g, LatticeKind::square, 16)), std::invalid_argument);
+}
