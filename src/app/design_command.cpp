@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <regex>
@@ -17,11 +19,16 @@
 #include "app/point_command.hpp"
 #include "app/surface_command.hpp"
 #include "input/scaled_value.hpp"
+#include "input/value_parsing.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
 #include "model/numerics/number_text.hpp"
+#include "model/numerics/root_finding.hpp"
 #include "model/point/point_evaluation.hpp"
+#include "model/problem/cell_geometry.hpp"
 #include "model/problem/parameter.hpp"
+#include "reference/level_closure.hpp"
+#include "reference/periodic_grid.hpp"
 
 namespace po = boost::program_options;
 
@@ -39,6 +46,7 @@ constexpr double kMaxTemperature = 1e4;
 constexpr const char* kUsage =
     "usage: punchsweep design --require \"touch within 1s at 30kPa\" [--require \"never at 5kPa\" ...]\n"
     "         --material FILE --R R --l L --s S [--C C] [--temperature 20..40C]\n"
+    "         [--lattice square|hexagonal [--dh2 DH2] [--grid N|auto]] [--find dh|dh2|l|pressure]\n"
     "         [--tolerance \"dh=0.5um, pressure=10%\"] [--format table|json] [point options]";
 
 constexpr const char* kRequirementForms =
@@ -57,7 +65,14 @@ struct DesignArgs {
   std::string find = "dh";
   std::optional<std::string> dh;
   std::string pressure_option, pressure_range;  ///< --find pressure: "--pressure", "1kPa..100kPa"
+  /// A texture of `surface` (docs/design.md, "Any texture"): --lattice, --dh2 (a third
+  /// level's drop, fixed unless --find dh2), --grid (nodes per pitch, or auto) and --level
+  /// (whose touch the requirements state, with --find l or pressure).
+  std::optional<std::string> lattice, dh2, grid, level;
   input::Keywords point;
+  /// Whether the design is of a texture's cell (any texture option given, or --find dh2),
+  /// solved by its boundary elements, rather than of the paper's lattice by the model.
+  bool texture() const { return lattice || dh2 || grid || level || find == "dh2"; }
 };
 
 DesignArgs split_keywords(const input::Keywords& keywords) {
@@ -93,6 +108,14 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
       a.find = value == "pressure" ? std::string(model::kPressure) : value;
     } else if (name == "dh") {
       a.dh = value;
+    } else if (name == "lattice") {
+      a.lattice = value;
+    } else if (name == "dh2") {
+      a.dh2 = value;
+    } else if (name == "grid") {
+      a.grid = value;
+    } else if (name == "level") {
+      a.level = value;
     } else if (name == "pbar" || name == "pressure") {
       a.pressure_option = "--" + name;
       a.pressure_range = value;
@@ -103,8 +126,25 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
   if (a.format != "table" && a.format != "json") {
     throw input::UsageError("--format = " + a.format + " is not one of: table, json");
   }
-  if (a.find != "dh" && a.find != "l" && a.find != model::kPressure) {
-    throw input::UsageError("--find = " + a.find + " is not one of: dh, l, pressure");
+  if (a.find != "dh" && a.find != "dh2" && a.find != "l" && a.find != model::kPressure) {
+    throw input::UsageError("--find = " + a.find + " is not one of: dh, dh2, l, pressure");
+  }
+  if (a.find == "dh2" && a.dh2) {
+    throw input::UsageError("--dh2: the design finds dh2 (--find dh2); state what it must do with --require");
+  }
+  if (a.find == "dh2" && !a.dh) {
+    throw input::UsageError("--find dh2 needs --dh, the drop of level 1 (the third level's is what the design finds)");
+  }
+  if (a.level && a.find != "l" && a.find != model::kPressure) {
+    throw input::UsageError("--level: with --find " + a.find + " the requirements are on the level whose drop is found; "
+                            "--level names the level they are on with --find l or pressure");
+  }
+  if (a.level && *a.level != "1" && *a.level != "2") {
+    throw input::UsageError("--level = " + *a.level + " is outside its range: 1, or 2 with --dh2");
+  }
+  if (a.level && *a.level == "2" && !a.dh2) throw input::UsageError("--level 2 needs --dh2, the drop of level 2");
+  if (a.lattice && *a.lattice != "square" && *a.lattice != "hexagonal") {
+    throw input::UsageError("--lattice = " + *a.lattice + " is not one of: square, hexagonal");
   }
   const bool by_pressure = a.find == model::kPressure;
   const std::string find_name = by_pressure ? "pressure" : a.find;
@@ -112,7 +152,7 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
     throw input::UsageError("--dh: the design finds dh; state what it must do with --require (or --find l, the "
                             "pitch for a given dh, or --find pressure)");
   }
-  if (a.find != "dh" && !a.dh) {
+  if ((a.find == "l" || a.find == model::kPressure) && !a.dh) {
     throw input::UsageError("--find " + find_name + " needs --dh, the height difference the " +
                             (by_pressure ? "pressure" : "pitch") + " is for");
   }
@@ -363,18 +403,77 @@ std::string pressure_text(double pbar, const input::PointInputs& in) {
   return model::number_text(pbar * u.per, 4) + " " + u.unit;
 }
 
-DesignResult design(const DesignArgs& a) {
+/// A texture's search for a pitch or pressure stops within this of the value's log.
+constexpr double kTextureSearchTolerance = 1e-9;
+
+/// --dh2 TEXT: the third level's drop, read as `surface` reads it (a length with --R, or in
+/// R; >= 0).
+double read_drop(const std::string& name, const std::string& text, const input::PhysicalScales& scales) {
+  po::options_description o;
+  o.add_options()(name.c_str(), po::value<std::string>());
+  const po::variables_map vm = input::parse_keywords({{name, text}}, o, "design");
+  return input::read_parameter(vm, *model::texture_parameter(model::kThirdLevelDrop), &scales);
+}
+
+/// The drop the searched level of a lattice texture closes by a time (docs/design.md, "Any
+/// texture"): its closure at the creep-weighted load of that time (reference::LevelClosure,
+/// exact where the model's dh_touching_at is for the paper's lattice: until the level
+/// touches, its drop changes nothing), one closure per corner's pitch and shape factor, on
+/// `nodes` nodes a pitch. Each load is solved once (temperatures and corners that meet the
+/// same load share it).
+class TextureGap {
+ public:
+  TextureGap(model::LatticeKind lattice, std::vector<double> drops, int level, int nodes)
+      : lattice_(lattice), drops_(std::move(drops)), level_(level), nodes_(nodes) {}
+
+  /// The drop closed by time t (0: at once; +infinity: ever) under the problem's pressure
+  /// and load on `creep`, at its pitch and shape; +infinity where the law creeps without end.
+  double operator()(const model::ContactProblem& problem, const model::CreepLaw& creep, double t) {
+    const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
+    const double X = t == 0.0 ? load.initial() : std::isinf(t) ? load.final() : load(t);
+    if (std::isinf(X)) return kInf;
+    const std::array<double, 3> key{problem.l, problem.shape.C, X};
+    if (const auto found = known_.find(key); found != known_.end()) return found->second;
+    auto& closure = closures_[{problem.l, problem.shape.C}];
+    if (!closure) {
+      const model::CellGeometry g = model::lattice_cell(lattice_, problem.l, problem.shape, drops_);
+      closure = std::make_unique<reference::LevelClosure>(g, level_, reference::lattice_grid(g, lattice_, nodes_));
+    }
+    const reference::LevelClosed closed = closure->at(X);
+    every_drop_ = every_drop_ || closed.every_drop;
+    ++solves_;
+    return known_[key] = closed.drop;
+  }
+  /// Whether some load pressed the level's tips at any drop it can have (its bound is then
+  /// the deepest at which it is still a punch of its own).
+  bool every_drop() const { return every_drop_; }
+  int solves() const { return solves_; }
+  int level() const { return level_; }
+
+ private:
+  model::LatticeKind lattice_;
+  std::vector<double> drops_;
+  int level_;
+  int nodes_;
+  std::map<std::array<double, 3>, double> known_;
+  std::map<std::pair<double, double>, std::unique_ptr<reference::LevelClosure>> closures_;
+  bool every_drop_ = false;
+  int solves_ = 0;
+};
+
+DesignResult design_pass(const DesignArgs& a, int nodes) {
   if (a.requirement_texts.empty()) throw input::UsageError("give at least one --require (" + std::string(kRequirementForms) + ")");
   const input::PointMaterial material = input::find_point_material(a.point);
   const po::options_description opts = point_options(material);
-  // A texture option of `surface` (--lattice, --dh2, --cell, ...) was "unknown option" with
-  // no hint: the design searches the paper's two-level square lattice alone.
-  const po::options_description texture = surface_options(material);
+  // The texture options of `surface` the design does not take (a cell file, a height map,
+  // a scattered supercell) are refused by name, not as "unknown option".
+  const po::options_description texture_options = surface_options(material);
   for (const auto& [name, value] : a.point) {
-    if (opts.find_nothrow(name, false) == nullptr && texture.find_nothrow(name, false) != nullptr) {
-      throw input::UsageError("--" + name + " is a texture option of `punchsweep surface` and `surface-map`: design searches "
-                              "the two-level square lattice alone (--l, --dh, --s, --C); for another texture map its drop, "
-                              "pitch or pressure with `punchsweep surface-map` and read the window off its t*");
+    if (opts.find_nothrow(name, false) == nullptr && texture_options.find_nothrow(name, false) != nullptr) {
+      throw input::UsageError("--" + name + " is a texture option of `punchsweep surface` that design does not take: design "
+                              "searches lattices (--lattice square or hexagonal, --dh2 for a third level, --grid); for a cell "
+                              "file, a height map or a scattered supercell, map its drop, pitch or pressure with "
+                              "`punchsweep surface-map` and read the window off its t*");
     }
   }
   const bool has_temperature =
@@ -423,7 +522,7 @@ DesignResult design(const DesignArgs& a) {
     range_lo_text = trimmed(range_text.substr(0, dots));
     range_hi_text = trimmed(range_text.substr(dots + 2));
   }
-  input::Keywords base_keywords = with(a.point, "dh", searched ? *a.dh : "0");
+  input::Keywords base_keywords = with(a.point, "dh", searched || a.find == "dh2" ? *a.dh : "0");
   if (by_l) base_keywords = with(base_keywords, "l", range_lo_text);
   // The scales first (a requirement's units need them): at a nominal pressure.
   std::optional<double> first_T;
@@ -464,8 +563,28 @@ DesignResult design(const DesignArgs& a) {
     }
   }
   out.inputs = point_at(with(probe, "pbar", input::json_number(by_pressure ? out.search_lo : requirements.front().pbar)), "");
-  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C, dh0 = out.inputs.problem.dh;
-  if (searched && box.dh > dh0) throw input::UsageError("--tolerance dh: larger than --dh itself");
+  // A texture: the lattice, each level's drop (the searched level's found, the others fixed)
+  // and the level the requirements are on.
+  std::optional<TextureGap> texture;
+  double dh2 = kNaN;
+  if (a.texture()) {
+    DesignTexture& t = out.texture.emplace();
+    t.lattice = a.lattice.value_or("square");
+    if (a.dh2) dh2 = read_drop("dh2", *a.dh2, out.inputs.scales);
+    t.level = a.find == "dh2" || (a.level && *a.level == "2") ? 2 : 1;
+    t.levels = a.dh2 || a.find == "dh2" ? 3 : 2;
+    t.nodes = nodes;
+    std::vector<double> drops{a.find == "dh" ? 0.0 : out.inputs.problem.dh};  // (the searched level's is set by the closure)
+    if (t.levels == 3) drops.push_back(a.find == "dh2" ? 0.0 : dh2);
+    t.drops = drops;
+    texture.emplace(t.lattice == "square" ? model::LatticeKind::square : model::LatticeKind::hexagonal, drops, t.level, nodes);
+  }
+  const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C;
+  // The drop of the level the requirements are on, where it is given (with --find l or pressure).
+  const double dh0 = texture && texture->level() == 2 ? dh2 : out.inputs.problem.dh;
+  if (searched && box.dh > dh0) {
+    throw input::UsageError(std::string("--tolerance dh: larger than --") + (dh0 == dh2 ? "dh2" : "dh") + " itself");
+  }
   // The quantity's own tolerance, which moves its edges inward.
   const OwnTolerance own = own_tolerance(box, a.find);
   const std::vector<double> temperatures = out.temperatures.empty() ? std::vector<double>{kNaN} : out.temperatures;
@@ -522,7 +641,8 @@ DesignResult design(const DesignArgs& a) {
             // quantity's value (the corner's pitch where none is searched).
             const auto gap_at = [&](double x) {
               (by_pressure ? in.problem.pbar0 : in.problem.l) = x;
-              const double g = model::dh_touching_at(in.problem, *in.creep, r.time);
+              const double g = texture ? (*texture)(in.problem, *in.creep, r.time)
+                                       : model::dh_touching_at(in.problem, *in.creep, r.time);
               if (std::isnan(g)) {
                 throw std::runtime_error("the gap closed at " + std::string(by_pressure ? "pbar = " : "l = ") +
                                          model::number_text(x, 17) + ", " + in.describe() + " is not a number");
@@ -551,6 +671,12 @@ DesignResult design(const DesignArgs& a) {
                 value = lo;  // touches by then over the whole range
               } else if (!(g_hi >= dh)) {
                 value = kInf;  // not within the range
+              } else if (texture) {
+                // Each gap is a contact solve of the cell: Brent's method in the log, to
+                // 1e-9 of the value (the grid's own error is some 1e-4), in 8-12 solves
+                // where bisection to 1e-15 took 50.
+                const auto f = [&](double y) { return gap_at(std::exp(y)) - dh; };
+                value = std::exp(model::brent(f, std::log(lo), std::log(hi), g_lo - dh, g_hi - dh, kTextureSearchTolerance).x);
               } else {
                 double a_ = std::log(lo), b_ = std::log(hi);
                 for (int it = 0; it < 60 && b_ - a_ > 1e-15 * std::abs(b_); ++it) {
@@ -614,7 +740,7 @@ DesignResult design(const DesignArgs& a) {
     }
     if (!touch && endless) {
       out.notes.push_back("'" + r.text + "' cannot hold: this law creeps without end, so the second level touches "
-                          "at last whatever " + (searched ? find_name : "dh"));
+                          "at last whatever " + (searched ? find_name : a.find));
     } else if (searched && std::isinf(b.edge)) {
       const auto value = [&](double x) {
         if (by_pressure) return pressure_text(x, out.inputs);
@@ -627,7 +753,82 @@ DesignResult design(const DesignArgs& a) {
     }
     out.bounds.push_back(std::move(b));
   }
+  if (texture) {
+    out.texture->every_drop = texture->every_drop();
+    out.texture->solves = texture->solves();
+    if (texture->every_drop()) {
+      out.notes.push_back("at some corner the other levels' surfaces press level " + std::to_string(out.texture->level) +
+                          "'s tips at any drop it can have: its bound there is the deepest drop at which it is still a cap "
+                          "of its own, below which the taller caps hide it");
+    }
+  }
   return out;
+}
+
+/// The grid a texture's design starts from, the finest --grid auto takes, and the
+/// accuracy it holds every edge to (its relative move from the grid of half the nodes).
+constexpr int kAutoGridStart = 64;
+constexpr int kAutoGridMax = 256;
+constexpr double kAutoGridAccuracy = 1e-3;
+constexpr int kMaxGrid = 2048;
+
+/// The largest relative move of a requirement's edge between two passes (0 where both are
+/// the same infinity).
+double edge_move(const DesignResult& coarse, const DesignResult& fine) {
+  double move = 0.0;
+  for (std::size_t k = 0; k < fine.bounds.size() && k < coarse.bounds.size(); ++k) {
+    const double a = coarse.bounds[k].edge, b = fine.bounds[k].edge;
+    if (a == b) continue;
+    move = std::max(move, std::isfinite(a) && std::isfinite(b) ? std::abs(b - a) / std::max(std::abs(b), 1e-300) : kInf);
+  }
+  return move;
+}
+
+/// The design: the paper's lattice by the model; a texture on --grid N, or (--grid auto)
+/// on grids of doubling nodes from kAutoGridStart until no edge moves by more than
+/// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
+DesignResult design(const DesignArgs& a) {
+  if (!a.texture()) return design_pass(a, 0);
+  const std::string grid = a.grid.value_or("auto");
+  if (grid != "auto") {
+    int nodes = -1;
+    try {
+      nodes = input::parse_integer(grid, "--grid");
+    } catch (const input::UsageError&) {
+    }
+    if (nodes < 4 || nodes > kMaxGrid || nodes % 2 != 0) {
+      throw input::UsageError("--grid = " + grid + " is outside its range: an even integer in [4, " + std::to_string(kMaxGrid) +
+                              "], or auto");
+    }
+    return design_pass(a, nodes);
+  }
+  DesignResult coarse = design_pass(a, kAutoGridStart);
+  for (int nodes = 2 * kAutoGridStart;; nodes *= 2) {
+    DesignResult fine = design_pass(a, nodes);
+    fine.texture->coarser = coarse.texture->nodes;
+    fine.texture->grid_move = edge_move(coarse, fine);
+    fine.texture->solves += coarse.texture->solves;
+    if (fine.texture->grid_move <= kAutoGridAccuracy) return fine;
+    if (2 * nodes > kAutoGridMax) {
+      fine.notes.push_back("--grid auto: an edge still moves by " + model::number_text(fine.texture->grid_move, 2) +
+                           " of itself from " + std::to_string(coarse.texture->nodes) + " to " + std::to_string(nodes) +
+                           " nodes a pitch, more than the stated " + model::number_text(kAutoGridAccuracy, 2) +
+                           "; give a finer --grid (up to " + std::to_string(kMaxGrid) + ")");
+      return fine;
+    }
+    coarse = std::move(fine);
+  }
+}
+
+/// Whether the window is of a level's drop (dh, or dh2 of a third level), not a searched range.
+bool finds_drop(const DesignResult& d) { return d.quantity == "dh" || d.quantity == "dh2"; }
+
+/// The name of the drop of the level the requirements are on: dh, or dh2 (level 2 of three).
+std::string drop_name(const DesignResult& d) { return d.texture && d.texture->level == 2 ? "dh2" : "dh"; }
+
+/// That drop, in R (for the paper's lattice, its dh).
+double level_drop(const DesignResult& d) {
+  return d.texture ? d.texture->drops[static_cast<std::size_t>(d.texture->level - 1)] : d.inputs.problem.dh;
 }
 
 /// The geometry and material of the design, without what it finds or varies (the
@@ -646,9 +847,26 @@ std::string geometry_text(const input::PointInputs& in, const std::string& quant
   return text;
 }
 
+/// A texture's design in words: its lattice and levels, the level the requirements are on,
+/// the fixed drops and the grid (empty for the paper's lattice by the model).
+std::string texture_text(const DesignResult& d, const Unit& L) {
+  if (!d.texture) return "";
+  const DesignTexture& t = *d.texture;
+  std::string text = t.lattice + " lattice of " + std::to_string(t.levels) + " levels; the requirements on level " +
+                     std::to_string(t.level);
+  if (t.levels == 3 && d.quantity != "dh2") {
+    text += "; level 2 at dh2 = " + model::number_text(t.drops[1] * L.per, 4) + " " + L.unit;
+  }
+  text += "; the cell's boundary elements on " + std::to_string(t.nodes) + " nodes a pitch";
+  if (t.coarser > 0) {
+    text += " (--grid auto: edges within " + model::number_text(t.grid_move, 2) + " of those on " + std::to_string(t.coarser) + ")";
+  }
+  return text;
+}
+
 std::string tolerance_text(const DesignResult& d, const Unit& L) {
   std::vector<std::string> parts;
-  if (d.tolerance.dh > 0) parts.push_back("dh +- " + model::number_text(d.tolerance.dh * L.per, 4) + " " + L.unit);
+  if (d.tolerance.dh > 0) parts.push_back(drop_name(d) + " +- " + model::number_text(d.tolerance.dh * L.per, 4) + " " + L.unit);
   if (d.tolerance.pressure > 0) {
     parts.push_back("pressure +- " + (d.tolerance.pressure_absolute ? pressure_text(d.tolerance.pressure, d.inputs)
                                                           : model::number_text(100 * d.tolerance.pressure, 4) + "%"));
@@ -674,16 +892,16 @@ std::string where_text(const RequirementBound& r, const DesignResult& d, const U
   if (d.quantity != model::kPressure) t += pressure_text(b.pbar, d.inputs) + ", ";
   if (d.quantity != "l" && d.tolerance.l > 0) t += "l = " + model::number_text(b.l * L.per, 4) + " " + L.unit + ", ";
   if (d.tolerance.C > 0) t += "C = " + model::number_text(b.C, 4) + ", ";
-  if (d.quantity != "dh") {
-    t += "dh = " + model::number_text(b.dh * L.per, 4) + " " + L.unit;
+  if (!finds_drop(d)) {
+    t += drop_name(d) + " = " + model::number_text(b.dh * L.per, 4) + " " + L.unit;
   } else if (d.tolerance.dh > 0) {
-    t += std::string("dh ") + (touch ? "+ " : "- ") + model::number_text(d.tolerance.dh * L.per, 4) + " " + L.unit;
+    t += drop_name(d) + (touch ? " + " : " - ") + model::number_text(d.tolerance.dh * L.per, 4) + " " + L.unit;
   }
   if (t.size() >= 2 && t.compare(t.size() - 2, 2, ", ") == 0) t.resize(t.size() - 2);
   return t;
 }
 
-/// What the window is of, as the table says it: dh, l or pressure.
+/// What the window is of, as the table says it: dh, dh2, l or pressure.
 std::string quantity_name(const DesignResult& d) { return d.quantity == model::kPressure ? "pressure" : d.quantity; }
 
 /// The window's quantity in its physical unit (R's for dh and l, kPa or the like for the
@@ -697,7 +915,7 @@ Unit quantity_unit(const DesignResult& d) {
 std::string miss_text(const DesignResult& d, const Unit& L) {
   const std::string q = quantity_name(d);
   if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
-    return q == "dh" ? "no dh: a 'never' requirement cannot hold for this law"
+    return finds_drop(d) ? "no " + q + ": a 'never' requirement cannot hold for this law"
                      : "no " + std::string(q == "l" ? "pitch" : "pressure") +
                            " of the range searched: a requirement holds at none of them (see the notes)";
   }
@@ -706,7 +924,7 @@ std::string miss_text(const DesignResult& d, const Unit& L) {
                   " " + L.unit + ", short of both edges by " + model::number_text(0.5 * gap * L.per, 4) + " " + L.unit;
   // The window with an exact value (the bounds before the quantity's own tolerance) and the
   // tolerance that would leave it a point.
-  double exact_lower = d.quantity == "dh" ? 0.0 : d.search_lo, exact_upper = d.quantity == "dh" ? kInf : d.search_hi;
+  double exact_lower = finds_drop(d) ? 0.0 : d.search_lo, exact_upper = finds_drop(d) ? kInf : d.search_hi;
   for (const RequirementBound& b : d.bounds) {
     (b.upper ? exact_upper : exact_lower) =
         b.upper ? std::min(exact_upper, b.binding.value) : std::max(exact_lower, b.binding.value);
@@ -744,7 +962,21 @@ std::string json_of(const DesignResult& d) {
     << ", \"margin\": " << num(finite ? 0.5 * (d.upper - d.lower) * Q.per : kNaN)
     << ", \"length_unit\": " << input::json_string(L.unit) << ", \"R\": " << num(L.per)
     << ", \"dh_tolerance\": " << num(d.tolerance.dh * L.per) << ", \"E0_star_Pa\": " << num(E0_star_Pa) << "}";
-  if (d.quantity != "dh") s << ",\n \"search\": [" << num(d.search_lo) << ", " << num(d.search_hi) << "]";
+  if (!finds_drop(d)) s << ",\n \"search\": [" << num(d.search_lo) << ", " << num(d.search_hi) << "]";
+  s << ",\n \"texture\": ";
+  if (d.texture) {
+    const DesignTexture& t = *d.texture;
+    s << "{\"lattice\": " << input::json_string(t.lattice) << ", \"levels\": " << t.levels << ", \"level\": " << t.level
+      << ", \"drops\": [";
+    for (std::size_t k = 0; k < t.drops.size(); ++k) {
+      const bool found = static_cast<int>(k) + 1 == t.level && finds_drop(d);
+      s << (k ? ", " : "") << (found ? "null" : num(t.drops[k]));
+    }
+    s << "], \"grid\": " << t.nodes << ", \"grid_coarser\": " << t.coarser << ", \"grid_move\": " << num(t.grid_move)
+      << ", \"every_drop\": " << (t.every_drop ? "true" : "false") << ", \"solves\": " << t.solves << "}";
+  } else {
+    s << "null";
+  }
   s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs, d.quantity)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
   s << ",\n \"tolerance\": {\"dh\": " << num(d.tolerance.dh) << ", \"pressure\": " << num(d.tolerance.pressure)
     << ", \"pressure_is\": \"" << (d.tolerance.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
@@ -784,8 +1016,9 @@ void write_table(std::ostream& out, const DesignResult& d) {
   const auto len = [&](double v) { return model::number_text(v * Q.per, 4) + " " + Q.unit; };
   const std::string q = quantity_name(d);
   out << "punchsweep design: the "
-      << (q == "dh" ? "height difference dh" : q == "l" ? "pitch l" : "nominal pressure") << " that meets every requirement\n"
-      << "  " << geometry_text(d.inputs, d.quantity) << "\n  checked at ";
+      << (q == "dh" ? "height difference dh" : q == "dh2" ? "drop dh2 of level 2" : q == "l" ? "pitch l" : "nominal pressure") << " that meets every requirement\n"
+      << "  " << geometry_text(d.inputs, d.quantity) << "\n"
+      << (d.texture ? "  " + texture_text(d, L) + "\n" : "") << "  checked at ";
   if (d.temperatures.size() > 1) {
     out << "every temperature of " << model::number_text(d.temperatures.front(), 4) << " to "
         << model::number_text(d.temperatures.back(), 4) << " degC (" << d.temperatures.size() << " temperatures)";
@@ -796,15 +1029,15 @@ void write_table(std::ostream& out, const DesignResult& d) {
   }
   const std::string box = tolerance_text(d, L);
   out << (box.empty() ? "" : " and every corner of the tolerance box " + box) << "\n";
-  if (q != "dh") {
+  if (!finds_drop(d)) {
     out << "  " << (q == "l" ? "pitches" : "pressures") << " searched: " << len(d.search_lo) << " to " << len(d.search_hi)
-        << (q == "l" ? "" : " (dh = " + model::number_text(d.inputs.problem.dh * L.per, 4) + " " + L.unit + ")") << "\n";
+        << (q == "l" ? "" : " (" + drop_name(d) + " = " + model::number_text(level_drop(d) * L.per, 4) + " " + L.unit + ")") << "\n";
   }
   out << "\n";
   // dh: touching by t is dh <= (closed), never is dh > (open); l: touching is l >=, never l <.
   const auto sign = [&](const RequirementBound& b) {
     const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
-    return q == "dh" ? (touch ? "<= " : "> ") : (touch ? ">= " : "< ");
+    return finds_drop(d) ? (touch ? "<= " : "> ") : (touch ? ">= " : "< ");
   };
   for (const RequirementBound& b : d.bounds) {
     const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
@@ -820,12 +1053,12 @@ void write_table(std::ostream& out, const DesignResult& d) {
   } else if (std::isinf(d.upper)) {
     out << "window: " << q << " " << (d.lower > 0 ? "> " : ">= ") << len(d.lower) << " (no upper edge)\n";
   } else {
-    const bool open_low = q == "dh" && d.lower > 0;
+    const bool open_low = finds_drop(d) && d.lower > 0;
     out << "window: " << len(d.lower) << (open_low ? " < " : " <= ") << q
-        << (q != "dh" && d.upper < d.search_hi ? " < " : " <= ")
+        << (!finds_drop(d) && d.upper < d.search_hi ? " < " : " <= ")
         << len(d.upper) << "; centre " << len(0.5 * (d.lower + d.upper)) << ", margin +- "
         << len(0.5 * (d.upper - d.lower)) << (tolerance ? " beyond the tolerance" : "") << "\n";
-    if (q != "dh" && (d.lower == d.search_lo || d.upper == d.search_hi)) {
+    if (!finds_drop(d) && (d.lower == d.search_lo || d.upper == d.search_hi)) {
       out << "  (" << (d.lower == d.search_lo ? d.upper == d.search_hi ? "both edges are" : "the lower edge is"
                                                                       : "the upper edge is")
           << " the range searched's, not a requirement's: widen it to see further)\n";
@@ -840,7 +1073,7 @@ int run_design_command(const std::vector<std::string>& args, std::ostream& out) 
   const DesignArgs a = split_keywords(keywords_of(args));
   if (a.help) {
     out << kUsage << "\n\n"
-        << "The window of the height difference dh (or, --find l or pressure, of the pitch or the pressure) that meets every requirement at every temperature of\n"
+        << "The window of the height difference dh (or, --find dh2, l or pressure, of a third level's drop, the pitch or the pressure) that meets every requirement at every temperature of\n"
            "the range and every corner of the tolerance box (exact: the dh whose t* is the requirement's\n"
            "time, at each), its centre and margin, and which requirement binds each edge.\n\n"
            "  --require TEXT      "
@@ -854,6 +1087,12 @@ int run_design_command(const std::vector<std::string>& args, std::ostream& out) 
            "  --find pressure     the window of the nominal pressure instead, for --dh DH, searched over\n"
            "                      --pressure A..B (1kPa..200kPa; or --pbar); the requirements then name no\n"
            "                      pressure ('touch within 1min'), the pressure's tolerance moves its edges inward\n"
+           "  --lattice KIND      a texture: square or hexagonal (surface's lattices), solved by its cell's boundary\n"
+           "                      elements: each bound from one contact solve at the requirement's load (docs/design.md)\n"
+           "  --dh2 DH2           a third level this far down (fixed; or --find dh2, its window for a given --dh)\n"
+           "  --level 1|2         with --find l or pressure on a texture: the level the requirements are on (default 1)\n"
+           "  --grid N|auto       a texture's nodes per pitch (auto: from 64, doubled until no edge moves by more\n"
+           "                      than 1e-3 of itself, up to 256)\n"
            "and the point's options but the pressure, and --dh but with --find l or pressure (punchsweep point --help).\n"
            "Example: punchsweep design --material materials/epoxy.ini --R 50um --l 250um --s 2 \\\n"
            "           --temperature 20..40C --require \"touch within 1s at 30kPa\" --require \"never at 5kPa\" \\\n"

@@ -10,6 +10,7 @@
 /// value whose gap is dh, found by bisection.
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,9 +68,26 @@ struct RequirementBound {
   std::vector<DesignBound> bounds;  ///< temperature-major, then corner
 };
 
+/// A texture's design (docs/design.md, "Any texture"): a lattice of two or three levels,
+/// solved by its cell's boundary elements.
+struct DesignTexture {
+  std::string lattice = "square";  ///< square or hexagonal
+  int levels = 2;                  ///< 2, or 3 with a third level (--dh2)
+  int level = 1;                   ///< the level the requirements are on (whose drop --find dh or dh2 finds)
+  std::vector<double> drops;       ///< per level from 1, in R (the searched level's 0: found)
+  int nodes = 0;                   ///< nodes per pitch of the answer's grid
+  /// --grid auto: the grid of half the nodes the answer was held to (0 where not held), and
+  /// the largest relative move of an edge between the two.
+  int coarser = 0;
+  double grid_move = 0.0;
+  bool every_drop = false;  ///< some load pressed the level at any drop it can have (its bound is its deepest)
+  int solves = 0;           ///< contact solves of the answer's grid
+};
+
 /// The answer: the window, each requirement's bound, and what the user should know.
 struct DesignResult {
-  std::string quantity = "dh";  ///< what the window is of: dh, l (--find l) or pbar (--find pressure)
+  std::string quantity = "dh";  ///< what the window is of: dh, dh2 (--find dh2), l (--find l) or pbar (--find pressure)
+  std::optional<DesignTexture> texture;  ///< a lattice texture's design; none for the paper's lattice by the model
   double search_lo = 0.0, search_hi = 0.0;  ///< --find l or pressure: the range searched (R or E0*)
   input::PointInputs inputs;  ///< the geometry and material (at the first requirement's pressure)
   std::vector<double> temperatures;

@@ -140,11 +140,11 @@ def test_bad_requests_are_refused_by_name():
         (["--require", "never at 5kPa", "--tolerance", "height=1um"], "'height' is no tolerance the design takes"),
         (["--require", "never at 5kPa", "--temperature", "40..20C"], "the range's end is not above its start"),
         (["--require", "never at 5kPa", "--temperature", "-150..20C"], "outside its range"),
-        # A texture option of `surface` was "unknown option --lattice" with no hint.
-        (["--require", "never at 5kPa", "--lattice", "hexagonal"],
-         "--lattice is a texture option of `punchsweep surface` and `surface-map`: design searches the two-level "
-         "square lattice alone"),
-        (["--require", "never at 5kPa", "--dh2", "5um"], "--dh2 is a texture option"),
+        # A texture option of `surface` that design does not take was "unknown option" with no
+        # hint (--lattice and --dh2 it takes: test_design_texture.py).
+        (["--require", "never at 5kPa", "--height-map", "scan.npy"],
+         "--height-map is a texture option of `punchsweep surface` that design does not take: design searches "
+         "lattices"),
     ]
     for extra, words in cases:
         r = cli("design", "--material", TRUTH, *GEOMETRY, *extra)

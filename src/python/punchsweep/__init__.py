@@ -238,7 +238,10 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
     ("20..40C") and every corner of `tolerance` ("dh=0.5um, pressure=10%" or {"dh": "0.5um",
     "pressure": "10%"}). Or, with find="l" or find="pressure" and dh="8um", the window of the
     pitch (l="150um..400um", the range searched) or of the nominal pressure
-    (pressure="1kPa..200kPa"; the requirements then name no pressure). Returns the command's
+    (pressure="1kPa..200kPa"; the requirements then name no pressure). For a texture,
+    lattice="hexagonal" (or "square"), dh2="5um" (a third level; find="dh2" gives its window),
+    level=2 (with find="l" or "pressure": the level the requirements are on) and grid=N or
+    "auto" (the cell's nodes a pitch); the result's "texture" says which. Returns the command's
     JSON as a dict (docs/design.md): lower, upper, empty, centre, margin (in R, or E0* for the
     pressure), physical (the same in the physical unit), requirements (each with its edge,
     binds_at and every bound), miss (where empty), notes. ValueError with the command's

@@ -1,0 +1,146 @@
+"""`punchsweep design` for a texture (issue 49): the window of a level's drop, of the pitch or of
+the pressure on a square or hexagonal lattice of two or three levels, from one contact solve of
+the cell per load (the level's closure, reference/level_closure.hpp). Every edge is checked
+with `punchsweep surface` (the load curve of the texture at the edge: a march in load with a
+bisection of each site's touchdown, another code path than the design's) on the design's own
+grid: there t* is the requirement's time, and 1e-3 of the value either side of the edge t*
+crosses it."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+TRUTH = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+# The study's mould: a hexagonal lattice of 60 um caps on a 200 um pitch, a third level 5 um
+# down.
+MOULD = ["--R", "60um", "--s", "2", "--lattice", "hexagonal"]
+
+
+def cli(*args) -> subprocess.CompletedProcess:
+    return subprocess.run([BINARY, *map(str, args)], capture_output=True, text=True)
+
+
+def design(*args) -> dict:
+    r = cli("design", "--material", TRUTH, *MOULD, *args, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def t_star(level: int, grid: int, l_um: float, dh_um: float, dh2_um: float | None, p_kPa: float, T: float) -> float:
+    """Level `level`'s t* in s by `surface` on `grid` nodes a pitch (NaN for never)."""
+    args = ["surface", "--material", TRUTH, *MOULD, "--l", f"{l_um!r}um", "--dh", f"{dh_um!r}um",
+            "--pressure", f"{p_kPa!r}kPa", "--temperature", T, "--times", "0.01s, 1s, 1min", "--grid", grid,
+            "--format", "json"]
+    if dh2_um is not None:
+        args += ["--dh2", f"{dh2_um!r}um"]
+    r = cli(*args)
+    assert r.returncode == 0, r.stderr
+    t = json.loads(r.stdout)["levels"][level]["t_star"]
+    return float("nan") if t is None else t
+
+
+def test_the_drop_window_of_a_hexagonal_three_level_mould_is_where_surface_crosses():
+    """Level 1's drop with level 2 at 5 um: "touch within 1s at 30kPa" and "never at 5kPa" at
+    20-40 C. At each edge's binding corner `surface` gives t* = 1 s (never: the level touches
+    only just inside), and 1e-3 of dh either side t* crosses the requirement."""
+    d = design("--l", "200um", "--dh2", "5um", "--temperature", "20..40C", "--require", "touch within 1s at 30kPa",
+               "--require", "never at 5kPa")
+    t = d["texture"]
+    assert (t["lattice"], t["levels"], t["level"], t["drops"][0]) == ("hexagonal", 3, 1, None)
+    assert t["drops"][1] * 60 == pytest.approx(5.0) and t["grid_move"] <= 1e-3 and t["grid_coarser"] * 2 == t["grid"]
+    assert not d["empty"] and d["physical"]["unit"] == "um"
+    touch, never = d["requirements"]
+    grid = t["grid"]
+    # t* falls with temperature: a second is hardest to reach cold.
+    assert touch["side"] == "upper" and touch["binds_at"]["temperature"] == 20
+    upper = touch["edge_physical"]
+    assert t_star(1, grid, 200, upper, 5, 30, 20) == pytest.approx(1.0, rel=1e-5)
+    assert t_star(1, grid, 200, upper * (1 - 1e-3), 5, 30, 20) < 1.0 < t_star(1, grid, 200, upper * (1 + 1e-3), 5, 30, 20)
+    # Never: the relaxed compliance does not shift with temperature, so it binds at each alike.
+    assert never["side"] == "lower" and never["binds_at"]["every_temperature"]
+    lower = never["edge_physical"]
+    assert t_star(1, grid, 200, lower * (1 + 1e-3), 5, 5, 40) != t_star(1, grid, 200, lower * (1 + 1e-3), 5, 5, 40)  # NaN
+    assert t_star(1, grid, 200, lower * (1 - 1e-3), 5, 5, 40) > 0
+    assert lower < upper
+
+
+def test_the_third_levels_drop_window():
+    """--find dh2: level 2's drop with level 1 at 2 um, "touch within 1min at 10kPa" at 30 C."""
+    d = design("--l", "200um", "--dh", "2um", "--find", "dh2", "--temperature", "30", "--grid", "64",
+               "--require", "touch within 1min at 10kPa")
+    assert d["quantity"] == "dh2" and d["texture"]["level"] == 2 and d["texture"]["grid"] == 64
+    upper = d["physical"]["upper"]
+    assert upper > 2.0
+    assert t_star(2, 64, 200, 2, upper, 10, 30) == pytest.approx(60.0, rel=1e-5)
+    assert t_star(2, 64, 200, 2, upper * (1 - 1e-3), 10, 30) < 60.0 < t_star(2, 64, 200, 2, upper * (1 + 1e-3), 10, 30)
+
+
+def test_the_pressure_window_of_the_third_level():
+    """--find pressure --level 2: the pressure that makes level 2 (5 um) touch within a minute
+    but not within a second at 20 and 40 C, each edge where `surface` gives its time."""
+    d = design("--l", "200um", "--dh", "2um", "--dh2", "5um", "--level", "2", "--find", "pressure",
+               "--pressure", "1kPa..100kPa", "--temperature", "20..40C", "--grid", "64",
+               "--require", "touch within 1min", "--require", "no touch within 1s")
+    assert d["quantity"] == "pbar" and d["physical"]["unit"] == "kPa" and not d["empty"]
+    touch, no_touch = d["requirements"]
+    assert touch["binds_at"]["temperature"] == 20 and no_touch["binds_at"]["temperature"] == 40
+    assert t_star(2, 64, 200, 2, 5, touch["edge_physical"], 20) == pytest.approx(60.0, rel=1e-5)
+    assert t_star(2, 64, 200, 2, 5, no_touch["edge_physical"], 40) == pytest.approx(1.0, rel=1e-5)
+    assert t_star(2, 64, 200, 2, 5, touch["edge_physical"] * (1 - 1e-3), 20) > 60.0
+
+
+def test_the_pitch_window_of_a_two_level_hexagonal_lattice():
+    """--find l: the pitch for dh = 2 um that touches within a second at 10 kPa and never at 2 kPa."""
+    d = design("--find", "l", "--dh", "2um", "--l", "100um..400um", "--temperature", "20", "--grid", "64",
+               "--require", "touch within 1s at 10kPa", "--require", "never at 2kPa")
+    assert d["quantity"] == "l" and not d["empty"] and d["texture"]["levels"] == 2
+    lower, upper = d["physical"]["lower"], d["physical"]["upper"]
+    assert 100 < lower < upper < 400
+    assert t_star(1, 64, lower, 2, None, 10, 20) == pytest.approx(1.0, rel=1e-5)
+    assert t_star(1, 64, lower * (1 - 1e-3), 2, None, 10, 20) > 1.0
+    never = t_star(1, 64, upper * (1 - 1e-3), 2, None, 2, 20)
+    assert never != never  # NaN: never touches just inside the upper edge
+    assert t_star(1, 64, upper * (1 + 1e-3), 2, None, 2, 20) > 0
+
+
+def test_python_designs_a_texture_as_the_command():
+    py = punchsweep.design(["touch within 1s at 30kPa", "never at 5kPa"], material=TRUTH, R="60um", l="200um", s=2,
+                           lattice="hexagonal", dh2="5um", temperature="20..40C", grid=64)
+    d = design("--l", "200um", "--dh2", "5um", "--temperature", "20..40C", "--grid", "64",
+               "--require", "touch within 1s at 30kPa", "--require", "never at 5kPa")
+    # The same window to rounding: FFTW times its plans (FFTW_MEASURE), and two processes may
+    # pick transforms that round differently (1e-15 of an edge, measured).
+    assert py["texture"] == d["texture"] and py["notes"] == d["notes"]
+    for key in ("lower", "upper", "centre", "margin"):
+        assert py[key] == pytest.approx(d[key], rel=1e-12)
+    for a, b in zip(py["requirements"], d["requirements"]):
+        assert a["edge"] == pytest.approx(b["edge"], rel=1e-12) and a["binds_at"]["temperature"] == b["binds_at"]["temperature"]
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--lattice", "triangular", "--require", "never at 5kPa"], "--lattice = triangular is not one of: square, hexagonal"),
+    (["--find", "dh2", "--require", "never at 5kPa"], "--find dh2 needs --dh"),
+    (["--dh", "2um", "--find", "dh2", "--dh2", "5um", "--require", "never at 5kPa"], "--dh2: the design finds dh2"),
+    (["--level", "2", "--require", "never at 5kPa"], "--level: with --find dh"),
+    (["--dh", "2um", "--find", "pressure", "--pressure", "1kPa..9kPa", "--level", "2", "--require", "never"],
+     "--level 2 needs --dh2"),
+    (["--dh", "2um", "--find", "pressure", "--pressure", "1kPa..9kPa", "--level", "3", "--require", "never"],
+     "--level = 3 is outside its range"),
+    (["--grid", "7", "--require", "never at 5kPa"], "--grid = 7 is outside its range: an even integer in [4, 2048]"),
+    (["--dh2", "-1um", "--require", "never at 5kPa"], "dh2"),
+    (["--supercell", "4", "--require", "never at 5kPa"],
+     "--supercell is a texture option of `punchsweep surface` that design does not take"),
+    (["--cell", "cell.ini", "--require", "never at 5kPa"], "--cell is a texture option"),
+])
+def test_what_the_texture_design_cannot_answer_is_refused_by_name(args, message):
+    lattice = [] if "--lattice" in args else ["--lattice", "hexagonal"]
+    r = cli("design", "--material", TRUTH, *MOULD[:4], *lattice, "--l", "200um", *args)
+    assert r.returncode == 2 and r.stdout == "" and message in r.stderr, r.stderr
