@@ -10,6 +10,7 @@
 
 #include "input/command_options.hpp"
 #include "model/laws/material.hpp"
+#include "model/surface/surface_advisory.hpp"
 
 namespace punchsweep::app {
 
@@ -36,7 +37,7 @@ DropRange drop_range(const model::CellGeometry& geometry, int level) {
 
 /// "physical": the lengths, areas, loads and loads X in R's unit, its square, N and Pa,
 /// where --R and a material give the scales (nothing otherwise).
-void write_physical(std::ostream& out, const SurfaceRun& run) {
+void write_physical(std::ostream& out, const SurfaceRun& run, const model::SurfaceAdvisories& advice) {
   const input::PhysicalScales& scales = run.inputs.scales;
   const std::optional<input::PhysicalUnit> length = input::physical_unit("R", scales);
   const std::optional<input::PhysicalUnit> pressure = input::physical_unit("E0/(1-nu^2)", scales);
@@ -46,12 +47,14 @@ void write_physical(std::ostream& out, const SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "  \"physical\": {\n    \"units\": {\"X\": \"Pa\", \"area\": " << input::json_string(length->units + "^2")
       << ", \"load\": \"N\", \"drop\": " << input::json_string(length->units) << ", \"cell\": " << input::json_string(length->units)
+      << ", \"contact_radius\": " << input::json_string(length->units)
       << "},\n    \"cell\": [" << num(run.geometry.Lx * length->per_scaled) << ", " << num(run.geometry.Ly * length->per_scaled)
       << "],\n    \"levels\": [";
   for (int level = 0; level < L; ++level) {
     const double drop = drop_range(run.geometry, level).least;
     out << (level ? ", " : "") << "{\"drop\": " << num(drop * length->per_scaled) << ", \"X_star\": "
-        << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled) << "}";
+        << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled)
+        << ", \"contact_radius\": " << num(advice.level_radius[static_cast<std::size_t>(level)] * length->per_scaled) << "}";
   }
   out << "],\n    \"series\": {\n";
   const auto series = [&](const std::string& name, auto value, bool last) {
@@ -134,6 +137,21 @@ std::string never_reason(const SurfaceRun& run, bool hidden) {
   return out.str();
 }
 
+/// The advisories' sentences ("" for none): the widest caps' radius and the largest strain,
+/// and the level they are on (each level's radius is in the JSON).
+std::string advisory_reason(const model::SurfaceAdvisories& advice) {
+  if (advice.all.raised.empty()) return "";
+  std::size_t widest = 0;
+  for (std::size_t level = 0; level < advice.level_radius.size(); ++level) {
+    if (advice.level_radius[level] > advice.level_radius[widest]) widest = level;
+  }
+  std::string text = "On the widest caps, level ";
+  text += std::to_string(widest);
+  text += "'s, at the last time: ";
+  text += advice.all.reason(0.0);
+  return text;
+}
+
 /// Where the curve came from: "tables" (the periodic model's) or "cell" (the cell's own
 /// boundary elements).
 std::string curve_source_name(const SurfaceRun& run) { return run.curve_source == CurveSource::tables ? "tables" : "cell"; }
@@ -157,6 +175,9 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
       << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false")
       << ", \"held_to_grid\": " << (run.grid_coarser > 0 ? std::to_string(run.grid_coarser) : std::string("null")) << "},\n";
+  const model::SurfaceAdvisories advice = model::advise_surface(run.geometry, run.history);
+  out << "  \"advisories\": " << input::json_string(advice.all.names()) << ",\n";
+  out << "  \"advisory_reason\": " << input::json_string(advisory_reason(advice)) << ",\n";
   out << "  \"levels\": [";
   const std::vector<char> hidden = hidden_levels(run);
   for (int level = 0; level < L; ++level) {
@@ -170,7 +191,9 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
         << ", \"hidden\": " << (hidden[static_cast<std::size_t>(level)] ? "true" : "false")
         << ", \"t_star_grid_change\": "
         << (run.grid_t_star_change.empty() ? std::string("null") : num(run.grid_t_star_change[static_cast<std::size_t>(level)]))
-        << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)]);
+        << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)])
+        << ", \"contact_radius\": " << num(advice.level_radius[static_cast<std::size_t>(level)])
+        << ", \"advisories\": " << input::json_string(advice.level[static_cast<std::size_t>(level)].names());
     for (const model::TStarDerivative& d : run.derivatives[static_cast<std::size_t>(level)]) {
       out << ", \"dt_star_d" << d.parameter->name << "\": " << num(d.derivative) << ", \"dlog_t_star_dlog_" << d.parameter->name
           << "\": " << num(d.elasticity);
@@ -206,10 +229,10 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
   series("valid", [](const model::SurfaceSnapshot& s) { return s.validity == model::SurfaceValidity::valid ? "true" : "false"; });
   series("reason", [](const model::SurfaceSnapshot& s) { return input::json_string(std::string(model::surface_validity_name(s.validity))); }, true);
   out << "  },\n";
-  write_physical(out, run);
+  write_physical(out, run, advice);
   if (run.stepped) write_check(out, run);
   out << "  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
-      << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\"}\n}\n";
+      << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\", \"contact_radius\": \"R\"}\n}\n";
 }
 
 void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
@@ -233,6 +256,12 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
         << worst << " of itself\n";
   }
   const std::vector<char> hidden = hidden_levels(run);
+  const model::SurfaceAdvisories advice = model::advise_surface(run.geometry, run.history);
+  out << (csv ? "# " : "  ") << "caps: " << run.geometry.sites.size() << " in the cell (";
+  for (int level = 0; level < L; ++level) {
+    out << (level ? ", " : "") << drop_range(run.geometry, level).sites << " of level " << level;
+  }
+  out << ")\n";
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);
@@ -260,6 +289,9 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
           << " never)\n";
     }
   }
+  if (!advice.all.raised.empty()) {
+    out << (csv ? "# " : "  ") << "advisories: " << advice.all.names() << ": " << advisory_reason(advice) << "\n";
+  }
   if (run.stepped) {
     for (int level = 1; level < L; ++level) {
       const std::size_t at = static_cast<std::size_t>(level);
@@ -276,6 +308,7 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
   out << "t" << sep << "X" << sep << "area_fraction" << sep << "sites_touched";
   for (int level = 0; level < L; ++level) out << sep << "area_" << level;
   for (int level = 0; level < L; ++level) out << sep << "load_" << level;
+  for (int level = 0; level < L; ++level) out << sep << "touched_" << level;
   if (run.stepped) out << sep << "check_area_fraction" << sep << "check_sites_touched";
   out << sep << "valid\n";
   for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) {
@@ -283,6 +316,7 @@ void write_table(std::ostream& out, const SurfaceRun& run, bool csv) {
     out << s.t << sep << s.X << sep << s.state.area_fraction << sep << s.state.sites_touched;
     for (double a : s.state.level_area) out << sep << a;
     for (double P : s.level_load) out << sep << P;
+    for (double share : s.state.level_sites_touched) out << sep << share;
     if (run.stepped) out << sep << run.stepped->series[k].area_fraction << sep << run.stepped->series[k].sites_touched;
     out << sep << model::surface_validity_name(s.validity) << "\n";
   }

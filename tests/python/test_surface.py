@@ -259,7 +259,7 @@ def test_physical_units_where_R_and_a_material_give_them():
     out = punchsweep.surface(material=str(truth), R="80um", l="250um", dh="3um", s=2, pressure="20kPa",
                              temperature=23, times="0, 1s, 1min", grid=32)
     physical = out["physical"]
-    assert physical["units"] == {"X": "Pa", "area": "um^2", "load": "N", "drop": "um", "cell": "um"}
+    assert physical["units"] == {"X": "Pa", "area": "um^2", "load": "N", "drop": "um", "cell": "um", "contact_radius": "um"}
     assert physical["cell"] == pytest.approx([250.0, 250.0], rel=1e-12)
     assert physical["levels"][1]["drop"] == pytest.approx(3.0, rel=1e-12)
     E0_star = 20e3 / out["series"]["X"][0]  # X(0+) = pbar for a step, pbar = 20 kPa / E0*

@@ -35,16 +35,20 @@ std::string Advisories::reason(double cap_radius) const {
   return s;
 }
 
-Advisories advise(const ContactProblem& problem, const PointSummary& summary, std::optional<double> cap_radius) {
+Advisories advise(const Shape& shape, double a_max, std::optional<double> cap_radius) {
   Advisories out;
-  out.a_max = std::max(summary.a1_inf, summary.a2_inf);
-  const int s = problem.shape.s;
-  out.strain = 0.2 * problem.shape.C * s * std::pow(out.a_max, s - 1);
+  out.a_max = a_max;
+  const int s = shape.s;
+  out.strain = 0.2 * shape.C * s * std::pow(out.a_max, s - 1);
   if (!std::isfinite(out.a_max)) return out;
-  if (s == 2 && problem.shape.C == 0.5 && out.a_max > kParaboloidBound) out.raised.push_back(Advisory::beyond_paraboloid);
+  if (s == 2 && shape.C == 0.5 && out.a_max > kParaboloidBound) out.raised.push_back(Advisory::beyond_paraboloid);
   if (cap_radius && out.a_max > *cap_radius) out.raised.push_back(Advisory::beyond_cap);
   if (out.strain > kStrainBound) out.raised.push_back(Advisory::large_strain);
   return out;
+}
+
+Advisories advise(const ContactProblem& problem, const PointSummary& summary, std::optional<double> cap_radius) {
+  return advise(problem.shape, std::max(summary.a1_inf, summary.a2_inf), cap_radius);
 }
 
 double cap_base_radius(double height) { return std::sqrt(height * (2.0 - height)); }

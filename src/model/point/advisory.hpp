@@ -34,6 +34,11 @@ struct Advisories {
   std::string reason(double cap_radius) const;
 };
 
+/// The advisories of a cap of `shape` whose contact radius reaches a_max (in R):
+/// beyond_paraboloid for a sphere (s = 2, C = 0.5) past kParaboloidBound, beyond_cap past
+/// `cap_radius` where given, large_strain where 0.2 f'(a_max) exceeds kStrainBound.
+Advisories advise(const Shape& shape, double a_max, std::optional<double> cap_radius = std::nullopt);
+
 /// The advisories of a point: beyond_paraboloid for a sphere (s = 2, C = 0.5) whose a_max
 /// exceeds kParaboloidBound; beyond_cap where `cap_radius` (the cap's base radius, in R) is
 /// given and a_max exceeds it; large_strain where the strain exceeds kStrainBound.
