@@ -377,13 +377,10 @@ def is_surface_map(path: str) -> bool:
 
 
 def open_surface_map(path: str):
-    """A surface map as an xarray Dataset, read lazily: the size of its page is estimated
-    (surface_estimate_mb) before its arrays are read."""
-    import xarray
-    try:
-        return xarray.open_dataset(path, engine="h5netcdf")
-    except (OSError, ValueError) as e:
-        raise pm.MapError(f"{path}: not a readable surface map ({e})") from None
+    """A surface map as an xarray Dataset by the one reader every map goes through (pm.open_map:
+    lengths in R's unit, pressures in kPa where the map has a material and R), read lazily:
+    the size of its page is estimated (surface_estimate_mb) before its arrays are read."""
+    return pm.open_map(path)
 
 
 def movable_axes(ds) -> tuple[str, ...]:
@@ -517,8 +514,9 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str, steps: dict
     for n in names:
         values = np.asarray(ds[n].values, dtype=float)
         log = values.size > 2 and values.min() > 0 and values.max() / values.min() >= 10
-        unit = pm.scaled_unit(ds[n])
-        axes.append({"name": n, "values": [float(v) for v in values], "scaled": [float(v) for v in values],
+        unit = pm.units(ds, n)
+        per_scaled = float(ds[n].attrs.get("per_scaled", 1.0))
+        axes.append({"name": n, "values": [float(v) for v in values], "scaled": [float(v) / per_scaled for v in values],
                      "unit": unit, "log": bool(log), "labels": None,
                      "label": f"{n}: {attr_text(ds[n].attrs.get('long_name', n))}" + (f" [{unit}]" if unit not in ("", "1") else "")})
     parts = {"flags": {}, "variables": {}, "series": {}}
@@ -528,7 +526,7 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str, steps: dict
             f = pm.flags(ds, v)
             entry["codes"] = {str(c): m for c, m in zip(f.codes, f.meanings)}
         else:
-            entry = {"unit": pm.scaled_unit(ds[v]), "long_name": attr_text(ds[v].attrs.get("long_name", v)), **entry}
+            entry = {"unit": pm.units(ds, v), "long_name": attr_text(ds[v].attrs.get("long_name", v)), **entry}
         parts[kind][v] = entry
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if k != "times")
     return {
@@ -658,10 +656,15 @@ const optionOf = (a, physical) => (physical && a.name === "pbar" ? "pressure" : 
 function surfaceCommand(index) {
   const words = ["punchsweep", "surface"];
   for (const [key, value] of Object.entries(MAP.surface.texture)) words.push(`--${key}`, value);
+  // An axis the map shows in a physical unit (um, kPa) is written in it, as the command takes
+  // it beside the texture's --R and material; the others in their scale.
+  // (To 15 digits: 20 kPa over E0* and back is 20.000000000000004 kPa, and the command reads
+  // 20kPa as the map read it.)
+  const value = (a, j) => (PHYSICAL.has(a.unit) ? `${Number(a.values[index[j]].toPrecision(15))}${a.unit}` : a.scaled[index[j]]);
   MAP.axes.forEach((a, j) => {
     if (a.name === "level") return;
-    if (a.name === "scatter_width") words.push("--scatter", `${MAP.surface.scatter}:${a.values[index[j]]}`);
-    else words.push(`--${optionOf(a, false)}`, a.values[index[j]]);
+    if (a.name === "scatter_width") words.push("--scatter", `${MAP.surface.scatter}:${value(a, j)}`);
+    else words.push(`--${optionOf(a, PHYSICAL.has(a.unit))}`, value(a, j));
   });
   if (MAP.time.length) words.push("--times", MAP.time.join(","));
   return commandLine(words);

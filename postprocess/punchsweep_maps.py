@@ -240,13 +240,6 @@ def value_text(value) -> str:
     return value if isinstance(value, str) else f"{value:.6g}"
 
 
-def scaled_unit(variable) -> str:
-    """A variable's unit as a file the engine wrote without open_map's conversion (a surface
-    map) labels it: its scale where it is a pure number in one (units "1", scaled_by "R"),
-    else its units."""
-    return str(variable.attrs.get("scaled_by", variable.attrs.get("units", "")))
-
-
 def units(ds, name: str) -> str:
     """The unit a variable is shown in, as open_map leaves it in `units`: physical where the
     map knows the scale (um, kPa, s, N), else the scale ("R", "E0/(1-nu^2)", "T_eps", "1")."""
@@ -319,7 +312,7 @@ def parse_at(items: list[str] | None, ds, lists: bool = False) -> dict[str, floa
         if len(parts) > 1 and not lists:
             raise MapError(f"--at {name}={text}: one value per axis here (a list of values picks the "
                            f"panels of a faceted axis, in regime_map.py)")
-        values = [p if is_categorical(ds, name) else _at_number(ds, name, p) for p in parts]
+        values = [p if is_categorical(ds, name) else at_number(ds, name, p) for p in parts]
         value: float | str | list = values if len(parts) > 1 else values[0]
         if name in at:
             raise MapError(f"--at gives {name} twice")
@@ -327,7 +320,7 @@ def parse_at(items: list[str] | None, ds, lists: bool = False) -> dict[str, floa
     return at
 
 
-def _at_number(ds, name: str, text: str) -> float:
+def at_number(ds, name: str, text: str) -> float:
     """An --at value on the axis's coordinate as the map shows it. One rule, as on every
     command line: a number with a unit (2kPa, 50um, 1min) is physical and converted to the
     axis's unit; a bare number is in the axis's scale (R, E0/(1-nu^2), T_eps), converted where

@@ -45,15 +45,14 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 
 def read_map(path: str):
-    import xarray
-    try:
-        ds = xarray.open_dataset(path, engine="h5netcdf").load()
-    except (OSError, ValueError) as e:
-        raise pm.MapError(f"{path}: not a map surface_map wrote ({e})") from None
+    """The map by the one reader every map goes through (pm.open_map: its checks; lengths in
+    R's unit, pressures in kPa and times in the material's where the map has them)."""
+    ds = pm.open_map(path)
     for name in ("t_star", "regime"):
         if name not in ds or "level" not in ds[name].dims:
-            raise pm.MapError(f"{path}: no '{name}' over a 'level' axis: not a map surface_map wrote")
-    return ds
+            raise pm.MapError(f"{path}: no '{name}' over a 'level' axis: not a map surface_map wrote (a regime map "
+                              f"of punchsweep sweep is drawn by regime_map.py)")
+    return ds.load()
 
 
 def select(ds, at: list[str]):
@@ -64,12 +63,11 @@ def select(ds, at: list[str]):
         if name not in ds.t_star.dims or name == "level":
             axes = ", ".join(d for d in ds.t_star.dims if d != "level")
             raise pm.MapError(f"--at {item}: no axis '{name}' (the map's: {axes})")
-        try:
-            value = float(text)
-        except ValueError:
-            raise pm.MapError(f"--at {item}: '{text}' is not a number") from None
-        ds = ds.sel({name: value}, method="nearest")
-        said.append(f"{name} = {float(ds[name]):.4g}")
+        # (A number with a unit, 20kPa, is converted to the axis's unit; a bare one is in the
+        # axis's scale, R or E0*, as on every command line.)
+        ds = ds.sel({name: pm.at_number(ds, name, text)}, method="nearest")
+        unit = pm.units(ds, name)
+        said.append(f"{name} = {float(ds[name]):.4g}" + (f" {unit}" if unit not in ("", "1") else ""))
     left = [d for d in ds.t_star.dims if d != "level" and ds.sizes[d] > 1]
     if len(left) > 2:
         raise pm.MapError(f"the map has {len(left)} axes of several values ({', '.join(left)}); fix all but two "
@@ -122,7 +120,7 @@ def render(ds, said: list[str], time: float | None = None):
     touched = "touched" in ds and "t" in ds.touched.dims and ds.sizes["t"] > 0
     fig, panels = plt.subplots(1, len(levels) + touched, figsize=(4.6 * (len(levels) + touched) + 0.6, 4.0),
                                layout="constrained", squeeze=False)
-    unit = pm.scaled_unit(ds.t_star)
+    unit = pm.units(ds, "t_star")
     for panel, level in zip(panels[0], levels):
         t = ds.t_star.sel(level=level).transpose(*axes[::-1]) if axes else ds.t_star.sel(level=level)
         r = ds.regime.sel(level=level).transpose(*axes[::-1]) if axes else ds.regime.sel(level=level)
@@ -147,7 +145,7 @@ def render(ds, said: list[str], time: float | None = None):
                 handles.append(Patch(facecolor="white", edgecolor="0.5", hatch="xx", linewidth=0,
                                      label=f"regime depends on\nthe tolerance ({ds.attrs.get('tolerance', '')})"))
             panel.legend(handles=handles, fontsize=7, loc="upper left")
-            panel.set_ylabel(f"{axes[1]} ({pm.scaled_unit(ds[axes[1]])})")
+            panel.set_ylabel(f"{axes[1]} ({pm.units(ds, axes[1])})")
         else:
             late = np.where(r.values == DELAYED, t.values, np.nan)
             panel.plot(x, late, marker="o", label="delayed: t*")
@@ -161,9 +159,10 @@ def render(ds, said: list[str], time: float | None = None):
             panel.legend(fontsize=7)
         if log_scaled(x):
             panel.set_xscale("log")
-        panel.set_xlabel(f"{axes[0]} ({pm.scaled_unit(ds[axes[0]])})" if axes else "")
+        panel.set_xlabel(f"{axes[0]} ({pm.units(ds, axes[0])})" if axes else "")
+        x_unit = pm.units(ds, "X_star")
         panel.set_title(f"level {level}: X* = " + ", ".join(f"{v:.3g}" for v in np.atleast_1d(ds.X_star.sel(level=level).values))
-                        + " E0*", fontsize=9)
+                        + (" E0*" if x_unit == "E0/(1-nu^2)" else f" {x_unit}"), fontsize=9)
     if touched:
         panel = panels[0][-1]
         at = ds.t.values[-1] if time is None else float(ds.t.sel(t=time, method="nearest"))
@@ -179,16 +178,16 @@ def render(ds, said: list[str], time: float | None = None):
             fig.colorbar(mesh, ax=panel, label="share of caps in contact")
             if log_scaled(y):
                 panel.set_yscale("log")
-            panel.set_ylabel(f"{axes[1]} ({pm.scaled_unit(ds[axes[1]])})")
+            panel.set_ylabel(f"{axes[1]} ({pm.units(ds, axes[1])})")
         else:
             panel.plot(x, trusted, marker="o")
             panel.set_ylim(-0.02, 1.02)
             panel.set_ylabel("share of caps in contact")
         if log_scaled(x):
             panel.set_xscale("log")
-        panel.set_xlabel(f"{axes[0]} ({pm.scaled_unit(ds[axes[0]])})")
+        panel.set_xlabel(f"{axes[0]} ({pm.units(ds, axes[0])})")
         blank = " (blank: flagged)" if np.isnan(trusted).any() else ""
-        panel.set_title(f"caps in contact at t = {at:.4g} {pm.scaled_unit(ds.t)}{blank}", fontsize=9)
+        panel.set_title(f"caps in contact at t = {at:.4g} {pm.units(ds, 't')}{blank}", fontsize=9)
     texture = json.loads(ds.attrs.get("texture", "{}"))
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if v not in ("None", ""))
     fig.suptitle(f"each level's touch time: {words}" + (f"; {', '.join(said)}" if said else ""), fontsize=9)

@@ -266,7 +266,11 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   map.scatter_kind = in.scatter_kind;
   map.tolerance = in.tolerance_text;
   if (const std::string* m = find(keywords, "material")) map.material = *m;
-  if (const std::string* R = find(keywords, "R")) map.R = *R;
+  if (const std::string* R = find(keywords, "R")) {
+    const model::Physical length = input::read_length_scale(*R);  // (read_map_inputs has checked it)
+    map.R = input::format_axis_value(length.number) + " " + std::string(length.unit->name);
+    map.R_m = length.si();
+  }
   const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
   const std::size_t G = map.geometries(), P = map.load_points();
   // Up front, what the map asks: a load curve per geometry (seconds to minutes each), and
@@ -474,7 +478,13 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
     file.attribute("title", "punchsweep surface map: each level's touch time over a texture's geometry and load");
     file.attribute("texture", map.texture);
     file.attribute("material", map.material);
-    if (!map.R.empty()) file.attribute("R", map.R);
+    // The physical scales as a regime map states them (R, R_m, E0_star_Pa), so that one
+    // reader (Python's open_map, the scripts, the explorer) gives every map in kPa and um.
+    if (!map.R.empty()) {
+      file.attribute("R", map.R);
+      file.attribute("R_m", map.R_m);
+    }
+    if (map.E0_star_Pa > 0.0) file.attribute("E0_star_Pa", map.E0_star_Pa);
     if (!map.scatter_kind.empty()) file.attribute("scatter_kind", map.scatter_kind);
     file.attribute("time_unit", map.time_unit);
     const auto units = [&](const std::string& scale) -> io::Attributes {

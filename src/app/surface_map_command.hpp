@@ -51,7 +51,10 @@ struct SurfaceMap {
   double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
   std::string texture;                  ///< the texture's keywords, as JSON
   std::string material;                 ///< the material file, or empty
-  std::string R;                        ///< --R as given, or empty
+  /// --R as a regime map states it ("60 um": the number and the unit's name), and in m;
+  /// empty and 0 without one.
+  std::string R;
+  double R_m = 0.0;
   std::string scatter_kind;             ///< normal or uniform where the scatter's width is an axis
 
   std::size_t geometries() const;

@@ -30,6 +30,10 @@ void NetcdfFile::attribute(const std::string& name, const std::string& value) {
   write_string_attribute(file_, name.c_str(), value, "in " + path_);
 }
 
+void NetcdfFile::attribute(const std::string& name, double value) {
+  write_double_attribute(file_, name.c_str(), value, "in " + path_);
+}
+
 hid_t NetcdfFile::scale(const std::string& dim, const std::string& where) const {
   const auto found = std::find_if(coordinates_.begin(), coordinates_.end(), [&](const auto& c) { return c.first == dim; });
   if (found == coordinates_.end()) throw std::invalid_argument("NetcdfFile: no coordinate '" + dim + "' for " + where);

@@ -26,6 +26,7 @@ class NetcdfFile {
   explicit NetcdfFile(const std::string& path);
 
   void attribute(const std::string& name, const std::string& value);
+  void attribute(const std::string& name, double value);
   /// A coordinate: a dimension of its own name and its values.
   void coordinate(const std::string& name, const std::vector<double>& values, const Attributes& attributes);
   /// A variable over `dims` (coordinates made before), row-major, compressed.

@@ -432,3 +432,34 @@ def test_a_surface_map_in_chromium(tmp_path):
             assert (level["t_star"] is None and np.isinf(t)) or level["t_star"] == pytest.approx(t, rel=1e-12)
     assert r["slider"] is not None and r["slider"]["changed"]
     assert r["time_slider"] == {"changed": True}
+
+
+def test_a_material_surface_map_in_kPa_and_um_in_chromium(tmp_path):
+    """Issue 49: a texture map made with a material and R shows its axes as the one reader
+    gives them (pressure in kPa, dh in um: it showed E0* and R), and each cell's command is
+    written in those units (--pressure 20kPa --dh 3um) and gives the file's t* for level 1."""
+    import punchsweep
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    path = tmp_path / "tpe.nc"
+    punchsweep.surface_map(material=str(truth), R="60um", lattice="hexagonal", l="200um", dh=["2um", "3um"],
+                           dh2="5um", s=2, pressure=["10kPa", "20kPa", "30kPa"], temperature=20, times="1s, 1min",
+                           grid=32, output=path)
+    page = tmp_path / "tpe.html"
+    done = explore(path, "-o", page)
+    assert done.returncode == 0, done.stderr
+    text = page.read_text()
+    assert '"unit":"kPa"' in text and '"unit":"um"' in text
+    r, _ = in_chromium(page, [[1, 1], [2, 0]], tmp_path)
+    with h5py.File(path) as f:
+        names, _ = regime_axes_and_codes(f)
+        for cell in r["cells"]:
+            index = tuple(cell["index"])
+            argv = shlex.split(cell["command"])
+            pressure, dh = argv[argv.index("--pressure") + 1], argv[argv.index("--dh") + 1]
+            assert pressure == ["10kPa", "20kPa", "30kPa"][index[names.index("pbar")]]
+            assert dh == ["2um", "3um"][index[names.index("dh")]]
+            run = subprocess.run([ENGINE, *argv[1:], "--format", "json"], capture_output=True, text=True)
+            assert run.returncode == 0, (argv, run.stderr)
+            t = f["t_star"][index]
+            level = json.loads(run.stdout)["levels"][1]
+            assert (level["t_star"] is None and np.isinf(t)) or level["t_star"] == pytest.approx(t, rel=1e-12)

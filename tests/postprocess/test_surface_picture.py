@@ -53,7 +53,8 @@ def test_refusals_name_the_problem(hex_map, tmp_path):
     assert rc == 2 and "no axis 'z' (the map's: l, dh, dh2, pbar, T)" in err
     (tmp_path / "not.nc").write_text("hello")
     rc, _, err = call(surface_picture, tmp_path / "not.nc", "-o", tmp_path / "x.png")
-    assert rc == 2 and "not a map surface_map wrote" in err
+    assert rc == 2 and "is not an HDF5 file, so not a punchsweep regime map" in err  # the one reader's words
+    # A regime map of `sweep` (regime without a level axis) is the other script's to draw.
 
 
 def test_cells_whose_regime_the_tolerance_decides_are_hatched(tmp_path):
@@ -74,3 +75,23 @@ def test_cells_whose_regime_the_tolerance_decides_are_hatched(tmp_path):
     assert any("tolerance (pbar=20%, T=0.5)" in t.get_text() for t in panel.get_legend().get_texts())
     rc, _, err = call(surface_picture, path, "-o", tmp_path / "tol.png")
     assert rc == 0, err
+
+
+def test_a_material_map_is_drawn_in_kPa_and_um(tmp_path):
+    """A map made with a material and R (issue 49): the one reader gives its pressure in kPa, its
+    lengths in um and t* in s, and the picture's axes and titles say so (a map of E0* and R
+    showed "10µ" on its pressure axis)."""
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    path = tmp_path / "tpe.nc"
+    punchsweep.surface_map(material=str(truth), R="60um", lattice="hexagonal", l="200um", dh=["2um", "3um"],
+                           dh2="5um", s=2, pressure=["10kPa", "20kPa", "30kPa"], temperature=20, times="1s, 1min",
+                           grid=32, output=path)
+    ds, said = surface_picture.select(surface_picture.read_map(str(path)), ["temperature=20"])
+    np.testing.assert_allclose(ds.pbar.values, [10, 20, 30], rtol=1e-12)
+    np.testing.assert_allclose(ds.dh.values, [2, 3], rtol=1e-12)
+    assert (ds.pbar.attrs["units"], ds.dh.attrs["units"], ds.t_star.attrs["units"], ds.X_star.attrs["units"]) == \
+        ("kPa", "um", "s", "kPa")
+    fig = surface_picture.render(ds, said)
+    labels = [a.get_xlabel() for a in fig.axes] + [a.get_ylabel() for a in fig.axes]
+    assert "pbar (kPa)" in labels and "dh (um)" in labels
+    assert all(a.get_title().endswith("kPa") for a in fig.axes[:2] if a.get_title().startswith("level"))

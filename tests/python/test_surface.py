@@ -613,3 +613,37 @@ def test_surface_map_reads_a_box_of_tolerances_about_every_point():
     assert not np.isnan(edge.t_star_low.values[1]).any()
     with pytest.raises(ValueError, match="'dh' is no load input of a surface map"):
         punchsweep.surface_map(pbar=0.01, T=2.5, tolerance="dh=0.001", **texture)
+
+
+def test_open_map_reads_a_texture_map_in_physical_units(tmp_path):
+    """Issue 49: the one reader opens a texture's map as it opens a regime map: t_star and
+    regime over a `level` dimension, the pressure in Pa, lengths in um, X* in Pa, t* in s,
+    flags as their meanings (codes kept as NAME_code); values equal to the file's scaled ones
+    times the stated scales. A map written before the scales were stated (R as "60um", no
+    R_m nor E0_star_Pa) still opens, its lengths in R."""
+    import h5py
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    path = tmp_path / "tpe.nc"
+    scaled = punchsweep.surface_map(material=str(truth), R="60um", lattice="hexagonal", l="200um",
+                                    dh=["2um", "3um"], dh2="5um", s=2, pressure=["10kPa", "20kPa", "30kPa"],
+                                    temperature=[20, 40], times="1s, 1min", grid=32, output=path)
+    ds = punchsweep.open_map(path)
+    assert ds.t_star.dims == ("l", "dh", "dh2", "pbar", "temperature", "level") and ds.sizes["level"] == 3
+    assert (ds.pbar.attrs["units"], ds.dh.attrs["units"], ds.l.attrs["units"], ds.X_star.attrs["units"],
+            ds.t_star.attrs["units"]) == ("Pa", "um", "um", "Pa", "s")
+    np.testing.assert_allclose(ds.pbar.values, [1e4, 2e4, 3e4], rtol=1e-12)
+    np.testing.assert_allclose(ds.dh.values, [2.0, 3.0], rtol=1e-12)
+    np.testing.assert_allclose(ds.l.values, [200.0], rtol=1e-12)
+    E0_star = float(h5py.File(path)["pressure"][0]) / float(scaled.pbar.values[0])
+    np.testing.assert_allclose(ds.X_star.values.squeeze(), scaled.X_star.values * E0_star, rtol=1e-12)
+    np.testing.assert_array_equal(ds.t_star.values.squeeze(), scaled.t_star.values)
+    assert set(np.unique(ds.regime.values)) <= {"immediate", "delayed", "never"}
+    np.testing.assert_array_equal(ds.regime_code.values.squeeze(), scaled.regime.values)
+    old = tmp_path / "old.nc"
+    old.write_bytes(path.read_bytes())
+    with h5py.File(old, "r+") as f:
+        f.attrs["R"] = "60um"
+        del f.attrs["R_m"], f.attrs["E0_star_Pa"]
+    ds = punchsweep.open_map(old)
+    assert ds.dh.attrs["units"] == "R" and ds.pbar.attrs["units"] == "E0/(1-nu^2)"
+    np.testing.assert_allclose(ds.dh.values, [2 / 60, 3 / 60], rtol=1e-12)

@@ -678,7 +678,8 @@ class NotAMapError(ValueError):
 
 
 def open_map(path, units: str = "physical") -> "xarray.Dataset":  # noqa: F821
-    """A regime map (from `punchsweep sweep`) as an xarray.Dataset: every flag variable
+    """A map (a regime map from `punchsweep sweep`, or a texture's from `surface-map`, its
+    t_star, regime and X_star over a `level` dimension) as an xarray.Dataset: every flag variable
     (regime, valid, bem_regime, answer_regime, ...) decoded to its meanings as text
     ('immediate', 'delayed', ..., 'not_computed'), its codes kept as NAME_code; every
     variable and coordinate with a `units` attribute (the scale it is measured in: R,

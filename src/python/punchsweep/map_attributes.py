@@ -156,13 +156,24 @@ def flag_table(attrs, variable: str, error=ValueError) -> tuple[tuple[int, ...],
     return codes, words
 
 
+def is_texture_map(ds) -> bool:
+    """Whether `ds` is a texture's map (`punchsweep surface-map`): regime over its axes and
+    `level` last (each level's answer), valid over its axes and the times `t`."""
+    return tuple(ds["regime"].dims)[-1:] == ("level",)
+
+
 def check_layout(ds, error=ValueError) -> None:
-    """A regime map's layout as the engine writes it: regime over its axes, each axis a
-    coordinate variable of finite values (or labels), valid over the same axes, both flag
-    variables with their codes' meanings, and its physical scales what the engine writes."""
+    """A map's layout as the engine writes it: regime over its axes (a texture's map: and
+    `level` last), each axis a coordinate variable of finite values (or labels), valid over
+    the same axes (a texture's map: its axes and `t`), both flag variables with their codes'
+    meanings, and its physical scales what the engine writes."""
     names = tuple(ds["regime"].dims)
     if not names:
         raise error("regime has no dimensions")
+    expected_valid = set(names)
+    if is_texture_map(ds):
+        expected_valid = set(names[:-1]) | {"t"}
+        names = names + ("t",)
     for name in names:
         if name not in ds.variables or ds[name].dims != (name,):
             raise error(f"regime's dimension '{name}' has no coordinate variable (dimension "
@@ -171,8 +182,8 @@ def check_layout(ds, error=ValueError) -> None:
         if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
             raise error(f"the axis {name} holds values that are not finite numbers: "
                         f"{[float(v) for v in values if not np.isfinite(v)][:3]}")
-    if set(ds["valid"].dims) != set(names):
-        raise error(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime {', '.join(names)}")
+    if set(ds["valid"].dims) != expected_valid:
+        raise error(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime {', '.join(ds['regime'].dims)}")
     flag_table(ds["regime"].attrs, "regime", error)
     flag_table(ds["valid"].attrs, "valid", error)
     scale_attributes(ds.attrs, error)
@@ -180,7 +191,8 @@ def check_layout(ds, error=ValueError) -> None:
 
 def open_map(path, units: str = "physical", pressure_unit: str = "Pa", decode_flags: bool = True,
              error=ValueError):
-    """A regime map file as an xarray Dataset (h5netcdf, read lazily), checked (check_layout)
+    """A map file (a regime map of `punchsweep sweep`, or a texture's of `surface-map`: its
+    regime and t* over a `level` dimension) as an xarray Dataset (h5netcdf, read lazily), checked (check_layout)
     and converted (in_units); `error` (the caller's exception type) says what is wrong with a
     file that is missing, a folder, damaged or no regime map, naming it. The module's
     open_map and the scripts' both read a map here."""
@@ -211,6 +223,10 @@ def open_map(path, units: str = "physical", pressure_unit: str = "Pa", decode_fl
     except Exception as e:  # h5py's, h5netcdf's and xarray's errors for a file they cannot read
         raise unreadable(e) from None
     try:
+        if is_texture_map(ds) and "R" in ds.attrs and "R_m" not in ds.attrs:
+            # A texture's map written before its R was stated as a regime map's ("60um", no
+            # R_m): it still opens, its lengths in R.
+            ds.attrs["R_as_given"] = ds.attrs.pop("R")
         check_layout(ds, error)
         return in_units(ds, units, pressure_unit, decode_flags, error)
     except error as e:
