@@ -51,7 +51,9 @@ constexpr const char* kUsage =
 
 constexpr const char* kRequirementForms =
     "valid: 'touch within TIME at PRESSURE', 'touch at once at PRESSURE', 'touch at PRESSURE' (at any time), "
-    "'never at PRESSURE', 'no touch within TIME at PRESSURE' (with --find pressure, without 'at PRESSURE'); TIME with a unit (1s, 5min) where a material file "
+    "'never at PRESSURE', 'no touch within TIME at PRESSURE' (with --find pressure, without 'at PRESSURE'); "
+    "where heights scatter (--supercell, --scatter) with --find pressure also 'N% of level L within TIME', "
+    "'at most N% of caps within TIME' (of level L, or of caps: every one; without a time, ever); TIME with a unit (1s, 5min) where a material file "
     "gives one (else in T_eps), PRESSURE with one (30kPa) where it gives a modulus (else in E0/(1-nu^2))";
 
 /// The design command's own options, and every other one (the point's) as keywords.
@@ -69,10 +71,13 @@ struct DesignArgs {
   /// level's drop, fixed unless --find dh2), --grid (nodes per pitch, or auto) and --level
   /// (whose touch the requirements state, with --find l or pressure).
   std::optional<std::string> lattice, dh2, grid, level;
+  /// A scattered supercell (surface's --supercell, --scatter, --seed): with --find pressure.
+  std::optional<std::string> supercell, scatter, seed;
+  bool scattered() const { return supercell || scatter || seed; }
   input::Keywords point;
   /// Whether the design is of a texture's cell (any texture option given, or --find dh2),
   /// solved by its boundary elements, rather than of the paper's lattice by the model.
-  bool texture() const { return lattice || dh2 || grid || level || find == "dh2"; }
+  bool texture() const { return lattice || dh2 || grid || level || find == "dh2" || scattered(); }
 };
 
 DesignArgs split_keywords(const input::Keywords& keywords) {
@@ -116,6 +121,12 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
       a.grid = value;
     } else if (name == "level") {
       a.level = value;
+    } else if (name == "supercell") {
+      a.supercell = value;
+    } else if (name == "scatter") {
+      a.scatter = value;
+    } else if (name == "seed") {
+      a.seed = value;
     } else if (name == "pbar" || name == "pressure") {
       a.pressure_option = "--" + name;
       a.pressure_range = value;
@@ -143,6 +154,11 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
     throw input::UsageError("--level = " + *a.level + " is outside its range: 1, or 2 with --dh2");
   }
   if (a.level && *a.level == "2" && !a.dh2) throw input::UsageError("--level 2 needs --dh2, the drop of level 2");
+  if (a.scattered() && a.find != model::kPressure) {
+    throw input::UsageError("--supercell/--scatter: a scattered texture's design finds the pressure (--find pressure, "
+                            "from one load curve of its caps); its drop or pitch would need a curve per trial: map them "
+                            "with `punchsweep surface-map`");
+  }
   if (a.lattice && *a.lattice != "square" && *a.lattice != "hexagonal") {
     throw input::UsageError("--lattice = " + *a.lattice + " is not one of: square, hexagonal");
   }
@@ -211,7 +227,21 @@ Requirement read_requirement(const std::string& text, const input::PhysicalScale
   r.text = trimmed(text);
   std::string time_text, pressure_text;
   // Each form's pressure, " at PRESSURE", is its last group, optional here and checked below.
-  if (form("touch (?:within|by) (.+?)(?: at (.+))?", m)) {
+  // A share of caps: "90% of level 1 within 1min", "at most 5% of caps within 1s".
+  static const char* kShare = "([0-9]+(?:\\.[0-9]*)?) ?% of (?:level ([0-9]+)(?:'s caps)?|(?:all |the |every )?caps)"
+                              "(?: (?:within|by) (.+?)| ever)?(?: at (.+))?";
+  std::smatch share;
+  const bool at_most = std::regex_match(flat, share, std::regex(std::string("at most ") + kShare, std::regex::icase));
+  if (at_most || std::regex_match(flat, share, std::regex(kShare, std::regex::icase))) {
+    r.kind = at_most ? Requirement::Kind::no_touch_by : Requirement::Kind::touch_by;
+    r.share = std::stod(share[1]) / 100.0;
+    if (!(r.share >= 0.0 && r.share <= 1.0)) throw bad("the share " + std::string(share[1]) + "% is outside 0% to 100%");
+    r.share_level = share[2].matched ? std::stoi(share[2]) : -1;
+    if (share[2].matched && r.share_level == 0) throw bad("level 0 (the tallest caps) touches at once; a share of level 1 or 2, or of caps");
+    r.time = kInf;
+    time_text = share[3];
+    m = share;
+  } else if (form("touch (?:within|by) (.+?)(?: at (.+))?", m)) {
     time_text = m[1];
   } else if (form("touch (?:at once|immediately)(?: at (.+))?", m)) {
   } else if (form("touch(?: ever| eventually)?(?: at (.+))?", m)) {
@@ -403,6 +433,27 @@ std::string pressure_text(double pbar, const input::PointInputs& in) {
   return model::number_text(pbar * u.per, 4) + " " + u.unit;
 }
 
+/// The load at which requirement `r` turns on a curve of every cap (a scattered supercell's):
+/// the touchdowns of the caps it counts (`level`'s, or every cap's for -1; a hidden cap's is
+/// +infinity), sorted; touch_by (at least the share touched) holds from the m-th least, m =
+/// ceil(share n) (1 for the level's first cap); no_touch_by (at most the share) until the
+/// (m+1)-th least, m = floor(share n) (0 for none). 0 where m = 0 for touch_by, +infinity
+/// where no cap past m touches within the curve.
+double share_load(const model::LoadCurve& curve, int level, const Requirement& r) {
+  std::vector<double> touchdowns;
+  for (std::size_t k = 0; k < curve.sites(); ++k) {
+    if (level < 0 || curve.site_level[k] == level) touchdowns.push_back(curve.site_touchdown[k]);
+  }
+  std::sort(touchdowns.begin(), touchdowns.end());
+  const double n = static_cast<double>(touchdowns.size());
+  if (r.kind == Requirement::Kind::touch_by) {
+    const std::size_t m = r.is_share() ? static_cast<std::size_t>(std::ceil(r.share * n - 1e-9)) : 1;
+    return m == 0 ? 0.0 : m > touchdowns.size() ? kInf : touchdowns[m - 1];
+  }
+  const std::size_t m = r.is_share() ? static_cast<std::size_t>(std::floor(r.share * n + 1e-9)) : 0;
+  return m >= touchdowns.size() ? kInf : touchdowns[m];
+}
+
 /// A texture's search for a pitch or pressure stops within this of the value's log.
 constexpr double kTextureSearchTolerance = 1e-9;
 
@@ -579,9 +630,53 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     t.drops = drops;
     texture.emplace(t.lattice == "square" ? model::LatticeKind::square : model::LatticeKind::hexagonal, drops, t.level, nodes);
   }
+  // A scattered supercell: the load curve of its every cap (surface's, cached), read for each
+  // requirement's share of caps.
+  std::optional<SurfaceRun> scattered;
+  for (const Requirement& r : requirements) {
+    if (r.is_share() && !a.scattered()) {
+      throw input::UsageError("--require '" + r.text + "': a share of caps is a requirement where heights scatter "
+                              "(--supercell K --scatter DIST, with --find pressure); on a lattice each level's caps "
+                              "touch together");
+    }
+    if (r.is_share() && r.share_level > out.texture->levels - 1) {
+      throw input::UsageError("--require '" + r.text + "': the texture has levels 0 to " +
+                              std::to_string(out.texture->levels - 1));
+    }
+  }
+  if (a.scattered()) {
+    if (box.dh > 0.0 || box.l > 0.0 || box.C > 0.0) {
+      throw input::UsageError("--tolerance: a scattered texture's design takes tolerances on the pressure and the "
+                              "temperature (each corner of dh, l or C would be a load curve of its own)");
+    }
+    input::Keywords k = with(base_keywords, "pbar", input::json_number(out.search_lo));
+    k = without(k, "pressure");
+    for (const auto& [name, value] : std::vector<std::pair<std::string, std::optional<std::string>>>{
+             {"lattice", a.lattice}, {"dh2", a.dh2}, {"supercell", a.supercell}, {"scatter", a.scatter},
+             {"seed", a.seed}, {"grid", a.grid}}) {
+      if (value) k = with(k, name, *value);
+    }
+    if (!out.temperatures.empty()) k = with(k, "temperature", input::json_number(out.temperatures.front()));
+    // --grid auto sizes the grid for the spot at the least requirement's time (t = 0 only
+    // where a requirement is at once).
+    double least = kInf;
+    for (const Requirement& r : requirements) least = std::min(least, r.time);
+    k = with(k, "times", input::json_number(std::isfinite(least) ? least : 0.0));
+    scattered = evaluate_surface(k);
+    DesignTexture& t = *out.texture;
+    t.supercell = scattered->supercell;
+    t.scatter = a.scatter.value_or("");
+    t.seed = a.seed.value_or("1");
+    t.caps = static_cast<int>(scattered->geometry.sites.size());
+    t.nodes = scattered->grid_nodes;
+    t.coarser = scattered->grid_coarser;
+    t.grid_move = 0.0;
+    for (const double move : scattered->grid_t_star_change) t.grid_move = std::max(t.grid_move, move);
+    texture.reset();  // (read off the curve, not solved per load)
+  }
   const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C;
   // The drop of the level the requirements are on, where it is given (with --find l or pressure).
-  const double dh0 = texture && texture->level() == 2 ? dh2 : out.inputs.problem.dh;
+  const double dh0 = out.texture && out.texture->level == 2 ? dh2 : out.inputs.problem.dh;
   if (searched && box.dh > dh0) {
     throw input::UsageError(std::string("--tolerance dh: larger than --") + (dh0 == dh2 ? "dh2" : "dh") + " itself");
   }
@@ -653,6 +748,21 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
               const double gap = gap_at(l);
               endless = endless || std::isinf(gap);
               take(DesignBound{T, p, l, Cs[c], dh0, gap});
+              continue;
+            }
+            if (scattered) {
+              // The load at which the requirement's share of caps turns, over the load the
+              // unit pressure gives by its time: the pressure is that ratio (X is linear in
+              // the pressure's amplitude).
+              const model::CreepWeightedLoad unit(*in.creep, 1.0, in.problem.loading);
+              const double g = r.time == 0.0 ? unit.response_initial()
+                               : std::isinf(r.time) ? unit.response_final()
+                                                    : unit.response(r.time);
+              const double X = share_load(scattered->curve, r.share_level == 0 ? out.texture->level : r.share_level, r);
+              endless = endless || std::isinf(g);
+              double value = std::isinf(g) ? 0.0 : g > 0.0 ? X / g : X == 0.0 ? 0.0 : kInf;
+              value = value <= lo ? lo : value > hi ? kInf : value;
+              take(DesignBound{T, p, lo, Cs[c], dh0, value});
               continue;
             }
             // --find l (pressure): at each dh of the box, the pitch (pressure) whose gap by the
@@ -788,7 +898,7 @@ double edge_move(const DesignResult& coarse, const DesignResult& fine) {
 /// on grids of doubling nodes from kAutoGridStart until no edge moves by more than
 /// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
 DesignResult design(const DesignArgs& a) {
-  if (!a.texture()) return design_pass(a, 0);
+  if (!a.texture() || a.scattered()) return design_pass(a, 0);  // (a scattered texture's curve holds its own grid)
   const std::string grid = a.grid.value_or("auto");
   if (grid != "auto") {
     int nodes = -1;
@@ -856,6 +966,11 @@ std::string texture_text(const DesignResult& d, const Unit& L) {
                      std::to_string(t.level);
   if (t.levels == 3 && d.quantity != "dh2") {
     text += "; level 2 at dh2 = " + model::number_text(t.drops[1] * L.per, 4) + " " + L.unit;
+  }
+  if (t.caps > 0) {
+    text += "; a " + std::to_string(t.supercell) + " x " + std::to_string(t.supercell) + " supercell of " +
+            std::to_string(t.caps) + " caps" + (t.scatter.empty() ? "" : ", heights " + t.scatter + " (seed " + t.seed + ")") +
+            ", read off the load curve of every cap";
   }
   text += "; the cell's boundary elements on " + std::to_string(t.nodes) + " nodes a pitch";
   if (t.coarser > 0) {
@@ -973,7 +1088,9 @@ std::string json_of(const DesignResult& d) {
       s << (k ? ", " : "") << (found ? "null" : num(t.drops[k]));
     }
     s << "], \"grid\": " << t.nodes << ", \"grid_coarser\": " << t.coarser << ", \"grid_move\": " << num(t.grid_move)
-      << ", \"every_drop\": " << (t.every_drop ? "true" : "false") << ", \"solves\": " << t.solves << "}";
+      << ", \"every_drop\": " << (t.every_drop ? "true" : "false") << ", \"solves\": " << t.solves
+      << ", \"supercell\": " << t.supercell << ", \"scatter\": " << input::json_string(t.scatter)
+      << ", \"seed\": " << input::json_string(t.seed) << ", \"caps\": " << t.caps << "}";
   } else {
     s << "null";
   }
@@ -990,6 +1107,7 @@ std::string json_of(const DesignResult& d) {
     const bool touch = b.requirement.kind == Requirement::Kind::touch_by;
     s << (i ? ",\n  " : "\n  ") << "{\"text\": " << input::json_string(b.requirement.text) << ", \"kind\": \""
       << (touch ? "touch_by" : "no_touch_by") << "\", \"time\": " << num(b.requirement.time)
+      << ", \"share\": " << num(b.requirement.share) << ", \"share_level\": " << b.requirement.share_level
       << ", \"pbar\": " << num(b.requirement.pbar) << ", \"side\": \"" << (b.upper ? "upper" : "lower")
       << "\", \"edge\": " << num(b.edge) << ", \"edge_physical\": " << num(b.edge * Q.per)
       << ", \"binds_at\": {\"temperature\": " << num(b.binding.temperature)

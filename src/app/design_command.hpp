@@ -10,6 +10,7 @@
 /// value whose gap is dh, found by bisection.
 
 #include <iosfwd>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,14 @@ struct Requirement {
   enum class Kind { touch_by, no_touch_by } kind = Kind::touch_by;
   double time = 0.0;  ///< in the law's time unit
   double pbar = 0.0;  ///< nominal pressure, in E0* (NaN with --find pressure: the one searched)
+  /// A share of caps ("90% of level 1 within 1min": touch_by, 0.9; "at most 5% of caps within
+  /// 1s": no_touch_by, 0.05), where heights scatter: touch_by holds where at least this share
+  /// of the caps has touched by `time`, no_touch_by where at most it has. NaN: the level's
+  /// first cap (touch_by: one at least; no_touch_by: none).
+  double share = std::numeric_limits<double>::quiet_NaN();
+  /// Whose caps a share counts: -1 every cap of the cell, 0 the design's level, else that level.
+  int share_level = 0;
+  bool is_share() const { return share == share; }
 };
 
 /// Where one requirement bounds the design's quantity at one temperature and corner of the
@@ -82,6 +91,12 @@ struct DesignTexture {
   double grid_move = 0.0;
   bool every_drop = false;  ///< some load pressed the level at any drop it can have (its bound is its deepest)
   int solves = 0;           ///< contact solves of the answer's grid
+  /// A scattered supercell (--supercell K, --scatter): K, the scatter as given and the seed;
+  /// its design reads the load curve's touchdown of every cap (K 1 and empty otherwise).
+  int supercell = 1;
+  std::string scatter;
+  std::string seed;
+  int caps = 0;  ///< caps in the cell (a supercell's: every one)
 };
 
 /// The answer: the window, each requirement's bound, and what the user should know.

@@ -125,6 +125,42 @@ def test_python_designs_a_texture_as_the_command():
         assert a["edge"] == pytest.approx(b["edge"], rel=1e-12) and a["binds_at"]["temperature"] == b["binds_at"]["temperature"]
 
 
+def shares(p_kPa: float, times: str) -> tuple[list, list]:
+    """Each level's share of caps in contact (levels 1 and 2) by `surface` on the scattered
+    mould of test_a_scattered_moulds_pressure_window at 20 C."""
+    r = cli("surface", "--material", TRUTH, *MOULD, *SCATTERED, "--pressure", f"{p_kPa!r}kPa", "--temperature", 20,
+            "--times", times, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    series = json.loads(r.stdout)["series"]
+    return series["touched_1"], series["touched_2"]
+
+
+# The study's mould as made: 3 x 3 cells, each cap's height scattered by 0.3 um (seed 2), 54
+# caps, 18 of each level.
+SCATTERED = ["--l", "200um", "--dh", "2um", "--dh2", "5um", "--supercell", 3, "--scatter", "normal:0.3um", "--seed", 2,
+             "--grid", 32]
+
+
+def test_a_scattered_moulds_pressure_window_from_shares_of_caps():
+    """--find pressure on a scattered supercell: "90% of level 1 within 1min" and "at most 5% of
+    level 2 within 1s" at 20 C, from the load curve of every cap. At each edge `surface` (its
+    share of each level's caps in contact, another reading of the curve) crosses the
+    requirement: 17 of 18 level-1 caps (94%) just above the lower edge at 1 min, 16 (89%) 1e-3
+    below it; no level-2 cap just below the upper edge at 1 s, one (5.6%) 1e-3 above it."""
+    d = design(*SCATTERED, "--find", "pressure", "--pressure", "1kPa..100kPa", "--temperature", 20,
+               "--require", "90% of level 1 within 1min", "--require", "at most 5% of level 2 within 1s")
+    t = d["texture"]
+    assert (t["supercell"], t["caps"], t["scatter"], t["seed"], t["grid"]) == (3, 54, "normal:0.3um", "2", 32)
+    most, least = d["requirements"]
+    assert (most["share"], most["share_level"], least["share"], least["share_level"]) == (0.9, 1, 0.05, 2)
+    assert most["side"] == "lower" and least["side"] == "upper" and not d["empty"]
+    lower, upper = most["edge_physical"], least["edge_physical"]
+    assert shares(lower * (1 + 1e-6), "1min")[0][0] == pytest.approx(17 / 18)
+    assert shares(lower * (1 - 1e-3), "1min")[0][0] == pytest.approx(16 / 18)
+    assert shares(upper * (1 - 1e-6), "1s")[1][0] == 0
+    assert shares(upper * (1 + 1e-3), "1s")[1][0] == pytest.approx(1 / 18)
+
+
 @pytest.mark.parametrize("args, message", [
     (["--lattice", "triangular", "--require", "never at 5kPa"], "--lattice = triangular is not one of: square, hexagonal"),
     (["--find", "dh2", "--require", "never at 5kPa"], "--find dh2 needs --dh"),
@@ -136,9 +172,18 @@ def test_python_designs_a_texture_as_the_command():
      "--level = 3 is outside its range"),
     (["--grid", "7", "--require", "never at 5kPa"], "--grid = 7 is outside its range: an even integer in [4, 2048]"),
     (["--dh2", "-1um", "--require", "never at 5kPa"], "dh2"),
-    (["--supercell", "4", "--require", "never at 5kPa"],
-     "--supercell is a texture option of `punchsweep surface` that design does not take"),
+    (["--pixel", "1um", "--require", "never at 5kPa"],
+     "--pixel is a texture option of `punchsweep surface` that design does not take"),
     (["--cell", "cell.ini", "--require", "never at 5kPa"], "--cell is a texture option"),
+    (["--require", "90% of level 1 within 1s at 5kPa"], "a share of caps is a requirement where heights scatter"),
+    (["--supercell", "3", "--scatter", "normal:0.3um", "--require", "never at 5kPa"],
+     "a scattered texture's design finds the pressure"),
+    (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
+      "--tolerance", "dh=0.1um", "--require", "touch within 1s"], "takes tolerances on the pressure and the temperature"),
+    (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
+      "--require", "90% of level 2 within 1s"], "the texture has levels 0 to 1"),
+    (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
+      "--require", "150% of caps within 1s"], "outside 0% to 100%"),
 ])
 def test_what_the_texture_design_cannot_answer_is_refused_by_name(args, message):
     lattice = [] if "--lattice" in args else ["--lattice", "hexagonal"]
