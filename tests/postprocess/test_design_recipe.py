@@ -129,9 +129,24 @@ def test_the_pitch_window_the_page_shows(recipe):
 
 def test_the_pressure_window_the_page_shows():
     """docs/design.md's --find pressure example, run as written, prints the lines the page shows."""
-    argv = shlex.split(block("sh", "--find pressure").replace("\\\n", " "))
+    argv = shlex.split(block("sh", "--find pressure --dh 8um").replace("\\\n", " "))
     assert argv[:2] == ["punchsweep", "design"]
     r = subprocess.run([ENGINE, *argv[1:]], cwd=REPO, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    for line in block("text", "pressure >= ").strip().splitlines():
+    for line in block("text", "touch within 1min: pressure >= ").strip().splitlines():
+        assert line.strip() in r.stdout, (line, r.stdout)
+
+
+@pytest.mark.parametrize("command, printed", [
+    ("--dh2 5um --temperature 20..40C", "hexagonal lattice of 3 levels; the requirements on level 1"),
+    ("--supercell 3", "90% of level 1 within 1min: pressure >="),
+])
+def test_the_texture_windows_the_page_shows(command, printed):
+    """docs/design.md's texture examples (a hexagonal three-level mould's dh window; a scattered
+    one's pressure window from shares of caps), run as written, print the lines the page shows."""
+    argv = shlex.split(block("sh", command).replace("\\\n", " "))
+    assert argv[:2] == ["punchsweep", "design"]
+    r = subprocess.run([ENGINE, *argv[1:]], cwd=REPO, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    for line in block("text", printed).strip().splitlines():
         assert line.strip() in r.stdout, (line, r.stdout)
