@@ -74,10 +74,16 @@ struct DesignArgs {
   /// A scattered supercell (surface's --supercell, --scatter, --seed): with --find pressure.
   std::optional<std::string> supercell, scatter, seed;
   bool scattered() const { return supercell || scatter || seed; }
+  /// A cell file or a measured height map (surface's --cell, --height-map and the map's
+  /// --pixel, --height-unit, --summit-radius, --level-gap), as given: with --find pressure.
+  input::Keywords texture_file;
+  bool from_file() const { return !texture_file.empty(); }
+  /// Read off the texture's load curve (every cap's touchdown), not solved per load.
+  bool off_curve() const { return scattered() || from_file(); }
   input::Keywords point;
   /// Whether the design is of a texture's cell (any texture option given, or --find dh2),
   /// solved by its boundary elements, rather than of the paper's lattice by the model.
-  bool texture() const { return lattice || dh2 || grid || level || find == "dh2" || scattered(); }
+  bool texture() const { return lattice || dh2 || grid || level || find == "dh2" || off_curve(); }
 };
 
 DesignArgs split_keywords(const input::Keywords& keywords) {
@@ -127,6 +133,9 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
       a.scatter = value;
     } else if (name == "seed") {
       a.seed = value;
+    } else if (name == "cell" || name == "height-map" || name == "pixel" || name == "height-unit" ||
+               name == "summit-radius" || name == "level-gap") {
+      a.texture_file.emplace_back(name, value);
     } else if (name == "pbar" || name == "pressure") {
       a.pressure_option = "--" + name;
       a.pressure_range = value;
@@ -150,10 +159,31 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
     throw input::UsageError("--level: with --find " + a.find + " the requirements are on the level whose drop is found; "
                             "--level names the level they are on with --find l or pressure");
   }
-  if (a.level && *a.level != "1" && *a.level != "2") {
+  if (a.from_file()) {
+    if (a.find != model::kPressure) {
+      throw input::UsageError("--" + a.texture_file.front().first + ": a cell file's or height map's design finds the "
+                              "pressure (--find pressure, from one load curve of its caps); its drops are the file's");
+    }
+    for (const auto& [name, given] : std::vector<std::pair<const char*, bool>>{
+             {"dh", a.dh.has_value()}, {"dh2", a.dh2.has_value()}, {"lattice", a.lattice.has_value()}}) {
+      if (given) {
+        throw input::UsageError(std::string("--") + name + " beside --" + a.texture_file.front().first +
+                                ": the file gives the cell, its sites and their drops");
+      }
+    }
+  }
+  if (a.level && a.from_file()) {
+    bool digits = !a.level->empty() && a.level->size() < 4;
+    for (const char c : *a.level) digits = digits && std::isdigit(static_cast<unsigned char>(c));
+    if (!digits || std::stoi(*a.level) < 1) {
+      throw input::UsageError("--level = " + *a.level + " is outside its range: a level of the texture from 1");
+    }
+  } else if (a.level && *a.level != "1" && *a.level != "2") {
     throw input::UsageError("--level = " + *a.level + " is outside its range: 1, or 2 with --dh2");
   }
-  if (a.level && *a.level == "2" && !a.dh2) throw input::UsageError("--level 2 needs --dh2, the drop of level 2");
+  if (a.level && *a.level == "2" && !a.dh2 && !a.from_file()) {
+    throw input::UsageError("--level 2 needs --dh2, the drop of level 2");
+  }
   if (a.scattered() && a.find != model::kPressure) {
     throw input::UsageError("--supercell/--scatter: a scattered texture's design finds the pressure (--find pressure, "
                             "from one load curve of its caps); its drop or pitch would need a curve per trial: map them "
@@ -168,7 +198,7 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
     throw input::UsageError("--dh: the design finds dh; state what it must do with --require (or --find l, the "
                             "pitch for a given dh, or --find pressure)");
   }
-  if ((a.find == "l" || a.find == model::kPressure) && !a.dh) {
+  if ((a.find == "l" || a.find == model::kPressure) && !a.dh && !a.from_file()) {
     throw input::UsageError("--find " + find_name + " needs --dh, the height difference the " +
                             (by_pressure ? "pressure" : "pitch") + " is for");
   }
@@ -573,7 +603,19 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     range_lo_text = trimmed(range_text.substr(0, dots));
     range_hi_text = trimmed(range_text.substr(dots + 2));
   }
-  input::Keywords base_keywords = with(a.point, "dh", searched || a.find == "dh2" ? *a.dh : "0");
+  input::Keywords base_keywords = with(a.point, "dh", searched || a.find == "dh2" ? a.dh.value_or("0") : "0");
+  // A cell file or height map gives the geometry: the point's reading (the material, the
+  // scales, the pressure) takes a pitch and exponent that stand for nothing (not shown, not
+  // passed on); one given beside the file is refused by surface's reading.
+  std::vector<std::string> placeholders;
+  if (a.from_file()) {
+    for (const char* name : {"l", "s"}) {
+      if (std::none_of(a.point.begin(), a.point.end(), [&](const auto& kv) { return kv.first == name; })) {
+        base_keywords = with(base_keywords, name, name == std::string("l") ? "1" : "2");
+        placeholders.emplace_back(name);
+      }
+    }
+  }
   if (by_l) base_keywords = with(base_keywords, "l", range_lo_text);
   // The scales first (a requirement's units need them): at a nominal pressure.
   std::optional<double> first_T;
@@ -622,61 +664,89 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     DesignTexture& t = out.texture.emplace();
     t.lattice = a.lattice.value_or("square");
     if (a.dh2) dh2 = read_drop("dh2", *a.dh2, out.inputs.scales);
-    t.level = a.find == "dh2" || (a.level && *a.level == "2") ? 2 : 1;
+    t.level = a.find == "dh2" ? 2 : a.level ? std::stoi(*a.level) : 1;
     t.levels = a.dh2 || a.find == "dh2" ? 3 : 2;
     t.nodes = nodes;
     std::vector<double> drops{a.find == "dh" ? 0.0 : out.inputs.problem.dh};  // (the searched level's is set by the closure)
     if (t.levels == 3) drops.push_back(a.find == "dh2" ? 0.0 : dh2);
     t.drops = drops;
-    texture.emplace(t.lattice == "square" ? model::LatticeKind::square : model::LatticeKind::hexagonal, drops, t.level, nodes);
+    if (!a.off_curve()) {
+      texture.emplace(t.lattice == "square" ? model::LatticeKind::square : model::LatticeKind::hexagonal, drops, t.level, nodes);
+    }
   }
-  // A scattered supercell: the load curve of its every cap (surface's, cached), read for each
-  // requirement's share of caps.
-  std::optional<SurfaceRun> scattered;
+  // (A lattice's levels are known up front, a file's once it is read: a share of a level it
+  // lacks is refused before any curve is built where it can be.)
+  const auto check_share_levels = [&] {
+    for (const Requirement& r : requirements) {
+      if (r.is_share() && out.texture && r.share_level > out.texture->levels - 1) {
+        throw input::UsageError("--require '" + r.text + "': the texture has levels 0 to " +
+                                std::to_string(out.texture->levels - 1));
+      }
+    }
+  };
+  if (!a.from_file()) check_share_levels();
   for (const Requirement& r : requirements) {
-    if (r.is_share() && !a.scattered()) {
+    if (r.is_share() && !a.off_curve()) {
       throw input::UsageError("--require '" + r.text + "': a share of caps is a requirement where heights scatter "
-                              "(--supercell K --scatter DIST, with --find pressure); on a lattice each level's caps "
-                              "touch together");
-    }
-    if (r.is_share() && r.share_level > out.texture->levels - 1) {
-      throw input::UsageError("--require '" + r.text + "': the texture has levels 0 to " +
-                              std::to_string(out.texture->levels - 1));
+                              "(--supercell K --scatter DIST, a cell file or a height map, with --find pressure); on a "
+                              "lattice each level's caps touch together");
     }
   }
-  if (a.scattered()) {
+  // A scattered supercell, a cell file or a height map: the load curve of its every cap
+  // (surface's, to full contact, cached), read for each requirement's share of caps.
+  std::optional<SurfaceRun> off_curve;
+  if (a.off_curve()) {
     if (box.dh > 0.0 || box.l > 0.0 || box.C > 0.0) {
-      throw input::UsageError("--tolerance: a scattered texture's design takes tolerances on the pressure and the "
-                              "temperature (each corner of dh, l or C would be a load curve of its own)");
+      throw input::UsageError("--tolerance: the design of a scattered supercell, a cell file or a height map takes "
+                              "tolerances on the pressure and the temperature (each corner of dh, l or C would be a load "
+                              "curve of its own)");
     }
     input::Keywords k = with(base_keywords, "pbar", input::json_number(out.search_lo));
     k = without(k, "pressure");
+    if (a.from_file()) k = without(k, "dh");  // (the file's drops)
+    for (const std::string& name : placeholders) k = without(k, name);
     for (const auto& [name, value] : std::vector<std::pair<std::string, std::optional<std::string>>>{
              {"lattice", a.lattice}, {"dh2", a.dh2}, {"supercell", a.supercell}, {"scatter", a.scatter},
              {"seed", a.seed}, {"grid", a.grid}}) {
       if (value) k = with(k, name, *value);
     }
+    for (const auto& [name, value] : a.texture_file) k = with(k, name, value);
     if (!out.temperatures.empty()) k = with(k, "temperature", input::json_number(out.temperatures.front()));
     // --grid auto sizes the grid for the spot at the least requirement's time (t = 0 only
     // where a requirement is at once).
     double least = kInf;
     for (const Requirement& r : requirements) least = std::min(least, r.time);
     k = with(k, "times", input::json_number(std::isfinite(least) ? least : 0.0));
-    scattered = evaluate_surface(k);
+    off_curve = evaluate_surface(k);
     DesignTexture& t = *out.texture;
-    t.supercell = scattered->supercell;
+    t.supercell = off_curve->supercell;
     t.scatter = a.scatter.value_or("");
-    t.seed = a.seed.value_or("1");
-    t.caps = static_cast<int>(scattered->geometry.sites.size());
-    t.nodes = scattered->grid_nodes;
-    t.coarser = scattered->grid_coarser;
+    t.seed = a.scatter ? a.seed.value_or("1") : "";
+    t.caps = static_cast<int>(off_curve->geometry.sites.size());
+    t.nodes = off_curve->grid_nodes;
+    t.coarser = off_curve->grid_coarser;
     t.grid_move = 0.0;
-    for (const double move : scattered->grid_t_star_change) t.grid_move = std::max(t.grid_move, move);
-    texture.reset();  // (read off the curve, not solved per load)
+    for (const double move : off_curve->grid_t_star_change) t.grid_move = std::max(t.grid_move, move);
+    if (a.from_file()) {
+      t.file = off_curve->cell_file;
+      t.lattice = off_curve->measured ? "height map" : "cell";
+      t.levels = off_curve->curve.levels();
+      // Each level's drop: the least of its caps' (they may differ within a level).
+      t.drops.assign(static_cast<std::size_t>(std::max(t.levels - 1, 0)), kInf);
+      for (const model::Site& site : off_curve->geometry.sites) {
+        if (site.level > 0) t.drops[static_cast<std::size_t>(site.level - 1)] = std::min(t.drops[static_cast<std::size_t>(site.level - 1)], site.drop);
+      }
+    }
+    if (t.level > t.levels - 1) {
+      throw input::UsageError("--level " + std::to_string(t.level) + ": the texture has levels 0 to " + std::to_string(t.levels - 1));
+    }
   }
+  if (a.from_file()) check_share_levels();
   const double l0 = out.inputs.problem.l, C0 = out.inputs.problem.shape.C;
   // The drop of the level the requirements are on, where it is given (with --find l or pressure).
-  const double dh0 = out.texture && out.texture->level == 2 ? dh2 : out.inputs.problem.dh;
+  const double dh0 = a.from_file() ? out.texture->drops[static_cast<std::size_t>(out.texture->level - 1)]
+                    : out.texture && out.texture->level == 2 ? dh2
+                                                             : out.inputs.problem.dh;
   if (searched && box.dh > dh0) {
     throw input::UsageError(std::string("--tolerance dh: larger than --") + (dh0 == dh2 ? "dh2" : "dh") + " itself");
   }
@@ -750,7 +820,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
               take(DesignBound{T, p, l, Cs[c], dh0, gap});
               continue;
             }
-            if (scattered) {
+            if (off_curve) {
               // The load at which the requirement's share of caps turns, over the load the
               // unit pressure gives by its time: the pressure is that ratio (X is linear in
               // the pressure's amplitude).
@@ -758,7 +828,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
               const double g = r.time == 0.0 ? unit.response_initial()
                                : std::isinf(r.time) ? unit.response_final()
                                                     : unit.response(r.time);
-              const double X = share_load(scattered->curve, r.share_level == 0 ? out.texture->level : r.share_level, r);
+              const double X = share_load(off_curve->curve, r.share_level == 0 ? out.texture->level : r.share_level, r);
               endless = endless || std::isinf(g);
               double value = std::isinf(g) ? 0.0 : g > 0.0 ? X / g : X == 0.0 ? 0.0 : kInf;
               value = value <= lo ? lo : value > hi ? kInf : value;
@@ -898,7 +968,7 @@ double edge_move(const DesignResult& coarse, const DesignResult& fine) {
 /// on grids of doubling nodes from kAutoGridStart until no edge moves by more than
 /// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
 DesignResult design(const DesignArgs& a) {
-  if (!a.texture() || a.scattered()) return design_pass(a, 0);  // (a scattered texture's curve holds its own grid)
+  if (!a.texture() || a.off_curve()) return design_pass(a, 0);  // (a curve holds its own grid)
   const std::string grid = a.grid.value_or("auto");
   if (grid != "auto") {
     int nodes = -1;
@@ -943,16 +1013,24 @@ double level_drop(const DesignResult& d) {
 
 /// The geometry and material of the design, without what it finds or varies (the
 /// quantity, the pressure, the temperature).
-std::string geometry_text(const input::PointInputs& in, const std::string& quantity) {
+std::string geometry_text(const DesignResult& d) {
+  const input::PointInputs& in = d.inputs;
+  const std::string& quantity = d.quantity;
+  // (A cell file's or height map's geometry is the file's: the point's l, dh, s and C are not.)
+  const bool file = d.texture && !d.texture->file.empty();
   input::PointInputs kept;
   kept.scales = in.scales;
   kept.time_unit = in.time_unit;
   for (const auto& [p, v] : in.values) {
-    if (p->name != quantity && p->name != model::kPressure && p->name != model::temperature_parameter().name) {
+    const bool geometry = p->name == model::kPitch || p->name == model::kHeightDifference || p->name == model::kExponent ||
+                          p->name == model::kShapeConstant;
+    if (p->name != quantity && p->name != model::kPressure && p->name != model::temperature_parameter().name &&
+        !(file && geometry)) {
       kept.values.emplace_back(p, v);
     }
   }
   std::string text = kept.describe();
+  if (text.rfind(", ", 0) == 0) text.erase(0, 2);  // (a file's geometry left out, the scales remain)
   if (in.material) text += "; material " + in.material->name();
   return text;
 }
@@ -962,15 +1040,16 @@ std::string geometry_text(const input::PointInputs& in, const std::string& quant
 std::string texture_text(const DesignResult& d, const Unit& L) {
   if (!d.texture) return "";
   const DesignTexture& t = *d.texture;
-  std::string text = t.lattice + " lattice of " + std::to_string(t.levels) + " levels; the requirements on level " +
-                     std::to_string(t.level);
-  if (t.levels == 3 && d.quantity != "dh2") {
+  std::string text = (t.file.empty() ? t.lattice + " lattice" : t.lattice + " " + t.file) + " of " +
+                     std::to_string(t.levels) + " levels; the requirements on level " + std::to_string(t.level);
+  if (t.levels == 3 && d.quantity != "dh2" && t.file.empty()) {
     text += "; level 2 at dh2 = " + model::number_text(t.drops[1] * L.per, 4) + " " + L.unit;
   }
   if (t.caps > 0) {
-    text += "; a " + std::to_string(t.supercell) + " x " + std::to_string(t.supercell) + " supercell of " +
-            std::to_string(t.caps) + " caps" + (t.scatter.empty() ? "" : ", heights " + t.scatter + " (seed " + t.seed + ")") +
-            ", read off the load curve of every cap";
+    text += t.supercell > 1 ? "; a " + std::to_string(t.supercell) + " x " + std::to_string(t.supercell) + " supercell of " +
+                                  std::to_string(t.caps) + " caps"
+                            : "; " + std::to_string(t.caps) + " caps";
+    text += (t.scatter.empty() ? "" : ", heights " + t.scatter + " (seed " + t.seed + ")") + ", read off the load curve of every cap";
   }
   text += "; the cell's boundary elements on " + std::to_string(t.nodes) + " nodes a pitch";
   if (t.coarser > 0) {
@@ -1090,11 +1169,12 @@ std::string json_of(const DesignResult& d) {
     s << "], \"grid\": " << t.nodes << ", \"grid_coarser\": " << t.coarser << ", \"grid_move\": " << num(t.grid_move)
       << ", \"every_drop\": " << (t.every_drop ? "true" : "false") << ", \"solves\": " << t.solves
       << ", \"supercell\": " << t.supercell << ", \"scatter\": " << input::json_string(t.scatter)
-      << ", \"seed\": " << input::json_string(t.seed) << ", \"caps\": " << t.caps << "}";
+      << ", \"seed\": " << input::json_string(t.seed) << ", \"caps\": " << t.caps
+      << ", \"file\": " << input::json_string(t.file) << "}";
   } else {
     s << "null";
   }
-  s << ",\n \"point\": " << input::json_string(geometry_text(d.inputs, d.quantity)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
+  s << ",\n \"point\": " << input::json_string(geometry_text(d)) << ", \"time_unit\": " << input::json_string(d.inputs.time_unit);
   s << ",\n \"tolerance\": {\"dh\": " << num(d.tolerance.dh) << ", \"pressure\": " << num(d.tolerance.pressure)
     << ", \"pressure_is\": \"" << (d.tolerance.pressure_absolute ? "absolute, E0/(1-nu^2)" : "relative") << "\", \"l\": "
     << num(d.tolerance.l) << ", \"l_is\": \"" << (d.tolerance.l_absolute ? "absolute, R" : "relative") << "\", \"C\": "
@@ -1135,7 +1215,7 @@ void write_table(std::ostream& out, const DesignResult& d) {
   const std::string q = quantity_name(d);
   out << "punchsweep design: the "
       << (q == "dh" ? "height difference dh" : q == "dh2" ? "drop dh2 of level 2" : q == "l" ? "pitch l" : "nominal pressure") << " that meets every requirement\n"
-      << "  " << geometry_text(d.inputs, d.quantity) << "\n"
+      << "  " << geometry_text(d) << "\n"
       << (d.texture ? "  " + texture_text(d, L) + "\n" : "") << "  checked at ";
   if (d.temperatures.size() > 1) {
     out << "every temperature of " << model::number_text(d.temperatures.front(), 4) << " to "

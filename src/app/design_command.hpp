@@ -97,6 +97,7 @@ struct DesignTexture {
   std::string scatter;
   std::string seed;
   int caps = 0;  ///< caps in the cell (a supercell's: every one)
+  std::string file;  ///< a cell file's or height map's path (lattice then "cell" or "height map")
 };
 
 /// The answer: the window, each requirement's bound, and what the user should know.

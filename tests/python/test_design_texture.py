@@ -12,6 +12,7 @@ import os
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import punchsweep
@@ -161,6 +162,48 @@ def test_a_scattered_moulds_pressure_window_from_shares_of_caps():
     assert shares(upper * (1 + 1e-3), "1s")[1][0] == pytest.approx(1 / 18)
 
 
+def test_a_cell_files_pressure_window():
+    """--cell (examples/cells/hexagonal_two_level.ini, caps 3 um down at half the triangles):
+    the pressure that brings level 1 down within a second but not within 0.1 s at 20-40 C, read
+    off the cell's curve; at the touch edge's corner `surface` gives t* = 1 s."""
+    cell = REPO / "examples" / "cells" / "hexagonal_two_level.ini"
+    r = cli("design", "--material", TRUTH, "--R", "80um", "--cell", cell, "--find", "pressure", "--pressure",
+            "1kPa..100kPa", "--temperature", "20..40C", "--grid", 48, "--require", "touch within 1s",
+            "--require", "no touch within 0.1s", "--format", "json")
+    assert r.returncode == 0, r.stderr
+    d = json.loads(r.stdout)
+    t = d["texture"]
+    assert (t["lattice"], t["levels"], t["caps"], t["file"]) == ("cell", 2, 4, str(cell))
+    assert t["drops"][0] * 80 == pytest.approx(3.0) and d["point"].startswith("R = 80 um")
+    touch, no_touch = d["requirements"]
+    assert touch["binds_at"]["temperature"] == 20 and no_touch["binds_at"]["temperature"] == 40
+    assert d["empty"]  # touching within 1 s at 20 C needs more than keeps 40 C from touching in 0.1 s
+    s = cli("surface", "--material", TRUTH, "--R", "80um", "--cell", cell, "--pressure", f"{touch['edge_physical']!r}kPa",
+            "--temperature", 20, "--grid", 48, "--times", "1s", "--format", "json")
+    assert s.returncode == 0, s.stderr
+    assert json.loads(s.stdout)["levels"][1]["t_star"] == pytest.approx(1.0, rel=1e-5)
+
+
+def test_a_height_maps_pressure_window_is_its_lattices(tmp_path):
+    """--height-map of the paper's lattice (64 x 64 pixels, its two summits split by
+    --level-gap): the pressure window read off its curve equals the lattice texture's, solved
+    by the level's closure on the same grid (two code paths), to 1e-6."""
+    from lattice_maps import lattice_heights
+    l, n, dh = 0.75, 64, 0.03
+    np.save(tmp_path / "map.npy", lattice_heights(l, n, dh))
+    common = ["--T", 2.5, "--find", "pressure", "--pbar", "0.001..0.1", "--require", "touch within 1",
+              "--require", "no touch within 0.2", "--format", "json"]
+    r = cli("design", "--height-map", tmp_path / "map.npy", "--pixel", l / n, "--level-gap", dh / 2, *common)
+    assert r.returncode == 0, r.stderr
+    measured = json.loads(r.stdout)
+    r = cli("design", "--lattice", "square", "--l", l, "--dh", dh, "--s", 2, "--grid", n, *common)
+    assert r.returncode == 0, r.stderr
+    lattice = json.loads(r.stdout)
+    assert measured["texture"]["lattice"] == "height map" and measured["texture"]["caps"] == 2
+    for a, b in zip(measured["requirements"], lattice["requirements"]):
+        assert a["edge"] == pytest.approx(b["edge"], rel=1e-6), a["text"]
+
+
 @pytest.mark.parametrize("args, message", [
     (["--lattice", "triangular", "--require", "never at 5kPa"], "--lattice = triangular is not one of: square, hexagonal"),
     (["--find", "dh2", "--require", "never at 5kPa"], "--find dh2 needs --dh"),
@@ -172,9 +215,11 @@ def test_a_scattered_moulds_pressure_window_from_shares_of_caps():
      "--level = 3 is outside its range"),
     (["--grid", "7", "--require", "never at 5kPa"], "--grid = 7 is outside its range: an even integer in [4, 2048]"),
     (["--dh2", "-1um", "--require", "never at 5kPa"], "dh2"),
-    (["--pixel", "1um", "--require", "never at 5kPa"],
-     "--pixel is a texture option of `punchsweep surface` that design does not take"),
-    (["--cell", "cell.ini", "--require", "never at 5kPa"], "--cell is a texture option"),
+    (["--curve", "cell", "--require", "never at 5kPa"],
+     "--curve is a texture option of `punchsweep surface` that design does not take"),
+    (["--cell", "cell.ini", "--require", "never at 5kPa"], "a cell file's or height map's design finds the pressure"),
+    (["--cell", "cell.ini", "--dh", "2um", "--find", "pressure", "--pressure", "1kPa..9kPa", "--require", "touch within 1s"],
+     "--dh beside --cell: the file gives the cell"),
     (["--require", "90% of level 1 within 1s at 5kPa"], "a share of caps is a requirement where heights scatter"),
     (["--supercell", "3", "--scatter", "normal:0.3um", "--require", "never at 5kPa"],
      "a scattered texture's design finds the pressure"),
