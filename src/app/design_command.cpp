@@ -546,15 +546,14 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
   if (a.requirement_texts.empty()) throw input::UsageError("give at least one --require (" + std::string(kRequirementForms) + ")");
   const input::PointMaterial material = input::find_point_material(a.point);
   const po::options_description opts = point_options(material);
-  // The texture options of `surface` the design does not take (a cell file, a height map,
-  // a scattered supercell) are refused by name, not as "unknown option".
+  // The options of `surface` the design does not take (--curve, --check) are refused by
+  // name, not as "unknown option".
   const po::options_description texture_options = surface_options(material);
   for (const auto& [name, value] : a.point) {
     if (opts.find_nothrow(name, false) == nullptr && texture_options.find_nothrow(name, false) != nullptr) {
-      throw input::UsageError("--" + name + " is a texture option of `punchsweep surface` that design does not take: design "
-                              "searches lattices (--lattice square or hexagonal, --dh2 for a third level, --grid); for a cell "
-                              "file, a height map or a scattered supercell, map its drop, pitch or pressure with "
-                              "`punchsweep surface-map` and read the window off its t*");
+      throw input::UsageError("--" + name + " is a texture option of `punchsweep surface` that design does not take: the "
+                              "design solves a lattice's cell by its boundary elements (--grid) and reads a scattered "
+                              "supercell's, a cell file's or a height map's load curve");
     }
   }
   const bool has_temperature =

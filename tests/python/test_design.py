@@ -141,10 +141,11 @@ def test_bad_requests_are_refused_by_name():
         (["--require", "never at 5kPa", "--temperature", "40..20C"], "the range's end is not above its start"),
         (["--require", "never at 5kPa", "--temperature", "-150..20C"], "outside its range"),
         # A texture option of `surface` that design does not take was "unknown option" with no
-        # hint (--lattice and --dh2 it takes: test_design_texture.py).
+        # hint (the textures it takes: test_design_texture.py).
+        (["--require", "never at 5kPa", "--curve", "cell"],
+         "--curve is a texture option of `punchsweep surface` that design does not take"),
         (["--require", "never at 5kPa", "--height-map", "scan.npy"],
-         "--height-map is a texture option of `punchsweep surface` that design does not take: design searches "
-         "lattices"),
+         "--height-map: a cell file's or height map's design finds the pressure"),
     ]
     for extra, words in cases:
         r = cli("design", "--material", TRUTH, *GEOMETRY, *extra)
