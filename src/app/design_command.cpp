@@ -19,7 +19,6 @@
 #include "app/point_command.hpp"
 #include "app/surface_command.hpp"
 #include "input/scaled_value.hpp"
-#include "input/value_parsing.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
 #include "model/numerics/number_text.hpp"
@@ -949,7 +948,6 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
 constexpr int kAutoGridStart = 64;
 constexpr int kAutoGridMax = 256;
 constexpr double kAutoGridAccuracy = 1e-3;
-constexpr int kMaxGrid = 2048;
 
 /// The largest relative move of a requirement's edge between two passes (0 where both are
 /// the same infinity).
@@ -968,19 +966,7 @@ double edge_move(const DesignResult& coarse, const DesignResult& fine) {
 /// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
 DesignResult design(const DesignArgs& a) {
   if (!a.texture() || a.off_curve()) return design_pass(a, 0);  // (a curve holds its own grid)
-  const std::string grid = a.grid.value_or("auto");
-  if (grid != "auto") {
-    int nodes = -1;
-    try {
-      nodes = input::parse_integer(grid, "--grid");
-    } catch (const input::UsageError&) {
-    }
-    if (nodes < 4 || nodes > kMaxGrid || nodes % 2 != 0) {
-      throw input::UsageError("--grid = " + grid + " is outside its range: an even integer in [4, " + std::to_string(kMaxGrid) +
-                              "], or auto");
-    }
-    return design_pass(a, nodes);
-  }
+  if (const int nodes = read_grid(a.grid.value_or("auto")); nodes != 0) return design_pass(a, nodes);
   DesignResult coarse = design_pass(a, kAutoGridStart);
   for (int nodes = 2 * kAutoGridStart;; nodes *= 2) {
     DesignResult fine = design_pass(a, nodes);
@@ -992,7 +978,7 @@ DesignResult design(const DesignArgs& a) {
       fine.notes.push_back("--grid auto: an edge still moves by " + model::number_text(fine.texture->grid_move, 2) +
                            " of itself from " + std::to_string(coarse.texture->nodes) + " to " + std::to_string(nodes) +
                            " nodes a pitch, more than the stated " + model::number_text(kAutoGridAccuracy, 2) +
-                           "; give a finer --grid (up to " + std::to_string(kMaxGrid) + ")");
+                           "; give a finer --grid (up to " + std::to_string(kMaxGridNodes) + ")");
       return fine;
     }
     coarse = std::move(fine);

@@ -39,7 +39,7 @@ constexpr const char* kUsage =
 /// The grid's range (nodes per pitch), and --grid auto's: the least nodes that give the
 /// smallest spot the times meet a radius of kAutoSpotRadius node spacings, within
 /// [kAutoMin, kAutoMax] (past it the snapshots below the curve's resolution are flagged).
-constexpr int kMaxGrid = 2048;
+constexpr int kMaxGrid = kMaxGridNodes;
 constexpr int kAutoMin = 64;
 constexpr int kAutoMax = 512;
 constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
@@ -148,6 +148,20 @@ po::options_description surface_options(const input::PointMaterial& material) {
       ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
        "output format: table, json or csv");
   return opts;
+}
+
+int read_grid(const std::string& text) {
+  if (text == "auto") return 0;
+  int nodes = -1;  // (not an integer: refused below with the option's range)
+  try {
+    nodes = input::parse_integer(text, "--grid");
+  } catch (const input::UsageError&) {
+  }
+  if (nodes < 4 || nodes > kMaxGridNodes || nodes % 2 != 0) {
+    throw input::UsageError("--grid = " + text + " is outside its range: an even integer in [4, " +
+                            std::to_string(kMaxGridNodes) + "], or auto");
+  }
+  return nodes;
 }
 
 namespace {
@@ -270,18 +284,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   if (vm.count("dh2")) {
     drops.push_back(input::read_parameter(vm, *model::texture_parameter(model::kThirdLevelDrop), &run.inputs.scales));
   }
-  const std::string grid = vm["grid"].as<std::string>();
-  if (grid != "auto") {
-    const std::string range = "an even integer in [4, " + std::to_string(kMaxGrid) + "], or auto";
-    try {
-      run.grid_nodes = input::parse_integer(grid, "--grid");
-    } catch (const input::UsageError&) {
-      run.grid_nodes = -1;  // refused below with the option's range
-    }
-    if (run.grid_nodes < 4 || run.grid_nodes > kMaxGrid || run.grid_nodes % 2 != 0) {
-      throw input::UsageError("--grid = " + grid + " is outside its range: " + range);
-    }
-  }
+  run.grid_nodes = read_grid(vm["grid"].as<std::string>());
   run.check = vm.count("check") && vm["check"].as<bool>();
   // The periodic model's tables are the two-level square lattice's, on their own grid.
   const std::string curve = input::read_choice(vm, "curve", {"auto", "tables", "cell"});

@@ -17,6 +17,13 @@
 
 namespace punchsweep::app {
 
+/// The most boundary-element nodes a pitch a texture's curve (or design) is solved on.
+inline constexpr int kMaxGridNodes = 2048;
+
+/// --grid TEXT: an even number of nodes a pitch in [4, kMaxGridNodes], or 0 for "auto";
+/// UsageError naming the value and the range otherwise.
+int read_grid(const std::string& text);
+
 /// The command's options (the point's for `material`'s law, the texture's, the grid's):
 /// `surface-map` takes the same.
 boost::program_options::options_description surface_options(const input::PointMaterial& material);
