@@ -51,7 +51,7 @@ constexpr const char* kUsage =
 constexpr const char* kRequirementForms =
     "valid: 'touch within TIME at PRESSURE', 'touch at once at PRESSURE', 'touch at PRESSURE' (at any time), "
     "'never at PRESSURE', 'no touch within TIME at PRESSURE' (with --find pressure, without 'at PRESSURE'); "
-    "where heights scatter (--supercell, --scatter) with --find pressure also 'N% of level L within TIME', "
+    "with --find pressure on a scattered supercell, a cell file or a height map also 'N% of level L within TIME', "
     "'at most N% of caps within TIME' (of level L, or of caps: every one; without a time, ever); TIME with a unit (1s, 5min) where a material file "
     "gives one (else in T_eps), PRESSURE with one (30kPa) where it gives a modulus (else in E0/(1-nu^2))";
 
@@ -257,7 +257,7 @@ Requirement read_requirement(const std::string& text, const input::PhysicalScale
   std::string time_text, pressure_text;
   // Each form's pressure, " at PRESSURE", is its last group, optional here and checked below.
   // A share of caps: "90% of level 1 within 1min", "at most 5% of caps within 1s".
-  static const char* kShare = "([0-9]+(?:\\.[0-9]*)?) ?% of (?:level ([0-9]+)(?:'s caps)?|(?:all |the |every )?caps)"
+  static const char* kShare = "([0-9]{1,6}(?:\\.[0-9]{0,12})?) ?% of (?:level ([0-9]{1,3})(?:'s caps)?|(?:all |the |every )?caps)"
                               "(?: (?:within|by) (.+?)| ever)?(?: at (.+))?";
   std::smatch share;
   const bool at_most = std::regex_match(flat, share, std::regex(std::string("at most ") + kShare, std::regex::icase));

@@ -229,6 +229,11 @@ def test_a_height_maps_pressure_window_is_its_lattices(tmp_path):
       "--require", "90% of level 2 within 1s"], "the texture has levels 0 to 1"),
     (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
       "--require", "150% of caps within 1s"], "outside 0% to 100%"),
+    # (Numbers too long for a double or an int were an internal error; now not a requirement.)
+    (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
+      "--require", "90% of level 99999999999 within 1s"], "not a requirement"),
+    (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
+      "--require", "1" + "0" * 400 + "% of caps within 1s"], "not a requirement"),
 ])
 def test_what_the_texture_design_cannot_answer_is_refused_by_name(args, message):
     lattice = [] if "--lattice" in args else ["--lattice", "hexagonal"]
