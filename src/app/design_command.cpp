@@ -483,6 +483,9 @@ double share_load(const model::LoadCurve& curve, int level, const Requirement& r
   return m >= touchdowns.size() ? kInf : touchdowns[m];
 }
 
+/// The most closures (each a grid's fields) a texture's design keeps at once.
+constexpr std::size_t kKeptClosures = 4;
+
 /// A texture's search for a pitch or pressure stops within this of the value's log.
 constexpr double kTextureSearchTolerance = 1e-9;
 
@@ -514,6 +517,10 @@ class TextureGap {
     if (std::isinf(X)) return kInf;
     const std::array<double, 3> key{problem.l, problem.shape.C, X};
     if (const auto found = known_.find(key); found != known_.end()) return found->second;
+    // A closure holds its grid's fields (tens of MB at 256 nodes a pitch): --find l asks a
+    // new pitch at every trial, so only the last few are kept (a box has at most 4 corners
+    // of l and C).
+    if (closures_.size() >= kKeptClosures && !closures_.contains({problem.l, problem.shape.C})) closures_.clear();
     auto& closure = closures_[{problem.l, problem.shape.C}];
     if (!closure) {
       const model::CellGeometry g = model::lattice_cell(lattice_, problem.l, problem.shape, drops_);
