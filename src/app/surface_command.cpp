@@ -36,10 +36,9 @@ namespace {
 constexpr const char* kUsage =
     "usage: punchsweep surface --lattice square|hexagonal --l L --dh DH [--dh2 DH2] --T T --pbar P --s S [options]";
 
-/// The grid's range (nodes per pitch), and --grid auto's: the least nodes that give the
+/// --grid auto: the least nodes a pitch that give the
 /// smallest spot the times meet a radius of kAutoSpotRadius node spacings, within
 /// [kAutoMin, kAutoMax] (past it the snapshots below the curve's resolution are flagged).
-constexpr int kMaxGrid = kMaxGridNodes;
 constexpr int kAutoMin = 64;
 constexpr int kAutoMax = 512;
 constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
@@ -420,7 +419,7 @@ model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad
     } else {
       note << "moves by " << change[level] << " of itself from " << n / 2 << " nodes";
     }
-    note << " (the stated accuracy: " << kAutoTStarAccuracy << "): the level is marked unresolved; --grid N up to " << kMaxGrid
+    note << " (the stated accuracy: " << kAutoTStarAccuracy << "): the level is marked unresolved; --grid N up to " << kMaxGridNodes
          << " refines further";
     run.inputs.notes.push_back(note.str());
     run.unresolved_levels.push_back(static_cast<int>(level));

@@ -54,7 +54,7 @@ void write_physical(std::ostream& out, const SurfaceRun& run, const model::Surfa
     const double drop = drop_range(run.geometry, level).least;
     out << (level ? ", " : "") << "{\"drop\": " << num(drop * length->per_scaled) << ", \"X_star\": "
         << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled)
-        << ", \"contact_radius\": " << num(advice.level_radius[static_cast<std::size_t>(level)] * length->per_scaled) << "}";
+        << ", \"contact_radius\": " << num(advice.level[static_cast<std::size_t>(level)].a_max * length->per_scaled) << "}";
   }
   out << "],\n    \"series\": {\n";
   const auto series = [&](const std::string& name, auto value, bool last) {
@@ -142,8 +142,8 @@ std::string never_reason(const SurfaceRun& run, bool hidden) {
 std::string advisory_reason(const model::SurfaceAdvisories& advice) {
   if (advice.all.raised.empty()) return "";
   std::size_t widest = 0;
-  for (std::size_t level = 0; level < advice.level_radius.size(); ++level) {
-    if (advice.level_radius[level] > advice.level_radius[widest]) widest = level;
+  for (std::size_t level = 0; level < advice.level.size(); ++level) {
+    if (advice.level[level].a_max > advice.level[widest].a_max) widest = level;
   }
   std::string text = "On the widest caps, level ";
   text += std::to_string(widest);
@@ -192,7 +192,7 @@ void write_json(std::ostream& out, const SurfaceRun& run) {
         << ", \"t_star_grid_change\": "
         << (run.grid_t_star_change.empty() ? std::string("null") : num(run.grid_t_star_change[static_cast<std::size_t>(level)]))
         << ", \"share\": " << num(run.curve.level_share[static_cast<std::size_t>(level)])
-        << ", \"contact_radius\": " << num(advice.level_radius[static_cast<std::size_t>(level)])
+        << ", \"contact_radius\": " << num(advice.level[static_cast<std::size_t>(level)].a_max)
         << ", \"advisories\": " << input::json_string(advice.level[static_cast<std::size_t>(level)].names());
     for (const model::TStarDerivative& d : run.derivatives[static_cast<std::size_t>(level)]) {
       out << ", \"dt_star_d" << d.parameter->name << "\": " << num(d.derivative) << ", \"dlog_t_star_dlog_" << d.parameter->name

@@ -9,7 +9,6 @@ namespace punchsweep::model {
 SurfaceAdvisories advise_surface(const CellGeometry& geometry, const SurfaceHistory& history) {
   const std::size_t L = static_cast<std::size_t>(geometry.levels());
   SurfaceAdvisories out;
-  out.level_radius.assign(L, 0.0);
   out.level.assign(L, Advisories{});
   if (history.snapshots.empty()) return out;
   const CurveState& last = history.snapshots.back().state;
@@ -19,13 +18,13 @@ SurfaceAdvisories advise_surface(const CellGeometry& geometry, const SurfaceHist
     const double touching = std::round(last.level_sites_touched[level] * sites[level]);
     const double area = last.level_area[level];
     if (!(touching >= 1.0) || !(area > 0.0)) continue;
-    out.level_radius[level] = std::sqrt(area / (std::numbers::pi * touching));
+    const double radius = std::sqrt(area / (std::numbers::pi * touching));
     // The level's shapes (a lattice's one; a cell file's may differ site by site): the most
     // strained speaks for the level.
     bool first = true;
     for (const Site& site : geometry.sites) {
       if (static_cast<std::size_t>(site.level) != level) continue;
-      const Advisories a = advise(site.shape, out.level_radius[level]);
+      const Advisories a = advise(site.shape, radius);
       if (first || a.strain > out.level[level].strain) out.level[level] = a;
       first = false;
     }

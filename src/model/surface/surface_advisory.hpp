@@ -16,12 +16,11 @@ namespace punchsweep::model {
 /// Per level, the contact radius of its caps at the last snapshot (radii only grow while the
 /// contact does: the answer holds no later), and the advisories over all levels.
 struct SurfaceAdvisories {
-  /// Per level, in R: its contact area over pi times its caps in contact, sqrt(A / (pi n))
-  /// (each cap's radius on a lattice, whose caps of a level are equal; their root-mean-square
-  /// where heights scatter); 0 where none touches.
-  std::vector<double> level_radius;
   /// Per level, the advisories of its caps (model::advise on the level's shape, the most
-  /// strained of its shapes where its caps differ).
+  /// strained of its shapes where its caps differ). Their a_max is the level's contact
+  /// radius, in R: its contact area over pi times its caps in contact, sqrt(A / (pi n)) (each
+  /// cap's radius on a lattice, whose caps of a level are equal; their root-mean-square where
+  /// heights scatter); 0 where none touches.
   std::vector<Advisories> level;
   /// Over all levels: a_max and strain the largest, `raised` every advisory any level raises.
   Advisories all;
