@@ -513,7 +513,7 @@ class TextureGap {
   /// and load on `creep`, at its pitch and shape; +infinity where the law creeps without end.
   double operator()(const model::ContactProblem& problem, const model::CreepLaw& creep, double t) {
     const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
-    const double X = t == 0.0 ? load.initial() : std::isinf(t) ? load.final() : load(t);
+    const double X = load.by(t);
     if (std::isinf(X)) return kInf;
     const std::array<double, 3> key{problem.l, problem.shape.C, X};
     if (const auto found = known_.find(key); found != known_.end()) return found->second;
@@ -829,10 +829,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
               // The load at which the requirement's share of caps turns, over the load the
               // unit pressure gives by its time: the pressure is that ratio (X is linear in
               // the pressure's amplitude).
-              const model::CreepWeightedLoad unit(*in.creep, 1.0, in.problem.loading);
-              const double g = r.time == 0.0 ? unit.response_initial()
-                               : std::isinf(r.time) ? unit.response_final()
-                                                    : unit.response(r.time);
+              const double g = model::CreepWeightedLoad(*in.creep, 1.0, in.problem.loading).by(r.time);
               const double X = share_load(off_curve->curve, r.share_level == 0 ? out.texture->level : r.share_level, r);
               endless = endless || std::isinf(g);
               double value = std::isinf(g) ? 0.0 : g > 0.0 ? X / g : X == 0.0 ? 0.0 : kInf;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -56,6 +57,9 @@ class CreepWeightedLoad {
   double initial() const { return pbar0_ * response_initial(); }
   /// X(inf); +infinity for unlimited creep.
   double final() const { return pbar0_ * response_final(); }
+  /// X by time t as a requirement reads it ("touch within t"): X(0+) at t = 0 (at once),
+  /// X(inf) at t = +infinity (ever), X(t) otherwise.
+  double by(double t) const { return t == 0.0 ? initial() : t == std::numeric_limits<double>::infinity() ? final() : (*this)(t); }
 
   /// The nominal pressure pbar(t) = pbar0 phi(t) at t > 0, in E0*.
   double nominal_pressure(double t) const { return shape_.is_step() ? pbar0_ : pbar0_ * shape_.at(t); }

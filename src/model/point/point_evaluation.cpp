@@ -189,8 +189,7 @@ void single_level_ends(const ContactProblem& problem, const CreepLaw& creep, dou
 
 double dh_touching_at(const ContactProblem& problem, const CreepLaw& creep, double t) {
   const CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
-  const double X = t == 0.0 ? load.initial() : std::isinf(t) ? load.final() : load(t);
-  return single_level_at(problem, X).h;
+  return single_level_at(problem, load.by(t)).h;
 }
 
 PointSummary summarize_point(const ContactProblem& problem, const CreepLaw& creep,
