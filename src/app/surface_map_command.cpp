@@ -16,6 +16,8 @@
 #include <unistd.h>
 
 #include "app/surface_command.hpp"
+#include "app/texture_map_run.hpp"
+#include "run/text_lines.hpp"
 #include "input/axis_parser.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
@@ -44,6 +46,13 @@ constexpr std::string_view kGeometryKeys[] = {model::kPitch, model::kHeightDiffe
 /// The map's own keywords (not the texture's).
 constexpr const char* kOutput = "output";
 constexpr const char* kOverwrite = "overwrite";
+constexpr const char* kResume = "resume";
+constexpr const char* kQuiet = "quiet";
+
+/// Whether `key` is one of the run's own keywords (where and how to write), not the map's.
+bool is_run_keyword(const std::string& key) {
+  return key == kOutput || key == kOverwrite || key == kResume || key == kQuiet;
+}
 
 /// The options `surface` has that a map does not take, and why.
 struct Refused {
@@ -130,7 +139,7 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
   const input::PhysicalScales scales = input::scales_of(material.material.get(), R);
   const model::PointAxes point_axes(in.spec->parameters, true);
   for (const auto& [key, value] : keywords) {
-    if (key == kOutput || key == kOverwrite) continue;
+    if (is_run_keyword(key)) continue;
     if (key == "tolerance") {
       in.tolerance_text = value;
       continue;
@@ -257,21 +266,75 @@ std::size_t SurfaceMap::load_points() const {
   return n;
 }
 
-SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int ranks, bool progress) {
-  const MapInputs in = read_map_inputs(keywords);
-  SurfaceMap map;
+namespace {
+
+/// Each of geometry g's blocks of the map's arrays, as (array, first, count), in the order
+/// they travel (between ranks, into the journal).
+template <class Map, class Visit>
+void for_each_block(Map& map, std::size_t g, Visit&& visit) {
+  const std::size_t P = map.load_points(), L = static_cast<std::size_t>(map.levels), T = map.times.size();
+  visit(map.t_star, g * P * L, P * L);
+  visit(map.regime, g * P * L, P * L);
+  visit(map.X_star, g * L, L);
+  visit(map.resolved, g * L, L);
+  visit(map.touched, g * P * T, P * T);
+  visit(map.area_fraction, g * P * T, P * T);
+  visit(map.valid, g * P * T, P * T);
+  if (!map.tolerance.empty()) {
+    visit(map.t_star_low, g * P * L, P * L);
+    visit(map.t_star_high, g * P * L, P * L);
+    visit(map.regime_low, g * P * L, P * L);
+    visit(map.regime_high, g * P * L, P * L);
+  }
+  visit(map.grid, g, 1);
+  visit(map.from_tables, g, 1);
+}
+
+/// A block's head: levels, caps, E0* in Pa, the curve's seconds and source, the number of
+/// times, then the times.
+enum Head : std::size_t { kLevels, kCaps, kE0, kSeconds, kSource, kTimes, kHead };
+
+/// Sizes every array of `map` for its geometries (NaN and not computed).
+void size_arrays(SurfaceMap& map) {
+  const std::size_t G = map.geometries(), P = map.load_points(), L = static_cast<std::size_t>(map.levels),
+                    T = map.times.size();
+  map.t_star.assign(G * P * L, kNaN);
+  map.regime.assign(G * P * L, kNotComputed);
+  map.X_star.assign(G * L, kNaN);
+  map.resolved.assign(G * L, kNotComputed);
+  map.touched.assign(G * P * T, kNaN);
+  map.area_fraction.assign(G * P * T, kNaN);
+  map.valid.assign(G * P * T, kNotComputed);
+  if (!map.tolerance.empty()) {
+    map.t_star_low.assign(G * P * L, kNaN);
+    map.t_star_high.assign(G * P * L, kNaN);
+    map.regime_low.assign(G * P * L, kNotComputed);
+    map.regime_high.assign(G * P * L, kNotComputed);
+  }
+  map.grid.assign(G, kNaN);
+  map.from_tables.assign(G, kNotComputed);
+}
+
+}  // namespace
+
+struct TextureMapPlan::Inputs : MapInputs {};
+
+TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
+    : in_(std::make_unique<const Inputs>(Inputs{read_map_inputs(keywords)})) {
+  const MapInputs& in = *in_;
+  SurfaceMap& map = header_;
   map.geometry = in.geometry;
   map.load = in.load;
   map.texture = json_keywords(in.texture);
   map.scatter_kind = in.scatter_kind;
   map.tolerance = in.tolerance_text;
+  map.time_unit = in.material->time_unit();
   if (const std::string* m = find(keywords, "material")) map.material = *m;
   if (const std::string* R = find(keywords, "R")) {
     const model::Physical length = input::read_length_scale(*R);  // (read_map_inputs has checked it)
     map.R = input::format_axis_value(length.number) + " " + std::string(length.unit->name);
     map.R_m = length.si();
   }
-  const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
   const std::size_t G = map.geometries(), P = map.load_points();
   // Up front, what the map asks: a load curve per geometry (seconds to minutes each), and
   // every point's values held on rank 0 until the file is written.
@@ -282,33 +345,54 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   if (static_cast<double>(G) * static_cast<double>(P) > kMaxMapPoints) {
     throw input::UsageError("the map has " + std::to_string(G) + " geometries x " + std::to_string(P) + " load points, beyond " +
                             input::json_number(kMaxMapPoints) +
-                            " points (a surface map is held in memory until it is written whole): split its axes over several maps");
+                            " points (a texture map is held in memory until it is written whole): split its axes over several maps");
   }
+}
+
+TextureMapPlan::~TextureMapPlan() = default;
+
+std::string TextureMapPlan::describe(std::size_t g) const {
+  std::ostringstream line;
+  const std::vector<std::size_t> at = digits_of(g, sizes_of(header_.geometry));
+  // In R's own unit where the map has one ("60 um": a length of 1 R is 60 um), else in R.
+  const std::size_t space = header_.R.find(' ');
+  const double per_R = space == std::string::npos ? 1.0 : std::stod(header_.R.substr(0, space));
+  const std::string unit = space == std::string::npos ? "R" : header_.R.substr(space + 1);
+  for (std::size_t d = 0; d < header_.geometry.size(); ++d) {
+    const SurfaceMapAxis& axis = header_.geometry[d];
+    const bool length = axis.scale == "R";
+    line << (d ? ", " : "") << axis.name << " = " << axis.values[at[d]] * (length ? per_R : 1.0) << (length ? " " + unit : "");
+  }
+  return line.str();
+}
+
+std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
+  const MapInputs& in = *in_;
+  const SurfaceMap& map = header_;
+  const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
+  const std::size_t P = map.load_points();
   const double least_pbar = *std::min_element(in.load[0].values.begin(), in.load[0].values.end());
 
-  // Every geometry's keywords: the texture's, its lengths, and the least pressure (the
-  // grid --grid auto picks is the one the smallest spot asks) at the law's first values.
-  const auto point_keywords = [&](std::size_t g) {
-    input::Keywords k = in.texture;
-    const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
-    for (std::size_t d = 0; d < map.geometry.size(); ++d) {
-      const double v = map.geometry[d].values[at[d]];
-      if (map.geometry[d].name == model::kScatterWidth) {
-        k.emplace_back("scatter", in.scatter_kind + ":" + text_of(v));
-      } else {
-        k.emplace_back(map.geometry[d].name, text_of(v));
-      }
+  // The geometry's keywords: the texture's, its lengths, and the least pressure (the grid
+  // --grid auto picks is the one the smallest spot asks) at the law's first values.
+  input::Keywords keywords = in.texture;
+  const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
+  for (std::size_t d = 0; d < map.geometry.size(); ++d) {
+    const double v = map.geometry[d].values[at[d]];
+    if (map.geometry[d].name == model::kScatterWidth) {
+      keywords.emplace_back("scatter", in.scatter_kind + ":" + text_of(v));
+    } else {
+      keywords.emplace_back(map.geometry[d].name, text_of(v));
     }
-    k.emplace_back("pbar", text_of(least_pbar));
-    for (std::size_t a = 1; a < in.load.size(); ++a) {  // the law's (the curve is elastic: no ramp)
-      if (in.load_coordinates[a].coordinate == model::Coordinate::law) {
-        k.emplace_back(in.load[a].name, text_of(in.load[a].values.front()));
-      }
+  }
+  keywords.emplace_back("pbar", text_of(least_pbar));
+  for (std::size_t a = 1; a < in.load.size(); ++a) {  // the law's (the curve is elastic: no ramp)
+    if (in.load_coordinates[a].coordinate == model::Coordinate::law) {
+      keywords.emplace_back(in.load[a].name, text_of(in.load[a].values.front()));
     }
-    return k;
-  };
+  }
 
-  // Load point p of a run: its point with the load axes' values put in, its law and load.
+  // Load point p of the run: its point with the load axes' values put in, its law and load.
   struct LoadPoint {
     model::PointValues point;
     std::unique_ptr<model::CreepLaw> creep;
@@ -316,9 +400,9 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
   };
   const auto load_point = [&](const SurfaceRun& run, std::size_t p) {
     LoadPoint out{{run.inputs.problem, run.inputs.law_values}, nullptr, std::nullopt};
-    const std::vector<std::size_t> at = digits_of(p, load_sizes);
+    const std::vector<std::size_t> digits = digits_of(p, load_sizes);
     for (std::size_t a = 0; a < map.load.size(); ++a) {
-      model::set_coordinate(in.load_coordinates[a], map.load[a].values[at[a]], &out.point);
+      model::set_coordinate(in.load_coordinates[a], map.load[a].values[digits[a]], &out.point);
     }
     out.creep = model::make_creep_law(*in.spec, out.point.law);
     out.load.emplace(*out.creep, out.point.problem.pbar0, out.point.problem.loading);
@@ -334,118 +418,143 @@ SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int r
     return rows;
   };
 
-  // A rank's first geometry sizes its arrays (levels, caps, times: the same for every
-  // geometry of a map); rank 0's is the first of all.
-  bool sized = false;
-  for (std::size_t g = static_cast<std::size_t>(rank); g < G; g += static_cast<std::size_t>(ranks)) {
-    const auto start = std::chrono::steady_clock::now();
-    const SurfaceRun run = evaluate_surface(point_keywords(g), hold_every_load_point);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::size_t L = static_cast<std::size_t>(run.curve.levels());
-    if (!sized) {
-      map.levels = run.curve.levels();
-      map.caps = run.geometry.sites.size();
-      map.times = run.times;
-      map.time_unit = run.inputs.time_unit;
-      if (run.inputs.scales.E0_star) map.E0_star_Pa = run.inputs.scales.E0_star->si();
-      const std::size_t T = map.times.size();
-      map.t_star.assign(G * P * L, kNaN);
-      map.regime.assign(G * P * L, kNotComputed);
-      map.X_star.assign(G * L, kNaN);
-      map.resolved.assign(G * L, kNotComputed);
-      map.touched.assign(G * P * T, kNaN);
-      map.area_fraction.assign(G * P * T, kNaN);
-      map.valid.assign(G * P * T, kNotComputed);
-      if (!in.tolerance.empty()) {
-        map.t_star_low.assign(G * P * L, kNaN);
-        map.t_star_high.assign(G * P * L, kNaN);
-        map.regime_low.assign(G * P * L, kNotComputed);
-        map.regime_high.assign(G * P * L, kNotComputed);
-      }
-      map.grid.assign(G, kNaN);
-      map.from_tables.assign(G, kNotComputed);
-      map.curve_seconds.assign(G, kNaN);
-      sized = true;
-    }
-    if (L != static_cast<std::size_t>(map.levels)) {
-      throw input::UsageError("the geometries have different numbers of levels (" + std::to_string(map.levels) + " and " +
-                              std::to_string(L) + "): a map's geometries share their levels");
-    }
-    map.grid[g] = run.curve.nx;
-    map.from_tables[g] = run.curve_source == CurveSource::tables ? 1 : 0;
-    map.curve_seconds[g] = seconds;
-    // Each level's touchdown load and whether the curve resolves it: the geometry's alone,
-    // as the run read them.
+  const auto start = std::chrono::steady_clock::now();
+  const SurfaceRun run = evaluate_surface(keywords, hold_every_load_point);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t L = static_cast<std::size_t>(run.curve.levels());
+  // The geometry's block: a map of this one geometry.
+  SurfaceMap block = map;
+  for (SurfaceMapAxis& axis : block.geometry) axis.values.resize(1);
+  block.levels = run.curve.levels();
+  block.caps = run.geometry.sites.size();
+  block.times = run.times;
+  size_arrays(block);
+  block.grid[0] = run.curve.nx;
+  block.from_tables[0] = run.curve_source == CurveSource::tables ? 1 : 0;
+  // Each level's touchdown load and whether the curve resolves it: the geometry's alone,
+  // as the run read them.
+  for (std::size_t level = 0; level < L; ++level) {
+    block.X_star[level] = run.history.levels[level].X_star;
+    block.resolved[level] = run.history.levels[level].resolved ? 1 : 0;
+  }
+  // Each load point off the curve.
+  const std::size_t T = block.times.size();
+  for (std::size_t p = 0; p < P; ++p) {
+    const LoadPoint at_p = load_point(run, p);
+    const model::PointValues& point = at_p.point;
+    const model::CreepWeightedLoad& load = *at_p.load;
+    const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
     for (std::size_t level = 0; level < L; ++level) {
-      map.X_star[g * L + level] = run.history.levels[level].X_star;
-      map.resolved[g * L + level] = run.history.levels[level].resolved ? 1 : 0;
+      block.t_star[p * L + level] = touches[level].t_star;
+      block.regime[p * L + level] = static_cast<std::int8_t>(touches[level].regime);
     }
-    // Each load point off the curve.
-    const std::size_t T = map.times.size();
-    for (std::size_t p = 0; p < P; ++p) {
-      const LoadPoint at_p = load_point(run, p);
-      const model::PointValues& point = at_p.point;
-      const model::CreepWeightedLoad& load = *at_p.load;
-      const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
-      const std::size_t row = g * P + p;
-      for (std::size_t level = 0; level < L; ++level) {
-        map.t_star[row * L + level] = touches[level].t_star;
-        map.regime[row * L + level] = static_cast<std::int8_t>(touches[level].regime);
+    if (!in.tolerance.empty()) {
+      // The box about this point (each tolerance about its own value here), each level's
+      // t* at its corners (model::level_t_star_ranges, as surface --tolerance).
+      std::vector<model::Tolerance> box;
+      for (std::size_t k = 0; k < in.tolerance.size(); ++k) {
+        const model::PointAxis& c = in.tolerance_coordinates[k];
+        box.push_back(in.tolerance[k].at(c.coordinate == model::Coordinate::pressure ? point.problem.pbar0
+                                                                                     : point.law[c.law_index]));
       }
-      if (!in.tolerance.empty()) {
-        // The box about this point (each tolerance about its own value here), each level's
-        // t* at its corners (model::level_t_star_ranges, as surface --tolerance).
-        std::vector<model::Tolerance> box;
-        for (std::size_t k = 0; k < in.tolerance.size(); ++k) {
-          const model::PointAxis& c = in.tolerance_coordinates[k];
-          box.push_back(in.tolerance[k].at(c.coordinate == model::Coordinate::pressure ? point.problem.pbar0
-                                                                                       : point.law[c.law_index]));
-        }
-        const model::SurfaceLoad surface_load{point.problem.pbar0, in.spec, point.law, point.problem.loading};
-        std::vector<model::TStarRange> ranges;
-        try {
-          ranges = model::level_t_star_ranges(run.curve, surface_load, box);
-        } catch (const std::invalid_argument&) {
-          // A corner outside a parameter's range (T < 1): NaN, not computed, as a sweep's map.
-        }
-        for (std::size_t level = 0; level < ranges.size(); ++level) {
-          const model::TStarRange& r = ranges[level];
-          if (r.not_computed > 0) continue;
-          map.t_star_low[row * L + level] = r.low;
-          map.t_star_high[row * L + level] = r.high;
-          map.regime_low[row * L + level] = static_cast<std::int8_t>(r.regime_low);
-          map.regime_high[row * L + level] = static_cast<std::int8_t>(r.regime_high);
-        }
+      const model::SurfaceLoad surface_load{point.problem.pbar0, in.spec, point.law, point.problem.loading};
+      std::vector<model::TStarRange> ranges;
+      try {
+        ranges = model::level_t_star_ranges(run.curve, surface_load, box);
+      } catch (const std::invalid_argument&) {
+        // A corner outside a parameter's range (T < 1): NaN, not computed, as a sweep's map.
       }
-      const double X0 = load.initial();
-      for (std::size_t k = 0; k < T; ++k) {
-        const double t = map.times[k];
-        const model::CurveState state = run.curve.at(t > 0.0 ? load(t) : X0);
-        const model::SurfaceValidity validity = model::reading_validity(run.curve, X0, state);
-        map.valid[row * T + k] = static_cast<std::int8_t>(validity);
-        map.touched[row * T + k] = state.sites_touched;
-        map.area_fraction[row * T + k] = state.range == model::CurveRange::above_top ? kNaN : state.area_fraction;
+      for (std::size_t level = 0; level < ranges.size(); ++level) {
+        const model::TStarRange& r = ranges[level];
+        if (r.not_computed > 0) continue;
+        block.t_star_low[p * L + level] = r.low;
+        block.t_star_high[p * L + level] = r.high;
+        block.regime_low[p * L + level] = static_cast<std::int8_t>(r.regime_low);
+        block.regime_high[p * L + level] = static_cast<std::int8_t>(r.regime_high);
       }
     }
+    const double X0 = load.initial();
+    for (std::size_t k = 0; k < T; ++k) {
+      const double t = block.times[k];
+      const model::CurveState state = run.curve.at(t > 0.0 ? load(t) : X0);
+      const model::SurfaceValidity validity = model::reading_validity(run.curve, X0, state);
+      block.valid[p * T + k] = static_cast<std::int8_t>(validity);
+      block.touched[p * T + k] = state.sites_touched;
+      block.area_fraction[p * T + k] = state.range == model::CurveRange::above_top ? kNaN : state.area_fraction;
+    }
+  }
+  // As it travels: the head, then every array's values as doubles (codes are small integers).
+  std::vector<double> values(kHead);
+  values[kLevels] = static_cast<double>(L);
+  values[kCaps] = static_cast<double>(block.caps);
+  values[kE0] = run.inputs.scales.E0_star ? run.inputs.scales.E0_star->si() : 0.0;
+  values[kSeconds] = seconds;
+  values[kSource] = run.curve_source == CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
+  values[kTimes] = static_cast<double>(T);
+  values.insert(values.end(), block.times.begin(), block.times.end());
+  for_each_block(block, 0, [&values](const auto& v, std::size_t from, std::size_t n) {
+    for (std::size_t k = from; k < from + n; ++k) values.push_back(static_cast<double>(v[k]));
+  });
+  return values;
+}
+
+GeometryCost geometry_cost(std::span<const double> block) {
+  if (block.size() < kHead) throw std::invalid_argument("a geometry's block shorter than its head");
+  const char* source = block[kSource] == 2.0 ? "from the periodic tables" : block[kSource] == 1.0 ? "from the cache" : "built";
+  return {block[kSeconds], source};
+}
+
+void place_geometry(SurfaceMap* map, std::size_t g, std::span<const double> block) {
+  const auto refuse = [g](const std::string& why) {
+    return std::invalid_argument("geometry " + std::to_string(g) + "'s block " + why);
+  };
+  if (g >= map->geometries()) throw refuse("lies outside the map's " + std::to_string(map->geometries()) + " geometries");
+  if (block.size() < kHead) throw refuse("is shorter than its head");
+  const int levels = static_cast<int>(block[kLevels]);
+  const std::size_t T = static_cast<std::size_t>(block[kTimes]);
+  if (block.size() < kHead + T) throw refuse("is shorter than its times");
+  const std::vector<double> times(block.begin() + kHead, block.begin() + static_cast<std::ptrdiff_t>(kHead + T));
+  if (map->levels == 0) {
+    map->levels = levels;
+    map->caps = static_cast<std::size_t>(block[kCaps]);
+    map->times = times;
+    map->E0_star_Pa = block[kE0];
+    size_arrays(*map);
+  } else if (levels != map->levels) {
+    throw input::UsageError("the geometries have different numbers of levels (" + std::to_string(map->levels) + " and " +
+                            std::to_string(levels) + "): a map's geometries share their levels");
+  } else if (times != map->times) {
+    throw refuse("has other snapshot times than the map's");
+  }
+  std::size_t k = kHead + T;
+  std::size_t expected = k;
+  for_each_block(*map, g, [&expected](const auto&, std::size_t, std::size_t n) { expected += n; });
+  if (block.size() != expected) {
+    throw refuse("holds " + std::to_string(block.size()) + " values where the map's geometry has " + std::to_string(expected));
+  }
+  for_each_block(*map, g, [&](auto& v, std::size_t from, std::size_t n) {
+    using Value = typename std::decay_t<decltype(v)>::value_type;
+    for (std::size_t i = from; i < from + n; ++i) v[i] = static_cast<Value>(block[k++]);
+  });
+}
+
+SurfaceMap evaluate_surface_map(const input::Keywords& keywords, bool progress) {
+  const TextureMapPlan plan(keywords);
+  SurfaceMap map = plan.header();
+  const std::size_t G = plan.geometries();
+  for (std::size_t g = 0; g < G; ++g) {
+    const std::vector<double> block = plan.evaluate(g);
+    place_geometry(&map, g, block);
     if (progress) {
-      std::ostringstream line;
-      line << "punchsweep surface-map: geometry " << g + 1 << " of " << G;
-      const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
-      for (std::size_t d = 0; d < map.geometry.size(); ++d) {
-        line << (d ? ", " : " (") << map.geometry[d].name << " = " << map.geometry[d].values[at[d]] << " R"
-             << (d + 1 == map.geometry.size() ? ")" : "");
-      }
-      line << ": curve " << (run.curve_source == CurveSource::tables ? "from the periodic tables" : run.curve_cached ? "from the cache" : "built")
-           << " in " << seconds << " s, " << P << " load points read (rank " << rank << ")\n";
-      std::cerr << line.str();
+      const GeometryCost cost = geometry_cost(block);
+      std::cerr << "punchsweep surface-map: geometry " << g + 1 << " of " << G << " (" << plan.describe(g) << "): curve "
+                << cost.source << " in " << cost.seconds << " s\n";
     }
   }
   return map;
 }
 
-namespace {
-/// The files a map reads: its material, cell file or height map.
-std::vector<std::string> map_input_files(const input::Keywords& keywords) {
+std::vector<std::string> texture_input_files(const input::Keywords& keywords) {
   std::vector<std::string> files;
   for (const char* key : {"material", "cell", "height-map"}) {
     if (const std::string* path = find(keywords, key)) files.push_back(*path);
@@ -453,12 +562,14 @@ std::vector<std::string> map_input_files(const input::Keywords& keywords) {
   return files;
 }
 
+namespace {
+
 /// Why the map may not be written to `path` (io::output_file_problem's rule for it and for
 /// its .partial, neither of them one of the map's input files, and an existing file without
 /// `overwrite`), or empty. An input is refused before the existing file, so that the
 /// refusal never invites --overwrite onto an input.
 std::string map_output_problem(const std::string& path, bool overwrite, const input::Keywords& keywords) {
-  const std::vector<std::string> inputs = map_input_files(keywords);
+  const std::vector<std::string> inputs = texture_input_files(keywords);
   for (const std::string& file : {path, path + ".partial"}) {
     if (std::string problem = io::output_file_problem(file, inputs); !problem.empty()) return problem;
   }
@@ -486,6 +597,8 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
     }
     if (map.E0_star_Pa > 0.0) file.attribute("E0_star_Pa", map.E0_star_Pa);
     if (!map.scatter_kind.empty()) file.attribute("scatter_kind", map.scatter_kind);
+    if (!map.identity.empty()) file.attribute("identity", map.identity);
+    if (map.layout_version > 0) file.attribute("layout_version", static_cast<double>(map.layout_version));
     file.attribute("time_unit", map.time_unit);
     const auto units = [&](const std::string& scale) -> io::Attributes {
       if (scale == "T_eps" && map.time_unit != "T_eps") return {{"units", map.time_unit}};
@@ -567,7 +680,6 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
     file.variable("from_tables", geometry_dims, map.from_tables,
                   {{"long_name", "the curve came from the periodic model's tables (1) or the cell's boundary elements (0)"}},
                   {0, 1});
-    file.variable("curve_seconds", geometry_dims, map.curve_seconds, {{"units", "s"}, {"long_name", "time to get the curve"}});
     if (map.E0_star_Pa > 0.0) {
       std::vector<double> pressure;
       for (const double p : map.load.front().values) pressure.push_back(p * map.E0_star_Pa);
@@ -596,33 +708,13 @@ po::options_description map_options(const input::PointMaterial& material) {
   po::options_description own("The map's own options");
   own.add_options()
       ("output", po::value<std::string>()->value_name("FILE"), "the map to write (netCDF-4): required")
-      ("overwrite", po::bool_switch(), "replace FILE where it exists");
+      ("overwrite", po::bool_switch(), "replace FILE where it exists")
+      ("resume", po::bool_switch(), "finish the map an interrupted run left (its journal FILE.partial.journal), "
+                                   "computing only the geometries it lacks")
+      ("quiet", po::bool_switch(), "no progress lines");
   po::options_description opts;
   opts.add(own).add(surface_options(material));
   return opts;
-}
-
-/// Each of geometry g's blocks of the map's arrays, as (array, first, count), in the order
-/// they travel to rank 0.
-template <class Visit>
-void for_each_block(SurfaceMap& map, std::size_t g, Visit&& visit) {
-  const std::size_t P = map.load_points(), L = static_cast<std::size_t>(map.levels), T = map.times.size();
-  visit(map.t_star, g * P * L, P * L);
-  visit(map.regime, g * P * L, P * L);
-  visit(map.X_star, g * L, L);
-  visit(map.resolved, g * L, L);
-  visit(map.touched, g * P * T, P * T);
-  visit(map.area_fraction, g * P * T, P * T);
-  visit(map.valid, g * P * T, P * T);
-  if (!map.tolerance.empty()) {
-    visit(map.t_star_low, g * P * L, P * L);
-    visit(map.t_star_high, g * P * L, P * L);
-    visit(map.regime_low, g * P * L, P * L);
-    visit(map.regime_high, g * P * L, P * L);
-  }
-  visit(map.grid, g, 1);
-  visit(map.from_tables, g, 1);
-  visit(map.curve_seconds, g, 1);
 }
 
 constexpr const char* kMapUsage =
@@ -641,87 +733,49 @@ constexpr const char* kMapUsage =
 int run_surface_map_command(const std::vector<std::string>& args) {
   sweep::MpiSession mpi;
   const bool root = mpi.rank() == 0;
-  input::Keywords keywords;
-  std::string output;
-  bool overwrite = false;
+  TextureMapJob job;
+  job.program = "punchsweep surface-map";
+  job.command = run::shell_command("punchsweep surface-map", args);
   try {
     const input::PointMaterial material = input::find_point_material(args);
     const po::options_description opts = map_options(material);
     const po::variables_map vm = input::parse_command(args, opts, "surface-map");
     if (vm.count("help")) {
-      if (root) std::cout << kMapUsage << "\n\n" << opts << "\nExit codes: 0 success, 2 bad input, 1 failure.\n";
+      if (root) std::cout << kMapUsage << "\n\n" << opts << "\nExit codes: 0 success, 2 bad input, 3 stopped by a signal (resume it with --resume), 1 failure.\n";
       return 0;
     }
     if (!vm.count("output")) throw input::UsageError("--output FILE is required: the map to write");
-    output = vm["output"].as<std::string>();
-    overwrite = vm["overwrite"].as<bool>();
-    keywords = keywords_of(args, opts);
-    // Rank 0 checks the output before any curve is built; every rank learns the verdict.
-    int refused = 0;
-    if (root) {
-      if (const std::string problem = map_output_problem(output, overwrite, keywords); !problem.empty()) {
-        std::cerr << "punchsweep surface-map: " << problem << "\n";
-        refused = 1;
-      }
+    job.output = vm["output"].as<std::string>();
+    job.overwrite = vm[kOverwrite].as<bool>();
+    job.resume = vm[kResume].as<bool>();
+    job.quiet = vm[kQuiet].as<bool>();
+    if (job.overwrite && job.resume) {
+      throw input::UsageError("--resume and --overwrite: give only one (--resume finishes or checks the existing map, --overwrite replaces it)");
     }
-    if (sweep::share_from_root(refused)) return input::kUsageExitCode;
+    for (auto& [key, value] : keywords_of(args, opts)) {
+      if (!is_run_keyword(key)) job.keywords.emplace_back(std::move(key), std::move(value));
+    }
   } catch (const input::UsageError& e) {
     if (root) std::cerr << "punchsweep surface-map: " << e.what() << "\n";
     return input::kUsageExitCode;
   }
-  // Each rank its geometries; a failure on any stops them all, said once (by the lowest
-  // rank that failed: bad input fails alike everywhere).
-  SurfaceMap map;
-  int failed = 0;
-  std::string why;
-  try {
-    map = evaluate_surface_map(keywords, mpi.rank(), mpi.size(), true);
-  } catch (const input::UsageError& e) {
-    failed = input::kUsageExitCode;
-    why = e.what();
-  } catch (const std::exception& e) {
-    failed = 1;
-    why = "rank " + std::to_string(mpi.rank()) + ": " + e.what();
-  }
-  const sweep::RankStatus verdict = sweep::worst_status(failed);
-  if (verdict.status != 0) {
-    if (verdict.rank == mpi.rank()) std::cerr << "punchsweep surface-map: " << why << "\n";
-    return verdict.status;
-  }
-  // Every rank's geometries to rank 0, in the order they were dealt.
-  const std::size_t G = map.geometries(), P = map.load_points(), L = static_cast<std::size_t>(map.levels),
-                    T = map.times.size();
-  std::vector<double> mine;
-  for (std::size_t g = static_cast<std::size_t>(mpi.rank()); g < G; g += static_cast<std::size_t>(mpi.size())) {
-    for_each_block(map, g, [&mine](const auto& v, std::size_t from, std::size_t n) {
-      for (std::size_t k = from; k < from + n; ++k) mine.push_back(static_cast<double>(v[k]));
-    });
-  }
-  const std::vector<double> all = mpi.size() > 1 ? sweep::gather_to_root(mine) : mine;
-  int status = 0;
-  if (root) {
-    std::size_t k = 0;
-    for (int r = 0; r < mpi.size(); ++r) {
-      for (std::size_t g = static_cast<std::size_t>(r); g < G; g += static_cast<std::size_t>(mpi.size())) {
-        for_each_block(map, g, [&](auto& v, std::size_t from, std::size_t n) {
-          using Value = typename std::decay_t<decltype(v)>::value_type;
-          for (std::size_t i = from; i < from + n; ++i) v[i] = static_cast<Value>(all[k++]);
-        });
+  return run_texture_map(job, mpi.rank(), mpi.size());
+}
+
+void check_texture_keywords(const input::Keywords& keywords, const std::vector<std::string>& origins) {
+  const po::options_description opts = map_options(input::find_point_material(keywords));
+  for (std::size_t k = 0; k < keywords.size(); ++k) {
+    const std::string& key = keywords[k].first;
+    if (is_run_keyword(key) || opts.find_nothrow(key, false) == nullptr || key == "help") {
+      std::string known;
+      for (const auto& option : opts.options()) {
+        const std::string& name = option->long_name();
+        if (!is_run_keyword(name) && name != "help") known += (known.empty() ? "" : ", ") + name;
       }
-    }
-    try {
-      write_surface_map(output, map, overwrite, keywords);
-      std::cerr << "punchsweep surface-map: wrote " << output << " (" << G << " geometr" << (G == 1 ? "y" : "ies") << " x "
-                << P << " load points x " << L << " levels, " << T << " times)\n";
-    } catch (const input::UsageError& e) {
-      std::cerr << "punchsweep surface-map: " << e.what() << "\n";
-      status = input::kUsageExitCode;
-    } catch (const std::exception& e) {
-      std::cerr << "punchsweep surface-map: " << e.what() << "\n";
-      status = 1;
+      const std::string& origin = k < origins.size() ? origins[k] : key;
+      throw input::UsageError("unknown key " + origin + " (a texture's map takes surface's options, '_' for '-': " + known + ")");
     }
   }
-  return mpi.size() > 1 ? sweep::share_from_root(status) : status;
 }
 
 std::string surface_map_file(const input::Keywords& keywords) {
@@ -733,7 +787,12 @@ std::string surface_map_file(const input::Keywords& keywords) {
   if (const std::string problem = map_output_problem(*output, overwrite, keywords); !problem.empty()) {
     throw input::UsageError(problem);
   }
-  const SurfaceMap map = evaluate_surface_map(keywords, 0, 1, false);
+  input::Keywords texture;
+  for (const auto& [key, value] : keywords) {
+    if (!is_run_keyword(key)) texture.emplace_back(key, value);
+  }
+  SurfaceMap map = evaluate_surface_map(texture, false);
+  map.identity = run::join(texture_map_identity(texture), "\n");
   write_surface_map(*output, map, overwrite, keywords);
   return *output;
 }

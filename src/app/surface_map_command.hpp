@@ -8,6 +8,8 @@
 /// and their validity. Rank 0 writes the map, a netCDF-4 file, whole.
 
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -47,7 +49,6 @@ struct SurfaceMap {
   std::vector<std::int8_t> regime_low, regime_high;  ///< [geometry, load, level]
   std::vector<double> grid;             ///< [geometry]: nodes along x of its curve
   std::vector<std::int8_t> from_tables;  ///< [geometry]: the periodic model's tables served
-  std::vector<double> curve_seconds;    ///< [geometry]
   double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
   std::string texture;                  ///< the texture's keywords, as JSON
   std::string material;                 ///< the material file, or empty
@@ -56,20 +57,73 @@ struct SurfaceMap {
   std::string R;
   double R_m = 0.0;
   std::string scatter_kind;             ///< normal or uniform where the scatter's width is an axis
+  /// The lines that define the map (texture_map_identity), compared by --resume; and the
+  /// layout's version (2: written through the journal; 1 before).
+  std::string identity;
+  int layout_version = 0;
 
   std::size_t geometries() const;
   std::size_t load_points() const;
 };
 
-/// The map of `keywords` (surface's, with axes where they take several values, and
-/// `output`), the geometries g with g % ranks == rank computed (the others left as NaN),
-/// with a line on stderr per curve when `progress`.
-SurfaceMap evaluate_surface_map(const input::Keywords& keywords, int rank, int ranks, bool progress);
+/// A texture map's inputs, read once (the texture's keywords, the geometry's axes, the
+/// load's axes, a box of tolerances), and each geometry's block computed from them: one
+/// load curve, every load point read off it. `sweep` with a [texture] section, `surface-map`
+/// and Python's surface_map all go through it.
+class TextureMapPlan {
+ public:
+  /// `keywords` are surface's, with axes where they take several values (and `output`,
+  /// `overwrite`, which it passes over). Throws input::UsageError for bad input or a map
+  /// beyond its limits (geometries, points held in memory).
+  explicit TextureMapPlan(const input::Keywords& keywords);
+  ~TextureMapPlan();
+  TextureMapPlan(const TextureMapPlan&) = delete;
+  TextureMapPlan& operator=(const TextureMapPlan&) = delete;
+
+  /// The map's axes and attributes, no geometry computed yet (its arrays empty).
+  const SurfaceMap& header() const { return header_; }
+  std::size_t geometries() const { return header_.geometries(); }
+  /// Geometry g's coordinates as "l = 1 R, dh = 0.02 R".
+  std::string describe(std::size_t g) const;
+  /// Geometry g computed: its curve (built, from the cache or the tables) and every load
+  /// point read off it, as the values that travel between ranks and into a journal
+  /// (place_geometry reads them). A pure function of g and the keywords.
+  std::vector<double> evaluate(std::size_t g) const;
+
+ private:
+  struct Inputs;
+  std::unique_ptr<const Inputs> in_;
+  SurfaceMap header_;
+};
+
+/// What a geometry's curve cost: seconds, and "built", "from the cache" or "from the
+/// periodic tables".
+struct GeometryCost {
+  double seconds;
+  const char* source;
+};
+GeometryCost geometry_cost(std::span<const double> block);
+
+/// Puts geometry g's block (TextureMapPlan::evaluate's values) into `map`, sizing its arrays
+/// from the first block placed. Throws input::UsageError when the geometries differ in
+/// their levels, std::invalid_argument when the block does not fit the map.
+void place_geometry(SurfaceMap* map, std::size_t g, std::span<const double> block);
+
+/// The map of `keywords` on this process alone, with a line on stderr per curve when
+/// `progress`.
+SurfaceMap evaluate_surface_map(const input::Keywords& keywords, bool progress);
 
 /// Writes `map` to `path` whole (a temporary name renamed), checking the path as every
 /// output is (io::output_file_problem, for it and its .partial) and that it is none of the
 /// files `keywords` reads (material, cell, height-map); `overwrite` allows replacing a file.
 void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite, const input::Keywords& keywords);
+
+/// The files a map's keywords read: its material, cell file or height map.
+std::vector<std::string> texture_input_files(const input::Keywords& keywords);
+
+/// Throws input::UsageError naming the first keyword no texture map takes (by its
+/// `origins` entry: "texture.foo"), with the ones it does.
+void check_texture_keywords(const input::Keywords& keywords, const std::vector<std::string>& origins);
 
 /// `mpirun -n N punchsweep surface-map ...`: the exit code (2 for bad input, said by rank 0).
 int run_surface_map_command(const std::vector<std::string>& args);

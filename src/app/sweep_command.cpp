@@ -22,6 +22,9 @@
 #include <unistd.h>
 
 #include "input/sweep_options.hpp"
+#include "input/texture_sweep_options.hpp"
+#include "app/surface_map_command.hpp"
+#include "app/texture_map_run.hpp"
 #include "input/usage_error.hpp"
 #include "app/version.hpp"
 #include "io/map_variables.hpp"
@@ -49,21 +52,7 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 extern "C" void on_stop_signal(int signal) { g_stop_signal = signal; }
 
 // The arguments as a shell would need them typed again (the resume hint is copy-pasted).
-std::string command_line(const std::vector<std::string>& args) {
-  std::string text = "punchsweep sweep";
-  for (const std::string& a : args) {
-    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                         "0123456789_./,=:+-@%") == std::string::npos;
-    if (plain) {
-      text += " " + a;
-      continue;
-    }
-    std::string quoted = "'";
-    for (const char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    text += " " + quoted + "'";
-  }
-  return text;
-}
+std::string command_line(const std::vector<std::string>& args) { return run::shell_command("punchsweep sweep", args); }
 
 std::string utc_now() {
   char buf[32];
@@ -238,11 +227,42 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
   return 0;
 }
 
+
+/// `punchsweep sweep` of a texture ([texture] in the config, or --texture.KEY): the texture
+/// map's run (app/texture_map_run.hpp) with the sweep's lock, journal and resume.
+int run_texture_sweep(const std::vector<std::string>& args, const sweep::MpiSession& mpi) {
+  const bool root = mpi.rank() == 0;
+  TextureMapJob job;
+  job.program = "punchsweep sweep";
+  job.command = command_line(args);
+  try {
+    const input::TextureSweepOptions options = input::parse_texture_sweep_options(args);
+    if (options.help) {
+      if (root) std::cout << input::kTextureSweepHelp;
+      return 0;
+    }
+    check_texture_keywords(options.keywords, options.origins);
+    job.keywords = options.keywords;
+    job.output = options.output;
+    job.resume = options.resume;
+    job.overwrite = options.overwrite;
+    job.quiet = options.quiet;
+    if (!options.config_path.empty()) job.input_files.push_back(options.config_path);
+  } catch (const input::UsageError& e) {
+    if (root) {
+      for (const std::string& line : run::split_lines(e.what())) std::cerr << "punchsweep sweep: " << line << "\n";
+    }
+    return input::kUsageExitCode;
+  }
+  return run_texture_map(job, mpi.rank(), mpi.size());
+}
+
 }  // namespace
 
 int run_sweep_command(const std::vector<std::string>& args) {
   sweep::MpiSession mpi;
   const bool root = mpi.rank() == 0;
+  if (input::is_texture_sweep(args)) return run_texture_sweep(args, mpi);
   std::ostringstream discard;
   sweep::SweepConfig config;
   bool help = false;

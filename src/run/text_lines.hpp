@@ -36,4 +36,22 @@ inline std::vector<std::string> split_lines(const std::string& text) {
   return lines;
 }
 
+/// `program` and its arguments as a shell would need them typed again (a resume hint is
+/// copy-pasted): plain words as they are, others in single quotes.
+inline std::string shell_command(const std::string& program, const std::vector<std::string>& args) {
+  std::string text = program;
+  for (const std::string& a : args) {
+    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                         "0123456789_./,=:+-@%") == std::string::npos;
+    if (plain) {
+      text += " " + a;
+      continue;
+    }
+    std::string quoted = "'";
+    for (const char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    text += " " + quoted + "'";
+  }
+  return text;
+}
+
 }  // namespace punchsweep::run

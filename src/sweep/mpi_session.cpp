@@ -64,8 +64,8 @@ std::uint64_t share_from_root(std::uint64_t value) {
 }
 
 ScheduleResult run_world_schedule(const TileRanges& pending, const TileWork& work, const TileSink& sink,
-                                  const volatile std::sig_atomic_t* stop) {
-  return run_schedule(MPI_COMM_WORLD, pending, work, sink, stop);
+                                  const volatile std::sig_atomic_t* stop, Pace pace) {
+  return run_schedule(MPI_COMM_WORLD, pending, work, sink, stop, pace);
 }
 
 void abort_all_ranks(int code) {

@@ -48,7 +48,7 @@ std::vector<double> gather_to_root(const std::vector<double>& mine);
 
 /// run_schedule over all the ranks of the session.
 ScheduleResult run_world_schedule(const TileRanges& pending, const TileWork& work, const TileSink& sink,
-                                  const volatile std::sig_atomic_t* stop);
+                                  const volatile std::sig_atomic_t* stop, Pace pace = Pace::tiles);
 
 /// Ends every rank at once with `code` (a rank that failed leaves the others no way on).
 [[noreturn]] void abort_all_ranks(int code);

@@ -97,13 +97,14 @@ void work(MPI_Comm comm, const TileWork& compute, const volatile std::sig_atomic
 
 class Manager {
  public:
-  Manager(MPI_Comm comm, int ranks, const TileWork& compute, const TileRanges& pending, const TileSink& sink)
-      : comm_(comm), ranks_(ranks), compute_(compute), sink_(sink), queue_(pending),
+  Manager(MPI_Comm comm, int ranks, const TileWork& compute, const TileRanges& pending, const TileSink& sink, Pace pace)
+      : comm_(comm), ranks_(ranks), in_flight_(pace == Pace::units ? 1 : kBatchesInFlight), pace_(pace), compute_(compute),
+        sink_(sink), queue_(pending),
         outstanding_(static_cast<std::size_t>(ranks), 0), to_do_(pending.size()) {}
 
   ScheduleResult run(const volatile std::sig_atomic_t* stop) {
     for (int w = 1; w < ranks_; ++w) {
-      for (int b = 0; b < kBatchesInFlight; ++b) send_batch(w);
+      for (int b = 0; b < in_flight_; ++b) send_batch(w);
     }
     while (true) {
       if (*stop && result_.stop_signal == 0) {  // a signal to rank 0 (a worker's is taken in drain_results)
@@ -134,6 +135,7 @@ class Manager {
   // Guided size: large batches early (at most kMaxBatch, so no message and no worker's
   // backlog grows with the grid), single tiles at the end.
   std::size_t guided_size() const {
+    if (pace_ == Pace::units) return 1;
     const std::uint64_t size = queue_.size() / (4 * static_cast<std::uint64_t>(ranks_));
     return static_cast<std::size_t>(std::clamp<std::uint64_t>(size, 1, kMaxBatch));
   }
@@ -195,12 +197,14 @@ class Manager {
       // Keep about two batches of work queued at the worker, so it never waits for us.
       auto& out = outstanding_[static_cast<std::size_t>(worker)];
       --out;
-      while (!stopping_ && !queue_.empty() && out < kBatchesInFlight * guided_size()) send_batch(worker);
+      while (!stopping_ && !queue_.empty() && out < static_cast<std::size_t>(in_flight_) * guided_size()) send_batch(worker);
     }
   }
 
   MPI_Comm comm_;
   int ranks_;
+  int in_flight_;  ///< batches queued at each worker
+  Pace pace_;
   const TileWork& compute_;
   const TileSink& sink_;
   TileRanges queue_;
@@ -215,7 +219,7 @@ class Manager {
 }  // namespace
 
 ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const TileWork& work_on,
-                            const TileSink& sink, const volatile std::sig_atomic_t* stop) {
+                            const TileSink& sink, const volatile std::sig_atomic_t* stop, Pace pace) {
   int rank = 0;
   int ranks = 1;
   MPI_Comm_rank(comm, &rank);
@@ -224,7 +228,7 @@ ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const Tile
     work(comm, work_on, stop);
     return {};
   }
-  return Manager(comm, ranks, work_on, pending, sink).run(stop);
+  return Manager(comm, ranks, work_on, pending, sink, pace).run(stop);
 }
 
 }  // namespace punchsweep::sweep

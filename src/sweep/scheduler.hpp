@@ -46,7 +46,14 @@ struct ScheduleResult {
 ///
 /// Called collectively. `pending` (rank 0 only) holds the tiles still to compute; no memory
 /// of the schedule grows with the number of tiles.
+///
+/// `pace` says what a tile costs: Pace::tiles (microseconds to milliseconds a point: two
+/// guided batches queued at each worker, so none waits for the next) or Pace::units (a
+/// tile is seconds to minutes of work, such as a texture's load curve: one tile at a time
+/// to each worker, handed out as it finishes, so no worker holds a queue while another is
+/// idle).
+enum class Pace { tiles, units };
 ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const TileWork& work,
-                            const TileSink& sink, const volatile std::sig_atomic_t* stop);
+                            const TileSink& sink, const volatile std::sig_atomic_t* stop, Pace pace = Pace::tiles);
 
 }  // namespace punchsweep::sweep

@@ -10,16 +10,16 @@ three=(--lattice square --l 0.6,0.8,1.0 --dh 0.02,0.04 --dh2 0.05 --s 2 --grid 2
 # The second with a box of tolerances (t_star_low/high, regime_low/high gathered too).
 two=(--l 0.75,1.5 --dh 'linspace(0.01, 0.03, 2)' --s 2 --pbar 'logspace(1e-5, 0.05, 6)' --T 2.5 --times 0,1,5,50
      --tolerance 'pbar=10%, T=0.2')
-same_surface_maps() {  # every variable but the curves' seconds bit-identical (NaN payloads too)
+same_surface_maps() {  # every variable bit-identical (NaN payloads too)
   /usr/bin/python3 - "$1" "$2" <<'PY'
 import sys
 import h5py
 import numpy as np
 with h5py.File(sys.argv[1]) as a, h5py.File(sys.argv[2]) as b:
-    names = sorted(k for k in a if isinstance(a[k], h5py.Dataset) and k != "curve_seconds")
+    names = sorted(k for k in a if isinstance(a[k], h5py.Dataset))
     bad = [k for k in names if k not in b or a[k].shape != b[k].shape
            or a[k][()].tobytes() != b[k][()].tobytes()]
-    if sorted(k for k in b if isinstance(b[k], h5py.Dataset) and k != "curve_seconds") != names or bad:
+    if sorted(k for k in b if isinstance(b[k], h5py.Dataset)) != names or bad:
         sys.exit(f"FAIL: {sys.argv[1]} and {sys.argv[2]} differ in {bad or 'their variables'}")
 PY
 }
@@ -53,7 +53,7 @@ refuse "--dh = '-0.01,0.02': height difference of the punch levels dh = -0.01 is
 refuse "--check is not a map's" "${two[@]}" --check --output bad.nc
 refuse "'dh' is no load input of a surface map" --l 0.75 --dh 0.02 --s 2 --pbar 0.01 --T 2.5 --tolerance dh=0.001 --output bad.nc
 refuse "--pbar (or --pressure with a material) is required" --l 0.75 --dh 0.02 --s 2 --T 2.5 --output bad.nc
-refuse "one_two.nc exists: give --overwrite" "${two[@]}" --output one_two.nc
+refuse "one_two.nc exists; pass --overwrite to replace it" "${two[@]}" --output one_two.nc
 run_ranks 3 surface-map "${two[@]}" --output one_two.nc --overwrite 2> log
 same_surface_maps one_two.nc np1_two.nc
 echo "PASS: surface maps identical for 1, 3, 4 ranks and a plain process; bad input refused once"

@@ -1,0 +1,236 @@
+#include "app/texture_map_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "app/surface_map_command.hpp"
+#include "app/sweep_command.hpp"
+#include "input/usage_error.hpp"
+#include "io/encoded_tile.hpp"
+#include "io/tile_journal.hpp"
+#include "run/output_lock.hpp"
+#include "run/preflight.hpp"
+#include "run/text_lines.hpp"
+#include "sweep/mpi_session.hpp"
+#include "sweep/scheduler.hpp"
+#include "sweep/tile_ranges.hpp"
+
+namespace punchsweep::app {
+namespace {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_texture_stop_signal(int signal) { g_stop_signal = signal; }
+
+/// The texture map's layout, in its `layout_version` attribute and its identity: version 2
+/// is written through the sweep's journal (version 1, surface-map's before, had a
+/// curve_seconds variable and no identity).
+constexpr int kTextureLayoutVersion = 2;
+
+// A block's values as a journal chunk, and back (native endianness, as the journal's).
+std::vector<std::byte> as_bytes(const std::vector<double>& values) {
+  std::vector<std::byte> bytes(values.size() * sizeof(double));
+  if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  return bytes;
+}
+
+std::vector<double> as_values(const std::vector<std::byte>& bytes) {
+  if (bytes.size() % sizeof(double) != 0) throw std::invalid_argument("a geometry's chunk is not whole values");
+  std::vector<double> values(bytes.size() / sizeof(double));
+  if (!values.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());
+  return values;
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream out;
+  out.precision(s < 10.0 ? 2 : 3);
+  out << s << " s";
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<std::string> texture_map_identity(const input::Keywords& keywords) {
+  std::vector<std::string> lines;
+  for (const auto& [key, value] : keywords) lines.push_back(key + " = " + value);
+  std::sort(lines.begin(), lines.end());
+  lines.insert(lines.begin(), "layout_version = " + std::to_string(kTextureLayoutVersion));
+  return lines;
+}
+
+int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
+  const bool root = rank == 0;
+  const auto say = [&job](const std::string& text) {
+    for (const std::string& line : run::split_lines(text)) std::cerr << job.program << ": " << line << "\n";
+  };
+
+  // The plan, on every rank alike (the same keywords give every rank the same verdict).
+  std::unique_ptr<const TextureMapPlan> plan;
+  try {
+    plan = std::make_unique<const TextureMapPlan>(job.keywords);
+  } catch (const input::UsageError& e) {
+    if (root) say(e.what());
+    return input::kUsageExitCode;
+  }
+  const std::size_t G = plan->geometries(), P = plan->header().load_points();
+
+  // Rank 0 claims the map's name, then applies the sweep's resume policy; every rank
+  // learns the verdict.
+  const run::OutputPaths paths(job.output);
+  const std::vector<std::string> identity = texture_map_identity(job.keywords);
+  std::optional<run::OutputLock> lock;
+  run::Start start = run::Start::fresh;
+  std::string refusal;
+  if (root) {
+    sweep::SweepConfig policy;
+    policy.overwrite = job.overwrite;
+    policy.resume = job.resume;
+    policy.identity = identity;
+    policy.input_files = job.input_files;
+    for (const std::string& file : texture_input_files(job.keywords)) policy.input_files.push_back(file);
+    refusal = run::output_folder_problem(paths);
+    if (refusal.empty()) {
+      if (auto taken = run::OutputLock::take(paths, job.command, &refusal)) lock.emplace(std::move(*taken));
+    }
+    if (refusal.empty()) refusal = run::preflight(policy, paths, &start);
+  }
+  if (sweep::share_from_root(refusal.empty() ? 0 : 1) != 0) {
+    if (root) say(refusal);
+    return input::kUsageExitCode;
+  }
+  start = static_cast<run::Start>(sweep::share_from_root(static_cast<int>(start)));
+  if (start == run::Start::already_complete) {
+    if (root && !job.quiet) say(job.output + " is already complete; nothing to resume");
+    return 0;
+  }
+
+  // Rank 0: the map, and its journal (replayed into it on resume).
+  SurfaceMap map = plan->header();
+  map.identity = run::join(identity, "\n");
+  map.layout_version = kTextureLayoutVersion;
+  std::optional<io::TileJournal> journal;
+  sweep::TileRanges pending;
+  std::size_t resumed = 0;
+  if (root) {
+    try {
+      std::vector<bool> done(G, false);
+      if (start == run::Start::resume) {
+        const std::size_t good = io::TileJournal::replay(paths.journal, [&](const io::EncodedTile& tile) {
+          if (tile.tile >= G || tile.chunks.size() != 1 || done[tile.tile]) return false;
+          try {
+            place_geometry(&map, tile.tile, as_values(tile.chunks.front()));
+          } catch (const std::exception&) {
+            return false;  // computed again
+          }
+          done[tile.tile] = true;
+          return true;
+        });
+        journal.emplace(io::TileJournal::open_for_append(paths.journal, good));
+      } else {
+        journal.emplace(io::TileJournal::create(paths.journal, map.identity));
+      }
+      for (std::size_t g = 0; g < G; ++g) {
+        if (done[g]) {
+          ++resumed;
+        } else {
+          pending.add(g);
+        }
+      }
+    } catch (const std::exception& e) {
+      refusal = e.what();
+    }
+  }
+  if (sweep::share_from_root(refusal.empty() ? 0 : 1) != 0) {
+    if (root) say(refusal);
+    return 1;
+  }
+  if (root && !job.quiet) {
+    std::ostringstream line;
+    line << G << " geometr" << (G == 1 ? "y" : "ies") << " (a load curve each) x " << P << " load points on " << ranks
+         << " rank" << (ranks == 1 ? "" : "s");
+    if (resumed > 0) line << "; " << resumed << " already done (from " << paths.journal << ")";
+    say(line.str());
+  }
+
+  for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_texture_stop_signal);
+  // Every rank: a geometry computed into its block, as one journal record. A geometry that
+  // fails stops every rank (said by the rank that met it, with the geometry).
+  const sweep::TileWork work = [&](std::uint64_t g) {
+    std::vector<double> block;
+    try {
+      block = plan->evaluate(g);
+    } catch (const input::UsageError& e) {
+      say("geometry " + std::to_string(g + 1) + " (" + plan->describe(g) + "): " + e.what());
+      sweep::abort_all_ranks(input::kUsageExitCode);
+    } catch (const std::exception& e) {
+      say("rank " + std::to_string(rank) + ", geometry " + std::to_string(g + 1) + " (" + plan->describe(g) + "): " + e.what());
+      sweep::abort_all_ranks(1);
+    }
+    io::EncodedTile tile;
+    tile.tile = g;
+    tile.chunks.push_back(as_bytes(block));
+    tile.summary.points = P;
+    return io::pack_encoded_tile(tile);
+  };
+  // Rank 0: each geometry journalled first, then placed, then a progress line.
+  std::size_t done = resumed;
+  const auto begun = std::chrono::steady_clock::now();
+  const sweep::TileSink sink = [&](std::span<const std::byte> bytes) {
+    journal->append_packed(bytes);
+    const io::EncodedTile tile = io::unpack_encoded_tile(bytes.data(), bytes.size());
+    const std::vector<double> block = as_values(tile.chunks.at(0));
+    place_geometry(&map, tile.tile, block);
+    ++done;
+    if (job.quiet) return;
+    const GeometryCost cost = geometry_cost(block);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+    const double left = elapsed / static_cast<double>(done - resumed) * static_cast<double>(G - done);
+    std::ostringstream line;
+    line << "geometry " << tile.tile + 1 << " (" << plan->describe(tile.tile) << "): curve " << cost.source << " in "
+         << seconds_text(cost.seconds) << "; " << done << " of " << G << " done (" << (100 * done) / G << "%)";
+    if (done < G) line << ", about " << seconds_text(left) << " left";
+    say(line.str());
+  };
+  int code = 0;
+  try {
+    const sweep::ScheduleResult result =
+        sweep::run_world_schedule(root ? pending : sweep::TileRanges{}, work, root ? sink : sweep::TileSink{}, &g_stop_signal,
+                                   sweep::Pace::units);
+    if (root && result.interrupted) {
+      const int signal = result.stop_signal != 0 ? result.stop_signal : static_cast<int>(g_stop_signal);
+      std::string resume = job.command;
+      if (!job.resume) resume += " --resume";
+      say("stopped by signal " + std::to_string(signal) + " (received by rank " + std::to_string(result.stop_rank) +
+          ") with " + std::to_string(done) + " of " + std::to_string(G) + " geometries done; the finished ones are kept in " +
+          paths.journal + ".\n  Resume with: " + resume);
+      code = kInterruptedExitCode;
+    } else if (root) {
+      write_surface_map(job.output, map, true, job.keywords);
+      journal.reset();
+      std::filesystem::remove(paths.journal);
+      if (!job.quiet) {
+        say("wrote " + job.output + " (" + std::to_string(G) + " geometr" + (G == 1 ? "y" : "ies") + " x " +
+            std::to_string(P) + " load points x " + std::to_string(map.levels) + " levels, " +
+            std::to_string(map.times.size()) + " times)");
+      }
+    }
+  } catch (const input::UsageError& e) {
+    say(e.what());
+    sweep::abort_all_ranks(input::kUsageExitCode);
+  } catch (const std::exception& e) {
+    say("rank " + std::to_string(rank) + ": " + e.what());
+    sweep::abort_all_ranks(1);
+  }
+  return ranks > 1 ? sweep::share_from_root(code) : code;
+}
+
+}  // namespace punchsweep::app

@@ -1,0 +1,232 @@
+#include "input/texture_sweep_options.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string_view>
+
+#include "input/text_file.hpp"
+#include "input/usage_error.hpp"
+
+namespace punchsweep::input {
+namespace {
+
+constexpr std::array<std::string_view, 6> kSections{"texture", "grid", "model", "time", "output", "run"};
+
+std::string trim(const std::string& s) {
+  const std::size_t first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+bool is_section(const std::string& name) {
+  return std::find(kSections.begin(), kSections.end(), name) != kSections.end();
+}
+
+std::string sections_list() {
+  std::string out;
+  for (const std::string_view s : kSections) out += (out.empty() ? "" : ", ") + std::string(s);
+  return out;
+}
+
+/// "section.key" = value, in the order first given.
+using Settings = std::vector<std::pair<std::string, std::string>>;
+
+void set(Settings& settings, const std::string& key, const std::string& value) {
+  for (auto& [k, v] : settings) {
+    if (k == key) {
+      v = value;
+      return;
+    }
+  }
+  settings.emplace_back(key, value);
+}
+
+Settings read_config(const std::string& path) {
+  if (path.empty()) throw UsageError("--config needs a file name (see punchsweep sweep --help)");
+  const std::string text = read_text_file(path, "config file");
+  Settings settings;
+  std::map<std::string, int> first_line;
+  std::vector<std::string> problems;
+  std::string section;
+  std::istringstream in(text);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (const std::size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    line = trim(line);
+    if (line.empty()) continue;
+    const std::string where = "config file " + path + ", line " + std::to_string(number) + ": ";
+    if (line.front() == '[' && line.back() == ']') {
+      section = trim(line.substr(1, line.size() - 2));
+      if (!is_section(section)) {
+        problems.push_back(where + "unknown section [" + section + "] (sections of a texture's map: " + sections_list() + ")");
+      }
+      continue;
+    }
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos) {
+      problems.push_back(where + "expected '[section]' or 'key = value', got '" + line + "'");
+      continue;
+    }
+    const std::string name = trim(line.substr(0, equals));
+    if (section.empty()) {
+      problems.push_back(where + "key '" + name + "' comes before any [section]");
+      continue;
+    }
+    if (!is_section(section)) continue;  // reported with its header
+    const std::string key = section + "." + name;
+    if (const auto [it, inserted] = first_line.emplace(key, number); !inserted) {
+      problems.push_back(where + key + " is set again (first on line " + std::to_string(it->second) + ")");
+      continue;
+    }
+    settings.emplace_back(key, trim(line.substr(equals + 1)));
+  }
+  if (!problems.empty()) {
+    std::string all;
+    for (const std::string& p : problems) all += (all.empty() ? "" : "\n") + p;
+    throw UsageError(all);
+  }
+  return settings;
+}
+
+bool read_switch(const std::string& key, const std::string& value) {
+  if (value == "true" || value == "1" || value == "yes") return true;
+  if (value == "false" || value == "0" || value == "no") return false;
+  throw UsageError(key + " = " + value + ": valid: true or false");
+}
+
+/// surface's option for a [texture], [grid] or [model] key.
+std::string keyword_of(const std::string& name) {
+  if (name == "ramp_time") return "ramp";
+  std::string out = name;
+  std::replace(out.begin(), out.end(), '_', '-');
+  return out;
+}
+
+}  // namespace
+
+bool is_texture_sweep(const std::vector<std::string>& args) {
+  std::string config;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    if (args[k].rfind("--texture.", 0) == 0) return true;
+    if (args[k] == "--config" && k + 1 < args.size()) config = args[k + 1];
+    if (args[k].rfind("--config=", 0) == 0) config = args[k].substr(9);
+  }
+  if (config.empty()) return false;
+  std::ifstream in(config);
+  for (std::string line; std::getline(in, line);) {
+    if (const std::size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    line = trim(line);
+    if (line.size() > 2 && line.front() == '[' && line.back() == ']' && trim(line.substr(1, line.size() - 2)) == "texture") {
+      return true;
+    }
+  }
+  return false;
+}
+
+TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& args) {
+  TextureSweepOptions out;
+  Settings command_line;
+  const auto value_of = [&](std::size_t& k, const std::string& option) {
+    const std::string& a = args[k];
+    if (const std::size_t equals = a.find('='); equals != std::string::npos) return a.substr(equals + 1);
+    if (k + 1 >= args.size()) throw UsageError(option + " needs a value (see punchsweep sweep --help)");
+    return args[++k];
+  };
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& a = args[k];
+    const std::string option = a.substr(0, a.find('='));
+    if (option == "--help") {
+      out.help = true;
+    } else if (option == "--config") {
+      out.config_path = value_of(k, option);
+    } else if (option == "--output") {
+      set(command_line, "output.file", value_of(k, option));
+    } else if (option == "--resume" || option == "--overwrite" || option == "--quiet") {
+      set(command_line, "run." + option.substr(2), a.find('=') == std::string::npos ? "true" : value_of(k, option));
+    } else if (option == "--dry-run") {
+      throw UsageError("--dry-run: a texture's map is estimated by its load curves, which only a run builds; run "
+                       "punchsweep surface with one geometry's keys to see what a curve costs");
+    } else if (option.rfind("--", 0) == 0 && option.find('.') != std::string::npos) {
+      const std::string key = option.substr(2);
+      const std::string section = key.substr(0, key.find('.'));
+      if (!is_section(section)) {
+        throw UsageError("unknown option " + option + " (sections of a texture's map: " + sections_list() + ")");
+      }
+      set(command_line, key, value_of(k, option));
+    } else {
+      throw UsageError("unknown option " + a + " for a texture's map (see punchsweep sweep --help)");
+    }
+  }
+  if (out.help) return out;
+  Settings settings = out.config_path.empty() ? Settings{} : read_config(out.config_path);
+  for (const auto& [key, value] : command_line) set(settings, key, value);
+  for (const auto& [key, value] : settings) {
+    const std::string section = key.substr(0, key.find('.'));
+    const std::string name = key.substr(key.find('.') + 1);
+    if (section == "output") {
+      if (name == "file") {
+        out.output = value;
+      } else if (name == "tolerance") {
+        out.keywords.emplace_back("tolerance", value);
+        out.origins.push_back(key);
+      } else {
+        throw UsageError("unknown key " + key + " (keys of [output] for a texture's map: file, tolerance)");
+      }
+    } else if (section == "run") {
+      if (name == "resume") {
+        out.resume = read_switch(key, value);
+      } else if (name == "overwrite") {
+        out.overwrite = read_switch(key, value);
+      } else if (name == "quiet") {
+        out.quiet = read_switch(key, value);
+      } else {
+        throw UsageError("unknown key " + key + " (keys of [run] for a texture's map: resume, overwrite, quiet)");
+      }
+    } else if (section == "time") {
+      if (name != "times") throw UsageError("unknown key " + key + " (keys of [time]: times)");
+      out.keywords.emplace_back("times", value);
+      out.origins.push_back(key);
+    } else {
+      out.keywords.emplace_back(keyword_of(name), value);
+      out.origins.push_back(key);
+    }
+  }
+  if (out.resume && out.overwrite) {
+    throw UsageError("run.resume = true and run.overwrite = true: give only one (--resume finishes or checks the existing "
+                     "map, --overwrite replaces it)");
+  }
+  return out;
+}
+
+const char* const kTextureSweepHelp =
+    "A texture's map (any lattice, levels, cell file, scattered supercell or height map): a\n"
+    "config with a [texture] section, or --texture.KEY on the command line. Each geometry\n"
+    "(a value of l, dh, dh2) is one load curve, dealt to the ranks as a unit of work and\n"
+    "journalled when done (--resume computes only what the journal lacks); the pressures,\n"
+    "the law's values and the ramp times are read off it. The map is a netCDF-4 file with a\n"
+    "level dimension (docs/maps.md, \"Texture maps\").\n"
+    "  # hexagonal.ini\n"
+    "  [texture]\n"
+    "  lattice = hexagonal\n"
+    "  grid = 64\n"
+    "  [model]\n"
+    "  material = materials/nbr_linder2011.ini\n"
+    "  R = 60um\n"
+    "  [grid]\n"
+    "  l = 200um\n"
+    "  dh = 2um, 3um\n"
+    "  dh2 = 5um\n"
+    "  pressure = logspace(5kPa, 50kPa, 6)\n"
+    "  [time]\n"
+    "  times = 0, 1s, 1min\n"
+    "  [output]\n"
+    "  file = hexagonal.nc\n"
+    "Keys: [texture] surface's texture options with '_' for '-' (lattice, dh2, cell, height_map,\n"
+    "pixel, supercell, scatter, seed, grid, curve, ...); [grid] l, dh, dh2, pbar or pressure, T or\n"
+    "temperature, ramp_time; [model] material, R, s, C, load_table; [time] times; [output] file,\n"
+    "tolerance; [run] resume, overwrite, quiet.\n";
+
+}  // namespace punchsweep::input

@@ -1,0 +1,87 @@
+"""Issue 49: `punchsweep sweep` takes any texture through a [texture] section. The held-out
+shape of the check: a hexagonal three-level mould (2 dh x 6 pressures x 2 temperatures,
+64 nodes a pitch) in physical units, every point equal to `surface` at that point, opened by
+the one reader with a level dimension and the pressure in Pa."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+TRUTH = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+
+CONFIG = f"""# The study's mould: hexagonal, three levels, TPE-A, in um, kPa and degC.
+[texture]
+lattice = hexagonal
+grid = 64
+[model]
+material = {TRUTH}
+R = 60um
+s = 2
+[grid]
+l = 200um
+dh = 2um, 3um
+dh2 = 5um
+pressure = logspace(5kPa, 50kPa, 6)
+temperature = 20, 40
+[time]
+times = 1s, 1min
+"""
+
+
+def test_a_texture_sweep_is_surface_at_every_point_in_physical_units(tmp_path):
+    config = tmp_path / "tpe.ini"
+    config.write_text(CONFIG)
+    out = tmp_path / "tpe.nc"
+    run = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(out)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    # Progress in the map's own length unit, one line a geometry.
+    assert "geometry 2 (l = 200 um, dh = 3 um, dh2 = 5 um): curve" in run.stderr, run.stderr
+    ds = punchsweep.open_map(out)
+    assert ds.t_star.dims == ("l", "dh", "dh2", "pbar", "temperature", "level") and ds.sizes["level"] == 3
+    assert (ds.pbar.attrs["units"], ds.dh.attrs["units"], ds.t_star.attrs["units"]) == ("Pa", "um", "s")
+    pressures = np.logspace(np.log10(5e3), np.log10(5e4), 6)
+    np.testing.assert_allclose(ds.pbar.values, pressures, rtol=1e-12)
+    np.testing.assert_allclose(ds.dh.values, [2.0, 3.0], rtol=1e-12)
+    checked = 0
+    for i, dh in enumerate(["2um", "3um"]):
+        for j, pressure in enumerate(pressures):
+            for k, temperature in enumerate([20, 40]):
+                one = punchsweep.surface(material=str(TRUTH), R="60um", s=2, lattice="hexagonal", grid=64, l="200um",
+                                         dh=dh, dh2="5um", pressure=f"{pressure!r}Pa", temperature=temperature,
+                                         times="1s, 1min")
+                at = ds.isel(l=0, dh=i, dh2=0, pbar=j, temperature=k)
+                assert [lv["regime"] for lv in one["levels"]] == list(at.regime.values)
+                t = [np.inf if lv["t_star"] is None else lv["t_star"] for lv in one["levels"]]
+                # (to the last bits of the pressure, which the command line gets as decimal text)
+                np.testing.assert_allclose(at.t_star.values, t, rtol=1e-12)
+                np.testing.assert_array_equal(at.touched.values, one["series"]["sites_touched"])
+                area = [np.nan if a is None else a for a in one["series"]["area_fraction"]]
+                np.testing.assert_allclose(at.area_fraction.values, area, rtol=1e-12)
+                checked += 1
+    assert checked == 24
+
+
+def test_a_texture_sweep_refuses_what_it_cannot_take(tmp_path):
+    """Bad keys name the key and what is valid, exit 2, nothing written."""
+    config = tmp_path / "tpe.ini"
+    config.write_text(CONFIG + "[quantities]\nfull = 1\n")
+    out = tmp_path / "bad.nc"
+    run = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(out)], capture_output=True, text=True)
+    assert run.returncode == 2 and "line 17: unknown section [quantities]" in run.stderr, run.stderr
+    config.write_text(CONFIG)
+    for args, message in [(["--texture.latice", "square"], "unknown key texture.latice"),
+                          (["--dry-run"], "--dry-run: a texture's map is estimated by its load curves"),
+                          (["--grid.pressure", "5"], "--pressure"),
+                          (["--run.quiet", "maybe"], "run.quiet = maybe: valid: true or false")]:
+        run = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(out), *args],
+                             capture_output=True, text=True)
+        assert run.returncode == 2 and message in run.stderr, (args, run.stderr)
+    assert not list(tmp_path.glob("bad.nc*"))

@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# punchsweep sweep of a texture ([texture] in the config): a hexagonal three-level map is
+# bit-identical on 1, 2 and 3 ranks, the same map as surface-map's, resumes after kill -9
+# of mpirun to the map of an uninterrupted run without building the journalled geometries
+# again, and refuses bad keys and an interrupted map without --resume once (rank 0), exit 2.
+source "$(dirname "$0")/common.sh"
+cat > hex.ini <<'INI'
+# A hexagonal mould of three levels, in the model's units, on 64 nodes a pitch.
+[texture]
+lattice = hexagonal
+grid = 64
+[model]
+s = 2
+[grid]
+l = 1.2
+dh = linspace(0.01, 0.06, 6)
+dh2 = 0.08
+pbar = logspace(0.002, 0.05, 6)
+T = 2, 4
+[time]
+times = 0, 1, 5
+INI
+same_texture_maps() {  # every variable bit-identical (NaN payloads too), the same variables
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import sys
+import h5py
+with h5py.File(sys.argv[1]) as a, h5py.File(sys.argv[2]) as b:
+    names = sorted(k for k in a if isinstance(a[k], h5py.Dataset))
+    bad = [k for k in names if k not in b or a[k].shape != b[k].shape or a[k][()].tobytes() != b[k][()].tobytes()]
+    if sorted(k for k in b if isinstance(b[k], h5py.Dataset)) != names or bad:
+        sys.exit(f"FAIL: {sys.argv[1]} and {sys.argv[2]} differ in {bad or 'their variables'}")
+    for f in (a, b):
+        assert f["t_star"].shape == (1, 6, 1, 6, 2, 3) and f["level"].shape == (3,), f["t_star"].shape
+        assert int(f.attrs["layout_version"]) == 2
+PY
+}
+# Each run its own curve cache, so that every one builds its curves.
+PUNCHSWEEP_CACHE="$work/cache1" run_ranks 0 sweep --config hex.ini --output one.nc 2> log
+grep -q "wrote one.nc (6 geometries x 12 load points x 3 levels, 3 times)" log || { cat log; exit 1; }
+grep -q "6 of 6 done (100%)" log || { echo "FAIL: no progress line"; cat log; exit 1; }
+for n in 2 3; do
+  PUNCHSWEEP_CACHE="$work/cache_np$n" run_ranks "$n" sweep --config hex.ini --output "np$n.nc" --quiet
+  same_texture_maps one.nc "np$n.nc"
+done
+# The same keys through surface-map (its spelling of the same run) and on the command line.
+PUNCHSWEEP_CACHE="$work/cache_map" run_ranks 2 surface-map --lattice hexagonal --grid 64 --s 2 --l 1.2 \
+  --dh 'linspace(0.01, 0.06, 6)' --dh2 0.08 --pbar 'logspace(0.002, 0.05, 6)' --T 2,4 --times 0,1,5 --output map.nc --quiet
+same_texture_maps one.nc map.nc
+PUNCHSWEEP_CACHE="$work/cache_cli" run_ranks 0 sweep --texture.lattice hexagonal --texture.grid 64 --model.s 2 \
+  --grid.l 1.2 --grid.dh 'linspace(0.01, 0.06, 6)' --grid.dh2 0.08 --grid.pbar 'logspace(0.002, 0.05, 6)' \
+  --grid.T 2,4 --time.times 0,1,5 --output cli.nc --quiet
+same_texture_maps one.nc cli.nc
+
+# kill -9 of mpirun once the journal holds its first geometry, then --resume.
+map="$work/k.nc"
+export PUNCHSWEEP_CACHE="$work/cache_kill"
+has_a_geometry() { grep -qa PSRC "$map.partial.journal" 2>/dev/null; }
+start_ranks 2 sweep --config hex.ini --output "$map" --quiet; pid=$!
+wait_until 120 "$pid" "$map's journal to hold a geometry" -- has_a_geometry || true
+kill -9 "$pid" 2>/dev/null || true
+wait "$pid" 2>/dev/null || true
+wait_until 10 "" "the ranks to end with mpirun" -- gone "--output $map"
+test -f "$map.partial.journal" && test ! -e "$map" || { echo "FAIL: the kill came too late to test anything"; exit 1; }
+# Without --resume the interrupted map is refused, once, with what to do.
+set +e
+run_ranks 2 sweep --config hex.ini --output "$map" > out 2> err; rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "pass --resume to finish it" err && [ "$(grep -c "^punchsweep sweep: " err)" = 1 ] ||
+  { echo "FAIL: exit $rc"; cat err; exit 1; }
+run_ranks 2 sweep --config hex.ini --output "$map" --resume 2> resume.log || { cat resume.log; exit 1; }
+grep -q "already done (from $map.partial.journal)" resume.log || { echo "FAIL: nothing resumed"; cat resume.log; exit 1; }
+test ! -e "$map.partial" && test ! -e "$map.partial.journal"
+same_texture_maps one.nc "$map"
+# A finished map resumed again: nothing to do; with another configuration: refused.
+run_ranks 0 sweep --config hex.ini --output "$map" --resume 2> again.log
+grep -q "already complete" again.log
+set +e
+run_ranks 0 sweep --config hex.ini --grid.T 2,5 --output "$map" --resume 2> err; rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "T: the existing map has 2, 4; this run asks for 2,5" err || { echo "FAIL: exit $rc"; cat err; exit 1; }
+
+# Bad keys: one line from rank 0, exit 2, nothing written.
+refuse() {  # refuse MESSAGE ARGS...
+  local message=$1; shift
+  set +e
+  run_ranks 3 sweep "$@" > out 2> err
+  local rc=$?
+  set -e
+  if [ "$rc" != 2 ]; then echo "FAIL: exit $rc for $*"; cat err; exit 1; fi
+  if ! grep -qF -- "$message" err; then echo "FAIL: no '$message' for $*"; cat err; exit 1; fi
+  if [ "$(grep -c "^punchsweep sweep: " err)" != 1 ]; then echo "FAIL: not one line for $*"; cat err; exit 1; fi
+  if ls bad.nc* >/dev/null 2>&1; then echo "FAIL: $* left a file"; exit 1; fi
+}
+refuse "unknown key texture.latice" --config hex.ini --texture.latice square --output bad.nc
+refuse "unknown key output.quantities" --config hex.ini --output.quantities full --output bad.nc
+refuse "--dh = '-0.01': height difference of the punch levels dh = -0.01 is outside its range" --config hex.ini --grid.dh=-0.01 --output bad.nc
+refuse "run.resume = true and run.overwrite = true" --config hex.ini --resume --overwrite --output bad.nc
+echo "PASS: texture sweeps identical for 1, 2, 3 ranks, surface-map and the command line; resumed after kill -9"
