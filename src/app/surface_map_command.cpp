@@ -42,7 +42,7 @@ constexpr std::int8_t kNotComputed = -1;
 
 /// The texture's lengths that may be axes, each one load curve per value, in the map's order.
 constexpr std::string_view kGeometryKeys[] = {model::kPitch, model::kHeightDifference, model::kThirdLevelDrop,
-                                              model::kScatterWidth};
+                                              model::kScatterWidth, model::kScatterSeed};
 /// The map's own keywords (not the texture's).
 constexpr const char* kOutput = "output";
 constexpr const char* kOverwrite = "overwrite";
@@ -147,7 +147,8 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
     for (const Refused& r : kRefused) {
       if (key == r.key) throw input::UsageError("--" + key + " is not a map's: " + r.why);
     }
-    const bool geometry = key == model::kPitch || key == model::kHeightDifference || key == model::kThirdLevelDrop;
+    const bool geometry = key == model::kPitch || key == model::kHeightDifference || key == model::kThirdLevelDrop ||
+                          key == model::kScatterSeed;
     if (geometry) {
       const model::Parameter* p = model::problem_parameter(key);
       in.geometry.push_back(read_axis(key, value, p ? *p : *model::texture_parameter(key), scales));
@@ -723,7 +724,8 @@ constexpr const char* kMapUsage =
     "           [--ramp AXIS] [--tolerance LIST] [--times LIST] [surface's texture options]\n"
     "           --output FILE\n\n"
     "An AXIS is one value, a list 'a, b, c', linspace(a, b, n) or logspace(a, b, n); --scatter\n"
-    "normal:AXIS (or uniform:AXIS) makes the scatter's width an axis. Each geometry value is one\n"
+    "normal:AXIS (or uniform:AXIS) makes the scatter's width an axis, --seed AXIS its seed (one\n"
+    "supercell drawn per seed). Each geometry value is one\n"
     "load curve, built by one rank; the pressures, the law's values and the ramp times (the\n"
     "map's ramp_time axis) are read off it. --tolerance 'pressure=10%, T=0.2' adds each level's\n"
     "least and greatest t* over that box about every load point.";

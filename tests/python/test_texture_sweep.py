@@ -85,3 +85,30 @@ def test_a_texture_sweep_refuses_what_it_cannot_take(tmp_path):
                              capture_output=True, text=True)
         assert run.returncode == 2 and message in run.stderr, (args, run.stderr)
     assert not list(tmp_path.glob("bad.nc*"))
+
+
+def test_the_seed_is_an_axis_of_a_scattered_texture(tmp_path):
+    """seed = 1, 2, 3 under [texture] with a scatter: one supercell drawn per seed (a curve
+    each), and each seed's caps in contact at every time equal `surface --seed` alone."""
+    config = tmp_path / "seeds.ini"
+    config.write_text("[texture]\nsupercell = 3\nscatter = normal:0.005\nseed = 1, 2, 3\ngrid = 16\n"
+                      "[model]\ns = 2\n[grid]\nl = 0.75\ndh = 0.03\npbar = 0.004, 0.01\nT = 4\n[time]\ntimes = 0, 1, 5\n")
+    out = tmp_path / "seeds.nc"
+    run = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(out), "--quiet"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    ds = punchsweep.open_map(out)
+    assert ds.touched.dims == ("l", "dh", "scatter_width", "seed", "pbar", "T", "t")
+    np.testing.assert_array_equal(ds.seed.values, [1, 2, 3])
+    differ = set()
+    for k, seed in enumerate([1, 2, 3]):
+        for i, pbar in enumerate([0.004, 0.01]):
+            one = punchsweep.surface(supercell=3, scatter="normal:0.005", seed=seed, grid=16, s=2, l=0.75, dh=0.03,
+                                     pbar=pbar, T=4, times=[0, 1, 5])
+            touched = ds.touched.values[0, 0, 0, k, i, 0]
+            np.testing.assert_array_equal(touched, one["series"]["sites_touched"])
+            differ.add(tuple(touched))
+    assert len(differ) > 2  # the seeds draw different caps
+    bad = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(tmp_path / "bad.nc"),
+                          "--texture.seed", "1, 2.5"], capture_output=True, text=True)
+    assert bad.returncode == 2 and "--seed = '1, 2.5': 2.5 is not an integer" in bad.stderr, bad.stderr

@@ -25,12 +25,16 @@ constexpr std::array<Parameter, 5> kProblemParameters{{
 }};
 
 /// A texture's lengths beyond the two-level problem's (`surface`, `surface-map`).
-constexpr std::array<Parameter, 2> kTextureParameters{{
+constexpr std::array<Parameter, 3> kTextureParameters{{
     {kThirdLevelDrop, "R", "drop of the third level", "how far level 2 lies below the tallest tips, in R",
      "dh2 >= 0 (in R)", [](double v) { return v >= 0.0; }},
     {kScatterWidth, "R", "width of the caps' height scatter",
      "the standard deviation (normal) or half-width (uniform) of the caps' height changes, in R",
      "a width >= 0 (in R)", [](double v) { return v >= 0.0; }},
+    // As a map's axis its values are doubles: whole numbers up to 2^53 (--seed alone takes
+    // any 64-bit seed).
+    {kScatterSeed, "1", "seed of the scatter's draws", "the seed of --scatter's draws (std::mt19937_64)",
+     "an integer in [0, 2^53]", [](double v) { return v >= 0.0 && v <= 9007199254740992.0; }, true},
 }};
 
 }  // namespace

@@ -60,6 +60,9 @@ const Parameter* problem_parameter(std::string_view name);
 /// level's drop (`--dh2`) and the caps' height scatter's width (a surface map's axis).
 inline constexpr std::string_view kThirdLevelDrop = "dh2";
 inline constexpr std::string_view kScatterWidth = "scatter_width";
+/// The seed of the scatter's draws (`--seed`): an axis of a texture's map, one supercell
+/// drawn per value.
+inline constexpr std::string_view kScatterSeed = "seed";
 /// The texture's parameter called `name`; nullptr if none.
 const Parameter* texture_parameter(std::string_view name);
 
