@@ -30,6 +30,7 @@
 #include "model/point/sensitivity.hpp"
 #include "model/surface/surface_sensitivity.hpp"
 #include "model/surface/surface_history.hpp"
+#include "model/surface/surface_advisory.hpp"
 #include "sweep/mpi_session.hpp"
 
 namespace po = boost::program_options;
@@ -267,54 +268,56 @@ std::size_t SurfaceMap::load_points() const {
   return n;
 }
 
+std::size_t SurfaceMap::per_geometry(std::size_t q) const {
+  const std::size_t P = load_points(), L = static_cast<std::size_t>(levels), T = times.size();
+  switch (map::kTextureQuantities[q].extent) {
+    case map::TextureExtent::load_level: return P * L;
+    case map::TextureExtent::geometry_level: return L;
+    case map::TextureExtent::load_time: return P * T;
+    case map::TextureExtent::geometry: return 1;
+  }
+  return 0;
+}
+
 namespace {
 
-/// Each of geometry g's blocks of the map's arrays, as (array, first, count), in the order
-/// they travel (between ranks, into the journal).
+/// Each stored quantity's block of geometry g, as (array, first, count), in
+/// map::kTextureQuantities' order: the order they travel (between ranks, into the journal).
 template <class Map, class Visit>
 void for_each_block(Map& map, std::size_t g, Visit&& visit) {
-  const std::size_t P = map.load_points(), L = static_cast<std::size_t>(map.levels), T = map.times.size();
-  visit(map.t_star, g * P * L, P * L);
-  visit(map.regime, g * P * L, P * L);
-  visit(map.X_star, g * L, L);
-  visit(map.resolved, g * L, L);
-  visit(map.touched, g * P * T, P * T);
-  visit(map.area_fraction, g * P * T, P * T);
-  visit(map.valid, g * P * T, P * T);
-  if (!map.tolerance.empty()) {
-    visit(map.t_star_low, g * P * L, P * L);
-    visit(map.t_star_high, g * P * L, P * L);
-    visit(map.regime_low, g * P * L, P * L);
-    visit(map.regime_high, g * P * L, P * L);
+  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+    if (!map.stores(q)) continue;
+    const std::size_t n = map.per_geometry(q);
+    visit(map[q], g * n, n);
   }
-  visit(map.grid, g, 1);
-  visit(map.from_tables, g, 1);
 }
 
 /// A block's head: levels, caps, E0* in Pa, the curve's seconds and source, the number of
 /// times, then the times.
 enum Head : std::size_t { kLevels, kCaps, kE0, kSeconds, kSource, kTimes, kHead };
 
-/// Sizes every array of `map` for its geometries (NaN and not computed).
+/// Sizes every stored array of `map` for its geometries: NaN, flags not computed.
 void size_arrays(SurfaceMap& map) {
-  const std::size_t G = map.geometries(), P = map.load_points(), L = static_cast<std::size_t>(map.levels),
-                    T = map.times.size();
-  map.t_star.assign(G * P * L, kNaN);
-  map.regime.assign(G * P * L, kNotComputed);
-  map.X_star.assign(G * L, kNaN);
-  map.resolved.assign(G * L, kNotComputed);
-  map.touched.assign(G * P * T, kNaN);
-  map.area_fraction.assign(G * P * T, kNaN);
-  map.valid.assign(G * P * T, kNotComputed);
-  if (!map.tolerance.empty()) {
-    map.t_star_low.assign(G * P * L, kNaN);
-    map.t_star_high.assign(G * P * L, kNaN);
-    map.regime_low.assign(G * P * L, kNotComputed);
-    map.regime_high.assign(G * P * L, kNotComputed);
+  const std::size_t G = map.geometries();
+  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+    const bool flag = map::kTextureQuantities[q].flags != map::TextureFlags::none;
+    if (map.stores(q)) {
+      map[q].assign(G * map.per_geometry(q), flag ? static_cast<double>(kNotComputed) : kNaN);
+    } else {
+      map[q].clear();
+    }
   }
-  map.grid.assign(G, kNaN);
-  map.from_tables.assign(G, kNotComputed);
 }
+
+// The quantities a geometry computes, by name (a name not declared fails to compile).
+constexpr std::size_t kTStar = map::texture_quantity("t_star"), kRegime = map::texture_quantity("regime"),
+                      kTStarLow = map::texture_quantity("t_star_low"), kTStarHigh = map::texture_quantity("t_star_high"),
+                      kRegimeLow = map::texture_quantity("regime_low"), kRegimeHigh = map::texture_quantity("regime_high"),
+                      kXStar = map::texture_quantity("X_star"), kResolved = map::texture_quantity("resolved"),
+                      kTouched = map::texture_quantity("touched"), kAreaFraction = map::texture_quantity("area_fraction"),
+                      kValid = map::texture_quantity("valid"), kGrid = map::texture_quantity("grid"),
+                      kFromTables = map::texture_quantity("from_tables"),
+                      kContactRadius = map::texture_quantity("contact_radius"), kAdvised = map::texture_quantity("advised");
 
 }  // namespace
 
@@ -430,13 +433,13 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   block.caps = run.geometry.sites.size();
   block.times = run.times;
   size_arrays(block);
-  block.grid[0] = run.curve.nx;
-  block.from_tables[0] = run.curve_source == CurveSource::tables ? 1 : 0;
+  block[kGrid][0] = run.curve.nx;
+  block[kFromTables][0] = run.curve_source == CurveSource::tables ? 1 : 0;
   // Each level's touchdown load and whether the curve resolves it: the geometry's alone,
   // as the run read them.
   for (std::size_t level = 0; level < L; ++level) {
-    block.X_star[level] = run.history.levels[level].X_star;
-    block.resolved[level] = run.history.levels[level].resolved ? 1 : 0;
+    block[kXStar][level] = run.history.levels[level].X_star;
+    block[kResolved][level] = run.history.levels[level].resolved ? 1 : 0;
   }
   // Each load point off the curve.
   const std::size_t T = block.times.size();
@@ -446,8 +449,8 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
     const model::CreepWeightedLoad& load = *at_p.load;
     const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
     for (std::size_t level = 0; level < L; ++level) {
-      block.t_star[p * L + level] = touches[level].t_star;
-      block.regime[p * L + level] = static_cast<std::int8_t>(touches[level].regime);
+      block[kTStar][p * L + level] = touches[level].t_star;
+      block[kRegime][p * L + level] = static_cast<std::int8_t>(touches[level].regime);
     }
     if (!in.tolerance.empty()) {
       // The box about this point (each tolerance about its own value here), each level's
@@ -468,10 +471,10 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       for (std::size_t level = 0; level < ranges.size(); ++level) {
         const model::TStarRange& r = ranges[level];
         if (r.not_computed > 0) continue;
-        block.t_star_low[p * L + level] = r.low;
-        block.t_star_high[p * L + level] = r.high;
-        block.regime_low[p * L + level] = static_cast<std::int8_t>(r.regime_low);
-        block.regime_high[p * L + level] = static_cast<std::int8_t>(r.regime_high);
+        block[kTStarLow][p * L + level] = r.low;
+        block[kTStarHigh][p * L + level] = r.high;
+        block[kRegimeLow][p * L + level] = static_cast<std::int8_t>(r.regime_low);
+        block[kRegimeHigh][p * L + level] = static_cast<std::int8_t>(r.regime_high);
       }
     }
     const double X0 = load.initial();
@@ -479,9 +482,18 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       const double t = block.times[k];
       const model::CurveState state = run.curve.at(t > 0.0 ? load(t) : X0);
       const model::SurfaceValidity validity = model::reading_validity(run.curve, X0, state);
-      block.valid[p * T + k] = static_cast<std::int8_t>(validity);
-      block.touched[p * T + k] = state.sites_touched;
-      block.area_fraction[p * T + k] = state.range == model::CurveRange::above_top ? kNaN : state.area_fraction;
+      block[kValid][p * T + k] = static_cast<std::int8_t>(validity);
+      block[kTouched][p * T + k] = state.sites_touched;
+      block[kAreaFraction][p * T + k] = state.range == model::CurveRange::above_top ? kNaN : state.area_fraction;
+    }
+    // Each level's contact radius and advisories by the last time (surface's, per level).
+    if (T > 0) {
+      const double t_last = block.times[T - 1];
+      const model::SurfaceAdvisories advice = model::advise_surface(run.geometry, run.curve.at(t_last > 0.0 ? load(t_last) : X0));
+      for (std::size_t level = 0; level < L; ++level) {
+        block[kContactRadius][p * L + level] = advice.level[level].a_max;
+        block[kAdvised][p * L + level] = advice.level[level].raised.empty() ? 0.0 : 1.0;
+      }
     }
   }
   // As it travels: the head, then every array's values as doubles (codes are small integers).
@@ -493,8 +505,8 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   values[kSource] = run.curve_source == CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
   values[kTimes] = static_cast<double>(T);
   values.insert(values.end(), block.times.begin(), block.times.end());
-  for_each_block(block, 0, [&values](const auto& v, std::size_t from, std::size_t n) {
-    for (std::size_t k = from; k < from + n; ++k) values.push_back(static_cast<double>(v[k]));
+  for_each_block(block, 0, [&values](const std::vector<double>& v, std::size_t from, std::size_t n) {
+    values.insert(values.end(), v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(from + n));
   });
   return values;
 }
@@ -533,9 +545,8 @@ void place_geometry(SurfaceMap* map, std::size_t g, std::span<const double> bloc
   if (block.size() != expected) {
     throw refuse("holds " + std::to_string(block.size()) + " values where the map's geometry has " + std::to_string(expected));
   }
-  for_each_block(*map, g, [&](auto& v, std::size_t from, std::size_t n) {
-    using Value = typename std::decay_t<decltype(v)>::value_type;
-    for (std::size_t i = from; i < from + n; ++i) v[i] = static_cast<Value>(block[k++]);
+  for_each_block(*map, g, [&](std::vector<double>& v, std::size_t from, std::size_t n) {
+    for (std::size_t i = from; i < from + n; ++i) v[i] = block[k++];
   });
 }
 
@@ -624,63 +635,67 @@ void write_surface_map(const std::string& path, const SurfaceMap& map, bool over
     for (int level = 0; level < map.levels; ++level) levels.push_back(level);
     file.coordinate("level", levels, {{"units", "1"}, {"long_name", "level: 0 the tallest caps"}});
     file.coordinate("t", map.times, with(units("T_eps"), {{"long_name", "time since the load was applied"}}));
-    const auto dims = [&](std::initializer_list<const std::vector<std::string>*> parts, const char* last) {
-      std::vector<std::string> out;
-      for (const auto* part : parts) out.insert(out.end(), part->begin(), part->end());
-      if (last) out.emplace_back(last);
-      return out;
-    };
-    std::vector<std::int8_t> regime_codes;
-    std::string regime_names;
-    for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
-      regime_codes.push_back(static_cast<std::int8_t>(r));
-      regime_names += std::string(regime_names.empty() ? "" : " ") + std::string(model::regime_name(r));
-    }
-    file.variable("t_star", dims({&geometry_dims, &load_dims}, "level"), map.t_star,
-                  with(units("T_eps"), {{"long_name", "each level's touch time (0 at once, +inf never)"}}));
-    file.variable("regime", dims({&geometry_dims, &load_dims}, "level"), map.regime,
-                  {{"long_name", "each level's regime"}, {"flag_meanings", regime_names}}, regime_codes);
-    if (!map.tolerance.empty()) {
-      file.attribute("tolerance", map.tolerance);
-      const std::string box = " over the box of tolerances (" + map.tolerance + ") about the point";
-      file.variable("t_star_low", dims({&geometry_dims, &load_dims}, "level"), map.t_star_low,
-                    with(units("T_eps"), {{"long_name", "each level's least touch time" + box}}));
-      file.variable("t_star_high", dims({&geometry_dims, &load_dims}, "level"), map.t_star_high,
-                    with(units("T_eps"), {{"long_name", "each level's greatest touch time" + box}}));
-      // (Element by element: GCC 12's -Warray-bounds misreads an insert into a vector of one.)
+    // The flag sets' codes and meanings (the model's enums, in code order).
+    struct FlagSet {
       std::vector<std::int8_t> codes;
-      codes.reserve(regime_codes.size() + 1);
-      codes.push_back(kNotComputed);
-      for (const std::int8_t code : regime_codes) codes.push_back(code);
-      const std::string meanings = "not_computed " + regime_names;
-      file.variable("regime_low", dims({&geometry_dims, &load_dims}, "level"), map.regime_low,
-                    {{"long_name", "each level's regime at the corner of least t*" + box}, {"flag_meanings", meanings}}, codes);
-      file.variable("regime_high", dims({&geometry_dims, &load_dims}, "level"), map.regime_high,
-                    {{"long_name", "each level's regime at the corner of greatest t*" + box}, {"flag_meanings", meanings}}, codes);
+      std::string meanings;  ///< empty: flag_values only
+    };
+    const auto flag_set = [](map::TextureFlags flags) {
+      FlagSet set;
+      const auto add = [&set](std::int8_t code, std::string_view name) {
+        set.codes.push_back(code);
+        if (!name.empty()) set.meanings += std::string(set.meanings.empty() ? "" : " ") + std::string(name);
+      };
+      switch (flags) {
+        case map::TextureFlags::regime_or_not_computed:
+          add(kNotComputed, "not_computed");
+          [[fallthrough]];
+        case map::TextureFlags::regime:
+          for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
+            add(static_cast<std::int8_t>(r), model::regime_name(r));
+          }
+          break;
+        case map::TextureFlags::surface_validity:
+          for (const model::SurfaceValidity v : {model::SurfaceValidity::valid, model::SurfaceValidity::below_resolution,
+                                                 model::SurfaceValidity::above_top, model::SurfaceValidity::unloading}) {
+            add(static_cast<std::int8_t>(v), model::surface_validity_name(v));
+          }
+          break;
+        case map::TextureFlags::yes_no:
+          add(0, "");
+          add(1, "");
+          break;
+        case map::TextureFlags::none:
+          break;
+      }
+      return set;
+    };
+    if (!map.tolerance.empty()) file.attribute("tolerance", map.tolerance);
+    const std::string box = " over the box of tolerances (" + map.tolerance + ") about the point";
+    for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+      if (!map.stores(q)) continue;
+      const map::TextureQuantitySpec& spec = map::kTextureQuantities[q];
+      std::vector<std::string> over = geometry_dims;
+      if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::load_time) {
+        over.insert(over.end(), load_dims.begin(), load_dims.end());
+      }
+      if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::geometry_level) {
+        over.emplace_back("level");
+      } else if (spec.extent == map::TextureExtent::load_time) {
+        over.emplace_back("t");
+      }
+      const std::string long_name = std::string(spec.long_name) + (spec.with_tolerance ? box : "");
+      if (spec.flags == map::TextureFlags::none) {
+        file.variable(std::string(spec.name), over, map[q], with(units(std::string(spec.scale)), {{"long_name", long_name}}));
+        continue;
+      }
+      const FlagSet set = flag_set(spec.flags);
+      std::vector<std::int8_t> codes(map[q].size());
+      for (std::size_t k = 0; k < codes.size(); ++k) codes[k] = static_cast<std::int8_t>(map[q][k]);
+      io::Attributes attributes{{"long_name", long_name}};
+      if (!set.meanings.empty()) attributes.emplace_back("flag_meanings", set.meanings);
+      file.variable(std::string(spec.name), over, codes, attributes, set.codes);
     }
-    file.variable("X_star", dims({&geometry_dims}, "level"), map.X_star,
-                  with(units("E0/(1-nu^2)"), {{"long_name", "each level's touchdown load (creep-weighted)"}}));
-    file.variable("resolved", dims({&geometry_dims}, "level"), map.resolved,
-                  {{"long_name", "whether the curve resolves the level's touchdown (1) or it lies below its resolution (0)"}},
-                  {0, 1});
-    file.variable("touched", dims({&geometry_dims, &load_dims}, "t"), map.touched,
-                  {{"units", "1"}, {"long_name", "share of the caps whose tip has touched"}});
-    file.variable("area_fraction", dims({&geometry_dims, &load_dims}, "t"), map.area_fraction,
-                  {{"units", "1"}, {"long_name", "contact area over the cell's"}});
-    std::vector<std::int8_t> validity_codes;
-    std::string validity_names;
-    for (const model::SurfaceValidity v : {model::SurfaceValidity::valid, model::SurfaceValidity::below_resolution,
-                                           model::SurfaceValidity::above_top, model::SurfaceValidity::unloading}) {
-      validity_codes.push_back(static_cast<std::int8_t>(v));
-      validity_names += std::string(validity_names.empty() ? "" : " ") + std::string(model::surface_validity_name(v));
-    }
-    file.variable("valid", dims({&geometry_dims, &load_dims}, "t"), map.valid,
-                  {{"long_name", "whether touched and area_fraction may be trusted at the time"}, {"flag_meanings", validity_names}},
-                  validity_codes);
-    file.variable("grid", geometry_dims, map.grid, {{"units", "1"}, {"long_name", "boundary-element nodes along x of the curve"}});
-    file.variable("from_tables", geometry_dims, map.from_tables,
-                  {{"long_name", "the curve came from the periodic model's tables (1) or the cell's boundary elements (0)"}},
-                  {0, 1});
     if (map.E0_star_Pa > 0.0) {
       std::vector<double> pressure;
       for (const double p : map.load.front().values) pressure.push_back(p * map.E0_star_Pa);

@@ -7,6 +7,7 @@
 /// level's regime and t*, and at each time the share of caps in contact, the area fraction
 /// and their validity. Rank 0 writes the map, a netCDF-4 file, whole.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "input/command_options.hpp"
+#include "map/texture_quantities.hpp"
 
 namespace punchsweep::app {
 
@@ -34,21 +36,19 @@ struct SurfaceMap {
   std::string time_unit = "T_eps";
   int levels = 0;
   std::size_t caps = 0;                 ///< per cell (per supercell)
-  std::vector<double> t_star;           ///< [geometry, load, level], in time_unit; +inf never
-  std::vector<std::int8_t> regime;      ///< [geometry, load, level] (model::Regime)
-  std::vector<double> X_star;           ///< [geometry, level], in E0*
-  std::vector<std::int8_t> resolved;    ///< [geometry, level]: the curve resolves X*
-  std::vector<double> touched;          ///< [geometry, load, time]: the share of caps touched
-  std::vector<double> area_fraction;    ///< [geometry, load, time]
-  std::vector<std::int8_t> valid;       ///< [geometry, load, time] (model::SurfaceValidity)
-  /// With a box of tolerances (`tolerance`, as stated): each level's least and greatest t*
-  /// over the box about each load point, and the regimes at those corners (NaN and
-  /// kNotComputed where a corner leaves a parameter's range); empty without one.
+  /// With a box of tolerances: `tolerance` as stated (map::kTextureQuantities' with_tolerance
+  /// quantities are stored then); empty without one.
   std::string tolerance;
-  std::vector<double> t_star_low, t_star_high;        ///< [geometry, load, level]
-  std::vector<std::int8_t> regime_low, regime_high;  ///< [geometry, load, level]
-  std::vector<double> grid;             ///< [geometry]: nodes along x of its curve
-  std::vector<std::int8_t> from_tables;  ///< [geometry]: the periodic model's tables served
+  /// Each quantity of map::kTextureQuantities, row-major over the geometry's axes, then its
+  /// extent's (the load's, then level or time); flags as their codes; empty where not
+  /// stored. t* in time_unit (+inf never), X* in E0*.
+  std::array<std::vector<double>, map::kTextureQuantityCount> values;
+  std::vector<double>& operator[](std::size_t q) { return values[q]; }
+  const std::vector<double>& operator[](std::size_t q) const { return values[q]; }
+  /// Whether quantity q is stored (a tolerance's only with one).
+  bool stores(std::size_t q) const { return !map::kTextureQuantities[q].with_tolerance || !tolerance.empty(); }
+  /// The values quantity q has per geometry.
+  std::size_t per_geometry(std::size_t q) const;
   double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
   std::string texture;                  ///< the texture's keywords, as JSON
   std::string material;                 ///< the material file, or empty

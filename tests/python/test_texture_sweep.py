@@ -50,7 +50,7 @@ def test_a_texture_sweep_is_surface_at_every_point_in_physical_units(tmp_path):
     pressures = np.logspace(np.log10(5e3), np.log10(5e4), 6)
     np.testing.assert_allclose(ds.pbar.values, pressures, rtol=1e-12)
     np.testing.assert_allclose(ds.dh.values, [2.0, 3.0], rtol=1e-12)
-    checked = 0
+    checked, advised = 0, set()
     for i, dh in enumerate(["2um", "3um"]):
         for j, pressure in enumerate(pressures):
             for k, temperature in enumerate([20, 40]):
@@ -65,8 +65,13 @@ def test_a_texture_sweep_is_surface_at_every_point_in_physical_units(tmp_path):
                 np.testing.assert_array_equal(at.touched.values, one["series"]["sites_touched"])
                 area = [np.nan if a is None else a for a in one["series"]["area_fraction"]]
                 np.testing.assert_allclose(at.area_fraction.values, area, rtol=1e-12)
+                # Each level's contact radius (in um: R is 60 um) and advisories by the last time.
+                np.testing.assert_allclose(at.contact_radius.values, [60 * lv["contact_radius"] for lv in one["levels"]],
+                                           rtol=1e-12)
+                assert list(at.advised.values) == [int(lv["advisories"] != "") for lv in one["levels"]]
+                advised.update(lv["advisories"] for lv in one["levels"])
                 checked += 1
-    assert checked == 24
+    assert checked == 24 and advised >= {"", "beyond_paraboloid"}  # both cases met
 
 
 def test_a_texture_sweep_refuses_what_it_cannot_take(tmp_path):

@@ -7,11 +7,18 @@
 namespace punchsweep::model {
 
 SurfaceAdvisories advise_surface(const CellGeometry& geometry, const SurfaceHistory& history) {
+  if (history.snapshots.empty()) {
+    SurfaceAdvisories none;
+    none.level.assign(static_cast<std::size_t>(geometry.levels()), Advisories{});
+    return none;
+  }
+  return advise_surface(geometry, history.snapshots.back().state);
+}
+
+SurfaceAdvisories advise_surface(const CellGeometry& geometry, const CurveState& last) {
   const std::size_t L = static_cast<std::size_t>(geometry.levels());
   SurfaceAdvisories out;
   out.level.assign(L, Advisories{});
-  if (history.snapshots.empty()) return out;
-  const CurveState& last = history.snapshots.back().state;
   std::vector<int> sites(L, 0);
   for (const Site& site : geometry.sites) ++sites[static_cast<std::size_t>(site.level)];
   for (std::size_t level = 0; level < L; ++level) {

@@ -28,5 +28,7 @@ struct SurfaceAdvisories {
 
 /// The advisories of `history` on `geometry` (no snapshots: none).
 SurfaceAdvisories advise_surface(const CellGeometry& geometry, const SurfaceHistory& history);
+/// The same from the cell's state at the last time alone (what a map reads per load point).
+SurfaceAdvisories advise_surface(const CellGeometry& geometry, const CurveState& last);
 
 }  // namespace punchsweep::model

@@ -1,0 +1,83 @@
+#pragma once
+/// @file
+/// Every quantity of a texture's map, declared once: its name (the map's variable), what
+/// it runs over after the geometry's axes (the load's axes and the levels, the levels, the
+/// load's axes and the times, or the geometry alone), its flag set or scale, and its long
+/// name. A texture map's storage, the order its values travel between ranks and into the
+/// journal, and the netCDF writer all iterate this list (app/surface_map_command.cpp);
+/// adding a texture output is one row here and the line that computes it.
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+namespace punchsweep::map {
+
+/// What a texture quantity runs over, after the geometry's axes.
+enum class TextureExtent {
+  load_level,      ///< the load's axes, then `level`
+  geometry_level,  ///< `level` (a geometry's own, whatever the load)
+  load_time,       ///< the load's axes, then `t`
+  geometry,        ///< nothing more: one value a geometry
+};
+
+/// The codes a texture flag takes (int8 with flag_values; flag_meanings where named).
+enum class TextureFlags {
+  none,                    ///< a real (float64)
+  regime,                  ///< immediate delayed never (model::Regime)
+  regime_or_not_computed,  ///< not_computed, then the regimes (-1 to 2)
+  surface_validity,        ///< valid below_resolution above_top unloading (model::SurfaceValidity)
+  yes_no,                  ///< 0 or 1
+};
+
+struct TextureQuantitySpec {
+  std::string_view name;
+  TextureExtent extent;
+  TextureFlags flags;
+  /// A real's scale: "T_eps" (written in the law's time unit where it has one),
+  /// "E0/(1-nu^2)" (units "1" with scaled_by), or "1"; empty for a flag.
+  std::string_view scale;
+  std::string_view long_name;
+  /// Stored only with a box of tolerances (its long name then ends with the box).
+  bool with_tolerance = false;
+};
+
+/// In the order the map creates its variables.
+inline constexpr std::array<TextureQuantitySpec, 15> kTextureQuantities{{
+    {"t_star", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's touch time (0 at once, +inf never)"},
+    {"regime", TextureExtent::load_level, TextureFlags::regime, "", "each level's regime"},
+    {"t_star_low", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's least touch time", true},
+    {"t_star_high", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's greatest touch time", true},
+    {"regime_low", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
+     "each level's regime at the corner of least t*", true},
+    {"regime_high", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
+     "each level's regime at the corner of greatest t*", true},
+    {"X_star", TextureExtent::geometry_level, TextureFlags::none, "E0/(1-nu^2)",
+     "each level's touchdown load (creep-weighted)"},
+    {"resolved", TextureExtent::geometry_level, TextureFlags::yes_no, "",
+     "whether the curve resolves the level's touchdown (1) or it lies below its resolution (0)"},
+    {"touched", TextureExtent::load_time, TextureFlags::none, "1", "share of the caps whose tip has touched"},
+    {"area_fraction", TextureExtent::load_time, TextureFlags::none, "1", "contact area over the cell's"},
+    {"valid", TextureExtent::load_time, TextureFlags::surface_validity, "",
+     "whether touched and area_fraction may be trusted at the time"},
+    {"contact_radius", TextureExtent::load_level, TextureFlags::none, "R",
+     "each level's contact radius by the last time: sqrt(area / (pi caps in contact)), 0 where none touches"},
+    {"advised", TextureExtent::load_level, TextureFlags::yes_no, "",
+     "whether the level's caps pass the paraboloid's bound (a > 0.3 R on a sphere) or the strain's (0.2 f'(a) > 0.1) "
+     "by the last time (surface's advisories: the answer stands for less than it seems)"},
+    {"grid", TextureExtent::geometry, TextureFlags::none, "1", "boundary-element nodes along x of the curve"},
+    {"from_tables", TextureExtent::geometry, TextureFlags::yes_no, "",
+     "the curve came from the periodic model's tables (1) or the cell's boundary elements (0)"},
+}};
+inline constexpr std::size_t kTextureQuantityCount = kTextureQuantities.size();
+
+/// The position of the texture quantity called `name` in kTextureQuantities (a name not
+/// there is a compile error where it is a constant expression).
+consteval std::size_t texture_quantity(std::string_view name) {
+  for (std::size_t q = 0; q < kTextureQuantityCount; ++q) {
+    if (kTextureQuantities[q].name == name) return q;
+  }
+  throw "no such texture quantity";
+}
+
+}  // namespace punchsweep::map
