@@ -68,7 +68,9 @@ constexpr Refused kRefused[] = {
 /// A map's limits (refused up front): geometries, each a load curve; geometries x load
 /// points, held on rank 0 (with three levels and ten times, about 150 bytes a point).
 constexpr std::size_t kMaxGeometries = 10000;
-constexpr double kMaxMapPoints = 1e7;
+/// A geometry's load points: its block (every load point's values) travels whole between
+/// ranks and into the journal (with three levels and ten times, about 500 MB at the limit).
+constexpr double kMaxLoadPoints = 1e6;
 
 const std::string* find(const input::Keywords& keywords, const std::string& name) {
   for (const auto& [key, value] : keywords) {
@@ -346,10 +348,10 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
     throw input::UsageError("the map has " + std::to_string(G) + " geometries, each its own load curve (seconds to minutes): at most " +
                             std::to_string(kMaxGeometries) + " in one map; split the geometry axes over several maps");
   }
-  if (static_cast<double>(G) * static_cast<double>(P) > kMaxMapPoints) {
-    throw input::UsageError("the map has " + std::to_string(G) + " geometries x " + std::to_string(P) + " load points, beyond " +
-                            input::json_number(kMaxMapPoints) +
-                            " points (a texture map is held in memory until it is written whole): split its axes over several maps");
+  if (static_cast<double>(P) > kMaxLoadPoints) {
+    throw input::UsageError("the map has " + std::to_string(P) + " load points a geometry, beyond " + input::json_number(kMaxLoadPoints) +
+                            " (a geometry's values travel whole between ranks and into the journal): split the load's axes over "
+                            "several maps");
   }
 }
 
@@ -517,55 +519,6 @@ GeometryCost geometry_cost(std::span<const double> block) {
   return {block[kSeconds], source};
 }
 
-void place_geometry(SurfaceMap* map, std::size_t g, std::span<const double> block) {
-  const auto refuse = [g](const std::string& why) {
-    return std::invalid_argument("geometry " + std::to_string(g) + "'s block " + why);
-  };
-  if (g >= map->geometries()) throw refuse("lies outside the map's " + std::to_string(map->geometries()) + " geometries");
-  if (block.size() < kHead) throw refuse("is shorter than its head");
-  const int levels = static_cast<int>(block[kLevels]);
-  const std::size_t T = static_cast<std::size_t>(block[kTimes]);
-  if (block.size() < kHead + T) throw refuse("is shorter than its times");
-  const std::vector<double> times(block.begin() + kHead, block.begin() + static_cast<std::ptrdiff_t>(kHead + T));
-  if (map->levels == 0) {
-    map->levels = levels;
-    map->caps = static_cast<std::size_t>(block[kCaps]);
-    map->times = times;
-    map->E0_star_Pa = block[kE0];
-    size_arrays(*map);
-  } else if (levels != map->levels) {
-    throw input::UsageError("the geometries have different numbers of levels (" + std::to_string(map->levels) + " and " +
-                            std::to_string(levels) + "): a map's geometries share their levels");
-  } else if (times != map->times) {
-    throw refuse("has other snapshot times than the map's");
-  }
-  std::size_t k = kHead + T;
-  std::size_t expected = k;
-  for_each_block(*map, g, [&expected](const auto&, std::size_t, std::size_t n) { expected += n; });
-  if (block.size() != expected) {
-    throw refuse("holds " + std::to_string(block.size()) + " values where the map's geometry has " + std::to_string(expected));
-  }
-  for_each_block(*map, g, [&](std::vector<double>& v, std::size_t from, std::size_t n) {
-    for (std::size_t i = from; i < from + n; ++i) v[i] = block[k++];
-  });
-}
-
-SurfaceMap evaluate_surface_map(const input::Keywords& keywords, bool progress) {
-  const TextureMapPlan plan(keywords);
-  SurfaceMap map = plan.header();
-  const std::size_t G = plan.geometries();
-  for (std::size_t g = 0; g < G; ++g) {
-    const std::vector<double> block = plan.evaluate(g);
-    place_geometry(&map, g, block);
-    if (progress) {
-      const GeometryCost cost = geometry_cost(block);
-      std::cerr << "punchsweep surface-map: geometry " << g + 1 << " of " << G << " (" << plan.describe(g) << "): curve "
-                << cost.source << " in " << cost.seconds << " s\n";
-    }
-  }
-  return map;
-}
-
 std::vector<std::string> texture_input_files(const input::Keywords& keywords) {
   std::vector<std::string> files;
   for (const char* key : {"material", "cell", "height-map"}) {
@@ -590,123 +543,199 @@ std::string map_output_problem(const std::string& path, bool overwrite, const in
 }
 }  // namespace
 
-void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite, const input::Keywords& keywords) {
-  if (const std::string problem = map_output_problem(path, overwrite, keywords); !problem.empty()) {
+struct TextureMapWriter::File {
+  io::NetcdfFile netcdf;
+  explicit File(const std::string& path) : netcdf(path) {}
+};
+
+TextureMapWriter::TextureMapWriter(std::string path, SurfaceMap header, bool overwrite, const input::Keywords& keywords)
+    : path_(std::move(path)), header_(std::move(header)), written_(header_.geometries(), false) {
+  if (const std::string problem = map_output_problem(path_, overwrite, keywords); !problem.empty()) {
     throw input::UsageError(problem);
   }
-  const std::string partial = path + ".partial";
-  try {
-    io::NetcdfFile file(partial);
-    file.attribute("Conventions", "CF-1.8");
-    file.attribute("title", "punchsweep surface map: each level's touch time over a texture's geometry and load");
-    file.attribute("texture", map.texture);
-    file.attribute("material", map.material);
-    // The physical scales as a regime map states them (R, R_m, E0_star_Pa), so that one
-    // reader (Python's open_map, the scripts, the explorer) gives every map in kPa and um.
-    if (!map.R.empty()) {
-      file.attribute("R", map.R);
-      file.attribute("R_m", map.R_m);
-    }
-    if (map.E0_star_Pa > 0.0) file.attribute("E0_star_Pa", map.E0_star_Pa);
-    if (!map.scatter_kind.empty()) file.attribute("scatter_kind", map.scatter_kind);
-    if (!map.identity.empty()) file.attribute("identity", map.identity);
-    if (map.layout_version > 0) file.attribute("layout_version", static_cast<double>(map.layout_version));
-    file.attribute("time_unit", map.time_unit);
-    const auto units = [&](const std::string& scale) -> io::Attributes {
-      if (scale == "T_eps" && map.time_unit != "T_eps") return {{"units", map.time_unit}};
-      if (scale == "degC") return {{"units", "degC"}};
-      if (scale == "1") return {{"units", "1"}};
-      return {{"units", "1"}, {"scaled_by", scale}};
-    };
-    const auto with = [](io::Attributes a, const io::Attributes& more) {
-      a.insert(a.end(), more.begin(), more.end());
-      return a;
-    };
-    std::vector<std::string> geometry_dims, load_dims;
-    for (const SurfaceMapAxis& a : map.geometry) {
-      file.coordinate(a.name, a.values, with(units(a.scale), {{"long_name", a.long_name}}));
-      geometry_dims.push_back(a.name);
-    }
-    for (const SurfaceMapAxis& a : map.load) {
-      file.coordinate(a.name, a.values, with(units(a.scale), {{"long_name", a.long_name}}));
-      load_dims.push_back(a.name);
-    }
-    std::vector<double> levels, sized_levels;
-    for (int level = 0; level < map.levels; ++level) levels.push_back(level);
-    file.coordinate("level", levels, {{"units", "1"}, {"long_name", "level: 0 the tallest caps"}});
-    file.coordinate("t", map.times, with(units("T_eps"), {{"long_name", "time since the load was applied"}}));
-    // The flag sets' codes and meanings (the model's enums, in code order).
-    struct FlagSet {
-      std::vector<std::int8_t> codes;
-      std::string meanings;  ///< empty: flag_values only
-    };
-    const auto flag_set = [](map::TextureFlags flags) {
-      FlagSet set;
-      const auto add = [&set](std::int8_t code, std::string_view name) {
-        set.codes.push_back(code);
-        if (!name.empty()) set.meanings += std::string(set.meanings.empty() ? "" : " ") + std::string(name);
-      };
-      switch (flags) {
-        case map::TextureFlags::regime_or_not_computed:
-          add(kNotComputed, "not_computed");
-          [[fallthrough]];
-        case map::TextureFlags::regime:
-          for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
-            add(static_cast<std::int8_t>(r), model::regime_name(r));
-          }
-          break;
-        case map::TextureFlags::surface_validity:
-          for (const model::SurfaceValidity v : {model::SurfaceValidity::valid, model::SurfaceValidity::below_resolution,
-                                                 model::SurfaceValidity::above_top, model::SurfaceValidity::unloading}) {
-            add(static_cast<std::int8_t>(v), model::surface_validity_name(v));
-          }
-          break;
-        case map::TextureFlags::yes_no:
-          add(0, "");
-          add(1, "");
-          break;
-        case map::TextureFlags::none:
-          break;
-      }
-      return set;
-    };
-    if (!map.tolerance.empty()) file.attribute("tolerance", map.tolerance);
-    const std::string box = " over the box of tolerances (" + map.tolerance + ") about the point";
-    for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
-      if (!map.stores(q)) continue;
-      const map::TextureQuantitySpec& spec = map::kTextureQuantities[q];
-      std::vector<std::string> over = geometry_dims;
-      if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::load_time) {
-        over.insert(over.end(), load_dims.begin(), load_dims.end());
-      }
-      if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::geometry_level) {
-        over.emplace_back("level");
-      } else if (spec.extent == map::TextureExtent::load_time) {
-        over.emplace_back("t");
-      }
-      const std::string long_name = std::string(spec.long_name) + (spec.with_tolerance ? box : "");
-      if (spec.flags == map::TextureFlags::none) {
-        file.variable(std::string(spec.name), over, map[q], with(units(std::string(spec.scale)), {{"long_name", long_name}}));
-        continue;
-      }
-      const FlagSet set = flag_set(spec.flags);
-      std::vector<std::int8_t> codes(map[q].size());
-      for (std::size_t k = 0; k < codes.size(); ++k) codes[k] = static_cast<std::int8_t>(map[q][k]);
-      io::Attributes attributes{{"long_name", long_name}};
-      if (!set.meanings.empty()) attributes.emplace_back("flag_meanings", set.meanings);
-      file.variable(std::string(spec.name), over, codes, attributes, set.codes);
-    }
-    if (map.E0_star_Pa > 0.0) {
-      std::vector<double> pressure;
-      for (const double p : map.load.front().values) pressure.push_back(p * map.E0_star_Pa);
-      file.variable("pressure", {"pbar"}, pressure, {{"units", "Pa"}, {"long_name", "nominal pressure"}});
-    }
-    file.close();
-  } catch (...) {
-    std::remove(partial.c_str());
-    throw;
+}
+
+TextureMapWriter::~TextureMapWriter() {
+  if (file_) {
+    file_.reset();
+    std::remove((path_ + ".partial").c_str());
   }
-  std::filesystem::rename(partial, path);
+}
+
+void TextureMapWriter::create(std::span<const double> block) {
+  SurfaceMap& map = header_;
+  map.levels = static_cast<int>(block[kLevels]);
+  map.caps = static_cast<std::size_t>(block[kCaps]);
+  map.E0_star_Pa = block[kE0];
+  map.times.assign(block.begin() + kHead, block.begin() + static_cast<std::ptrdiff_t>(kHead + static_cast<std::size_t>(block[kTimes])));
+  file_ = std::make_unique<File>(path_ + ".partial");
+  io::NetcdfFile& file = file_->netcdf;
+  file.attribute("Conventions", "CF-1.8");
+  file.attribute("title", "punchsweep surface map: each level's touch time over a texture's geometry and load");
+  file.attribute("texture", map.texture);
+  file.attribute("material", map.material);
+  // The physical scales as a regime map states them (R, R_m, E0_star_Pa), so that one
+  // reader (Python's open_map, the scripts, the explorer) gives every map in kPa and um.
+  if (!map.R.empty()) {
+    file.attribute("R", map.R);
+    file.attribute("R_m", map.R_m);
+  }
+  if (map.E0_star_Pa > 0.0) file.attribute("E0_star_Pa", map.E0_star_Pa);
+  if (!map.scatter_kind.empty()) file.attribute("scatter_kind", map.scatter_kind);
+  if (!map.identity.empty()) file.attribute("identity", map.identity);
+  if (map.layout_version > 0) file.attribute("layout_version", static_cast<double>(map.layout_version));
+  file.attribute("time_unit", map.time_unit);
+  const auto units = [&](const std::string& scale) -> io::Attributes {
+    if (scale == "T_eps" && map.time_unit != "T_eps") return {{"units", map.time_unit}};
+    if (scale == "degC") return {{"units", "degC"}};
+    if (scale == "1") return {{"units", "1"}};
+    return {{"units", "1"}, {"scaled_by", scale}};
+  };
+  const auto with = [](io::Attributes a, const io::Attributes& more) {
+    a.insert(a.end(), more.begin(), more.end());
+    return a;
+  };
+  std::vector<std::string> geometry_dims, load_dims;
+  for (const SurfaceMapAxis& a : map.geometry) {
+    file.coordinate(a.name, a.values, with(units(a.scale), {{"long_name", a.long_name}}));
+    geometry_dims.push_back(a.name);
+  }
+  for (const SurfaceMapAxis& a : map.load) {
+    file.coordinate(a.name, a.values, with(units(a.scale), {{"long_name", a.long_name}}));
+    load_dims.push_back(a.name);
+  }
+  std::vector<double> levels;
+  for (int level = 0; level < map.levels; ++level) levels.push_back(level);
+  file.coordinate("level", levels, {{"units", "1"}, {"long_name", "level: 0 the tallest caps"}});
+  file.coordinate("t", map.times, with(units("T_eps"), {{"long_name", "time since the load was applied"}}));
+  // The flag sets' codes and meanings (the model's enums, in code order).
+  struct FlagSet {
+    std::vector<std::int8_t> codes;
+    std::string meanings;  ///< empty: flag_values only
+  };
+  const auto flag_set = [](map::TextureFlags flags) {
+    FlagSet set;
+    const auto add = [&set](std::int8_t code, std::string_view name) {
+      set.codes.push_back(code);
+      if (!name.empty()) set.meanings += std::string(set.meanings.empty() ? "" : " ") + std::string(name);
+    };
+    switch (flags) {
+      case map::TextureFlags::regime_or_not_computed:
+        add(kNotComputed, "not_computed");
+        [[fallthrough]];
+      case map::TextureFlags::regime:
+        for (const model::Regime r : {model::Regime::immediate, model::Regime::delayed, model::Regime::never}) {
+          add(static_cast<std::int8_t>(r), model::regime_name(r));
+        }
+        break;
+      case map::TextureFlags::surface_validity:
+        for (const model::SurfaceValidity v : {model::SurfaceValidity::valid, model::SurfaceValidity::below_resolution,
+                                               model::SurfaceValidity::above_top, model::SurfaceValidity::unloading}) {
+          add(static_cast<std::int8_t>(v), model::surface_validity_name(v));
+        }
+        break;
+      case map::TextureFlags::yes_no:
+        add(0, "");
+        add(1, "");
+        break;
+      case map::TextureFlags::none:
+        break;
+    }
+    return set;
+  };
+  if (!map.tolerance.empty()) file.attribute("tolerance", map.tolerance);
+  const std::string box = " over the box of tolerances (" + map.tolerance + ") about the point";
+  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+    if (!map.stores(q)) continue;
+    const map::TextureQuantitySpec& spec = map::kTextureQuantities[q];
+    std::vector<std::string> over = geometry_dims;
+    if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::load_time) {
+      over.insert(over.end(), load_dims.begin(), load_dims.end());
+    }
+    if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::geometry_level) {
+      over.emplace_back("level");
+    } else if (spec.extent == map::TextureExtent::load_time) {
+      over.emplace_back("t");
+    }
+    const std::string long_name = std::string(spec.long_name) + (spec.with_tolerance ? box : "");
+    // One geometry a slab (and a chunk): the map arrives, and is written, a geometry at a time.
+    if (spec.flags == map::TextureFlags::none) {
+      file.declare(std::string(spec.name), over, geometry_dims.size(), false, kNaN,
+                   with(units(std::string(spec.scale)), {{"long_name", long_name}}));
+      continue;
+    }
+    const FlagSet set = flag_set(spec.flags);
+    io::Attributes attributes{{"long_name", long_name}};
+    if (!set.meanings.empty()) attributes.emplace_back("flag_meanings", set.meanings);
+    file.declare(std::string(spec.name), over, geometry_dims.size(), true, kNotComputed, attributes, set.codes);
+  }
+  if (map.E0_star_Pa > 0.0) {
+    std::vector<double> pressure;
+    for (const double p : map.load.front().values) pressure.push_back(p * map.E0_star_Pa);
+    file.variable("pressure", {"pbar"}, pressure, {{"units", "Pa"}, {"long_name", "nominal pressure"}});
+  }
+}
+
+void TextureMapWriter::write(std::size_t g, std::span<const double> block) {
+  const auto refuse = [g](const std::string& why) {
+    return std::invalid_argument("geometry " + std::to_string(g) + "'s block " + why);
+  };
+  if (g >= written_.size()) throw refuse("lies outside the map's " + std::to_string(written_.size()) + " geometries");
+  if (block.size() < kHead || block.size() < kHead + static_cast<std::size_t>(block[kTimes])) throw refuse("is shorter than its head");
+  const std::size_t T = static_cast<std::size_t>(block[kTimes]);
+  if (!file_) create(block);
+  const SurfaceMap& map = header_;
+  const int levels = static_cast<int>(block[kLevels]);
+  if (levels != map.levels) {
+    throw input::UsageError("the geometries have different numbers of levels (" + std::to_string(map.levels) + " and " +
+                            std::to_string(levels) + "): a map's geometries share their levels");
+  }
+  if (!std::equal(map.times.begin(), map.times.end(), block.begin() + kHead, block.begin() + static_cast<std::ptrdiff_t>(kHead + T)) ||
+      T != map.times.size()) {
+    throw refuse("has other snapshot times than the map's");
+  }
+  std::size_t expected = kHead + T;
+  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) expected += map.stores(q) ? map.per_geometry(q) : 0;
+  if (block.size() != expected) {
+    throw refuse("holds " + std::to_string(block.size()) + " values where the map's geometry has " + std::to_string(expected));
+  }
+  const std::vector<std::size_t> at = digits_of(g, sizes_of(map.geometry));
+  std::size_t k = kHead + T;
+  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+    if (!map.stores(q)) continue;
+    const std::size_t n = map.per_geometry(q);
+    file_->netcdf.write_slab(std::string(map::kTextureQuantities[q].name), at, block.subspan(k, n));
+    k += n;
+  }
+  written_[g] = true;
+}
+
+void TextureMapWriter::finish() {
+  const auto missing = std::find(written_.begin(), written_.end(), false);
+  if (missing != written_.end()) {
+    throw std::logic_error("the map is finished without geometry " + std::to_string(missing - written_.begin()));
+  }
+  file_->netcdf.close();
+  file_.reset();
+  std::filesystem::rename(path_ + ".partial", path_);
+}
+
+void write_texture_map(const input::Keywords& keywords, const std::string& path, bool overwrite, bool progress) {
+  const TextureMapPlan plan(keywords);
+  SurfaceMap header = plan.header();
+  header.identity = run::join(texture_map_identity(keywords), "\n");
+  TextureMapWriter writer(path, std::move(header), overwrite, keywords);
+  const std::size_t G = plan.geometries();
+  for (std::size_t g = 0; g < G; ++g) {
+    const std::vector<double> block = plan.evaluate(g);
+    writer.write(g, block);
+    if (progress) {
+      const GeometryCost cost = geometry_cost(block);
+      std::cerr << "punchsweep surface-map: geometry " << g + 1 << " of " << G << " (" << plan.describe(g) << "): curve "
+                << cost.source << " in " << cost.seconds << " s\n";
+    }
+  }
+  writer.finish();
 }
 
 namespace {
@@ -808,9 +837,7 @@ std::string surface_map_file(const input::Keywords& keywords) {
   for (const auto& [key, value] : keywords) {
     if (!is_run_keyword(key)) texture.emplace_back(key, value);
   }
-  SurfaceMap map = evaluate_surface_map(texture, false);
-  map.identity = run::join(texture_map_identity(texture), "\n");
-  write_surface_map(*output, map, overwrite, keywords);
+  write_texture_map(texture, *output, overwrite, false);
   return *output;
 }
 

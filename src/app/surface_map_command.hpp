@@ -5,7 +5,8 @@
 /// a scatter's width) is one load curve, built by one MPI rank (geometries dealt round the
 /// ranks); the pressure and the creep law's parameters are then read off each curve: every
 /// level's regime and t*, and at each time the share of caps in contact, the area fraction
-/// and their validity. Rank 0 writes the map, a netCDF-4 file, whole.
+/// and their validity. The run (app/texture_map_run.hpp) deals the geometries to the ranks
+/// and journals them; rank 0 writes the map, a netCDF-4 file, a geometry at a time.
 
 #include <array>
 #include <cstdint>
@@ -87,7 +88,7 @@ class TextureMapPlan {
   std::string describe(std::size_t g) const;
   /// Geometry g computed: its curve (built, from the cache or the tables) and every load
   /// point read off it, as the values that travel between ranks and into a journal
-  /// (place_geometry reads them). A pure function of g and the keywords.
+  /// (TextureMapWriter::write reads them). A pure function of g and the keywords.
   std::vector<double> evaluate(std::size_t g) const;
 
  private:
@@ -104,19 +105,41 @@ struct GeometryCost {
 };
 GeometryCost geometry_cost(std::span<const double> block);
 
-/// Puts geometry g's block (TextureMapPlan::evaluate's values) into `map`, sizing its arrays
-/// from the first block placed. Throws input::UsageError when the geometries differ in
-/// their levels, std::invalid_argument when the block does not fit the map.
-void place_geometry(SurfaceMap* map, std::size_t g, std::span<const double> block);
+/// Writes a texture's map a geometry at a time (TextureMapPlan::evaluate's blocks, in any
+/// order), never holding it whole: into FILE.partial, one slab (and one HDF5 chunk) a
+/// geometry in every variable, renamed to FILE by finish(). The levels and the times come
+/// with the first block; the .partial is removed when the writer goes unfinished.
+class TextureMapWriter {
+ public:
+  /// Checks `path` as every output is (io::output_file_problem for it and its .partial;
+  /// none of the files `keywords` reads: material, cell, height-map; an existing file only
+  /// with `overwrite`). Throws input::UsageError naming the problem.
+  TextureMapWriter(std::string path, SurfaceMap header, bool overwrite, const input::Keywords& keywords);
+  ~TextureMapWriter();
+  TextureMapWriter(const TextureMapWriter&) = delete;
+  TextureMapWriter& operator=(const TextureMapWriter&) = delete;
 
-/// The map of `keywords` on this process alone, with a line on stderr per curve when
-/// `progress`.
-SurfaceMap evaluate_surface_map(const input::Keywords& keywords, bool progress);
+  /// Geometry g's block. Throws input::UsageError where its levels differ from the first
+  /// block's, std::invalid_argument where it does not fit the map.
+  void write(std::size_t g, std::span<const double> block);
+  /// The map's levels and snapshot times (0 before the first block).
+  int levels() const { return header_.levels; }
+  std::size_t times() const { return header_.times.size(); }
+  /// Closes the file and gives it its name. Throws std::logic_error when a geometry is missing.
+  void finish();
 
-/// Writes `map` to `path` whole (a temporary name renamed), checking the path as every
-/// output is (io::output_file_problem, for it and its .partial) and that it is none of the
-/// files `keywords` reads (material, cell, height-map); `overwrite` allows replacing a file.
-void write_surface_map(const std::string& path, const SurfaceMap& map, bool overwrite, const input::Keywords& keywords);
+ private:
+  void create(std::span<const double> first);
+  struct File;
+  std::string path_;
+  SurfaceMap header_;
+  std::vector<bool> written_;
+  std::unique_ptr<File> file_;
+};
+
+/// The map of `keywords` computed on this process alone and written to `path`, with a line
+/// on stderr per curve when `progress` (Python's surface_map).
+void write_texture_map(const input::Keywords& keywords, const std::string& path, bool overwrite, bool progress);
 
 /// The files a map's keywords read: its material, cell file or height map.
 std::vector<std::string> texture_input_files(const input::Keywords& keywords);

@@ -113,21 +113,24 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     return 0;
   }
 
-  // Rank 0: the map, and its journal (replayed into it on resume).
-  SurfaceMap map = plan->header();
-  map.identity = run::join(identity, "\n");
-  map.layout_version = kTextureLayoutVersion;
+  // Rank 0: the map's writer, and its journal (replayed into the map on resume).
+  SurfaceMap header = plan->header();
+  header.identity = run::join(identity, "\n");
+  header.layout_version = kTextureLayoutVersion;
+  std::optional<TextureMapWriter> writer;
   std::optional<io::TileJournal> journal;
   sweep::TileRanges pending;
   std::size_t resumed = 0;
   if (root) {
     try {
+      // (The resume policy has decided about an existing map: overwrite here.)
+      writer.emplace(job.output, std::move(header), true, job.keywords);
       std::vector<bool> done(G, false);
       if (start == run::Start::resume) {
         const std::size_t good = io::TileJournal::replay(paths.journal, [&](const io::EncodedTile& tile) {
           if (tile.tile >= G || tile.chunks.size() != 1 || done[tile.tile]) return false;
           try {
-            place_geometry(&map, tile.tile, as_values(tile.chunks.front()));
+            writer->write(tile.tile, as_values(tile.chunks.front()));
           } catch (const std::exception&) {
             return false;  // computed again
           }
@@ -136,7 +139,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
         });
         journal.emplace(io::TileJournal::open_for_append(paths.journal, good));
       } else {
-        journal.emplace(io::TileJournal::create(paths.journal, map.identity));
+        journal.emplace(io::TileJournal::create(paths.journal, run::join(identity, "\n")));
       }
       for (std::size_t g = 0; g < G; ++g) {
         if (done[g]) {
@@ -145,6 +148,8 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
           pending.add(g);
         }
       }
+    } catch (const input::UsageError& e) {
+      refusal = e.what();
     } catch (const std::exception& e) {
       refusal = e.what();
     }
@@ -188,7 +193,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     journal->append_packed(bytes);
     const io::EncodedTile tile = io::unpack_encoded_tile(bytes.data(), bytes.size());
     const std::vector<double> block = as_values(tile.chunks.at(0));
-    place_geometry(&map, tile.tile, block);
+    writer->write(tile.tile, block);
     ++done;
     if (job.quiet) return;
     const GeometryCost cost = geometry_cost(block);
@@ -214,13 +219,13 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
           paths.journal + ".\n  Resume with: " + resume);
       code = kInterruptedExitCode;
     } else if (root) {
-      write_surface_map(job.output, map, true, job.keywords);
+      writer->finish();
       journal.reset();
       std::filesystem::remove(paths.journal);
       if (!job.quiet) {
         say("wrote " + job.output + " (" + std::to_string(G) + " geometr" + (G == 1 ? "y" : "ies") + " x " +
-            std::to_string(P) + " load points x " + std::to_string(map.levels) + " levels, " +
-            std::to_string(map.times.size()) + " times)");
+            std::to_string(P) + " load points x " + std::to_string(writer->levels()) + " levels, " +
+            std::to_string(writer->times()) + " times)");
       }
     }
   } catch (const input::UsageError& e) {

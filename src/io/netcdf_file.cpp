@@ -104,7 +104,72 @@ void NetcdfFile::variable(const std::string& name, const std::vector<std::string
   }
 }
 
+void NetcdfFile::declare(const std::string& name, const std::vector<std::string>& dims, std::size_t slab_dims,
+                         bool int8, double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values) {
+  const std::string where = "'" + name + "' in " + path_;
+  if (slab_dims > dims.size()) throw std::invalid_argument("NetcdfFile: " + where + " has fewer dimensions than its slabs'");
+  std::vector<hsize_t> shape, chunk;
+  for (std::size_t d = 0; d < dims.size(); ++d) {
+    shape.push_back(static_cast<hsize_t>(
+        H5Sget_simple_extent_npoints(Handle(H5Dget_space(scale(dims[d], where)), H5Sclose, "space of " + dims[d]))));
+    chunk.push_back(d < slab_dims ? 1 : shape.back());
+  }
+  const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, "make dataspace of " + where);
+  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
+  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order of " + where);
+  if (!shape.empty()) {
+    check(H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data()), "set chunk shape of " + where);
+    check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
+    check(H5Pset_deflate(dcpl, 4), "set deflate filter of " + where);
+  }
+  const std::int8_t code = static_cast<std::int8_t>(fill);
+  check(int8 ? H5Pset_fill_value(dcpl, H5T_NATIVE_INT8, &code) : H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &fill),
+        "set fill value of " + where);
+  Handle dataset(H5Dcreate2(file_, name.c_str(), int8 ? H5T_STD_I8LE : H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+                 H5Dclose, "create " + where);
+  finish(dataset, name, dims, attributes);
+  if (int8 && !flag_values.empty()) {
+    write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, flag_values.data(), flag_values.size(), "on " + where);
+  }
+  declared_.emplace_back(name, Declared{std::move(dataset), shape, slab_dims, int8});
+}
+
+void NetcdfFile::write_slab(const std::string& name, const std::vector<std::size_t>& at, std::span<const double> values) {
+  const std::string where = "'" + name + "' in " + path_;
+  const auto found = std::find_if(declared_.begin(), declared_.end(), [&](const auto& d) { return d.first == name; });
+  if (found == declared_.end()) throw std::invalid_argument("NetcdfFile: " + where + " was not declared");
+  const Declared& v = found->second;
+  if (at.size() != v.slab_dims) throw std::invalid_argument("NetcdfFile: a slab of " + where + " needs " + std::to_string(v.slab_dims) + " indices");
+  std::vector<hsize_t> start(v.shape.size(), 0), count = v.shape;
+  std::size_t n = 1;
+  for (std::size_t d = 0; d < v.shape.size(); ++d) {
+    if (d < v.slab_dims) {
+      if (at[d] >= v.shape[d]) throw std::invalid_argument("NetcdfFile: slab index outside " + where);
+      start[d] = at[d];
+      count[d] = 1;
+    }
+    n *= static_cast<std::size_t>(count[d]);
+  }
+  if (values.size() != n) {
+    throw std::invalid_argument("NetcdfFile: a slab of " + where + " has " + std::to_string(n) + " values, not " + std::to_string(values.size()));
+  }
+  const Handle file_space(H5Dget_space(v.dataset), H5Sclose, "space of " + where);
+  if (!v.shape.empty()) {
+    check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), "select a slab of " + where);
+  }
+  const hsize_t m = static_cast<hsize_t>(n);
+  const Handle memory_space(H5Screate_simple(1, &m, nullptr), H5Sclose, "memory space of " + where);
+  if (v.int8) {
+    codes_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) codes_[k] = static_cast<std::int8_t>(values[k]);
+    check(H5Dwrite(v.dataset, H5T_NATIVE_INT8, memory_space, file_space, H5P_DEFAULT, codes_.data()), "write a slab of " + where);
+  } else {
+    check(H5Dwrite(v.dataset, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, values.data()), "write a slab of " + where);
+  }
+}
+
 void NetcdfFile::close() {
+  declared_.clear();
   coordinates_.clear();
   if (file_.get() >= 0) check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + path_);
   file_.reset();

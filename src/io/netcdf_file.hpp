@@ -1,13 +1,15 @@
 #pragma once
 /// @file
-/// A small netCDF-4 file written through HDF5's C API, whole: coordinates as dimension
-/// scales, variables over them with their attributes, global attributes; what xarray
-/// (h5netcdf) and netCDF readers open. The regime map has its own writer (tiles, chunks,
-/// resume); this one serves maps held in memory (the surface map).
+/// A small netCDF-4 file written through HDF5's C API: coordinates as dimension scales,
+/// variables over them with their attributes (written whole, or declared and written a slab
+/// at a time), global attributes; what xarray (h5netcdf) and netCDF readers open. The regime
+/// map has its own writer (tiles, chunks written raw); this one serves the texture's map,
+/// a geometry a slab.
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +37,16 @@ class NetcdfFile {
   /// The same for int8 codes, with flag_values (an int8 array) where given.
   void variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<std::int8_t>& values,
                 const Attributes& attributes, const std::vector<std::int8_t>& flag_values = {});
+  /// A variable over `dims` written later in slabs (write_slab): a slab fixes its first
+  /// `slab_dims` indices and spans the rest, and is one chunk (shuffled, deflated), so that
+  /// a map arriving a slab at a time is never held whole. float64, or int8 codes with
+  /// flag_values where `int8`; unwritten values read as `fill` (NaN, or the not-computed code).
+  void declare(const std::string& name, const std::vector<std::string>& dims, std::size_t slab_dims, bool int8,
+               double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values = {});
+  /// Writes the slab of a declared variable at `at` (one index per slab dimension): its
+  /// values, row-major (codes converted to int8 for an int8 variable). Throws
+  /// std::invalid_argument when `at` or the count does not fit.
+  void write_slab(const std::string& name, const std::vector<std::size_t>& at, std::span<const double> values);
   /// Closes the file (flushes); the destructor does too, without reporting failure.
   void close();
 
@@ -47,6 +59,15 @@ class NetcdfFile {
   std::string path_;
   Handle file_;
   std::vector<std::pair<std::string, Handle>> coordinates_;
+  /// The declared variables: dataset, shape, slab dimensions, whether int8.
+  struct Declared {
+    Handle dataset;
+    std::vector<hsize_t> shape;
+    std::size_t slab_dims;
+    bool int8;
+  };
+  std::vector<std::pair<std::string, Declared>> declared_;
+  std::vector<std::int8_t> codes_;  ///< write_slab's scratch
 };
 
 }  // namespace punchsweep::io
