@@ -18,6 +18,7 @@
 #include <stdexcept>
 
 #include "input/command_options.hpp"
+#include "input/ini_lines.hpp"
 #include "input/text_file.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
@@ -645,43 +646,14 @@ po::options_description command_line_options() {
 // names neither the file nor the line; it follows Boost's rules ('#' starts a comment
 // anywhere, whitespace around names and values is dropped).
 std::vector<std::string> config_file_problems(const std::string& path, const std::string& text) {
-  std::vector<std::string> problems;
-  std::map<std::string, int> first_line;
-  std::string section;
-  std::istringstream in(text);
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (const std::size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    line = trim(line);
-    if (line.empty()) continue;
-    const std::string where = "config file " + path + ", line " + std::to_string(number) + ": ";
-    if (line.front() == '[' && line.back() == ']') {
-      section = line.substr(1, line.size() - 2);
-      if (!is_section(section)) {
-        problems.push_back(where + "unknown section [" + section +
-                           "] (sections: " + join({kSections.begin(), kSections.end()}, ", ") + ")");
-      }
-      continue;
-    }
-    const std::size_t equals = line.find('=');
-    if (equals == std::string::npos) {
-      problems.push_back(where + "expected '[section]' or 'key = value', got '" + line + "'");
-      continue;
-    }
-    const std::string name = trim(line.substr(0, equals));
-    if (section.empty()) {
-      problems.push_back(where + "key '" + name + "' comes before any [section]");
-      continue;
-    }
-    if (!is_section(section)) continue;  // its section is already reported
-    const std::string key = section + "." + name;
-    if (find_key(key) == nullptr) {
-      problems.push_back(where + "unknown key " + key + " (keys of [" + section + "]: " + section_keys(section) + ")");
-    } else if (const auto [it, inserted] = first_line.emplace(key, number); !inserted) {
-      problems.push_back(where + key + " is set again (first on line " + std::to_string(it->second) + ")");
-    }
-  }
-  return problems;
+  return scan_ini(path, text, is_section, "sections: " + join({kSections.begin(), kSections.end()}, ", "),
+                  [](const std::string& section, const std::string& name) {
+                    const std::string key = section + "." + name;
+                    return find_key(key) == nullptr
+                               ? "unknown key " + key + " (keys of [" + section + "]: " + section_keys(section) + ")"
+                               : std::string();
+                  })
+      .problems;
 }
 
 // The values the file sets, by key.

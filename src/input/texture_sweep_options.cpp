@@ -3,23 +3,18 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <string_view>
 
+#include "input/ini_lines.hpp"
 #include "input/text_file.hpp"
+#include "run/text_lines.hpp"
 #include "input/usage_error.hpp"
 
 namespace punchsweep::input {
 namespace {
 
 constexpr std::array<std::string_view, 6> kSections{"texture", "grid", "model", "time", "output", "run"};
-
-std::string trim(const std::string& s) {
-  const std::size_t first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
 
 bool is_section(const std::string& name) {
   return std::find(kSections.begin(), kSections.end(), name) != kSections.end();
@@ -46,48 +41,12 @@ void set(Settings& settings, const std::string& key, const std::string& value) {
 
 Settings read_config(const std::string& path) {
   if (path.empty()) throw UsageError("--config needs a file name (see punchsweep sweep --help)");
-  const std::string text = read_text_file(path, "config file");
+  const IniScan scan = scan_ini(path, read_text_file(path, "config file"), is_section,
+                                "sections of a texture's map: " + sections_list(),
+                                [](const std::string&, const std::string&) { return std::string(); });
+  if (!scan.problems.empty()) throw UsageError(run::join(scan.problems, "\n"));
   Settings settings;
-  std::map<std::string, int> first_line;
-  std::vector<std::string> problems;
-  std::string section;
-  std::istringstream in(text);
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (const std::size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    line = trim(line);
-    if (line.empty()) continue;
-    const std::string where = "config file " + path + ", line " + std::to_string(number) + ": ";
-    if (line.front() == '[' && line.back() == ']') {
-      section = trim(line.substr(1, line.size() - 2));
-      if (!is_section(section)) {
-        problems.push_back(where + "unknown section [" + section + "] (sections of a texture's map: " + sections_list() + ")");
-      }
-      continue;
-    }
-    const std::size_t equals = line.find('=');
-    if (equals == std::string::npos) {
-      problems.push_back(where + "expected '[section]' or 'key = value', got '" + line + "'");
-      continue;
-    }
-    const std::string name = trim(line.substr(0, equals));
-    if (section.empty()) {
-      problems.push_back(where + "key '" + name + "' comes before any [section]");
-      continue;
-    }
-    if (!is_section(section)) continue;  // reported with its header
-    const std::string key = section + "." + name;
-    if (const auto [it, inserted] = first_line.emplace(key, number); !inserted) {
-      problems.push_back(where + key + " is set again (first on line " + std::to_string(it->second) + ")");
-      continue;
-    }
-    settings.emplace_back(key, trim(line.substr(equals + 1)));
-  }
-  if (!problems.empty()) {
-    std::string all;
-    for (const std::string& p : problems) all += (all.empty() ? "" : "\n") + p;
-    throw UsageError(all);
-  }
+  for (const IniSetting& s : scan.settings) settings.emplace_back(s.key(), s.value);
   return settings;
 }
 
@@ -118,8 +77,8 @@ bool is_texture_sweep(const std::vector<std::string>& args) {
   std::ifstream in(config);
   for (std::string line; std::getline(in, line);) {
     if (const std::size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    line = trim(line);
-    if (line.size() > 2 && line.front() == '[' && line.back() == ']' && trim(line.substr(1, line.size() - 2)) == "texture") {
+    line = run::trim(line);
+    if (line.size() > 2 && line.front() == '[' && line.back() == ']' && run::trim(line.substr(1, line.size() - 2)) == "texture") {
       return true;
     }
   }
