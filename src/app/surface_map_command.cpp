@@ -21,6 +21,7 @@
 #include "input/axis_parser.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
 #include "io/netcdf_file.hpp"
 #include "io/output_file.hpp"
 #include "model/contact/regime.hpp"
@@ -49,6 +50,9 @@ constexpr const char* kOutput = "output";
 constexpr const char* kOverwrite = "overwrite";
 constexpr const char* kResume = "resume";
 constexpr const char* kQuiet = "quiet";
+/// The map's sample of load points checked by time stepping, and its seed.
+constexpr const char* kCheckSample = "check-sample";
+constexpr const char* kCheckSeed = "check-seed";
 
 /// Whether `key` is one of the run's own keywords (where and how to write), not the map's.
 bool is_run_keyword(const std::string& key) {
@@ -61,7 +65,7 @@ struct Refused {
   const char* why;
 };
 constexpr Refused kRefused[] = {
-    {"check", "the time stepping is one texture's check (punchsweep surface --check)"},
+    {"check", "the time stepping checks a sample of the map's load points: --check-sample K"},
     {"format", "the map is a netCDF-4 file (--output)"},
 };
 
@@ -110,6 +114,9 @@ struct MapInputs {
   std::string tolerance_text;
   std::vector<model::StatedTolerance> tolerance;
   std::vector<model::PointAxis> tolerance_coordinates;
+  /// --check-sample K and --check-seed S: K load points of the map checked by time stepping.
+  std::uint64_t check_sample = 0;
+  std::uint64_t check_seed = 1;
   /// The material (or law) the keywords name: its law spec is what the load points build.
   std::shared_ptr<const input::PointMaterial> material;
   const model::CreepLawSpec* spec = nullptr;  ///< material->spec
@@ -145,6 +152,12 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
     if (is_run_keyword(key)) continue;
     if (key == "tolerance") {
       in.tolerance_text = value;
+      continue;
+    }
+    if (key == kCheckSample || key == kCheckSeed) {
+      const std::uint64_t n = input::parse_seed(value, std::string("--") + key);
+      if (key == kCheckSample && n == 0) throw input::UsageError("--check-sample = 0: valid: at least 1 load point");
+      (key == kCheckSample ? in.check_sample : in.check_seed) = n;
       continue;
     }
     for (const Refused& r : kRefused) {
@@ -319,7 +332,10 @@ constexpr std::size_t kTStar = map::texture_quantity("t_star"), kRegime = map::t
                       kTouched = map::texture_quantity("touched"), kAreaFraction = map::texture_quantity("area_fraction"),
                       kValid = map::texture_quantity("valid"), kGrid = map::texture_quantity("grid"),
                       kFromTables = map::texture_quantity("from_tables"),
-                      kContactRadius = map::texture_quantity("contact_radius"), kAdvised = map::texture_quantity("advised");
+                      kContactRadius = map::texture_quantity("contact_radius"), kAdvised = map::texture_quantity("advised"),
+                      kCheckRegime = map::texture_quantity("check_regime"), kCheckTStar = map::texture_quantity("check_t_star"),
+                      kCheckResolution = map::texture_quantity("check_t_star_resolution"),
+                      kCheckAreaFraction = map::texture_quantity("check_area_fraction");
 
 }  // namespace
 
@@ -342,6 +358,17 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
     map.R_m = length.si();
   }
   const std::size_t G = map.geometries(), P = map.load_points();
+  if (in.check_sample > 0) {
+    const std::uint64_t points = static_cast<std::uint64_t>(G) * P;
+    if (in.check_sample > points) {
+      throw input::UsageError("--check-sample = " + std::to_string(in.check_sample) + ": valid: 1 to the map's " +
+                              std::to_string(points) + " load points (" + std::to_string(G) + " geometries x " +
+                              std::to_string(P) + ")");
+    }
+    map.check_sample = in.check_sample;
+    map.check_seed = in.check_seed;
+    check_.emplace(points, in.check_sample, in.check_seed);
+  }
   // Up front, what the map asks: a load curve per geometry (seconds to minutes each), and
   // every point's values held on rank 0 until the file is written.
   if (G > kMaxGeometries) {
@@ -498,6 +525,35 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       }
     }
   }
+  // The sampled load points of this geometry, each stepped in time on the same cell (as
+  // surface --check: the same grid as the curve's).
+  for (std::size_t p = 0; p < P && check_; ++p) {
+    if (!check_->contains(static_cast<std::uint64_t>(g) * P + p)) continue;
+    input::Keywords at_p;
+    for (const auto& [key, value] : keywords) {
+      const bool load_key = key == "pbar" || std::any_of(in.load.begin(), in.load.end(), [&](const SurfaceMapAxis& a) { return a.name == key; });
+      if (!load_key && key != "grid") at_p.emplace_back(key, value);
+    }
+    const std::vector<std::size_t> digits = digits_of(p, load_sizes);
+    for (std::size_t a = 0; a < map.load.size(); ++a) {
+      const std::string& name = map.load[a].name;
+      at_p.emplace_back(name == model::ramp_time_parameter().name ? "ramp" : name, text_of(map.load[a].values[digits[a]]));
+    }
+    if (run.curve_source == CurveSource::tables) {
+      if (const std::string* grid = find(keywords, "grid")) at_p.emplace_back("grid", *grid);
+    } else if (find(keywords, "height-map") == nullptr) {
+      at_p.emplace_back("grid", std::to_string(run.grid_nodes));  // the curve's own
+    }
+    at_p.emplace_back("check", "true");
+    const SurfaceRun checked = evaluate_surface(at_p);
+    const reference::CellReference& stepped = *checked.stepped;
+    for (std::size_t level = 0; level < L; ++level) {
+      block[kCheckRegime][p * L + level] = static_cast<std::int8_t>(stepped.level_regime[level]);
+      block[kCheckTStar][p * L + level] = stepped.level_t_star[level];
+      block[kCheckResolution][p * L + level] = checked.check_t_star_resolution;
+    }
+    for (std::size_t k = 0; k < T && k < stepped.series.size(); ++k) block[kCheckAreaFraction][p * T + k] = stepped.series[k].area_fraction;
+  }
   // As it travels: the head, then every array's values as doubles (codes are small integers).
   std::vector<double> values(kHead);
   values[kLevels] = static_cast<double>(L);
@@ -584,6 +640,10 @@ void TextureMapWriter::create(std::span<const double> block) {
   if (!map.scatter_kind.empty()) file.attribute("scatter_kind", map.scatter_kind);
   if (!map.identity.empty()) file.attribute("identity", map.identity);
   if (map.layout_version > 0) file.attribute("layout_version", static_cast<double>(map.layout_version));
+  if (map.check_sample > 0) {
+    file.attribute("check_sample", static_cast<double>(map.check_sample));
+    file.attribute("check_seed", static_cast<double>(map.check_seed));
+  }
   file.attribute("time_unit", map.time_unit);
   const auto units = [&](const std::string& scale) -> io::Attributes {
     if (scale == "T_eps" && map.time_unit != "T_eps") return {{"units", map.time_unit}};
@@ -657,7 +717,7 @@ void TextureMapWriter::create(std::span<const double> block) {
     } else if (spec.extent == map::TextureExtent::load_time) {
       over.emplace_back("t");
     }
-    const std::string long_name = std::string(spec.long_name) + (spec.with_tolerance ? box : "");
+    const std::string long_name = std::string(spec.long_name) + (spec.stored == map::TextureStored::tolerance ? box : "");
     // One geometry a slab (and a chunk): the map arrives, and is written, a geometry at a time.
     if (spec.flags == map::TextureFlags::none) {
       file.declare(std::string(spec.name), over, geometry_dims.size(), false, kNaN,
@@ -756,7 +816,11 @@ po::options_description map_options(const input::PointMaterial& material) {
       ("overwrite", po::bool_switch(), "replace FILE where it exists")
       ("resume", po::bool_switch(), "finish the map an interrupted run left (its journal FILE.partial.journal), "
                                    "computing only the geometries it lacks")
-      ("quiet", po::bool_switch(), "no progress lines");
+      ("quiet", po::bool_switch(), "no progress lines")
+      ("check-sample", po::value<std::string>()->value_name("K"),
+       "step the same cell in time (surface --check) at K load points of the map drawn at random, into "
+       "check_regime, check_t_star, check_area_fraction")
+      ("check-seed", po::value<std::string>()->value_name("S")->default_value("1"), "the seed of --check-sample's draw");
   po::options_description opts;
   opts.add(own).add(surface_options(material));
   return opts;

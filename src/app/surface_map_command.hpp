@@ -11,12 +11,14 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "input/command_options.hpp"
 #include "map/texture_quantities.hpp"
+#include "sweep/reference_sample.hpp"
 
 namespace punchsweep::app {
 
@@ -37,7 +39,7 @@ struct SurfaceMap {
   std::string time_unit = "T_eps";
   int levels = 0;
   std::size_t caps = 0;                 ///< per cell (per supercell)
-  /// With a box of tolerances: `tolerance` as stated (map::kTextureQuantities' with_tolerance
+  /// With a box of tolerances: `tolerance` as stated (map::kTextureQuantities' tolerance
   /// quantities are stored then); empty without one.
   std::string tolerance;
   /// Each quantity of map::kTextureQuantities, row-major over the geometry's axes, then its
@@ -47,7 +49,18 @@ struct SurfaceMap {
   std::vector<double>& operator[](std::size_t q) { return values[q]; }
   const std::vector<double>& operator[](std::size_t q) const { return values[q]; }
   /// Whether quantity q is stored (a tolerance's only with one).
-  bool stores(std::size_t q) const { return !map::kTextureQuantities[q].with_tolerance || !tolerance.empty(); }
+  bool stores(std::size_t q) const {
+    switch (map::kTextureQuantities[q].stored) {
+      case map::TextureStored::always: return true;
+      case map::TextureStored::tolerance: return !tolerance.empty();
+      case map::TextureStored::check: return check_sample > 0;
+    }
+    return false;
+  }
+  /// With a sample checked by time stepping: its size (load points of the whole map, drawn
+  /// by sweep::ReferenceSample with check_seed); 0 without one.
+  std::uint64_t check_sample = 0;
+  std::uint64_t check_seed = 1;
   /// The values quantity q has per geometry.
   std::size_t per_geometry(std::size_t q) const;
   double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
@@ -95,6 +108,7 @@ class TextureMapPlan {
   struct Inputs;
   std::unique_ptr<const Inputs> in_;
   SurfaceMap header_;
+  std::optional<sweep::ReferenceSample> check_;  ///< the load points checked by time stepping
 };
 
 /// What a geometry's curve cost: seconds, and "built", "from the cache" or "from the

@@ -14,7 +14,7 @@
 namespace punchsweep::input {
 namespace {
 
-constexpr std::array<std::string_view, 6> kSections{"texture", "grid", "model", "time", "output", "run"};
+constexpr std::array<std::string_view, 7> kSections{"texture", "grid", "model", "time", "reference", "output", "run"};
 
 bool is_section(const std::string& name) {
   return std::find(kSections.begin(), kSections.end(), name) != kSections.end();
@@ -144,6 +144,13 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
       } else {
         throw UsageError("unknown key " + key + " (keys of [run] for a texture's map: resume, overwrite, quiet)");
       }
+    } else if (section == "reference") {
+      // A sample of the map's load points stepped in time on the same cell (surface --check).
+      if (name != "sample" && name != "seed") {
+        throw UsageError("unknown key " + key + " (keys of [reference] for a texture's map: sample, seed)");
+      }
+      out.keywords.emplace_back(name == "sample" ? "check-sample" : "check-seed", value);
+      out.origins.push_back(key);
     } else if (section == "time") {
       if (name != "times") throw UsageError("unknown key " + key + " (keys of [time]: times)");
       out.keywords.emplace_back("times", value);
@@ -185,7 +192,8 @@ const char* const kTextureSweepHelp =
     "  file = hexagonal.nc\n"
     "Keys: [texture] surface's texture options with '_' for '-' (lattice, dh2, cell, height_map,\n"
     "pixel, supercell, scatter, seed, grid, curve, ...); [grid] l, dh, dh2, pbar or pressure, T or\n"
-    "temperature, ramp_time; [model] material, R, s, C, load_table; [time] times; [output] file,\n"
-    "tolerance; [run] resume, overwrite, quiet.\n";
+    "temperature, ramp_time; [model] material, R, s, C, load_table; [time] times; [reference]\n"
+    "sample (K load points stepped in time on the same cell, as surface --check), seed; [output]\n"
+    "file, tolerance; [run] resume, overwrite, quiet.\n";
 
 }  // namespace punchsweep::input

@@ -9,6 +9,8 @@
 ///             or logspace(), with units where the model has a material and R
 ///   [model]   material, R, s, C, load_table
 ///   [time]    times
+///   [reference] sample, seed: K load points stepped in time on the same cell (surface
+///             --check), into the map's check_* variables
 ///   [output]  file, tolerance
 ///   [run]     resume, overwrite, quiet
 /// A key's name is surface's option with '_' for '-' (height_map is --height-map); ramp_time

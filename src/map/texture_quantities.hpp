@@ -30,6 +30,10 @@ enum class TextureFlags {
   yes_no,                  ///< 0 or 1
 };
 
+/// When a texture quantity is stored: always, with a box of tolerances, or with a sample
+/// of load points checked by time stepping (`surface --check` at each).
+enum class TextureStored { always, tolerance, check };
+
 struct TextureQuantitySpec {
   std::string_view name;
   TextureExtent extent;
@@ -38,20 +42,20 @@ struct TextureQuantitySpec {
   /// "E0/(1-nu^2)" (units "1" with scaled_by), or "1"; empty for a flag.
   std::string_view scale;
   std::string_view long_name;
-  /// Stored only with a box of tolerances (its long name then ends with the box).
-  bool with_tolerance = false;
+  /// When it is stored (with a box of tolerances, its long name ends with the box).
+  TextureStored stored = TextureStored::always;
 };
 
 /// In the order the map creates its variables.
-inline constexpr std::array<TextureQuantitySpec, 15> kTextureQuantities{{
+inline constexpr std::array<TextureQuantitySpec, 19> kTextureQuantities{{
     {"t_star", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's touch time (0 at once, +inf never)"},
     {"regime", TextureExtent::load_level, TextureFlags::regime, "", "each level's regime"},
-    {"t_star_low", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's least touch time", true},
-    {"t_star_high", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's greatest touch time", true},
+    {"t_star_low", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's least touch time", TextureStored::tolerance},
+    {"t_star_high", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's greatest touch time", TextureStored::tolerance},
     {"regime_low", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
-     "each level's regime at the corner of least t*", true},
+     "each level's regime at the corner of least t*", TextureStored::tolerance},
     {"regime_high", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
-     "each level's regime at the corner of greatest t*", true},
+     "each level's regime at the corner of greatest t*", TextureStored::tolerance},
     {"X_star", TextureExtent::geometry_level, TextureFlags::none, "E0/(1-nu^2)",
      "each level's touchdown load (creep-weighted)"},
     {"resolved", TextureExtent::geometry_level, TextureFlags::yes_no, "",
@@ -65,6 +69,17 @@ inline constexpr std::array<TextureQuantitySpec, 15> kTextureQuantities{{
     {"advised", TextureExtent::load_level, TextureFlags::yes_no, "",
      "whether the level's caps pass the paraboloid's bound (a > 0.3 R on a sphere) or the strain's (0.2 f'(a) > 0.1) "
      "by the last time (surface's advisories: the answer stands for less than it seems)"},
+    {"check_regime", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
+     "each level's regime by time stepping the same cell (surface --check) at the sampled load points; not_computed "
+     "elsewhere", TextureStored::check},
+    {"check_t_star", TextureExtent::load_level, TextureFlags::none, "T_eps",
+     "each level's touch time by time stepping the same cell at the sampled load points (the middle of an interval "
+     "check_t_star_resolution wide); NaN elsewhere", TextureStored::check},
+    {"check_t_star_resolution", TextureExtent::load_level, TextureFlags::none, "T_eps",
+     "the width of the time stepping's touch-time intervals at the sampled load points; NaN elsewhere",
+     TextureStored::check},
+    {"check_area_fraction", TextureExtent::load_time, TextureFlags::none, "1",
+     "contact area over the cell's by time stepping at the sampled load points; NaN elsewhere", TextureStored::check},
     {"grid", TextureExtent::geometry, TextureFlags::none, "1", "boundary-element nodes along x of the curve"},
     {"from_tables", TextureExtent::geometry, TextureFlags::yes_no, "",
      "the curve came from the periodic model's tables (1) or the cell's boundary elements (0)"},

@@ -117,3 +117,42 @@ def test_the_seed_is_an_axis_of_a_scattered_texture(tmp_path):
     bad = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(tmp_path / "bad.nc"),
                           "--texture.seed", "1, 2.5"], capture_output=True, text=True)
     assert bad.returncode == 2 and "--seed = '1, 2.5': 2.5 is not an integer" in bad.stderr, bad.stderr
+
+
+def test_a_sample_of_load_points_is_stepped_in_time_as_surface_check(tmp_path):
+    """[reference] sample = 4: four load points of the map (drawn with the seed, the same on
+    any rank) are stepped in time on the curve's own cell, as `surface --check` steps them:
+    check_regime, check_t_star and check_area_fraction there equal its numbers, NaN and
+    not_computed elsewhere; and the curve's answer agrees with the stepping within its
+    resolution (half its interval, plus 1e-3 of t*) at every sampled point."""
+    config = tmp_path / "check.ini"
+    config.write_text("[texture]\nlattice = hexagonal\ngrid = 64\n[model]\ns = 2\n[grid]\nl = 1.2\ndh = 0.02, 0.04\n"
+                      "dh2 = 0.08\npbar = logspace(0.002, 0.05, 6)\nT = 2, 4\n[time]\ntimes = 0, 1, 5\n"
+                      "[reference]\nsample = 4\nseed = 3\n")
+    out = tmp_path / "check.nc"
+    run = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(out), "--quiet"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    import h5py
+    with h5py.File(out) as f:
+        assert int(f.attrs["check_sample"]) == 4 and int(f.attrs["check_seed"]) == 3
+        code = f["check_regime"][()]
+        sampled = np.argwhere(code[..., 0] >= 0)
+        assert len(sampled) == 4
+        assert np.all(code[code[..., 0] < 0] == -1) and np.isnan(f["check_t_star"][()][code[..., 0] < 0]).all()
+        pbars, Ts = f["pbar"][()], f["T"][()]
+        for at in map(tuple, sampled):
+            _, dh_index, _, p_index, T_index = at
+            one = punchsweep.surface(lattice="hexagonal", grid=64, s=2, l=1.2, dh=[0.02, 0.04][dh_index], dh2=0.08,
+                                     pbar=float(pbars[p_index]), T=float(Ts[T_index]), times=[0, 1, 5], check=True)
+            check = one["check"]
+            assert [punchsweep.REGIMES[int(c)] for c in code[at]] == [lv["regime"] for lv in check["levels"]]
+            t = [np.inf if lv["t_star"] is None else lv["t_star"] for lv in check["levels"]]
+            np.testing.assert_array_equal(f["check_t_star"][at], t)
+            np.testing.assert_array_equal(f["check_area_fraction"][at], check["series"]["area_fraction"])
+            # The curve against the stepping: the same regimes, t* within the stepping's resolution.
+            np.testing.assert_array_equal(f["regime"][at], code[at])
+            mine, theirs = f["t_star"][at], f["check_t_star"][at]
+            finite = np.isfinite(theirs)
+            assert np.all(np.abs(mine[finite] - theirs[finite])
+                          <= 0.5 * f["check_t_star_resolution"][at][finite] + 1e-3 * theirs[finite])

@@ -19,6 +19,9 @@ pbar = logspace(0.002, 0.05, 6)
 T = 2, 4
 [time]
 times = 0, 1, 5
+# Three load points stepped in time on the same cell (surface --check), the same on any rank.
+[reference]
+sample = 3
 INI
 same_texture_maps() {  # every variable bit-identical (NaN payloads too), the same variables
   /usr/bin/python3 - "$1" "$2" <<'PY'
@@ -32,6 +35,7 @@ with h5py.File(sys.argv[1]) as a, h5py.File(sys.argv[2]) as b:
     for f in (a, b):
         assert f["t_star"].shape == (1, 6, 1, 6, 2, 3) and f["level"].shape == (3,), f["t_star"].shape
         assert int(f.attrs["layout_version"]) == 2
+        assert (f["check_regime"][()][..., 0] >= 0).sum() == 3
 PY
 }
 # Each run its own curve cache, so that every one builds its curves.
@@ -44,11 +48,11 @@ for n in 2 3; do
 done
 # The same keys through surface-map (its spelling of the same run) and on the command line.
 PUNCHSWEEP_CACHE="$work/cache_map" run_ranks 2 surface-map --lattice hexagonal --grid 64 --s 2 --l 1.2 \
-  --dh 'linspace(0.01, 0.06, 6)' --dh2 0.08 --pbar 'logspace(0.002, 0.05, 6)' --T 2,4 --times 0,1,5 --output map.nc --quiet
+  --dh 'linspace(0.01, 0.06, 6)' --dh2 0.08 --pbar 'logspace(0.002, 0.05, 6)' --T 2,4 --times 0,1,5 --check-sample 3 --output map.nc --quiet
 same_texture_maps one.nc map.nc
 PUNCHSWEEP_CACHE="$work/cache_cli" run_ranks 0 sweep --texture.lattice hexagonal --texture.grid 64 --model.s 2 \
   --grid.l 1.2 --grid.dh 'linspace(0.01, 0.06, 6)' --grid.dh2 0.08 --grid.pbar 'logspace(0.002, 0.05, 6)' \
-  --grid.T 2,4 --time.times 0,1,5 --output cli.nc --quiet
+  --grid.T 2,4 --time.times 0,1,5 --reference.sample 3 --output cli.nc --quiet
 same_texture_maps one.nc cli.nc
 
 # kill -9 of mpirun once the journal holds its first geometry, then --resume.
@@ -93,6 +97,7 @@ refuse() {  # refuse MESSAGE ARGS...
 }
 refuse "unknown key texture.latice" --config hex.ini --texture.latice square --output bad.nc
 refuse "unknown key output.quantities" --config hex.ini --output.quantities full --output bad.nc
+refuse "--check-sample = 73: valid: 1 to the map's 72 load points (6 geometries x 12)" --config hex.ini --reference.sample 73 --output bad.nc
 refuse "--dh = '-0.01': height difference of the punch levels dh = -0.01 is outside its range" --config hex.ini --grid.dh=-0.01 --output bad.nc
 refuse "run.resume = true and run.overwrite = true" --config hex.ini --resume --overwrite --output bad.nc
 echo "PASS: texture sweeps identical for 1, 2, 3 ranks, surface-map and the command line; resumed after kill -9"
