@@ -289,6 +289,7 @@ std::size_t SurfaceMap::per_geometry(std::size_t q) const {
     case map::TextureExtent::load_level: return P * L;
     case map::TextureExtent::geometry_level: return L;
     case map::TextureExtent::load_time: return P * T;
+    case map::TextureExtent::load_time_level: return P * T * L;
     case map::TextureExtent::geometry: return 1;
   }
   return 0;
@@ -335,7 +336,9 @@ constexpr std::size_t kTStar = map::texture_quantity("t_star"), kRegime = map::t
                       kContactRadius = map::texture_quantity("contact_radius"), kAdvised = map::texture_quantity("advised"),
                       kCheckRegime = map::texture_quantity("check_regime"), kCheckTStar = map::texture_quantity("check_t_star"),
                       kCheckResolution = map::texture_quantity("check_t_star_resolution"),
-                      kCheckAreaFraction = map::texture_quantity("check_area_fraction");
+                      kCheckAreaFraction = map::texture_quantity("check_area_fraction"),
+                      kLevelTouched = map::texture_quantity("level_touched"), kLevelArea = map::texture_quantity("level_area"),
+                      kLevelLoad = map::texture_quantity("level_load");
 
 }  // namespace
 
@@ -514,6 +517,17 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       block[kValid][p * T + k] = static_cast<std::int8_t>(validity);
       block[kTouched][p * T + k] = state.sites_touched;
       block[kAreaFraction][p * T + k] = state.range == model::CurveRange::above_top ? kNaN : state.area_fraction;
+      for (std::size_t level = 0; level < L; ++level) {
+        block[kLevelTouched][(p * T + k) * L + level] = state.level_sites_touched[level];
+        block[kLevelArea][(p * T + k) * L + level] = state.level_area[level];
+      }
+    }
+    // Each level's load, by the load's history (surface's: model::surface_history).
+    const model::SurfaceHistory history = model::surface_history(run.curve, load, block.times);
+    for (std::size_t k = 0; k < T; ++k) {
+      for (std::size_t level = 0; level < L; ++level) {
+        block[kLevelLoad][(p * T + k) * L + level] = history.snapshots[k].level_load[level];
+      }
     }
     // Each level's contact radius and advisories by the last time (surface's, per level).
     if (T > 0) {
@@ -709,14 +723,12 @@ void TextureMapWriter::create(std::span<const double> block) {
     if (!map.stores(q)) continue;
     const map::TextureQuantitySpec& spec = map::kTextureQuantities[q];
     std::vector<std::string> over = geometry_dims;
-    if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::load_time) {
+    using map::TextureExtent;
+    if (spec.extent != TextureExtent::geometry && spec.extent != TextureExtent::geometry_level) {
       over.insert(over.end(), load_dims.begin(), load_dims.end());
     }
-    if (spec.extent == map::TextureExtent::load_level || spec.extent == map::TextureExtent::geometry_level) {
-      over.emplace_back("level");
-    } else if (spec.extent == map::TextureExtent::load_time) {
-      over.emplace_back("t");
-    }
+    if (spec.extent == TextureExtent::load_time || spec.extent == TextureExtent::load_time_level) over.emplace_back("t");
+    if (spec.extent != TextureExtent::geometry && spec.extent != TextureExtent::load_time) over.emplace_back("level");
     const std::string long_name = std::string(spec.long_name) + (spec.stored == map::TextureStored::tolerance ? box : "");
     // One geometry a slab (and a chunk): the map arrives, and is written, a geometry at a time.
     if (spec.flags == map::TextureFlags::none) {

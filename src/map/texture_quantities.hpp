@@ -18,6 +18,7 @@ enum class TextureExtent {
   load_level,      ///< the load's axes, then `level`
   geometry_level,  ///< `level` (a geometry's own, whatever the load)
   load_time,       ///< the load's axes, then `t`
+  load_time_level, ///< the load's axes, then `t`, then `level`
   geometry,        ///< nothing more: one value a geometry
 };
 
@@ -47,7 +48,7 @@ struct TextureQuantitySpec {
 };
 
 /// In the order the map creates its variables.
-inline constexpr std::array<TextureQuantitySpec, 19> kTextureQuantities{{
+inline constexpr std::array<TextureQuantitySpec, 22> kTextureQuantities{{
     {"t_star", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's touch time (0 at once, +inf never)"},
     {"regime", TextureExtent::load_level, TextureFlags::regime, "", "each level's regime"},
     {"t_star_low", TextureExtent::load_level, TextureFlags::none, "T_eps", "each level's least touch time", TextureStored::tolerance},
@@ -64,6 +65,11 @@ inline constexpr std::array<TextureQuantitySpec, 19> kTextureQuantities{{
     {"area_fraction", TextureExtent::load_time, TextureFlags::none, "1", "contact area over the cell's"},
     {"valid", TextureExtent::load_time, TextureFlags::surface_validity, "",
      "whether touched and area_fraction may be trusted at the time"},
+    {"level_touched", TextureExtent::load_time_level, TextureFlags::none, "1",
+     "share of each level's caps whose tip has touched"},
+    {"level_area", TextureExtent::load_time_level, TextureFlags::none, "R^2", "each level's contact area in the cell"},
+    {"level_load", TextureExtent::load_time_level, TextureFlags::none, "R^2 E0/(1-nu^2)",
+     "the load each level carries in the cell, P_L(t); NaN where its history integral would cost too much"},
     {"contact_radius", TextureExtent::load_level, TextureFlags::none, "R",
      "each level's contact radius by the last time: sqrt(area / (pi caps in contact)), 0 where none touches"},
     {"advised", TextureExtent::load_level, TextureFlags::yes_no, "",

@@ -51,6 +51,11 @@ def test_a_texture_sweep_is_surface_at_every_point_in_physical_units(tmp_path):
     np.testing.assert_allclose(ds.pbar.values, pressures, rtol=1e-12)
     np.testing.assert_allclose(ds.dh.values, [2.0, 3.0], rtol=1e-12)
     checked, advised = 0, set()
+    import h5py
+    with h5py.File(out) as f:
+        raw = {name: f[name][()] for name in ("level_touched", "level_area", "level_load")}
+    assert ds.level_area.attrs["units"] == "um^2" and ds.level_load.attrs["units"] == "N"
+    np.testing.assert_allclose(ds.level_area.values, raw["level_area"] * 60.0 ** 2, rtol=1e-12)
     for i, dh in enumerate(["2um", "3um"]):
         for j, pressure in enumerate(pressures):
             for k, temperature in enumerate([20, 40]):
@@ -70,6 +75,14 @@ def test_a_texture_sweep_is_surface_at_every_point_in_physical_units(tmp_path):
                                            rtol=1e-12)
                 assert list(at.advised.values) == [int(lv["advisories"] != "") for lv in one["levels"]]
                 advised.update(lv["advisories"] for lv in one["levels"])
+                # Each level's caps touched, area and load at each time (the file's, in R and E0*).
+                for level in range(3):
+                    np.testing.assert_allclose(raw["level_touched"][0, i, 0, j, k, :, level],
+                                               one["series"][f"touched_{level}"], rtol=1e-12)
+                    np.testing.assert_allclose(raw["level_area"][0, i, 0, j, k, :, level],
+                                               one["series"][f"area_{level}"], rtol=1e-12, atol=1e-15)
+                    np.testing.assert_allclose(raw["level_load"][0, i, 0, j, k, :, level],
+                                               one["series"][f"load_{level}"], rtol=1e-9, atol=1e-15)
                 checked += 1
     assert checked == 24 and advised >= {"", "beyond_paraboloid"}  # both cases met
 

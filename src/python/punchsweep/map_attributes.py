@@ -51,7 +51,7 @@ def scale_attributes(attrs, error=ValueError):
 def physical_scales(attrs, pressure_unit: str = "Pa", error=ValueError) -> dict:
     """One unit of each scale the map knows, in physical units, as (factor, unit): R (attribute
     R, '50 um') in its unit, E0/(1-nu^2) (E0_star_Pa) in `pressure_unit` (Pa for the module,
-    kPa for the pictures), R^2 E0/(1-nu^2) in N, and the rates of t* (dt_star_ddh, ...: T_eps
+    kPa for the pictures), R^2 in R's unit squared, R^2 E0/(1-nu^2) in N, and the rates of t* (dt_star_ddh, ...: T_eps
     per R or per E0*) in the material's time unit per R's unit and per that pressure unit.
     Times themselves already are in the material's unit. The one table the module's
     open_map and the postprocess scripts convert a map by."""
@@ -67,6 +67,7 @@ def physical_scales(attrs, pressure_unit: str = "Pa", error=ValueError) -> dict:
     if R is not None:
         number, unit = R
         scales["R"] = R
+        scales["R^2"] = (number ** 2, f"{unit}^2")
         if time != "T_eps":
             scales["T_eps/R"] = (1.0 / number, f"{time}/{unit}")
         if E0_star is not None:
