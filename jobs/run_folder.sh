@@ -15,6 +15,14 @@ check_config() {
       "nothing was written" >&2
     return 2
   fi
+  # A texture's map (a [texture] section) runs without a job script's run folder: its
+  # cell and height-map files are not copied, and the pictures are the regime map's.
+  if grep -qE '^[[:space:]]*\[texture\][[:space:]]*(#.*)?$' "$config"; then
+    echo "punchsweep: config $config maps a texture ([texture]): the job scripts run regime maps; run it" \
+      "with mpirun -np N punchsweep sweep --config $config --output MAP.nc --resume (docs/cli.md," \
+      "\"A texture's map through sweep\"); nothing was written" >&2
+    return 2
+  fi
   [ -z "$binary" ] || "$binary" sweep --config "$config" --dry-run > /dev/null || {
     echo "punchsweep: config $config was refused by the engine (above); nothing was written" >&2
     return 2

@@ -90,6 +90,11 @@ set +e; wait "$job"; code=$?; set -e
 # 4e) A config the engine refuses (an unknown key), and one that does not exist: the engine's
 #     message, a non-zero exit, and no run folder (no config.ini, no provenance.txt).
 printf '[grid]\nl = 0.75\nbogus_key = 1\n' > refused.ini
+# A texture's config: the scripts run regime maps; it is refused with the command that runs it.
+printf '[texture]   # a hexagonal mould\nlattice = hexagonal\n[grid]\nl = 1.2\ndh = 0.02\npbar = 0.01\n' > texture.ini
+set +e; bash "$root/jobs/local.sh" texture.ini "$PWD/refused-run" > refused.log 2>&1; code=$?; set -e
+[ "$code" = 2 ] && [ ! -e refused-run ] && grep -q "punchsweep sweep --config .*/texture.ini --output MAP.nc" refused.log ||
+  { echo "FAIL: jobs/local.sh with a texture's config: exit $code"; cat refused.log; exit 1; }
 for config in refused.ini missing.ini; do
   set +e; bash "$root/jobs/local.sh" "$config" "$PWD/refused-run" > refused.log 2>&1; code=$?; set -e
   [ "$code" != 0 ] || { echo "FAIL: jobs/local.sh with $config: exit 0"; cat refused.log; exit 1; }
