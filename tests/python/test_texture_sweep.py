@@ -169,3 +169,14 @@ def test_a_sample_of_load_points_is_stepped_in_time_as_surface_check(tmp_path):
             finite = np.isfinite(theirs)
             assert np.all(np.abs(mine[finite] - theirs[finite])
                           <= 0.5 * f["check_t_star_resolution"][at][finite] + 1e-3 * theirs[finite])
+
+
+def test_python_surface_map_takes_the_seed_axis_and_a_check_sample():
+    """Python's surface_map writes through the same writer: seed=[1, 2] is an axis, and
+    check_sample=2 steps two of its load points in time (the same draw as the command's)."""
+    ds = punchsweep.surface_map(l=0.75, dh=0.03, s=2, supercell=2, scatter="normal:0.005", seed=[1, 2], grid=16,
+                                pbar=[0.004, 0.01], T=4, times=[0, 1, 5], check_sample=2)
+    assert ds.t_star.dims == ("seed", "pbar", "level") and ds.level_load.dims == ("seed", "pbar", "t", "level")
+    sampled = ds.check_regime.values[..., 0] >= 0
+    assert sampled.sum() == 2
+    np.testing.assert_array_equal(ds.check_regime.values[sampled], ds.regime.values[sampled])
