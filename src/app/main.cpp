@@ -9,7 +9,7 @@
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
 #include "app/surface_command.hpp"
-#include "app/surface_map_command.hpp"
+#include "app/texture_map_run.hpp"
 #include "app/sweep_command.hpp"
 #include "app/periodic_tables.hpp"
 #include "app/tables_command.hpp"

@@ -16,7 +16,6 @@
 #include <unistd.h>
 
 #include "app/surface_command.hpp"
-#include "app/texture_map_run.hpp"
 #include "run/text_lines.hpp"
 #include "input/axis_parser.hpp"
 #include "input/scaled_value.hpp"
@@ -852,36 +851,38 @@ constexpr const char* kMapUsage =
 
 }  // namespace
 
-int run_surface_map_command(const std::vector<std::string>& args) {
-  sweep::MpiSession mpi;
-  const bool root = mpi.rank() == 0;
-  TextureMapJob job;
-  job.program = "punchsweep surface-map";
-  job.command = run::shell_command("punchsweep surface-map", args);
-  try {
-    const input::PointMaterial material = input::find_point_material(args);
-    const po::options_description opts = map_options(material);
-    const po::variables_map vm = input::parse_command(args, opts, "surface-map");
-    if (vm.count("help")) {
-      if (root) std::cout << kMapUsage << "\n\n" << opts << "\nExit codes: 0 success, 2 bad input, 3 stopped by a signal (resume it with --resume), 1 failure.\n";
-      return 0;
-    }
-    if (!vm.count("output")) throw input::UsageError("--output FILE is required: the map to write");
-    job.output = vm["output"].as<std::string>();
-    job.overwrite = vm[kOverwrite].as<bool>();
-    job.resume = vm[kResume].as<bool>();
-    job.quiet = vm[kQuiet].as<bool>();
-    if (job.overwrite && job.resume) {
-      throw input::UsageError("--resume and --overwrite: give only one (--resume finishes or checks the existing map, --overwrite replaces it)");
-    }
-    for (auto& [key, value] : keywords_of(args, opts)) {
-      if (!is_run_keyword(key)) job.keywords.emplace_back(std::move(key), std::move(value));
-    }
-  } catch (const input::UsageError& e) {
-    if (root) std::cerr << "punchsweep surface-map: " << e.what() << "\n";
-    return input::kUsageExitCode;
+SurfaceMapArgs read_surface_map_args(const std::vector<std::string>& args) {
+  SurfaceMapArgs out;
+  const input::PointMaterial material = input::find_point_material(args);
+  const po::options_description opts = map_options(material);
+  const po::variables_map vm = input::parse_command(args, opts, "surface-map");
+  if (vm.count("help")) {
+    std::ostringstream help;
+    help << kMapUsage << "\n\n" << opts
+         << "\nExit codes: 0 success, 2 bad input, 3 stopped by a signal (resume it with --resume), 1 failure.\n";
+    out.help = help.str();
+    return out;
   }
-  return run_texture_map(job, mpi.rank(), mpi.size());
+  if (!vm.count("output")) throw input::UsageError("--output FILE is required: the map to write");
+  out.output = vm["output"].as<std::string>();
+  out.overwrite = vm[kOverwrite].as<bool>();
+  out.resume = vm[kResume].as<bool>();
+  out.quiet = vm[kQuiet].as<bool>();
+  if (out.overwrite && out.resume) {
+    throw input::UsageError("--resume and --overwrite: give only one (--resume finishes or checks the existing map, --overwrite replaces it)");
+  }
+  for (auto& [key, value] : keywords_of(args, opts)) {
+    if (!is_run_keyword(key)) out.keywords.emplace_back(std::move(key), std::move(value));
+  }
+  return out;
+}
+
+std::vector<std::string> texture_map_identity(const input::Keywords& keywords) {
+  std::vector<std::string> lines;
+  for (const auto& [key, value] : keywords) lines.push_back(key + " = " + value);
+  std::sort(lines.begin(), lines.end());
+  lines.insert(lines.begin(), "layout_version = " + std::to_string(kTextureLayoutVersion));
+  return lines;
 }
 
 void check_texture_keywords(const input::Keywords& keywords, const std::vector<std::string>& origins) {

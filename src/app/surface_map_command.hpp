@@ -162,8 +162,24 @@ std::vector<std::string> texture_input_files(const input::Keywords& keywords);
 /// `origins` entry: "texture.foo"), with the ones it does.
 void check_texture_keywords(const input::Keywords& keywords, const std::vector<std::string>& origins);
 
-/// `mpirun -n N punchsweep surface-map ...`: the exit code (2 for bad input, said by rank 0).
-int run_surface_map_command(const std::vector<std::string>& args);
+/// surface-map's command line: the map's keywords and the run's switches, or --help's text.
+struct SurfaceMapArgs {
+  input::Keywords keywords;  ///< the map's (no output or run switches)
+  std::string output;
+  bool overwrite = false, resume = false, quiet = false;
+  std::string help;          ///< --help's text (nothing else is read then)
+};
+/// Throws input::UsageError for a bad option, no --output, or --resume beside --overwrite.
+SurfaceMapArgs read_surface_map_args(const std::vector<std::string>& args);
+
+/// The texture map's layout, in its `layout_version` attribute and its identity: 2 since it
+/// is written through the sweep's journal (before, surface-map's had a curve_seconds
+/// variable and no identity).
+inline constexpr int kTextureLayoutVersion = 2;
+
+/// The lines that define a map (its keywords, sorted, and the layout): the journal's
+/// header and the map's `identity` attribute, compared on --resume.
+std::vector<std::string> texture_map_identity(const input::Keywords& keywords);
 
 /// Python's surface_map: the map of `keywords` on this process alone, written to their
 /// `output`; returns that path.

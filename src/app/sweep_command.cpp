@@ -34,6 +34,7 @@
 #include "input/axis_parser.hpp"
 #include "map/tiling.hpp"
 #include "run/disk_space.hpp"
+#include "run/exit_codes.hpp"
 #include "run/map_run.hpp"
 #include "run/output_lock.hpp"
 #include "run/preflight.hpp"
@@ -220,7 +221,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
                  "finished tiles are kept in %s.\n  Resume with: %s\n",
                  signal, result.stop_rank, map_run.progress().points_done(), config.grid.points(),
                  map_run.paths().journal.c_str(), resume.c_str());
-    return kInterruptedExitCode;
+    return run::kInterruptedExitCode;
   }
   map_run.finish(ranks);
   if (!config.quiet) std::fprintf(stderr, "punchsweep sweep: map written to %s\n", config.output.c_str());

@@ -13,10 +13,10 @@
 #include <stdexcept>
 
 #include "app/surface_map_command.hpp"
-#include "app/sweep_command.hpp"
 #include "input/usage_error.hpp"
 #include "io/encoded_tile.hpp"
 #include "io/tile_journal.hpp"
+#include "run/exit_codes.hpp"
 #include "run/output_lock.hpp"
 #include "run/preflight.hpp"
 #include "run/text_lines.hpp"
@@ -30,11 +30,6 @@ namespace {
 volatile std::sig_atomic_t g_stop_signal = 0;
 
 extern "C" void on_texture_stop_signal(int signal) { g_stop_signal = signal; }
-
-/// The texture map's layout, in its `layout_version` attribute and its identity: version 2
-/// is written through the sweep's journal (version 1, surface-map's before, had a
-/// curve_seconds variable and no identity).
-constexpr int kTextureLayoutVersion = 2;
 
 // A block's values as a journal chunk, and back (native endianness, as the journal's).
 std::vector<std::byte> as_bytes(const std::vector<double>& values) {
@@ -58,14 +53,6 @@ std::string seconds_text(double s) {
 }
 
 }  // namespace
-
-std::vector<std::string> texture_map_identity(const input::Keywords& keywords) {
-  std::vector<std::string> lines;
-  for (const auto& [key, value] : keywords) lines.push_back(key + " = " + value);
-  std::sort(lines.begin(), lines.end());
-  lines.insert(lines.begin(), "layout_version = " + std::to_string(kTextureLayoutVersion));
-  return lines;
-}
 
 int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   const bool root = rank == 0;
@@ -217,7 +204,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
       say("stopped by signal " + std::to_string(signal) + " (received by rank " + std::to_string(result.stop_rank) +
           ") with " + std::to_string(done) + " of " + std::to_string(G) + " geometries done; the finished ones are kept in " +
           paths.journal + ".\n  Resume with: " + resume);
-      code = kInterruptedExitCode;
+      code = run::kInterruptedExitCode;
     } else if (root) {
       writer->finish();
       journal.reset();
@@ -236,6 +223,30 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     sweep::abort_all_ranks(1);
   }
   return ranks > 1 ? sweep::share_from_root(code) : code;
+}
+
+int run_surface_map_command(const std::vector<std::string>& args) {
+  sweep::MpiSession mpi;
+  const bool root = mpi.rank() == 0;
+  TextureMapJob job;
+  job.program = "punchsweep surface-map";
+  job.command = run::shell_command("punchsweep surface-map", args);
+  try {
+    SurfaceMapArgs read = read_surface_map_args(args);
+    if (!read.help.empty()) {
+      if (root) std::cout << read.help;
+      return 0;
+    }
+    job.keywords = std::move(read.keywords);
+    job.output = read.output;
+    job.overwrite = read.overwrite;
+    job.resume = read.resume;
+    job.quiet = read.quiet;
+  } catch (const input::UsageError& e) {
+    if (root) std::cerr << "punchsweep surface-map: " << e.what() << "\n";
+    return input::kUsageExitCode;
+  }
+  return run_texture_map(job, mpi.rank(), mpi.size());
 }
 
 }  // namespace punchsweep::app

@@ -28,13 +28,14 @@ struct TextureMapJob {
   std::string command;          ///< the command as typed: the lock's holder, the resume hint
 };
 
-/// The lines that define the map (its keywords, sorted, and the layout): the journal's
-/// header and the map's `identity` attribute, compared on --resume.
-std::vector<std::string> texture_map_identity(const input::Keywords& keywords);
-
 /// Runs `job` on every rank of MPI_COMM_WORLD (collective). Returns the exit code: 0, 2 bad
 /// input (said once, by rank 0; nothing written), 3 stopped by a signal (the journal kept),
 /// 1 a failure.
 int run_texture_map(const TextureMapJob& job, int rank, int ranks);
+
+/// `mpirun -n N punchsweep surface-map ...`: the texture map's run with surface's options
+/// (app/surface_map_command.hpp reads them). Collective; the exit code (2 for bad input,
+/// said by rank 0).
+int run_surface_map_command(const std::vector<std::string>& args);
 
 }  // namespace punchsweep::app

@@ -173,7 +173,7 @@ const char* const kTextureSweepHelp =
     "(a value of l, dh, dh2) is one load curve, dealt to the ranks as a unit of work and\n"
     "journalled when done (--resume computes only what the journal lacks); the pressures,\n"
     "the law's values and the ramp times are read off it. The map is a netCDF-4 file with a\n"
-    "level dimension (docs/maps.md, \"Texture maps\").\n"
+    "level dimension (docs/cli.md, \"A texture's map through sweep\").\n"
     "  # hexagonal.ini\n"
     "  [texture]\n"
     "  lattice = hexagonal\n"
