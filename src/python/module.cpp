@@ -621,20 +621,7 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
   std::int8_t* r_data = regime.mutable_data();
   {
     py::gil_scoped_release release;
-    model::PointValues point;
-    point.law.resize(law_values.size());
-    for (py::ssize_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < axes.size(); ++j) {
-        if (columns.values[j] != nullptr) model::set_coordinate(axes[j], columns.values[j][i], &point);
-      }
-      const std::unique_ptr<model::CreepLaw> creep = model::make_creep_law(spec, point.law);
-      const model::CreepWeightedLoad load(*creep, point.problem.pbar0, point.problem.loading);
-      const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
-      for (std::size_t level = 0; level < L; ++level) {
-        t_data[static_cast<std::size_t>(i) * L + level] = touches[level].t_star;
-        r_data[static_cast<std::size_t>(i) * L + level] = static_cast<std::int8_t>(touches[level].regime);
-      }
-    }
+    model::level_touches_at(run.curve, spec, axes, columns.values, columns.n, t_data, r_data);
   }
   py::list X_star, resolved;
   for (const model::LevelTouch& touch : model::level_touches(run.curve, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0))) {

@@ -112,4 +112,23 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
   return out;
 }
 
+void level_touches_at(const LoadCurve& curve, const CreepLawSpec& spec, const PointAxes& axes,
+                      std::span<const double* const> columns, std::size_t n, double* t_star, std::int8_t* regime) {
+  const std::size_t L = static_cast<std::size_t>(curve.levels());
+  PointValues point;
+  point.law.resize(axes.law().size());
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t j = 0; j < axes.size(); ++j) {
+      if (columns[j] != nullptr) set_coordinate(axes[j], columns[j][k], &point);
+    }
+    const std::unique_ptr<CreepLaw> creep = make_creep_law(spec, point.law);
+    const CreepWeightedLoad load(*creep, point.problem.pbar0, point.problem.loading);
+    const std::vector<LevelTouch> touches = level_touches(curve, load);
+    for (std::size_t level = 0; level < L; ++level) {
+      t_star[k * L + level] = touches[level].t_star;
+      regime[k * L + level] = static_cast<std::int8_t>(touches[level].regime);
+    }
+  }
+}
+
 }  // namespace punchsweep::model
