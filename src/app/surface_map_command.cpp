@@ -296,14 +296,12 @@ std::size_t SurfaceMap::per_geometry(std::size_t q) const {
 
 namespace {
 
-/// Each stored quantity's block of geometry g, as (array, first, count), in
-/// map::kTextureQuantities' order: the order they travel (between ranks, into the journal).
-template <class Map, class Visit>
-void for_each_block(Map& map, std::size_t g, Visit&& visit) {
+/// Each stored quantity and its values a geometry, in map::kTextureQuantities' order: the
+/// order a geometry's values travel (between ranks, into the journal) and are written.
+template <class Visit>
+void for_each_stored(const SurfaceMap& map, Visit&& visit) {
   for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
-    if (!map.stores(q)) continue;
-    const std::size_t n = map.per_geometry(q);
-    visit(map[q], g * n, n);
+    if (map.stores(q)) visit(q, map.per_geometry(q));
   }
 }
 
@@ -314,14 +312,11 @@ enum Head : std::size_t { kLevels, kCaps, kE0, kSeconds, kSource, kTimes, kHead 
 /// Sizes every stored array of `map` for its geometries: NaN, flags not computed.
 void size_arrays(SurfaceMap& map) {
   const std::size_t G = map.geometries();
-  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+  for (SurfaceMap::Values& values : map.values) values.clear();
+  for_each_stored(map, [&](std::size_t q, std::size_t n) {
     const bool flag = map::kTextureQuantities[q].flags != map::TextureFlags::none;
-    if (map.stores(q)) {
-      map[q].assign(G * map.per_geometry(q), flag ? static_cast<double>(kNotComputed) : kNaN);
-    } else {
-      map[q].clear();
-    }
-  }
+    map[q].assign(G * n, flag ? static_cast<double>(kNotComputed) : kNaN);
+  });
 }
 
 // The quantities a geometry computes, by name (a name not declared fails to compile).
@@ -576,9 +571,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   values[kSource] = run.curve_source == CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
   values[kTimes] = static_cast<double>(T);
   values.insert(values.end(), block.times.begin(), block.times.end());
-  for_each_block(block, 0, [&values](const std::vector<double>& v, std::size_t from, std::size_t n) {
-    values.insert(values.end(), v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(from + n));
-  });
+  for_each_stored(block, [&](std::size_t q, std::size_t) { values.insert(values.end(), block[q].begin(), block[q].end()); });
   return values;
 }
 
@@ -766,18 +759,16 @@ void TextureMapWriter::write(std::size_t g, std::span<const double> block) {
     throw refuse("has other snapshot times than the map's");
   }
   std::size_t expected = kHead + T;
-  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) expected += map.stores(q) ? map.per_geometry(q) : 0;
+  for_each_stored(map, [&expected](std::size_t, std::size_t n) { expected += n; });
   if (block.size() != expected) {
     throw refuse("holds " + std::to_string(block.size()) + " values where the map's geometry has " + std::to_string(expected));
   }
   const std::vector<std::size_t> at = digits_of(g, sizes_of(map.geometry));
   std::size_t k = kHead + T;
-  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
-    if (!map.stores(q)) continue;
-    const std::size_t n = map.per_geometry(q);
+  for_each_stored(map, [&](std::size_t q, std::size_t n) {
     file_->netcdf.write_slab(std::string(map::kTextureQuantities[q].name), at, block.subspan(k, n));
     k += n;
-  }
+  });
   written_[g] = true;
 }
 

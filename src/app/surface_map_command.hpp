@@ -45,7 +45,8 @@ struct SurfaceMap {
   /// Each quantity of map::kTextureQuantities, row-major over the geometry's axes, then its
   /// extent's (the load's, then level or time); flags as their codes; empty where not
   /// stored. t* in time_unit (+inf never), X* in E0*.
-  std::array<std::vector<double>, map::kTextureQuantityCount> values;
+  using Values = std::vector<double>;
+  std::array<Values, map::kTextureQuantityCount> values;
   std::vector<double>& operator[](std::size_t q) { return values[q]; }
   const std::vector<double>& operator[](std::size_t q) const { return values[q]; }
   /// Whether quantity q is stored (a tolerance's only with one).

@@ -74,6 +74,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   // learns the verdict.
   const run::OutputPaths paths(job.output);
   const std::vector<std::string> identity = texture_map_identity(job.keywords);
+  const std::string identity_text = run::join(identity, "\n");  // the journal's header, the map's attribute
   std::optional<run::OutputLock> lock;
   run::Start start = run::Start::fresh;
   std::string refusal;
@@ -102,7 +103,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
 
   // Rank 0: the map's writer, and its journal (replayed into the map on resume).
   SurfaceMap header = plan->header();
-  header.identity = run::join(identity, "\n");
+  header.identity = identity_text;
   header.layout_version = kTextureLayoutVersion;
   std::optional<TextureMapWriter> writer;
   std::optional<io::TileJournal> journal;
@@ -126,7 +127,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
         });
         journal.emplace(io::TileJournal::open_for_append(paths.journal, good));
       } else {
-        journal.emplace(io::TileJournal::create(paths.journal, run::join(identity, "\n")));
+        journal.emplace(io::TileJournal::create(paths.journal, identity_text));
       }
       for (std::size_t g = 0; g < G; ++g) {
         if (done[g]) {
@@ -135,9 +136,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
           pending.add(g);
         }
       }
-    } catch (const input::UsageError& e) {
-      refusal = e.what();
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // input::UsageError included
       refusal = e.what();
     }
   }

@@ -40,25 +40,36 @@ hid_t NetcdfFile::scale(const std::string& dim, const std::string& where) const 
   return found->second;
 }
 
-Handle NetcdfFile::create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type,
-                          std::size_t count) {
-  const std::string where = "'" + name + "' in " + path_;
+std::vector<hsize_t> NetcdfFile::shape_of(const std::vector<std::string>& dims, const std::string& where) const {
   std::vector<hsize_t> shape;
   for (const std::string& dim : dims) {
     shape.push_back(static_cast<hsize_t>(
         H5Sget_simple_extent_npoints(Handle(H5Dget_space(scale(dim, where)), H5Sclose, "space of " + dim))));
   }
+  return shape;
+}
+
+Handle NetcdfFile::creation_properties(const std::vector<hsize_t>& chunk, const std::string& where) {
+  Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
+  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order of " + where);
+  if (!chunk.empty()) {
+    check(H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data()), "set chunk shape of " + where);
+    check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
+    check(H5Pset_deflate(dcpl, 4), "set deflate filter of " + where);
+  }
+  return dcpl;
+}
+
+Handle NetcdfFile::create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type,
+                          std::size_t count) {
+  const std::string where = "'" + name + "' in " + path_;
+  const std::vector<hsize_t> shape = shape_of(dims, where);
   std::size_t expected = 1;
   for (const hsize_t n : shape) expected *= static_cast<std::size_t>(n);
   if (expected != count) throw std::invalid_argument("NetcdfFile: " + where + " has " + std::to_string(count) + " values for " + std::to_string(expected));
   const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, "make dataspace of " + where);
-  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
-  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order of " + where);
-  if (!shape.empty() && count > 0) {
-    check(H5Pset_chunk(dcpl, static_cast<int>(shape.size()), shape.data()), "set chunk shape of " + where);
-    check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
-    check(H5Pset_deflate(dcpl, 4), "set deflate filter of " + where);
-  }
+  // One chunk, the whole variable.
+  const Handle dcpl = creation_properties(count > 0 ? shape : std::vector<hsize_t>{}, where);
   return Handle(H5Dcreate2(file_, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose, "create " + where);
 }
 
@@ -92,36 +103,15 @@ void NetcdfFile::variable(const std::string& name, const std::vector<std::string
   finish(dataset, name, dims, attributes);
 }
 
-void NetcdfFile::variable(const std::string& name, const std::vector<std::string>& dims,
-                          const std::vector<std::int8_t>& values, const Attributes& attributes,
-                          const std::vector<std::int8_t>& flag_values) {
-  const Handle dataset = create(name, dims, H5T_STD_I8LE, values.size());
-  check(H5Dwrite(dataset, H5T_NATIVE_INT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write '" + name + "' in " + path_);
-  finish(dataset, name, dims, attributes);
-  if (!flag_values.empty()) {
-    write_attribute(dataset, "flag_values", H5T_STD_I8LE, H5T_NATIVE_INT8, flag_values.data(), flag_values.size(),
-                    "on '" + name + "' in " + path_);
-  }
-}
-
 void NetcdfFile::declare(const std::string& name, const std::vector<std::string>& dims, std::size_t slab_dims,
                          bool int8, double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values) {
   const std::string where = "'" + name + "' in " + path_;
   if (slab_dims > dims.size()) throw std::invalid_argument("NetcdfFile: " + where + " has fewer dimensions than its slabs'");
-  std::vector<hsize_t> shape, chunk;
-  for (std::size_t d = 0; d < dims.size(); ++d) {
-    shape.push_back(static_cast<hsize_t>(
-        H5Sget_simple_extent_npoints(Handle(H5Dget_space(scale(dims[d], where)), H5Sclose, "space of " + dims[d]))));
-    chunk.push_back(d < slab_dims ? 1 : shape.back());
-  }
+  const std::vector<hsize_t> shape = shape_of(dims, where);
+  std::vector<hsize_t> chunk = shape;  // a slab: 1 along its first slab_dims dimensions
+  std::fill(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(slab_dims), hsize_t{1});
   const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, "make dataspace of " + where);
-  const Handle dcpl = make_property_list(H5P_DATASET_CREATE, "make creation properties of " + where);
-  check(H5Pset_attr_creation_order(dcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED), "set attribute order of " + where);
-  if (!shape.empty()) {
-    check(H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data()), "set chunk shape of " + where);
-    check(H5Pset_shuffle(dcpl), "set shuffle filter of " + where);
-    check(H5Pset_deflate(dcpl, 4), "set deflate filter of " + where);
-  }
+  const Handle dcpl = creation_properties(chunk, where);
   const std::int8_t code = static_cast<std::int8_t>(fill);
   check(int8 ? H5Pset_fill_value(dcpl, H5T_NATIVE_INT8, &code) : H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &fill),
         "set fill value of " + where);

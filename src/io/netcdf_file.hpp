@@ -34,9 +34,6 @@ class NetcdfFile {
   /// A variable over `dims` (coordinates made before), row-major, compressed.
   void variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<double>& values,
                 const Attributes& attributes);
-  /// The same for int8 codes, with flag_values (an int8 array) where given.
-  void variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<std::int8_t>& values,
-                const Attributes& attributes, const std::vector<std::int8_t>& flag_values = {});
   /// A variable over `dims` written later in slabs (write_slab): a slab fixes its first
   /// `slab_dims` indices and spans the rest, and is one chunk (shuffled, deflated), so that
   /// a map arriving a slab at a time is never held whole. float64, or int8 codes with
@@ -53,6 +50,11 @@ class NetcdfFile {
  private:
   /// The coordinate (dimension scale) called `dim`; std::invalid_argument naming `where` if none.
   hid_t scale(const std::string& dim, const std::string& where) const;
+  /// The dimensions' lengths (coordinates made before).
+  std::vector<hsize_t> shape_of(const std::vector<std::string>& dims, const std::string& where) const;
+  /// Creation order of attributes tracked; chunked as `chunk` with shuffle and deflate
+  /// (none for an empty chunk).
+  static Handle creation_properties(const std::vector<hsize_t>& chunk, const std::string& where);
   Handle create(const std::string& name, const std::vector<std::string>& dims, hid_t file_type, std::size_t count);
   void finish(hid_t dataset, const std::string& name, const std::vector<std::string>& dims, const Attributes& attributes);
 
