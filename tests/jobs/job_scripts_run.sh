@@ -12,6 +12,13 @@ mkdir -p stubs
 cat > stubs/srun <<'STUB'
 #!/bin/bash
 [ "$1" != --mpi=list ] || { printf 'MPI plugin types are...\n\tnone\n\tpmix\n'; exit 0; }
+# A step that never launches, once where the file SRUN_FAILS_ONCE names exists: srun's
+# status 0, as a real srun gives it.
+if [ -n "${SRUN_FAILS_ONCE:-}" ] && [ -e "$SRUN_FAILS_ONCE" ]; then
+  rm -f "$SRUN_FAILS_ONCE"
+  echo "srun: error: task 0 launch failed: Unspecified error" >&2
+  exit 0
+fi
 args=(); for a in "$@"; do case "$a" in --cpu-bind=* | --mpi=* | --ntasks=*) ;; *) args+=("$a") ;; esac; done
 echo "srun $*" >> "$STUB_LOG"
 exec mpirun --oversubscribe -np "$SLURM_NTASKS" "${args[@]}"
@@ -31,6 +38,15 @@ grep -q "srun --mpi=pmix --ntasks=2 --cpu-bind=cores" stub.log
 grep -q "log $PWD/slurm-dry/job.log" slurm-dry.log
 test -f slurm-dry/config.ini
 
+# 1b) A step that never launched (srun's status 0, no map): the script launches it again
+#     and the map is made; a launch that never runs is a failure (status 1), not a map.
+touch srun-fails
+SLURM_JOB_ID=4243 SLURM_NTASKS=2 SLURM_SUBMIT_DIR="$root" PUNCHSWEEP_RUN="$PWD/relaunch" SRUN_FAILS_ONCE="$PWD/srun-fails" \
+  bash "$root/jobs/slurm.sbatch" "$small" > relaunch.log 2>&1 || { echo "FAIL: the relaunch"; cat relaunch/job.log; exit 1; }
+grep -q "launch 1 ended with status 0 and no map: launching again in 10 s" relaunch/job.log &&
+  grep -q "launch 1 ran no sweep" relaunch/provenance.txt && grep -q "status 0" relaunch/provenance.txt &&
+  test -f relaunch/map.h5 || { echo "FAIL: the relaunch"; cat relaunch/job.log relaunch/provenance.txt; exit 1; }
+
 # 2) PBS, dry run with a node file of two slots.
 printf 'localhost\nlocalhost\n' > nodes
 PBS_JOBID=77.server PBS_O_WORKDIR="$root" PBS_NODEFILE="$PWD/nodes" CONFIG="$small" PUNCHSWEEP_RUN="$PWD/pbs-dry" \
@@ -40,6 +56,7 @@ grep -q "points: 2 in" pbs-dry/job.log && grep -q "ranks 2" pbs-dry/provenance.t
 # 3) Outside Slurm, a real small map with mpirun.
 PUNCHSWEEP_RUN="$PWD/local" bash "$root/jobs/slurm.sbatch" "$small" > local.log 2>&1
 test -f local/map.h5 && grep -q "status 0" local/provenance.txt && test -s local/explore.html && test -s local/summary.txt
+same_maps local/map.h5 relaunch/map.h5  # the relaunched map of 1b) is the same map
 
 # 4) The local main job: map, pictures, summary and provenance in the run folder.
 printf '[grid]\nl = 0.5, 0.75, 1\ndh = linspace(0.02, 0.12, 6)\nT = 2, 5\npbar = logspace(0.005, 0.08, 5)\ns = 1, 2\n' > local.ini

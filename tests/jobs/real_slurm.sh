@@ -44,6 +44,7 @@ cleanup() {
     squeue 2>&1 || true
     scontrol show job 2>&1 | grep -E "JobId=|JobState|Restarts|RunTime|EligibleTime" || true
     tail -15 "$work/slurm/slurmctld.log" 2>&1 || true
+    tail -15 "$work/slurm/slurmd.log" 2>&1 || true
     tail -n 5 "$work"/*/job.log "$work"/*/provenance.txt 2>&1 || true
   fi
   stop_daemons
@@ -52,7 +53,7 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
-mkdir -p slurm/state slurm/spool submit
+mkdir -p slurm/state slurm/spool slurm/tmp submit
 head -c 1024 /dev/urandom > slurm/munge.key
 chmod 600 slurm/munge.key
 munged -F -f --socket="$work/slurm/munge.sock" --key-file="$work/slurm/munge.key" --pid-file="$work/slurm/munged.pid" \
@@ -72,6 +73,7 @@ SlurmUser=root
 SlurmdUser=root
 StateSaveLocation=$work/slurm/state
 SlurmdSpoolDir=$work/slurm/spool
+TmpFS=$work/slurm/tmp
 SlurmctldPidFile=$work/slurm/slurmctld.pid
 SlurmdPidFile=$work/slurm/slurmd.pid
 SlurmctldLogFile=$work/slurm/slurmctld.log
@@ -119,6 +121,17 @@ release() {
   wait_until 3 "" "the second after job $1's last run left" -- after_second "$gone"
   scontrol update JobId="$1" StartTime=now
 }
+# Before the next submission: the node idle and every step of the jobs before gone from it,
+# then the next second. (PMIx's folders of a step go under TmpFS, this Slurm's own: under
+# /tmp a cancelled run's spmix_appdir_0_2.0 made the next test Slurm's job 2 fail to launch.)
+no_steps() { ! pgrep -f "slurmstepd:" > /dev/null; }
+node_free() {
+  wait_until 60 "" "the node to be idle" -- node_idle
+  wait_until 60 "" "the last job's steps to leave the node" -- no_steps
+  local gone
+  gone=$(date +%s)
+  wait_until 3 "" "the second after the last job's steps left" -- after_second "$gone"
+}
 progress() { grep -q "points/s, ETA" "$1/job.log" 2> /dev/null; }
 show() { echo "--- job $1:"; scontrol show job "$1" | head -8; cat "$2/job.log" "$2/provenance.txt" 2> /dev/null; }
 
@@ -145,6 +158,7 @@ grep -q "completed: yes" "$run/summary.txt"
 same_maps "$work/clean-small.h5" "$run/map.h5"
 cd "$work"
 
+node_free
 # 2) scancel while it runs: cancelled, not requeued, the tiles kept.
 job=$(PUNCHSWEEP_RUN=$work/cancel sbatch --parsable --ntasks=2 "$root/jobs/slurm.sbatch" "$long")
 wait_until 120 "" "job $job's first progress" -- progress cancel
@@ -165,6 +179,7 @@ same_maps clean-long.h5 cancel/map.h5
 
 # 4) A real time limit: one minute, the warning 58 s before it (Slurm sends it within about
 #    30 s). The job stops, requeues itself, and the requeued job completes the map.
+node_free
 longer=$work/submit/longer.ini
 printf '[grid]\nl = linspace(0.5, 1.25, 900)\nT = 2, 5, 10\n[run]\nchunk = 1000\n' > "$longer"
 job=$(PUNCHSWEEP_RUN=$work/limit sbatch --parsable --ntasks=2 --time=1 --signal=B:USR1@58 "$root/jobs/slurm.sbatch" "$longer")
@@ -178,6 +193,7 @@ is_state "$job" COMPLETED || { show "$job" limit; echo "FAIL: the job after its 
 run_ranks 2 sweep --config "$longer" --quiet --output clean-longer.h5
 same_maps clean-longer.h5 limit/map.h5
 
+node_free
 # 5) kill -9 of a rank: the job fails and keeps its tiles; scontrol requeue resumes it.
 job=$(PUNCHSWEEP_RUN=$work/killed sbatch --parsable --ntasks=2 "$root/jobs/slurm.sbatch" "$long")
 wait_until 120 "" "job $job's first progress" -- progress killed
@@ -192,6 +208,7 @@ wait_until 120 "" "job $job to end" -- ended "$job"
 is_state "$job" COMPLETED || { show "$job" killed; echo "FAIL: the job requeued after kill -9 is $(state "$job")"; exit 1; }
 same_maps clean-long.h5 killed/map.h5
 
+node_free
 # 6) PBS through Slurm's Torque wrappers: qsub turns -l and -v into sbatch options.
 cd submit
 job=$(qsub -V -l select=1:ncpus=2:mpiprocs=2 -v "CONFIG=small.ini,PUNCHSWEEP_RUN=$work/pbs,PUNCHSWEEP_ROOT=$root" \
