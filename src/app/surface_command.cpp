@@ -709,6 +709,22 @@ SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoint
   return run;
 }
 
+void check_surface(const input::Keywords& keywords) {
+  const input::PointMaterial material = input::find_point_material(keywords);
+  SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
+  // The tables need no cell; where they may not reach the lattice's dh (auto), the cell's
+  // refusals come when it is built.
+  if (run.curve_source != CurveSource::cell) return;
+  if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
+  if (run.grid_nodes == 0 && !run.measured) {
+    const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+    run.grid_nodes = auto_grid(run, load);
+  }
+  if (const std::string problem = budget_problem(run, curve_grid(run, run.grid_nodes)); !problem.empty()) {
+    throw input::UsageError(problem);
+  }
+}
+
 std::string surface_json(const input::Keywords& keywords) {
   std::ostringstream out;
   write_surface(out, OutputFormat::json, evaluate_surface(keywords));

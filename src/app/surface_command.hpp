@@ -42,6 +42,11 @@ using MoreLoadPoints = std::function<std::vector<std::vector<model::LevelTouch>>
 /// beside the run's own.
 SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
 
+/// Reads `keywords` as evaluate_surface does and throws input::UsageError for what it would
+/// refuse before building anything: a bad or missing option, a cell whose scales the
+/// boundary elements cannot take, a grid beyond the engine's budget. No curve is built.
+void check_surface(const input::Keywords& keywords);
+
 /// The same, as the command's JSON text (what `--format json` prints): Python's surface().
 std::string surface_json(const input::Keywords& keywords);
 

@@ -377,6 +377,16 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
                             " (a geometry's values travel whole between ranks and into the journal): split the load's axes over "
                             "several maps");
   }
+  // Every geometry's texture read as `surface` reads it, before any curve is built: a
+  // missing or bad option, a scale or a grid beyond the engine is refused here (exit 2,
+  // nothing written), not by the rank that meets it in the middle of the run.
+  for (std::size_t g = 0; g < G; ++g) {
+    try {
+      check_surface(keywords_of(g));
+    } catch (const input::UsageError& e) {
+      throw input::UsageError("geometry " + std::to_string(g + 1) + " (" + describe(g) + "): " + e.what());
+    }
+  }
 }
 
 TextureMapPlan::~TextureMapPlan() = default;
@@ -396,17 +406,14 @@ std::string TextureMapPlan::describe(std::size_t g) const {
   return line.str();
 }
 
-std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
+input::Keywords TextureMapPlan::keywords_of(std::size_t g) const {
   const MapInputs& in = *in_;
   const SurfaceMap& map = header_;
-  const std::vector<std::size_t> geometry_sizes = sizes_of(map.geometry), load_sizes = sizes_of(map.load);
-  const std::size_t P = map.load_points();
   const double least_pbar = *std::min_element(in.load[0].values.begin(), in.load[0].values.end());
-
   // The geometry's keywords: the texture's, its lengths, and the least pressure (the grid
   // --grid auto picks is the one the smallest spot asks) at the law's first values.
   input::Keywords keywords = in.texture;
-  const std::vector<std::size_t> at = digits_of(g, geometry_sizes);
+  const std::vector<std::size_t> at = digits_of(g, sizes_of(map.geometry));
   for (std::size_t d = 0; d < map.geometry.size(); ++d) {
     const double v = map.geometry[d].values[at[d]];
     if (map.geometry[d].name == model::kScatterWidth) {
@@ -421,6 +428,15 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       keywords.emplace_back(in.load[a].name, text_of(in.load[a].values.front()));
     }
   }
+  return keywords;
+}
+
+std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
+  const MapInputs& in = *in_;
+  const SurfaceMap& map = header_;
+  const std::vector<std::size_t> load_sizes = sizes_of(map.load);
+  const std::size_t P = map.load_points();
+  const input::Keywords keywords = keywords_of(g);
 
   // Load point p of the run: its point with the load axes' values put in, its law and load.
   struct LoadPoint {

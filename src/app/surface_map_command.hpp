@@ -106,6 +106,9 @@ class TextureMapPlan {
   std::vector<double> evaluate(std::size_t g) const;
 
  private:
+  /// Geometry g's texture as `surface`'s keywords (at the least pressure, the law's first
+  /// values).
+  input::Keywords keywords_of(std::size_t g) const;
   struct Inputs;
   std::unique_ptr<const Inputs> in_;
   SurfaceMap header_;

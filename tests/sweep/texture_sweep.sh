@@ -2,7 +2,8 @@
 # punchsweep sweep of a texture ([texture] in the config): a hexagonal three-level map is
 # bit-identical on 1, 2 and 3 ranks, the same map as surface-map's, resumes after kill -9
 # of mpirun to the map of an uninterrupted run without building the journalled geometries
-# again, and refuses bad keys and an interrupted map without --resume once (rank 0), exit 2.
+# again, and refuses bad keys, a geometry `surface` would refuse and an interrupted map
+# without --resume once (rank 0), exit 2, before any curve.
 source "$(dirname "$0")/common.sh"
 cat > hex.ini <<'INI'
 # A hexagonal mould of three levels, in the model's units, on 64 nodes a pitch.
@@ -100,4 +101,10 @@ refuse "unknown key output.quantities" --config hex.ini --output.quantities full
 refuse "--check-sample = 73: valid: 1 to the map's 72 load points (6 geometries x 12)" --config hex.ini --reference.sample 73 --output bad.nc
 refuse "--dh = '-0.01': height difference of the punch levels dh = -0.01 is outside its range" --config hex.ini --grid.dh=-0.01 --output bad.nc
 refuse "run.resume = true and run.overwrite = true" --config hex.ini --resume --overwrite --output bad.nc
+# What `surface` would refuse of a geometry is refused before any curve, not by the rank
+# that meets it (before, mpirun aborted and left a journal behind).
+sed '/^s = 2$/d' hex.ini > no-s.ini
+refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): missing required option --s" --config no-s.ini --output bad.nc
+refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): the curve's grid, 16384 x 28416 nodes" \
+  --config hex.ini --texture.supercell 16 --texture.grid 1024 --output bad.nc
 echo "PASS: texture sweeps identical for 1, 2, 3 ranks, surface-map and the command line; resumed after kill -9"
