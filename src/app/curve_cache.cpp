@@ -1,7 +1,9 @@
 #include "app/curve_cache.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -48,6 +50,46 @@ std::vector<double> digest_numbers(const io::Digest& d) {
   return out;
 }
 
+/// Where the curve of `key` is saved in the cache (the file's name from the key's digest),
+/// and the digest the file must start with.
+struct CacheEntry {
+  std::filesystem::path file;
+  std::string name;
+  std::vector<double> digest;
+};
+CacheEntry cache_entry(const std::filesystem::path& folder, const std::string& key) {
+  io::Sha256 hash;
+  hash.update(key.data(), key.size());
+  CacheEntry entry;
+  entry.digest = digest_numbers(hash.digest());
+  char name[64];
+  std::snprintf(name, sizeof name, "load-curve-%08llx%08llx%08llx%08llx.tables", static_cast<unsigned long long>(entry.digest[0]),
+                static_cast<unsigned long long>(entry.digest[1]), static_cast<unsigned long long>(entry.digest[2]),
+                static_cast<unsigned long long>(entry.digest[3]));
+  entry.name = name;
+  entry.file = folder / name;
+  return entry;
+}
+
+/// The curve saved in `entry`'s file, where one of the same key is there: the file's first
+/// numbers are the key's digest (a file of another key under this name is not believed).
+std::optional<model::LoadCurve> saved_curve(const CacheEntry& entry) {
+  const std::vector<double> numbers = read_tables(entry.file);
+  if (numbers.size() > entry.digest.size() && std::equal(entry.digest.begin(), entry.digest.end(), numbers.begin())) {
+    return model::LoadCurve::from_tables(std::vector<double>(numbers.begin() + static_cast<std::ptrdiff_t>(entry.digest.size()), numbers.end()));
+  }
+  return std::nullopt;
+}
+
+/// The cache's folder where it may be used, else none.
+std::optional<std::filesystem::path> usable_cache() {
+  const TableCacheFolder cache = table_cache_folder();
+  if (!cache.folder || !cache.not_used.empty() || !untrusted_folder(*cache.folder).empty() || !make_private_folder(*cache.folder)) {
+    return std::nullopt;
+  }
+  return *cache.folder;
+}
+
 }  // namespace
 
 model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::Cell& cell,
@@ -55,37 +97,26 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
   CurveOrigin ignored;
   if (origin == nullptr) origin = &ignored;
   *origin = CurveOrigin::built;
-  const TableCacheFolder cache = table_cache_folder();
-  if (!cache.folder || !cache.not_used.empty() || !untrusted_folder(*cache.folder).empty() ||
-      !make_private_folder(*cache.folder)) {
-    return reference::build_load_curve(geometry, cell, options);
-  }
-  const std::string key = curve_key(geometry, cell, options);
-  io::Sha256 hash;
-  hash.update(key.data(), key.size());
-  const std::vector<double> digest = digest_numbers(hash.digest());
-  char name[64];
-  std::snprintf(name, sizeof name, "load-curve-%08llx%08llx%08llx%08llx.tables", static_cast<unsigned long long>(digest[0]),
-                static_cast<unsigned long long>(digest[1]), static_cast<unsigned long long>(digest[2]),
-                static_cast<unsigned long long>(digest[3]));
-  const std::filesystem::path file = *cache.folder / name;
-  const FileLock lock(*cache.folder / (std::string(name) + ".lock"));
-  // Under the lock a builder before us has saved its curve by now. The file's first numbers
-  // are the key's digest: a file of another key under this name is not believed.
-  const std::vector<double> numbers = read_tables(file);
-  if (numbers.size() > digest.size() && std::equal(digest.begin(), digest.end(), numbers.begin())) {
-    if (std::optional<model::LoadCurve> curve =
-            model::LoadCurve::from_tables(std::vector<double>(numbers.begin() + static_cast<std::ptrdiff_t>(digest.size()), numbers.end()))) {
-      *origin = CurveOrigin::cache;
-      return std::move(*curve);
-    }
+  const std::optional<std::filesystem::path> folder = usable_cache();
+  if (!folder) return reference::build_load_curve(geometry, cell, options);
+  const CacheEntry entry = cache_entry(*folder, curve_key(geometry, cell, options));
+  const FileLock lock(*folder / (entry.name + ".lock"));
+  // Under the lock a builder before us has saved its curve by now.
+  if (std::optional<model::LoadCurve> curve = saved_curve(entry)) {
+    *origin = CurveOrigin::cache;
+    return std::move(*curve);
   }
   model::LoadCurve curve = reference::build_load_curve(geometry, cell, options);
-  std::vector<double> saved = digest;
+  std::vector<double> saved = entry.digest;
   const std::vector<double> tables = curve.tables();
   saved.insert(saved.end(), tables.begin(), tables.end());
-  write_tables(file, saved);
+  write_tables(entry.file, saved);
   return curve;
+}
+
+bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell& cell, const reference::LoadCurveOptions& options) {
+  const std::optional<std::filesystem::path> folder = usable_cache();
+  return folder && saved_curve(cache_entry(*folder, curve_key(geometry, cell, options))).has_value();
 }
 
 }  // namespace punchsweep::app

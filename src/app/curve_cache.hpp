@@ -21,4 +21,8 @@ enum class CurveOrigin { cache, built };
 model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::Cell& cell,
                                 const reference::LoadCurveOptions& options, CurveOrigin* origin = nullptr);
 
+/// Whether load_curve_for would read this curve from the cache (a dry run's question; it
+/// builds nothing and takes no lock).
+bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell& cell, const reference::LoadCurveOptions& options);
+
 }  // namespace punchsweep::app

@@ -10,6 +10,7 @@
 #include <limits>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 #include "app/curve_cache.hpp"
 #include "app/surface_output.hpp"
@@ -61,6 +62,13 @@ constexpr double kBytesPerNode = 260.0;
 /// From this many nodes a curve's setup is said on stderr, with its memory.
 constexpr double kLargeGrid = 1048576.0;
 constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
+/// estimated_curve_seconds' power law: seconds = scale x nodes^node_power x caps^cap_power,
+/// times `mirrored` on a grid solved as its quarter. Fitted to 16 curves built on one core
+/// here (square, hexagonal, three levels, 2x2 and 4x4 scattered supercells; 1024 to 113664
+/// nodes, 2 to 32 caps; 0.05 to 30 s): each within a factor 1.91 of its estimate
+/// (docs/performance.md, "A curve's cost").
+constexpr double kCurveSecondsScale = 1.68e-5, kCurveSecondsNodePower = 1.29, kCurveSecondsCapPower = 0.15,
+                 kCurveSecondsMirrored = 0.31;
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
 
@@ -683,19 +691,90 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = 
   }
 }
 
+/// use(run) on the texture of `keywords`, read by the command's own options and checks,
+/// while the material it reads (which the run's law points into) lives.
+template <class Use>
+auto with_keywords(const input::Keywords& keywords, Use&& use) {
+  const input::PointMaterial material = input::find_point_material(keywords);
+  SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
+  return use(run);
+}
+
+/// The grids (nodes a pitch) the cell's curve is built on, refused as boundary_element_cell
+/// refuses (the scales, the budget) before anything is allocated: the one given (0 for a
+/// measured map's pixels), or --grid auto's pick and its half (at least).
+std::vector<int> cell_grids(const SurfaceRun& run) {
+  if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
+  std::vector<int> grids{run.grid_nodes};
+  if (run.grid_nodes == 0 && !run.measured) {
+    const int n = auto_grid(run, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading));
+    grids = {n / 2, n};
+  }
+  for (const int nodes : grids) {
+    if (const std::string problem = budget_problem(run, curve_grid(run, nodes)); !problem.empty()) throw input::UsageError(problem);
+  }
+  return grids;
+}
+
+/// What `run`'s curve asks (curve_cost's answer).
+CurveCost cost_of(SurfaceRun& run) {
+  CurveCost cost;
+  cost.caps = run.geometry.sites.size();
+  cost.levels = run.geometry.levels();
+  if (run.curve_source != CurveSource::cell &&
+      model::periodic_load_curve(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem)) {
+    cost.source = "periodic tables";
+    return cost;
+  }
+  cost.source = "cell";
+  const std::vector<int> grids = cell_grids(run);
+  cost.auto_grid = run.grid_nodes == 0 && !run.measured;
+  const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+  const model::CellGeometry given = run.geometry;
+  for (const int nodes : grids) {
+    run.geometry = given;
+    run.grid_nodes = nodes;
+    const reference::Cell cell = boundary_element_cell(run, load, false);
+    CurveCost::Grid g;
+    g.nodes_per_pitch = nodes;
+    g.nx = cell.grid.nx;
+    g.ny = cell.grid.ny;
+    g.bytes = static_cast<double>(cell.grid.size()) * kBytesPerNode;
+    g.cached = curve_is_cached(run.geometry, cell, reference::LoadCurveOptions{});
+    g.seconds = g.cached ? 0.0 : estimated_curve_seconds(cell.grid, static_cast<double>(cost.caps));
+    cost.grids.push_back(g);
+  }
+  return cost;
+}
+
 }  // namespace
 
-int run_surface_command(const std::vector<std::string>& args, std::ostream& out) {
+int run_surface_command(const std::vector<std::string>& given, std::ostream& out) {
+  // --dry-run is the command's switch, not a texture's key (a map's [texture] takes none).
+  std::vector<std::string> args;
+  bool dry_run = false;
+  for (const std::string& a : given) {
+    if (a == "--dry-run") {
+      dry_run = true;
+    } else {
+      args.push_back(a);
+    }
+  }
   const input::PointMaterial material = input::find_point_material(args);
   const po::options_description opts = surface_options(material);
   const po::variables_map vm = input::parse_command(args, opts, "surface");
   if (vm.count("help")) {
-    out << kUsage << "\n\n" << opts << "\n"
+    out << kUsage << "\n\n" << opts << "  --dry-run             what the curve asks (its grids, memory, whether the cache holds it, "
+        << "the time to build it estimated for this machine); nothing is built\n\n"
         << "Example: punchsweep surface --lattice hexagonal --l 1.2 --dh 0.05 --T 2.5 --pbar 0.02 --s 2 --format json\n"
         << "Exit codes: 0 success (a flagged snapshot is still a success: see 'valid'), 2 bad input.\n";
     return 0;
   }
   SurfaceRun run = read_surface(vm, material);
+  if (dry_run) {
+    write_curve_cost(out, cost_of(run));
+    return 0;
+  }
   const OutputFormat format = read_output_format(vm);
   evaluate(run, true);
   write_surface(out, format, run);
@@ -703,26 +782,64 @@ int run_surface_command(const std::vector<std::string>& args, std::ostream& out)
 }
 
 SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
-  const input::PointMaterial material = input::find_point_material(keywords);
-  SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
-  evaluate(run, false, also_held);
-  return run;
+  return with_keywords(keywords, [&](SurfaceRun& run) {
+    evaluate(run, false, also_held);
+    return std::move(run);
+  });
 }
 
-void check_surface(const input::Keywords& keywords) {
-  const input::PointMaterial material = input::find_point_material(keywords);
-  SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
-  // The tables need no cell; where they may not reach the lattice's dh (auto), the cell's
-  // refusals come when it is built.
-  if (run.curve_source != CurveSource::cell) return;
-  if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
-  if (run.grid_nodes == 0 && !run.measured) {
-    const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
-    run.grid_nodes = auto_grid(run, load);
+double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps) {
+  // Fitted (log-linear least squares) to curves built on one core here: see
+  // docs/performance.md for the runs and each one's ratio to this estimate.
+  return kCurveSecondsScale * std::pow(static_cast<double>(grid.nodes()), kCurveSecondsNodePower) *
+         std::pow(caps, kCurveSecondsCapPower) * (grid.mirrored() ? kCurveSecondsMirrored : 1.0);
+}
+
+double check_surface(const input::Keywords& keywords) {
+  return with_keywords(keywords, [](const SurfaceRun& run) {
+    // The tables need no cell; where they may not reach the lattice's dh (auto), the cell's
+    // refusals come when it is built.
+    if (run.curve_source != CurveSource::cell) return 0.0;
+    double seconds = 0.0;
+    for (const int nodes : cell_grids(run)) {
+      seconds += estimated_curve_seconds(curve_grid(run, nodes), static_cast<double>(run.geometry.sites.size()));
+    }
+    return seconds;
+  });
+}
+
+CurveCost curve_cost(const input::Keywords& keywords) {
+  return with_keywords(keywords, [](SurfaceRun& run) { return cost_of(run); });
+}
+
+void write_curve_cost(std::ostream& out, const CurveCost& cost) {
+  const std::streamsize precision = out.precision(3);
+  out << "punchsweep surface --dry-run\n";
+  out << "  cell: " << cost.caps << " caps, " << cost.levels << " levels\n";
+  if (cost.source != "cell") {
+    out << "  curve: off the periodic tables (no boundary elements; milliseconds)\n";
+    out.precision(precision);
+    return;
   }
-  if (const std::string problem = budget_problem(run, curve_grid(run, run.grid_nodes)); !problem.empty()) {
-    throw input::UsageError(problem);
+  double seconds = 0.0;
+  for (const CurveCost::Grid& grid : cost.grids) {
+    out << "  curve on " << grid.nx << " x " << grid.ny << " nodes";
+    if (grid.nodes_per_pitch > 0) out << " (" << grid.nodes_per_pitch << " a pitch)";
+    out << ": about " << grid.bytes / 1e6 << " MB; ";
+    if (grid.cached) {
+      out << "in the cache (read, not built)\n";
+    } else {
+      out << "to build, about " << grid.seconds << " s on one core\n";
+    }
+    seconds += grid.seconds;
   }
+  if (cost.auto_grid) {
+    out << "  --grid auto: the curves above at least; where t* still moves by more than " << kAutoTStarAccuracy
+        << " of itself between them the nodes double (to " << kAutoMax << " a pitch)\n";
+  }
+  out << "  estimated time: about " << seconds << " s (each estimate within a factor of " << kCurveSecondsSpread
+      << " of this machine's measured curves)\n";
+  out.precision(precision);
 }
 
 std::string surface_json(const input::Keywords& keywords) {

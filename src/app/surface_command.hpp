@@ -14,6 +14,7 @@
 
 #include "app/surface_run.hpp"
 #include "input/command_options.hpp"
+#include "reference/periodic_grid.hpp"
 
 namespace punchsweep::app {
 
@@ -44,8 +45,41 @@ SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoint
 
 /// Reads `keywords` as evaluate_surface does and throws input::UsageError for what it would
 /// refuse before building anything: a bad or missing option, a cell whose scales the
-/// boundary elements cannot take, a grid beyond the engine's budget. No curve is built.
-void check_surface(const input::Keywords& keywords);
+/// boundary elements cannot take, a grid beyond the engine's budget. No curve is built, no
+/// cell made. Returns the estimated seconds of its curve(s) on one core
+/// (estimated_curve_seconds; 0 off the periodic tables; a cached curve not known here).
+double check_surface(const input::Keywords& keywords);
+
+/// The seconds a cell's load curve on `grid` takes to build on one core of this machine,
+/// estimated from the grid's nodes and the cell's caps: a power law fitted to measured
+/// curves (docs/performance.md, "A curve's cost"), within a factor of kCurveSecondsSpread
+/// of every one of them.
+double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps);
+inline constexpr double kCurveSecondsSpread = 2.0;
+
+/// What one texture's load curve asks, found before it is built (a dry run's answer):
+/// where it comes from, the grids it is built on (--grid auto: the grid it picks and the
+/// one of half its nodes, at least: it doubles where t* still moves), each grid's memory,
+/// whether the table cache holds its curve, and the seconds to build it on one core of
+/// this machine (estimated_curve_seconds), 0 where cached.
+struct CurveCost {
+  std::string source;  ///< "periodic tables" (no grid: read off the tables) or "cell"
+  bool auto_grid = false;
+  struct Grid {
+    int nodes_per_pitch = 0;  ///< 0: a measured map's pixels
+    int nx = 0, ny = 0;
+    double bytes = 0.0;       ///< the solve's memory
+    bool cached = false;
+    double seconds = 0.0;
+  };
+  std::vector<Grid> grids;
+  std::size_t caps = 0;
+  int levels = 0;
+};
+/// Throws input::UsageError for what evaluate_surface would refuse (check_surface).
+CurveCost curve_cost(const input::Keywords& keywords);
+/// `surface --dry-run`'s lines for `cost`.
+void write_curve_cost(std::ostream& out, const CurveCost& cost);
 
 /// The same, as the command's JSON text (what `--format json` prints): Python's surface().
 std::string surface_json(const input::Keywords& keywords);

@@ -380,9 +380,10 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
   // Every geometry's texture read as `surface` reads it, before any curve is built: a
   // missing or bad option, a scale or a grid beyond the engine is refused here (exit 2,
   // nothing written), not by the rank that meets it in the middle of the run.
+  seconds_.assign(G, 0.0);
   for (std::size_t g = 0; g < G; ++g) {
     try {
-      check_surface(keywords_of(g));
+      seconds_[g] = check_surface(keywords_of(g));
     } catch (const input::UsageError& e) {
       throw input::UsageError("geometry " + std::to_string(g + 1) + " (" + describe(g) + "): " + e.what());
     }
@@ -391,19 +392,29 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
 
 TextureMapPlan::~TextureMapPlan() = default;
 
+SurfaceMap::LengthUnit SurfaceMap::length_unit() const {
+  const std::size_t space = R.find(' ');
+  if (space == std::string::npos) return {};
+  return {std::stod(R.substr(0, space)), R.substr(space + 1)};
+}
+
 std::string TextureMapPlan::describe(std::size_t g) const {
   std::ostringstream line;
   const std::vector<std::size_t> at = digits_of(g, sizes_of(header_.geometry));
-  // In R's own unit where the map has one ("60 um": a length of 1 R is 60 um), else in R.
-  const std::size_t space = header_.R.find(' ');
-  const double per_R = space == std::string::npos ? 1.0 : std::stod(header_.R.substr(0, space));
-  const std::string unit = space == std::string::npos ? "R" : header_.R.substr(space + 1);
+  const auto [per_R, unit] = header_.length_unit();
   for (std::size_t d = 0; d < header_.geometry.size(); ++d) {
     const SurfaceMapAxis& axis = header_.geometry[d];
     const bool length = axis.scale == "R";
     line << (d ? ", " : "") << axis.name << " = " << axis.values[at[d]] * (length ? per_R : 1.0) << (length ? " " + unit : "");
   }
   return line.str();
+}
+
+std::vector<std::size_t> TextureMapPlan::dealing_order() const {
+  std::vector<std::size_t> order(seconds_.size());
+  for (std::size_t g = 0; g < order.size(); ++g) order[g] = g;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return seconds_[a] > seconds_[b]; });
+  return order;
 }
 
 input::Keywords TextureMapPlan::keywords_of(std::size_t g) const {

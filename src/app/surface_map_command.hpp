@@ -71,6 +71,12 @@ struct SurfaceMap {
   /// empty and 0 without one.
   std::string R;
   double R_m = 0.0;
+  /// The unit lengths are said in: R's own ("60 um": a length of 1 R is 60 um), else R.
+  struct LengthUnit {
+    double per_R = 1.0;
+    std::string name = "R";
+  };
+  LengthUnit length_unit() const;
   std::string scatter_kind;             ///< normal or uniform where the scatter's width is an axis
   /// The lines that define the map (texture_map_identity), compared by --resume; and the
   /// layout's version (2: written through the journal; 1 before).
@@ -104,11 +110,17 @@ class TextureMapPlan {
   /// point read off it, as the values that travel between ranks and into a journal
   /// (TextureMapWriter::write reads them). A pure function of g and the keywords.
   std::vector<double> evaluate(std::size_t g) const;
-
- private:
   /// Geometry g's texture as `surface`'s keywords (at the least pressure, the law's first
   /// values).
   input::Keywords keywords_of(std::size_t g) const;
+  /// Geometry g's estimated seconds on one core (check_surface's; a cached curve not known).
+  double estimated_seconds(std::size_t g) const { return seconds_[g]; }
+  /// The order the geometries are dealt in: the costliest first (by estimated_seconds, ties
+  /// in index order), so that no long curve starts last while the other ranks idle.
+  std::vector<std::size_t> dealing_order() const;
+
+ private:
+  std::vector<double> seconds_;
   struct Inputs;
   std::unique_ptr<const Inputs> in_;
   SurfaceMap header_;

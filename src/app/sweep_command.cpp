@@ -248,6 +248,7 @@ int run_texture_sweep(const std::vector<std::string>& args, const sweep::MpiSess
     job.resume = options.resume;
     job.overwrite = options.overwrite;
     job.quiet = options.quiet;
+    job.dry_run = options.dry_run;
     if (!options.config_path.empty()) job.input_files.push_back(options.config_path);
   } catch (const input::UsageError& e) {
     if (root) {

@@ -7,11 +7,15 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
+#include "app/surface_command.hpp"
 #include "app/surface_map_command.hpp"
 #include "input/usage_error.hpp"
 #include "io/encoded_tile.hpp"
@@ -52,6 +56,96 @@ std::string seconds_text(double s) {
   return out.str();
 }
 
+std::string bytes_text(double bytes) {
+  std::ostringstream out;
+  out.precision(3);
+  if (bytes >= 1e9) {
+    out << bytes / 1e9 << " GB";
+  } else {
+    out << bytes / 1e6 << " MB";
+  }
+  return out.str();
+}
+
+/// --dry-run: the map's axes, and what each geometry's curve asks (its grids, memory,
+/// whether the cache holds it, its estimated time), summed up for the run's ranks. The
+/// geometries are listed one a line up to kListed, else grouped by their grids.
+void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ranks, std::ostream& out) {
+  constexpr std::size_t kListed = 24;
+  const SurfaceMap& map = plan.header();
+  const std::size_t G = plan.geometries(), P = map.load_points();
+  out << job.program << " --dry-run (a texture's map)\n";
+  out << "  texture: " << map.texture << "\n";
+  // Lengths in R's own unit where the map has one ("60 um"), as the progress lines give them.
+  const auto [per_R, length_unit] = map.length_unit();
+  for (const auto* axes : {&map.geometry, &map.load}) {
+    for (const SurfaceMapAxis& a : *axes) {
+      const bool length = a.scale == "R";
+      const double scale = length ? per_R : 1.0;
+      out << "  " << a.name << ": " << a.values.size() << " value" << (a.values.size() == 1 ? "" : "s") << " in ["
+          << a.values.front() * scale;
+      if (a.values.size() > 1) out << " .. " << *std::max_element(a.values.begin(), a.values.end()) * scale;
+      const std::string unit = length ? length_unit : a.scale;
+      out << "]" << (unit == "1" ? "" : " " + unit) << (axes == &map.geometry ? " (geometry: a load curve each)" : "") << "\n";
+    }
+  }
+  out << "  points: " << G << " geometr" << (G == 1 ? "y" : "ies") << " x " << P
+      << " load points\n";
+  double seconds = 0.0, largest = 0.0, bytes = 0.0;
+  std::size_t cached = 0, tables = 0, built = 0;
+  std::map<std::string, std::size_t> groups;  // grids -> geometries
+  for (std::size_t g = 0; g < G; ++g) {
+    const CurveCost cost = curve_cost(plan.keywords_of(g));
+    std::ostringstream what;
+    double mine = 0.0;
+    if (cost.source != "cell") {
+      ++tables;
+      what << "off the periodic tables";
+    } else {
+      bool all_cached = true;
+      for (std::size_t k = 0; k < cost.grids.size(); ++k) {
+        const CurveCost::Grid& grid = cost.grids[k];
+        what << (k ? ", then " : "") << grid.nx << " x " << grid.ny << " nodes";
+        if (grid.nodes_per_pitch > 0) what << " (" << grid.nodes_per_pitch << " a pitch)";
+        what << (grid.cached ? " cached" : "");
+        mine += grid.seconds;
+        bytes = std::max(bytes, grid.bytes);
+        all_cached = all_cached && grid.cached;
+      }
+      what << ", " << cost.caps << " caps, " << cost.levels << " levels";
+      if (cost.auto_grid) what << " (--grid auto: at least these grids)";
+      if (all_cached) {
+        ++cached;
+      } else {
+        ++built;
+      }
+    }
+    seconds += mine;
+    largest = std::max(largest, mine);
+    if (G <= kListed) {
+      out << "  geometry " << g + 1 << " (" << plan.describe(g) << "): " << what.str();
+      if (mine > 0.0) out << "; about " << seconds_text(mine);
+      out << "\n";
+    } else {
+      ++groups[what.str()];
+    }
+  }
+  for (const auto& [what, count] : groups) out << "  " << count << " geometr" << (count == 1 ? "y" : "ies") << ": " << what << "\n";
+  out << "  curves: " << built << " to build, " << cached << " in the cache, " << tables << " off the periodic tables\n";
+  if (bytes > 0.0) {
+    const double machine = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+    out << "  memory: about " << bytes_text(bytes) << " a rank for the largest curve (" << ranks << " rank"
+        << (ranks == 1 ? "" : "s") << " on one node: " << bytes_text(bytes * ranks) << " of this machine's " << bytes_text(machine) << ")\n";
+  }
+  // Dealt one at a time, the costliest first: the run takes about the larger of the share
+  // of a rank and the largest curve.
+  const double wall = std::max(seconds / ranks, largest);
+  out << "  estimated time: about " << seconds_text(wall) << " on " << ranks << " rank" << (ranks == 1 ? "" : "s") << " ("
+      << seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << kCurveSecondsSpread
+      << " on this machine's measurements; reading the load points adds little)\n";
+  out << "  output: " << job.output << " (nothing written by a dry run)\n";
+}
+
 }  // namespace
 
 int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
@@ -69,6 +163,11 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     return input::kUsageExitCode;
   }
   const std::size_t G = plan->geometries(), P = plan->header().load_points();
+  if (job.dry_run) {
+    if (root) print_dry_run(*plan, job, ranks, std::cout);
+    return 0;
+  }
+  const std::vector<std::size_t> order = plan->dealing_order();
 
   // Rank 0 claims the map's name, then applies the sweep's resume policy; every rank
   // learns the verdict.
@@ -129,11 +228,12 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
       } else {
         journal.emplace(io::TileJournal::create(paths.journal, identity_text));
       }
-      for (std::size_t g = 0; g < G; ++g) {
-        if (done[g]) {
+      // The scheduler deals positions in the dealing order (the costliest curve first).
+      for (std::size_t k = 0; k < G; ++k) {
+        if (done[order[k]]) {
           ++resumed;
         } else {
-          pending.add(g);
+          pending.add(k);
         }
       }
     } catch (const std::exception& e) {  // input::UsageError included
@@ -155,7 +255,8 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_texture_stop_signal);
   // Every rank: a geometry computed into its block, as one journal record. A geometry that
   // fails stops every rank (said by the rank that met it, with the geometry).
-  const sweep::TileWork work = [&](std::uint64_t g) {
+  const sweep::TileWork work = [&](std::uint64_t k) {
+    const std::size_t g = order.at(k);
     std::vector<double> block;
     try {
       block = plan->evaluate(g);

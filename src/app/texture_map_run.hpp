@@ -23,12 +23,14 @@ struct TextureMapJob {
   bool overwrite = false;
   bool resume = false;
   bool quiet = false;           ///< no progress lines
+  bool dry_run = false;         ///< say what the map asks (its curves' grids, memory, time) and write nothing
   std::vector<std::string> input_files;  ///< files the run reads besides the keywords' (the config file)
   std::string program;          ///< "punchsweep sweep" or "punchsweep surface-map": its messages' prefix
   std::string command;          ///< the command as typed: the lock's holder, the resume hint
 };
 
-/// Runs `job` on every rank of MPI_COMM_WORLD (collective). Returns the exit code: 0, 2 bad
+/// Runs `job` on every rank of MPI_COMM_WORLD (collective); with `dry_run` rank 0 prints
+/// what the map asks on stdout and nothing is written. Returns the exit code: 0, 2 bad
 /// input (said once, by rank 0; nothing written), 3 stopped by a signal (the journal kept),
 /// 1 a failure.
 int run_texture_map(const TextureMapJob& job, int rank, int ranks);

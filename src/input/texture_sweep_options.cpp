@@ -105,9 +105,8 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
       set(command_line, "output.file", value_of(k, option));
     } else if (option == "--resume" || option == "--overwrite" || option == "--quiet") {
       set(command_line, "run." + option.substr(2), a.find('=') == std::string::npos ? "true" : value_of(k, option));
-    } else if (option == "--dry-run") {
-      throw UsageError("--dry-run: a texture's map is estimated by its load curves, which only a run builds; run "
-                       "punchsweep surface with one geometry's keys to see what a curve costs");
+    } else if (a == "--dry-run") {
+      out.dry_run = true;
     } else if (option.rfind("--", 0) == 0 && option.find('.') != std::string::npos) {
       const std::string key = option.substr(2);
       const std::string section = key.substr(0, key.find('.'));
@@ -181,6 +180,7 @@ const char* const kTextureSweepHelp =
     "  [model]\n"
     "  material = materials/nbr_linder2011.ini\n"
     "  R = 60um\n"
+    "  s = 2\n"
     "  [grid]\n"
     "  l = 200um\n"
     "  dh = 2um, 3um\n"
@@ -194,6 +194,7 @@ const char* const kTextureSweepHelp =
     "pixel, supercell, scatter, seed, grid, curve, ...); [grid] l, dh, dh2, pbar or pressure, T or\n"
     "temperature, ramp_time; [model] material, R, s, C, load_table; [time] times; [reference]\n"
     "sample (K load points stepped in time on the same cell, as surface --check), seed; [output]\n"
-    "file, tolerance; [run] resume, overwrite, quiet.\n";
+    "file, tolerance; [run] resume, overwrite, quiet. --dry-run: each curve's grid, memory,\n"
+    "whether the cache holds it and an estimate of its time on this machine; nothing is run.\n";
 
 }  // namespace punchsweep::input

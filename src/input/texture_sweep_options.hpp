@@ -33,6 +33,7 @@ struct TextureSweepOptions {
   std::vector<std::string> origins; ///< each keyword's "section.key", for messages
   std::string output = "texture_map.nc";  ///< [output] file
   bool resume = false, overwrite = false, quiet = false;
+  bool dry_run = false;             ///< --dry-run: what the map asks (curves, grids, memory, time), nothing run
   std::string config_path;          ///< --config, "" without one
   bool help = false;
 };

@@ -96,7 +96,7 @@ def test_a_texture_sweep_refuses_what_it_cannot_take(tmp_path):
     assert run.returncode == 2 and "line 17: unknown section [quantities]" in run.stderr, run.stderr
     config.write_text(CONFIG)
     for args, message in [(["--texture.latice", "square"], "unknown key texture.latice"),
-                          (["--dry-run"], "--dry-run: a texture's map is estimated by its load curves"),
+                          (["--texture.supercell", "40"], "--supercell = 40 is outside its range: an integer in [1, 32]"),
                           (["--grid.pressure", "5"], "--pressure"),
                           (["--run.quiet", "maybe"], "run.quiet = maybe: valid: true or false")]:
         run = subprocess.run([BINARY, "sweep", "--config", str(config), "--output", str(out), *args],

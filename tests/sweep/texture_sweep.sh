@@ -39,8 +39,56 @@ with h5py.File(sys.argv[1]) as a, h5py.File(sys.argv[2]) as b:
         assert (f["check_regime"][()][..., 0] >= 0).sum() == 3
 PY
 }
+# --dry-run: once from rank 0, nothing written; the six curves to build, then (after the
+# run below) in the cache; the grid the map stores.
+dry_run() {  # dry_run RANKS: the dry run's stdout in dry.out
+  PUNCHSWEEP_CACHE="$work/cache1" run_ranks "$1" sweep --config hex.ini --output dry.nc --dry-run > dry.out 2> dry.err ||
+    { echo "FAIL: the dry run"; cat dry.out dry.err; exit 1; }
+  if ls dry.nc* > /dev/null 2>&1; then echo "FAIL: the dry run left a file"; exit 1; fi
+  [ "$(grep -c -- "--dry-run (a texture's map)" dry.out)" = 1 ] || { echo "FAIL: not one dry run"; cat dry.out; exit 1; }
+  grep -q "points: 6 geometries x 12 load points" dry.out || { cat dry.out; exit 1; }
+  grep -q "geometry 6 (l = 1.2 R, dh = 0.06 R, dh2 = 0.08 R): 64 x 108 nodes (64 a pitch)" dry.out || { cat dry.out; exit 1; }
+}
+dry_run 3
+grep -q "curves: 6 to build, 0 in the cache" dry.out || { echo "FAIL: the dry run's curves"; cat dry.out; exit 1; }
+grep -q "estimated time: about .* on 3 ranks" dry.out || { cat dry.out; exit 1; }
 # Each run its own curve cache, so that every one builds its curves.
 PUNCHSWEEP_CACHE="$work/cache1" run_ranks 0 sweep --config hex.ini --output one.nc 2> log
+dry_run 1
+grep -q "curves: 0 to build, 6 in the cache" dry.out || { echo "FAIL: the dry run after the map"; cat dry.out; exit 1; }
+# surface --dry-run of one of its geometries: cached; of another dh: to build; refusals as surface's.
+hex_surface=(surface --lattice hexagonal --s 2 --l 1.2 --dh2 0.08 --pbar 0.002 --T 2 --times 0,1,5 --dry-run)
+PUNCHSWEEP_CACHE="$work/cache1" "$PUNCHSWEEP" "${hex_surface[@]}" --grid 64 --dh 0.06 > s.out
+grep -q "curve on 64 x 108 nodes (64 a pitch): about .* MB; in the cache (read, not built)" s.out || { cat s.out; exit 1; }
+PUNCHSWEEP_CACHE="$work/cache1" "$PUNCHSWEEP" "${hex_surface[@]}" --grid 64 --dh 0.07 > s.out
+grep -q "curve on 64 x 108 nodes (64 a pitch): about .* MB; to build, about .* s on one core" s.out || { cat s.out; exit 1; }
+set +e
+"$PUNCHSWEEP" "${hex_surface[@]}" --dh 0.07 --supercell 16 --grid 1024 > s.out 2> s.err; rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "16384 x 28416 nodes" s.err || { echo "FAIL: surface --dry-run beyond the budget: exit $rc"; cat s.err; exit 1; }
+# The costliest curve is dealt first: l = 6 asks --grid auto for more nodes than l = 1.2
+# (the dry run's estimates say so), and on one rank it is built first.
+cat > order.ini <<'INI'
+[texture]
+lattice = hexagonal
+grid = auto
+[model]
+s = 2
+[grid]
+l = 1.2, 6
+dh = 0.02
+pbar = 0.02
+T = 2
+[time]
+times = 1
+INI
+PUNCHSWEEP_CACHE="$work/cache_order" run_ranks 0 sweep --config order.ini --output order.nc 2> order.log
+[[ "$(sed -n 2p order.log)" == *"geometry 2 (l = 6 R, dh = 0.02 R): curve built"* ]] || { echo "FAIL: not the costliest first"; cat order.log; exit 1; }
+/usr/bin/python3 -c "
+import h5py, sys
+with h5py.File('one.nc') as f:
+    assert (f['grid'][()] == 64).all(), f['grid'][()]
+"
 grep -q "wrote one.nc (6 geometries x 12 load points x 3 levels, 3 times)" log || { cat log; exit 1; }
 grep -q "6 of 6 done (100%)" log || { echo "FAIL: no progress line"; cat log; exit 1; }
 for n in 2 3; do
