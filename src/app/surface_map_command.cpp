@@ -899,7 +899,7 @@ std::vector<std::string> texture_map_identity(const input::Keywords& keywords) {
   std::vector<std::string> lines;
   for (const auto& [key, value] : keywords) lines.push_back(key + " = " + value);
   std::sort(lines.begin(), lines.end());
-  lines.insert(lines.begin(), "layout_version = " + std::to_string(kTextureLayoutVersion));
+  lines.insert(lines.begin(), "layout_version = " + std::to_string(map::kTextureLayoutVersion));
   return lines;
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "input/command_options.hpp"
+#include "map/layout_version.hpp"
 #include "map/texture_quantities.hpp"
 #include "sweep/reference_sample.hpp"
 
@@ -187,11 +188,6 @@ struct SurfaceMapArgs {
 };
 /// Throws input::UsageError for a bad option, no --output, or --resume beside --overwrite.
 SurfaceMapArgs read_surface_map_args(const std::vector<std::string>& args);
-
-/// The texture map's layout, in its `layout_version` attribute and its identity: 2 since it
-/// is written through the sweep's journal (before, surface-map's had a curve_seconds
-/// variable and no identity).
-inline constexpr int kTextureLayoutVersion = 2;
 
 /// The lines that define a map (its keywords, sorted, and the layout): the journal's
 /// header and the map's `identity` attribute, compared on --resume.

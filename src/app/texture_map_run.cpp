@@ -203,7 +203,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   // Rank 0: the map's writer, and its journal (replayed into the map on resume).
   SurfaceMap header = plan->header();
   header.identity = identity_text;
-  header.layout_version = kTextureLayoutVersion;
+  header.layout_version = map::kTextureLayoutVersion;
   std::optional<TextureMapWriter> writer;
   std::optional<io::TileJournal> journal;
   sweep::TileRanges pending;

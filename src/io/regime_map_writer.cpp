@@ -15,6 +15,7 @@
 
 #include "io/hdf5_attributes.hpp"
 #include "io/map_variables.hpp"
+#include "map/layout_version.hpp"
 #include "model/point/parameters.hpp"
 #include "model/contact/regime.hpp"
 #include "model/point/validity.hpp"
@@ -106,6 +107,7 @@ RegimeMapWriter::RegimeMapWriter(const std::string& path, const MapLayout& layou
   write_string_attribute(file_, "history", attributes.history, in);
   write_string_attribute(file_, "config", attributes.config_text, in);
   write_string_attribute(file_, "identity", attributes.identity, in);
+  write_double_attribute(file_, "layout_version", map::kRegimeLayoutVersion, in);
   write_string_attribute(file_, "creep_law", attributes.creep_law, in);
   write_double_attribute(file_, "C", attributes.C, in);
   write_string_attribute(file_, "localization", attributes.localization, in);

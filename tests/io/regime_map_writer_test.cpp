@@ -554,7 +554,7 @@ TEST_F(RegimeMapWriterTest, map_tracks_creation_order_of_links_and_attributes) {
   names.clear();
   ASSERT_GE(H5Aiterate2(file, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect_attribute, &names), 0);
   EXPECT_EQ(names,
-            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "creep_law", "C", "localization", "time_unit", "scales",
+            (std::vector<std::string>{"Conventions", "title", "source", "history", "config", "identity", "layout_version", "creep_law", "C", "localization", "time_unit", "scales",
                                       "completed", "ranks", "wall_seconds", "points_per_second"}));
 
   const Handle regime = open_dataset(file, "regime");

@@ -180,3 +180,41 @@ def test_python_surface_map_takes_the_seed_axis_and_a_check_sample():
     sampled = ds.check_regime.values[..., 0] >= 0
     assert sampled.sum() == 2
     np.testing.assert_array_equal(ds.check_regime.values[sampled], ds.regime.values[sampled])
+
+
+def test_every_map_states_its_layout_and_a_newer_one_is_refused(tmp_path):
+    """A regime map and a texture's map carry layout_version, the numbers the reader knows
+    (LAYOUT_VERSIONS, the engine's map::k*LayoutVersion); a map written before the attribute
+    opens; one of a newer layout is refused, naming it."""
+    import h5py
+    from punchsweep.map_attributes import LAYOUT_VERSIONS
+
+    regime = tmp_path / "regime.h5"
+    subprocess.run([BINARY, "sweep", "--grid.l", "0.75", "--grid.dh", "0.05,0.1", "--grid.T", "2.5", "--grid.pbar", "0.06",
+                    "--grid.s", "2", "--output", str(regime), "--quiet"], check=True)
+    texture = tmp_path / "texture.nc"
+    subprocess.run([BINARY, "sweep", "--texture.lattice", "hexagonal", "--texture.grid", "16", "--model.s", "2",
+                    "--grid.l", "1.2", "--grid.dh", "0.05", "--grid.pbar", "0.02", "--grid.T", "2", "--output", str(texture),
+                    "--quiet"], check=True)
+    for path, kind in ((regime, "regime"), (texture, "texture")):
+        with h5py.File(path, "r") as f:
+            assert int(f.attrs["layout_version"]) == LAYOUT_VERSIONS[kind], (kind, f.attrs["layout_version"])
+        punchsweep.open_map(path).close()
+        with h5py.File(path, "r+") as f:
+            f.attrs["layout_version"] = LAYOUT_VERSIONS[kind] + 1.0
+        try:
+            punchsweep.open_map(path)
+        except punchsweep.NotAMapError as e:
+            assert f"its layout_version is {LAYOUT_VERSIONS[kind] + 1}, newer than this reader's {kind} maps" in str(e)
+        else:
+            raise AssertionError(f"a {kind} map of a newer layout opened")
+    # A map as written before the attribute: the same map without it (HDF5 cannot delete an
+    # attribute of a file that tracks their order, so the map is written again by xarray).
+    import xarray as xr
+    before = tmp_path / "before.h5"
+    with xr.open_dataset(regime, engine="h5netcdf", decode_cf=False) as ds:
+        ds.attrs.pop("layout_version")
+        ds.to_netcdf(before, engine="h5netcdf")
+    with h5py.File(before, "r") as f:
+        assert "layout_version" not in f.attrs
+    punchsweep.open_map(before).close()

@@ -157,6 +157,17 @@ def flag_table(attrs, variable: str, error=ValueError) -> tuple[tuple[int, ...],
     return codes, words
 
 
+# The map layouts this reader knows, by kind: the engine's map::kRegimeLayoutVersion and
+# map::kTextureLayoutVersion (src/map/layout_version.hpp; tests/python hold them equal). A
+# map without the attribute was written before it: a regime map's layout 1, a texture's 1.
+LAYOUT_VERSIONS = {"regime": 1, "texture": 2}
+
+
+def layout_version(ds) -> int:
+    """The map's layout (its `layout_version` attribute; 1 where it has none)."""
+    return int(ds.attrs.get("layout_version", 1))
+
+
 def is_texture_map(ds) -> bool:
     """Whether `ds` is a texture's map (`punchsweep surface-map`): regime over its axes and
     `level` last (each level's answer), valid over its axes and the times `t`."""
@@ -171,6 +182,10 @@ def check_layout(ds, error=ValueError) -> None:
     names = tuple(ds["regime"].dims)
     if not names:
         raise error("regime has no dimensions")
+    kind = "texture" if is_texture_map(ds) else "regime"
+    if layout_version(ds) > LAYOUT_VERSIONS[kind]:
+        raise error(f"its layout_version is {layout_version(ds)}, newer than this reader's {kind} maps "
+                    f"(up to {LAYOUT_VERSIONS[kind]}): it was written by a newer punchsweep; read it with that one")
     expected_valid = set(names)
     if is_texture_map(ds):
         expected_valid = set(names[:-1]) | {"t"}
