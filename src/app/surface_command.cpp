@@ -289,7 +289,11 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
                                                                                        : model::LatticeKind::hexagonal;
   std::vector<double> drops{run.inputs.problem.dh};
   if (vm.count("dh2")) {
-    drops.push_back(input::read_parameter(vm, *model::texture_parameter(model::kThirdLevelDrop), &run.inputs.scales));
+    const model::Parameter* dh2 = model::texture_parameter(model::kThirdLevelDrop);
+    drops.push_back(input::read_parameter(vm, *dh2, &run.inputs.scales));
+    // Echoed with the inputs, after dh (the table's first line, JSON's "inputs").
+    auto after = std::find_if(run.inputs.values.begin(), run.inputs.values.end(), [](const auto& v) { return v.first->name == "dh"; });
+    run.inputs.values.emplace(after == run.inputs.values.end() ? after : after + 1, dh2, drops.back());
   }
   run.grid_nodes = read_grid(vm["grid"].as<std::string>());
   run.check = vm.count("check") && vm["check"].as<bool>();

@@ -66,6 +66,7 @@ def test_the_table_counts_caps_and_each_levels_share_in_contact():
             "--s", 2, "--grid", 32, "--times", "0, 1")
     assert r.returncode == 0, r.stderr
     assert "caps: 6 in the cell (2 of level 0, 2 of level 1, 2 of level 2)" in r.stdout
+    assert "hexagonal lattice, l = 3.3 R, dh = 0.03 R, dh2 = 0.3 R, T = 1," in r.stdout  # the third level echoed
     rows = [line.split() for line in r.stdout.splitlines() if line[:1].isdigit()]
     header = next(line.split() for line in r.stdout.splitlines() if line.startswith("t  X"))
     last = dict(zip(header, rows[-1]))
