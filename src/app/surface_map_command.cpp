@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -21,6 +22,7 @@
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
+#include "io/crc32.hpp"
 #include "io/netcdf_file.hpp"
 #include "io/output_file.hpp"
 #include "model/contact/regime.hpp"
@@ -401,6 +403,7 @@ SurfaceMap::LengthUnit SurfaceMap::length_unit() const {
 std::string TextureMapPlan::describe(std::size_t g) const {
   std::ostringstream line;
   const std::vector<std::size_t> at = digits_of(g, sizes_of(header_.geometry));
+  if (header_.geometry.empty()) return "the texture as given: no geometry axis";
   const auto [per_R, unit] = header_.length_unit();
   for (std::size_t d = 0; d < header_.geometry.size(); ++d) {
     const SurfaceMapAxis& axis = header_.geometry[d];
@@ -608,9 +611,14 @@ GeometryCost geometry_cost(std::span<const double> block) {
   return {block[kSeconds], source};
 }
 
+namespace {
+/// The keywords that name a file the map reads.
+constexpr std::array<const char*, 3> kInputFileKeys{"material", "cell", "height-map"};
+}  // namespace
+
 std::vector<std::string> texture_input_files(const input::Keywords& keywords) {
   std::vector<std::string> files;
-  for (const char* key : {"material", "cell", "height-map"}) {
+  for (const char* key : kInputFileKeys) {
     if (const std::string* path = find(keywords, key)) files.push_back(*path);
   }
   return files;
@@ -896,8 +904,23 @@ SurfaceMapArgs read_surface_map_args(const std::vector<std::string>& args) {
 }
 
 std::vector<std::string> texture_map_identity(const input::Keywords& keywords) {
+  // A file's content, not its path (as a regime map's material): the same file moved, or
+  // copied into a job's run folder, is the same map.
+  const auto file_text = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream content;
+    content << in.rdbuf();
+    if (!in) return path;  // (unreadable: the plan refuses it by name)
+    const std::string bytes = content.str();
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", io::crc32(bytes.data(), bytes.size()));
+    return std::filesystem::path(path).filename().string() + " (file crc32 " + hex + ")";
+  };
   std::vector<std::string> lines;
-  for (const auto& [key, value] : keywords) lines.push_back(key + " = " + value);
+  for (const auto& [key, value] : keywords) {
+    const bool file = std::find(kInputFileKeys.begin(), kInputFileKeys.end(), key) != kInputFileKeys.end();
+    lines.push_back(key + " = " + (file ? file_text(value) : value));
+  }
   std::sort(lines.begin(), lines.end());
   lines.insert(lines.begin(), "layout_version = " + std::to_string(map::kTextureLayoutVersion));
   return lines;

@@ -163,7 +163,27 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     return input::kUsageExitCode;
   }
   const std::size_t G = plan->geometries(), P = plan->header().load_points();
+  const run::OutputPaths paths(job.output);
+  const std::vector<std::string> identity = texture_map_identity(job.keywords);
+  const std::string identity_text = run::join(identity, "\n");  // the journal's header, the map's attribute
+  sweep::SweepConfig policy;  // the sweep's resume policy, for this map
+  policy.overwrite = job.overwrite;
+  policy.resume = job.resume;
+  policy.identity = identity;
+  policy.input_files = job.input_files;
+  for (const std::string& file : texture_input_files(job.keywords)) policy.input_files.push_back(file);
   if (job.dry_run) {
+    // With --resume the dry run also says whether the map would resume (a job script asks
+    // it before it writes anything into a run folder): another configuration is refused.
+    std::string refusal;
+    if (root && job.resume && !job.overwrite) {
+      run::Start start = run::Start::fresh;
+      refusal = run::preflight(policy, paths, &start);
+    }
+    if (sweep::share_from_root(refusal.empty() ? 0 : 1) != 0) {
+      if (root) say(refusal);
+      return input::kUsageExitCode;
+    }
     if (root) print_dry_run(*plan, job, ranks, std::cout);
     return 0;
   }
@@ -171,19 +191,10 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
 
   // Rank 0 claims the map's name, then applies the sweep's resume policy; every rank
   // learns the verdict.
-  const run::OutputPaths paths(job.output);
-  const std::vector<std::string> identity = texture_map_identity(job.keywords);
-  const std::string identity_text = run::join(identity, "\n");  // the journal's header, the map's attribute
   std::optional<run::OutputLock> lock;
   run::Start start = run::Start::fresh;
   std::string refusal;
   if (root) {
-    sweep::SweepConfig policy;
-    policy.overwrite = job.overwrite;
-    policy.resume = job.resume;
-    policy.identity = identity;
-    policy.input_files = job.input_files;
-    for (const std::string& file : texture_input_files(job.keywords)) policy.input_files.push_back(file);
     refusal = run::output_folder_problem(paths);
     if (refusal.empty()) {
       if (auto taken = run::OutputLock::take(paths, job.command, &refusal)) lock.emplace(std::move(*taken));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string_view>
@@ -120,6 +121,13 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
   }
   if (out.help) return out;
   Settings settings = out.config_path.empty() ? Settings{} : read_config(out.config_path);
+  // A file a config names is taken from the config's own folder, as a user reads it (and as
+  // a regime map's config takes its material); one on the command line from where it runs.
+  for (auto& [key, value] : settings) {
+    if (key != "model.material" && key != "texture.cell" && key != "texture.height_map") continue;
+    const std::filesystem::path file(run::trim(value));
+    if (file.is_relative()) value = (std::filesystem::path(out.config_path).parent_path() / file).string();
+  }
   for (const auto& [key, value] : command_line) set(settings, key, value);
   for (const auto& [key, value] : settings) {
     const std::string section = key.substr(0, key.find('.'));
