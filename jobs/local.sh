@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job on one machine: installs what is missing, builds, runs the sweep on every
-# core, then draws the regime maps into the run folder.
+# core, then draws the map's pictures into the run folder (a texture's map: texture.png).
 #   bash jobs/local.sh [CONFIG.ini] [RUN_FOLDER]
 # Defaults: sweeps/default.ini, runs/<config name>-<UTC date and time>. Re-running with the
 # same RUN_FOLDER resumes an interrupted sweep (or does nothing if the map is complete).

@@ -1,5 +1,5 @@
 #!/bin/bash
-# A punchsweep regime map on a PBS Pro or Torque cluster:
+# A punchsweep map (a regime map, or a texture's: a config with [texture]) on a PBS Pro or Torque cluster:
 #   qsub -v CONFIG=/path/to/config.ini[,PUNCHSWEEP_ROOT=/path/to/checkout] jobs/pbs.sh
 # One run folder per job (runs/<config>-<job id>; PUNCHSWEEP_RUN names another) with the
 # config, provenance, the log (job.log), the map, and at the end the summary, pictures and

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Copies a sweep's config into a run folder so that the folder runs, resumes and documents
-itself: RUN/config.ini, with every material file the config names ([model] material, a
-path taken from the config's own folder when relative, as the engine takes it) copied to
-RUN/materials/ and the key rewritten to those copies. A map's identity holds the materials'
-content, not their paths, so the copy resumes a map begun from the original.
+itself: RUN/config.ini, with every file the config names (a path taken from the config's
+own folder when relative, as the engine takes it) copied and the key rewritten to the copy:
+[model] material to RUN/materials/, a texture's [texture] cell and height_map to
+RUN/inputs/. A regime map's identity holds the materials' content, not their paths, so the
+copy resumes a map begun from the original; a texture's map is begun from the copy.
 
   jobs/record_config.py CONFIG.ini RUN_FOLDER
 
@@ -15,6 +16,10 @@ from __future__ import annotations
 import shutil
 import sys
 from pathlib import Path
+
+
+# The keys that name files, by (section, key), and the run folder's folder for their copies.
+FILE_KEYS = {("model", "material"): "materials", ("texture", "cell"): "inputs", ("texture", "height_map"): "inputs"}
 
 
 def fail(message: str) -> int:
@@ -32,11 +37,12 @@ def main(argv: list[str]) -> int:
         return fail(f"cannot read the config {config}: {e}")
     section, out, copies = "", [], {}
     for line in lines:
-        stripped = line.strip()
+        stripped = line.partition("#")[0].strip()  # "[texture]   # a mould" is a section too
         if stripped.startswith("[") and stripped.endswith("]"):
             section = stripped[1:-1].strip()
         key, eq, rest = line.partition("=")
-        if section == "model" and eq and key.strip() == "material":
+        folder = FILE_KEYS.get((section, key.strip())) if eq else None
+        if folder:
             value, hash_, comment = rest.partition("#")
             files = []
             for item in (v.strip() for v in value.split(",")):
@@ -45,20 +51,19 @@ def main(argv: list[str]) -> int:
                 source = Path(item).expanduser()
                 source = source if source.is_absolute() else config.parent / source
                 if not source.is_file():
-                    return fail(f"{config}: [model] material = {item}: no such file {source}")
-                name = source.name
-                if name in copies and copies[name] != source.resolve():
-                    return fail(f"{config}: two material files are named {name}")
-                copies[name] = source.resolve()
-                files.append(f"materials/{name}")
-            line = f"material = {', '.join(files)}   # copied from {value.strip()}" + (
+                    return fail(f"{config}: [{section}] {key.strip()} = {item}: no such file {source}")
+                copy = f"{folder}/{source.name}"
+                if copy in copies and copies[copy] != source.resolve():
+                    return fail(f"{config}: two {'material' if folder == 'materials' else 'input'} files are named {source.name}")
+                copies[copy] = source.resolve()
+                files.append(copy)
+            line = f"{key.strip()} = {', '.join(files)}   # copied from {value.strip()}" + (
                 f"  ({comment.strip()})" if hash_ and comment.strip() else "")
         out.append(line)
     run.mkdir(parents=True, exist_ok=True)
-    if copies:
-        (run / "materials").mkdir(exist_ok=True)
-        for name, source in copies.items():
-            shutil.copyfile(source, run / "materials" / name)
+    for copy, source in copies.items():
+        (run / copy).parent.mkdir(exist_ok=True)
+        shutil.copyfile(source, run / copy)
     (run / "config.ini").write_text("\n".join(out) + "\n", encoding="utf-8")
     return 0
 

@@ -15,22 +15,15 @@ check_config() {
       "nothing was written" >&2
     return 2
   fi
-  # A texture's map (a [texture] section) runs without a job script's run folder: its
-  # cell and height-map files are not copied, and the pictures are the regime map's.
-  if grep -qE '^[[:space:]]*\[texture\][[:space:]]*(#.*)?$' "$config"; then
-    echo "punchsweep: config $config maps a texture ([texture]): the job scripts run regime maps; run it" \
-      "with mpirun -np N punchsweep sweep --config $config --output MAP.nc --resume (docs/cli.md," \
-      "\"A texture's map through sweep\"); nothing was written" >&2
-    return 2
-  fi
   [ -z "$binary" ] || "$binary" sweep --config "$config" --dry-run > /dev/null || {
     echo "punchsweep: config $config was refused by the engine (above); nothing was written" >&2
     return 2
   }
 }
 
-# prepare_run CONFIG RUN BINARY: RUN/config.ini and RUN/materials/, copied from CONFIG and
-# the material files it names (relative paths taken from the config's own folder), so that
+# prepare_run CONFIG RUN BINARY: RUN/config.ini, RUN/materials/ and (a texture's cell file or
+# height map) RUN/inputs/, copied from CONFIG and the files it names (relative paths taken
+# from the config's own folder), so that
 # the folder runs and resumes by itself. Into a folder that holds a run already, the copy is
 # staged first and the engine asked whether the map would resume from it (sweep --resume
 # --dry-run): a different configuration is refused (exit 2) before the folder's config or
@@ -53,8 +46,9 @@ prepare_run() {
       return 2
     }
   fi
-  rm -rf "$run/materials"
+  rm -rf "$run/materials" "$run/inputs"
   [ ! -d "$staged/materials" ] || mv "$staged/materials" "$run/materials"
+  [ ! -d "$staged/inputs" ] || mv "$staged/inputs" "$run/inputs"
   mv "$staged/config.ini" "$run/config.ini"
   rm -rf "$staged"
   trap - INT TERM
@@ -74,7 +68,9 @@ finish_run() {
   "$python" "$root/postprocess/summary.py" "$run/map.h5" > "$run/summary.txt"
   "$python" "$root/postprocess/run_pictures.py" "$run/map.h5" "$run" > /dev/null
   echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$run/provenance.txt"
-  echo "punchsweep: pictures $run/regime_map.png, $run/critical_dh.png; explorer $run/explore.html; summary $run/summary.txt"
+  local pictures=
+  for p in regime_map.png critical_dh.png texture.png; do [ ! -f "$run/$p" ] || pictures+="${pictures:+, }$run/$p"; done
+  echo "punchsweep: pictures $pictures; explorer $run/explore.html; summary $run/summary.txt"
 }
 
 # rank_environment: single-threaded ranks (one per core), and root allowed to launch MPI

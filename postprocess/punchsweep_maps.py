@@ -147,7 +147,11 @@ def has_series(ds) -> bool:
 
 
 def is_completed(ds) -> bool:
-    """The global attribute `completed` is 1 only when the map is whole."""
+    """The global attribute `completed` is 1 only when the map is whole. A texture's map
+    (its `texture` attribute) has no such attribute: it is written under its name only once
+    every geometry is in (until then it is FILE.partial), so a texture's map is whole."""
+    if "texture" in ds.attrs and "completed" not in ds.attrs:
+        return True
     return int(np.asarray(ds.attrs.get("completed", 0)).item()) == 1
 
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""The job scripts' pictures of a run folder's map: regime_map.png (pbar across, dh up,
+"""The job scripts' pictures of a run folder's map (a texture's map: texture.png, each
+level's regime and t* by surface_picture.py, and explore.html): regime_map.png (pbar across, dh up,
 a panel per s; on a material map a delay under 1 ms drawn as immediate in practice),
 critical_dh.png (against pbar; on a material map with the dh that touches by 1 s, 1 min
 and 1 h), for whatever axes the map has, and
@@ -23,6 +24,7 @@ import critical_dh
 import explore
 import punchsweep_maps as pm
 import regime_map
+import surface_picture
 
 PREFERRED = {"l": 0.75, "T": 5.0}
 # The touch-by curves of a material map's design chart: the times a user thinks in.
@@ -51,6 +53,11 @@ def main(argv: list[str]) -> int:
         raise pm.MapError("usage: run_pictures.py MAP.h5 FOLDER")
     path, folder = argv[0], Path(argv[1])
     with pm.open_map(path) as ds:
+        texture = "level" in ds["regime"].dims
+    if texture:
+        code = texture_picture(path, folder)
+        return code if code != 0 else explore_page(path, folder)
+    with pm.open_map(path) as ds:
         pm.require_axes(ds, ("pbar", "dh"), "run_pictures.py")
         s_values = len(pm.grid_values(ds, "s")) if "s" in pm.axes(ds) else 1
         facet = ["--facet", "s"] if s_values > 1 else []
@@ -67,6 +74,23 @@ def main(argv: list[str]) -> int:
                              "-o", str(folder / "critical_dh.png")])
     if code != 0:
         return code
+    return explore_page(path, folder)
+
+
+def texture_picture(path: str, folder: Path) -> int:
+    """texture.png (surface_picture.py): each level's regime and t* over two axes, pbar
+    across and dh up where the map has several of each, else its first axes of several
+    values; every other axis fixed as fixed_values fixes it."""
+    with pm.open_map(path) as ds:
+        several = [a for a in pm.axes(ds) if a != "level" and len(pm.grid_values(ds, a)) > 1]
+        shown = [a for a in ("pbar", "dh") if a in several]
+        shown += [a for a in several if a not in shown][:2 - len(shown)]
+        at = fixed_values(ds, set(shown) | {"level"})
+    return surface_picture.main([path, *(["--at", *at] if at else []), "-o", str(folder / "texture.png")])
+
+
+def explore_page(path: str, folder: Path) -> int:
+    """explore.html, coarsened on the map's longest axis as far as it must be to fit."""
     # The coarsening chosen once, from the page's estimated size; built again (one step
     # coarser) only where the estimate fell short.
     with pm.open_map(path) as ds:

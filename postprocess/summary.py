@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Summary of a punchsweep regime map: how many points touch immediately, after a delay or
 never, overall and per value of each axis; t* statistics of the delayed points; invalid
-points per validity reason; points not computed; whether the map is complete.
+points per validity reason; points not computed; whether the map is complete. A texture's
+map (regime over its axes and `level`) is summarised a level at a time ("level K of L"),
+its validity counted over every snapshot (load points x times); with --csv its levels
+follow one another under one header whose first column is `level`.
 
 Fractions are of all points in the group (not computed ones included). t* is in the map's
 time unit: T_eps (the creep time), or a material map's own (s, min or h); the axis values
@@ -115,7 +118,8 @@ def summarize(ds, by: list[str]) -> list[Group]:
     """The whole map first, then one group per value of each axis in `by`."""
     axes = pm.axes(ds)
     regime = ds["regime"].values
-    valid = ds["valid"].transpose(*axes).values
+    # (A texture's map: valid per snapshot, over the axes and the times t, counted whole.)
+    valid = ds["valid"].transpose(*axes, *(d for d in ds["valid"].dims if d not in axes)).values
     t_star = (ds["t_star"].transpose(*axes).values if "t_star" in ds
               else np.full(regime.shape, np.nan))
     groups = [group(ds, "all", None, regime, valid, t_star)]
@@ -133,14 +137,19 @@ def number(x: float | str | None) -> str:
     return "" if x is None else repr(float(x))
 
 
-def write_csv(ds, path: str, groups: list[Group], out) -> None:
-    out.write(f"# map = {path}\n# completed = {int(pm.is_completed(ds))}\n"
-              f"# points = {groups[0].points}\n# t_star_units = {pm.units(ds, 't_star') or 'T_eps'}\n")
+def write_csv(ds, path: str, groups: list[Group], out, level: int | None = None) -> None:
+    """The CSV; a texture's map's levels one after another under one header, its first
+    column `level` (the comment lines and the header with level 0 only)."""
+    if not level:
+        out.write(f"# map = {path}\n# completed = {int(pm.is_completed(ds))}\n"
+                  f"# points = {groups[0].points}\n# t_star_units = {pm.units(ds, 't_star') or 'T_eps'}\n")
     w = csv.writer(out, lineterminator="\n")
-    w.writerow(columns(ds))
+    first = [] if level is None else [level]
+    if not level:
+        w.writerow((["level"] if level is not None else []) + columns(ds))
     for g in groups:
         t = g.t_star or (None, None, None)
-        w.writerow([g.axis, number(g.value), "" if g.value is None else pm.units(ds, g.axis),
+        w.writerow(first + [g.axis, number(g.value), "" if g.value is None else pm.units(ds, g.axis),
                     g.points, *(g.regimes[m] for m in regimes(ds)),
                     *(number(g.fraction(m)) for m in regimes(ds)),
                     *(g.validities[m] for m in validities(ds)), *(number(v) for v in t)])
@@ -170,12 +179,15 @@ def write_table(ds, path: str, groups: list[Group], out) -> None:
                   f"max {hi:.4g} ({whole.regimes['delayed']} points)\n")
     else:
         out.write(f"\nt* of the delayed points [{t_unit}]: no delayed points\n")
-    out.write(f"\n{'validity':<22}{'points':>10}{'fraction':>11}\n")
-    computed = whole.points - not_computed
+    # A texture's map: validity per snapshot (points x times), not per point.
+    snapshots = "t" in ds["valid"].dims and "t" not in pm.axes(ds)
+    what = "snapshots" if snapshots else "points"
+    out.write(f"\n{'validity':<22}{what:>10}{'fraction':>11}\n")
+    computed = sum(whole.validities.values()) if snapshots else whole.points - not_computed
     for m in validities(ds):
         share = whole.validities[m] / computed if computed else float("nan")
         out.write(f"{m:<22}{whole.validities[m]:>10d}{share:>10.2%}\n")
-    out.write("(fractions of the computed points)\n")
+    out.write(f"(fractions of the computed {what}" + (": load points x times)\n" if snapshots else ")\n"))
     shown = [m for m in regimes(ds) if m != pm.NOT_COMPUTED or not_computed]  # if any
     header = (f"  {'value':>10}{'points':>8}" + "".join(f"{m:>16}" for m in shown)
               + f"{'invalid':>9}{'t* min':>11}{'median':>11}{'max':>11}")
@@ -196,11 +208,22 @@ def write_table(ds, path: str, groups: list[Group], out) -> None:
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
     with pm.open_map(args.map) as ds:
-        by = list(pm.axes(ds)) if not args.by else [pm.parse_axis(ds, a, "--by") for a in args.by]
-        if len(set(by)) != len(by):
-            raise pm.MapError(f"--by names an axis twice: {' '.join(by)}")
-        groups = summarize(ds, by)
-        (write_csv if args.csv else write_table)(ds, args.map, groups, sys.stdout)
+        # A texture's map (regime over its axes and `level`): the same summary a level at a
+        # time, its validity counted over every snapshot (valid is per time, not per level).
+        levels = list(range(ds.sizes["level"])) if "level" in ds["regime"].dims else [None]
+        for level in levels:
+            one = ds if level is None else ds.isel(level=level)
+            by = list(pm.axes(one)) if not args.by else [pm.parse_axis(one, a, "--by") for a in args.by]
+            if len(set(by)) != len(by):
+                raise pm.MapError(f"--by names an axis twice: {' '.join(by)}")
+            groups = summarize(one, by)
+            if args.csv:
+                write_csv(one, args.map, groups, sys.stdout, level)
+                continue
+            if level is not None:
+                sys.stdout.write(("" if level == 0 else "\n") + f"level {level} of {len(levels)} (a texture's map: "
+                                 "its regimes and t*; validity per snapshot time)\n")
+            write_table(one, args.map, groups, sys.stdout)
     return 0
 
 

@@ -107,17 +107,32 @@ set +e; wait "$job"; code=$?; set -e
 # 4e) A config the engine refuses (an unknown key), and one that does not exist: the engine's
 #     message, a non-zero exit, and no run folder (no config.ini, no provenance.txt).
 printf '[grid]\nl = 0.75\nbogus_key = 1\n' > refused.ini
-# A texture's config: the scripts run regime maps; it is refused with the command that runs it.
-printf '[texture]   # a hexagonal mould\nlattice = hexagonal\n[grid]\nl = 1.2\ndh = 0.02\npbar = 0.01\n' > texture.ini
-set +e; bash "$root/jobs/local.sh" texture.ini "$PWD/refused-run" > refused.log 2>&1; code=$?; set -e
-[ "$code" = 2 ] && [ ! -e refused-run ] && grep -q "punchsweep sweep --config .*/texture.ini --output MAP.nc" refused.log ||
-  { echo "FAIL: jobs/local.sh with a texture's config: exit $code"; cat refused.log; exit 1; }
 for config in refused.ini missing.ini; do
   set +e; bash "$root/jobs/local.sh" "$config" "$PWD/refused-run" > refused.log 2>&1; code=$?; set -e
   [ "$code" != 0 ] || { echo "FAIL: jobs/local.sh with $config: exit 0"; cat refused.log; exit 1; }
   [ ! -e refused-run ] || { echo "FAIL: jobs/local.sh with $config left a run folder"; ls -A refused-run; exit 1; }
   grep -q "nothing was written" refused.log || { echo "FAIL: the refusal of $config does not say so"; cat refused.log; exit 1; }
 done
+# 4f) A texture's config ([texture], a cell file named relative to the config's folder),
+#     run from elsewhere: the run folder holds the map, its config with the cell copied to
+#     inputs/, the summary per level, texture.png and explore.html; run again, it is complete;
+#     another configuration into the folder is refused and the folder left as it was.
+mkdir -p texture-cfg/cells
+cp "$root/examples/cells/hexagonal_two_level.ini" texture-cfg/cells/
+printf '[texture]   # a honeycomb cell\ncell = cells/hexagonal_two_level.ini\ngrid = 32\n[model]\nR = 80um\n[grid]\npbar = 0.005, 0.01, 0.02\nT = 2, 4\n[time]\ntimes = 0, 1\n' > texture-cfg/texture.ini
+(cd / && bash "$root/jobs/local.sh" "$OLDPWD/texture-cfg/texture.ini" "$OLDPWD/texture-run") > texture.log 2>&1 ||
+  { echo "FAIL: jobs/local.sh with a texture's config"; cat texture.log; exit 1; }
+for f in map.h5 config.ini inputs/hexagonal_two_level.ini summary.txt texture.png explore.html provenance.txt; do
+  test -s "texture-run/$f" || { echo "FAIL: the texture's run left no $f"; cat texture.log; exit 1; }
+done
+grep -q "^cell = inputs/hexagonal_two_level.ini" texture-run/config.ini && grep -q "level 1 of 2" texture-run/summary.txt &&
+  grep -q "pictures $PWD/texture-run/texture.png" texture.log || { echo "FAIL: the texture's run folder"; cat texture.log texture-run/config.ini; exit 1; }
+bash "$root/jobs/local.sh" texture-cfg/texture.ini "$PWD/texture-run" > texture2.log 2>&1 && grep -q "is already complete" texture2.log ||
+  { echo "FAIL: the texture's run again"; cat texture2.log; exit 1; }
+sed 's/T = 2, 4/T = 2, 5/' texture-cfg/texture.ini > texture-cfg/other.ini
+set +e; bash "$root/jobs/local.sh" texture-cfg/other.ini "$PWD/texture-run" > texture3.log 2>&1; code=$?; set -e
+[ "$code" = 2 ] && grep -q "T: the existing map has 2, 4; this run asks for 2, 5" texture3.log && grep -q "^T = 2, 4" texture-run/config.ini ||
+  { echo "FAIL: another texture config into the run folder: exit $code"; cat texture3.log; exit 1; }
 grep -q "no such file" refused.log || { echo "FAIL: a missing config is not named"; cat refused.log; exit 1; }
 set +e; bash "$root/jobs/local.sh" refused.ini "$PWD/refused-run" > refused.log 2>&1; set -e
 grep -q "punchsweep sweep: .*unknown key grid.bogus_key" refused.log ||
