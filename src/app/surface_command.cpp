@@ -447,6 +447,13 @@ reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes) {
   return reference::cell_grid(run.geometry, nodes * run.supercell);
 }
 
+/// The memory of a curve's solve on `grid`, in bytes: kBytesPerNode a stored node, and 17
+/// more a level (the levels' shares of each node).
+double curve_bytes(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
+  const double levels = static_cast<double>(std::max(run.geometry.levels(), 1));
+  return static_cast<double>(grid.size()) * (kBytesPerNode + 17.0 * levels);
+}
+
 /// Why a curve on `grid` is beyond what the engine takes on (empty where it is not): more
 /// than kMaxNodes nodes (memory: about kBytesPerNode a node), or nodes x caps beyond
 /// kMaxNodeCaps (each cap that touches apart costs its own search of some 20 solves of the
@@ -454,8 +461,7 @@ reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes) {
 std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
   const double nodes = static_cast<double>(grid.nodes());
   const double caps = static_cast<double>(run.geometry.sites.size());
-  const double levels = static_cast<double>(std::max(run.geometry.levels(), 1));
-  const double gigabytes = static_cast<double>(grid.size()) * (kBytesPerNode + 17.0 * levels) / 1e9;
+  const double gigabytes = curve_bytes(run, grid) / 1e9;
   std::ostringstream out;
   out.precision(3);
   const std::string lower = run.measured ? "crop or resample the map" : "give a smaller --grid (nodes a pitch)" +
@@ -505,7 +511,7 @@ reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeighte
   if (const std::string problem = budget_problem(run, grid); !problem.empty()) throw input::UsageError(problem);
   if (progress && static_cast<double>(grid.nodes()) >= kLargeGrid) {
     std::cerr << "punchsweep surface: the cell on " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size()
-              << " caps (about " << static_cast<double>(grid.size()) * kBytesPerNode / 1e9
+              << " caps (about " << curve_bytes(run, grid) / 1e9
               << " GB); its curve takes minutes or more, with progress below\n";
   }
   if (run.measured) return run.measured->cell;
@@ -743,7 +749,7 @@ CurveCost cost_of(SurfaceRun& run) {
     g.nodes_per_pitch = nodes;
     g.nx = cell.grid.nx;
     g.ny = cell.grid.ny;
-    g.bytes = static_cast<double>(cell.grid.size()) * kBytesPerNode;
+    g.bytes = curve_bytes(run, cell.grid);
     g.cached = curve_is_cached(run.geometry, cell, reference::LoadCurveOptions{});
     g.seconds = g.cached ? 0.0 : estimated_curve_seconds(cell.grid, static_cast<double>(cost.caps));
     cost.grids.push_back(g);
