@@ -17,7 +17,7 @@
 #include <string_view>
 
 #include "app/point_command.hpp"
-#include "app/surface_command.hpp"
+#include "texture/surface_evaluation.hpp"
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
@@ -554,7 +554,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
   const po::options_description opts = point_options(material);
   // The options of `surface` the design does not take (--curve, --check) are refused by
   // name, not as "unknown option".
-  const po::options_description texture_options = surface_options(material);
+  const po::options_description texture_options = texture::surface_options(material);
   for (const auto& [name, value] : a.point) {
     if (opts.find_nothrow(name, false) == nullptr && texture_options.find_nothrow(name, false) != nullptr) {
       throw input::UsageError("--" + name + " is a texture option of `punchsweep surface` that design does not take: the "
@@ -699,7 +699,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
   }
   // A scattered supercell, a cell file or a height map: the load curve of its every cap
   // (surface's, to full contact, cached), read for each requirement's share of caps.
-  std::optional<SurfaceRun> off_curve;
+  std::optional<texture::SurfaceRun> off_curve;
   if (a.off_curve()) {
     if (box.dh > 0.0 || box.l > 0.0 || box.C > 0.0) {
       throw input::UsageError("--tolerance: the design of a scattered supercell, a cell file or a height map takes "
@@ -722,7 +722,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     double least = kInf;
     for (const Requirement& r : requirements) least = std::min(least, r.time);
     k = with(k, "times", input::json_number(std::isfinite(least) ? least : 0.0));
-    off_curve = evaluate_surface(k);
+    off_curve = texture::evaluate_surface(k);
     DesignTexture& t = *out.texture;
     t.supercell = off_curve->supercell;
     t.scatter = a.scatter.value_or("");
@@ -970,7 +970,7 @@ double edge_move(const DesignResult& coarse, const DesignResult& fine) {
 /// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
 DesignResult design(const DesignArgs& a) {
   if (!a.texture() || a.off_curve()) return design_pass(a, 0);  // (a curve holds its own grid)
-  if (const int nodes = read_grid(a.grid.value_or("auto")); nodes != 0) return design_pass(a, nodes);
+  if (const int nodes = texture::read_grid(a.grid.value_or("auto")); nodes != 0) return design_pass(a, nodes);
   DesignResult coarse = design_pass(a, kAutoGridStart);
   for (int nodes = 2 * kAutoGridStart;; nodes *= 2) {
     DesignResult fine = design_pass(a, nodes);
@@ -982,7 +982,7 @@ DesignResult design(const DesignArgs& a) {
       fine.notes.push_back("--grid auto: an edge still moves by " + model::number_text(fine.texture->grid_move, 2) +
                            " of itself from " + std::to_string(coarse.texture->nodes) + " to " + std::to_string(nodes) +
                            " nodes a pitch, more than the stated " + model::number_text(kAutoGridAccuracy, 2) +
-                           "; give a finer --grid (up to " + std::to_string(kMaxGridNodes) + ")");
+                           "; give a finer --grid (up to " + std::to_string(texture::kMaxGridNodes) + ")");
       return fine;
     }
     coarse = std::move(fine);

@@ -11,7 +11,7 @@
 #include "app/surface_command.hpp"
 #include "app/texture_map_run.hpp"
 #include "app/sweep_command.hpp"
-#include "app/periodic_tables.hpp"
+#include "texture/periodic_tables.hpp"
 #include "app/tables_command.hpp"
 #include "input/usage_error.hpp"
 #include "app/version.hpp"
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
-    punchsweep::app::use_table_cache();
+    punchsweep::texture::use_table_cache();
     if (args[0] == "point") return punchsweep::app::run_point_command(rest, std::cout);
     if (args[0] == "sweep") return punchsweep::app::run_sweep_command(rest);
     if (args[0] == "single-level") return punchsweep::app::run_single_level_command(rest, std::cout);

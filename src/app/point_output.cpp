@@ -209,20 +209,6 @@ std::string significant(double v, int digits) {
   return buf;
 }
 
-}  // namespace
-
-std::string knife_edge_note(const std::vector<model::TStarDerivative>& derivatives) {
-  const model::TStarDerivative* steepest = nullptr;
-  for (const model::TStarDerivative& d : derivatives) {
-    if (std::isfinite(d.elasticity) && (!steepest || std::abs(d.elasticity) > std::abs(steepest->elasticity))) steepest = &d;
-  }
-  if (!steepest || !(std::abs(steepest->elasticity) > 10.0)) return {};
-  return "t* is on a knife edge: x/t* d t*/dx = " + significant(steepest->elasticity, 3) + " for " +
-         std::string(steepest->parameter->name) + " (a 1% change moves t* by far more than 1%); --tolerance gives its range";
-}
-
-namespace {
-
 std::string fixed(double v, int width, int precision) {
   if (!std::isfinite(v)) return std::string(static_cast<std::size_t>(width) - 3, ' ') + "nan";
   char buf[64];
@@ -283,7 +269,7 @@ void write_table(std::ostream& out, const input::PointInputs& inputs, const mode
       }
     }
     out << (any ? "\n" : ": none (t* is not delayed here, or not smooth within the step)\n");
-    if (const std::string note = knife_edge_note(r.t_star_derivatives); !note.empty()) out << "  note: " << note << "\n";
+    if (const std::string note = model::knife_edge_note(r.t_star_derivatives); !note.empty()) out << "  note: " << note << "\n";
   }
   if (r.t_star_range) {
     const auto text = [&](double t) { return std::isinf(t) ? std::string("never") : number(t) + " " + inputs.time_unit; };

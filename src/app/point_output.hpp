@@ -47,10 +47,6 @@ struct PhysicalField {
 /// without R and a material. JSON's "physical" and "units" objects and Python's point() read it.
 std::vector<PhysicalField> physical_fields(const input::PointInputs& inputs, const model::PointResult& r);
 
-/// What a t* on a knife edge says, in `point` and `surface` alike: the input whose 1% moves
-/// t* most, where that is more than 10% (|x/t* d t*/dx| > 10); empty where no input does.
-std::string knife_edge_note(const std::vector<model::TStarDerivative>& derivatives);
-
 /// Writes one evaluated point. The keys are map::kQuantities' model quantities (a
 /// contract, in that order): regime, t_star (null for never), h_0, h_inf, valid (with
 /// reason after it), a1_inf, a2_inf, area_fraction_inf, and series with arrays t and the

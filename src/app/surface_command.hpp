@@ -5,81 +5,21 @@
 /// history, from the elastic load curve of its cell (docs/model.md, section 17): each
 /// level's touch (immediate, delayed t*, never), the areas and the sites in contact in time.
 
-#include <boost/program_options/options_description.hpp>
-
-#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
-#include "app/surface_run.hpp"
 #include "input/command_options.hpp"
-#include "reference/periodic_grid.hpp"
+#include "texture/surface_evaluation.hpp"
 
 namespace punchsweep::app {
-
-/// The most boundary-element nodes a pitch a texture's curve (or design) is solved on.
-inline constexpr int kMaxGridNodes = 2048;
-
-/// --grid TEXT: an even number of nodes a pitch in [4, kMaxGridNodes], or 0 for "auto";
-/// UsageError naming the value and the range otherwise.
-int read_grid(const std::string& text);
-
-/// The command's options (the point's for `material`'s law, the texture's, the grid's):
-/// `surface-map` takes the same.
-boost::program_options::options_description surface_options(const input::PointMaterial& material);
 
 /// `punchsweep surface ...`; returns the exit code, throws UsageError for bad input (before
 /// printing anything).
 int run_surface_command(const std::vector<std::string>& args, std::ostream& out);
 
-/// Each level's touch at more load points than the run's own, read off a curve of the run's
-/// texture (surface-map's pressures and law values, one row a point): `--grid auto` holds
-/// every one of them to its accuracy, as it holds the run's own.
-using MoreLoadPoints = std::function<std::vector<std::vector<model::LevelTouch>>(const SurfaceRun&, const model::LoadCurve&)>;
-
-/// The texture of `punchsweep surface` given as keywords (Python's), evaluated by the
-/// command's own options, checks and code; `also_held`: the load points --grid auto holds
-/// beside the run's own.
-SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
-
-/// Reads `keywords` as evaluate_surface does and throws input::UsageError for what it would
-/// refuse before building anything: a bad or missing option, a cell whose scales the
-/// boundary elements cannot take, a grid beyond the engine's budget. No curve is built, no
-/// cell made. Returns the estimated seconds of its curve(s) on one core
-/// (estimated_curve_seconds; 0 off the periodic tables; a cached curve not known here).
-double check_surface(const input::Keywords& keywords);
-
-/// The seconds a cell's load curve on `grid` takes to build on one core of this machine,
-/// estimated from the grid's nodes and the cell's caps: a power law fitted to measured
-/// curves (docs/performance.md, "A curve's cost"), within a factor of kCurveSecondsSpread
-/// of every one of them.
-double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps);
-inline constexpr double kCurveSecondsSpread = 2.0;
-
-/// What one texture's load curve asks, found before it is built (a dry run's answer):
-/// where it comes from, the grids it is built on (--grid auto: the grid it picks and the
-/// one of half its nodes, at least: it doubles where t* still moves), each grid's memory,
-/// whether the table cache holds its curve, and the seconds to build it on one core of
-/// this machine (estimated_curve_seconds), 0 where cached.
-struct CurveCost {
-  std::string source;  ///< "periodic tables" (no grid: read off the tables) or "cell"
-  bool auto_grid = false;
-  struct Grid {
-    int nodes_per_pitch = 0;  ///< 0: a measured map's pixels
-    int nx = 0, ny = 0;
-    double bytes = 0.0;       ///< the solve's memory
-    bool cached = false;
-    double seconds = 0.0;
-  };
-  std::vector<Grid> grids;
-  std::size_t caps = 0;
-  int levels = 0;
-};
-/// Throws input::UsageError for what evaluate_surface would refuse (check_surface).
-CurveCost curve_cost(const input::Keywords& keywords);
 /// `surface --dry-run`'s lines for `cost`.
-void write_curve_cost(std::ostream& out, const CurveCost& cost);
+void write_curve_cost(std::ostream& out, const texture::CurveCost& cost);
 
 /// The same, as the command's JSON text (what `--format json` prints): Python's surface().
 std::string surface_json(const input::Keywords& keywords);

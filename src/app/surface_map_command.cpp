@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "app/surface_command.hpp"
+#include "texture/surface_evaluation.hpp"
 #include "run/text_lines.hpp"
 #include "input/axis_parser.hpp"
 #include "input/scaled_value.hpp"
@@ -385,7 +385,7 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
   seconds_.assign(G, 0.0);
   for (std::size_t g = 0; g < G; ++g) {
     try {
-      seconds_[g] = check_surface(keywords_of(g));
+      seconds_[g] = texture::check_surface(keywords_of(g));
     } catch (const input::UsageError& e) {
       throw input::UsageError("geometry " + std::to_string(g + 1) + " (" + describe(g) + "): " + e.what());
     }
@@ -458,7 +458,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
     std::unique_ptr<model::CreepLaw> creep;
     std::optional<model::CreepWeightedLoad> load;
   };
-  const auto load_point = [&](const SurfaceRun& run, std::size_t p) {
+  const auto load_point = [&](const texture::SurfaceRun& run, std::size_t p) {
     LoadPoint out{{run.inputs.problem, run.inputs.law_values}, nullptr, std::nullopt};
     const std::vector<std::size_t> digits = digits_of(p, load_sizes);
     for (std::size_t a = 0; a < map.load.size(); ++a) {
@@ -471,7 +471,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   // --grid auto holds every load point's t* (not only the least pressure's, which sizes
   // the grid): a level whose touch load the grid moves by a little moves t* most where the
   // creep-weighted load reaches it slowly.
-  const MoreLoadPoints hold_every_load_point = [&](const SurfaceRun& run, const model::LoadCurve& curve) {
+  const texture::MoreLoadPoints hold_every_load_point = [&](const texture::SurfaceRun& run, const model::LoadCurve& curve) {
     std::vector<std::vector<model::LevelTouch>> rows;
     rows.reserve(P);
     for (std::size_t p = 0; p < P; ++p) rows.push_back(model::level_touches(curve, *load_point(run, p).load));
@@ -479,7 +479,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   };
 
   const auto start = std::chrono::steady_clock::now();
-  const SurfaceRun run = evaluate_surface(keywords, hold_every_load_point);
+  const texture::SurfaceRun run = texture::evaluate_surface(keywords, hold_every_load_point);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::size_t L = static_cast<std::size_t>(run.curve.levels());
   // The geometry's block: a map of this one geometry.
@@ -490,7 +490,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   block.times = run.times;
   size_arrays(block);
   block[kGrid][0] = run.curve.nx;
-  block[kFromTables][0] = run.curve_source == CurveSource::tables ? 1 : 0;
+  block[kFromTables][0] = run.curve_source == texture::CurveSource::tables ? 1 : 0;
   // Each level's touchdown load and whether the curve resolves it: the geometry's alone,
   // as the run read them.
   for (std::size_t level = 0; level < L; ++level) {
@@ -577,13 +577,13 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       const std::string& name = map.load[a].name;
       at_p.emplace_back(name == model::ramp_time_parameter().name ? "ramp" : name, text_of(map.load[a].values[digits[a]]));
     }
-    if (run.curve_source == CurveSource::tables) {
+    if (run.curve_source == texture::CurveSource::tables) {
       if (const std::string* grid = find(keywords, "grid")) at_p.emplace_back("grid", *grid);
     } else if (find(keywords, "height-map") == nullptr) {
       at_p.emplace_back("grid", std::to_string(run.grid_nodes));  // the curve's own
     }
     at_p.emplace_back("check", "true");
-    const SurfaceRun checked = evaluate_surface(at_p);
+    const texture::SurfaceRun checked = texture::evaluate_surface(at_p);
     const reference::CellReference& stepped = *checked.stepped;
     for (std::size_t level = 0; level < L; ++level) {
       block[kCheckRegime][p * L + level] = static_cast<std::int8_t>(stepped.level_regime[level]);
@@ -598,7 +598,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   values[kCaps] = static_cast<double>(block.caps);
   values[kE0] = run.inputs.scales.E0_star ? run.inputs.scales.E0_star->si() : 0.0;
   values[kSeconds] = seconds;
-  values[kSource] = run.curve_source == CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
+  values[kSource] = run.curve_source == texture::CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
   values[kTimes] = static_cast<double>(T);
   values.insert(values.end(), block.times.begin(), block.times.end());
   for_each_stored(block, [&](std::size_t q, std::size_t) { values.insert(values.end(), block[q].begin(), block[q].end()); });
@@ -859,7 +859,7 @@ po::options_description map_options(const input::PointMaterial& material) {
        "check_regime, check_t_star, check_area_fraction")
       ("check-seed", po::value<std::string>()->value_name("S")->default_value("1"), "the seed of --check-sample's draw");
   po::options_description opts;
-  opts.add(own).add(surface_options(material));
+  opts.add(own).add(texture::surface_options(material));
   return opts;
 }
 

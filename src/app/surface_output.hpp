@@ -6,13 +6,13 @@
 #include <iosfwd>
 
 #include "app/point_output.hpp"
-#include "app/surface_run.hpp"
+#include "texture/surface_run.hpp"
 
 namespace punchsweep::app {
 
 /// Writes the evaluated texture: per level its regime, t*, touchdown load, sensitivities and
 /// range; per time X, areas, caps touched, loads and validity; with --R and a material the
 /// physical units; with --check the time stepping's answers.
-void write_surface(std::ostream& out, OutputFormat format, const SurfaceRun& run);
+void write_surface(std::ostream& out, OutputFormat format, const texture::SurfaceRun& run);
 
 }  // namespace punchsweep::app

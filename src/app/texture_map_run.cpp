@@ -15,7 +15,7 @@
 
 #include <unistd.h>
 
-#include "app/surface_command.hpp"
+#include "texture/surface_evaluation.hpp"
 #include "app/surface_map_command.hpp"
 #include "input/usage_error.hpp"
 #include "io/encoded_tile.hpp"
@@ -95,7 +95,7 @@ void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ran
   std::size_t cached = 0, tables = 0, built = 0;
   std::map<std::string, std::size_t> groups;  // grids -> geometries
   for (std::size_t g = 0; g < G; ++g) {
-    const CurveCost cost = curve_cost(plan.keywords_of(g));
+    const texture::CurveCost cost = texture::curve_cost(plan.keywords_of(g));
     std::ostringstream what;
     double mine = 0.0;
     if (cost.source != "cell") {
@@ -104,7 +104,7 @@ void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ran
     } else {
       bool all_cached = true;
       for (std::size_t k = 0; k < cost.grids.size(); ++k) {
-        const CurveCost::Grid& grid = cost.grids[k];
+        const texture::CurveCost::Grid& grid = cost.grids[k];
         what << (k ? ", then " : "") << grid.nx << " x " << grid.ny << " nodes";
         if (grid.nodes_per_pitch > 0) what << " (" << grid.nodes_per_pitch << " a pitch)";
         what << (grid.cached ? " cached" : "");
@@ -141,7 +141,7 @@ void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ran
   // of a rank and the largest curve.
   const double wall = std::max(seconds / ranks, largest);
   out << "  estimated time: about " << seconds_text(wall) << " on " << ranks << " rank" << (ranks == 1 ? "" : "s") << " ("
-      << seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << kCurveSecondsSpread
+      << seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << texture::kCurveSecondsSpread
       << " on this machine's measurements; reading the load points adds little)\n";
   out << "  output: " << job.output << " (nothing written by a dry run)\n";
 }

@@ -33,7 +33,7 @@
 #include "app/point_command.hpp"
 #include "app/point_output.hpp"
 #include "app/reference_command.hpp"
-#include "app/periodic_tables.hpp"
+#include "texture/periodic_tables.hpp"
 #include "input/usage_error.hpp"
 #include "input/scaled_value.hpp"
 #include "map/quantities.hpp"
@@ -613,7 +613,7 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
                           n > 0 ? input::json_number(law_values[j][least]) : nominal_value(spec.parameters[j]));
   }
   keywords.emplace_back("times", "0");
-  const app::SurfaceRun run = app::evaluate_surface(keywords);
+  const texture::SurfaceRun run = texture::evaluate_surface(keywords);
   const std::size_t L = static_cast<std::size_t>(run.curve.levels());
   py::array_t<double> t_star({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
   py::array_t<std::int8_t> regime({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
@@ -643,7 +643,7 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "punchsweep's engine (the compiled part of the package punchsweep; use the package's functions)";
   // The refined model's tables from the same cache as the command line's ($PUNCHSWEEP_CACHE,
   // $XDG_CACHE_HOME/punchsweep, ~/.cache/punchsweep; off turns it off).
-  app::use_table_cache();
+  texture::use_table_cache();
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "app/periodic_tables.hpp"
+#include "texture/periodic_tables.hpp"
 #include "app/point_command.hpp"
 #include "app/reference_command.hpp"
-#include "app/table_cache.hpp"
+#include "texture/table_cache.hpp"
 #include "io/sha256.hpp"
 #include "model/periodic/periodic_table.hpp"
 #include "model/point/point_evaluation.hpp"
@@ -58,17 +58,17 @@ struct ScratchFolder {
 /// The model reads the shipped tables (what `punchsweep` and the Python module do, without
 /// a cache for the others).
 void use_shipped_tables() {
-  model::set_periodic_solution_source([](int s) { return app::periodic_solution_for(s, std::nullopt); });
+  model::set_periodic_solution_source([](int s) { return texture::periodic_solution_for(s, std::nullopt); });
 }
 
 }  // namespace
 
 TEST(ShippedTables, exist_for_the_default_exponents_and_pass_their_spot_check) {
   for (const int s : {1, 2, 3}) {
-    const std::optional<model::PeriodicTable> t = app::shipped_periodic_table(s);
+    const std::optional<model::PeriodicTable> t = texture::shipped_periodic_table(s);
     ASSERT_TRUE(t) << "s = " << s;
-    EXPECT_EQ(t->n, app::kPeriodicTableGrid);
-    EXPECT_TRUE(app::spot_check(*t, 1000 + s)) << "s = " << s;
+    EXPECT_EQ(t->n, texture::kPeriodicTableGrid);
+    EXPECT_TRUE(texture::spot_check(*t, 1000 + s)) << "s = " << s;
   }
 }
 
@@ -80,7 +80,7 @@ TEST(ShippedTables, meet_direct_solves_between_their_samples) {
   std::mt19937_64 random(2311);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const int s : {1, 2, 3}) {
-    const model::PeriodicTable t = *app::shipped_periodic_table(s);
+    const model::PeriodicTable t = *texture::shipped_periodic_table(s);
     const double spacing = 1.0 / t.n;
     for (int trial = 0; trial < 3; ++trial) {
       const double xi = std::exp(std::log(0.003) + unit(random) * std::log(t.xi_full_single() / 0.003));
@@ -122,20 +122,20 @@ TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
   const ScratchFolder scratch;
   // A cache folder that does not exist yet is made private (0700), as write_tables makes it.
   const std::filesystem::path folder = scratch.path / "cache";
-  app::TableOrigin origin{};
-  const auto built = app::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, app::TableOrigin::built);
+  texture::TableOrigin origin{};
+  const auto built = texture::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, texture::TableOrigin::built);
   EXPECT_EQ(std::filesystem::status(folder).permissions() & std::filesystem::perms::all,
             std::filesystem::perms::owner_all);
   EXPECT_EQ(std::filesystem::status(folder / "key").permissions() & std::filesystem::perms::all,
             std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
   const std::filesystem::path file = folder / model::PeriodicTable::table_name(4, 32);
   ASSERT_TRUE(std::filesystem::exists(file));
-  const auto again = app::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, app::TableOrigin::cache);
+  const auto again = texture::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, texture::TableOrigin::cache);
   EXPECT_EQ(again->tables(), built->tables());
   // Honest tables pass the boundary elements' spot check whatever sample it draws.
-  for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_TRUE(app::spot_check(*built, seed)) << seed;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_TRUE(texture::spot_check(*built, seed)) << seed;
 
   // A forgery of the whole surface breaks its bookkeeping (the last sample of a row is full
   // contact, the areas the level shares of the cell).
@@ -149,9 +149,9 @@ TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
   ASSERT_TRUE(model::PeriodicTable::from_tables(forged.tables()));
   for (const bool own_key : {false, true}) {
     forge(file, forged.tables(), own_key);
-    EXPECT_TRUE(app::read_tables(file).empty()) << own_key;
-    const auto rebuilt = app::periodic_table_for(4, 32, folder, true, {}, &origin);
-    EXPECT_EQ(origin, app::TableOrigin::built) << own_key;
+    EXPECT_TRUE(texture::read_tables(file).empty()) << own_key;
+    const auto rebuilt = texture::periodic_table_for(4, 32, folder, true, {}, &origin);
+    EXPECT_EQ(origin, texture::TableOrigin::built) << own_key;
     EXPECT_EQ(rebuilt->tables(), built->tables());
   }
   // Every edited number is caught, not only a sampled one.
@@ -162,41 +162,41 @@ TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
     double& x = edited[random() % edited.size()];
     x = std::nextafter(x, std::numeric_limits<double>::infinity());  // the last bit
     forge(file, edited, false);
-    EXPECT_TRUE(app::read_tables(file).empty()) << trial;
+    EXPECT_TRUE(texture::read_tables(file).empty()) << trial;
   }
-  app::write_tables(file, honest);
-  EXPECT_EQ(app::read_tables(file), honest);
+  texture::write_tables(file, honest);
+  EXPECT_EQ(texture::read_tables(file), honest);
   // A key others can read is not believed: nothing is read from or written to that cache.
   std::filesystem::permissions(folder / "key", std::filesystem::perms::group_read, std::filesystem::perm_options::add);
-  EXPECT_TRUE(app::read_tables(file).empty());
-  EXPECT_NE(app::untrusted_folder(folder).find("key"), std::string::npos);
+  EXPECT_TRUE(texture::read_tables(file).empty());
+  EXPECT_NE(texture::untrusted_folder(folder).find("key"), std::string::npos);
   std::filesystem::remove(folder / "key");  // a new key: the old files are built again
-  EXPECT_EQ(app::untrusted_folder(folder), "");
-  app::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, app::TableOrigin::built);
+  EXPECT_EQ(texture::untrusted_folder(folder), "");
+  texture::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, texture::TableOrigin::built);
 
   // A damaged file (cut short) is not read either.
   std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
-  app::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, app::TableOrigin::built);
+  texture::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, texture::TableOrigin::built);
 }
 
 // Builders that start together build once: the others wait on the lock and read the file.
 TEST(PeriodicTableCache, concurrent_builders_build_once) {
   const ScratchFolder folder;
-  std::vector<std::future<app::TableOrigin>> builders;
+  std::vector<std::future<texture::TableOrigin>> builders;
   for (int k = 0; k < 3; ++k) {
     builders.push_back(std::async(std::launch::async, [&] {
-      app::TableOrigin origin{};
-      app::periodic_table_for(5, 32, folder.path, true, {}, &origin);
+      texture::TableOrigin origin{};
+      texture::periodic_table_for(5, 32, folder.path, true, {}, &origin);
       return origin;
     }));
   }
   int built = 0, cached = 0;
   for (auto& b : builders) {
-    const app::TableOrigin origin = b.get();
-    built += origin == app::TableOrigin::built;
-    cached += origin == app::TableOrigin::cache;
+    const texture::TableOrigin origin = b.get();
+    built += origin == texture::TableOrigin::built;
+    cached += origin == texture::TableOrigin::cache;
   }
   EXPECT_EQ(built, 1);
   EXPECT_EQ(cached, 2);
@@ -272,11 +272,11 @@ TEST(PeriodicModel, merged_spots_are_valid) {
 // A table whose pressures fall somewhere along the loads (a contact that recedes) makes
 // every point that crosses that stretch `unloading`, with the reason.
 TEST(PeriodicModel, unloading_tables_flag_their_points) {
-  const model::PeriodicTable honest = *app::shipped_periodic_table(2);
+  const model::PeriodicTable honest = *texture::shipped_periodic_table(2);
   model::PeriodicTable receding = honest;
   for (auto& m : receding.monotone2) m = 0;
   receding.finish();
-  const auto small = app::small_spot_table_for(2);
+  const auto small = texture::small_spot_table_for(2);
   const auto solution_of = [&](const model::PeriodicTable& tables) {
     return std::make_shared<const model::PeriodicSolution>(std::make_shared<const model::PeriodicTable>(tables), small);
   };

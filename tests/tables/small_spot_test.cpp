@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/periodic_tables.hpp"
+#include "texture/periodic_tables.hpp"
 #include "app/point_command.hpp"
 #include "model/periodic/periodic_solution.hpp"
 #include "model/shells/single_level_shells.hpp"
@@ -56,7 +56,7 @@ std::string text(double x) {
 
 /// The model reads the shipped tables (what `punchsweep` and the Python module do).
 void use_shipped_tables() {
-  model::set_periodic_solution_source([](int s) { return app::periodic_solution_for(s, std::nullopt); });
+  model::set_periodic_solution_source([](int s) { return texture::periodic_solution_for(s, std::nullopt); });
 }
 
 }  // namespace
@@ -65,7 +65,7 @@ void use_shipped_tables() {
 // machine's rounding may move the last bits).
 TEST(SmallSpotTable, shipped_ones_are_what_the_builder_makes) {
   for (const int s : {1, 2, 3}) {
-    const std::optional<model::SmallSpotTable> shipped = app::shipped_small_spot_table(s);
+    const std::optional<model::SmallSpotTable> shipped = texture::shipped_small_spot_table(s);
     ASSERT_TRUE(shipped) << s;
     const std::vector<double> a = shipped->tables(), b = model::build_small_spot_table(s).tables();
     ASSERT_EQ(a.size(), b.size());
@@ -130,11 +130,11 @@ void expect_the_isolated_punch_in_the_far_field(const model::SmallSpotTable& t) 
 
 TEST(SmallSpotTable, meets_the_refined_localization_between_its_samples) {
   std::mt19937_64 random(34);
-  for (const int s : {1, 2, 3}) expect_meets_the_refined_localization(*app::shipped_small_spot_table(s), 25, random);
+  for (const int s : {1, 2, 3}) expect_meets_the_refined_localization(*texture::shipped_small_spot_table(s), 25, random);
 }
 
 TEST(SmallSpotTable, tends_to_the_isolated_punch_in_the_lattices_far_field) {
-  for (const int s : {1, 2, 3}) expect_the_isolated_punch_in_the_far_field(*app::shipped_small_spot_table(s));
+  for (const int s : {1, 2, 3}) expect_the_isolated_punch_in_the_far_field(*texture::shipped_small_spot_table(s));
 }
 
 // Every exponent the periodic model takes has its table, built as on first use: s = 7 to 16
@@ -153,7 +153,7 @@ TEST(SmallSpotTable, every_exponent_is_built_and_meets_its_limits) {
 }
 
 TEST(SmallSpotTable, refuses_inconsistent_numbers) {
-  const model::SmallSpotTable t = *app::shipped_small_spot_table(2);
+  const model::SmallSpotTable t = *texture::shipped_small_spot_table(2);
   ASSERT_TRUE(model::SmallSpotTable::from_tables(t.tables()));
   std::vector<double> numbers = t.tables();
   numbers.pop_back();
@@ -172,7 +172,7 @@ TEST(SmallSpotTable, refuses_inconsistent_numbers) {
 // the radii's; the bounds are the tables' accuracy against N = 2048, docs/model.md, 14.7).
 TEST(PeriodicSolution, hands_over_smoothly) {
   for (const int s : {1, 2, 3}) {
-    const std::shared_ptr<const model::PeriodicSolution> p = app::periodic_solution_for(s, std::nullopt, true);
+    const std::shared_ptr<const model::PeriodicSolution> p = texture::periodic_solution_for(s, std::nullopt, true);
     const model::SmallSpotTable& small = p->small();
     const int n = s + 1;
     const auto xi_of = [n](double v) { return std::pow(v, n); };
@@ -217,7 +217,7 @@ TEST(PeriodicSolution, touches_down_where_h_says_and_starts_from_the_single_leve
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const int s : {1, 2, 3}) {
-    const std::shared_ptr<const model::PeriodicSolution> p = app::periodic_solution_for(s, std::nullopt, true);
+    const std::shared_ptr<const model::PeriodicSolution> p = texture::periodic_solution_for(s, std::nullopt, true);
     const model::SmallSpotTable& small = p->small();
     for (const double xi : {1e-9, 1e-4, 0.5 * small.xi_gap_hand(), 0.5 * (small.xi_gap_hand() + small.xi_gap_top()),
                             0.5 * (small.xi_gap_top() + small.xi_hand()), 0.5 * (small.xi_hand() + small.xi_top()),

@@ -85,7 +85,7 @@ class PeriodicSolution {
 };
 
 /// Where the model gets the solution of s: set by the application (the shipped tables, a
-/// cache folder, or built; app/periodic_tables.hpp). Without a source the periodic model
+/// cache folder, or built; texture/periodic_tables.hpp). Without a source the periodic model
 /// cannot be evaluated (std::runtime_error naming what is missing).
 using PeriodicSolutionSource = std::function<std::shared_ptr<const PeriodicSolution>(int s)>;
 void set_periodic_solution_source(PeriodicSolutionSource source);

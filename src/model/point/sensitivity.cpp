@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "model/laws/material.hpp"
@@ -210,6 +212,18 @@ TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, 
   std::vector<Tolerance> box;
   for (const StatedTolerance& t : stated) box.push_back(t.at(*point.field(position(point, t.parameter))));
   return range_over(point, law, law_values, box);
+}
+
+std::string knife_edge_note(const std::vector<TStarDerivative>& derivatives) {
+  const TStarDerivative* steepest = nullptr;
+  for (const TStarDerivative& d : derivatives) {
+    if (std::isfinite(d.elasticity) && (!steepest || std::abs(d.elasticity) > std::abs(steepest->elasticity))) steepest = &d;
+  }
+  if (!steepest || !(std::abs(steepest->elasticity) > 10.0)) return {};
+  char elasticity_text[64];  // three significant digits
+  std::snprintf(elasticity_text, sizeof elasticity_text, "%.3g", steepest->elasticity);
+  return "t* is on a knife edge: x/t* d t*/dx = " + std::string(elasticity_text) + " for " +
+         std::string(steepest->parameter->name) + " (a 1% change moves t* by far more than 1%); --tolerance gives its range";
 }
 
 }  // namespace punchsweep::model

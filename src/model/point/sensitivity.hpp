@@ -101,4 +101,8 @@ TStarRange t_star_range(const ContactProblem& problem, const CreepLawSpec& law, 
 /// The most tolerances a box may have (2^6 = 64 corners).
 inline constexpr std::size_t kMaxTolerances = 6;
 
+/// What a t* on a knife edge says, in `point` and `surface` alike: the input whose 1% moves
+/// t* most, where that is more than 10% (|x/t* d t*/dx| > 10); empty where no input does.
+std::string knife_edge_note(const std::vector<TStarDerivative>& derivatives);
+
 }  // namespace punchsweep::model

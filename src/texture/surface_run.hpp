@@ -15,7 +15,7 @@
 #include "reference/cell_stepping.hpp"
 #include "reference/measured_cell.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::texture {
 
 /// Where a texture's load curve comes from (--curve): the periodic model's tables
 /// (model/surface/periodic_curve.hpp; the two-level square lattice), the cell's own boundary
@@ -47,7 +47,7 @@ struct SurfaceRun {
   model::LoadCurve curve;
   model::SurfaceHistory history;
   double curve_seconds = 0.0;
-  bool curve_cached = false;  ///< read from the table cache (app/curve_cache.hpp)
+  bool curve_cached = false;  ///< read from the table cache (texture/curve_cache.hpp)
   bool check = false;         ///< --check: step the same cell in time too
   std::vector<model::Tolerance> tolerances;  ///< --tolerance: on the pressure and the law's parameters
   /// Per level: d t*/dx along pbar and the law's parameters (empty for level 0), and the
@@ -61,4 +61,4 @@ struct SurfaceRun {
   double check_t_star_resolution = 0.0;
 };
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::texture

@@ -1,4 +1,4 @@
-#include "app/curve_cache.hpp"
+#include "texture/curve_cache.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "app/table_cache.hpp"
+#include "texture/table_cache.hpp"
 #include "io/sha256.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::texture {
 
 namespace {
 
@@ -119,4 +119,4 @@ bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell&
   return folder && saved_curve(cache_entry(*folder, curve_key(geometry, cell, options))).has_value();
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::texture

@@ -1,0 +1,792 @@
+#include "texture/surface_evaluation.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <utility>
+
+#include "texture/curve_cache.hpp"
+#include "input/cell_file.hpp"
+#include "input/height_map.hpp"
+#include "input/scaled_value.hpp"
+#include "input/usage_error.hpp"
+#include "input/value_parsing.hpp"
+#include "model/periodic/periodic_model.hpp"
+#include "model/surface/periodic_curve.hpp"
+#include "model/surface/surface_sensitivity.hpp"
+#include "reference/cell_stepping.hpp"
+#include "reference/load_curve.hpp"
+#include "reference/measured_cell.hpp"
+#include "reference/reference_point.hpp"
+#include "reference/periodic_grid.hpp"
+#include "sweep/reproducible_fft.hpp"
+
+namespace po = boost::program_options;
+
+namespace punchsweep::texture {
+namespace {
+
+/// --grid auto: the least nodes a pitch that give the
+/// smallest spot the times meet a radius of kAutoSpotRadius node spacings, within
+/// [kAutoMin, kAutoMaxNodes] (past it the snapshots below the curve's resolution are flagged).
+constexpr int kAutoMin = 64;
+constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
+/// --grid auto's accuracy of an area fraction (the stated 1%), estimated as a third of its
+/// move from the grid of half the nodes.
+constexpr double kAutoAreaAccuracy = 1e-2;
+/// The budget of one curve: at most kMaxNodes nodes (a 4096 x 4096 height map; the
+/// boundary elements hold about kBytesPerNode a node, measured: 68 MB for 512 x 512), and
+/// nodes x caps at most kMaxNodeCaps (measured: an 8 x 8 two-level supercell, 128 caps on
+/// 512 x 512 nodes, 3.4e7 node-caps, took 470 s on one core; the budget is some 30 times that).
+constexpr double kMaxNodes = 4096.0 * 4096.0;
+/// The scales the boundary elements take (scale_problem): cell lengths and the relief over
+/// the cell, in R.
+constexpr double kMinCellLength = 1e-6, kMaxCellLength = 1e6;
+constexpr double kMinRelief = 1e-30, kMaxRelief = 1e8;
+constexpr double kBytesPerNode = 260.0;
+/// From this many nodes a curve's setup is said on stderr, with its memory.
+constexpr double kLargeGrid = 1048576.0;
+constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
+/// estimated_curve_seconds' power law: seconds = scale x nodes^node_power x caps^cap_power,
+/// times `mirrored` on a grid solved as its quarter. Fitted to 16 curves built on one core
+/// here (square, hexagonal, three levels, 2x2 and 4x4 scattered supercells; 1024 to 113664
+/// nodes, 2 to 32 caps; 0.05 to 30 s): each within a factor 1.91 of its estimate
+/// (docs/performance.md, "A curve's cost").
+constexpr double kCurveSecondsScale = 1.68e-5, kCurveSecondsNodePower = 1.29, kCurveSecondsCapPower = 0.15,
+                 kCurveSecondsMirrored = 0.31;
+/// The largest supercell: K x K lattice cells.
+constexpr int kMaxSupercell = 32;
+
+/// --scatter's text: normal:SD, uniform:HALFWIDTH (lengths, >= 0) or list:V1,V2,...
+model::HeightScatter read_scatter(const std::string& text, const input::PhysicalScales& scales) {
+  const std::string valid = "normal:SD, uniform:HALFWIDTH (a length >= 0) or list:V1,V2,... (lengths)";
+  const std::size_t colon = text.find(':');
+  const std::string kind = text.substr(0, colon), rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+  const auto length = [&](const std::string& value) { return input::read_length(value, scales, "--scatter"); };
+  model::HeightScatter out;
+  if (kind == "normal" || kind == "uniform") {
+    out.kind = kind == "normal" ? model::HeightScatter::Kind::normal : model::HeightScatter::Kind::uniform;
+    out.width = length(rest);
+    if (!(std::isfinite(out.width) && out.width >= 0.0)) {
+      throw input::UsageError("--scatter = '" + text + "' is outside its range: " + valid);
+    }
+  } else if (kind == "list") {
+    out.kind = model::HeightScatter::Kind::list;
+    std::stringstream items(rest);
+    for (std::string item; std::getline(items, item, ',');) {
+      const double v = length(item);
+      if (!std::isfinite(v)) throw input::UsageError("--scatter = '" + text + "': " + item + " is not finite");
+      out.values.push_back(v);
+    }
+  } else {
+    throw input::UsageError("--scatter = '" + text + "' is not one of: " + valid);
+  }
+  return out;
+}
+
+}  // namespace
+
+po::options_description surface_options(const input::PointMaterial& material) {
+  po::options_description opts(
+      "punchsweep surface: when each level of a periodic texture touches a creeping material, and\n"
+      "the contact areas in time, from the elastic load curve of the texture's cell (boundary\n"
+      "elements continued from first to full contact; docs/model.md, section 17).\n\n"
+      "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), areas in R^2 and loads\n"
+      "in R^2 E0* per cell, time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
+  input::add_point_options(opts, material.spec);
+  input::add_material_options(opts);
+  input::add_tolerance_option(opts);
+  opts.add_options()
+      ("lattice", po::value<std::string>()->value_name("KIND")->default_value("square"),
+       "square: level 1 at the squares' centres, level 2 at the edges' midpoints; hexagonal: the "
+       "densest packing, level 1 at the triangles' centres (with --dh2: the upward ones, level 2 the "
+       "downward ones)")
+      ("dh2", po::value<std::string>()->value_name("DH2"),
+       "a third level, this far below the tallest tips (R, or a length with --R); >= 0")
+      ("cell", po::value<std::string>()->value_name("FILE"),
+       "any rectangular periodic cell instead of a lattice: a [cell] file of Lx, Ly, s, C and one "
+       "'site = x, y, drop, level[, s, C]' line per punch (docs/cli.md); --grid then counts nodes along Lx")
+      ("height-map", po::value<std::string>()->value_name("FILE"),
+       "a measured period of a texture: a height map (CSV rows along y, a 2-D float .npy, or the NetCDF "
+       "file SurfaceTopography's to_netcdf writes, its lengths and unit read from it), one "
+       "boundary-element node per pixel (an even count each way); its summits are the caps followed")
+      ("pixel", po::value<std::string>()->value_name("SIZE"),
+       "the height map's pixel (a length: 0.5um with --R, or in R); a NetCDF map that states its lengths gives it")
+      ("height-unit", po::value<std::string>()->value_name("UNIT")->default_value("R"),
+       "the unit of the map's heights: R, or a length unit with --R (um, nm)")
+      ("summit-radius", po::value<std::string>()->value_name("L"),
+       "a summit is higher than every pixel within this length (default 3 pixels)")
+      ("level-gap", po::value<std::string>()->value_name("L"),
+       "summits sorted by depth start a new level where the depth jumps by more than L (default: one level)")
+      ("supercell", po::value<int>()->value_name("K")->default_value(1),
+       "K x K lattice cells as one periodic cell, each cap's height scattered by --scatter: an integer "
+       "in [1, 32]")
+      ("scatter", po::value<std::string>()->value_name("DIST"),
+       "each cap's height change (a positive one lowers the cap): normal:SD, uniform:HALFWIDTH (lengths "
+       "in R, or with a unit and --R; >= 0) or list:V1,V2,... (one per cap of the supercell, in R); "
+       "needs --supercell")
+      ("seed", po::value<std::string>()->value_name("N")->default_value("1"),
+       "the seed of --scatter's draws, an integer in [0, 2^64-1] (std::mt19937_64, fully specified: the same seed gives the same caps)")
+      ("check", po::bool_switch(),
+       "also step the same cell in time (the time-stepping boundary elements, which assume nothing of the "
+       "contact's history) and print its touch times, areas and loads beside the curve's")
+      ("curve", po::value<std::string>()->value_name("KIND")->default_value("auto"),
+       "where the elastic load curve comes from: tables (the periodic model's, n = 512 with the small-spot "
+       "table below: the two-level square lattice only, as `point` reads them), cell (the cell's own "
+       "boundary elements), or auto (tables where they answer, else cell; a --grid asks for cell)")
+      ("grid", po::value<std::string>()->value_name("N")->default_value("auto"),
+       "boundary-element nodes per pitch: an even integer in [4, 2048], or auto (the smallest spot the "
+       "times meet spans a radius of 13 nodes; 64 to 512)")
+      ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
+       "output format: table, json or csv");
+  return opts;
+}
+
+int read_grid(const std::string& text) {
+  if (text == "auto") return 0;
+  int nodes = -1;  // (not an integer: refused below with the option's range)
+  try {
+    nodes = input::parse_integer(text, "--grid");
+  } catch (const input::UsageError&) {
+  }
+  if (nodes < 4 || nodes > kMaxGridNodes || nodes % 2 != 0) {
+    throw input::UsageError("--grid = " + text + " is outside its range: an even integer in [4, " +
+                            std::to_string(kMaxGridNodes) + "], or auto");
+  }
+  return nodes;
+}
+
+namespace {
+
+/// --height-map FILE with --pixel, --height-unit, --summit-radius and --level-gap: the
+/// measured cell, lengths in R. A NetCDF map that states its lengths and unit gives the
+/// pixel and the heights' unit (the options then override it); `notes` gets what the
+/// reading says of the map.
+reference::MeasuredCell read_measured(const po::variables_map& vm, const input::PhysicalScales& scales,
+                                      std::vector<std::string>* notes) {
+  const std::string path = vm["height-map"].as<std::string>();
+  const input::HeightMap map = input::read_height_map(path);
+  notes->insert(notes->end(), map.notes.begin(), map.notes.end());
+  const auto read_length = [&](const char* option, const std::string& text) {
+    const double value = input::read_length(text, scales, std::string("--") + option);
+    if (!(std::isfinite(value) && value > 0.0)) {
+      throw input::UsageError(std::string("--") + option + " = " + text + " is outside its range: a length > 0");
+    }
+    return value;
+  };
+  // The file's own lengths (a NetCDF map): its pixel, square, in its unit (or in R without one).
+  std::optional<std::string> stated_pixel;
+  if (map.length_x > 0.0 && map.length_y > 0.0) {
+    const double px = map.length_x / static_cast<double>(map.nx), py = map.length_y / static_cast<double>(map.ny);
+    if (std::abs(px - py) > 1e-9 * px) {
+      throw input::UsageError(path + ": pixels of " + input::json_number(px) + " x " + input::json_number(py) + " " +
+                              (map.unit.empty() ? "R" : map.unit) + "; the boundary elements need square pixels");
+    }
+    stated_pixel = input::json_number(px) + map.unit;
+    if (!map.unit.empty() && !scales.R && !vm.count("pixel")) {
+      throw input::UsageError(path + ": its lengths and heights are in " + map.unit +
+                              ": give --R (the punch's radius of curvature, e.g. 80um) to read them in R");
+    }
+  }
+  if (!vm.count("pixel") && !stated_pixel) {
+    throw input::UsageError("--height-map needs --pixel SIZE, the map's pixel (a length: 0.5um with --R, or in R)");
+  }
+  if (vm.count("pixel") && stated_pixel) {
+    notes->push_back("--pixel " + vm["pixel"].as<std::string>() + " replaces the map's own pixel, " + *stated_pixel);
+  }
+  const double pixel = read_length("pixel", vm.count("pixel") ? vm["pixel"].as<std::string>() : *stated_pixel);
+  // The heights' unit: --height-unit where given, else the file's, else R.
+  const std::string unit = !vm["height-unit"].defaulted() || map.unit.empty() ? vm["height-unit"].as<std::string>() : map.unit;
+  const double per_unit = unit == "R" ? 1.0 : read_length("height-unit", "1" + unit);
+  if (map.periodic == 0) {
+    notes->push_back(path + " says it is not periodic (x:periodic = 0): the engine repeats it as one period, so its "
+                     "opposite edges meet; crop it to a whole period for a texture's answer");
+  }
+  if (map.nx % 2 != 0 || map.ny % 2 != 0) {
+    throw input::UsageError(path + ": " + std::to_string(map.nx) + " x " + std::to_string(map.ny) +
+                            " pixels; the boundary elements need an even count each way (crop a row or column)");
+  }
+  const double radius = vm.count("summit-radius") ? read_length("summit-radius", vm["summit-radius"].as<std::string>()) : 3.0 * pixel;
+  if (radius < pixel) throw input::UsageError("--summit-radius is under one pixel: a summit needs neighbours to be above");
+  const double gap = vm.count("level-gap") ? read_length("level-gap", vm["level-gap"].as<std::string>())
+                                           : std::numeric_limits<double>::infinity();
+  std::vector<double> z = map.height;
+  for (double& v : z) v *= per_unit;
+  return reference::make_measured_cell(z, map.nx, map.ny, pixel, radius, gap);
+}
+
+}  // namespace
+
+SurfaceRun read_surface(const po::variables_map& given, const input::PointMaterial& material) {
+  SurfaceRun run;
+  po::variables_map vm = given;
+  std::optional<model::CellGeometry> cell;
+  std::vector<std::string> map_notes;  // what reading a height map or a cell file says of it
+  const bool measured = given.count("height-map") > 0;
+  if (given.count("cell") || measured) {
+    const std::string source = measured ? "--height-map" : "--cell";
+    if (given.count("cell") && measured) throw input::UsageError("--cell beside --height-map: give one texture");
+    for (const char* name : {"l", "dh", "dh2", "s", "C", "lattice"}) {
+      if (given.count(name) && !given[name].defaulted()) {
+        throw input::UsageError(std::string("--") + name + " beside " + source + ": the " +
+                                (measured ? "height map" : "cell file") + " gives the cell, its sites and their shapes");
+      }
+    }
+    const input::PhysicalScales scales = input::read_physical_scales(given, material.material.get());
+    if (measured) {
+      for (const char* name : {"grid", "supercell", "scatter"}) {
+        if (given.count(name) && !given[name].defaulted()) {
+          throw input::UsageError(std::string("--") + name + " beside --height-map: the map's pixels are the grid and its caps");
+        }
+      }
+      run.measured = read_measured(given, scales, &map_notes);
+      cell = run.measured->geometry;
+      run.cell_file = given["height-map"].as<std::string>();
+    } else {
+      run.cell_file = given["cell"].as<std::string>();
+      cell = input::read_cell_file(run.cell_file, scales, &map_notes);
+    }
+    // The point's reading of the material and the load reads a cell too: the texture's
+    // (taken out of the inputs' echo below).
+    const model::Site& first = cell->sites.front();
+    const auto put = [&vm](const char* name, const std::string& text) {
+      vm.erase(name);
+      vm.emplace(name, po::variable_value(boost::any(text), false));
+    };
+    put("l", input::json_number(cell->Lx));
+    put("dh", "0");
+    put("s", std::to_string(first.shape.s));
+    put("C", input::json_number(first.shape.C));
+  }
+  run.inputs = input::read_point_inputs(vm, material);
+  run.inputs.notes.insert(run.inputs.notes.end(), map_notes.begin(), map_notes.end());
+  if (cell) {
+    std::erase_if(run.inputs.values, [](const auto& v) { return v.first->name == "l" || v.first->name == "dh" || v.first->name == "s" || v.first->name == "C"; });
+  }
+  run.times = input::read_times(vm, run.inputs.scales);
+  run.tolerances = input::read_tolerances(vm, run.inputs);
+  for (const model::Tolerance& t : run.tolerances) {
+    if (t.parameter->name == "l" || t.parameter->name == "dh" || t.parameter->name == "C") {
+      throw input::UsageError("--tolerance " + std::string(t.parameter->name) +
+                              ": a tolerance on the texture's geometry needs a load curve per corner; surface takes "
+                              "tolerances on the pressure and the creep law's parameters (pressure, T, temperature)");
+    }
+  }
+  run.lattice = input::read_choice(vm, "lattice", {"square", "hexagonal"}) == "square" ? model::LatticeKind::square
+                                                                                       : model::LatticeKind::hexagonal;
+  std::vector<double> drops{run.inputs.problem.dh};
+  if (vm.count("dh2")) {
+    const model::Parameter* dh2 = model::texture_parameter(model::kThirdLevelDrop);
+    drops.push_back(input::read_parameter(vm, *dh2, &run.inputs.scales));
+    // Echoed with the inputs, after dh (the table's first line, JSON's "inputs").
+    auto after = std::find_if(run.inputs.values.begin(), run.inputs.values.end(), [](const auto& v) { return v.first->name == "dh"; });
+    run.inputs.values.emplace(after == run.inputs.values.end() ? after : after + 1, dh2, drops.back());
+  }
+  run.grid_nodes = read_grid(vm["grid"].as<std::string>());
+  run.check = vm.count("check") && vm["check"].as<bool>();
+  // The periodic model's tables are the two-level square lattice's, on their own grid.
+  const std::string curve = input::read_choice(vm, "curve", {"auto", "tables", "cell"});
+  const bool paper_lattice = !cell && run.lattice == model::LatticeKind::square && drops.size() == 1 &&
+                             vm["supercell"].as<int>() == 1;
+  if (curve == "tables" && !paper_lattice) {
+    throw input::UsageError("--curve tables: the periodic model's tables are the two-level square lattice's (without --dh2, "
+                            "--cell, --height-map, --supercell or --lattice hexagonal); use --curve cell or auto");
+  }
+  // (The tables answer s up to Localization::kMaxPeriodicExponent; auto takes the cell beyond.)
+  const std::string beyond_tables = model::Localization{.periodic = true}.exponent_error(run.inputs.problem.shape.s);
+  if (curve == "tables" && !beyond_tables.empty()) throw input::UsageError("--curve tables: " + beyond_tables);
+  if (curve == "tables" && run.grid_nodes != 0) {
+    throw input::UsageError("--grid beside --curve tables: the tables' grid is their own (512 nodes per pitch)");
+  }
+  run.curve_source = curve == "cell" || !paper_lattice || run.grid_nodes != 0 || !beyond_tables.empty() ? CurveSource::cell
+                     : curve == "tables"                                      ? CurveSource::tables
+                                                                              : CurveSource::tables_or_cell;
+  run.geometry = cell ? *cell : model::lattice_cell(run.lattice, run.inputs.problem.l, run.inputs.problem.shape, drops);
+  run.supercell = vm["supercell"].as<int>();
+  if (run.supercell < 1 || run.supercell > kMaxSupercell) {
+    throw input::UsageError("--supercell = " + std::to_string(run.supercell) + " is outside its range: an integer in [1, " +
+                            std::to_string(kMaxSupercell) + "]");
+  }
+  const std::uint64_t seed = input::parse_seed(vm["seed"].as<std::string>(), "--seed");
+  if (vm.count("scatter")) {
+    if (run.supercell == 1 && vm["supercell"].defaulted()) {
+      throw input::UsageError("--scatter needs --supercell K (the caps whose heights scatter: K x K cells)");
+    }
+    run.scatter = read_scatter(vm["scatter"].as<std::string>(), run.inputs.scales);
+    run.scatter.seed = seed;
+    const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
+    if (run.scatter.kind == model::HeightScatter::Kind::list && run.scatter.values.size() != caps) {
+      throw input::UsageError("--scatter list has " + std::to_string(run.scatter.values.size()) + " values: it needs one per cap, " +
+                              std::to_string(caps) + " for " + std::to_string(run.supercell) + " x " +
+                              std::to_string(run.supercell) + " cells of " + std::to_string(run.geometry.sites.size()) +
+                              " caps");
+    }
+  }
+  if (run.supercell > 1) run.geometry = model::supercell(run.geometry, run.supercell, run.scatter);
+  return run;
+}
+
+namespace {
+
+/// --grid auto: nodes per pitch that give the tallest sites' spot, as an isolated punch's, a
+/// radius of kAutoSpotRadius spacings at the least positive load the times meet.
+int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
+  double X = std::numeric_limits<double>::infinity();
+  for (const double t : run.times) {
+    const double x = t > 0.0 ? load(t) : load.initial();
+    if (x > 0.0) X = std::min(X, x);
+  }
+  if (!std::isfinite(X)) return kAutoMin;
+  // The load spread over the tallest level's caps (all of them: in a scattered supercell
+  // the nearly tallest touch at once, each with a small spot).
+  double count = 0.0;
+  for (const model::Site& site : run.geometry.sites) count += site.level == 0 ? 1.0 : 0.0;
+  const model::Shape& shape = run.geometry.sites.front().shape;
+  const double a = std::pow(X * run.geometry.Lx * run.geometry.Ly / count / model::load_coefficient(shape), 1.0 / (shape.s + 1));
+  // (A multiple of 4: the grid of half its nodes, which the curve is held to, is even.)
+  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / run.supercell / a / 4.0) * 4.0;
+  return static_cast<int>(std::clamp(n, static_cast<double>(kAutoMin), static_cast<double>(kAutoMaxNodes)));
+}
+
+reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes);
+std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid);
+
+/// --grid auto: the curve on the grid auto_grid picks, held to the curve on half its nodes:
+/// where some level's t* (under `load`) moves between them by more than kAutoTStarAccuracy
+/// of itself, or its regime changes, the nodes double (up to kAutoMaxNodes) and the finer is held
+/// to the last. Each level's move on the grid taken is kept (SurfaceRun::grid_t_star_change:
+/// it bounds the taken grid's error where t* converges at first order or faster); a level
+/// still moving at kAutoMaxNodes is marked unresolved, with a note.
+template <class CurveOn>
+model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad& load, const CurveOn& curve_on, bool progress,
+                                 const MoreLoadPoints& also_held) {
+  int n = auto_grid(run, load);
+  model::LoadCurve coarse = curve_on(n / 2);
+  model::LoadCurve fine = curve_on(n);
+  const std::size_t L = static_cast<std::size_t>(fine.levels());
+  std::vector<double> change(L, 0.0);
+  // Each level's touch at the run's load and at every other load point asked.
+  const auto touches = [&](const model::LoadCurve& curve) {
+    std::vector<std::vector<model::LevelTouch>> rows{model::level_touches(curve, load)};
+    if (also_held) {
+      std::vector<std::vector<model::LevelTouch>> more = also_held(run, curve);
+      rows.insert(rows.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+    }
+    return rows;
+  };
+  for (;;) {
+    const std::vector<std::vector<model::LevelTouch>> a = touches(coarse), b = touches(fine);
+    double worst = 0.0;
+    std::fill(change.begin(), change.end(), 0.0);
+    for (std::size_t row = 0; row < a.size(); ++row) {
+      for (std::size_t level = 0; level < L; ++level) {
+        const model::LevelTouch &x = a[row][level], &y = b[row][level];
+        const double moved = x.regime != y.regime                ? std::numeric_limits<double>::infinity()
+                             : y.regime == model::Regime::delayed ? std::abs(y.t_star - x.t_star) / y.t_star
+                                                                   : 0.0;
+        change[level] = std::max(change[level], moved);
+        worst = std::max(worst, moved);
+      }
+    }
+    if (worst <= kAutoTStarAccuracy || 2 * n > kAutoMaxNodes) break;
+    if (const std::string problem = budget_problem(run, curve_grid(run, 2 * n)); !problem.empty()) {
+      run.inputs.notes.push_back("--grid auto stopped at " + std::to_string(n) + " nodes a pitch: " + problem);
+      break;
+    }
+    if (progress) {
+      std::cerr << "punchsweep surface: --grid auto: t* moves by " << worst << " of itself from " << n / 2 << " to " << n
+                << " nodes a pitch (more than " << kAutoTStarAccuracy << "): the curve on " << 2 * n << "\n";
+    }
+    coarse = std::move(fine);
+    n *= 2;
+    fine = curve_on(n);
+  }
+  run.grid_coarser = n / 2;
+  run.grid_t_star_change = change;
+  // Each snapshot's area fraction on both grids: a third of its move is the taken grid's
+  // error where the areas converge at second order (a lone cap's do: docs/model.md 17.3).
+  for (const double t : run.times) {
+    const double X = t > 0.0 ? load(t) : load.initial();
+    const double a = coarse.at(X).area_fraction, b = fine.at(X).area_fraction;
+    run.grid_area_error.push_back(b > 0.0 ? std::abs(b - a) / (3.0 * b) : 0.0);
+  }
+  for (std::size_t level = 1; level < L; ++level) {
+    if (change[level] <= kAutoTStarAccuracy) continue;
+    std::ostringstream note;
+    note.precision(3);
+    note << "level " << level << ": --grid auto stopped at " << n << " nodes a pitch, where t* still ";
+    if (std::isinf(change[level])) {
+      note << "changes regime from " << n / 2 << " nodes";
+    } else {
+      note << "moves by " << change[level] << " of itself from " << n / 2 << " nodes";
+    }
+    note << " (the stated accuracy: " << kAutoTStarAccuracy << "): the level is marked unresolved; --grid N up to " << kMaxGridNodes
+         << " refines further";
+    run.inputs.notes.push_back(note.str());
+    run.unresolved_levels.push_back(static_cast<int>(level));
+  }
+  return fine;
+}
+
+/// The grid of the curve at `nodes` a pitch: the lattice's (K cells each way), a cell file's
+/// (its tips snapped to it, when the cell is made), or the measured map's pixels.
+reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes) {
+  if (run.measured) return run.measured->cell.grid;
+  if (run.cell_file.empty()) return reference::lattice_grid(run.geometry, run.lattice, nodes, run.supercell);
+  return reference::cell_grid(run.geometry, nodes * run.supercell);
+}
+
+/// The memory of a curve's solve on `grid`, in bytes: kBytesPerNode a stored node, and 17
+/// more a level (the levels' shares of each node).
+double curve_bytes(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
+  const double levels = static_cast<double>(std::max(run.geometry.levels(), 1));
+  return static_cast<double>(grid.size()) * (kBytesPerNode + 17.0 * levels);
+}
+
+/// Why a curve on `grid` is beyond what the engine takes on (empty where it is not): more
+/// than kMaxNodes nodes (memory: about kBytesPerNode a node), or nodes x caps beyond
+/// kMaxNodeCaps (each cap that touches apart costs its own search of some 20 solves of the
+/// whole grid). Both are said with the estimate and what brings it down.
+std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
+  const double nodes = static_cast<double>(grid.nodes());
+  const double caps = static_cast<double>(run.geometry.sites.size());
+  const double gigabytes = curve_bytes(run, grid) / 1e9;
+  std::ostringstream out;
+  out.precision(3);
+  const std::string lower = run.measured ? "crop or resample the map" : "give a smaller --grid (nodes a pitch)" +
+                                                                           std::string(run.supercell > 1 ? " or --supercell" : "");
+  if (nodes > kMaxNodes) {
+    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes (about " << gigabytes
+        << " GB), is beyond the engine's budget of " << kMaxNodes << " nodes: " << lower;
+  } else if (nodes * caps > kMaxNodeCaps) {
+    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size() << " caps (" << nodes * caps
+        << " node-caps, about " << gigabytes << " GB), is beyond the engine's budget of " << kMaxNodeCaps
+        << " node-caps (each cap that touches apart is its own search over the whole grid: hours): " << lower;
+  }
+  return out.str();
+}
+
+/// Why the boundary elements cannot take the texture's scales (empty where they can): its
+/// cell's lengths outside [kMinCellLength, kMaxCellLength] R, or its relief (the greatest
+/// separation over the cell, from the highest tip) outside [kMinRelief, kMaxRelief] R, where
+/// the solve's numbers leave double precision (--l 1e300, --C 1e300 or a cell 1e5 R long
+/// ended in an internal error, --l 1e-300 ran without end).
+std::string scale_problem(const SurfaceRun& run) {
+  std::ostringstream out;
+  out.precision(3);
+  const double Lx = run.geometry.Lx, Ly = run.geometry.Ly;
+  if (!(Lx >= kMinCellLength && Lx <= kMaxCellLength && Ly >= kMinCellLength && Ly <= kMaxCellLength)) {
+    out << "the cell is " << Lx << " x " << Ly << " R: the boundary elements take cells whose lengths lie in ["
+        << kMinCellLength << ", " << kMaxCellLength << "] R";
+    return out.str();
+  }
+  const double relief = run.measured ? *std::max_element(run.measured->cell.profile.begin(), run.measured->cell.profile.end())
+                                     : model::SurfaceLocator(run.geometry).top();
+  if (!(relief >= kMinRelief && relief <= kMaxRelief)) {
+    out << "the texture's relief over its cell (the deepest point below the highest tip) is about " << relief
+        << " R: the boundary elements take reliefs in [" << kMinRelief << ", " << kMaxRelief << "] R (C, s and the pitch set it)";
+  }
+  return out.str();
+}
+
+/// The cell the boundary elements solve (the curve's, or --check's): its grid, the tips
+/// snapped to its nodes for a cell file (with a note). A texture whose scales the solve
+/// cannot take (scale_problem) or a grid beyond the budget (budget_problem) is refused
+/// before anything is allocated.
+reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load, bool progress) {
+  if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
+  if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
+  reference::PeriodicGrid grid = curve_grid(run, run.grid_nodes);
+  if (const std::string problem = budget_problem(run, grid); !problem.empty()) throw input::UsageError(problem);
+  if (progress && static_cast<double>(grid.nodes()) >= kLargeGrid) {
+    std::cerr << "punchsweep surface: the cell on " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size()
+              << " caps (about " << curve_bytes(run, grid) / 1e9
+              << " GB); its curve takes minutes or more, with progress below\n";
+  }
+  if (run.measured) return run.measured->cell;
+  if (run.cell_file.empty()) return reference::make_cell(run.geometry, grid);
+  // A cell file's tips go to their nearest nodes: the move is reported.
+  double moved = 0.0;
+  run.geometry = reference::snap_tips(run.geometry, grid, &moved);
+  if (grid.mirrored() && !model::mirror_symmetric(run.geometry)) grid.symmetry = reference::Symmetry::none;
+  if (moved > 1e-9 * std::min(grid.hx(), grid.hy())) {
+    std::ostringstream note;
+    note.precision(3);
+    note << "the tips were moved to the nearest nodes of the " << grid.nx << " x " << grid.ny << " grid, by at most "
+         << moved << " R (" << moved / std::min(grid.hx(), grid.hy()) << " node spacings)";
+    run.inputs.notes.push_back(note.str());
+  }
+  return reference::make_cell(run.geometry, grid);
+}
+
+/// The curve held to its own time stepping (--check), on the same cell: a level whose
+/// regime differs, or whose t* differs by more than the stepping's resolution and 1e-3 of
+/// itself, is not resolved; a valid snapshot whose area fraction differs by more than 1% and
+/// half a node per cap is flagged check_disagrees. Either gets a note with the numbers.
+void hold_to_check(SurfaceRun& run, double t_resolution) {
+  const reference::CellReference& stepped = *run.stepped;
+  for (std::size_t level = 1; level < run.history.levels.size(); ++level) {
+    model::LevelTouch& mine = run.history.levels[level];
+    const double theirs = stepped.level_t_star[level];
+    const bool same_regime = mine.regime == stepped.level_regime[level];
+    const bool close = same_regime && (mine.regime != model::Regime::delayed ||
+                                       std::abs(mine.t_star - theirs) <= t_resolution + 1e-3 * theirs);
+    if (close) continue;
+    mine.resolved = false;
+    std::ostringstream note;
+    note.precision(6);
+    note << "level " << level << ": the curve says " << model::regime_name(mine.regime) << " (t* = " << mine.t_star
+         << ") and its time stepping " << model::regime_name(stepped.level_regime[level]) << " (t* = " << theirs
+         << ") beyond their accuracy: the level is marked unresolved; a finer --grid decides";
+    run.inputs.notes.push_back(note.str());
+  }
+  const double half_nodes = 0.5 * static_cast<double>(run.geometry.sites.size()) /
+                            (static_cast<double>(run.curve.nx) * static_cast<double>(run.curve.ny));
+  int flagged = 0;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) {
+    model::SurfaceSnapshot& s = run.history.snapshots[k];
+    const double theirs = stepped.series[k].area_fraction;
+    const double miss = std::abs(s.state.area_fraction - theirs);
+    if (s.validity != model::SurfaceValidity::valid || miss <= 0.01 * theirs + half_nodes) continue;
+    s.validity = model::SurfaceValidity::check_disagrees;
+    ++flagged;
+    worst = std::max(worst, miss / std::max(theirs, 1e-300));
+  }
+  if (flagged > 0) {
+    std::ostringstream note;
+    note.precision(3);
+    note << flagged << " snapshot" << (flagged == 1 ? "" : "s") << "' area fraction differ" << (flagged == 1 ? "s" : "")
+         << " from the time stepping's by up to " << 100.0 * worst
+         << "% (the curve's stated accuracy: 1% and half a node per cap): flagged check_disagrees";
+    run.inputs.notes.push_back(note.str());
+  }
+}
+
+/// The curve as far as the times reach, and the history on it.
+}  // namespace
+
+void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
+  const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<model::LoadCurve> tabulated;
+  if (run.curve_source != CurveSource::cell) {
+    // The two-level square lattice's curve off the periodic model's tables, where they
+    // reach its dh.
+    const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
+    tabulated = model::periodic_load_curve(solution, run.inputs.problem);
+    if (!tabulated && run.curve_source == CurveSource::tables) {
+      const model::PeriodicScales scales(run.inputs.problem);
+      std::ostringstream why;
+      why << "--curve tables: dh = " << run.inputs.problem.dh << " R is outside the tables' range: dh <= "
+          << solution.delta_top() * scales.h_unit << " R (their top), or dh >= " << solution.delta_hidden() * scales.h_unit
+          << " R (level 1 hidden under the tall punches); use --curve cell";
+      throw input::UsageError(why.str());
+    }
+    if (!tabulated) {
+      run.inputs.notes.push_back("dh lies between the periodic tables' top and where level 1 hides: the curve is the cell's "
+                                 "own boundary elements'");
+    }
+  }
+  std::optional<reference::Cell> cell;
+  if (tabulated) {
+    run.curve_source = CurveSource::tables;
+    run.curve = std::move(*tabulated);
+  } else {
+    run.curve_source = CurveSource::cell;
+    reference::LoadCurveOptions options;
+    // To full contact, where every level that can touch has: the curve is then the
+    // geometry's alone, whatever the material, temperature, pressure and times, and one
+    // cached curve serves them all. FFTW's plans are its estimate's, so that a curve and
+    // every answer read off it have the same bits in every process.
+    sweep::use_reproducible_fft_plans();
+    auto last = start;
+    if (progress) {
+      options.progress = [&](int solves, double X) {
+        const auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - last).count() < 2.0) return;
+        last = now;
+        std::cerr << "punchsweep surface: load curve on " << run.grid_nodes << " nodes a pitch, " << solves << " solves, X = " << X
+                  << " E0* on the way to full contact\n";
+      };
+    }
+    // The curve on `nodes` a pitch (0: the measured map's pixels): the given geometry's
+    // tips snapped to that grid, its note the last grid's alone.
+    const model::CellGeometry given = run.geometry;
+    const std::vector<std::string> notes = run.inputs.notes;
+    bool cached = true;
+    const auto curve_on = [&](int nodes) {
+      run.geometry = given;
+      run.inputs.notes = notes;
+      run.grid_nodes = nodes;
+      cell = boundary_element_cell(run, load, progress);
+      CurveOrigin origin = CurveOrigin::built;
+      model::LoadCurve curve = load_curve_for(run.geometry, *cell, options, &origin);
+      cached = cached && origin == CurveOrigin::cache;
+      return curve;
+    };
+    if (run.grid_nodes != 0 || run.measured) {
+      run.curve = curve_on(run.grid_nodes);
+    } else {
+      run.curve = auto_grid_curve(run, load, curve_on, progress, also_held);
+    }
+    run.curve_cached = cached;
+  }
+  run.curve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.history = model::surface_history(run.curve, load, run.times);
+  for (const int level : run.unresolved_levels) run.history.levels[static_cast<std::size_t>(level)].resolved = false;
+  // --grid auto: a valid snapshot whose area the grid leaves more than 1% uncertain is
+  // flagged below_resolution (a finer --grid answers it).
+  int uncertain = 0;
+  for (std::size_t k = 0; k < run.grid_area_error.size() && k < run.history.snapshots.size(); ++k) {
+    model::SurfaceSnapshot& snapshot = run.history.snapshots[k];
+    if (snapshot.validity != model::SurfaceValidity::valid || run.grid_area_error[k] <= kAutoAreaAccuracy) continue;
+    snapshot.validity = model::SurfaceValidity::below_resolution;
+    ++uncertain;
+  }
+  if (uncertain > 0) {
+    run.inputs.notes.push_back(std::to_string(uncertain) + " snapshot(s) flagged below_resolution: their area fraction moves by more than " +
+                               "3% from the grid of half the nodes (an error beyond 1% on the grid taken); a finer --grid answers");
+  }
+  // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
+  const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
+                                        run.inputs.problem.loading};
+  run.derivatives.resize(static_cast<std::size_t>(run.curve.levels()));
+  run.ranges.resize(static_cast<std::size_t>(run.curve.levels()));
+  std::vector<model::TStarRange> ranges;
+  if (!run.tolerances.empty()) {
+    try {
+      ranges = model::level_t_star_ranges(run.curve, surface_load, run.tolerances);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError(std::string("--tolerance: ") + e.what());
+    }
+  }
+  for (int level = 1; level < run.curve.levels(); ++level) {  // the tallest touch at once
+    const std::size_t at = static_cast<std::size_t>(level);
+    run.derivatives[at] = model::level_t_star_derivatives(run.curve, level, surface_load, run.history.levels[at].t_star);
+    if (!ranges.empty()) run.ranges[at] = ranges[at];
+    // A level on a knife edge says so, as `point` does (t* then asks more of the curve than
+    // its grid's accuracy).
+    if (const std::string note = model::knife_edge_note(run.derivatives[at]); !note.empty()) {
+      run.inputs.notes.push_back("level " + std::to_string(level) + ": " + note);
+    }
+  }
+  if (run.check) {
+    // The time stepping of the same cell, steps scaled to the law as `reference` scales them.
+    reference::ReferenceOptions scaled;
+    reference::scale_steps_to_law(*run.inputs.creep, &scaled);
+    reference::CellReferenceOptions check;
+    check.times = run.times;
+    check.steps = scaled.steps;
+    check.t_star_resolution = scaled.t_star_resolution;
+    run.check_t_star_resolution = check.t_star_resolution;
+    if (!cell) {
+      sweep::use_reproducible_fft_plans();
+      cell = boundary_element_cell(run, load, false);
+    }
+    const auto check_start = std::chrono::steady_clock::now();
+    run.stepped = reference::evaluate_cell_reference(run.geometry, *cell, run.inputs.problem.pbar0, *run.inputs.creep,
+                                                     run.inputs.problem.loading, check);
+    run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
+    hold_to_check(run, check.t_star_resolution);
+  }
+}
+
+namespace {
+
+/// use(run) on the texture of `keywords`, read by the command's own options and checks,
+/// while the material it reads (which the run's law points into) lives.
+template <class Use>
+auto with_keywords(const input::Keywords& keywords, Use&& use) {
+  const input::PointMaterial material = input::find_point_material(keywords);
+  SurfaceRun run = read_surface(input::parse_keywords(keywords, surface_options(material), "surface"), material);
+  return use(run);
+}
+
+/// The grids (nodes a pitch) the cell's curve is built on, refused as boundary_element_cell
+/// refuses (the scales, the budget) before anything is allocated: the one given (0 for a
+/// measured map's pixels), or --grid auto's pick and its half (at least).
+std::vector<int> cell_grids(const SurfaceRun& run) {
+  if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
+  std::vector<int> grids{run.grid_nodes};
+  if (run.grid_nodes == 0 && !run.measured) {
+    const int n = auto_grid(run, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading));
+    grids = {n / 2, n};
+  }
+  for (const int nodes : grids) {
+    if (const std::string problem = budget_problem(run, curve_grid(run, nodes)); !problem.empty()) throw input::UsageError(problem);
+  }
+  return grids;
+}
+
+}  // namespace
+
+CurveCost curve_cost(SurfaceRun& run) {
+  CurveCost cost;
+  cost.caps = run.geometry.sites.size();
+  cost.levels = run.geometry.levels();
+  if (run.curve_source != CurveSource::cell &&
+      model::periodic_load_curve(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem)) {
+    cost.source = "periodic tables";
+    return cost;
+  }
+  cost.source = "cell";
+  const std::vector<int> grids = cell_grids(run);
+  cost.auto_grid = run.grid_nodes == 0 && !run.measured;
+  const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+  const model::CellGeometry given = run.geometry;
+  for (const int nodes : grids) {
+    run.geometry = given;
+    run.grid_nodes = nodes;
+    const reference::Cell cell = boundary_element_cell(run, load, false);
+    CurveCost::Grid g;
+    g.nodes_per_pitch = nodes;
+    g.nx = cell.grid.nx;
+    g.ny = cell.grid.ny;
+    g.bytes = curve_bytes(run, cell.grid);
+    g.cached = curve_is_cached(run.geometry, cell, reference::LoadCurveOptions{});
+    g.seconds = g.cached ? 0.0 : estimated_curve_seconds(cell.grid, static_cast<double>(cost.caps));
+    cost.grids.push_back(g);
+  }
+  return cost;
+}
+
+SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
+  return with_keywords(keywords, [&](SurfaceRun& run) {
+    evaluate(run, false, also_held);
+    return std::move(run);
+  });
+}
+
+double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps) {
+  // Fitted (log-linear least squares) to curves built on one core here: see
+  // docs/performance.md for the runs and each one's ratio to this estimate.
+  return kCurveSecondsScale * std::pow(static_cast<double>(grid.nodes()), kCurveSecondsNodePower) *
+         std::pow(caps, kCurveSecondsCapPower) * (grid.mirrored() ? kCurveSecondsMirrored : 1.0);
+}
+
+double check_surface(const input::Keywords& keywords) {
+  return with_keywords(keywords, [](const SurfaceRun& run) {
+    // The tables need no cell; where they may not reach the lattice's dh (auto), the cell's
+    // refusals come when it is built.
+    if (run.curve_source != CurveSource::cell) return 0.0;
+    double seconds = 0.0;
+    for (const int nodes : cell_grids(run)) {
+      seconds += estimated_curve_seconds(curve_grid(run, nodes), static_cast<double>(run.geometry.sites.size()));
+    }
+    return seconds;
+  });
+}
+
+CurveCost curve_cost(const input::Keywords& keywords) {
+  return with_keywords(keywords, [](SurfaceRun& run) { return curve_cost(run); });
+}
+
+}  // namespace punchsweep::texture

@@ -1,0 +1,98 @@
+#pragma once
+/// @file
+/// A texture's evaluation, as `punchsweep surface`, `design`, a texture's map and Python's
+/// surface() and surface_classify() share it: a periodic texture (a square or hexagonal
+/// lattice of two or three levels, a cell file, a measured map, a scattered supercell) read
+/// from its options, its cell's elastic load curve built (or read from the cache or off the
+/// periodic tables), and each level's touch, the areas and the sites in contact in time
+/// under the material and the load history (docs/model.md, section 17).
+
+#include <boost/program_options/options_description.hpp>
+#include <boost/program_options/variables_map.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "input/command_options.hpp"
+#include "reference/periodic_grid.hpp"
+#include "texture/surface_run.hpp"
+
+namespace punchsweep::texture {
+
+/// The most boundary-element nodes a pitch a texture's curve (or design) is solved on.
+inline constexpr int kMaxGridNodes = 2048;
+
+/// --grid TEXT: an even number of nodes a pitch in [4, kMaxGridNodes], or 0 for "auto";
+/// UsageError naming the value and the range otherwise.
+int read_grid(const std::string& text);
+
+/// The texture's options (the point's for `material`'s law, the texture's, the grid's):
+/// `surface`, `design`, a texture's sweep and Python's surface() take the same.
+boost::program_options::options_description surface_options(const input::PointMaterial& material);
+
+/// Each level's touch at more load points than the run's own, read off a curve of the run's
+/// texture (surface-map's pressures and law values, one row a point): `--grid auto` holds
+/// every one of them to its accuracy, as it holds the run's own.
+using MoreLoadPoints = std::function<std::vector<std::vector<model::LevelTouch>>(const SurfaceRun&, const model::LoadCurve&)>;
+
+/// --grid auto's top (nodes a pitch), and the accuracy it holds each level's t* to: the
+/// share of itself t* may move from the grid of half the nodes to the one taken.
+inline constexpr int kAutoMaxNodes = 512;
+inline constexpr double kAutoTStarAccuracy = 1e-3;
+
+/// The texture of `given` (parsed by surface_options(material)) read and checked, not yet
+/// evaluated: its inputs, geometry, times, grid and switches. `material` must outlive it
+/// (the run's law points into it). Throws input::UsageError for a bad or missing option.
+SurfaceRun read_surface(const boost::program_options::variables_map& given, const input::PointMaterial& material);
+
+/// Evaluates `run` (read_surface's): its load curve (built on the cell's boundary elements,
+/// read from the table cache or off the periodic tables), under --grid auto held to its
+/// accuracy, then the history at its times and the checks asked. `progress`: the curve's
+/// solves said on stderr.
+void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = {});
+
+/// The texture of `punchsweep surface` given as keywords (Python's), evaluated by the
+/// command's own options, checks and code; `also_held`: the load points --grid auto holds
+/// beside the run's own.
+SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
+
+/// Reads `keywords` as evaluate_surface does and throws input::UsageError for what it would
+/// refuse before building anything: a bad or missing option, a cell whose scales the
+/// boundary elements cannot take, a grid beyond the engine's budget. No curve is built, no
+/// cell made. Returns the estimated seconds of its curve(s) on one core
+/// (estimated_curve_seconds; 0 off the periodic tables; a cached curve not known here).
+double check_surface(const input::Keywords& keywords);
+
+/// The seconds a cell's load curve on `grid` takes to build on one core of this machine,
+/// estimated from the grid's nodes and the cell's caps: a power law fitted to measured
+/// curves (docs/performance.md, "A curve's cost"), within a factor of kCurveSecondsSpread
+/// of every one of them.
+double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps);
+inline constexpr double kCurveSecondsSpread = 2.0;
+
+/// What one texture's load curve asks, found before it is built (a dry run's answer):
+/// where it comes from, the grids it is built on (--grid auto: the grid it picks and the
+/// one of half its nodes, at least: it doubles where t* still moves), each grid's memory,
+/// whether the table cache holds its curve, and the seconds to build it on one core of
+/// this machine (estimated_curve_seconds), 0 where cached.
+struct CurveCost {
+  std::string source;  ///< "periodic tables" (no grid: read off the tables) or "cell"
+  bool auto_grid = false;
+  struct Grid {
+    int nodes_per_pitch = 0;  ///< 0: a measured map's pixels
+    int nx = 0, ny = 0;
+    double bytes = 0.0;       ///< the solve's memory
+    bool cached = false;
+    double seconds = 0.0;
+  };
+  std::vector<Grid> grids;
+  std::size_t caps = 0;
+  int levels = 0;
+};
+/// What `run`'s curve asks (read_surface's run; its grid is changed and put back).
+CurveCost curve_cost(SurfaceRun& run);
+/// Throws input::UsageError for what evaluate_surface would refuse (check_surface).
+CurveCost curve_cost(const input::Keywords& keywords);
+
+}  // namespace punchsweep::texture
