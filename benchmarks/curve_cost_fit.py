@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The data behind estimated_curve_seconds (src/texture/surface_evaluation.cpp): load curves built
+"""The data behind estimated_curve_seconds (src/engine/surface_evaluation.cpp): load curves built
 on one core, each with an empty curve cache, and the power law fitted to them,
 
     seconds = scale x nodes^node_power x caps^cap_power x (mirrored if the grid is solved as its quarter),

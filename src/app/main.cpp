@@ -11,10 +11,10 @@
 #include "app/surface_command.hpp"
 #include "app/texture_map_run.hpp"
 #include "app/sweep_command.hpp"
-#include "texture/periodic_tables.hpp"
+#include "engine/periodic_tables.hpp"
 #include "app/tables_command.hpp"
 #include "input/usage_error.hpp"
-#include "app/version.hpp"
+#include "engine/version.hpp"
 
 namespace {
 
@@ -54,12 +54,12 @@ int main(int argc, char** argv) {
       return args.empty() ? punchsweep::input::kUsageExitCode : 0;
     }
     if (args[0] == "--version") {
-      std::cout << "punchsweep " << punchsweep::app::kVersion << " (git "
-                << punchsweep::app::kGitRevision << ")\n";
+      std::cout << "punchsweep " << punchsweep::engine::kVersion << " (git "
+                << punchsweep::engine::kGitRevision << ")\n";
       return 0;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
-    punchsweep::texture::use_table_cache();
+    punchsweep::engine::use_table_cache();
     if (args[0] == "point") return punchsweep::app::run_point_command(rest, std::cout);
     if (args[0] == "sweep") return punchsweep::app::run_sweep_command(rest);
     if (args[0] == "single-level") return punchsweep::app::run_single_level_command(rest, std::cout);

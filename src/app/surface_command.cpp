@@ -5,9 +5,9 @@
 #include <ostream>
 #include <sstream>
 
-#include "app/surface_output.hpp"
+#include "report/surface_output.hpp"
 #include "input/usage_error.hpp"
-#include "texture/surface_evaluation.hpp"
+#include "engine/surface_evaluation.hpp"
 
 namespace po = boost::program_options;
 
@@ -31,7 +31,7 @@ int run_surface_command(const std::vector<std::string>& given, std::ostream& out
     }
   }
   const input::PointMaterial material = input::find_point_material(args);
-  const po::options_description opts = texture::surface_options(material);
+  const po::options_description opts = engine::surface_options(material);
   const po::variables_map vm = input::parse_command(args, opts, "surface");
   if (vm.count("help")) {
     out << kUsage << "\n\n" << opts << "  --dry-run             what the curve asks (its grids, memory, whether the cache holds it, "
@@ -40,18 +40,18 @@ int run_surface_command(const std::vector<std::string>& given, std::ostream& out
         << "Exit codes: 0 success (a flagged snapshot is still a success: see 'valid'), 2 bad input.\n";
     return 0;
   }
-  texture::SurfaceRun run = texture::read_surface(vm, material);
+  engine::SurfaceRun run = engine::read_surface(vm, material);
   if (dry_run) {
-    write_curve_cost(out, texture::curve_cost(run));
+    write_curve_cost(out, engine::curve_cost(run));
     return 0;
   }
-  const OutputFormat format = read_output_format(vm);
-  texture::evaluate(run, true);
-  write_surface(out, format, run);
+  const report::OutputFormat format = report::read_output_format(vm);
+  engine::evaluate(run, true);
+  report::write_surface(out, format, run);
   return 0;
 }
 
-void write_curve_cost(std::ostream& out, const texture::CurveCost& cost) {
+void write_curve_cost(std::ostream& out, const engine::CurveCost& cost) {
   const std::streamsize precision = out.precision(3);
   out << "punchsweep surface --dry-run\n";
   out << "  cell: " << cost.caps << " caps, " << cost.levels << " levels\n";
@@ -61,7 +61,7 @@ void write_curve_cost(std::ostream& out, const texture::CurveCost& cost) {
     return;
   }
   double seconds = 0.0;
-  for (const texture::CurveCost::Grid& grid : cost.grids) {
+  for (const engine::CurveCost::Grid& grid : cost.grids) {
     out << "  curve on " << grid.nx << " x " << grid.ny << " nodes";
     if (grid.nodes_per_pitch > 0) out << " (" << grid.nodes_per_pitch << " a pitch)";
     out << ": about " << grid.bytes / 1e6 << " MB; ";
@@ -73,18 +73,12 @@ void write_curve_cost(std::ostream& out, const texture::CurveCost& cost) {
     seconds += grid.seconds;
   }
   if (cost.auto_grid) {
-    out << "  --grid auto: the curves above at least; where t* still moves by more than " << texture::kAutoTStarAccuracy
-        << " of itself between them the nodes double (to " << texture::kAutoMaxNodes << " a pitch)\n";
+    out << "  --grid auto: the curves above at least; where t* still moves by more than " << engine::kAutoTStarAccuracy
+        << " of itself between them the nodes double (to " << engine::kAutoMaxNodes << " a pitch)\n";
   }
-  out << "  estimated time: about " << seconds << " s (each estimate within a factor of " << texture::kCurveSecondsSpread
+  out << "  estimated time: about " << seconds << " s (each estimate within a factor of " << engine::kCurveSecondsSpread
       << " of this machine's measured curves)\n";
   out.precision(precision);
-}
-
-std::string surface_json(const input::Keywords& keywords) {
-  std::ostringstream out;
-  write_surface(out, OutputFormat::json, texture::evaluate_surface(keywords));
-  return out.str();
 }
 
 }  // namespace punchsweep::app

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "input/command_options.hpp"
-#include "texture/surface_evaluation.hpp"
+#include "engine/surface_evaluation.hpp"
 
 namespace punchsweep::app {
 
@@ -19,9 +19,6 @@ namespace punchsweep::app {
 int run_surface_command(const std::vector<std::string>& args, std::ostream& out);
 
 /// `surface --dry-run`'s lines for `cost`.
-void write_curve_cost(std::ostream& out, const texture::CurveCost& cost);
-
-/// The same, as the command's JSON text (what `--format json` prints): Python's surface().
-std::string surface_json(const input::Keywords& keywords);
+void write_curve_cost(std::ostream& out, const engine::CurveCost& cost);
 
 }  // namespace punchsweep::app

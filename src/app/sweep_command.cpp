@@ -23,10 +23,10 @@
 
 #include "input/sweep_options.hpp"
 #include "input/texture_sweep_options.hpp"
-#include "app/surface_map_command.hpp"
+#include "engine/texture_map.hpp"
 #include "app/texture_map_run.hpp"
 #include "input/usage_error.hpp"
-#include "app/version.hpp"
+#include "engine/version.hpp"
 #include "io/map_variables.hpp"
 #include "io/regime_map_writer.hpp"
 #include "io/tile_encoder.hpp"
@@ -181,7 +181,7 @@ int manage(const sweep::SweepConfig& config, const std::vector<std::string>& arg
            const map::Tiling& tiling, const sweep::TileWork& work, const io::MapLayout& layout, int ranks) {
   io::MapAttributes attributes;
   attributes.title = "punchsweep regime map: two-level punch system on a viscoelastic half-space";
-  attributes.source = std::string("punchsweep ") + kVersion + " (git " + kGitRevision + ")";
+  attributes.source = std::string("punchsweep ") + engine::kVersion + " (git " + engine::kGitRevision + ")";
   attributes.history = utc_now() + " " + command_line(args);
   attributes.config_text = config.resolved_text;
   attributes.identity = run::join(config.identity, "\n");
@@ -242,7 +242,7 @@ int run_texture_sweep(const std::vector<std::string>& args, const sweep::MpiSess
       if (root) std::cout << input::kTextureSweepHelp;
       return 0;
     }
-    check_texture_keywords(options.keywords, options.origins);
+    engine::check_texture_keywords(options.keywords, options.origins);
     job.keywords = options.keywords;
     job.output = options.output;
     job.resume = options.resume;

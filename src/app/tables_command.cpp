@@ -7,13 +7,13 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "texture/periodic_tables.hpp"
-#include "texture/table_cache.hpp"
+#include "engine/periodic_tables.hpp"
+#include "engine/table_cache.hpp"
 #include "input/command_options.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
 #include "io/output_file.hpp"
-#include "app/version.hpp"
+#include "engine/version.hpp"
 #include "model/problem/localization.hpp"
 #include "model/problem/shape.hpp"
 #include "model/periodic/small_spot_builder.hpp"
@@ -45,7 +45,7 @@ po::options_description tables_options() {
       ("help,h", "this text")
       ("s", po::value<std::string>()->value_name("S")->default_value("1,2,3"),
        "shape exponents: integers in [1, 32], separated by commas")
-      ("grid", po::value<std::string>()->value_name("N")->default_value(std::to_string(texture::kPeriodicTableGrid)),
+      ("grid", po::value<std::string>()->value_name("N")->default_value(std::to_string(engine::kPeriodicTableGrid)),
        "boundary-element grid per side; the engine reads 512 (others are for convergence studies)")
       ("write-source", po::value<std::string>()->value_name("DIR"),
        "build afresh (not from the cache or the shipped ones) and write periodic-s<S>-n<N>.inc and "
@@ -99,45 +99,45 @@ int run_tables_command(const std::vector<std::string>& args, std::ostream& out) 
                     "core.\nThe refined localization (D = %d), its far field corrected by %.9e to the lattice's.\n"
                     "Samples: %d + 1 in v up to %.9g (hand-over from %.9g), %d + 1 in zeta. Numbers in order of "
                     "model::SmallSpotTable::tables().",
-                    s, small_only ? " --small-spot-only" : "", kVersion, kGitRevision, small_seconds, small.shells,
+                    s, small_only ? " --small-spot-only" : "", engine::kVersion, engine::kGitRevision, small_seconds, small.shells,
                     small.far_field_correction, small.M, small.v_top, small.v_hand, small.Z);
       const std::filesystem::path small_file = dir / (model::SmallSpotTable::table_name(s) + ".inc");
-      write_source(small_file.string(), texture::small_spot_table_source(small, small_provenance));
+      write_source(small_file.string(), engine::small_spot_table_source(small, small_provenance));
       out << "s = " << s << ": wrote " << small_file.string() << " (" << small_seconds << " s)\n";
       if (small_only) continue;
       const auto start = std::chrono::steady_clock::now();
       const std::shared_ptr<const model::PeriodicTable> table = std::make_shared<const model::PeriodicTable>(
-          texture::build_periodic_table_with_progress(s, n, quiet, {}, "written as source"));
+          engine::build_periodic_table_with_progress(s, n, quiet, {}, "written as source"));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       char provenance[400];
       std::snprintf(provenance, sizeof provenance,
                     "Made by `punchsweep tables --s %d --grid %d --write-source DIR` (punchsweep %s, git %s) in "
                     "%.0f s on one core.\nSamples: %zu in v, %d x %d in (delta, r). Numbers in order of "
                     "model::PeriodicTable::tables().",
-                    s, n, kVersion, kGitRevision, seconds, table->h1.size(), table->J, table->K);
+                    s, n, engine::kVersion, engine::kGitRevision, seconds, table->h1.size(), table->J, table->K);
       const std::filesystem::path file = dir / (model::PeriodicTable::table_name(s, n) + ".inc");
-      write_source(file.string(), texture::periodic_table_source(*table, provenance));
+      write_source(file.string(), engine::periodic_table_source(*table, provenance));
       out << "s = " << s << ": wrote " << file.string() << " (" << seconds << " s)\n";
     }
     return 0;
   }
 
-  const texture::TableCacheFolder cache = texture::table_cache_folder();
+  const engine::TableCacheFolder cache = engine::table_cache_folder();
   std::optional<std::filesystem::path> folder = cache.folder;
-  if (folder && !texture::untrusted_folder(*folder).empty()) folder.reset();
+  if (folder && !engine::untrusted_folder(*folder).empty()) folder.reset();
   for (const int s : exponents) {
     const auto start = std::chrono::steady_clock::now();
-    texture::TableOrigin origin{};
-    const std::shared_ptr<const model::PeriodicTable> table = texture::periodic_table_for(s, n, folder, quiet, {}, &origin);
+    engine::TableOrigin origin{};
+    const std::shared_ptr<const model::PeriodicTable> table = engine::periodic_table_for(s, n, folder, quiet, {}, &origin);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out << "s = " << s << ", grid " << n << ": " << (origin == texture::TableOrigin::shipped ? std::string("shipped with the engine")
-            : origin == texture::TableOrigin::cache ? "read from the table cache " + folder->string()
+    out << "s = " << s << ", grid " << n << ": " << (origin == engine::TableOrigin::shipped ? std::string("shipped with the engine")
+            : origin == engine::TableOrigin::cache ? "read from the table cache " + folder->string()
             : folder ? "built and kept in the table cache " + folder->string()
                      : std::string("built (no table cache: built again next time)"))
         << "; single level to xi = " << table->xi_full_single() << " (full contact), two levels for dh/(C l^s) up to "
         << table->delta_top << " (" << seconds << " s)\n";
-    const bool small_shipped = texture::shipped_small_spot_table(s).has_value();
-    const std::shared_ptr<const model::SmallSpotTable> small = texture::small_spot_table_for(s, quiet);
+    const bool small_shipped = engine::shipped_small_spot_table(s).has_value();
+    const std::shared_ptr<const model::SmallSpotTable> small = engine::small_spot_table_for(s, quiet);
     out << "s = " << s << ": small-spot table " << (small_shipped ? "shipped with the engine" : "built") << ", below xi = "
         << small->xi_top() << " (the hand-over from xi = " << small->xi_hand() << ")\n";
   }

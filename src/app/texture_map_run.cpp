@@ -15,8 +15,9 @@
 
 #include <unistd.h>
 
-#include "texture/surface_evaluation.hpp"
+#include "engine/surface_evaluation.hpp"
 #include "app/surface_map_command.hpp"
+#include "engine/texture_map.hpp"
 #include "input/usage_error.hpp"
 #include "io/encoded_tile.hpp"
 #include "io/tile_journal.hpp"
@@ -70,16 +71,16 @@ std::string bytes_text(double bytes) {
 /// --dry-run: the map's axes, and what each geometry's curve asks (its grids, memory,
 /// whether the cache holds it, its estimated time), summed up for the run's ranks. The
 /// geometries are listed one a line up to kListed, else grouped by their grids.
-void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ranks, std::ostream& out) {
+void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job, int ranks, std::ostream& out) {
   constexpr std::size_t kListed = 24;
-  const SurfaceMap& map = plan.header();
+  const engine::SurfaceMap& map = plan.header();
   const std::size_t G = plan.geometries(), P = map.load_points();
   out << job.program << " --dry-run (a texture's map)\n";
   out << "  texture: " << map.texture << "\n";
   // Lengths in R's own unit where the map has one ("60 um"), as the progress lines give them.
   const auto [per_R, length_unit] = map.length_unit();
   for (const auto* axes : {&map.geometry, &map.load}) {
-    for (const SurfaceMapAxis& a : *axes) {
+    for (const engine::SurfaceMapAxis& a : *axes) {
       const bool length = a.scale == "R";
       const double scale = length ? per_R : 1.0;
       out << "  " << a.name << ": " << a.values.size() << " value" << (a.values.size() == 1 ? "" : "s") << " in ["
@@ -95,7 +96,7 @@ void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ran
   std::size_t cached = 0, tables = 0, built = 0;
   std::map<std::string, std::size_t> groups;  // grids -> geometries
   for (std::size_t g = 0; g < G; ++g) {
-    const texture::CurveCost cost = texture::curve_cost(plan.keywords_of(g));
+    const engine::CurveCost cost = engine::curve_cost(plan.keywords_of(g));
     std::ostringstream what;
     double mine = 0.0;
     if (cost.source != "cell") {
@@ -104,7 +105,7 @@ void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ran
     } else {
       bool all_cached = true;
       for (std::size_t k = 0; k < cost.grids.size(); ++k) {
-        const texture::CurveCost::Grid& grid = cost.grids[k];
+        const engine::CurveCost::Grid& grid = cost.grids[k];
         what << (k ? ", then " : "") << grid.nx << " x " << grid.ny << " nodes";
         if (grid.nodes_per_pitch > 0) what << " (" << grid.nodes_per_pitch << " a pitch)";
         what << (grid.cached ? " cached" : "");
@@ -141,7 +142,7 @@ void print_dry_run(const TextureMapPlan& plan, const TextureMapJob& job, int ran
   // of a rank and the largest curve.
   const double wall = std::max(seconds / ranks, largest);
   out << "  estimated time: about " << seconds_text(wall) << " on " << ranks << " rank" << (ranks == 1 ? "" : "s") << " ("
-      << seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << texture::kCurveSecondsSpread
+      << seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << engine::kCurveSecondsSpread
       << " on this machine's measurements; reading the load points adds little)\n";
   out << "  output: " << job.output << " (nothing written by a dry run)\n";
 }
@@ -155,23 +156,23 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   };
 
   // The plan, on every rank alike (the same keywords give every rank the same verdict).
-  std::unique_ptr<const TextureMapPlan> plan;
+  std::unique_ptr<const engine::TextureMapPlan> plan;
   try {
-    plan = std::make_unique<const TextureMapPlan>(job.keywords);
+    plan = std::make_unique<const engine::TextureMapPlan>(job.keywords);
   } catch (const input::UsageError& e) {
     if (root) say(e.what());
     return input::kUsageExitCode;
   }
   const std::size_t G = plan->geometries(), P = plan->header().load_points();
   const run::OutputPaths paths(job.output);
-  const std::vector<std::string> identity = texture_map_identity(job.keywords);
+  const std::vector<std::string> identity = engine::texture_map_identity(job.keywords);
   const std::string identity_text = run::join(identity, "\n");  // the journal's header, the map's attribute
   sweep::SweepConfig policy;  // the sweep's resume policy, for this map
   policy.overwrite = job.overwrite;
   policy.resume = job.resume;
   policy.identity = identity;
   policy.input_files = job.input_files;
-  for (const std::string& file : texture_input_files(job.keywords)) policy.input_files.push_back(file);
+  for (const std::string& file : engine::texture_input_files(job.keywords)) policy.input_files.push_back(file);
   if (job.dry_run) {
     // With --resume the dry run also says whether the map would resume (a job script asks
     // it before it writes anything into a run folder): another configuration is refused.
@@ -212,10 +213,10 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   }
 
   // Rank 0: the map's writer, and its journal (replayed into the map on resume).
-  SurfaceMap header = plan->header();
+  engine::SurfaceMap header = plan->header();
   header.identity = identity_text;
   header.layout_version = map::kTextureLayoutVersion;
-  std::optional<TextureMapWriter> writer;
+  std::optional<engine::TextureMapWriter> writer;
   std::optional<io::TileJournal> journal;
   sweep::TileRanges pending;
   std::size_t resumed = 0;
@@ -294,7 +295,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     writer->write(tile.tile, block);
     ++done;
     if (job.quiet) return;
-    const GeometryCost cost = geometry_cost(block);
+    const engine::GeometryCost cost = engine::geometry_cost(block);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
     const double left = elapsed / static_cast<double>(done - resumed) * static_cast<double>(G - done);
     std::ostringstream line;

@@ -629,4 +629,22 @@ std::optional<double> read_cap_radius(const po::variables_map& vm, const PointIn
   return std::nullopt;
 }
 
+po::options_description point_options(const PointMaterial& material) {
+  po::options_description opts(
+      "punchsweep point: regime, t*, and the contact state over time of one parameter point\n"
+      "(two-level square lattice of punches f(r) = C r^s / R^(s-1) pressed with constant\n"
+      "nominal pressure into a standard linear solid, or the material of --material FILE).\n\n"
+      "Units: lengths in R (punch size), pressures in E0* = E0/(1-nu^2), loads in R^2 E0*,\n"
+      "time in T_eps (creep time), or in the material file's time_unit.\n\nOptions");
+  add_point_options(opts, material.spec);
+  add_material_options(opts);
+  add_localization_option(opts, std::string(model::kDefaultLocalization));
+  add_tolerance_option(opts);
+  add_cap_options(opts);
+  opts.add_options()
+      ("format", po::value<std::string>()->value_name("FMT")->default_value("table"),
+       "output format: table, json or csv");
+  return opts;
+}
+
 }  // namespace punchsweep::input

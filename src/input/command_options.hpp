@@ -213,4 +213,9 @@ std::string json_string(const std::string& text);
 /// `values` as a JSON array of json_number()s: "[0, 0.5, null]".
 std::string json_array(const std::vector<double>& values);
 
+/// The options of `punchsweep point` for `material` (the design command reads its points
+/// through them too).
+boost::program_options::options_description point_options(const input::PointMaterial& material);
+
+
 }  // namespace punchsweep::input

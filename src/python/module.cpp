@@ -24,16 +24,15 @@
 #include <tuple>
 #include <vector>
 
+#include "engine/design.hpp"
+#include "engine/material_fitting.hpp"
+#include "engine/periodic_tables.hpp"
+#include "engine/point_evaluation.hpp"
+#include "engine/reference_evaluation.hpp"
+#include "engine/surface_evaluation.hpp"
+#include "engine/texture_map.hpp"
 #include "input/axis_parser.hpp"
 #include "input/command_options.hpp"
-#include "app/design_command.hpp"
-#include "app/surface_command.hpp"
-#include "app/surface_map_command.hpp"
-#include "app/fit_command.hpp"
-#include "app/point_command.hpp"
-#include "app/point_output.hpp"
-#include "app/reference_command.hpp"
-#include "texture/periodic_tables.hpp"
 #include "input/usage_error.hpp"
 #include "input/scaled_value.hpp"
 #include "map/quantities.hpp"
@@ -48,6 +47,9 @@
 #include "model/numerics/stop_request.hpp"
 #include "model/point/validity.hpp"
 #include "model/surface/surface_history.hpp"
+#include "report/design_output.hpp"
+#include "report/point_output.hpp"
+#include "report/surface_output.hpp"
 #include "sweep/batch_evaluator.hpp"
 
 namespace py = pybind11;
@@ -83,9 +85,9 @@ py::array_t<double> array(const std::vector<double>& values) {
 }
 
 /// The keys of `punchsweep point --format json`, read through the same visitor as the JSON
-/// writer (app::visit_point): flags as names, valid as a bool, reals as floats (None where
+/// writer (report::visit_point): flags as names, valid as a bool, reals as floats (None where
 /// the JSON has null), and the series as arrays (NaN where the JSON has null).
-struct DictFields final : app::PointFields {
+struct DictFields final : report::PointFields {
   py::dict out, columns;
   void text(std::string_view name, const std::string& value) override { out[py::str(name)] = value; }
   void boolean(std::string_view name, bool value) override { out[py::str(name)] = value; }
@@ -97,19 +99,19 @@ struct DictFields final : app::PointFields {
 
 py::dict point_dict(const model::PointResult& r, const std::string& time_unit) {
   DictFields fields;
-  app::visit_point(r, time_unit, fields);
+  report::visit_point(r, time_unit, fields);
   fields.out["series"] = fields.columns;
   return fields.out;
 }
 
 py::dict point_command(const input::Keywords& keywords) {
-  const app::PointRun run = app::evaluate_point(keywords);
+  const engine::PointRun run = engine::evaluate_point(keywords);
   py::dict out = point_dict(run.result, run.inputs.time_unit);
   out["localization"] = run.inputs.problem.localization.spelling();
   out["time_unit"] = run.inputs.time_unit;
   out["notes"] = py::tuple(py::cast(run.inputs.notes));
   py::dict physical, series, units;
-  for (const app::PhysicalField& f : app::physical_fields(run.inputs, run.result)) {
+  for (const report::PhysicalField& f : report::physical_fields(run.inputs, run.result)) {
     if (f.series) {
       series[py::str(f.name)] = array(f.values);
     } else {
@@ -130,16 +132,16 @@ py::dict reference_command(const input::Keywords& keywords) {
   // Ctrl-C between the BEM's time steps; the KeyboardInterrupt it sets is raised below.
   CtrlC ctrl_c;
   const model::StopRequest interrupted([&ctrl_c] { return ctrl_c.pressed(); });
-  std::optional<app::ReferenceRun> solved;
+  std::optional<engine::ReferenceRun> solved;
   {
     py::gil_scoped_release release;
     try {
-      solved.emplace(app::evaluate_reference(keywords, interrupted));
+      solved.emplace(engine::evaluate_reference(keywords, interrupted));
     } catch (const model::Stopped&) {
     }
   }
   if (!solved) throw py::error_already_set();
-  const app::ReferenceRun& run = *solved;
+  const engine::ReferenceRun& run = *solved;
   const reference::ReferenceResult& r = run.result;
   py::dict out;
   out["regime"] = std::string(model::regime_name(r.regime));
@@ -559,7 +561,7 @@ py::dict regime_codes() {
 /// `punchsweep fit` of keywords: the .fit.json's text (the one writer of the fit's numbers),
 /// the report, the material file's text, and the paths written ("" for none).
 py::dict fit_command(const input::Keywords& keywords) {
-  const app::FitRun run = app::fit_material(keywords);
+  const engine::FitRun run = engine::fit_material(keywords);
   py::dict out;
   out["details"] = run.details_json;
   out["report"] = run.report;
@@ -613,7 +615,7 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
                           n > 0 ? input::json_number(law_values[j][least]) : nominal_value(spec.parameters[j]));
   }
   keywords.emplace_back("times", "0");
-  const texture::SurfaceRun run = texture::evaluate_surface(keywords);
+  const engine::SurfaceRun run = engine::evaluate_surface(keywords);
   const std::size_t L = static_cast<std::size_t>(run.curve.levels());
   py::array_t<double> t_star({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
   py::array_t<std::int8_t> regime({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
@@ -643,7 +645,7 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "punchsweep's engine (the compiled part of the package punchsweep; use the package's functions)";
   // The refined model's tables from the same cache as the command line's ($PUNCHSWEEP_CACHE,
   // $XDG_CACHE_HOME/punchsweep, ~/.cache/punchsweep; off turns it off).
-  texture::use_table_cache();
+  engine::use_table_cache();
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -657,12 +659,13 @@ PYBIND11_MODULE(_core, m) {
         "punchsweep reference of (option name, value text) pairs, solved in-process: a dict of its JSON keys");
   m.def("fit", &fit_command, py::arg("keywords"),
         "punchsweep fit of (option name, value text) pairs: the fit's JSON, report and material text");
-  m.def("design", &app::design_json, py::arg("keywords"),
-        "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
-  m.def("surface_map", &app::surface_map_file, py::arg("keywords"),
+  m.def(
+      "design", [](const input::Keywords& keywords) { return report::design_json(engine::design(keywords)); },
+      py::arg("keywords"), "punchsweep design of (option name, value text) pairs (require may repeat): its JSON text");
+  m.def("surface_map", &engine::surface_map_file, py::arg("keywords"),
         "punchsweep surface-map of (option name, value text) pairs on this process alone: writes the map to the "
         "keyword output and returns its path");
-  m.def("surface", &app::surface_json, py::arg("keywords"),
+  m.def("surface", &report::surface_json, py::arg("keywords"),
         "punchsweep surface of (option name, value text) pairs, in-process: its JSON text");
   m.def("surface_classify", &surface_classify, py::arg("texture"), py::arg("columns"),
         "each level's regime and t* of one texture (surface's keywords without the load's) at points given as "

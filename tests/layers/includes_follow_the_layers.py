@@ -30,9 +30,10 @@ ALLOWED = {
     "io": {"io", "map", "model"},
     "sweep": {"sweep", "map", "model", "reference"},
     "run": {"run", "io", "sweep", "map", "model", "reference"},
-    "texture": {"texture", "input", "run", "io", "sweep", "map", "model", "reference"},
-    "app": {"app", "texture", "run", "io", "sweep", "input", "map", "fit", "model", "reference"},
-    "python": {"python", "app", "texture", "run", "io", "sweep", "input", "map", "fit", "model", "reference"},
+    "engine": {"engine", "input", "run", "io", "sweep", "map", "fit", "model", "reference"},
+    "report": {"report", "engine", "input", "map", "model", "reference"},
+    "app": {"app", "report", "engine", "run", "io", "sweep", "input", "map", "fit", "model", "reference"},
+    "python": {"python", "report", "engine", "run", "io", "sweep", "input", "map", "fit", "model", "reference"},
 }
 MODEL_PARTS = ["numerics", "problem", "laws", "load", "contact", "paper", "shells", "periodic", "localization", "point", "surface"]
 KNOWN_CYCLES: list[set[str]] = []

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "texture/periodic_tables.hpp"
+#include "engine/periodic_tables.hpp"
 #include "model/localization/localization_model.hpp"
 #include "model/periodic/periodic_solution.hpp"
 #include "model/problem/cell_geometry.hpp"
@@ -17,7 +17,7 @@
 using namespace punchsweep;
 
 TEST(CellTouchdown, the_two_level_square_cell_touches_where_the_periodic_model_says) {
-  model::set_periodic_solution_source([](int s) { return texture::periodic_solution_for(s, std::nullopt); });
+  model::set_periodic_solution_source([](int s) { return engine::periodic_solution_for(s, std::nullopt); });
   for (const double dh : {0.01, 0.03, 0.06}) {
     model::ContactProblem problem{0.75, dh, 0.06, {2, 0.5}};
     problem.localization = model::parse_localization("periodic");

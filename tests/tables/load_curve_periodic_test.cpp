@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "texture/periodic_tables.hpp"
+#include "engine/periodic_tables.hpp"
 #include "model/periodic/periodic_solution.hpp"
 #include "model/problem/cell_geometry.hpp"
 #include "reference/load_curve.hpp"
@@ -19,7 +19,7 @@
 using namespace punchsweep;
 
 TEST(LoadCurve, the_two_level_square_curve_is_the_periodic_solution) {
-  const auto solution = texture::periodic_solution_for(2, std::nullopt);
+  const auto solution = engine::periodic_solution_for(2, std::nullopt);
   const double delta = 0.2;  // l = 1, C = 1: dh in C l^s, X in C l^(s-1)
   model::ContactProblem problem{1.0, delta, 0.01, {2, 1.0}};
   const model::CellGeometry g = model::two_level_square(problem);

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "texture/periodic_tables.hpp"
-#include "app/point_command.hpp"
-#include "app/reference_command.hpp"
-#include "texture/table_cache.hpp"
+#include "engine/periodic_tables.hpp"
+#include "engine/point_evaluation.hpp"
+#include "engine/reference_evaluation.hpp"
+#include "engine/table_cache.hpp"
 #include "io/sha256.hpp"
 #include "model/periodic/periodic_table.hpp"
 #include "model/point/point_evaluation.hpp"
@@ -58,17 +58,17 @@ struct ScratchFolder {
 /// The model reads the shipped tables (what `punchsweep` and the Python module do, without
 /// a cache for the others).
 void use_shipped_tables() {
-  model::set_periodic_solution_source([](int s) { return texture::periodic_solution_for(s, std::nullopt); });
+  model::set_periodic_solution_source([](int s) { return engine::periodic_solution_for(s, std::nullopt); });
 }
 
 }  // namespace
 
 TEST(ShippedTables, exist_for_the_default_exponents_and_pass_their_spot_check) {
   for (const int s : {1, 2, 3}) {
-    const std::optional<model::PeriodicTable> t = texture::shipped_periodic_table(s);
+    const std::optional<model::PeriodicTable> t = engine::shipped_periodic_table(s);
     ASSERT_TRUE(t) << "s = " << s;
-    EXPECT_EQ(t->n, texture::kPeriodicTableGrid);
-    EXPECT_TRUE(texture::spot_check(*t, 1000 + s)) << "s = " << s;
+    EXPECT_EQ(t->n, engine::kPeriodicTableGrid);
+    EXPECT_TRUE(engine::spot_check(*t, 1000 + s)) << "s = " << s;
   }
 }
 
@@ -80,7 +80,7 @@ TEST(ShippedTables, meet_direct_solves_between_their_samples) {
   std::mt19937_64 random(2311);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const int s : {1, 2, 3}) {
-    const model::PeriodicTable t = *texture::shipped_periodic_table(s);
+    const model::PeriodicTable t = *engine::shipped_periodic_table(s);
     const double spacing = 1.0 / t.n;
     for (int trial = 0; trial < 3; ++trial) {
       const double xi = std::exp(std::log(0.003) + unit(random) * std::log(t.xi_full_single() / 0.003));
@@ -122,20 +122,20 @@ TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
   const ScratchFolder scratch;
   // A cache folder that does not exist yet is made private (0700), as write_tables makes it.
   const std::filesystem::path folder = scratch.path / "cache";
-  texture::TableOrigin origin{};
-  const auto built = texture::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, texture::TableOrigin::built);
+  engine::TableOrigin origin{};
+  const auto built = engine::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, engine::TableOrigin::built);
   EXPECT_EQ(std::filesystem::status(folder).permissions() & std::filesystem::perms::all,
             std::filesystem::perms::owner_all);
   EXPECT_EQ(std::filesystem::status(folder / "key").permissions() & std::filesystem::perms::all,
             std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
   const std::filesystem::path file = folder / model::PeriodicTable::table_name(4, 32);
   ASSERT_TRUE(std::filesystem::exists(file));
-  const auto again = texture::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, texture::TableOrigin::cache);
+  const auto again = engine::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, engine::TableOrigin::cache);
   EXPECT_EQ(again->tables(), built->tables());
   // Honest tables pass the boundary elements' spot check whatever sample it draws.
-  for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_TRUE(texture::spot_check(*built, seed)) << seed;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) EXPECT_TRUE(engine::spot_check(*built, seed)) << seed;
 
   // A forgery of the whole surface breaks its bookkeeping (the last sample of a row is full
   // contact, the areas the level shares of the cell).
@@ -149,9 +149,9 @@ TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
   ASSERT_TRUE(model::PeriodicTable::from_tables(forged.tables()));
   for (const bool own_key : {false, true}) {
     forge(file, forged.tables(), own_key);
-    EXPECT_TRUE(texture::read_tables(file).empty()) << own_key;
-    const auto rebuilt = texture::periodic_table_for(4, 32, folder, true, {}, &origin);
-    EXPECT_EQ(origin, texture::TableOrigin::built) << own_key;
+    EXPECT_TRUE(engine::read_tables(file).empty()) << own_key;
+    const auto rebuilt = engine::periodic_table_for(4, 32, folder, true, {}, &origin);
+    EXPECT_EQ(origin, engine::TableOrigin::built) << own_key;
     EXPECT_EQ(rebuilt->tables(), built->tables());
   }
   // Every edited number is caught, not only a sampled one.
@@ -162,41 +162,41 @@ TEST(PeriodicTableCache, keeps_signs_and_refuses_forgeries) {
     double& x = edited[random() % edited.size()];
     x = std::nextafter(x, std::numeric_limits<double>::infinity());  // the last bit
     forge(file, edited, false);
-    EXPECT_TRUE(texture::read_tables(file).empty()) << trial;
+    EXPECT_TRUE(engine::read_tables(file).empty()) << trial;
   }
-  texture::write_tables(file, honest);
-  EXPECT_EQ(texture::read_tables(file), honest);
+  engine::write_tables(file, honest);
+  EXPECT_EQ(engine::read_tables(file), honest);
   // A key others can read is not believed: nothing is read from or written to that cache.
   std::filesystem::permissions(folder / "key", std::filesystem::perms::group_read, std::filesystem::perm_options::add);
-  EXPECT_TRUE(texture::read_tables(file).empty());
-  EXPECT_NE(texture::untrusted_folder(folder).find("key"), std::string::npos);
+  EXPECT_TRUE(engine::read_tables(file).empty());
+  EXPECT_NE(engine::untrusted_folder(folder).find("key"), std::string::npos);
   std::filesystem::remove(folder / "key");  // a new key: the old files are built again
-  EXPECT_EQ(texture::untrusted_folder(folder), "");
-  texture::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, texture::TableOrigin::built);
+  EXPECT_EQ(engine::untrusted_folder(folder), "");
+  engine::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, engine::TableOrigin::built);
 
   // A damaged file (cut short) is not read either.
   std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
-  texture::periodic_table_for(4, 32, folder, true, {}, &origin);
-  EXPECT_EQ(origin, texture::TableOrigin::built);
+  engine::periodic_table_for(4, 32, folder, true, {}, &origin);
+  EXPECT_EQ(origin, engine::TableOrigin::built);
 }
 
 // Builders that start together build once: the others wait on the lock and read the file.
 TEST(PeriodicTableCache, concurrent_builders_build_once) {
   const ScratchFolder folder;
-  std::vector<std::future<texture::TableOrigin>> builders;
+  std::vector<std::future<engine::TableOrigin>> builders;
   for (int k = 0; k < 3; ++k) {
     builders.push_back(std::async(std::launch::async, [&] {
-      texture::TableOrigin origin{};
-      texture::periodic_table_for(5, 32, folder.path, true, {}, &origin);
+      engine::TableOrigin origin{};
+      engine::periodic_table_for(5, 32, folder.path, true, {}, &origin);
       return origin;
     }));
   }
   int built = 0, cached = 0;
   for (auto& b : builders) {
-    const texture::TableOrigin origin = b.get();
-    built += origin == texture::TableOrigin::built;
-    cached += origin == texture::TableOrigin::cache;
+    const engine::TableOrigin origin = b.get();
+    built += origin == engine::TableOrigin::built;
+    cached += origin == engine::TableOrigin::cache;
   }
   EXPECT_EQ(built, 1);
   EXPECT_EQ(cached, 2);
@@ -229,10 +229,10 @@ TEST(PeriodicModel, agrees_with_the_time_stepping_reference) {
     for (const auto& a : args) text += a + " ";
     std::vector<std::string> model_args = args;
     model_args.insert(model_args.end(), {"--localization", "periodic"});
-    const app::PointRun m = app::evaluate_point(keywords_of(model_args));
+    const engine::PointRun m = engine::evaluate_point(keywords_of(model_args));
     std::vector<std::string> bem_args = args;
     bem_args.insert(bem_args.end(), {"--bem-grid", "512"});
-    const app::ReferenceRun b = app::evaluate_reference(keywords_of(bem_args));
+    const engine::ReferenceRun b = engine::evaluate_reference(keywords_of(bem_args));
     ASSERT_TRUE(m.result.valid()) << text << m.result.reason();
     ASSERT_EQ(m.result.regime, b.result.regime) << text;
     if (b.result.t_star && *b.result.t_star > 0.0) {
@@ -262,8 +262,8 @@ TEST(PeriodicModel, merged_spots_are_valid) {
   std::vector<std::string> refined = args, periodic = args;
   refined.insert(refined.end(), {"--localization", "refined"});
   periodic.insert(periodic.end(), {"--localization", "periodic"});
-  EXPECT_FALSE(app::evaluate_point(keywords_of(refined)).result.valid());
-  const model::PointResult r = app::evaluate_point(keywords_of(periodic)).result;
+  EXPECT_FALSE(engine::evaluate_point(keywords_of(refined)).result.valid());
+  const model::PointResult r = engine::evaluate_point(keywords_of(periodic)).result;
   EXPECT_TRUE(r.valid()) << r.reason();
   EXPECT_GT(r.area_fraction_inf, 0.99);
   EXPECT_GT(r.a1_inf + r.a2_inf, 0.5 / std::sqrt(2.0));
@@ -272,11 +272,11 @@ TEST(PeriodicModel, merged_spots_are_valid) {
 // A table whose pressures fall somewhere along the loads (a contact that recedes) makes
 // every point that crosses that stretch `unloading`, with the reason.
 TEST(PeriodicModel, unloading_tables_flag_their_points) {
-  const model::PeriodicTable honest = *texture::shipped_periodic_table(2);
+  const model::PeriodicTable honest = *engine::shipped_periodic_table(2);
   model::PeriodicTable receding = honest;
   for (auto& m : receding.monotone2) m = 0;
   receding.finish();
-  const auto small = texture::small_spot_table_for(2);
+  const auto small = engine::small_spot_table_for(2);
   const auto solution_of = [&](const model::PeriodicTable& tables) {
     return std::make_shared<const model::PeriodicSolution>(std::make_shared<const model::PeriodicTable>(tables), small);
   };
@@ -307,8 +307,8 @@ TEST(PeriodicModel, reference_brackets_t_star_below_the_rounding_of_time) {
   std::vector<std::string> bem = args, periodic = args;
   bem.insert(bem.end(), {"--bem-grid", "64"});
   periodic.insert(periodic.end(), {"--localization", "periodic"});
-  const app::ReferenceRun b = app::evaluate_reference(keywords_of(bem));
-  const model::PointResult m = app::evaluate_point(keywords_of(periodic)).result;
+  const engine::ReferenceRun b = engine::evaluate_reference(keywords_of(bem));
+  const model::PointResult m = engine::evaluate_point(keywords_of(periodic)).result;
   ASSERT_EQ(b.result.regime, model::Regime::delayed);
   ASSERT_EQ(m.regime, model::Regime::delayed);
   EXPECT_NEAR(*b.result.t_star, *m.t_star, 1e-3 * *m.t_star);

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "texture/periodic_tables.hpp"
-#include "app/point_command.hpp"
+#include "engine/periodic_tables.hpp"
+#include "engine/point_evaluation.hpp"
 #include "model/periodic/periodic_solution.hpp"
 #include "model/shells/single_level_shells.hpp"
 #include "model/periodic/small_spot_table.hpp"
@@ -56,7 +56,7 @@ std::string text(double x) {
 
 /// The model reads the shipped tables (what `punchsweep` and the Python module do).
 void use_shipped_tables() {
-  model::set_periodic_solution_source([](int s) { return texture::periodic_solution_for(s, std::nullopt); });
+  model::set_periodic_solution_source([](int s) { return engine::periodic_solution_for(s, std::nullopt); });
 }
 
 }  // namespace
@@ -65,7 +65,7 @@ void use_shipped_tables() {
 // machine's rounding may move the last bits).
 TEST(SmallSpotTable, shipped_ones_are_what_the_builder_makes) {
   for (const int s : {1, 2, 3}) {
-    const std::optional<model::SmallSpotTable> shipped = texture::shipped_small_spot_table(s);
+    const std::optional<model::SmallSpotTable> shipped = engine::shipped_small_spot_table(s);
     ASSERT_TRUE(shipped) << s;
     const std::vector<double> a = shipped->tables(), b = model::build_small_spot_table(s).tables();
     ASSERT_EQ(a.size(), b.size());
@@ -130,11 +130,11 @@ void expect_the_isolated_punch_in_the_far_field(const model::SmallSpotTable& t) 
 
 TEST(SmallSpotTable, meets_the_refined_localization_between_its_samples) {
   std::mt19937_64 random(34);
-  for (const int s : {1, 2, 3}) expect_meets_the_refined_localization(*texture::shipped_small_spot_table(s), 25, random);
+  for (const int s : {1, 2, 3}) expect_meets_the_refined_localization(*engine::shipped_small_spot_table(s), 25, random);
 }
 
 TEST(SmallSpotTable, tends_to_the_isolated_punch_in_the_lattices_far_field) {
-  for (const int s : {1, 2, 3}) expect_the_isolated_punch_in_the_far_field(*texture::shipped_small_spot_table(s));
+  for (const int s : {1, 2, 3}) expect_the_isolated_punch_in_the_far_field(*engine::shipped_small_spot_table(s));
 }
 
 // Every exponent the periodic model takes has its table, built as on first use: s = 7 to 16
@@ -153,7 +153,7 @@ TEST(SmallSpotTable, every_exponent_is_built_and_meets_its_limits) {
 }
 
 TEST(SmallSpotTable, refuses_inconsistent_numbers) {
-  const model::SmallSpotTable t = *texture::shipped_small_spot_table(2);
+  const model::SmallSpotTable t = *engine::shipped_small_spot_table(2);
   ASSERT_TRUE(model::SmallSpotTable::from_tables(t.tables()));
   std::vector<double> numbers = t.tables();
   numbers.pop_back();
@@ -172,7 +172,7 @@ TEST(SmallSpotTable, refuses_inconsistent_numbers) {
 // the radii's; the bounds are the tables' accuracy against N = 2048, docs/model.md, 14.7).
 TEST(PeriodicSolution, hands_over_smoothly) {
   for (const int s : {1, 2, 3}) {
-    const std::shared_ptr<const model::PeriodicSolution> p = texture::periodic_solution_for(s, std::nullopt, true);
+    const std::shared_ptr<const model::PeriodicSolution> p = engine::periodic_solution_for(s, std::nullopt, true);
     const model::SmallSpotTable& small = p->small();
     const int n = s + 1;
     const auto xi_of = [n](double v) { return std::pow(v, n); };
@@ -217,7 +217,7 @@ TEST(PeriodicSolution, touches_down_where_h_says_and_starts_from_the_single_leve
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const int s : {1, 2, 3}) {
-    const std::shared_ptr<const model::PeriodicSolution> p = texture::periodic_solution_for(s, std::nullopt, true);
+    const std::shared_ptr<const model::PeriodicSolution> p = engine::periodic_solution_for(s, std::nullopt, true);
     const model::SmallSpotTable& small = p->small();
     for (const double xi : {1e-9, 1e-4, 0.5 * small.xi_gap_hand(), 0.5 * (small.xi_gap_hand() + small.xi_gap_top()),
                             0.5 * (small.xi_gap_top() + small.xi_hand()), 0.5 * (small.xi_hand() + small.xi_top()),
@@ -243,7 +243,7 @@ TEST(PeriodicModel, an_isolated_spot_follows_lee_and_radok) {
   const double l = 10.0, pbar = 1e-6, T = 5.0, C = 0.5;
   const std::vector<double> times = {0.0, 0.5, 1.0, 2.0, 5.0};
   for (const int s : {1, 2, 3}) {
-    const app::PointRun m = app::evaluate_point(keywords_of({"--l", "10", "--dh", "1", "--T", "5", "--pbar", "1e-6", "--s",
+    const engine::PointRun m = engine::evaluate_point(keywords_of({"--l", "10", "--dh", "1", "--T", "5", "--pbar", "1e-6", "--s",
                                                              std::to_string(s), "--times", "0,0.5,1,2,5"}));
     ASSERT_TRUE(m.result.valid()) << m.result.reason();
     ASSERT_EQ(m.result.regime, model::Regime::never);
@@ -278,16 +278,16 @@ TEST(PeriodicModel, equals_the_refined_model_where_spots_are_small) {
                                                "--times", "0,0.3,1,5"};
         std::vector<std::string> probe = base;
         probe.insert(probe.end(), {"--dh", "1e9"});
-        const app::PointRun free = app::evaluate_point(keywords_of(probe));
+        const engine::PointRun free = engine::evaluate_point(keywords_of(probe));
         for (const double share : {0.0, 0.5, 1.2, 2.0, 3.5}) {
           const double dh = share * free.result.h_0;
           std::vector<std::string> args = base;
           args.insert(args.end(), {"--dh", text(dh)});
           std::vector<std::string> ref_args = args;
           ref_args.insert(ref_args.end(), {"--localization", "refined"});
-          const app::PointRun r = app::evaluate_point(keywords_of(ref_args));
+          const engine::PointRun r = engine::evaluate_point(keywords_of(ref_args));
           if (!r.result.valid() || r.result.series.back().a1 > 0.05 * l) continue;
-          const app::PointRun p = app::evaluate_point(keywords_of(args));
+          const engine::PointRun p = engine::evaluate_point(keywords_of(args));
           ASSERT_TRUE(p.result.valid()) << p.result.reason();
           ASSERT_EQ(p.result.regime, r.result.regime) << "s " << s << " l " << l << " pbar " << pbar << " dh " << dh;
           const double load = pbar * l * l;
@@ -328,11 +328,11 @@ TEST(PeriodicModel, two_levels_at_one_height_are_one_lattice) {
     const double T = 1.0 + 9.0 * unit(random);
     const std::vector<std::string> args = {"--l", text(l), "--dh", "0", "--T", text(T), "--pbar", text(pbar), "--s",
                                            std::to_string(s), "--times", "0,1,5"};
-    const app::PointRun m = app::evaluate_point(keywords_of(args));
+    const engine::PointRun m = engine::evaluate_point(keywords_of(args));
     ASSERT_TRUE(m.result.valid()) << m.result.reason();
     ASSERT_EQ(m.result.regime, model::Regime::immediate);
     EXPECT_EQ(m.result.a1_inf, m.result.a2_inf);
-    const app::PointRun one = app::evaluate_point(keywords_of({"--l", text(l / std::numbers::sqrt2), "--dh", "1e9", "--T",
+    const engine::PointRun one = engine::evaluate_point(keywords_of({"--l", text(l / std::numbers::sqrt2), "--dh", "1e9", "--T",
                                                                text(T), "--pbar", text(pbar), "--s", std::to_string(s),
                                                                "--times", "0,1,5"}));
     for (std::size_t k = 0; k < 3; ++k) {

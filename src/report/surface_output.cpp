@@ -1,4 +1,4 @@
-#include "app/surface_output.hpp"
+#include "report/surface_output.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "engine/surface_evaluation.hpp"
 #include "input/command_options.hpp"
 #include "model/laws/material.hpp"
 #include "model/surface/surface_advisory.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::report {
 
 namespace {
 
@@ -37,7 +38,7 @@ DropRange drop_range(const model::CellGeometry& geometry, int level) {
 
 /// "physical": the lengths, areas, loads and loads X in R's unit, its square, N and Pa,
 /// where --R and a material give the scales (nothing otherwise).
-void write_physical(std::ostream& out, const texture::SurfaceRun& run, const model::SurfaceAdvisories& advice) {
+void write_physical(std::ostream& out, const engine::SurfaceRun& run, const model::SurfaceAdvisories& advice) {
   const input::PhysicalScales& scales = run.inputs.scales;
   const std::optional<input::PhysicalUnit> length = input::physical_unit("R", scales);
   const std::optional<input::PhysicalUnit> pressure = input::physical_unit("E0/(1-nu^2)", scales);
@@ -76,7 +77,7 @@ void write_physical(std::ostream& out, const texture::SurfaceRun& run, const mod
 }
 
 /// "check": the time stepping's touch times, areas and loads at the same times.
-void write_check(std::ostream& out, const texture::SurfaceRun& run) {
+void write_check(std::ostream& out, const engine::SurfaceRun& run) {
   const reference::CellReference& r = *run.stepped;
   const int L = run.curve.levels();
   out << "  \"check\": {\n    \"seconds\": " << num(run.check_seconds) << ", \"steps\": " << r.steps << ", \"converged\": "
@@ -108,7 +109,7 @@ void write_check(std::ostream& out, const texture::SurfaceRun& run) {
 
 /// Per level, whether every cap of it lies under the taller caps' surface
 /// (model::tip_exposed); level 0 never does. One scan of the cell for all levels.
-std::vector<char> hidden_levels(const texture::SurfaceRun& run) {
+std::vector<char> hidden_levels(const engine::SurfaceRun& run) {
   const std::size_t L = static_cast<std::size_t>(run.curve.levels());
   std::vector<char> hidden(L, 0);
   if (run.measured) return hidden;  // a summit is the highest pixel about it
@@ -125,7 +126,7 @@ std::vector<char> hidden_levels(const texture::SurfaceRun& run) {
 /// taller ones' surface (hidden: their tips are not on the texture's surface, and the
 /// contact reaches them only as the taller caps' spreads), or the load never reaches its
 /// touchdown before full contact or the curve's end.
-std::string never_reason(const texture::SurfaceRun& run, bool hidden) {
+std::string never_reason(const engine::SurfaceRun& run, bool hidden) {
   std::ostringstream out;
   if (hidden) {
     out << "hidden: its tips lie under the taller caps' surface, so it never touches as a cap of its own";
@@ -154,9 +155,9 @@ std::string advisory_reason(const model::SurfaceAdvisories& advice) {
 
 /// Where the curve came from: "tables" (the periodic model's) or "cell" (the cell's own
 /// boundary elements).
-std::string curve_source_name(const texture::SurfaceRun& run) { return run.curve_source == texture::CurveSource::tables ? "tables" : "cell"; }
+std::string curve_source_name(const engine::SurfaceRun& run) { return run.curve_source == engine::CurveSource::tables ? "tables" : "cell"; }
 
-void write_json(std::ostream& out, const texture::SurfaceRun& run) {
+void write_json(std::ostream& out, const engine::SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
   out << "  \"lattice\": " << input::json_string(run.measured ? "height map" : run.cell_file.empty() ? model::lattice_name(run.lattice) : "cell") << ",\n";
@@ -235,7 +236,7 @@ void write_json(std::ostream& out, const texture::SurfaceRun& run) {
       << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\", \"contact_radius\": \"R\"}\n}\n";
 }
 
-void write_table(std::ostream& out, const texture::SurfaceRun& run, bool csv) {
+void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
   const int L = run.curve.levels();
   const char* sep = csv ? "," : "  ";
   out << (csv ? "# " : "") << "punchsweep surface: "
@@ -244,7 +245,7 @@ void write_table(std::ostream& out, const texture::SurfaceRun& run, bool csv) {
   if (run.inputs.material) out << (csv ? "# " : "  ") << "material: " << run.inputs.material->describe() << "\n";
   for (const std::string& note : run.inputs.notes) out << (csv ? "# " : "  ") << "note: " << note << "\n";
   out << (csv ? "# " : "  ") << "load curve: "
-      << (run.curve_source == texture::CurveSource::tables ? "the periodic model's tables (with their small-spot table), " : "")
+      << (run.curve_source == engine::CurveSource::tables ? "the periodic model's tables (with their small-spot table), " : "")
       << run.curve.nx << " x " << run.curve.ny << " nodes, "
       << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
       << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s"
@@ -324,7 +325,7 @@ void write_table(std::ostream& out, const texture::SurfaceRun& run, bool csv) {
 
 }  // namespace
 
-void write_surface(std::ostream& out, OutputFormat format, const texture::SurfaceRun& run) {
+void write_surface(std::ostream& out, OutputFormat format, const engine::SurfaceRun& run) {
   if (format == OutputFormat::json) {
     write_json(out, run);
   } else {
@@ -332,4 +333,10 @@ void write_surface(std::ostream& out, OutputFormat format, const texture::Surfac
   }
 }
 
-}  // namespace punchsweep::app
+std::string surface_json(const input::Keywords& keywords) {
+  std::ostringstream out;
+  write_surface(out, OutputFormat::json, engine::evaluate_surface(keywords));
+  return out.str();
+}
+
+}  // namespace punchsweep::report

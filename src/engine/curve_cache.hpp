@@ -9,7 +9,7 @@
 #include "reference/load_curve.hpp"
 #include "reference/periodic_grid.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 
 /// Where a curve came from.
 enum class CurveOrigin { cache, built };
@@ -25,4 +25,4 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
 /// builds nothing and takes no lock).
 bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell& cell, const reference::LoadCurveOptions& options);
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

@@ -1,4 +1,4 @@
-#include "texture/curve_cache.hpp"
+#include "engine/curve_cache.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "texture/table_cache.hpp"
+#include "engine/table_cache.hpp"
 #include "io/sha256.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 
 namespace {
 
@@ -119,4 +119,4 @@ bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell&
   return folder && saved_curve(cache_entry(*folder, curve_key(geometry, cell, options))).has_value();
 }
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

@@ -1,4 +1,4 @@
-#include "texture/table_cache.hpp"
+#include "engine/table_cache.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -19,7 +19,7 @@
 #include "io/file_descriptor.hpp"
 #include "io/sha256.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'S', 'W', 'T', 'A', 'B', '0', '2'};
@@ -205,4 +205,4 @@ FileLock::~FileLock() {
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

@@ -15,7 +15,7 @@
 #include "reference/cell_stepping.hpp"
 #include "reference/measured_cell.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 
 /// Where a texture's load curve comes from (--curve): the periodic model's tables
 /// (model/surface/periodic_curve.hpp; the two-level square lattice), the cell's own boundary
@@ -61,4 +61,4 @@ struct SurfaceRun {
   double check_t_star_resolution = 0.0;
 };
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

@@ -17,12 +17,12 @@
 #include "model/periodic/small_spot_table.hpp"
 #include "reference/periodic_table_builder.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 
 /// The grid of the tables the engine uses.
 inline constexpr int kPeriodicTableGrid = 512;
 
-/// The tables shipped in the source tree (src/texture/periodic_tables/), if any for (s, n).
+/// The tables shipped in the source tree (src/engine/periodic_tables/), if any for (s, n).
 std::optional<model::PeriodicTable> shipped_periodic_table(int s, int n = kPeriodicTableGrid);
 
 /// Whether loaded tables are the boundary elements' own: three single-level samples and one
@@ -51,7 +51,7 @@ std::shared_ptr<const model::PeriodicTable> periodic_table_for(int s, int n,
                                                               const reference::PeriodicTableOptions& options = {},
                                                               TableOrigin* origin = nullptr);
 
-/// The small-spot table shipped in the source tree (src/texture/periodic_tables/), if any for s.
+/// The small-spot table shipped in the source tree (src/engine/periodic_tables/), if any for s.
 std::optional<model::SmallSpotTable> shipped_small_spot_table(int s);
 
 /// The small-spot table of s: shipped, else built (a line on stderr where that took a second
@@ -70,8 +70,8 @@ std::shared_ptr<const model::PeriodicSolution> periodic_solution_for(int s, cons
 void use_table_cache();
 
 /// The tables as C++ source text (an initializer list of hex-float numbers with a header
-/// saying how they were made), what src/texture/periodic_tables/ holds.
+/// saying how they were made), what src/engine/periodic_tables/ holds.
 std::string periodic_table_source(const model::PeriodicTable& table, const std::string& provenance);
 std::string small_spot_table_source(const model::SmallSpotTable& table, const std::string& provenance);
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

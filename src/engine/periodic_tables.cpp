@@ -1,4 +1,4 @@
-#include "texture/periodic_tables.hpp"
+#include "engine/periodic_tables.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -14,52 +14,52 @@
 #include <sstream>
 #include <vector>
 
-#include "texture/table_cache.hpp"
+#include "engine/table_cache.hpp"
 #include "io/file_descriptor.hpp"
 #include "model/shells/shell_sums.hpp"
 #include "model/periodic/small_spot_builder.hpp"
 #include "reference/periodic_grid.hpp"
 #include "sweep/reproducible_fft.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 namespace {
 
 // The shipped tables: made by `punchsweep tables --s S --write-source F` (the provenance is
 // at the top of each file).
-#if __has_include("texture/periodic_tables/periodic-s1-n512.inc")
+#if __has_include("engine/periodic_tables/periodic-s1-n512.inc")
 constexpr double kShippedS1[] = {
-#include "texture/periodic_tables/periodic-s1-n512.inc"
+#include "engine/periodic_tables/periodic-s1-n512.inc"
 };
 #define PUNCHSWEEP_SHIPPED_S1 1
 #endif
-#if __has_include("texture/periodic_tables/periodic-s2-n512.inc")
+#if __has_include("engine/periodic_tables/periodic-s2-n512.inc")
 constexpr double kShippedS2[] = {
-#include "texture/periodic_tables/periodic-s2-n512.inc"
+#include "engine/periodic_tables/periodic-s2-n512.inc"
 };
 #define PUNCHSWEEP_SHIPPED_S2 1
 #endif
-#if __has_include("texture/periodic_tables/periodic-s3-n512.inc")
+#if __has_include("engine/periodic_tables/periodic-s3-n512.inc")
 constexpr double kShippedS3[] = {
-#include "texture/periodic_tables/periodic-s3-n512.inc"
+#include "engine/periodic_tables/periodic-s3-n512.inc"
 };
 #define PUNCHSWEEP_SHIPPED_S3 1
 #endif
 
-#if __has_include("texture/periodic_tables/small_spot-s1.inc")
+#if __has_include("engine/periodic_tables/small_spot-s1.inc")
 constexpr double kSmallSpotS1[] = {
-#include "texture/periodic_tables/small_spot-s1.inc"
+#include "engine/periodic_tables/small_spot-s1.inc"
 };
 #define PUNCHSWEEP_SMALL_SPOT_S1 1
 #endif
-#if __has_include("texture/periodic_tables/small_spot-s2.inc")
+#if __has_include("engine/periodic_tables/small_spot-s2.inc")
 constexpr double kSmallSpotS2[] = {
-#include "texture/periodic_tables/small_spot-s2.inc"
+#include "engine/periodic_tables/small_spot-s2.inc"
 };
 #define PUNCHSWEEP_SMALL_SPOT_S2 1
 #endif
-#if __has_include("texture/periodic_tables/small_spot-s3.inc")
+#if __has_include("engine/periodic_tables/small_spot-s3.inc")
 constexpr double kSmallSpotS3[] = {
-#include "texture/periodic_tables/small_spot-s3.inc"
+#include "engine/periodic_tables/small_spot-s3.inc"
 };
 #define PUNCHSWEEP_SMALL_SPOT_S3 1
 #endif
@@ -291,4 +291,4 @@ void use_table_cache() {
                                }});
 }
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

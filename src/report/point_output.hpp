@@ -10,7 +10,7 @@
 #include "input/command_options.hpp"
 #include "model/point/point_evaluation.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::report {
 
 enum class OutputFormat { table, json, csv };
 
@@ -56,4 +56,4 @@ std::vector<PhysicalField> physical_fields(const input::PointInputs& inputs, con
 /// UDUNITS-2 string).
 void write_point(std::ostream& out, OutputFormat format, const input::PointInputs& inputs, const model::PointResult& result);
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::report

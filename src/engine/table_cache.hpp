@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 
 /// Where the engine keeps tables between runs, and whether it may: the folder, or none with
 /// the reason (empty when the cache is off on purpose).
@@ -69,4 +69,4 @@ class FileLock {
   int fd_;
 };
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

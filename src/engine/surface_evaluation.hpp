@@ -16,9 +16,9 @@
 
 #include "input/command_options.hpp"
 #include "reference/periodic_grid.hpp"
-#include "texture/surface_run.hpp"
+#include "engine/surface_run.hpp"
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 
 /// The most boundary-element nodes a pitch a texture's curve (or design) is solved on.
 inline constexpr int kMaxGridNodes = 2048;
@@ -95,4 +95,4 @@ CurveCost curve_cost(SurfaceRun& run);
 /// Throws input::UsageError for what evaluate_surface would refuse (check_surface).
 CurveCost curve_cost(const input::Keywords& keywords);
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

@@ -1,4 +1,4 @@
-#include "texture/surface_evaluation.hpp"
+#include "engine/surface_evaluation.hpp"
 
 #include <boost/program_options.hpp>
 
@@ -12,7 +12,7 @@
 #include <sstream>
 #include <utility>
 
-#include "texture/curve_cache.hpp"
+#include "engine/curve_cache.hpp"
 #include "input/cell_file.hpp"
 #include "input/height_map.hpp"
 #include "input/scaled_value.hpp"
@@ -30,7 +30,7 @@
 
 namespace po = boost::program_options;
 
-namespace punchsweep::texture {
+namespace punchsweep::engine {
 namespace {
 
 /// --grid auto: the least nodes a pitch that give the
@@ -789,4 +789,4 @@ CurveCost curve_cost(const input::Keywords& keywords) {
   return with_keywords(keywords, [](SurfaceRun& run) { return curve_cost(run); });
 }
 
-}  // namespace punchsweep::texture
+}  // namespace punchsweep::engine

@@ -1,4 +1,4 @@
-#include "app/point_output.hpp"
+#include "report/point_output.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include "map/quantities.hpp"
 #include "model/laws/material.hpp"
 
-namespace punchsweep::app {
+namespace punchsweep::report {
 
 OutputFormat read_output_format(const boost::program_options::variables_map& vm) {
   const std::string text = input::read_choice(vm, "format", {"table", "json", "csv"});
@@ -361,4 +361,4 @@ void write_point(std::ostream& out, OutputFormat format, const input::PointInput
   }
 }
 
-}  // namespace punchsweep::app
+}  // namespace punchsweep::report
