@@ -16,18 +16,41 @@ namespace punchsweep::engine {
 
 namespace {
 
-/// Everything the curve depends on, as text: the geometry, the grid, the cell's fields and
-/// the options (a change of any gives another file).
-std::string curve_key(const model::CellGeometry& g, const reference::Cell& cell, const reference::LoadCurveOptions& o) {
-  const reference::PeriodicGrid& grid = cell.grid;
-  // The cell's own numbers too (a measured map's heights are no sites' punches): the
-  // profile and the levels' shares, hashed.
+/// The digest of a cell's fields: its profile, the levels' shares, the tips.
+io::Digest cell_digest(const reference::Cell& cell) {
   io::Sha256 fields;
   fields.update(cell.profile.data(), cell.profile.size() * sizeof(double));
   for (const std::vector<double>& weight : cell.level_weight) fields.update(weight.data(), weight.size() * sizeof(double));
   fields.update(cell.tips.data(), cell.tips.size() * sizeof(std::size_t));
   fields.update(cell.tip_exposed.data(), cell.tip_exposed.size());
-  const io::Digest field_digest = fields.digest();
+  return fields.digest();
+}
+
+/// The fingerprint of reference::make_cell: the digest of the cell it makes of a probe (a
+/// hexagonal lattice of three levels on a small grid), once per process. A curve's key holds
+/// it instead of the cell's own fields, so that a cached curve is found from its geometry
+/// and grid without making its cell (seconds for a scattered supercell), and a change to how
+/// cells are made, which changes the probe's, gives every curve another key.
+const std::string& cell_maker_fingerprint() {
+  static const std::string fingerprint = [] {
+    model::Shape shape;
+    shape.s = 2.0;
+    shape.C = 0.5;
+    const model::CellGeometry probe = model::lattice_cell(model::LatticeKind::hexagonal, 1.2, shape, {0.05, 0.08});
+    const reference::Cell cell = reference::make_cell(probe, reference::lattice_grid(probe, model::LatticeKind::hexagonal, 12, 1));
+    std::ostringstream text;
+    for (unsigned char byte : cell_digest(cell)) text << ' ' << static_cast<int>(byte);
+    return text.str();
+  }();
+  return fingerprint;
+}
+
+/// Everything the curve depends on, as text: the geometry, the grid, the options, and the
+/// cell: a measured map's own fields (its heights are no sites' punches), hashed; else how
+/// cells are made from a geometry and a grid (cell_maker_fingerprint). A change of any
+/// gives another file.
+std::string curve_key(const model::CellGeometry& g, const reference::PeriodicGrid& grid, const reference::LoadCurveOptions& o,
+                      const reference::Cell* measured) {
   std::ostringstream key;
   key.precision(17);
   key << "punchsweep load curve, format " << model::LoadCurve::kFormat << "; cell " << g.Lx << " x " << g.Ly << "; sites";
@@ -35,8 +58,13 @@ std::string curve_key(const model::CellGeometry& g, const reference::Cell& cell,
   key << "; grid " << grid.nx << " x " << grid.ny << (grid.mirrored() ? " quarter" : " whole") << "; top " << o.X_top
       << "; spot " << o.min_spot_nodes << "; decade " << o.samples_per_decade << "; area " << o.area_tolerance << "; load "
       << o.load_tolerance << "; refinements " << o.max_refinements << "; touchdown " << o.touchdown_tolerance << "; solver "
-      << o.solver.tolerance << ' ' << o.solver.max_iterations << ' ' << o.solver.precondition << "; fields";
-  for (unsigned char byte : field_digest) key << ' ' << static_cast<int>(byte);
+      << o.solver.tolerance << ' ' << o.solver.max_iterations << ' ' << o.solver.precondition;
+  if (measured) {
+    key << "; fields";
+    for (unsigned char byte : cell_digest(*measured)) key << ' ' << static_cast<int>(byte);
+  } else {
+    key << "; cells made as" << cell_maker_fingerprint();
+  }
   return key.str();
 }
 
@@ -92,21 +120,22 @@ std::optional<std::filesystem::path> usable_cache() {
 
 }  // namespace
 
-model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::Cell& cell,
-                                const reference::LoadCurveOptions& options, CurveOrigin* origin) {
+model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
+                                const reference::LoadCurveOptions& options, const reference::Cell* measured,
+                                const std::function<const reference::Cell&()>& cell, CurveOrigin* origin) {
   CurveOrigin ignored;
   if (origin == nullptr) origin = &ignored;
   *origin = CurveOrigin::built;
   const std::optional<std::filesystem::path> folder = usable_cache();
-  if (!folder) return reference::build_load_curve(geometry, cell, options);
-  const CacheEntry entry = cache_entry(*folder, curve_key(geometry, cell, options));
+  if (!folder) return reference::build_load_curve(geometry, cell(), options);
+  const CacheEntry entry = cache_entry(*folder, curve_key(geometry, grid, options, measured));
   const FileLock lock(*folder / (entry.name + ".lock"));
   // Under the lock a builder before us has saved its curve by now.
   if (std::optional<model::LoadCurve> curve = saved_curve(entry)) {
     *origin = CurveOrigin::cache;
     return std::move(*curve);
   }
-  model::LoadCurve curve = reference::build_load_curve(geometry, cell, options);
+  model::LoadCurve curve = reference::build_load_curve(geometry, cell(), options);
   std::vector<double> saved = entry.digest;
   const std::vector<double> tables = curve.tables();
   saved.insert(saved.end(), tables.begin(), tables.end());
@@ -114,9 +143,10 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
   return curve;
 }
 
-bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell& cell, const reference::LoadCurveOptions& options) {
+bool curve_is_cached(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
+                     const reference::LoadCurveOptions& options, const reference::Cell* measured) {
   const std::optional<std::filesystem::path> folder = usable_cache();
-  return folder && saved_curve(cache_entry(*folder, curve_key(geometry, cell, options))).has_value();
+  return folder && saved_curve(cache_entry(*folder, curve_key(geometry, grid, options, measured))).has_value();
 }
 
 }  // namespace punchsweep::engine

@@ -4,6 +4,8 @@
 /// (table_cache.hpp) under the same rules as the periodic model's tables: signed files in a
 /// private folder, built once per geometry, grid and numerical options.
 
+#include <functional>
+
 #include "model/problem/cell_geometry.hpp"
 #include "model/surface/load_curve.hpp"
 #include "reference/load_curve.hpp"
@@ -14,15 +16,21 @@ namespace punchsweep::engine {
 /// Where a curve came from.
 enum class CurveOrigin { cache, built };
 
-/// The load curve of `geometry` on `cell`'s grid with `options`: read from the table cache
-/// where this engine saved one for the same geometry, grid, cell fields (profile, level
-/// shares, tips) and options (they are hashed into the file's name and checked inside it), else built and saved there (under a lock,
-/// so that processes asking at once build it once). Without a usable cache it is built.
-model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::Cell& cell,
-                                const reference::LoadCurveOptions& options, CurveOrigin* origin = nullptr);
+/// The load curve of `geometry` on `grid` with `options`: read from the table cache where
+/// this engine saved one for the same geometry, grid, options and cell (they are hashed
+/// into the file's name and checked inside it: a measured map's cell by its fields, a cell
+/// made from the geometry by how cells are made), else built on `cell()` and saved there
+/// (under a lock, so that processes asking at once build it once). `cell` is called only
+/// to build: a cached curve is read in milliseconds, without its cell. `measured`: a
+/// measured map's cell (its heights are data), else null. Without a usable cache it is
+/// built.
+model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
+                                const reference::LoadCurveOptions& options, const reference::Cell* measured,
+                                const std::function<const reference::Cell&()>& cell, CurveOrigin* origin = nullptr);
 
 /// Whether load_curve_for would read this curve from the cache (a dry run's question; it
-/// builds nothing and takes no lock).
-bool curve_is_cached(const model::CellGeometry& geometry, const reference::Cell& cell, const reference::LoadCurveOptions& options);
+/// builds nothing, makes no cell and takes no lock).
+bool curve_is_cached(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
+                     const reference::LoadCurveOptions& options, const reference::Cell* measured);
 
 }  // namespace punchsweep::engine

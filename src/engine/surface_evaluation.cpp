@@ -496,22 +496,16 @@ std::string scale_problem(const SurfaceRun& run) {
   return out.str();
 }
 
-/// The cell the boundary elements solve (the curve's, or --check's): its grid, the tips
-/// snapped to its nodes for a cell file (with a note). A texture whose scales the solve
-/// cannot take (scale_problem) or a grid beyond the budget (budget_problem) is refused
-/// before anything is allocated.
-reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeightedLoad& load, bool progress) {
+/// The grid the boundary elements solve on (the curve's, or --check's), a cell file's tips
+/// snapped to its nodes (with a note). A texture whose scales the solve cannot take
+/// (scale_problem) or a grid beyond the budget (budget_problem) is refused before anything
+/// is allocated.
+reference::PeriodicGrid boundary_element_grid(SurfaceRun& run, const model::CreepWeightedLoad& load) {
   if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
   if (run.grid_nodes == 0 && !run.measured) run.grid_nodes = auto_grid(run, load);
   reference::PeriodicGrid grid = curve_grid(run, run.grid_nodes);
   if (const std::string problem = budget_problem(run, grid); !problem.empty()) throw input::UsageError(problem);
-  if (progress && static_cast<double>(grid.nodes()) >= kLargeGrid) {
-    std::cerr << "punchsweep surface: the cell on " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size()
-              << " caps (about " << curve_bytes(run, grid) / 1e9
-              << " GB); its curve takes minutes or more, with progress below\n";
-  }
-  if (run.measured) return run.measured->cell;
-  if (run.cell_file.empty()) return reference::make_cell(run.geometry, grid);
+  if (run.measured || run.cell_file.empty()) return grid;
   // A cell file's tips go to their nearest nodes: the move is reported.
   double moved = 0.0;
   run.geometry = reference::snap_tips(run.geometry, grid, &moved);
@@ -523,6 +517,18 @@ reference::Cell boundary_element_cell(SurfaceRun& run, const model::CreepWeighte
          << moved << " R (" << moved / std::min(grid.hx(), grid.hy()) << " node spacings)";
     run.inputs.notes.push_back(note.str());
   }
+  return grid;
+}
+
+/// The cell the boundary elements solve on `grid` (boundary_element_grid's): the measured
+/// map's, or made from the geometry. `progress`: a large one is said on stderr first.
+reference::Cell boundary_element_cell(const SurfaceRun& run, const reference::PeriodicGrid& grid, bool progress) {
+  if (progress && static_cast<double>(grid.nodes()) >= kLargeGrid) {
+    std::cerr << "punchsweep surface: the cell on " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size()
+              << " caps (about " << curve_bytes(run, grid) / 1e9
+              << " GB); its curve takes minutes or more, with progress below\n";
+  }
+  if (run.measured) return run.measured->cell;
   return reference::make_cell(run.geometry, grid);
 }
 
@@ -626,9 +632,16 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
       run.geometry = given;
       run.inputs.notes = notes;
       run.grid_nodes = nodes;
-      cell = boundary_element_cell(run, load, progress);
+      const reference::PeriodicGrid grid = boundary_element_grid(run, load);
+      // The cell is made only where the curve is built (a cached one is read without it).
+      cell.reset();
+      const auto made = [&]() -> const reference::Cell& {
+        cell = boundary_element_cell(run, grid, progress);
+        return *cell;
+      };
       CurveOrigin origin = CurveOrigin::built;
-      model::LoadCurve curve = load_curve_for(run.geometry, *cell, options, &origin);
+      model::LoadCurve curve = load_curve_for(run.geometry, grid, options, run.measured ? &run.measured->cell : nullptr,
+                                              made, &origin);
       cached = cached && origin == CurveOrigin::cache;
       return curve;
     };
@@ -687,9 +700,10 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     check.steps = scaled.steps;
     check.t_star_resolution = scaled.t_star_resolution;
     run.check_t_star_resolution = check.t_star_resolution;
-    if (!cell) {
+    if (!cell) {  // (the curve's was read from the cache, or off the tables)
       sweep::use_reproducible_fft_plans();
-      cell = boundary_element_cell(run, load, false);
+      const reference::PeriodicGrid grid = boundary_element_grid(run, load);
+      cell = boundary_element_cell(run, grid, false);
     }
     const auto check_start = std::chrono::steady_clock::now();
     run.stepped = reference::evaluate_cell_reference(run.geometry, *cell, run.inputs.problem.pbar0, *run.inputs.creep,
@@ -745,14 +759,14 @@ CurveCost curve_cost(SurfaceRun& run) {
   for (const int nodes : grids) {
     run.geometry = given;
     run.grid_nodes = nodes;
-    const reference::Cell cell = boundary_element_cell(run, load, false);
+    const reference::PeriodicGrid grid = boundary_element_grid(run, load);
     CurveCost::Grid g;
     g.nodes_per_pitch = nodes;
-    g.nx = cell.grid.nx;
-    g.ny = cell.grid.ny;
-    g.bytes = curve_bytes(run, cell.grid);
-    g.cached = curve_is_cached(run.geometry, cell, reference::LoadCurveOptions{});
-    g.seconds = g.cached ? 0.0 : estimated_curve_seconds(cell.grid, static_cast<double>(cost.caps));
+    g.nx = grid.nx;
+    g.ny = grid.ny;
+    g.bytes = curve_bytes(run, grid);
+    g.cached = curve_is_cached(run.geometry, grid, reference::LoadCurveOptions{}, run.measured ? &run.measured->cell : nullptr);
+    g.seconds = g.cached ? 0.0 : estimated_curve_seconds(grid, static_cast<double>(cost.caps));
     cost.grids.push_back(g);
   }
   return cost;
