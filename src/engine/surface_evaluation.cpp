@@ -576,6 +576,23 @@ void hold_to_check(SurfaceRun& run, double t_resolution) {
   }
 }
 
+/// `run`'s cell stepped in time at its load (--check), the steps scaled to the law as
+/// `reference` scales them: run.stepped, check_t_star_resolution and check_seconds.
+void step_in_time(SurfaceRun& run, const reference::Cell& cell) {
+  reference::ReferenceOptions scaled;
+  reference::scale_steps_to_law(*run.inputs.creep, &scaled);
+  reference::CellReferenceOptions check;
+  check.times = run.times;
+  check.steps = scaled.steps;
+  check.t_star_resolution = scaled.t_star_resolution;
+  run.check_t_star_resolution = check.t_star_resolution;
+  sweep::use_reproducible_fft_plans();
+  const auto check_start = std::chrono::steady_clock::now();
+  run.stepped = reference::evaluate_cell_reference(run.geometry, cell, run.inputs.problem.pbar0, *run.inputs.creep,
+                                                   run.inputs.problem.loading, check);
+  run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
+}
+
 /// The curve as far as the times reach, and the history on it.
 }  // namespace
 
@@ -692,24 +709,13 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     }
   }
   if (run.check) {
-    // The time stepping of the same cell, steps scaled to the law as `reference` scales them.
-    reference::ReferenceOptions scaled;
-    reference::scale_steps_to_law(*run.inputs.creep, &scaled);
-    reference::CellReferenceOptions check;
-    check.times = run.times;
-    check.steps = scaled.steps;
-    check.t_star_resolution = scaled.t_star_resolution;
-    run.check_t_star_resolution = check.t_star_resolution;
     if (!cell) {  // (the curve's was read from the cache, or off the tables)
       sweep::use_reproducible_fft_plans();
       const reference::PeriodicGrid grid = boundary_element_grid(run, load);
       cell = boundary_element_cell(run, grid, false);
     }
-    const auto check_start = std::chrono::steady_clock::now();
-    run.stepped = reference::evaluate_cell_reference(run.geometry, *cell, run.inputs.problem.pbar0, *run.inputs.creep,
-                                                     run.inputs.problem.loading, check);
-    run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
-    hold_to_check(run, check.t_star_resolution);
+    step_in_time(run, *cell);
+    hold_to_check(run, run.check_t_star_resolution);
   }
 }
 
@@ -775,6 +781,23 @@ CurveCost curve_cost(SurfaceRun& run) {
 SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
   return with_keywords(keywords, [&](SurfaceRun& run) {
     evaluate(run, false, also_held);
+    return std::move(run);
+  });
+}
+
+reference::Cell surface_cell(const input::Keywords& keywords) {
+  return with_keywords(keywords, [](SurfaceRun& run) {
+    const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+    const reference::PeriodicGrid grid = boundary_element_grid(run, load);
+    return boundary_element_cell(run, grid, false);
+  });
+}
+
+SurfaceRun step_surface(const input::Keywords& keywords, const reference::Cell& cell) {
+  return with_keywords(keywords, [&](SurfaceRun& run) {
+    const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+    boundary_element_grid(run, load);  // (the geometry as the cell's: a cell file's tips snapped)
+    step_in_time(run, cell);
     return std::move(run);
   });
 }

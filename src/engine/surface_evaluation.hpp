@@ -57,6 +57,16 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = 
 /// beside the run's own.
 SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
 
+/// The cell the boundary elements solve for the texture of `keywords` (its grid fixed by
+/// their `grid`; a cell file's tips snapped to it, a measured map's own): what --check
+/// steps in time, made once for a map's sampled load points.
+reference::Cell surface_cell(const input::Keywords& keywords);
+
+/// --check alone: the texture of `keywords` (with `check`) stepped in time on `cell`
+/// (surface_cell's, of the same texture and grid) at their load: run.stepped and
+/// check_t_star_resolution, the same bits as evaluate_surface's, without its curve.
+SurfaceRun step_surface(const input::Keywords& keywords, const reference::Cell& cell);
+
 /// Reads `keywords` as evaluate_surface does and throws input::UsageError for what it would
 /// refuse before building anything: a bad or missing option, a cell whose scales the
 /// boundary elements cannot take, a grid beyond the engine's budget. No curve is built, no

@@ -566,6 +566,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   }
   // The sampled load points of this geometry, each stepped in time on the same cell (as
   // surface --check: the same grid as the curve's).
+  std::optional<reference::Cell> check_cell;
   for (std::size_t p = 0; p < P && check_; ++p) {
     if (!check_->contains(static_cast<std::uint64_t>(g) * P + p)) continue;
     input::Keywords at_p;
@@ -584,7 +585,15 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
       at_p.emplace_back("grid", std::to_string(run.grid_nodes));  // the curve's own
     }
     at_p.emplace_back("check", "true");
-    const SurfaceRun checked = evaluate_surface(at_p);
+    // On the curve's cell, made once (the sampled points of a geometry share its grid): the
+    // curve is not read again. Off the tables the cell's grid is each point's own (auto).
+    SurfaceRun checked;
+    if (run.curve_source == CurveSource::tables) {
+      checked = evaluate_surface(at_p);
+    } else {
+      if (!check_cell) check_cell = surface_cell(at_p);
+      checked = step_surface(at_p, *check_cell);
+    }
     const reference::CellReference& stepped = *checked.stepped;
     for (std::size_t level = 0; level < L; ++level) {
       block[kCheckRegime][p * L + level] = static_cast<std::int8_t>(stepped.level_regime[level]);
