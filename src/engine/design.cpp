@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -94,6 +95,9 @@ struct DesignArgs {
   bool from_file() const { return !texture_file.empty(); }
   /// Read off the texture's load curve (every cap's touchdown), not solved per load.
   bool off_curve() const { return scattered() || from_file(); }
+  /// Whether the design reads that curve (--find pressure); a drop or pitch window of these
+  /// textures closes the level on their cell (one contact solve a trial), as a lattice's.
+  bool by_curve() const { return off_curve() && find == model::kPressure; }
   input::Keywords point;
   /// Whether the design is of a texture's cell (any texture option given, or --find dh2),
   /// solved by its boundary elements, rather than of the paper's lattice by the model.
@@ -166,17 +170,24 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
   if (a.find == "dh2" && a.dh2) {
     throw input::UsageError("--dh2: the design finds dh2 (--find dh2); state what it must do with --require");
   }
-  if (a.find == "dh2" && !a.dh) {
+  if (a.find == "dh2" && !a.dh && !a.from_file()) {
     throw input::UsageError("--find dh2 needs --dh, the drop of level 1 (the third level's is what the design finds)");
   }
-  if (a.level && a.find != "l" && a.find != model::kPressure) {
+  if (a.level && a.find != "l" && a.find != model::kPressure && !(a.from_file() && a.find == "dh")) {
     throw input::UsageError("--level: with --find " + a.find + " the requirements are on the level whose drop is found; "
                             "--level names the level they are on with --find l or pressure");
   }
   if (a.from_file()) {
-    if (a.find != model::kPressure) {
-      throw input::UsageError("--" + a.texture_file.front().first + ": a cell file's or height map's design finds the "
-                              "pressure (--find pressure, from one load curve of its caps); its drops are the file's");
+    const std::string& file = a.texture_file.front().first;
+    const bool measured = std::any_of(a.texture_file.begin(), a.texture_file.end(),
+                                      [](const auto& kv) { return kv.first == "height-map"; });
+    if (measured && a.find != model::kPressure) {
+      throw input::UsageError("--height-map: a measured map's design finds the pressure (--find pressure, from one load "
+                              "curve of its caps); its drops and pitch are the part's");
+    }
+    if (a.find == "l") {
+      throw input::UsageError("--" + file + ": a cell file's design finds a level's drop (--find dh, with --level L) or "
+                              "the pressure (--find pressure); its sites are the file's, so it has no pitch to search");
     }
     for (const auto& [name, given] : std::vector<std::pair<const char*, bool>>{
              {"dh", a.dh.has_value()}, {"dh2", a.dh2.has_value()}, {"lattice", a.lattice.has_value()}}) {
@@ -197,12 +208,6 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
   }
   if (a.level && *a.level == "2" && !a.dh2 && !a.from_file()) {
     throw input::UsageError("--level 2 needs --dh2, the drop of level 2");
-  }
-  if (a.scattered() && a.find != model::kPressure) {
-    throw input::UsageError("--supercell/--scatter: a scattered texture's design finds the pressure (--find pressure, "
-                            "from one load curve of its caps); its drop or pitch would need a curve per trial: map them "
-                            "with `punchsweep sweep` (a [texture] section, the drop or the scatter's width as "
-                            "[grid] axes)");
   }
   if (a.lattice && *a.lattice != "square" && *a.lattice != "hexagonal") {
     throw input::UsageError("--lattice = " + *a.lattice + " is not one of: square, hexagonal");
@@ -454,16 +459,33 @@ double read_drop(const std::string& name, const std::string& text, const input::
   return input::read_parameter(vm, *model::texture_parameter(model::kThirdLevelDrop), &scales);
 }
 
-/// The drop the searched level of a lattice texture closes by a time (docs/design.md, "Any
+/// A texture's cell at a pitch and shape (l and C vary over --find l and the tolerance box),
+/// with the grid its closures solve on.
+using TextureCellMaker = std::function<engine::TextureGeometry(double l, const model::Shape& shape)>;
+
+/// The least drop of each level from 1 of `geometry` (a level's caps may differ: a
+/// supercell's scatter, a cell file's sites), in R.
+std::vector<double> least_drops(const model::CellGeometry& geometry) {
+  std::vector<double> drops(static_cast<std::size_t>(std::max(geometry.levels() - 1, 0)), kInf);
+  for (const model::Site& site : geometry.sites) {
+    if (site.level > 0) drops[static_cast<std::size_t>(site.level - 1)] = std::min(drops[static_cast<std::size_t>(site.level - 1)], site.drop);
+  }
+  return drops;
+}
+
+/// The drop the searched level of a texture closes by a time (docs/design.md, "Any
 /// texture"): its closure at the creep-weighted load of that time (reference::LevelClosure,
 /// exact where the model's dh_touching_at is for the paper's lattice: until the level
 /// touches, its drop changes nothing), one closure per corner's pitch and shape factor, on
-/// `nodes` nodes a pitch. Each load is solved once (temperatures and corners that meet the
-/// same load share it).
+/// the maker's grid. A level whose caps scatter moves as one: the drop is the level's design
+/// drop, which lies `shift` above its tallest cap's (the scatter's draws and the supercell's
+/// tallest tip set it; 0 on a lattice and for a cell file, whose level's drop is its tallest
+/// cap's). Each load is solved once (temperatures and corners that meet the same load share it).
 class TextureGap {
  public:
-  TextureGap(model::LatticeKind lattice, std::vector<double> drops, int level, int nodes)
-      : lattice_(lattice), drops_(std::move(drops)), level_(level), nodes_(nodes) {}
+  /// `design_drop`: the searched level's drop as the maker's cells are made with it.
+  TextureGap(TextureCellMaker make, int level, double design_drop)
+      : make_(std::move(make)), level_(level), design_drop_(design_drop) {}
 
   /// The drop closed by time t (0: at once; +infinity: ever) under the problem's pressure
   /// and load on `creep`, at its pitch and shape; +infinity where the law creeps without end.
@@ -477,15 +499,16 @@ class TextureGap {
     // new pitch at every trial, so only the last few are kept (a box has at most 4 corners
     // of l and C).
     if (closures_.size() >= kKeptClosures && !closures_.contains({problem.l, problem.shape.C})) closures_.clear();
-    auto& closure = closures_[{problem.l, problem.shape.C}];
-    if (!closure) {
-      const model::CellGeometry g = model::lattice_cell(lattice_, problem.l, problem.shape, drops_);
-      closure = std::make_unique<reference::LevelClosure>(g, level_, reference::lattice_grid(g, lattice_, nodes_));
+    Closure& closure = closures_[{problem.l, problem.shape.C}];
+    if (!closure.solve) {
+      const engine::TextureGeometry made = make_(problem.l, problem.shape);
+      closure.solve = std::make_unique<reference::LevelClosure>(made.geometry, level_, made.grid);
+      closure.shift = design_drop_ - least_drops(made.geometry)[static_cast<std::size_t>(level_ - 1)];
     }
-    const reference::LevelClosed closed = closure->at(X);
+    const reference::LevelClosed closed = closure.solve->at(X);
     every_drop_ = every_drop_ || closed.every_drop;
     ++solves_;
-    return known_[key] = closed.drop;
+    return known_[key] = closure.shift == 0.0 ? closed.drop : closed.drop + closure.shift;
   }
   /// Whether some load pressed the level's tips at any drop it can have (its bound is then
   /// the deepest at which it is still a punch of its own).
@@ -494,12 +517,15 @@ class TextureGap {
   int level() const { return level_; }
 
  private:
-  model::LatticeKind lattice_;
-  std::vector<double> drops_;
+  struct Closure {
+    std::unique_ptr<reference::LevelClosure> solve;
+    double shift = 0.0;
+  };
+  TextureCellMaker make_;
   int level_;
-  int nodes_;
+  double design_drop_;
   std::map<std::array<double, 3>, double> known_;
-  std::map<std::pair<double, double>, std::unique_ptr<reference::LevelClosure>> closures_;
+  std::map<std::pair<double, double>, Closure> closures_;
   bool every_drop_ = false;
   int solves_ = 0;
 };
@@ -617,6 +643,21 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     }
   }
   out.inputs = point_at(with(probe, "pbar", input::json_number(by_pressure ? out.search_lo : requirements.front().pbar)), "");
+  // A scattered supercell's, a cell file's or a height map's options as `surface` takes
+  // them, at the nominal pressure `pbar`.
+  const auto texture_keywords = [&](double pbar) {
+    input::Keywords k = with(base_keywords, "pbar", input::json_number(pbar));
+    k = without(k, "pressure");
+    if (a.from_file()) k = without(k, "dh");  // (the file's drops)
+    for (const std::string& name : placeholders) k = without(k, name);
+    for (const auto& [name, value] : std::vector<std::pair<std::string, std::optional<std::string>>>{
+             {"lattice", a.lattice}, {"dh2", a.dh2}, {"supercell", a.supercell}, {"scatter", a.scatter},
+             {"seed", a.seed}, {"grid", a.grid}}) {
+      if (value) k = with(k, name, *value);
+    }
+    for (const auto& [name, value] : a.texture_file) k = with(k, name, value);
+    return k;
+  };
   // A texture: the lattice, each level's drop (the searched level's found, the others fixed)
   // and the level the requirements are on.
   std::optional<TextureGap> texture;
@@ -632,7 +673,65 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     if (t.levels == 3) drops.push_back(a.find == "dh2" ? 0.0 : dh2);
     t.drops = drops;
     if (!a.off_curve()) {
-      texture.emplace(t.lattice == "square" ? model::LatticeKind::square : model::LatticeKind::hexagonal, drops, t.level, nodes);
+      const model::LatticeKind lattice = t.lattice == "square" ? model::LatticeKind::square : model::LatticeKind::hexagonal;
+      const auto lattice_cell = [lattice, drops, nodes](double l, const model::Shape& shape) {
+        model::CellGeometry g = model::lattice_cell(lattice, l, shape, drops);
+        reference::PeriodicGrid grid = reference::lattice_grid(g, lattice, nodes);
+        return engine::TextureGeometry{std::move(g), std::move(grid), 1, ""};
+      };
+      texture.emplace(lattice_cell, t.level, drops[static_cast<std::size_t>(t.level - 1)]);
+    } else if (!by_pressure) {
+      // A scattered supercell's or a cell file's drop or pitch: its cell made as `surface`
+      // makes it, on `nodes` a pitch, each level's caps closed as one.
+      const input::Keywords k = with(texture_keywords(out.inputs.problem.pbar0), "grid", std::to_string(nodes));
+      engine::TextureGeometry probe_cell = engine::texture_geometry(k);
+      t.caps = static_cast<int>(probe_cell.geometry.sites.size());
+      t.supercell = probe_cell.supercell;
+      t.scatter = a.scatter.value_or("");
+      t.seed = a.scatter ? a.seed.value_or("1") : "";
+      if (a.from_file()) {
+        t.file = probe_cell.cell_file;
+        t.lattice = "cell";
+        t.levels = probe_cell.geometry.levels();
+        t.drops = least_drops(probe_cell.geometry);
+        t.level = a.find == "dh2" ? 2 : a.level ? std::stoi(*a.level) : 1;
+        if (t.level > t.levels - 1) {
+          throw input::UsageError("--level " + std::to_string(t.level) + ": the texture has levels 0 to " + std::to_string(t.levels - 1));
+        }
+        if (box.l > 0.0 || box.C > 0.0) {
+          throw input::UsageError("--tolerance: a cell file's sites and shapes are the file's; its design takes "
+                                  "tolerances on the drop, the pressure and the temperature");
+        }
+        const double file_drop = t.drops[static_cast<std::size_t>(t.level - 1)];
+        t.drops[static_cast<std::size_t>(t.level - 1)] = 0.0;  // (found)
+        texture.emplace([cell = std::move(probe_cell)](double, const model::Shape&) { return cell; }, t.level, file_drop);
+      } else {
+        // The searched level is made deep enough that another level holds the supercell's
+        // tallest tip (the drops are counted from it): its caps' offsets below the level's
+        // design drop are then the same at any design drop (the closure moves the level).
+        const std::string searched = t.level == 1 ? "dh" : "dh2";
+        double design = a.find == "dh" || a.find == "dh2" ? *std::max_element(drops.begin(), drops.end())
+                                                          : drops[static_cast<std::size_t>(t.level - 1)];
+        const auto cell_at = [&](double drop) { return engine::texture_geometry(with(k, searched, input::json_number(drop))); };
+        for (int tries = 0;; ++tries) {
+          const engine::TextureGeometry g = cell_at(design);
+          bool other_tallest = false;
+          double deepest_drop = 0.0;
+          for (const model::Site& site : g.geometry.sites) {
+            other_tallest = other_tallest || (site.level != t.level && site.drop == 0.0);
+            deepest_drop = std::max(deepest_drop, site.drop);
+          }
+          if (other_tallest) break;
+          if (tries == 3) throw std::runtime_error("design: no drop of level " + std::to_string(t.level) + " leaves the tallest tip to another level");
+          design += deepest_drop;  // the drops' whole range: past it the level's tallest cap lies below another's
+        }
+        const input::Keywords made_with = with(k, searched, input::json_number(design));
+        texture.emplace(
+            [made_with](double l, const model::Shape& shape) {
+              return engine::texture_geometry(with(with(made_with, "l", input::json_number(l)), "C", input::json_number(shape.C)));
+            },
+            t.level, design);
+      }
     }
   }
   // (A lattice's levels are known up front, a file's once it is read: a share of a level it
@@ -652,26 +751,23 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                               "(--supercell K --scatter DIST, a cell file or a height map, with --find pressure); on a "
                               "lattice each level's caps touch together");
     }
+    if (r.is_share() && !by_pressure) {
+      throw input::UsageError("--require '" + r.text + "': a share of caps is read off the load curve of every cap, with "
+                              "--find pressure; the window of a drop or pitch takes requirements on the level's first cap "
+                              "('touch within 1s at 30kPa', one contact solve a trial; a share would need a curve a trial)");
+    }
   }
-  // A scattered supercell, a cell file or a height map: the load curve of its every cap
-  // (surface's, to full contact, cached), read for each requirement's share of caps.
+  // A scattered supercell, a cell file or a height map under --find pressure: the load curve
+  // of its every cap (surface's, to full contact, cached), read for each requirement's share
+  // of caps.
   std::optional<engine::SurfaceRun> off_curve;
-  if (a.off_curve()) {
+  if (a.off_curve() && by_pressure) {
     if (box.dh > 0.0 || box.l > 0.0 || box.C > 0.0) {
       throw input::UsageError("--tolerance: the design of a scattered supercell, a cell file or a height map takes "
                               "tolerances on the pressure and the temperature (each corner of dh, l or C would be a load "
                               "curve of its own)");
     }
-    input::Keywords k = with(base_keywords, "pbar", input::json_number(out.search_lo));
-    k = without(k, "pressure");
-    if (a.from_file()) k = without(k, "dh");  // (the file's drops)
-    for (const std::string& name : placeholders) k = without(k, name);
-    for (const auto& [name, value] : std::vector<std::pair<std::string, std::optional<std::string>>>{
-             {"lattice", a.lattice}, {"dh2", a.dh2}, {"supercell", a.supercell}, {"scatter", a.scatter},
-             {"seed", a.seed}, {"grid", a.grid}}) {
-      if (value) k = with(k, name, *value);
-    }
-    for (const auto& [name, value] : a.texture_file) k = with(k, name, value);
+    input::Keywords k = texture_keywords(out.search_lo);
     if (!out.temperatures.empty()) k = with(k, "temperature", input::json_number(out.temperatures.front()));
     // --grid auto sizes the grid for the spot at the least requirement's time (t = 0 only
     // where a requirement is at once).
@@ -925,7 +1021,7 @@ double edge_move(const DesignResult& coarse, const DesignResult& fine) {
 /// on grids of doubling nodes from kAutoGridStart until no edge moves by more than
 /// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
 DesignResult design(const DesignArgs& a) {
-  if (!a.texture() || a.off_curve()) return design_pass(a, 0);  // (a curve holds its own grid)
+  if (!a.texture() || a.by_curve()) return design_pass(a, 0);  // (a curve holds its own grid)
   if (const int nodes = engine::read_grid(a.grid.value_or("auto")); nodes != 0) return design_pass(a, nodes);
   DesignResult coarse = design_pass(a, kAutoGridStart);
   for (int nodes = 2 * kAutoGridStart;; nodes *= 2) {

@@ -793,6 +793,19 @@ reference::Cell surface_cell(const input::Keywords& keywords) {
   });
 }
 
+TextureGeometry texture_geometry(const input::Keywords& keywords) {
+  return with_keywords(keywords, [](SurfaceRun& run) {
+    if (run.measured) {
+      throw input::UsageError("--height-map: a measured map's cell is its heights, not caps at drops that could be "
+                              "moved; its design finds the pressure (--find pressure)");
+    }
+    if (run.grid_nodes == 0) throw std::invalid_argument("texture_geometry: the grid must be fixed, not auto");
+    const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+    reference::PeriodicGrid grid = boundary_element_grid(run, load);
+    return TextureGeometry{std::move(run.geometry), std::move(grid), run.supercell, run.cell_file};
+  });
+}
+
 SurfaceRun step_surface(const input::Keywords& keywords, const reference::Cell& cell) {
   return with_keywords(keywords, [&](SurfaceRun& run) {
     const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);

@@ -62,6 +62,21 @@ SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoint
 /// steps in time, made once for a map's sampled load points.
 reference::Cell surface_cell(const input::Keywords& keywords);
 
+/// A texture as its boundary elements solve it: its geometry (a cell file's tips snapped to
+/// the grid) and the grid.
+struct TextureGeometry {
+  model::CellGeometry geometry;
+  reference::PeriodicGrid grid;
+  int supercell = 1;      ///< K of a K x K supercell
+  std::string cell_file;  ///< a cell file's path; empty for a lattice
+};
+
+/// The texture of `keywords` on the grid their `grid` fixes (a number of nodes a pitch, not
+/// auto), refused as surface refuses it (its scales, the budget): what design's closure of
+/// a level (reference::LevelClosure) solves. Throws input::UsageError for a measured height
+/// map, whose cell is its heights rather than caps at drops.
+TextureGeometry texture_geometry(const input::Keywords& keywords);
+
 /// --check alone: the texture of `keywords` (with `check`) stepped in time on `cell`
 /// (surface_cell's, of the same texture and grid) at their load: run.stepped and
 /// check_t_star_resolution, the same bits as evaluate_surface's, without its curve.

@@ -33,23 +33,34 @@ LevelClosure::LevelClosure(const model::CellGeometry& geometry, int level, const
     }
   }
   reference_ = reference;
-  // The deepest exposed drop: at each of the level's tips, the lowest of the other sites'
-  // surfaces there (every other site, each to its nearest image: the level's own sites are
-  // left out, so a locator's reach, which assumes them, does not apply).
+  // The level's caps may lie at different drops (a scattered supercell's, a cell file's):
+  // each keeps its offset below the level's tallest, and the level moves as one.
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+    if (in_level(geometry, level, k)) least = std::min(least, geometry.sites[k].drop);
+  }
+  offset_.assign(geometry.sites.size(), 0.0);
+  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+    if (in_level(geometry, level, k)) offset_[k] = geometry.sites[k].drop - least;
+  }
+  // The deepest exposed drop of the level's tallest cap: at each of the level's tips, the
+  // lowest of the other sites' surfaces there (every other site, each to its nearest image:
+  // the level's own sites are left out, so a locator's reach, which assumes them, does not
+  // apply), less the tip's offset.
   const model::SurfaceLocator surface(geometry);
   deepest_ = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
     if (!in_level(geometry, level, k)) continue;
     for (std::size_t j = 0; j < geometry.sites.size(); ++j) {
       if (in_level(geometry, level, j)) continue;
-      deepest_ = std::min(deepest_, surface.surface(j, surface.distance(geometry.sites[k].x, geometry.sites[k].y, j)));
+      deepest_ = std::min(deepest_, surface.surface(j, surface.distance(geometry.sites[k].x, geometry.sites[k].y, j)) - offset_[k]);
     }
   }
   if (!(deepest_ > geometry.sites[reference_].drop) || !std::isfinite(deepest_)) {
     throw std::invalid_argument("level closure: level " + std::to_string(level) + " has no depth at which it is a punch of its own");
   }
-  for (model::Site& site : geometry_.sites) {
-    if (site.level == level) site.drop = deepest_ * (1.0 - kExposedMargin);
+  for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+    if (in_level(geometry_, level, k)) geometry_.sites[k].drop = deepest_ * (1.0 - kExposedMargin) + offset_[k];
   }
   cell_ = make_cell(geometry_, grid);
 }
@@ -75,7 +86,7 @@ LevelClosed LevelClosure::at(double X) {
   for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
     if (geometry_.sites[k].level != level_) continue;
     if (cell_.touched(k, p)) out.every_drop = true;
-    closed = std::max(closed, reference_drop + u_reference - u[cell_.tips[k]]);
+    closed = std::max(closed, reference_drop + u_reference - u[cell_.tips[k]] - offset_[k]);
   }
   out.drop = out.every_drop ? deepest_ : std::clamp(closed, 0.0, deepest_);
   return out;

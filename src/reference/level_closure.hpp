@@ -7,7 +7,9 @@
 /// tip, h = u(tallest tip) - u(its tip), is the same whatever the drop below it. So the
 /// level touches at load X exactly when its drop is the largest h of its sites at X: one
 /// contact solve answers "which drop touches by time t" (X = X(t)), where a load curve per
-/// trial drop would cost hundreds. Lengths in R, loads in E0*.
+/// trial drop would cost hundreds. A level whose caps lie at different drops (a scattered
+/// supercell's, a cell file's) moves as one: each cap keeps its offset below the level's
+/// tallest, and the drop is that tallest cap's. Lengths in R, loads in E0*.
 
 #include <vector>
 
@@ -19,8 +21,9 @@ namespace punchsweep::reference {
 
 /// What one level's tips close at one load.
 struct LevelClosed {
-  /// The drop below the tallest tip that the level's first site closes at the load, in R:
-  /// a level this far down (or less) has touched by then.
+  /// The drop (below the cell's tallest tip, as the geometry's drops) of the level's tallest
+  /// cap at which its first cap closes at the load, in R: a level this far down (or less)
+  /// has touched by then.
   double drop = 0.0;
   /// The other levels' surfaces already press the level's tip at its deepest drop that
   /// still leaves it a punch of its own (`drop` is then that depth, the level's deepest):
@@ -45,8 +48,8 @@ class LevelClosure {
   /// std::runtime_error where the contact solve misses its tolerance.
   LevelClosed at(double X);
 
-  /// The deepest drop at which the level's sites are still punches of their own (in R):
-  /// past it the other levels' surfaces lie above its tips.
+  /// The deepest drop of the level's tallest cap at which its caps are all still punches of
+  /// their own (in R): past it the other levels' surfaces lie above one of its tips.
   double deepest() const { return deepest_; }
   const model::CellGeometry& geometry() const { return geometry_; }
 
@@ -56,6 +59,7 @@ class LevelClosure {
   ContactSolver solver_;
   int level_;
   std::size_t reference_ = 0;  ///< a tallest site
+  std::vector<double> offset_;  ///< each of the level's sites' drop below its tallest (0 elsewhere)
   double deepest_ = 0.0;
 };
 

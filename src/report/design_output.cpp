@@ -66,7 +66,9 @@ std::string texture_text(const engine::DesignResult& d, const engine::Unit& L) {
     text += t.supercell > 1 ? "; a " + std::to_string(t.supercell) + " x " + std::to_string(t.supercell) + " supercell of " +
                                   std::to_string(t.caps) + " caps"
                             : "; " + std::to_string(t.caps) + " caps";
-    text += (t.scatter.empty() ? "" : ", heights " + t.scatter + " (seed " + t.seed + ")") + ", read off the load curve of every cap";
+    text += (t.scatter.empty() ? "" : ", heights " + t.scatter + " (seed " + t.seed + ")") +
+            (d.quantity == model::kPressure ? ", read off the load curve of every cap"
+                                            : ", the level's caps moved as one (each keeps its offset)");
   }
   text += "; the cell's boundary elements on " + std::to_string(t.nodes) + " nodes a pitch";
   if (t.coarser > 0) {

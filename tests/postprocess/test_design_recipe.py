@@ -139,11 +139,13 @@ def test_the_pressure_window_the_page_shows():
 
 @pytest.mark.parametrize("command, printed", [
     ("--dh2 5um --temperature 20..40C", "hexagonal lattice of 3 levels; the requirements on level 1"),
-    ("--supercell 3", "90% of level 1 within 1min: pressure >="),
+    ("--dh 2um --dh2 5um --supercell 3", "90% of level 1 within 1min: pressure >="),
+    ("hexagonal --dh2 5um --supercell 3", "touch within 1s at 30kPa: dh <= 7.117 um"),
 ])
 def test_the_texture_windows_the_page_shows(command, printed):
     """docs/design.md's texture examples (a hexagonal three-level mould's dh window; a scattered
-    one's pressure window from shares of caps), run as written, print the lines the page shows."""
+    one's pressure window from shares of caps, and its dh window from the level's first cap),
+    run as written, print the lines the page shows."""
     argv = shlex.split(block("sh", command).replace("\\\n", " "))
     assert argv[:2] == ["punchsweep", "design"]
     r = subprocess.run([ENGINE, *argv[1:]], cwd=REPO, capture_output=True, text=True)

@@ -145,7 +145,7 @@ def test_bad_requests_are_refused_by_name():
         (["--require", "never at 5kPa", "--curve", "cell"],
          "--curve is a texture option of `punchsweep surface` that design does not take"),
         (["--require", "never at 5kPa", "--height-map", "scan.npy"],
-         "--height-map: a cell file's or height map's design finds the pressure"),
+         "--height-map: a measured map's design finds the pressure"),
     ]
     for extra, words in cases:
         r = cli("design", "--material", TRUTH, *GEOMETRY, *extra)

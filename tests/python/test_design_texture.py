@@ -184,6 +184,87 @@ def test_a_cell_files_pressure_window():
     assert json.loads(s.stdout)["levels"][1]["t_star"] == pytest.approx(1.0, rel=1e-5)
 
 
+def scattered_t_star(texture: list, p_kPa: float, **given) -> float:
+    """Level 1's t* in s (its first cap's; NaN for never) by `surface` on a scattered mould at
+    20 C, with the lengths in `given` (l=, dh= in um) set."""
+    args = [a for a in texture]
+    for name, value in given.items():
+        if f"--{name}" in args:
+            args[args.index(f"--{name}") + 1] = f"{value!r}um"
+        else:
+            args += [f"--{name}", f"{value!r}um"]
+    r = cli("surface", "--material", TRUTH, *MOULD, *args, "--pressure", f"{p_kPa!r}kPa", "--temperature", 20,
+            "--times", "1s", "--format", "json")
+    assert r.returncode == 0, r.stderr
+    t = json.loads(r.stdout)["levels"][1]["t_star"]
+    return float("nan") if t is None else t
+
+
+def test_a_scattered_moulds_drop_window_closes_its_level_as_one():
+    """--find dh on the scattered mould (3 x 3 cells, 0.3 um): "touch within 1s at 30kPa" and
+    "never at 5kPa" on level 1's first cap, one closure of the cell a load with the level's 18
+    caps moved as one (each keeping its draw). At the upper edge `surface` (the load curve of
+    every cap, another code path) gives t* = 1 s and 1e-3 of dh either side t* crosses it; 1e-3
+    of dh either side of the lower edge the level touches at 5 kPa and never does."""
+    texture = [a for a in SCATTERED if a not in ("--dh", "2um")]
+    d = design(*texture, "--temperature", 20, "--require", "touch within 1s at 30kPa", "--require", "never at 5kPa")
+    t = d["texture"]
+    assert (t["supercell"], t["caps"], t["level"], t["grid"]) == (3, 54, 1, 32) and not d["empty"]
+    touch, never = d["requirements"]
+    upper, lower = touch["edge_physical"], never["edge_physical"]
+    # The scatter moves the window from the perfect mould's (4.857 um < dh <= 6.608 um).
+    assert 5.0 < lower < upper and upper > 6.7
+    assert scattered_t_star(texture, 30, dh=upper) == pytest.approx(1.0, rel=1e-5)
+    assert scattered_t_star(texture, 30, dh=upper * (1 - 1e-3)) < 1.0 < scattered_t_star(texture, 30, dh=upper * (1 + 1e-3))
+    assert scattered_t_star(texture, 5, dh=lower * (1 - 1e-3)) > 0
+    assert np.isnan(scattered_t_star(texture, 5, dh=lower * (1 + 1e-3)))
+
+
+def test_a_scattered_moulds_pitch_window():
+    """--find l on a 2 x 2 scattered mould, level 1 at 6.5 um: the pitch whose first level-1 cap
+    touches within a second at 30 kPa, a closure of the supercell made at each trial pitch;
+    `surface` gives t* = 1 s there and crosses it 1e-3 of the pitch either side."""
+    texture = ["--dh", "6.5um", "--dh2", "9um", "--supercell", 2, "--scatter", "normal:0.3um", "--seed", 2, "--grid", 32]
+    d = design(*texture, "--find", "l", "--l", "100um..400um", "--temperature", 20,
+               "--require", "touch within 1s at 30kPa")
+    assert d["quantity"] == "l" and d["texture"]["caps"] == 24
+    lower = d["physical"]["lower"]
+    assert 100 < lower < 400 and d["physical"]["upper"] == pytest.approx(400)  # (the range's end)
+    assert scattered_t_star(texture, 30, l=lower) == pytest.approx(1.0, rel=1e-5)
+    assert scattered_t_star(texture, 30, l=lower * (1 - 1e-3)) > 1.0 > scattered_t_star(texture, 30, l=lower * (1 + 1e-3))
+
+
+def offset_cell(path: Path, drop_um: float) -> Path:
+    """The shipped hexagonal cell file with its two level-1 caps at drop_um and drop_um + 0.4."""
+    text = (REPO / "examples" / "cells" / "hexagonal_two_level.ini").read_text()
+    text = text.replace("site = 125um, 72.16878365um, 3um, 1", f"site = 125um, 72.16878365um, {drop_um!r}um, 1")
+    text = text.replace("site = 0, 288.6751346um, 3um, 1", f"site = 0, 288.6751346um, {drop_um + 0.4!r}um, 1")
+    path.write_text(text)
+    return path
+
+
+def test_a_cell_files_drop_window_is_its_tallest_caps(tmp_path):
+    """--cell with level 1's caps at two drops (0.4 um apart): --find dh gives the window of the
+    level's tallest cap's drop, the other 0.4 um below it. At the upper edge a cell file of
+    those drops has t* = 1 s by `surface`, and 1e-3 either side t* crosses it."""
+    cell = offset_cell(tmp_path / "given.ini", 3.0)
+    r = cli("design", "--material", TRUTH, "--R", "80um", "--cell", cell, "--temperature", 20, "--grid", 32,
+            "--require", "touch within 1s at 30kPa", "--format", "json")
+    assert r.returncode == 0, r.stderr
+    d = json.loads(r.stdout)
+    assert (d["texture"]["lattice"], d["texture"]["caps"], d["quantity"]) == ("cell", 4, "dh")
+    upper = d["physical"]["upper"]
+
+    def cell_t_star(drop_um: float) -> float:
+        s = cli("surface", "--material", TRUTH, "--R", "80um", "--cell", offset_cell(tmp_path / "at.ini", drop_um),
+                "--pressure", "30kPa", "--temperature", 20, "--grid", 32, "--times", "1s", "--format", "json")
+        assert s.returncode == 0, s.stderr
+        return json.loads(s.stdout)["levels"][1]["t_star"]
+
+    assert cell_t_star(upper) == pytest.approx(1.0, rel=1e-5)
+    assert cell_t_star(upper * (1 - 1e-3)) < 1.0 < cell_t_star(upper * (1 + 1e-3))
+
+
 def test_a_height_maps_pressure_window_is_its_lattices(tmp_path):
     """--height-map of the paper's lattice (64 x 64 pixels, its two summits split by
     --level-gap): the pressure window read off its curve equals the lattice texture's, solved
@@ -217,12 +298,13 @@ def test_a_height_maps_pressure_window_is_its_lattices(tmp_path):
     (["--dh2", "-1um", "--require", "never at 5kPa"], "dh2"),
     (["--curve", "cell", "--require", "never at 5kPa"],
      "--curve is a texture option of `punchsweep surface` that design does not take"),
-    (["--cell", "cell.ini", "--require", "never at 5kPa"], "a cell file's or height map's design finds the pressure"),
+    (["--height-map", "map.npy", "--require", "never at 5kPa"], "a measured map's design finds the pressure"),
+    (["--cell", "cell.ini", "--find", "l", "--require", "never at 5kPa"], "so it has no pitch to search"),
     (["--cell", "cell.ini", "--dh", "2um", "--find", "pressure", "--pressure", "1kPa..9kPa", "--require", "touch within 1s"],
      "--dh beside --cell: the file gives the cell"),
     (["--require", "90% of level 1 within 1s at 5kPa"], "a share of caps is a requirement where heights scatter"),
-    (["--supercell", "3", "--scatter", "normal:0.3um", "--require", "never at 5kPa"],
-     "a scattered texture's design finds the pressure"),
+    (["--supercell", "3", "--scatter", "normal:0.3um", "--require", "90% of level 1 within 1s at 5kPa"],
+     "a share of caps is read off the load curve of every cap, with --find pressure"),
     (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
       "--tolerance", "dh=0.1um", "--require", "touch within 1s"], "takes tolerances on the pressure and the temperature"),
     (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",

@@ -59,6 +59,45 @@ TEST(LevelClosure, closes_each_level_at_its_touchdown_on_the_curve) {
   }
 }
 
+// A level whose caps lie at different drops moves as one: on a 2 x 2 supercell of the
+// square lattice with scattered heights (and a hexagonal three-level one), the closure at
+// the curve's touchdown of the level's first cap is the drop of the level's tallest cap, for
+// each level (the level's other caps keep their offsets below it).
+TEST(LevelClosure, moves_a_scattered_level_as_one) {
+  const model::Shape shape{2, 0.5};
+  model::HeightScatter scatter;
+  scatter.kind = model::HeightScatter::Kind::normal;
+  scatter.width = 0.004;
+  scatter.seed = 3;
+  for (const Case& c : {Case{LatticeKind::square, 3.0, {0.02}}, Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0, 5.0 / 60.0}}}) {
+    const int K = 2;
+    const model::CellGeometry g = model::supercell(model::lattice_cell(c.lattice, c.l, shape, c.drops), K, scatter);
+    const reference::PeriodicGrid grid = reference::lattice_grid(g, c.lattice, 32, K);
+    reference::LoadCurveOptions options;
+    options.X_top = 1.0;
+    const model::LoadCurve curve = reference::build_load_curve(g, reference::make_cell(g, grid), options);
+    for (int level = 1; level < g.levels(); ++level) {
+      double least = 1e300, most = 0.0;
+      for (const model::Site& site : g.sites) {
+        if (site.level != level) continue;
+        least = std::min(least, site.drop);
+        most = std::max(most, site.drop);
+      }
+      ASSERT_GT(most - least, 1e-3 * least) << "the level's caps scatter";
+      const double X = curve.level_touchdown[static_cast<std::size_t>(level)];
+      ASSERT_TRUE(std::isfinite(X));
+      reference::LevelClosure closure(g, level, grid);
+      const reference::LevelClosed closed = closure.at(X);
+      std::printf("%s K = 2, level %d: X* = %.9g, closure %.9g against the level's tallest cap %.9g (%.1e)\n",
+                  model::lattice_name(c.lattice).c_str(), level, X, closed.drop, least, closed.drop / least - 1.0);
+      EXPECT_FALSE(closed.every_drop);
+      EXPECT_NEAR(closed.drop, least, 1e-6 * least) << "level " << level;
+      EXPECT_LT(closure.at(X * (1.0 - 1e-4)).drop, least);
+      EXPECT_GT(closure.at(X * (1.0 + 1e-4)).drop, least);
+    }
+  }
+}
+
 // Past full contact of the other levels, every node is pressed: the level touches at any
 // drop it can have, and the closure says so with the deepest (where the tall caps' own
 // surfaces reach its tips: on the square lattice's centre, two tall caps' C r^2 at r = l/sqrt(2)

@@ -241,7 +241,11 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
     (pressure="1kPa..200kPa"; the requirements then name no pressure). For a texture,
     lattice="hexagonal" (or "square"), dh2="5um" (a third level; find="dh2" gives its window),
     level=2 (with find="l" or "pressure": the level the requirements are on) and grid=N or
-    "auto" (the cell's nodes a pitch); the result's "texture" says which. Returns the command's
+    "auto" (the cell's nodes a pitch); the result's "texture" says which. A scattered supercell
+    (supercell=3, scatter="normal:0.3um", seed=2) takes find="dh", "dh2" or "l" with requirements
+    on the level's first cap, and shares of caps ("90% of level 1 within 1min") with
+    find="pressure"; a cell file (cell=FILE) find="dh" (level=L) or "pressure"; a height map
+    (height_map=FILE) find="pressure". Returns the command's
     JSON as a dict (docs/design.md): lower, upper, empty, centre, margin (in R, or E0* for the
     pressure), physical (the same in the physical unit), requirements (each with its edge,
     binds_at and every bound), miss (where empty), notes. ValueError with the command's
