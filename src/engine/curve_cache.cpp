@@ -26,6 +26,13 @@ io::Digest cell_digest(const reference::Cell& cell) {
   return fields.digest();
 }
 
+/// cell_digest as text: each byte as a decimal number after a space.
+std::string cell_digest_text(const reference::Cell& cell) {
+  std::ostringstream text;
+  for (unsigned char byte : cell_digest(cell)) text << ' ' << static_cast<int>(byte);
+  return text.str();
+}
+
 /// The fingerprint of reference::make_cell: the digest of the cell it makes of a probe (a
 /// hexagonal lattice of three levels on a small grid), once per process. A curve's key holds
 /// it instead of the cell's own fields, so that a cached curve is found from its geometry
@@ -37,10 +44,7 @@ const std::string& cell_maker_fingerprint() {
     shape.s = 2.0;
     shape.C = 0.5;
     const model::CellGeometry probe = model::lattice_cell(model::LatticeKind::hexagonal, 1.2, shape, {0.05, 0.08});
-    const reference::Cell cell = reference::make_cell(probe, reference::lattice_grid(probe, model::LatticeKind::hexagonal, 12, 1));
-    std::ostringstream text;
-    for (unsigned char byte : cell_digest(cell)) text << ' ' << static_cast<int>(byte);
-    return text.str();
+    return cell_digest_text(reference::make_cell(probe, reference::lattice_grid(probe, model::LatticeKind::hexagonal, 12, 1)));
   }();
   return fingerprint;
 }
@@ -60,8 +64,7 @@ std::string curve_key(const model::CellGeometry& g, const reference::PeriodicGri
       << o.load_tolerance << "; refinements " << o.max_refinements << "; touchdown " << o.touchdown_tolerance << "; solver "
       << o.solver.tolerance << ' ' << o.solver.max_iterations << ' ' << o.solver.precondition;
   if (measured) {
-    key << "; fields";
-    for (unsigned char byte : cell_digest(*measured)) key << ' ' << static_cast<int>(byte);
+    key << "; fields" << cell_digest_text(*measured);
   } else {
     key << "; cells made as" << cell_maker_fingerprint();
   }
