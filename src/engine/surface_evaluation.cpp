@@ -753,7 +753,7 @@ CurveCost curve_cost(SurfaceRun& run) {
   cost.caps = run.geometry.sites.size();
   cost.levels = run.geometry.levels();
   if (run.curve_source != CurveSource::cell &&
-      model::periodic_load_curve(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem)) {
+      model::periodic_curve_reaches(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem)) {
     cost.source = "periodic tables";
     return cost;
   }
@@ -782,6 +782,24 @@ SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoint
   return with_keywords(keywords, [&](SurfaceRun& run) {
     evaluate(run, false, also_held);
     return std::move(run);
+  });
+}
+
+TextureParts texture_parts(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
+  return with_keywords(keywords, [&](SurfaceRun& run) {
+    TextureParts out;
+    model::ContactProblem periodic = run.inputs.problem;
+    periodic.localization = model::Localization{.periodic = true};
+    if (run.curve_source != CurveSource::cell &&
+        model::periodic_curve_reaches(model::periodic_solution(periodic.shape.s), periodic)) {
+      run.curve_source = CurveSource::tables;
+      out.parts = std::make_unique<model::LocalizationParts>(periodic);
+    } else {
+      evaluate(run, false, also_held);
+      out.parts = std::make_unique<model::CurveParts>(std::move(run.curve));
+    }
+    out.run = std::move(run);
+    return out;
   });
 }
 

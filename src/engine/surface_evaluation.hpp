@@ -11,10 +11,12 @@
 #include <boost/program_options/variables_map.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "input/command_options.hpp"
+#include "model/surface/geometry_parts.hpp"
 #include "reference/periodic_grid.hpp"
 #include "engine/surface_run.hpp"
 
@@ -56,6 +58,20 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = 
 /// command's own options, checks and code; `also_held`: the load points --grid auto holds
 /// beside the run's own.
 SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
+
+/// A texture's parts (model::GeometryParts) and the run they come from.
+struct TextureParts {
+  SurfaceRun run;  ///< read_surface's (evaluated where the parts are a curve, which is moved into them)
+  std::unique_ptr<model::GeometryParts> parts;
+};
+
+/// The parts of the texture of `keywords`: the one choice between a localization model and
+/// a load curve. The paper's two-level square lattice, where the periodic model's tables
+/// reach its dh (--curve auto or tables), by the periodic localization (model::touchdown: no
+/// curve is made); any other texture by its cell's load curve (evaluate's: built, cached, or
+/// held under --grid auto to the run's load and to `also_held`'s). Throws
+/// input::UsageError as evaluate_surface does.
+TextureParts texture_parts(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
 
 /// The cell the boundary elements solve for the texture of `keywords` (its grid fixed by
 /// their `grid`; a cell file's tips snapped to it, a measured map's own): what --check

@@ -46,6 +46,8 @@
 #include "model/contact/regime.hpp"
 #include "model/numerics/stop_request.hpp"
 #include "model/point/validity.hpp"
+#include "model/periodic/periodic_solution.hpp"
+#include "model/surface/geometry_parts.hpp"
 #include "model/surface/surface_history.hpp"
 #include "report/design_output.hpp"
 #include "report/point_output.hpp"
@@ -615,18 +617,21 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
                           n > 0 ? input::json_number(law_values[j][least]) : nominal_value(spec.parameters[j]));
   }
   keywords.emplace_back("times", "0");
-  const engine::SurfaceRun run = engine::evaluate_surface(keywords);
-  const std::size_t L = static_cast<std::size_t>(run.curve.levels());
+  // The texture's parts: the paper's lattice by the periodic model, any other by its curve.
+  const engine::TextureParts texture_parts = engine::texture_parts(keywords);
+  const engine::SurfaceRun& run = texture_parts.run;
+  const model::GeometryParts& parts = *texture_parts.parts;
+  const std::size_t L = static_cast<std::size_t>(parts.levels());
   py::array_t<double> t_star({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
   py::array_t<std::int8_t> regime({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
   double* t_data = t_star.mutable_data();
   std::int8_t* r_data = regime.mutable_data();
   {
     py::gil_scoped_release release;
-    model::level_touches_at(run.curve, spec, axes, columns.values, columns.n, t_data, r_data);
+    parts.touches_at(spec, axes, columns.values, columns.n, t_data, r_data);
   }
   py::list X_star, resolved;
-  for (const model::LevelTouch& touch : model::level_touches(run.curve, model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0))) {
+  for (const model::LevelTouch& touch : parts.touches(model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0))) {
     X_star.append(touch.X_star);
     resolved.append(touch.resolved);
   }
@@ -636,7 +641,13 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
   out["X_star"] = X_star;
   out["resolved"] = resolved;
   out["time_unit"] = run.inputs.time_unit;
-  out["grid"] = py::make_tuple(run.curve.nx, run.curve.ny);
+  // The grid: the curve's, or the periodic tables' own (nodes a pitch).
+  if (const model::LoadCurve* curve = parts.curve()) {
+    out["grid"] = py::make_tuple(curve->nx, curve->ny);
+  } else {
+    const int tables = model::periodic_solution(run.inputs.problem.shape.s).tables().n;
+    out["grid"] = py::make_tuple(tables, tables);
+  }
   out["caps"] = run.geometry.sites.size();
   return out;
 }

@@ -3,6 +3,8 @@
 // model against the time-stepping boundary elements at points of every kind of input.
 #include <gtest/gtest.h>
 
+#include "shipped_tables.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -55,11 +57,7 @@ struct ScratchFolder {
   }
 };
 
-/// The model reads the shipped tables (what `punchsweep` and the Python module do, without
-/// a cache for the others).
-void use_shipped_tables() {
-  model::set_periodic_solution_source([](int s) { return engine::periodic_solution_for(s, std::nullopt); });
-}
+using test::use_shipped_tables;
 
 }  // namespace
 

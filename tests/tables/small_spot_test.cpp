@@ -5,6 +5,8 @@
 // wherever its spots are small, and two levels at one height.
 #include <gtest/gtest.h>
 
+#include "shipped_tables.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -54,10 +56,7 @@ std::string text(double x) {
   return out;
 }
 
-/// The model reads the shipped tables (what `punchsweep` and the Python module do).
-void use_shipped_tables() {
-  model::set_periodic_solution_source([](int s) { return engine::periodic_solution_for(s, std::nullopt); });
-}
+using test::use_shipped_tables;
 
 }  // namespace
 

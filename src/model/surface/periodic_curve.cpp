@@ -10,14 +10,28 @@
 
 namespace punchsweep::model {
 
+namespace {
+
+/// Level 2 touches within the tables' top, or never: they answer the lattice.
+bool reaches(const PeriodicSolution& solution, double delta, double xi_star) {
+  return !std::isfinite(xi_star) || delta <= solution.delta_top();
+}
+
+}  // namespace
+
+bool periodic_curve_reaches(const PeriodicSolution& solution, const ContactProblem& problem) {
+  const double delta = problem.dh / PeriodicScales(problem).h_unit;
+  return reaches(solution, delta, solution.touchdown(delta));
+}
+
 std::optional<LoadCurve> periodic_load_curve(const PeriodicSolution& solution, const ContactProblem& problem) {
   const int s = problem.shape.s;
   const PeriodicScales scales(problem);
   const double delta = problem.dh / scales.h_unit;
   const double xi_star = solution.touchdown(delta);
+  if (!reaches(solution, delta, xi_star)) return std::nullopt;
   const PeriodicSolution::Row row = solution.row(delta, xi_star);
   const bool touches = std::isfinite(xi_star);
-  if (touches && !(delta <= solution.delta_top())) return std::nullopt;
 
   const double l2 = problem.l * problem.l;
   LoadCurve c;

@@ -31,4 +31,8 @@ inline constexpr double kPeriodicCurveFirst = 1e-12;
 /// X_resolved is 0: the small-spot table answers for the continuum down to zero load.
 std::optional<LoadCurve> periodic_load_curve(const PeriodicSolution& solution, const ContactProblem& problem);
 
+/// Whether periodic_load_curve has the lattice's curve (the tables reach its dh), found
+/// without sampling it.
+bool periodic_curve_reaches(const PeriodicSolution& solution, const ContactProblem& problem);
+
 }  // namespace punchsweep::model

@@ -26,13 +26,21 @@ SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveS
   return SurfaceValidity::valid;
 }
 
+bool touchdown_resolved(const LoadCurve& curve, std::size_t level) {
+  const double X_star = curve.level_touchdown[level];
+  return X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_resolved;
+}
+
+LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& load) {
+  const Classification c = classify(Touchdown{0.0, X_star}, load);
+  return {c.regime, c.t_star, X_star, resolved};
+}
+
 std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load) {
   std::vector<LevelTouch> out;
   out.reserve(curve.level_touchdown.size());
-  for (const double X_star : curve.level_touchdown) {
-    const Classification c = classify(Touchdown{0.0, X_star}, load);
-    const bool resolved = X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_resolved;
-    out.push_back({c.regime, c.t_star, X_star, resolved});
+  for (std::size_t level = 0; level < curve.level_touchdown.size(); ++level) {
+    out.push_back(level_touch(curve.level_touchdown[level], touchdown_resolved(curve, level), load));
   }
   return out;
 }
@@ -110,25 +118,6 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
     out.snapshots.push_back(std::move(s));
   }
   return out;
-}
-
-void level_touches_at(const LoadCurve& curve, const CreepLawSpec& spec, const PointAxes& axes,
-                      std::span<const double* const> columns, std::size_t n, double* t_star, std::int8_t* regime) {
-  const std::size_t L = static_cast<std::size_t>(curve.levels());
-  PointValues point;
-  point.law.resize(axes.law().size());
-  for (std::size_t k = 0; k < n; ++k) {
-    for (std::size_t j = 0; j < axes.size(); ++j) {
-      if (columns[j] != nullptr) set_coordinate(axes[j], columns[j][k], &point);
-    }
-    const std::unique_ptr<CreepLaw> creep = make_creep_law(spec, point.law);
-    const CreepWeightedLoad load(*creep, point.problem.pbar0, point.problem.loading);
-    const std::vector<LevelTouch> touches = level_touches(curve, load);
-    for (std::size_t level = 0; level < L; ++level) {
-      t_star[k * L + level] = touches[level].t_star;
-      regime[k * L + level] = static_cast<std::int8_t>(touches[level].regime);
-    }
-  }
 }
 
 }  // namespace punchsweep::model

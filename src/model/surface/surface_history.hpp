@@ -12,9 +12,7 @@
 
 #include "model/contact/regime.hpp"
 #include "model/load/creep_weighted_load.hpp"
-#include "model/laws/creep_laws.hpp"
 #include "model/load/load_history.hpp"
-#include "model/point/point_axes.hpp"
 #include "model/surface/load_curve.hpp"
 
 namespace punchsweep::model {
@@ -74,16 +72,17 @@ struct SurfaceHistory {
 /// below_resolution; valid otherwise. (history_cost is the loads' alone.)
 SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveState& state);
 
+/// Whether `curve` resolves level `level`'s touchdown: its X* is 0, +infinity, or at or
+/// above the curve's X_resolved (below it the tallest spots span too few nodes).
+bool touchdown_resolved(const LoadCurve& curve, std::size_t level);
+
+/// A level's touch under `load` from its touchdown load X* (model::classify), `resolved` as
+/// its parts say.
+LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& load);
+
 /// Each level's touch under `load`: from its touchdown load alone (no solve), what a sweep
 /// over materials, temperatures and pressures needs per point.
 std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load);
-
-/// Each level's touch at `n` load points off one curve (what Python's surface_classify
-/// reads): point k takes columns[j][k] for each coordinate j of `axes` that has a column
-/// (nullptr: none, the point keeps its default), the creep law `spec` at its values and its
-/// load. t_star and regime are n x levels, row-major (regime as model::Regime's codes).
-void level_touches_at(const LoadCurve& curve, const CreepLawSpec& spec, const PointAxes& axes,
-                      std::span<const double* const> columns, std::size_t n, double* t_star, std::int8_t* regime);
 
 /// Reads `curve` along `load` at `times` (non-decreasing, >= 0; t = 0 is the state at 0+).
 /// The loads: for each level L >= 1 that touches by the last time, LoadHistory (the point's

@@ -1,0 +1,39 @@
+#include "model/surface/geometry_parts.hpp"
+
+#include <memory>
+
+#include "model/localization/localization_model.hpp"
+
+namespace punchsweep::model {
+
+std::vector<LevelTouch> GeometryParts::touches(const CreepWeightedLoad& load) const {
+  const std::vector<double>& X = touchdowns();
+  std::vector<LevelTouch> out;
+  out.reserve(X.size());
+  for (std::size_t level = 0; level < X.size(); ++level) out.push_back(level_touch(X[level], resolved(level), load));
+  return out;
+}
+
+void GeometryParts::touches_at(const CreepLawSpec& spec, const PointAxes& axes, std::span<const double* const> columns,
+                               std::size_t n, double* t_star, std::int8_t* regime) const {
+  const std::size_t L = static_cast<std::size_t>(levels());
+  PointValues point;
+  point.law.resize(axes.law().size());
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t j = 0; j < axes.size(); ++j) {
+      if (columns[j] != nullptr) set_coordinate(axes[j], columns[j][k], &point);
+    }
+    const std::unique_ptr<CreepLaw> creep = make_creep_law(spec, point.law);
+    const std::vector<LevelTouch> level = touches(CreepWeightedLoad(*creep, point.problem.pbar0, point.problem.loading));
+    for (std::size_t q = 0; q < L; ++q) {
+      t_star[k * L + q] = level[q].t_star;
+      regime[k * L + q] = static_cast<std::int8_t>(level[q].regime);
+    }
+  }
+}
+
+LocalizationParts::LocalizationParts(const ContactProblem& problem) : touchdowns_{0.0, touchdown(problem).X_star} {}
+
+bool CurveParts::resolved(std::size_t level) const { return touchdown_resolved(curve_, level); }
+
+}  // namespace punchsweep::model
