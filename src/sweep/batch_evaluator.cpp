@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -131,7 +132,7 @@ void BatchEvaluator::summarize(const PointColumns& columns, BatchSink& sink, con
   };
   bool cache_single = run_memory;
   const std::size_t width = 2 + points.law.size();  // a point's keys in Run::keys
-  model::DhParts own;
+  std::optional<model::LocalizationParts> own;
   std::size_t unchecked = kStopEvery;  // points since `stop` was last asked
   for (std::size_t begin = 0; begin < n;) {
     const double s = points.s[begin], l = points.l[begin], dh = points.dh[begin];
@@ -151,15 +152,16 @@ void BatchEvaluator::summarize(const PointColumns& columns, BatchSink& sink, con
         stop.throw_if_requested();
         unchecked = 0;
       }
-      return model::dh_parts(problem);
+      return model::LocalizationParts(problem);
     };
-    const model::DhParts* parts = &own;
+    const model::DhParts* parts = nullptr;
     if (run_memory) {
       const double key[] = {s, l, dh};
-      parts = touch_.find(key);
-      if (parts == nullptr) parts = &touch_.insert(key, build());
+      const model::LocalizationParts* found = touch_.find(key);
+      parts = &(found != nullptr ? *found : touch_.insert(key, build())).dh();
     } else {
-      own = build();
+      own.emplace(build());
+      parts = &own->dh();
     }
 
     Run* run = nullptr;

@@ -12,6 +12,7 @@
 #include "model/point/point_axes.hpp"
 #include "model/point/point_evaluation.hpp"
 #include "model/numerics/stop_request.hpp"
+#include "model/surface/geometry_parts.hpp"
 #include "sweep/value_cache.hpp"
 
 namespace punchsweep::sweep {
@@ -87,7 +88,7 @@ class BatchEvaluator {
   model::Localization localization_;
   model::LoadShape loading_;
   Memory memory_;
-  ValueCache<model::DhParts> touch_;                   ///< (s, l, dh)
+  ValueCache<model::LocalizationParts> touch_;         ///< (s, l, dh): the geometry's parts
   ValueCache<model::SingleLevelState> single_;         ///< (s, l, X)
   ValueCache<Material> materials_;                     ///< the law's values (and ramp_time), Memory::run
   Material last_;                                      ///< the last one made, Memory::call

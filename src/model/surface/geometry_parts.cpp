@@ -2,12 +2,11 @@
 
 #include <memory>
 
-#include "model/localization/localization_model.hpp"
 
 namespace punchsweep::model {
 
 std::vector<LevelTouch> GeometryParts::touches(const CreepWeightedLoad& load) const {
-  const std::vector<double>& X = touchdowns();
+  const std::span<const double> X = touchdowns();
   std::vector<LevelTouch> out;
   out.reserve(X.size());
   for (std::size_t level = 0; level < X.size(); ++level) out.push_back(level_touch(X[level], resolved(level), load));
@@ -32,7 +31,8 @@ void GeometryParts::touches_at(const CreepLawSpec& spec, const PointAxes& axes, 
   }
 }
 
-LocalizationParts::LocalizationParts(const ContactProblem& problem) : touchdowns_{0.0, touchdown(problem).X_star} {}
+LocalizationParts::LocalizationParts(const ContactProblem& problem)
+    : dh_(dh_parts(problem)), touchdowns_{0.0, dh_.touchdown.X_star} {}
 
 bool CurveParts::resolved(std::size_t level) const { return touchdown_resolved(curve_, level); }
 

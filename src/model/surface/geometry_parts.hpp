@@ -12,6 +12,7 @@
 ///   sites in contact in time as well).
 /// engine::geometry_parts chooses between them for a texture.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -20,6 +21,7 @@
 #include "model/laws/creep_laws.hpp"
 #include "model/load/creep_weighted_load.hpp"
 #include "model/point/point_axes.hpp"
+#include "model/point/point_evaluation.hpp"
 #include "model/problem/contact_problem.hpp"
 #include "model/surface/load_curve.hpp"
 #include "model/surface/surface_history.hpp"
@@ -32,7 +34,7 @@ class GeometryParts {
 
   /// Each level's touchdown load X*, in E0* (level 0, the tallest: 0; +infinity for a level
   /// that never touches, whatever the load).
-  virtual const std::vector<double>& touchdowns() const = 0;
+  virtual std::span<const double> touchdowns() const = 0;
   /// Whether the parts resolve level `level`'s X* (a curve's: at or above its X_resolved).
   virtual bool resolved(std::size_t level) const = 0;
   /// The cell's load curve where the parts are one; nullptr for a localization's.
@@ -50,24 +52,29 @@ class GeometryParts {
 };
 
 /// The paper's two-level square lattice (the problem's l, dh, shape) by its localization
-/// model: level 1's touchdown is model::touchdown(problem)'s. The problem's pressure and
-/// load are not read.
+/// model: the model's parts of (s, l, dh) (model::dh_parts: the touchdown, and the guide or
+/// branch the point's other quantities read), level 1's touchdown theirs. The problem's
+/// pressure and load are not read. A sweep's tiles and Python's classify keep these per
+/// (s, l, dh) (sweep::BatchEvaluator).
 class LocalizationParts final : public GeometryParts {
  public:
   explicit LocalizationParts(const ContactProblem& problem);
-  const std::vector<double>& touchdowns() const override { return touchdowns_; }
+  std::span<const double> touchdowns() const override { return touchdowns_; }
   bool resolved(std::size_t) const override { return true; }
   const LoadCurve* curve() const override { return nullptr; }
+  /// The model's parts (for model::summarize_point and evaluate_point).
+  const DhParts& dh() const { return dh_; }
 
  private:
-  std::vector<double> touchdowns_;
+  DhParts dh_;
+  std::array<double, 2> touchdowns_;
 };
 
 /// Any cell by its elastic load curve.
 class CurveParts final : public GeometryParts {
  public:
   explicit CurveParts(LoadCurve curve) : curve_(std::move(curve)) {}
-  const std::vector<double>& touchdowns() const override { return curve_.level_touchdown; }
+  std::span<const double> touchdowns() const override { return curve_.level_touchdown; }
   bool resolved(std::size_t level) const override;
   const LoadCurve* curve() const override { return &curve_; }
 
