@@ -51,7 +51,6 @@ import argparse
 import json
 import os
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -223,6 +222,20 @@ def main() -> None:
         shutil.rmtree(cache, ignore_errors=True)
 
 
+def cm_timed(profile, cell, X, repeats):
+    """ContactMechanics on `profile` at X: once at its default tolerances (its time, and the
+    displacement range the tight tolerances scale by), then `repeats` times tightened to
+    punchsweep's; the default's time, the tight times, and the last tight answer."""
+    cm_solve.X, cm_solve.u_range = X, None
+    t_default, p, u, offset, _ = cm_solve(profile, cell, tight=False)
+    cm_solve.u_range = u.max() - u.min()
+    t_cm = []
+    for _ in range(max(1, repeats)):
+        t, p, u, offset, r = cm_solve(profile, cell, tight=True)
+        t_cm.append(t)
+    return t_default, t_cm, p, u, offset, r
+
+
 def hexagonal(args, exe, env) -> None:
     l, dh, X = 1.2, 0.06, args.X
     cell, sites = hexagonal_sites(l, dh)
@@ -237,13 +250,7 @@ def hexagonal(args, exe, env) -> None:
         nx, ny = n, hexagonal_ny(n, *cell)
         low = surfaces(cell, sites, nx, ny)
         profile = np.minimum(low[0], low[1])
-        cm_solve.X, cm_solve.u_range = X, None
-        t_default, p, u, offset, _ = cm_solve(profile, cell, tight=False)
-        cm_solve.u_range = u.max() - u.min()
-        t_cm = []
-        for _ in range(max(1, args.repeats)):
-            t, p, u, offset, r = cm_solve(profile, cell, tight=True)
-            t_cm.append(t)
+        t_default, t_cm, p, u, offset, r = cm_timed(profile, cell, X, args.repeats)
         res = residual(profile, p, u, offset)
         loads, clean = level_loads(p, cell, sites, nx, ny)
         a_cm = area_fraction(p)
@@ -300,14 +307,7 @@ def square(args, exe, env, bench) -> None:
           f"{'h CM (R)':>12} {'rel diff':>8} | {'P2 CM':>10} {'rel diff':>8}")
     for n in grids:
         low = surfaces(cell, sites, n, n)
-        profile = np.minimum(low[0], low[1])
-        cm_solve.X, cm_solve.u_range = X, None
-        _, p, u, offset, _ = cm_solve(profile, cell, tight=False)
-        cm_solve.u_range = u.max() - u.min()
-        t_cm = []
-        for _ in range(max(1, args.repeats)):
-            t, p, u, offset, r = cm_solve(profile, cell, tight=True)
-            t_cm.append(t)
+        _, t_cm, p, u, offset, r = cm_timed(np.minimum(low[0], low[1]), cell, X, args.repeats)
         loads, _ = level_loads(p, cell, sites, n, n)
         h_cm = u[0, 0] - u[n // 2, n // 2]
         ref = run_json([str(exe), "reference", "--l", str(l), "--dh", str(dh), "--T", "1", "--pbar", repr(X),
