@@ -2,7 +2,6 @@
 
 #include <memory>
 
-
 namespace punchsweep::model {
 
 std::vector<LevelTouch> GeometryParts::touches(const CreepWeightedLoad& load) const {

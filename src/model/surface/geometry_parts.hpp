@@ -10,7 +10,7 @@
 ///   one's), no curve;
 /// - CurveParts: any cell's elastic load curve (any number of levels; its areas, loads and
 ///   sites in contact in time as well).
-/// engine::geometry_parts chooses between them for a texture.
+/// engine::texture_parts chooses between them for a texture.
 
 #include <array>
 #include <cstddef>
