@@ -350,9 +350,12 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
   for (const model::Site& site : run.geometry.sites) count += site.level == 0 ? 1.0 : 0.0;
   const model::Shape& shape = run.geometry.sites.front().shape;
   const double a = std::pow(X * run.geometry.Lx * run.geometry.Ly / count / model::load_coefficient(shape), 1.0 / (shape.s + 1));
-  // (A multiple of 4: the grid of half its nodes, which the curve is held to, is even.)
-  const double n = std::ceil(kAutoSpotRadius * run.geometry.Lx / run.supercell / a / 4.0) * 4.0;
-  return static_cast<int>(std::clamp(n, static_cast<double>(kAutoMin), static_cast<double>(kAutoMaxNodes)));
+  // (A multiple of 4: the grid of half its nodes, which the curve is held to, is even; the
+  // next one FFTW transforms with its fast codelets, as the grid of half its nodes then is.)
+  const double least = std::ceil(kAutoSpotRadius * run.geometry.Lx / run.supercell / a / 4.0) * 4.0;
+  int n = static_cast<int>(std::clamp(least, static_cast<double>(kAutoMin), static_cast<double>(kAutoMaxNodes)));
+  while (n < kAutoMaxNodes && !reference::fft_friendly(n * run.supercell)) n += 4;
+  return n;
 }
 
 reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes);

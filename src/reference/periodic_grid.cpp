@@ -205,12 +205,31 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   return cell;
 }
 
+bool fft_friendly(int n) {
+  for (const int p : {2, 3, 5, 7}) {
+    while (n > 0 && n % p == 0) n /= p;
+  }
+  return n == 1 || n == 11 || n == 13;
+}
+
 PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n, int K) {
   if (const std::string e = two_level_grid_error(n); !e.empty()) throw std::invalid_argument(e);
   if (K < 1) throw std::invalid_argument("lattice_grid: K >= 1");
-  const int ny = lattice == model::LatticeKind::square
-                     ? n
-                     : 6 * std::max(1, static_cast<int>(std::lround(n * geometry.Ly / geometry.Lx / 6.0)));
+  // A hexagonal cell's ny: a multiple of 6 (its tips on nodes), the FFT-friendly one nearest
+  // square nodes within 3% (else the nearest).
+  const double square = n * geometry.Ly / geometry.Lx;
+  int ny = 6 * std::max(1, static_cast<int>(std::lround(square / 6.0)));
+  if (lattice == model::LatticeKind::square) {
+    ny = n;
+  } else if (!fft_friendly(K * ny)) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int m = 6 * static_cast<int>(std::ceil(0.97 * square / 6.0)); m <= 1.03 * square; m += 6) {
+      if (fft_friendly(K * m) && std::abs(m - square) < best) {
+        best = std::abs(m - square);
+        ny = m;
+      }
+    }
+  }
   return {K * n, K * ny, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
 }
 

@@ -110,9 +110,16 @@ struct Cell {
 /// mirror a tip outside the stored quarter is given as its image's node.
 Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
 
+/// Whether FFTW transforms `n` points with its fast codelets: 2^a 3^b 5^c 7^d 11^e 13^f with
+/// e + f at most 1 (FFTW's manual, "Complex DFTs"); a larger prime factor takes its generic
+/// algorithms, several times slower.
+bool fft_friendly(int n);
+
 /// The grid of a lattice's cell (model::lattice_cell) with `n` nodes per pitch along x (n
 /// even, >= kMinTwoLevelNodes; two_level_grid_error) and as many along y as keep the nodes
-/// near square with every site's tip a node (the hexagonal cell: a multiple of 6); its
+/// near square with every site's tip a node (the hexagonal cell: a multiple of 6, the
+/// FFT-friendly one nearest n sqrt 3 within 3% where there is one: 216 for 128 rather than
+/// 222 = 6 x 37, whose transforms took twice as long); its
 /// quarter (Symmetry::mirror) where the sites are even (model::mirror_symmetric).
 /// A supercell of K x K lattice cells (model::supercell) takes K times the nodes each way.
 PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n, int K = 1);
