@@ -65,7 +65,7 @@ grep -q "curve on 64 x 108 nodes (64 a pitch): about .* MB; to build, about .* s
 set +e
 "$PUNCHSWEEP" "${hex_surface[@]}" --dh 0.07 --supercell 16 --grid 1024 > s.out 2> s.err; rc=$?
 set -e
-[ "$rc" = 2 ] && grep -q "16384 x 28416 nodes" s.err || { echo "FAIL: surface --dry-run beyond the budget: exit $rc"; cat s.err; exit 1; }
+[ "$rc" = 2 ] && grep -q "16384 x 28512 nodes" s.err || { echo "FAIL: surface --dry-run beyond the budget: exit $rc"; cat s.err; exit 1; }
 # The costliest curve is dealt first: l = 6 asks --grid auto for more nodes than l = 1.2
 # (the dry run's estimates say so), and on one rank it is built first.
 cat > order.ini <<'INI'
