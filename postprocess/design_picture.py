@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The design window against temperature: the picture `punchsweep design` promises.
 
-Reads the JSON of `punchsweep design ... --format json` (or `punchsweep.design()` written
+Reads the JSON of `punchsweep design ... --format json` (or `punchsweep.design(...).to_dict()` written
 with json.dump) and draws, against temperature, each requirement's bound on dh (or, with
 --find l or --find pressure, on the pitch or the pressure): the tightest over the tolerance
 box's corners at that temperature, the quantity's own tolerance taken off. For dh a "touch

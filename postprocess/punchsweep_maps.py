@@ -590,7 +590,7 @@ DESIGN_QUANTITIES = {"dh": "height difference dh", "l": "pitch l", "pbar": "nomi
 
 
 def read_design_window(path: str | Path) -> dict:
-    """A design window (`punchsweep design --format json`, or `punchsweep.design()` written
+    """A design window (`punchsweep design --format json`, or `punchsweep.design(...).to_dict()` written
     with json.dump), MapError where the file is none."""
     return read_json(path, "a design window",
                      lambda d: d.get("quantity") in DESIGN_QUANTITIES and isinstance(d.get("requirements"), list)

@@ -124,6 +124,8 @@ def test_the_command_prints_what_python_returns_and_refuses_bad_input():
     assert run.returncode == 0, run.stderr
     printed = json.loads(run.stdout)
     returned = punchsweep.surface(l=0.75, dh=0.03, T=2.5, pbar=0.01, s=2, grid=64)
+    # Typed (a SurfaceLevel each), and each equal to the JSON's level by its keys.
+    assert all(isinstance(level, punchsweep.SurfaceLevel) for level in returned.levels)
     assert printed["levels"] == returned["levels"]
     # The same code, and FFTW's plans its estimate's: the same bits.
     np.testing.assert_array_equal(printed["series"]["area_fraction"], returned["series"]["area_fraction"])

@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from .map_attributes import open_map as read_map
+from .texture_results import DesignRequirement, DesignResult, SurfaceLevel, SurfaceResult, TextureClassification
 
 try:
     from . import _core
@@ -44,7 +45,8 @@ except ImportError as error:  # the package's Python files without its compiled 
                       "bash tests/run-all.sh do)") from None
 
 __all__ = ["point", "reference", "design", "surface", "surface_classify", "surface_map", "classify", "open_map", "fit_material", "Material", "PointResult",
-           "ReferenceResult", "FitResult", "Classification", "REGIMES"]
+           "ReferenceResult", "FitResult", "Classification", "SurfaceResult", "SurfaceLevel", "DesignResult",
+           "DesignRequirement", "TextureClassification", "REGIMES"]
 
 #: The map's regime codes (classify's `regime`, a map's `regime`) and their names.
 REGIMES: dict[int, str] = {int(k): v for k, v in _core.regime_codes().items()}
@@ -232,7 +234,7 @@ def reference(l: float | None = None, dh: float | None = None, T: float | None =
 def design(require: str | Iterable[str], *, material: str | None = None, R: str | None = None,
            l: float | str | None = None, s: int | None = None, C: float | None = None,
            temperature: float | str | None = None, tolerance: str | Mapping | None = None,
-           **options: Any) -> dict:
+           **options: Any) -> DesignResult:
     """`punchsweep design` in-process: the window of dh that meets every requirement
     ("touch within 1s at 30kPa", "never at 5kPa") at every temperature of `temperature`
     ("20..40C") and every corner of `tolerance` ("dh=0.5um, pressure=10%" or {"dh": "0.5um",
@@ -245,18 +247,18 @@ def design(require: str | Iterable[str], *, material: str | None = None, R: str 
     (supercell=3, scatter="normal:0.3um", seed=2) takes find="dh", "dh2" or "l" with requirements
     on the level's first cap, and shares of caps ("90% of level 1 within 1min") with
     find="pressure"; a cell file (cell=FILE) find="dh" (level=L) or "pressure"; a height map
-    (height_map=FILE) find="pressure". Returns the command's
-    JSON as a dict (docs/design.md): lower, upper, empty, centre, margin (in R, or E0* for the
-    pressure), physical (the same in the physical unit), requirements (each with its edge,
-    binds_at and every bound), miss (where empty), notes. ValueError with the command's
-    message for bad input."""
+    (height_map=FILE) find="pressure". Returns a DesignResult (the command's JSON, typed;
+    docs/design.md): lower, upper, empty, centre, margin (in R, or E0* for the pressure),
+    physical (the same in the physical unit), requirements (a DesignRequirement each, with
+    its edge, binds_at and every bound), miss (where empty), texture, notes; it reads like
+    the JSON's dict too (r["upper"]). ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     if isinstance(tolerance, Mapping):
         tolerance = ", ".join(f"{k}={_option_text(v, f'tolerance[{k!r}]')}" for k, v in tolerance.items())
     requirements = [require] if isinstance(require, str) else list(require)
     keywords = [("require", text) for text in requirements] + _keywords(
         dict(material=material, R=R, l=l, s=s, C=C, temperature=temperature, tolerance=tolerance, **options))
-    return json.loads(_core.design(keywords))
+    return DesignResult.from_json(json.loads(_core.design(keywords)))
 
 
 def surface(l: float | str | None = None, dh: float | str | None = None, *, lattice: str | None = None,
@@ -267,18 +269,20 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
             scatter: str | None = None,
             seed: int | None = None, check: bool = False, material: str | None = None, temperature: float | str | None = None,
             pressure: str | None = None, ramp: float | str | None = None, load_table: str | None = None,
-            **options: Any) -> dict:
+            **options: Any) -> SurfaceResult:
     """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
     two levels, or three with dh2, or any cell (cell="FILE", docs/cli.md), or a measured
     period (height_map="FILE" of CSV, .npy or SurfaceTopography NetCDF, pixel=, height_unit=, summit_radius=,
     level_gap=), or a supercell of a lattice or cell whose caps' heights scatter
     (supercell=8, scatter="normal:0.5um", seed=1), under a material and a load, from its
-    cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns the command's JSON as a
-    dict: levels (each with regime, t_star, X_star, drop, sites, share), series (t, X,
+    cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns a
+    SurfaceResult (the command's JSON, typed): levels (a SurfaceLevel each: regime, t_star,
+    X_star, resolved, drop, sites, share, contact_radius, advisories), series (t, X,
     area_fraction, sites_touched, area_0 ..., load_0 ... as numpy arrays; valid and reason
     per time), physical (with R and a material: X in Pa, areas, loads in N, drops, their
     units), check (with check=True: the time stepping's levels and series on the same cell),
-    curve, cell, grid, units. ValueError with the command's message for bad input."""
+    curve, cell, grid, units; it reads like the JSON's dict too (r["levels"][1]["t_star"]).
+    ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
                               grid=grid, cell=None if cell is None else os.fspath(cell),
@@ -287,27 +291,21 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
                               scatter=scatter, seed=seed, check="true" if _flag(check, "check") else None, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp, load_table=load_table,
                               **options))
-    out = json.loads(_core.surface(keywords))
-    out["series"] = {k: (np.array(v) if k not in ("valid", "reason") else v) for k, v in out["series"].items()}
-    out["series"]["valid"] = np.array(out["series"]["valid"], dtype=bool)
-    if "check" in out:
-        out["check"]["series"] = {k: np.array(v) for k, v in out["check"]["series"].items()}
-    if "physical" in out:
-        out["physical"]["series"] = {k: np.array(v) for k, v in out["physical"]["series"].items()}
-    return out
+    return SurfaceResult.from_json(json.loads(_core.surface(keywords)))
 
 
 def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp_time=None,
-                     material: str | None = None, R: str | None = None, **texture: Any) -> dict:
+                     material: str | None = None, R: str | None = None, **texture: Any) -> TextureClassification:
     """Each level's regime and t* of one texture (surface()'s keywords: lattice=, l=, dh=,
     dh2=, s=, C=, cell=, height_map=, supercell=, scatter=, grid=, ...) at many loads,
     broadcasting pbar (or pressure= with a material), the law's parameter (T, or temperature=
     with a material file) and ramp_time like numpy. The texture's load curve is built once
     (to full contact, on the grid the least pressure asks under grid="auto", and kept in the
     table cache); every point is then read off it (about 1e7 points a second): a material x
-    temperature x pressure sweep at the cost of one curve. Returns a dict: t_star and regime
-    (the map's codes, REGIMES) shaped as the broadcast inputs plus a last axis of levels,
-    X_star and resolved per level, time_unit, grid and caps. Empty inputs give empty arrays of
+    temperature x pressure sweep at the cost of one curve. Returns a TextureClassification
+    (it reads like a dict): t_star and regime (the map's codes, REGIMES; regime_names() as
+    text) shaped as the broadcast inputs plus a last axis of levels, X_star and resolved per
+    level, time_unit, grid and caps. Empty inputs give empty arrays of
     their shape (the curve is read all the same, for the levels, at a nominal load).
     ValueError with the command line's message for bad input, and naming the argument for a
     complex number, a bool or a list that mixes values with and without a unit."""
@@ -332,10 +330,10 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
         k: (os.fspath(v) if k in ("cell", "height_map") and v is not None else v) for k, v in texture.items()}))
     raw = _core.surface_classify(keywords, columns)
     levels = len(raw["X_star"])
-    return {"t_star": np.asarray(raw["t_star"]).reshape(*shape, levels),
-            "regime": np.asarray(raw["regime"]).reshape(*shape, levels),
-            "X_star": np.asarray(raw["X_star"]), "resolved": np.asarray(raw["resolved"], dtype=bool),
-            "time_unit": raw["time_unit"], "grid": tuple(raw["grid"]), "caps": raw["caps"]}
+    return TextureClassification(t_star=np.asarray(raw["t_star"]).reshape(*shape, levels),
+                                 regime=np.asarray(raw["regime"]).reshape(*shape, levels),
+                                 X_star=np.asarray(raw["X_star"]), resolved=np.asarray(raw["resolved"], dtype=bool),
+                                 time_unit=raw["time_unit"], grid=tuple(raw["grid"]), caps=raw["caps"])
 
 
 
