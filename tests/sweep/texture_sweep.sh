@@ -153,6 +153,6 @@ refuse "run.resume = true and run.overwrite = true" --config hex.ini --resume --
 # that meets it (before, mpirun aborted and left a journal behind).
 sed '/^s = 2$/d' hex.ini > no-s.ini
 refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): missing required option --s" --config no-s.ini --output bad.nc
-refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): the curve's grid, 16384 x 28416 nodes" \
+refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): the curve's grid, 16384 x 28512 nodes" \
   --config hex.ini --texture.supercell 16 --texture.grid 1024 --output bad.nc
 echo "PASS: texture sweeps identical for 1, 2, 3 ranks, surface-map and the command line; resumed after kill -9"
