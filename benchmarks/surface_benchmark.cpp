@@ -54,7 +54,7 @@ void BM_LoadCurve(benchmark::State& state) {
   reference::LoadCurveOptions options;
   options.X_top = 0.05;
   int solves = 0;
-  options.progress = [&](int k, double) { solves = k; };
+  options.progress = [&](const reference::LoadCurveProgress& p) { solves = p.solves; };
   std::size_t samples = 0;
   for (auto _ : state) {
     const model::LoadCurve curve = reference::build_load_curve(t.geometry, cell, options);

@@ -50,13 +50,6 @@ std::vector<double> as_values(const std::vector<std::byte>& bytes) {
   return values;
 }
 
-std::string seconds_text(double s) {
-  std::ostringstream out;
-  out.precision(s < 10.0 ? 2 : 3);
-  out << s << " s";
-  return out.str();
-}
-
 std::string bytes_text(double bytes) {
   std::ostringstream out;
   out.precision(3);
@@ -125,7 +118,7 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
     largest = std::max(largest, mine);
     if (G <= kListed) {
       out << "  geometry " << g + 1 << " (" << plan.describe(g) << "): " << what.str();
-      if (mine > 0.0) out << "; about " << seconds_text(mine);
+      if (mine > 0.0) out << "; about " << engine::seconds_text(mine);
       out << "\n";
     } else {
       ++groups[what.str()];
@@ -141,8 +134,8 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
   // Dealt one at a time, the costliest first: the run takes about the larger of the share
   // of a rank and the largest curve.
   const double wall = std::max(seconds / ranks, largest);
-  out << "  estimated time: about " << seconds_text(wall) << " on " << ranks << " rank" << (ranks == 1 ? "" : "s") << " ("
-      << seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << engine::kCurveSecondsSpread
+  out << "  estimated time: about " << engine::seconds_text(wall) << " on " << ranks << " rank" << (ranks == 1 ? "" : "s") << " ("
+      << engine::seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << engine::kCurveSecondsSpread
       << " on this machine's measurements; reading the load points adds little)\n";
   out << "  output: " << job.output << " (nothing written by a dry run)\n";
 }
@@ -300,8 +293,8 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     const double left = elapsed / static_cast<double>(done - resumed) * static_cast<double>(G - done);
     std::ostringstream line;
     line << "geometry " << tile.tile + 1 << " (" << plan->describe(tile.tile) << "): curve " << cost.source << " in "
-         << seconds_text(cost.seconds) << "; " << done << " of " << G << " done (" << (100 * done) / G << "%)";
-    if (done < G) line << ", about " << seconds_text(left) << " left";
+         << engine::seconds_text(cost.seconds) << "; " << done << " of " << G << " done (" << (100 * done) / G << "%)";
+    if (done < G) line << ", about " << engine::seconds_text(left) << " left";
     say(line.str());
   };
   int code = 0;

@@ -29,6 +29,9 @@ inline constexpr int kMaxGridNodes = 2048;
 /// UsageError naming the value and the range otherwise.
 int read_grid(const std::string& text);
 
+/// Seconds as progress lines say them: "4.1 s", "105 s" (two or three digits).
+std::string seconds_text(double s);
+
 /// The texture's options (the point's for `material`'s law, the texture's, the grid's):
 /// `surface`, `design`, a texture's sweep and Python's surface() take the same.
 boost::program_options::options_description surface_options(const input::PointMaterial& material);

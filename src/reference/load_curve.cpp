@@ -7,8 +7,21 @@
 #include <string>
 
 #include "reference/contact_areas.hpp"
+#include "reference/fft_influence.hpp"
 
 namespace punchsweep::reference {
+
+double LoadCurveProgress::fraction() const {
+  if (!(X_full > X_start) || !(X_front > X_start)) return 0.0;
+  return std::clamp(std::log(X_front / X_start) / std::log(X_full / X_start), 0.0, 1.0);
+}
+
+double full_contact_load(const Cell& cell) {
+  PeriodicInfluence influence(cell.grid);
+  std::vector<double> stiff(cell.profile.size());
+  influence.apply_stiffness(cell.profile, stiff);
+  return *std::max_element(stiff.begin(), stiff.end());
+}
 
 namespace {
 
@@ -48,6 +61,10 @@ class CurveBuilder {
 
   model::LoadCurve build() {
     const double X_start = start_load(options_.min_spot_nodes);
+    if (options_.progress) {
+      report_.X_start = X_start;
+      report_.X_full = std::min(full_contact_load(cell_), options_.X_top);
+    }
     curve_.X_resolved = start_load(options_.resolved_spot_nodes);
     // The tallest sites touch at any load; any other that has touched by X_start is found
     // below it from the uniform start.
@@ -116,7 +133,12 @@ class CurveBuilder {
       throw std::runtime_error("load curve: the contact solve at X = " + std::to_string(X) + " E0* missed its tolerance (residual " +
                                std::to_string(status.residual) + " after " + std::to_string(status.iterations) + " iterations)");
     }
-    if (options_.progress) options_.progress(solves_, X);
+    if (options_.progress) {
+      report_.solves = solves_;
+      report_.X = X;
+      report_.X_front = std::max(report_.X_front, X);
+      options_.progress(report_);
+    }
     s.sample.level_load = level_loads(g, cell_.level_weight, s.p);
     s.full = std::all_of(s.p.begin(), s.p.end(), [](double v) { return v > 0.0; });
     // The areas from the rims of the pressure (an elastic solve's falls as the square root).
@@ -296,6 +318,7 @@ class CurveBuilder {
   int levels_ = 0;
   std::size_t reference_ = 0;
   int solves_ = 0;
+  LoadCurveProgress report_;  ///< what options_.progress is told
   std::vector<double> last_p_;
   model::LoadCurve curve_;
 };

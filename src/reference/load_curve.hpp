@@ -17,6 +17,19 @@
 
 namespace punchsweep::reference {
 
+/// Where a curve's build stands, after each contact solve: the march in load runs from
+/// X_start up to X_full (known before the first solve: full_contact_load), so the share of
+/// that range (in log X) its front has passed is the share of the curve done.
+struct LoadCurveProgress {
+  int solves = 0;        ///< contact solves so far
+  double X = 0.0;        ///< the load of the last solve (a bisection's may lie behind the front)
+  double X_front = 0.0;  ///< the highest load solved so far, in E0*
+  double X_start = 0.0;  ///< the march's first load
+  double X_full = 0.0;   ///< where it ends: full contact (full_contact_load), or X_top if less
+  /// The share of the load range done, log(X_front / X_start) / log(X_full / X_start), in [0, 1].
+  double fraction() const;
+};
+
 /// The curve's numerical choices.
 struct LoadCurveOptions {
   /// Stop here if full contact has not come before (E0*); the curve then ends at X_top.
@@ -43,9 +56,17 @@ struct LoadCurveOptions {
   double touchdown_tolerance = 1e-7;
   ContactSolverOptions solver{};
   model::StopRequest stop{};
-  /// Called after every contact solve with the number done so far and the load reached.
-  std::function<void(int solves, double X)> progress;
+  /// Called after every contact solve (LoadCurveProgress).
+  std::function<void(const LoadCurveProgress&)> progress;
 };
+
+/// The load at which `cell` comes into full contact, from its profile alone: in full contact
+/// the gap vanishes at every node, so the displacement is the profile's mean less the profile
+/// and the pressure X + S(mean - profile) = X - S profile, S the half-space's stiffness (the
+/// inverse of the influence operator on every mode but the mean); it is non-negative at every
+/// node once X >= max S profile. The discrete problem's own full-contact load (the curve's
+/// X_full, found by bisection to its touchdown_tolerance), from one transform pair.
+double full_contact_load(const Cell& cell);
 
 /// The load curve of `geometry` on the grid of `cell` (make_cell(geometry, grid)). Throws
 /// std::invalid_argument for a bad option, std::runtime_error where a contact solve misses

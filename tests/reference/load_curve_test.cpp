@@ -153,3 +153,58 @@ TEST(LoadCurve, the_lattices_place_their_sites) {
   EXPECT_EQ(square.sites.size(), 4u);
   EXPECT_THROW(model::lattice_cell(LatticeKind::square, 1.0, model::Shape{2, 0.5}, {0.1, 0.2, 0.3}), std::invalid_argument);
 }
+
+// Full contact from the profile alone (reference::full_contact_load: X >= max S profile,
+// S the half-space's stiffness) against the curve's X_full, which the march finds by
+// bisecting contact solves in log X to the touchdown tolerance (1e-7 of X): another code
+// path (the constrained conjugate gradient). On mirrored lattice grids (the cosine
+// transform) and a scattered supercell's full grid (the FFT); and the progress the curve
+// reports runs from its first load to that one.
+TEST(LoadCurve, full_contact_from_the_profile_is_the_curves_full_contact) {
+  const model::Shape shape{2, 0.5};
+  struct Case {
+    const char* name;
+    model::CellGeometry geometry;
+    reference::PeriodicGrid grid;
+  };
+  std::vector<Case> cases;
+  {
+    model::CellGeometry g = model::lattice_cell(LatticeKind::square, 1.5, shape, {0.05});
+    cases.push_back({"square, two levels", g, reference::lattice_grid(g, LatticeKind::square, 48)});
+  }
+  {
+    model::CellGeometry g = model::lattice_cell(LatticeKind::hexagonal, 1.2, shape, {0.05, 0.08});
+    cases.push_back({"hexagonal, three levels", g, reference::lattice_grid(g, LatticeKind::hexagonal, 48)});
+  }
+  {
+    model::HeightScatter scatter;
+    scatter.kind = model::HeightScatter::Kind::normal;
+    scatter.width = 0.01;
+    scatter.seed = 3;
+    const model::CellGeometry lattice = model::lattice_cell(LatticeKind::square, 1.0, shape, {0.03});
+    model::CellGeometry g = model::supercell(lattice, 2, scatter);
+    cases.push_back({"2 x 2 scattered supercell", g, reference::lattice_grid(g, LatticeKind::square, 24, 2)});
+  }
+  int mirrored = 0, full = 0;
+  for (const Case& c : cases) {
+    const reference::Cell cell = reference::make_cell(c.geometry, c.grid);
+    const double predicted = reference::full_contact_load(cell);
+    reference::LoadCurveOptions options;
+    reference::LoadCurveProgress first, last;
+    options.progress = [&](const reference::LoadCurveProgress& p) {
+      if (p.solves == 1) first = p;
+      last = p;
+    };
+    const model::LoadCurve curve = reference::build_load_curve(c.geometry, cell, options);
+    std::printf("%s (%d x %d, %s): X_full %.10g by bisection, %.10g from the profile; %d solves\n", c.name, c.grid.nx,
+                c.grid.ny, c.grid.mirrored() ? "mirrored" : "full", curve.X_full, predicted, last.solves);
+    (c.grid.mirrored() ? mirrored : full) += 1;
+    EXPECT_NEAR(predicted, curve.X_full, 2e-7 * curve.X_full) << c.name;
+    EXPECT_EQ(first.X_full, predicted) << c.name;
+    EXPECT_EQ(first.X_start, curve.X_first()) << c.name;
+    EXPECT_EQ(first.fraction(), 0.0) << c.name;
+    EXPECT_EQ(last.fraction(), 1.0) << c.name;  // the march passes full contact, then bisects back
+  }
+  EXPECT_GE(mirrored, 1);  // both transforms held
+  EXPECT_GE(full, 1);
+}

@@ -28,7 +28,7 @@ TEST(LoadCurve, the_two_level_square_curve_is_the_periodic_solution) {
     const auto t0 = std::chrono::steady_clock::now();
     int solves = 0;
     reference::LoadCurveOptions options;
-    options.progress = [&](int k, double) { solves = k; };
+    options.progress = [&](const reference::LoadCurveProgress& p) { solves = p.solves; };
     curves.push_back(reference::build_load_curve(g, reference::make_cell(g, reference::PeriodicGrid::square(n, 1.0, reference::Symmetry::mirror)), options));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("n = %d: %zu samples, %d solves, %.2f s, X from %.3g to full contact %.6g; touchdown %.8g\n", n,
