@@ -666,18 +666,27 @@ void step_in_time(SurfaceRun& run, const reference::Cell& cell) {
 }
 
 /// The curve as far as the times reach, and the history on it.
+
+/// Whether the periodic model's tables give this run's curve: the two-level square lattice
+/// under --curve auto or tables (CurveSource, set as the inputs are read), where they reach
+/// its dh (model::periodic_curve_reaches). The one place the curve's source is decided, for
+/// the evaluation, its cost and its parts.
+bool tables_answer(const SurfaceRun& run) {
+  return run.curve_source != CurveSource::cell &&
+         model::periodic_curve_reaches(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem);
+}
 }  // namespace
 
 void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   const auto start = std::chrono::steady_clock::now();
   std::optional<model::LoadCurve> tabulated;
-  if (run.curve_source != CurveSource::cell) {
-    // The two-level square lattice's curve off the periodic model's tables, where they
-    // reach its dh.
-    const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
-    tabulated = model::periodic_load_curve(solution, run.inputs.problem);
-    if (!tabulated && run.curve_source == CurveSource::tables) {
+  if (tables_answer(run)) {
+    // The two-level square lattice's curve off the periodic model's tables.
+    tabulated = model::periodic_load_curve(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem);
+  } else if (run.curve_source != CurveSource::cell) {
+    if (run.curve_source == CurveSource::tables) {
+      const model::PeriodicSolution& solution = model::periodic_solution(run.inputs.problem.shape.s);
       const model::PeriodicScales scales(run.inputs.problem);
       std::ostringstream why;
       why << "--curve tables: dh = " << run.inputs.problem.dh << " R is outside the tables' range: dh <= "
@@ -685,10 +694,8 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
           << " R (level 1 hidden under the tall punches); use --curve cell";
       throw input::UsageError(why.str());
     }
-    if (!tabulated) {
-      run.inputs.notes.push_back("dh lies between the periodic tables' top and where level 1 hides: the curve is the cell's "
-                                 "own boundary elements'");
-    }
+    run.inputs.notes.push_back("dh lies between the periodic tables' top and where level 1 hides: the curve is the cell's "
+                               "own boundary elements'");
   }
   std::optional<reference::Cell> cell;
   if (tabulated) {
@@ -824,8 +831,7 @@ CurveCost curve_cost(SurfaceRun& run) {
   CurveCost cost;
   cost.caps = run.geometry.sites.size();
   cost.levels = run.geometry.levels();
-  if (run.curve_source != CurveSource::cell &&
-      model::periodic_curve_reaches(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem)) {
+  if (tables_answer(run)) {
     cost.source = "periodic tables";
     return cost;
   }
@@ -860,10 +866,9 @@ SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoint
 TextureParts texture_parts(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
   return with_keywords(keywords, [&](SurfaceRun& run) {
     TextureParts out;
-    model::ContactProblem periodic = run.inputs.problem;
-    periodic.localization = model::Localization{.periodic = true};
-    if (run.curve_source != CurveSource::cell &&
-        model::periodic_curve_reaches(model::periodic_solution(periodic.shape.s), periodic)) {
+    if (tables_answer(run)) {
+      model::ContactProblem periodic = run.inputs.problem;
+      periodic.localization = model::Localization{.periodic = true};
       run.curve_source = CurveSource::tables;
       out.parts = std::make_unique<model::LocalizationParts>(periodic);
     } else {
