@@ -321,3 +321,53 @@ def test_what_the_texture_design_cannot_answer_is_refused_by_name(args, message)
     lattice = [] if "--lattice" in args else ["--lattice", "hexagonal"]
     r = cli("design", "--material", TRUTH, *MOULD[:4], *lattice, "--l", "200um", *args)
     assert r.returncode == 2 and r.stdout == "" and message in r.stderr, r.stderr
+
+
+def test_scattered_drop_windows_hold_at_random_textures():
+    """--find dh on scattered moulds drawn at random over the range users reach (square or
+    hexagonal two-level lattices, pitch log-uniform 2 to 6 R (120 to 360 um), scatter width
+    log-uniform 0.03 to 0.5 um, a 2 x 2 supercell, seed, pressure log-uniform 3 to 100 kPa,
+    time log-uniform 0.1 s to 1 h, 20 to 40 C), one requirement "touch within TIME at PRESSURE"
+    on level 1's first cap, grid 24. At each edge `surface` (the load curve of every cap,
+    another code path, on the same grid) puts the first cap's touchdown X* at the load X(TIME)
+    the material reaches by then, to 2e-7 of it (the closure's and the curve's touchdowns are
+    each bisected to 1e-7 in X); and 1e-3 of dh either side, t* crosses TIME (never counts as
+    infinitely late). Held in X rather than t*: near the creep's plateau X(t) is so flat that
+    t* is a knife edge (drawn here: X* within 4.5e-8 of X(TIME) at 2936 s and t* 3229 s, which
+    `surface` flags beside the edge); the window's question, touch by TIME or not, is X*'s.
+    Every drawn texture has its edge within 0.5 to 120 um (the last, 63.6 um, on a 341 um pitch)."""
+    rng = np.random.default_rng(4901)
+    for case in range(6):
+        hexagonal = bool(rng.integers(2))
+        l_um = float(60 * np.exp(rng.uniform(np.log(2), np.log(6))))
+        width = float(np.exp(rng.uniform(np.log(0.03), np.log(0.5))))
+        p_kPa = float(np.exp(rng.uniform(np.log(3), np.log(100))))
+        time_s = float(np.exp(rng.uniform(np.log(0.1), np.log(3600))))
+        temperature = float(rng.uniform(20, 40))
+        seed = int(rng.integers(1, 1000))
+        texture = ["--lattice", "hexagonal" if hexagonal else "square", "--l", f"{l_um!r}um", "--supercell", 2,
+                   "--scatter", f"normal:{width!r}um", "--seed", seed, "--grid", 24]
+        requirement = f"touch within {time_s!r}s at {p_kPa!r}kPa"
+        r = cli("design", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--temperature", temperature,
+                "--require", requirement, "--format", "json")
+        assert r.returncode == 0, (case, r.stderr)
+        d = json.loads(r.stdout)
+        upper = d["requirements"][0]["edge_physical"]
+        assert d["requirements"][0]["side"] == "upper" and 0.5 < upper < 120, (case, texture, requirement, d)
+
+        def first_cap(dh_um: float) -> tuple[float, float, float]:
+            """Level 1's t* (inf for never), its X* and the load X(TIME), by `surface`."""
+            run = cli("surface", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--dh", f"{dh_um!r}um",
+                      "--pressure", f"{p_kPa!r}kPa", "--temperature", temperature, "--times", f"0,{time_s!r}",
+                      "--format", "json")
+            assert run.returncode == 0, run.stderr
+            out = json.loads(run.stdout)
+            level = out["levels"][1]
+            return (float("inf") if level["t_star"] is None else level["t_star"]), level["X_star"], out["series"]["X"][1]
+
+        t_edge, X_star, X_time = first_cap(upper)
+        print(f"case {case}: {'hexagonal' if hexagonal else 'square'} l {l_um:.4g} um, scatter {width:.3g} um, "
+              f"{requirement} at {temperature:.3g} C: dh <= {upper:.6g} um; surface there X* {X_star:.10g}, "
+              f"X(TIME) {X_time:.10g} E0*, t* {t_edge:.7g} s")
+        assert X_star == pytest.approx(X_time, rel=2e-7), (case, texture, requirement)
+        assert first_cap(upper * (1 - 1e-3))[0] < time_s < first_cap(upper * (1 + 1e-3))[0], (case, texture)
