@@ -21,9 +21,11 @@
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "model/laws/time_shift.hpp"
+#include "model/load/creep_weighted_load.hpp"
 #include "model/numerics/number_text.hpp"
 #include "model/numerics/root_finding.hpp"
 #include "model/point/point_evaluation.hpp"
+#include "model/point/sensitivity.hpp"
 #include "model/problem/cell_geometry.hpp"
 #include "model/problem/parameter.hpp"
 #include "reference/level_closure.hpp"
@@ -970,6 +972,23 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
       if (beaten) {
         out.notes.push_back("'" + r.text + "' binds at the " + (touch ? "higher" : "lower") +
                             " pressure of its tolerance: t* does not fall with pressure there");
+      }
+    }
+    // Where the requirement's time falls as the creep settles, the load hardly grows by then:
+    // a level touching there does so on a knife edge (model::knife_edge_note's measure, x/t*
+    // d t*/dx along the pressure: -X/(t dX/dt), X = pbar g(t)). The edge is still where the
+    // level touches by that time; the time the window promises hangs on a small change.
+    if (!by_pressure && !r.is_share() && r.time > 0.0 && std::isfinite(r.time) && std::isfinite(b.edge)) {
+      input::Keywords k = with(base_keywords, "pbar", input::json_number(b.binding.pbar));
+      if (!std::isnan(b.binding.temperature)) k = with(k, "temperature", input::json_number(b.binding.temperature));
+      const input::PointInputs in = point_at(k, what);
+      const model::CreepWeightedLoad load(*in.creep, 1.0, in.problem.loading);
+      const double elasticity = -load.response(r.time) / (r.time * load.response_rate(r.time));
+      if (std::abs(elasticity) > model::kKnifeEdgeElasticity) {
+        out.notes.push_back("'" + r.text + "': by then the creep has nearly settled, so at the edge t* is on a knife edge: " +
+                            "x/t* d t*/dx = " + model::number_text(elasticity, 3) +
+                            " for the pressure (a 1% change of the pressure, or of the drop's touchdown load, moves t* " +
+                            "by far more than 1%); the window is where the level touches by then, with no margin in time");
       }
     }
     if (!touch && endless) {

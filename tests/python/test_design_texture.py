@@ -335,7 +335,11 @@ def test_scattered_drop_windows_hold_at_random_textures():
     infinitely late). Held in X rather than t*: near the creep's plateau X(t) is so flat that
     t* is a knife edge (drawn here: X* within 4.5e-8 of X(TIME) at 2936 s and t* 3229 s, which
     `surface` flags beside the edge); the window's question, touch by TIME or not, is X*'s.
+    There the design notes the knife edge: where x/t* d t*/dx = -1 / (d ln J / d ln t) at TIME
+    (J the material's creep compliance, differentiated here by central differences in log t:
+    not the engine's rate) exceeds 10 in size, and only there.
     Every drawn texture has its edge within 0.5 to 120 um (the last, 63.6 um, on a 341 um pitch)."""
+    material = punchsweep.Material(TRUTH)
     rng = np.random.default_rng(4901)
     for case in range(6):
         hexagonal = bool(rng.integers(2))
@@ -354,6 +358,12 @@ def test_scattered_drop_windows_hold_at_random_textures():
         d = json.loads(r.stdout)
         upper = d["requirements"][0]["edge_physical"]
         assert d["requirements"][0]["side"] == "upper" and 0.5 < upper < 120, (case, texture, requirement, d)
+        step = 1e-4  # in ln t
+        J = [material.J(time_s * np.exp(k * step), temperature=temperature) for k in (-1, 1)]
+        elasticity = -2 * step / (np.log(J[1]) - np.log(J[0]))
+        knife = any("knife edge" in note for note in d["notes"])
+        print(f"case {case}: x/t* dt*/dx {elasticity:.4g} at {time_s:.4g} s; the design's note: {knife}")
+        assert abs(abs(elasticity) - 10) > 1 and knife == (abs(elasticity) > 10), (case, elasticity, d["notes"])
 
         def first_cap(dh_um: float) -> tuple[float, float, float]:
             """Level 1's t* (inf for never), its X* and the load X(TIME), by `surface`."""

@@ -219,7 +219,7 @@ std::string knife_edge_note(const std::vector<TStarDerivative>& derivatives) {
   for (const TStarDerivative& d : derivatives) {
     if (std::isfinite(d.elasticity) && (!steepest || std::abs(d.elasticity) > std::abs(steepest->elasticity))) steepest = &d;
   }
-  if (!steepest || !(std::abs(steepest->elasticity) > 10.0)) return {};
+  if (!steepest || !(std::abs(steepest->elasticity) > kKnifeEdgeElasticity)) return {};
   char elasticity_text[64];  // three significant digits
   std::snprintf(elasticity_text, sizeof elasticity_text, "%.3g", steepest->elasticity);
   return "t* is on a knife edge: x/t* d t*/dx = " + std::string(elasticity_text) + " for " +

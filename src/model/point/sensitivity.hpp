@@ -105,4 +105,8 @@ inline constexpr std::size_t kMaxTolerances = 6;
 /// t* most, where that is more than 10% (|x/t* d t*/dx| > 10); empty where no input does.
 std::string knife_edge_note(const std::vector<TStarDerivative>& derivatives);
 
+/// Where |x/t* d t*/dx| exceeds this, t* is on a knife edge (a 1% change of x moves it by
+/// more than 10%): knife_edge_note and design's note at an edge.
+inline constexpr double kKnifeEdgeElasticity = 10.0;
+
 }  // namespace punchsweep::model
