@@ -5,11 +5,7 @@
 namespace punchsweep::model {
 
 std::vector<LevelTouch> GeometryParts::touches(const CreepWeightedLoad& load) const {
-  const std::span<const double> X = touchdowns();
-  std::vector<LevelTouch> out;
-  out.reserve(X.size());
-  for (std::size_t level = 0; level < X.size(); ++level) out.push_back(level_touch(X[level], resolved(level), load));
-  return out;
+  return level_touches(touchdowns(), [this](std::size_t level) { return resolved(level); }, load);
 }
 
 void GeometryParts::touches_at(const CreepLawSpec& spec, const PointAxes& axes, std::span<const double* const> columns,

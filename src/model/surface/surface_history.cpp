@@ -37,12 +37,7 @@ LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& lo
 }
 
 std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load) {
-  std::vector<LevelTouch> out;
-  out.reserve(curve.level_touchdown.size());
-  for (std::size_t level = 0; level < curve.level_touchdown.size(); ++level) {
-    out.push_back(level_touch(curve.level_touchdown[level], touchdown_resolved(curve, level), load));
-  }
-  return out;
+  return level_touches(curve.level_touchdown, [&](std::size_t level) { return touchdown_resolved(curve, level); }, load);
 }
 
 SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& load, std::span<const double> times,

@@ -84,6 +84,16 @@ LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& lo
 /// over materials, temperatures and pressures needs per point.
 std::vector<LevelTouch> level_touches(const LoadCurve& curve, const CreepWeightedLoad& load);
 
+/// The same from the levels' touchdown loads X_star, each resolved as `resolved(level)` says:
+/// the one loop of level_touches and GeometryParts::touches.
+template <class Resolved>
+std::vector<LevelTouch> level_touches(std::span<const double> X_star, const Resolved& resolved, const CreepWeightedLoad& load) {
+  std::vector<LevelTouch> out;
+  out.reserve(X_star.size());
+  for (std::size_t level = 0; level < X_star.size(); ++level) out.push_back(level_touch(X_star[level], resolved(level), load));
+  return out;
+}
+
 /// Reads `curve` along `load` at `times` (non-decreasing, >= 0; t = 0 is the state at 0+).
 /// The loads: for each level L >= 1 that touches by the last time, LoadHistory (the point's
 /// history quadrature, docs/model.md section 12.7) with Q2 = Q_L(X(tau)), Q1 the rest, from
