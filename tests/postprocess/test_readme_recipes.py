@@ -44,10 +44,16 @@ def test_the_readme_python_recipe_runs(tmp_path, monkeypatch):
     subprocess.run([ENGINE, "sweep", "--grid.l", "0.75", "--grid.dh", "0.05,0.1", "--grid.T", "2.5", "--grid.pbar",
                     "0.02,0.06", "--grid.s", "2", "--quiet", "--output", str(tmp_path / "map.h5")], check=True)
     (tmp_path / "materials").symlink_to(REPO / "materials")
+    (tmp_path / "examples").symlink_to(REPO / "examples")
     monkeypatch.chdir(tmp_path)
     scope: dict = {}
     exec(readme_block('punchsweep.Material("materials/'), scope)  # noqa: S102 - the README's own text
     r, c, m, ds = scope["r"], scope["c"], scope["m"], scope["ds"]
+    t, w = scope["t"], scope["w"]
+    # As the comments say: a texture's levels (typed) and a design window (typed).
+    assert [level.regime for level in t.levels] == ["immediate", "immediate", "delayed"]
+    assert abs(t.levels[2].t_star - 3.395) < 1e-3 and isinstance(t, punchsweep.SurfaceResult)
+    assert isinstance(w, punchsweep.DesignResult) and abs(w.physical["upper"] - 9.93) < 5e-3
     # As the README's comment says (the periodic model's t* here; docs/model.md 14.4 has the BEM's 0.874).
     assert r.regime == "delayed" and abs(r.t_star - 0.873568135068006) < 1e-12
     assert c["regime"].shape == (111, 200)
