@@ -58,8 +58,9 @@ namespace {
 /// most every kRedraw), in a log one line at each tenth of the range passed.
 class CurveProgressLine {
  public:
-  CurveProgressLine(int nodes, double estimated_seconds)
-      : nodes_(nodes), estimated_(estimated_seconds), tty_(::isatty(::fileno(stderr)) != 0) {}
+  /// `grid`: the curve's ("N nodes a pitch", or a measured map's "nx x ny pixels").
+  CurveProgressLine(std::string grid, double estimated_seconds)
+      : grid_(std::move(grid)), estimated_(estimated_seconds), tty_(::isatty(::fileno(stderr)) != 0) {}
   CurveProgressLine(const CurveProgressLine&) = delete;
   CurveProgressLine& operator=(const CurveProgressLine&) = delete;
   ~CurveProgressLine() {
@@ -76,7 +77,7 @@ class CurveProgressLine {
     last_ = now;
     tenth_ = tenth;
     std::ostringstream line;
-    line << "punchsweep surface: load curve on " << nodes_ << " nodes a pitch: " << static_cast<int>(100.0 * f)
+    line << "punchsweep surface: load curve on " << grid_ << ": " << static_cast<int>(100.0 * f)
          << "% of the load range to full contact (X = " << std::min(p.X_front, p.X_full) << " of " << p.X_full << " E0*), " << p.solves
          << " solves in " << seconds_text(elapsed);
     if (f >= 0.02) {
@@ -94,7 +95,7 @@ class CurveProgressLine {
  private:
   static constexpr double kQuiet = 2.0;   // s
   static constexpr double kRedraw = 0.5;  // s
-  int nodes_;
+  std::string grid_;
   double estimated_;  ///< the cost model's seconds for the whole curve
   bool tty_;
   bool drawn_ = false;
@@ -665,8 +666,6 @@ void step_in_time(SurfaceRun& run, const reference::Cell& cell) {
   run.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
 }
 
-/// The curve as far as the times reach, and the history on it.
-
 /// Whether the periodic model's tables give this run's curve: the two-level square lattice
 /// under --curve auto or tables (CurveSource, set as the inputs are read), where they reach
 /// its dh (model::periodic_curve_reaches). The one place the curve's source is decided, for
@@ -677,6 +676,7 @@ bool tables_answer(const SurfaceRun& run) {
 }
 }  // namespace
 
+/// The curve as far as the times reach, and the history on it.
 void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   const auto start = std::chrono::steady_clock::now();
@@ -712,8 +712,12 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     std::optional<CurveProgressLine> line;  // the curve being built's, where progress is shown
     if (progress) {
       options.progress = [&](const reference::LoadCurveProgress& p) {
-        if (!line) line.emplace(run.grid_nodes, estimated_curve_seconds(curve_grid(run, run.grid_nodes),
-                                                                       static_cast<double>(run.geometry.sites.size())));
+        if (!line) {
+          const reference::PeriodicGrid grid = curve_grid(run, run.grid_nodes);
+          line.emplace(run.measured ? std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " pixels"
+                                    : std::to_string(run.grid_nodes) + " nodes a pitch",
+                       estimated_curve_seconds(grid, static_cast<double>(run.geometry.sites.size())));
+        }
         (*line)(p);
       };
     }
