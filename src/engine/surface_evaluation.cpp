@@ -124,6 +124,9 @@ constexpr double kBytesPerNode = 260.0;
 /// From this many nodes a curve's setup is said on stderr, with its memory.
 constexpr double kLargeGrid = 1048576.0;
 constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
+/// A curve may take at most this share of the machine's memory (the rest: the system, other
+/// ranks' curves, the map).
+constexpr double kMachineShare = 0.8;
 /// estimated_curve_seconds' power law: seconds = scale x nodes^node_power x caps^cap_power,
 /// times `mirrored` on a grid solved as its quarter. Fitted to 16 curves built on one core
 /// here (square, hexagonal, three levels, 2x2 and 4x4 scattered supercells; 1024 to 113664
@@ -527,21 +530,59 @@ double curve_bytes(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
 /// than kMaxNodes nodes (memory: about kBytesPerNode a node), or nodes x caps beyond
 /// kMaxNodeCaps (each cap that touches apart costs its own search of some 20 solves of the
 /// whole grid). Both are said with the estimate and what brings it down.
-std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
+/// This machine's memory, in bytes (0 where the system does not say).
+double machine_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0.0;
+}
+
+/// Why `grid` is beyond what one curve may take (budget_problem's first clause), empty where
+/// it is within: the nodes, the node-caps, or this machine's memory.
+std::string over_budget(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
   const double nodes = static_cast<double>(grid.nodes());
   const double caps = static_cast<double>(run.geometry.sites.size());
-  const double gigabytes = curve_bytes(run, grid) / 1e9;
+  const double bytes = curve_bytes(run, grid), machine = machine_bytes();
   std::ostringstream out;
   out.precision(3);
-  const std::string lower = run.measured ? "crop or resample the map" : "give a smaller --grid (nodes a pitch)" +
-                                                                           std::string(run.supercell > 1 ? " or --supercell" : "");
   if (nodes > kMaxNodes) {
-    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes (about " << gigabytes
-        << " GB), is beyond the engine's budget of " << kMaxNodes << " nodes: " << lower;
+    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes (about " << bytes / 1e9
+        << " GB), is beyond the engine's budget of " << kMaxNodes << " nodes";
   } else if (nodes * caps > kMaxNodeCaps) {
     out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes with " << run.geometry.sites.size() << " caps (" << nodes * caps
-        << " node-caps, about " << gigabytes << " GB), is beyond the engine's budget of " << kMaxNodeCaps
-        << " node-caps (each cap that touches apart is its own search over the whole grid: hours): " << lower;
+        << " node-caps, about " << bytes / 1e9 << " GB), is beyond the engine's budget of " << kMaxNodeCaps
+        << " node-caps (each cap that touches apart is its own search over the whole grid: hours)";
+  } else if (machine > 0.0 && bytes > kMachineShare * machine) {
+    out << "the curve's grid, " << grid.nx << " x " << grid.ny << " nodes, needs about " << bytes / 1e9
+        << " GB, beyond " << kMachineShare * 100.0 << "% of this machine's " << machine / 1e9 << " GB";
+  }
+  return out.str();
+}
+
+/// The largest nodes a pitch below `nodes` (even, at least 4) whose grid is within the
+/// budget (over_budget empty); 0 where none is.
+int largest_grid_within(const SurfaceRun& run, int nodes) {
+  for (int n = nodes - 2; n >= 4; n -= 2) {
+    if (over_budget(run, curve_grid(run, n)).empty()) return n;
+  }
+  return 0;
+}
+
+std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
+  const std::string over = over_budget(run, grid);
+  if (over.empty()) return over;
+  std::ostringstream out;
+  out.precision(3);
+  out << over << ": ";
+  if (run.measured) {
+    out << "crop or resample the map";
+    return out.str();
+  }
+  out << "give a smaller --grid (nodes a pitch)" << (run.supercell > 1 ? " or --supercell" : "");
+  // (A lattice's or cell's grid has nx = nodes a pitch x the supercell's cells.)
+  if (const int fits = largest_grid_within(run, grid.nx / run.supercell); fits > 0) {
+    const reference::PeriodicGrid largest = curve_grid(run, fits);
+    out << "; the largest that fits: --grid " << fits << " (" << largest.nx << " x " << largest.ny << " nodes, about "
+        << curve_bytes(run, largest) / 1e9 << " GB)";
   }
   return out.str();
 }

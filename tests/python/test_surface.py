@@ -5,6 +5,7 @@ the command's outputs, units and refusals."""
 from __future__ import annotations
 
 import json
+import re
 import os
 import subprocess
 from pathlib import Path
@@ -649,3 +650,26 @@ def test_open_map_reads_a_texture_map_in_physical_units(tmp_path):
     ds = punchsweep.open_map(old)
     assert ds.dh.attrs["units"] == "R" and ds.pbar.attrs["units"] == "E0/(1-nu^2)"
     np.testing.assert_allclose(ds.dh.values, [2 / 60, 3 / 60], rtol=1e-12)
+
+
+@pytest.mark.parametrize("texture", [
+    ["--lattice", "hexagonal", "--l", "1.2", "--dh", "0.01", "--dh2", "0.08", "--supercell", "16", "--grid", "1024"],
+    ["--l", "0.75", "--dh", "0.03", "--supercell", "4", "--grid", "2048"],
+])
+def test_a_grid_beyond_the_budget_names_the_largest_that_fits(texture):
+    """A grid beyond what one curve may take (its nodes, nodes x caps, or 80% of this machine's
+    memory) is refused before any work (exit 2) with the largest --grid that fits: that one
+    passes --dry-run, and the next even one up is refused. (Which budget binds, and so the
+    number, depends on the machine's memory: the test holds the claim, not a number.)"""
+    common = ["--T", "2.5", "--pbar", "0.02", "--s", "2", "--dry-run"]
+    run = cli(*texture, *common)
+    assert run.returncode == 2 and run.stdout == "", run.stderr
+    found = re.search(r"the largest that fits: --grid (\d+) \((\d+) x (\d+) nodes", run.stderr)
+    assert found, run.stderr
+    fits = int(found.group(1))
+    at = list(texture)
+    at[at.index("--grid") + 1] = str(fits)
+    assert cli(*at, *common).returncode == 0
+    at[at.index("--grid") + 1] = str(fits + 2)
+    above = cli(*at, *common)
+    assert above.returncode == 2 and "is beyond" in above.stderr and "the largest that fits: --grid " + str(fits) in above.stderr
