@@ -13,8 +13,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <unistd.h>
-
 #include "engine/surface_evaluation.hpp"
 #include "app/surface_map_command.hpp"
 #include "engine/texture_map.hpp"
@@ -127,7 +125,7 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
   for (const auto& [what, count] : groups) out << "  " << count << " geometr" << (count == 1 ? "y" : "ies") << ": " << what << "\n";
   out << "  curves: " << built << " to build, " << cached << " in the cache, " << tables << " off the periodic tables\n";
   if (bytes > 0.0) {
-    const double machine = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+    const double machine = engine::machine_bytes();
     out << "  memory: about " << bytes_text(bytes) << " a rank for the largest curve (" << ranks << " rank"
         << (ranks == 1 ? "" : "s") << " on one node: " << bytes_text(bytes * ranks) << " of this machine's " << bytes_text(machine) << ")\n";
   }

@@ -36,6 +36,14 @@ namespace po = boost::program_options;
 
 namespace punchsweep::engine {
 
+double machine_bytes() {
+  static const double bytes = [] {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0.0;
+  }();
+  return bytes;
+}
+
 std::string seconds_text(double s) {
   std::ostringstream out;
   out.precision(s < 10.0 ? 2 : 3);
@@ -526,16 +534,6 @@ double curve_bytes(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
   return static_cast<double>(grid.size()) * (kBytesPerNode + 17.0 * levels);
 }
 
-/// Why a curve on `grid` is beyond what the engine takes on (empty where it is not): more
-/// than kMaxNodes nodes (memory: about kBytesPerNode a node), or nodes x caps beyond
-/// kMaxNodeCaps (each cap that touches apart costs its own search of some 20 solves of the
-/// whole grid). Both are said with the estimate and what brings it down.
-/// This machine's memory, in bytes (0 where the system does not say).
-double machine_bytes() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0.0;
-}
-
 /// Why `grid` is beyond what one curve may take (budget_problem's first clause), empty where
 /// it is within: the nodes, the node-caps, or this machine's memory.
 std::string over_budget(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
@@ -567,6 +565,12 @@ int largest_grid_within(const SurfaceRun& run, int nodes) {
   return 0;
 }
 
+/// Why a curve on `grid` is beyond what the engine takes on (empty where it is not): more
+/// than kMaxNodes nodes (memory: about kBytesPerNode a node), nodes x caps beyond
+/// kMaxNodeCaps (each cap that touches apart costs its own search of some 20 solves of the
+/// whole grid), or more than kMachineShare of this machine's memory (over_budget). Each is
+/// said with the estimate and what brings it down: for a lattice or a cell file, the largest
+/// --grid within the budget.
 std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid) {
   const std::string over = over_budget(run, grid);
   if (over.empty()) return over;
@@ -779,10 +783,9 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
         return *cell;
       };
       CurveOrigin origin = CurveOrigin::built;
-      line.reset();  // a new curve, a new line
       model::LoadCurve curve = load_curve_for(run.geometry, grid, options, run.measured ? &run.measured->cell : nullptr,
                                               made, &origin);
-      line.reset();
+      line.reset();  // the next curve (--grid auto's finer one) says its own line
       cached = cached && origin == CurveOrigin::cache;
       return curve;
     };

@@ -32,6 +32,10 @@ int read_grid(const std::string& text);
 /// Seconds as progress lines say them: "4.1 s", "105 s" (two or three digits).
 std::string seconds_text(double s);
 
+/// This machine's memory, in bytes (0 where the system does not say): a curve's budget and a
+/// texture map's dry run hold to it.
+double machine_bytes();
+
 /// The texture's options (the point's for `material`'s law, the texture's, the grid's):
 /// `surface`, `design`, a texture's sweep and Python's surface() take the same.
 boost::program_options::options_description surface_options(const input::PointMaterial& material);
