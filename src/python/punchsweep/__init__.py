@@ -33,7 +33,8 @@ from typing import Any
 import numpy as np
 
 from .map_attributes import open_map as read_map
-from .texture_results import DesignRequirement, DesignResult, SurfaceLevel, SurfaceResult, TextureClassification
+from .texture_results import (DesignRequirement, DesignResult, SurfaceLevel, SurfaceResult, TextureClassification,
+                              gathered_sensitivity)
 
 try:
     from . import _core
@@ -107,12 +108,6 @@ def _result(cls, raw: dict, consumed=lambda key: False):
     fields = {k: raw[k] for k in cls.__dataclass_fields__ if k not in ("series", "other") and k in raw}
     other = {k: v for k, v in raw.items() if k not in cls.__dataclass_fields__ and not consumed(k)}
     return cls(series={k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}, other=other, **fields)
-
-
-def _gathered(key: str) -> bool:
-    """The point's keys that PointResult gathers into one field (sensitivity, t_star_range,
-    corner_regimes)."""
-    return key.startswith(("dt_star_d", "dlog_t_star_dlog_", "corners_")) or key in ("t_star_low", "t_star_high")
 
 
 @dataclass(frozen=True)
@@ -208,12 +203,9 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
                               temperature=temperature, pressure=pressure, ramp=ramp,
                               load_table=load_table, localization=localization, **options))
     raw = _core.point(keywords)
-    sensitivity = {k: raw[k] for k in raw if k.startswith(("dt_star_d", "dlog_t_star_dlog_"))}
-    bounds = (raw["t_star_low"], raw["t_star_high"]) if "t_star_low" in raw else None
-    corners = ({k: int(raw[f"corners_{k}"]) for k in ("immediate", "delayed", "never", "not_computed")}
-               if "t_star_low" in raw else None)
+    sensitivity, bounds, corners, taken = gathered_sensitivity(raw)
     return _result(PointResult, {**raw, "sensitivity": sensitivity, "t_star_range": bounds,
-                                 "corner_regimes": corners}, _gathered)
+                                 "corner_regimes": corners}, taken.__contains__)
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,

@@ -18,23 +18,28 @@ import numpy as np
 __all__ = ["SurfaceLevel", "SurfaceResult", "DesignRequirement", "DesignResult", "TextureClassification"]
 
 
+@dataclass(frozen=True, eq=False)
 class _JsonRecord(Mapping):
     """Item access by the engine's JSON keys, for a dataclass built by `_record`: the keys
-    are those the engine wrote (a field the JSON lacked, None here, is no key), each value
-    the field's or, for a key no field names, `other`'s. Equality is the Mapping's (by
-    items, so a record equals the JSON's dict of the same values): the classes are made with
-    eq=False."""
+    are those the engine wrote, `_keys` (a field the JSON lacked, None here, is no key), each
+    value the field's or, for a key no field names, `other`'s; a record made directly (no
+    `_keys`) has its fields as keys. Equality is the Mapping's (by items, so a record equals
+    the JSON's dict of the same values): the classes are made with eq=False."""
+    _keys: tuple = field(default=(), repr=False, compare=False, kw_only=True)
+
+    def _json_keys(self) -> tuple:
+        return self._keys or tuple(f.name for f in fields(self) if f.name not in ("other", "_keys"))
 
     def __getitem__(self, key: str):
-        if key not in self._keys:
+        if key not in self._json_keys():
             raise KeyError(key)
         return getattr(self, key) if key in self.__dataclass_fields__ else self.other[key]
 
     def __iter__(self):
-        return iter(self._keys)
+        return iter(self._json_keys())
 
     def __len__(self) -> int:
-        return len(self._keys)
+        return len(self._json_keys())
 
     def to_dict(self) -> dict:
         """The command's JSON as plain values (dicts, lists, numbers, text, None for NaN), as
@@ -77,9 +82,10 @@ def _arrays(series: dict) -> dict:
     return out
 
 
-def _sensitivity(raw: dict) -> tuple[dict, tuple | None, dict | None, set]:
-    """A level's d t*/dx and elasticities, its (least, greatest) t* over a tolerance box and
-    the box's corner regimes, gathered as PointResult gathers a point's; and the keys taken."""
+def gathered_sensitivity(raw: dict) -> tuple[dict, tuple | None, dict | None, set]:
+    """A point's or a level's d t*/dx and elasticities (dt_star_dNAME, dlog_t_star_dlog_NAME),
+    its (least, greatest) t* over a tolerance box and the box's corner regimes (corners_*),
+    as PointResult and SurfaceLevel hold them; and the JSON's keys they take."""
     sensitivity = {k: v for k, v in raw.items() if k.startswith(("dt_star_d", "dlog_t_star_dlog_"))}
     corners = {k[len("corners_"):]: int(v) for k, v in raw.items() if k.startswith("corners_")}
     bounds = (raw["t_star_low"], raw["t_star_high"]) if "t_star_low" in raw else None
@@ -120,11 +126,10 @@ class SurfaceLevel(_JsonRecord):
     t_star_range: tuple | None = None
     corner_regimes: dict | None = None
     other: dict = field(default_factory=dict)
-    _keys: tuple = field(default=(), repr=False, compare=False)
 
     def __getitem__(self, key: str):
         # The gathered keys read as the JSON wrote them (level["dt_star_dpbar"]).
-        if key in self._keys and key not in self.__dataclass_fields__:
+        if key in self._json_keys() and key not in self.__dataclass_fields__:
             if key in self.sensitivity:
                 return self.sensitivity[key]
             if key in ("t_star_low", "t_star_high") and self.t_star_range is not None:
@@ -135,7 +140,7 @@ class SurfaceLevel(_JsonRecord):
 
     @classmethod
     def from_json(cls, raw: dict) -> "SurfaceLevel":
-        sensitivity, bounds, corners, taken = _sensitivity(raw)
+        sensitivity, bounds, corners, taken = gathered_sensitivity(raw)
         return _record(cls, raw, sensitivity=sensitivity, t_star_range=bounds, corner_regimes=corners, consumed=taken)
 
 
@@ -173,7 +178,6 @@ class SurfaceResult(_JsonRecord):
     cell_file: str | None = None
     height_map: str | None = None
     other: dict = field(default_factory=dict)
-    _keys: tuple = field(default=(), repr=False, compare=False)
 
     @classmethod
     def from_json(cls, raw: dict) -> "SurfaceResult":
@@ -205,7 +209,6 @@ class DesignRequirement(_JsonRecord):
     binds_at: dict | None = None
     bounds: list = field(default_factory=list)
     other: dict = field(default_factory=dict)
-    _keys: tuple = field(default=(), repr=False, compare=False)
 
     @classmethod
     def from_json(cls, raw: dict) -> "DesignRequirement":
@@ -241,7 +244,6 @@ class DesignResult(_JsonRecord):
     miss: str | None = None
     notes: list = field(default_factory=list)
     other: dict = field(default_factory=dict)
-    _keys: tuple = field(default=(), repr=False, compare=False)
 
     @classmethod
     def from_json(cls, raw: dict) -> "DesignResult":
@@ -265,8 +267,6 @@ class TextureClassification(_JsonRecord):
     grid: tuple
     caps: int
     other: dict = field(default_factory=dict)
-    _keys: tuple = field(default=("t_star", "regime", "X_star", "resolved", "time_unit", "grid", "caps"),
-                         repr=False, compare=False)
 
     @property
     def levels(self) -> int:
