@@ -29,8 +29,10 @@ Measured (this script, 2026-11-29):
   1.8e-8 at a/l = 0.003, 4.8e-6 at 0.021, 1.1e-4 at 0.059, 1.8e-3 at 0.144, 1.6e-2 at 0.269;
 - the first-run example's level 1 (hexagonal, l = 200/60 R, drop 2/60 R): Phi = -0.2551,
   X* = 9.31508e-4 E0* against the 352-node curve's 9.31402e-4 (itself unresolved).
-So the leading order holds X* to 5e-5 up to a/l of about 0.045; the next order (the
-neighbours' spots' finite size) would take it further. Not yet in the engine.
+So the leading order holds X* to 5e-5 up to a/l of about 0.045. The engine's limit
+(model/surface/small_spot_touchdown.hpp, docs/model.md 17.6) adds the next order (each spot's
+second moment in the far field, the field's curvature under each cap, the tilt at the closing
+site) and the sites that touch in turn: against the same tables 9.7e-6 at spot ratio 0.18.
 
 Usage: PYTHONPATH=build/python /usr/bin/python3 studies/periodic/small_spot_cells.py
 """

@@ -32,15 +32,6 @@ using namespace punchsweep;
 
 namespace {
 
-model::ContactProblem lattice(double l, double dh, int s) {
-  model::ContactProblem p;
-  p.l = l;
-  p.dh = dh;
-  p.shape = model::Shape{s, 0.5};
-  p.localization = model::Localization{.periodic = true};
-  return p;
-}
-
 /// The contract every implementation keeps (docs/model.md, section 10): a level is
 /// immediate where X(0+) >= X*, delayed at the t* where X(t*) = X* (to 1e-9 of X*), never
 /// where X(inf) < X*; touches() at a load point is touches_at()'s row there.
@@ -94,7 +85,7 @@ void holds_the_contract(const model::GeometryParts& parts, const char* what) {
 // elements).
 TEST(GeometryParts, every_implementation_keeps_the_reading_contract) {
   test::use_shipped_tables();
-  const model::ContactProblem paper = lattice(1.5, 0.02, 2);
+  const model::ContactProblem paper = test::periodic_lattice(1.5, 0.02, 2);
   holds_the_contract(model::LocalizationParts(paper), "localization, the paper's lattice");
   holds_the_contract(model::CurveParts(*model::periodic_load_curve(model::periodic_solution(2), paper)),
                      "curve of the periodic tables, the paper's lattice");
@@ -120,7 +111,7 @@ TEST(GeometryParts, the_localization_and_the_tables_curve_are_one_answer) {
   for (int trial = 0; trial < 40; ++trial) {
     const int s = 1 + trial % 3;
     const double l = 0.3 * std::pow(10.0, unit(random));
-    model::ContactProblem p = lattice(l, 0.0, s);
+    model::ContactProblem p = test::periodic_lattice(l, 0.0, s);
     const model::PeriodicSolution& solution = model::periodic_solution(s);
     // dh up to the tables' top (in the lattice's own height unit, C (l/2)^s).
     p.dh = unit(random) * solution.delta_top() * model::PeriodicScales(p).h_unit;
@@ -148,7 +139,7 @@ TEST(GeometryParts, the_localization_and_the_tables_curve_are_one_answer) {
 TEST(GeometryParts, the_cells_curve_converges_to_the_localization) {
   test::use_shipped_tables();
   for (const auto& [l, dh, s] : {std::tuple{1.5, 0.02, 2}, std::tuple{0.75, 0.03, 2}, std::tuple{2.0, 0.2, 1}}) {
-    const model::ContactProblem p = lattice(l, dh, s);
+    const model::ContactProblem p = test::periodic_lattice(l, dh, s);
     const double expected = model::LocalizationParts(p).touchdowns()[1];
     const model::CellGeometry g = model::lattice_cell(model::LatticeKind::square, l, p.shape, {dh});
     std::vector<double> X;

@@ -71,6 +71,10 @@ struct LoadCurve {
   /// continuum (reference::LoadCurveOptions::resolved_spot_nodes); below it a reading is the
   /// grid's own and flagged.
   double X_resolved = 0.0;
+  /// Per level: 1 where its touchdown is the small-spot limit's (model::answer_small_spots,
+  /// docs/model.md section 17.6), which holds it below X_resolved as well; empty on a curve
+  /// as built or read (the limit is taken after, from the geometry; tables() leaves it out).
+  std::vector<char> level_small_spot;
 
   int levels() const { return static_cast<int>(level_touchdown.size()); }
   std::size_t sites() const { return site_level.size(); }

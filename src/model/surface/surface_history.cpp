@@ -28,7 +28,8 @@ SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveS
 
 bool touchdown_resolved(const LoadCurve& curve, std::size_t level) {
   const double X_star = curve.level_touchdown[level];
-  return X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_resolved;
+  const bool limit = level < curve.level_small_spot.size() && curve.level_small_spot[level] != 0;
+  return limit || X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_resolved;
 }
 
 LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& load) {
