@@ -28,6 +28,7 @@
 #include "model/point/sensitivity.hpp"
 #include "model/problem/cell_geometry.hpp"
 #include "model/problem/parameter.hpp"
+#include "model/surface/small_spot_touchdown.hpp"
 #include "reference/level_closure.hpp"
 #include "reference/periodic_grid.hpp"
 
@@ -502,11 +503,18 @@ class TextureGap {
     // of l and C).
     if (closures_.size() >= kKeptClosures && !closures_.contains({problem.l, problem.shape.C})) closures_.clear();
     Closure& closure = closures_[{problem.l, problem.shape.C}];
-    if (!closure.solve) {
-      const engine::TextureGeometry made = make_(problem.l, problem.shape);
-      closure.solve = std::make_unique<reference::LevelClosure>(made.geometry, level_, made.grid);
-      closure.shift = design_drop_ - least_drops(made.geometry)[static_cast<std::size_t>(level_ - 1)];
+    if (!closure.made) {
+      closure.made = std::make_unique<const engine::TextureGeometry>(make_(problem.l, problem.shape));
+      closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry);
+      closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
     }
+    // Where the spots in contact are small at X, the small-spot limit answers, as it answers
+    // `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
+    if (const std::optional<double> limit = closure.limit->level_closure(level_, X)) {
+      ++small_spot_;
+      return known_[key] = *limit + closure.shift;
+    }
+    if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
     const reference::LevelClosed closed = closure.solve->at(X);
     every_drop_ = every_drop_ || closed.every_drop;
     ++solves_;
@@ -516,11 +524,14 @@ class TextureGap {
   /// the deepest at which it is still a punch of its own).
   bool every_drop() const { return every_drop_; }
   int solves() const { return solves_; }
+  int small_spot() const { return small_spot_; }
   int level() const { return level_; }
 
  private:
   struct Closure {
-    std::unique_ptr<reference::LevelClosure> solve;
+    std::unique_ptr<const engine::TextureGeometry> made;
+    std::unique_ptr<const model::SmallSpotLimit> limit;  ///< of made's geometry
+    std::unique_ptr<reference::LevelClosure> solve;      ///< built where the limit does not answer
     double shift = 0.0;
   };
   TextureCellMaker make_;
@@ -530,6 +541,7 @@ class TextureGap {
   std::map<std::pair<double, double>, Closure> closures_;
   bool every_drop_ = false;
   int solves_ = 0;
+  int small_spot_ = 0;
 };
 
 DesignResult design_pass(const DesignArgs& a, int nodes) {
@@ -1009,6 +1021,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
   if (texture) {
     out.texture->every_drop = texture->every_drop();
     out.texture->solves = texture->solves();
+    out.texture->small_spot = texture->small_spot();
     if (texture->every_drop()) {
       out.notes.push_back("at some corner the other levels' surfaces press level " + std::to_string(out.texture->level) +
                           "'s tips at any drop it can have: its bound there is the deepest drop at which it is still a cap "
@@ -1048,6 +1061,7 @@ DesignResult design(const DesignArgs& a) {
     fine.texture->coarser = coarse.texture->nodes;
     fine.texture->grid_move = edge_move(coarse, fine);
     fine.texture->solves += coarse.texture->solves;
+    fine.texture->small_spot += coarse.texture->small_spot;
     if (fine.texture->grid_move <= kAutoGridAccuracy) return fine;
     if (2 * nodes > kAutoGridMax) {
       fine.notes.push_back("--grid auto: an edge still moves by " + model::number_text(fine.texture->grid_move, 2) +

@@ -104,6 +104,8 @@ struct DesignTexture {
   double grid_move = 0.0;
   bool every_drop = false;  ///< some load pressed the level at any drop it can have (its bound is its deepest)
   int solves = 0;           ///< contact solves of the answer's grid
+  /// Closures answered by the small-spot limit (no grid; docs/model.md 17.6), on both grids.
+  int small_spot = 0;
   /// A scattered supercell (--supercell K, --scatter): K, the scatter as given and the seed;
   /// its design reads the load curve's touchdown of every cap (K 1 and empty otherwise).
   int supercell = 1;

@@ -70,7 +70,13 @@ std::string texture_text(const engine::DesignResult& d, const engine::Unit& L) {
             (d.quantity == model::kPressure ? ", read off the load curve of every cap"
                                             : ", the level's caps moved as one (each keeps its offset)");
   }
-  text += "; the cell's boundary elements on " + std::to_string(t.nodes) + " nodes a pitch";
+  if (t.solves == 0 && t.small_spot > 0) {
+    // Every closure in the small-spot limit: no grid was read.
+    return text + "; every closure in the small-spot limit (the spots in contact within 0.2 of their distances: no grid)";
+  }
+  text += t.small_spot > 0 ? "; the small-spot limit where the spots in contact are small, else the cell's boundary elements on "
+                           : "; the cell's boundary elements on ";
+  text += std::to_string(t.nodes) + " nodes a pitch";
   if (t.coarser > 0) {
     text += " (--grid auto: edges within " + model::number_text(t.grid_move, 2) + " of those on " + std::to_string(t.coarser) + ")";
   }
@@ -188,7 +194,7 @@ std::string design_json(const engine::DesignResult& d) {
       s << (k ? ", " : "") << (found ? "null" : num(t.drops[k]));
     }
     s << "], \"grid\": " << t.nodes << ", \"grid_coarser\": " << t.coarser << ", \"grid_move\": " << num(t.grid_move)
-      << ", \"every_drop\": " << (t.every_drop ? "true" : "false") << ", \"solves\": " << t.solves
+      << ", \"every_drop\": " << (t.every_drop ? "true" : "false") << ", \"solves\": " << t.solves << ", \"small_spot_closures\": " << t.small_spot
       << ", \"supercell\": " << t.supercell << ", \"scatter\": " << input::json_string(t.scatter)
       << ", \"seed\": " << input::json_string(t.seed) << ", \"caps\": " << t.caps
       << ", \"file\": " << input::json_string(t.file) << "}";

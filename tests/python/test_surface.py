@@ -71,10 +71,11 @@ def test_two_level_square_cell_curve_is_the_periodic_model_at_random_points():
     """The cell's own boundary elements (--curve cell) against the tables: random points,
     log-uniform in pbar (1e-4 to 1e-1) and l (0.3 to 3 R), dh between the gaps h(0) and
     h(inf) so that level 1 touches late (delayed): the curve on --grid auto (the smallest
-    spot 13 node spacings across its radius) gives the regime, t* to 3e-3 and the area
-    fraction at every time to 2% and each level's load to 3e-4 of pbar l^2 (measured on
-    these 5 points: t* within 1.0e-3, areas within 1.0%, loads within 1.3e-4; the model's
-    own tables hold radii to about 1e-3)."""
+    spot after t = 0 13 node spacings across its radius) gives the regime, t* to 3e-3 and the
+    area fraction at every time it resolves to 2% and each level's load to 3e-4 of pbar l^2
+    (measured on these 5 points: t* within 1.3e-4, areas within 1.1%, loads within 1.2e-4;
+    the model's own tables hold radii to about 1e-3). The glassy spot at t = 0 does not size
+    the grid: a snapshot whose area the grid leaves uncertain is flagged below_resolution."""
     rng = np.random.default_rng(38)
     worst_t, worst_area, worst_load = 0.0, 0.0, 0.0
     for _ in range(5):
@@ -88,14 +89,16 @@ def test_two_level_square_cell_curve_is_the_periodic_model_at_random_points():
         level = surface["levels"][1]
         assert level["regime"] == model.regime == "delayed", (l, pbar, dh)
         assert level["resolved"]
-        assert surface["series"]["valid"].all()
+        valid = surface["series"]["valid"]
+        assert valid.sum() >= 4 and set(np.asarray(surface["series"]["reason"])[~valid]) <= {"below_resolution"}
         worst_t = max(worst_t, abs(level["t_star"] / model.t_star - 1))
-        worst_area = max(worst_area, np.max(np.abs(surface["series"]["area_fraction"] / model.series["area_fraction"] - 1)))
+        areas = surface["series"]["area_fraction"][valid]
+        worst_area = max(worst_area, np.max(np.abs(areas / model.series["area_fraction"][valid] - 1)))
         assert level["t_star"] == pytest.approx(model.t_star, rel=3e-3), (l, pbar, dh)
-        np.testing.assert_allclose(surface["series"]["area_fraction"], model.series["area_fraction"], rtol=2e-2)
+        np.testing.assert_allclose(areas, model.series["area_fraction"][valid], rtol=2e-2)
         nominal = pbar * l * l
         for mine, theirs in (("load_0", "P1"), ("load_1", "P2")):
-            difference = np.max(np.abs(surface["series"][mine] - model.series[theirs])) / nominal
+            difference = np.max(np.abs(surface["series"][mine][valid] - model.series[theirs][valid])) / nominal
             worst_load = max(worst_load, difference)
             assert difference < 3e-4, (l, pbar, dh, mine)
     print(f"worst t* {worst_t:.1e}, area fraction {worst_area:.1e}, load {worst_load:.1e} of pbar l^2")
@@ -466,7 +469,10 @@ def test_the_documented_cell_example_runs():
               "--pbar", "0.01", "--grid", "32", "--format", "json")
     assert run.returncode == 0, run.stderr
     out = json.loads(run.stdout)
-    assert out["caps"] == 4 and out["notes"] == [] and out["lattice"] == "cell"
+    # (Level 1's touchdown, whose spots are small beside the pitch, is the small-spot limit's;
+    # nothing else is noted.)
+    assert out["caps"] == 4 and out["lattice"] == "cell"
+    assert [note.split(" from ")[0] for note in out["notes"]] == ["level 1: X* = 0.0012825 E0*"]
     assert [lv["drop"] for lv in out["levels"]] == pytest.approx([0.0, 3.0 / 80.0], rel=1e-9)
 
 

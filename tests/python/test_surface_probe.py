@@ -211,14 +211,19 @@ def test_a_surface_map_never_writes_over_its_own_input(tmp_path):
 def test_every_valid_snapshot_of_the_cell_curve_is_within_one_percent_of_the_tables(l, pbar, s):
     """The probe's cell-curve areas past the stated 1% on valid snapshots (1.16% at pbar 1e-4,
     s = 3; 1.42% at l = 10 R, s = 3): under --grid auto a snapshot is valid only where its
-    area fraction is within 1% of `point`'s (the tables), else flagged."""
+    area fraction is within 1% of `point`'s (the tables), else flagged below_resolution with a
+    note that a finer --grid answers. (With the grid sized for the times after 0, 120 and 140
+    nodes a pitch, the areas at s = 3 were 1.1-1.2% off where they had moved 2.2% from the
+    grid of half the nodes, which a third of the move left valid: the move's half is the
+    estimate.)"""
     ends = point_json(l=l, dh=0, T=2.5, pbar=pbar, s=s)
     dh = 0.5 * (ends["h_0"] + ends["h_inf"])
     times = [0, 0.5, 1, 2, 5, 20]
     ref = punchsweep.point(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times)
     out = punchsweep.surface(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times, curve="cell")
     valid = np.asarray(out["series"]["valid"], dtype=bool)
-    assert valid.sum() >= 4
+    assert valid.sum() >= 2 and set(np.asarray(out["series"]["reason"])[~valid]) == {"below_resolution"}
+    assert any("a finer --grid answers" in note for note in out["notes"])
     mine, theirs = np.asarray(out["series"]["area_fraction"]), np.asarray(ref.series["area_fraction"])
     np.testing.assert_allclose(mine[valid], theirs[valid], rtol=1e-2)
 
