@@ -13,9 +13,6 @@ namespace punchsweep::model {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-/// The Laplacian's direct sum reaches this many sqrt(cell area); the rest is the nominal
-/// density's integral, 2 / (A R).
-constexpr double kLaplacianReach = 40.0;
 
 }  // namespace
 
@@ -71,17 +68,30 @@ std::array<double, 2> PeriodicPointLoads::gradient(double x, double y) const {
 }
 
 double PeriodicPointLoads::sum_laplacian(double x, double y, bool regular) const {
-  const double reach = kLaplacianReach * std::sqrt(area_);
-  const int nx = static_cast<int>(std::ceil(reach / Lx_)) + 1, ny = static_cast<int>(std::ceil(reach / Ly_)) + 1;
+  // Ewald's split of G, differentiated: the screened part's Laplacian
+  // e''/(pi r) - e'/(pi r^2) + e/(pi r^3) with e = erfc(alpha r), and -k^2 times each wave.
+  const double a = alpha_, root_pi = std::sqrt(kPi);
   double sum = 0.0;
-  for (int i = -nx; i <= nx; ++i) {
-    for (int j = -ny; j <= ny; ++j) {
+  for (int i = -images_x_; i <= images_x_; ++i) {
+    for (int j = -images_y_; j <= images_y_; ++j) {
       if (regular && i == 0 && j == 0) continue;
       const double r = std::hypot(x - i * Lx_, y - j * Ly_);
-      if (r < reach) sum += 1.0 / (kPi * r * r * r);
+      const double gauss = std::exp(-a * a * r * r);
+      const double e = std::erfc(a * r), e1 = -2.0 * a / root_pi * gauss, e2 = 4.0 * a * a * a * r / root_pi * gauss;
+      sum += (e2 / r - e1 / (r * r) + e / (r * r * r)) / kPi;
     }
   }
-  return sum + 2.0 / (area_ * reach);
+  // At a node, the limit of the screened part's Laplacian less 1/(pi r^3): 8 alpha^3 / (3 pi^1.5).
+  if (regular) sum += 8.0 * a * a * a / (3.0 * kPi * root_pi);
+  for (int i = -waves_x_; i <= waves_x_; ++i) {
+    for (int j = -waves_y_; j <= waves_y_; ++j) {
+      if (i == 0 && j == 0) continue;
+      const double kx = 2.0 * kPi * i / Lx_, ky = 2.0 * kPi * j / Ly_;
+      const double k = std::hypot(kx, ky);
+      sum -= 2.0 * k / area_ * std::erfc(k / (2.0 * a)) * std::cos(kx * x + ky * y);
+    }
+  }
+  return sum;
 }
 
 double PeriodicPointLoads::laplacian(double x, double y) const { return sum_laplacian(x, y, false); }
@@ -97,7 +107,6 @@ double second_moment_coefficient(const Shape& shape) {
   return 2.0 * (load_coefficient(shape) - 4.0 / 3.0 * depth_coefficient(shape) + 2.0 * shape.C * beta);
 }
 
-/// The tallest caps of a cell and the fields between them, and a lower site's closure.
 /// The cell's sites as punches of small spots: the fields between every pair, the state of
 /// the sites in contact at a load, and an untouched site's closure.
 class SmallSpotCell {
@@ -106,20 +115,25 @@ class SmallSpotCell {
     const std::size_t n = geometry.sites.size();
     G_ = Eigen::MatrixXd(n, n);
     L_ = Eigen::MatrixXd(n, n);
+    Gx_ = Eigen::MatrixXd::Zero(n, n);  // (the images' field is even about a site: no slope there)
+    Gy_ = Eigen::MatrixXd::Zero(n, n);
     for (std::size_t i = 0; i < n; ++i) {
       const Shape& shape = geometry.sites[i].shape;
       K_P_.push_back(load_coefficient(shape));
       K_d_.push_back(depth_coefficient(shape));
       m2_.push_back(second_moment_coefficient(shape));
-      for (std::size_t j = 0; j < n; ++j) {
-        if (i == j) {
-          G_(i, j) = field_.regular_displacement();
-          L_(i, j) = field_.regular_laplacian();
-        } else {
-          const auto [dx, dy] = offset(i, j);
-          G_(i, j) = field_.displacement(dx, dy);
-          L_(i, j) = field_.laplacian(dx, dy);
-        }
+      G_(i, i) = field_.regular_displacement();
+      L_(i, i) = field_.regular_laplacian();
+      // G and L are even, their gradient odd: each pair once.
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const auto [dx, dy] = offset(i, j);
+        G_(i, j) = G_(j, i) = field_.displacement(dx, dy);
+        L_(i, j) = L_(j, i) = field_.laplacian(dx, dy);
+        const std::array<double, 2> g = field_.gradient(dx, dy);
+        Gx_(i, j) = g[0];
+        Gy_(i, j) = g[1];
+        Gx_(j, i) = -g[0];
+        Gy_(j, i) = -g[1];
       }
     }
   }
@@ -252,10 +266,8 @@ class SmallSpotCell {
     for (std::size_t j = 0; j < loaded.size(); ++j) {
       const Eigen::Index J = static_cast<Eigen::Index>(j);
       u += st.P(J) * G_(k, loaded[j]) + 0.25 * st.M2(J) * L_(k, loaded[j]);
-      const auto [dx, dy] = offset(k, loaded[j]);
-      const std::array<double, 2> g = field_.gradient(dx, dy);
-      gx += st.P(J) * g[0];
-      gy += st.P(J) * g[1];
+      gx += st.P(J) * Gx_(k, loaded[j]);
+      gy += st.P(J) * Gy_(k, loaded[j]);
     }
     const double slope = std::hypot(gx, gy);
     double tilt = 0.0;
@@ -283,7 +295,7 @@ class SmallSpotCell {
   const CellGeometry& geometry_;
   PeriodicPointLoads field_;
   std::vector<double> K_P_, K_d_, m2_;
-  Eigen::MatrixXd G_, L_;
+  Eigen::MatrixXd G_, L_, Gx_, Gy_;  ///< between every pair of sites: G, its Laplacian and gradient
 };
 
 /// Whether the limit takes the cell: every level-0 site at drop 0 (a scattered supercell's
@@ -334,6 +346,23 @@ std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) co
         const double c = cell_->closure(loaded, st, k);
         return std::isnan(c) || !st.converged ? std::numeric_limits<double>::infinity() : c - geometry_.sites[k].drop;
       };
+      // A site like one found this round (a supercell's copies, a lattice's images) closes at
+      // its load: one state there says so (its gap closed to rounding, its spots within reach).
+      const Site& site = geometry_.sites[k];
+      const auto alike = std::find_if(found.begin(), found.end(), [&](const auto& f) {
+        const Site& other = geometry_.sites[f.second];
+        return other.level == site.level && other.drop == site.drop && other.shape.s == site.shape.s && other.shape.C == site.shape.C;
+      });
+      if (alike != found.end()) {
+        const double X = alike->first;  // (a copy: found grows below)
+        const SmallSpotCell::State st = cell_->at(loaded, X);
+        const double c = cell_->closure(loaded, st, k);
+        if (st.converged && std::abs(c - site.drop) <= 1e-12 * site.drop && st.a.maxCoeff() <= kSmallSpotMaxRatio * reach) {
+          found.emplace_back(X, k);
+          out[k] = {X, st.a.maxCoeff() / reach};
+          continue;
+        }
+      }
       // The limit's reach: the largest load whose spots stay within kSmallSpotMaxRatio of
       // the nearest distance (bisection in log X), from just above the last touchdown (1e-6
       // of the load past it: the sites that joined there have spots, not points, which the
@@ -347,7 +376,7 @@ std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) co
         held_to = std::min(held_to, X_from);
         continue;
       }
-      if (!within(hi)) hi = bisect_boundary(within, floor, hi, 0.0, 40).first;
+      if (!within(hi)) hi = bisect_boundary(within, floor, hi, 0.0, 24).first;  // (to 5e-6 of the range in log X)
       const double f_hi = excess(hi), f_lo = excess(floor);
       if (!(f_hi >= 0.0) || !(f_lo < 0.0)) {  // not closed within the reach (or closed before)
         held_to = std::min(held_to, std::exp(hi));

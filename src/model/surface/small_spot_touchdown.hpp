@@ -34,7 +34,8 @@ namespace punchsweep::model {
 /// Unit point loads at the nodes of the Lx x Ly lattice on a half-space of E* = 1, balanced
 /// by a uniform pressure: the surface displacement G of zero mean over the cell by Ewald's
 /// sums (1/(pi r) split by erfc(alpha r); the smooth part's transform (2/k) erfc(k/(2 alpha))),
-/// to about 1e-14 of 1/sqrt(Lx Ly), and its Laplacian sum 1/(pi r^3) over the nodes.
+/// to about 1e-14 of 1/sqrt(Lx Ly), and its Laplacian (away from the nodes the sum of
+/// 1/(pi r^3) over them) by the same split, differentiated.
 class PeriodicPointLoads {
  public:
   PeriodicPointLoads(double Lx, double Ly);
@@ -45,7 +46,7 @@ class PeriodicPointLoads {
   double regular_displacement() const { return regular_displacement_; }
   /// G's gradient at (x, y), not at a node (central differences of G).
   std::array<double, 2> gradient(double x, double y) const;
-  /// G's Laplacian at (x, y), not at a node: sum over the nodes of 1/(pi r^3).
+  /// G's Laplacian at (x, y), not at a node (the sum over the nodes of 1/(pi r^3)).
   double laplacian(double x, double y) const;
   /// The Laplacian of the images' field at a node: the sum over the other nodes.
   double regular_laplacian() const { return regular_laplacian_; }
