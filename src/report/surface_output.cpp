@@ -107,6 +107,15 @@ void write_check(std::ostream& out, const engine::SurfaceRun& run) {
   out << "    }\n  },\n";
 }
 
+/// What gave a level's touchdown X*: "tallest" (level 0, X* = 0), "tables" (the periodic
+/// model's), "small_spot_limit" (docs/model.md 17.6) or "curve" (the cell's boundary elements).
+std::string touchdown_source(const engine::SurfaceRun& run, int level) {
+  if (level == 0) return "tallest";
+  if (run.curve_source == engine::CurveSource::tables) return "tables";
+  const std::size_t at = static_cast<std::size_t>(level);
+  return at < run.curve.level_small_spot.size() && run.curve.level_small_spot[at] != 0 ? "small_spot_limit" : "curve";
+}
+
 /// Per level, whether every cap of it lies under the taller caps' surface
 /// (model::tip_exposed); level 0 never does. One scan of the cell for all levels.
 std::vector<char> hidden_levels(const engine::SurfaceRun& run) {
@@ -189,6 +198,7 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run) {
         << ", \"sites\": " << drops.sites << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime)))
         << ", \"t_star\": " << num(touch.t_star) << ", \"X_star\": " << num(touch.X_star)
         << ", \"resolved\": " << (touch.resolved ? "true" : "false")
+        << ", \"touchdown_from\": " << input::json_string(touchdown_source(run, level))
         << ", \"hidden\": " << (hidden[static_cast<std::size_t>(level)] ? "true" : "false")
         << ", \"t_star_grid_change\": "
         << (run.grid_t_star_change.empty() ? std::string("null") : num(run.grid_t_star_change[static_cast<std::size_t>(level)]))

@@ -679,3 +679,33 @@ def test_a_grid_beyond_the_budget_names_the_largest_that_fits(texture):
     at[at.index("--grid") + 1] = str(fits + 2)
     above = cli(*at, *common)
     assert above.returncode == 2 and "is beyond" in above.stderr and "the largest that fits: --grid " + str(fits) in above.stderr
+
+
+def test_the_studys_first_run_reads_its_touchdowns_in_the_small_spot_limit():
+    """The study's first run (hexagonal, 60 um caps on a 200 um pitch, levels 2 and 5 um down,
+    TPE-A at 10 kPa and 20 C, times 0, 1 s, 1 min, 1 h): both levels touch while the tallest
+    spots are under a tenth of the pitch, so their touchdowns are the small-spot limit's
+    (docs/model.md 17.6), the same on any grid (here 48 nodes a pitch and --grid auto), and
+    resolved; the glassy spot at t = 0 does not size the grid (it asked 280 nodes a pitch):
+    --grid auto takes at most 176 and flags that one snapshot. (Measured against the curve on
+    512 x 882 nodes of the build before: t* within 6.7e-4 and 8.8e-5, docs/performance.md.)"""
+    material = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    args = ["--material", material, "--R", "60um", "--s", "2", "--lattice", "hexagonal", "--l", "200um", "--dh", "2um",
+            "--dh2", "5um", "--pressure", "10kPa", "--temperature", "20", "--times", "0, 1s, 1min, 1h", "--format", "json"]
+    runs = {}
+    for grid in ("auto", "48"):
+        run = cli(*args, "--grid", grid)
+        assert run.returncode == 0, run.stderr
+        runs[grid] = json.loads(run.stdout)
+    auto = runs["auto"]
+    assert auto["grid"][0] <= 176
+    for level in (1, 2):
+        mine, coarse = auto["levels"][level], runs["48"]["levels"][level]
+        assert mine["touchdown_from"] == coarse["touchdown_from"] == "small_spot_limit"
+        assert mine["resolved"] and mine["regime"] == "delayed"
+        assert mine["t_star"] == pytest.approx(coarse["t_star"], rel=1e-12) and mine["X_star"] == pytest.approx(coarse["X_star"], rel=1e-12)
+        assert any(note.startswith(f"level {level}: X* = ") and "small-spot limit" in note for note in auto["notes"])
+    # (The area at 1 s moves 2.4% from 88 to 176 nodes a pitch and is flagged too; on 352 it
+    # is 0.3% from 176's.)
+    assert auto["series"]["reason"][0] == "below_resolution" and auto["series"]["reason"][2:] == ["valid", "valid"]
+    assert any(note.startswith("--grid auto sized the grid for the times after 0") for note in auto["notes"])

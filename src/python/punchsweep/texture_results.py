@@ -101,7 +101,8 @@ class SurfaceLevel(_JsonRecord):
     caps below the tallest (R); sites: its caps in the cell; regime: 'immediate', 'delayed' or
     'never'; t_star: when it touches (the time unit; None for never); X_star: the nominal
     pressure at its touchdown on the load curve (E0*); resolved: whether the curve resolves
-    that touchdown (False: a finer grid answers); hidden: under a taller cap's contact;
+    that touchdown (False: a finer grid answers); touchdown_from: what gave X* ('tallest',
+    'tables', 'small_spot_limit' or 'curve', docs/model.md section 17.6); hidden: under a taller cap's contact;
     t_star_grid_change: t*'s change from the coarser grid (--grid auto; else None); share:
     its share of the cell's caps at full contact's load curve; contact_radius: its caps'
     widest contact radius by the last time (R); advisories: the physical advisories raised
@@ -114,6 +115,7 @@ class SurfaceLevel(_JsonRecord):
     t_star: float | None
     X_star: float | None
     resolved: bool
+    touchdown_from: str = ""
     drop: float | None = None
     drop_max: float | None = None
     sites: int | None = None
