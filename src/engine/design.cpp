@@ -505,12 +505,12 @@ class TextureGap {
     Closure& closure = closures_[{problem.l, problem.shape.C}];
     if (!closure.made) {
       closure.made = std::make_unique<const engine::TextureGeometry>(make_(problem.l, problem.shape));
-      closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry);
+      closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry, level_);
       closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
     }
     // Where the spots in contact are small at X, the small-spot limit answers, as it answers
     // `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
-    if (const std::optional<double> limit = closure.limit->level_closure(level_, X)) {
+    if (const std::optional<double> limit = closure.limit->level_closure(X)) {
       ++small_spot_;
       return known_[key] = *limit + closure.shift;
     }

@@ -117,9 +117,10 @@ class CurveProgressLine {
 /// [kAutoMin, kAutoMaxNodes] (past it the snapshots below the curve's resolution are flagged).
 constexpr int kAutoMin = 64;
 constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
-/// --grid auto's accuracy of an area fraction (the stated 1%), estimated as half its move
-/// from the grid of half the nodes.
+/// --grid auto's accuracy of an area fraction (the stated 1%), its error estimated as
+/// kAutoAreaMoveShare of its move from the grid of half the nodes.
 constexpr double kAutoAreaAccuracy = 1e-2;
+constexpr double kAutoAreaMoveShare = 0.5;
 /// The budget of one curve: at most kMaxNodes nodes (a 4096 x 4096 height map; the
 /// boundary elements hold about kBytesPerNode a node, measured: 68 MB for 512 x 512), and
 /// nodes x caps at most kMaxNodeCaps (measured: an 8 x 8 two-level supercell, 128 caps on
@@ -513,14 +514,14 @@ model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad
                                std::to_string(n) + " nodes a pitch resolve and is flagged below_resolution; --grid " +
                                std::to_string(auto_grid_at(run, X0)) + " resolves it");
   }
-  // Each snapshot's area fraction on both grids: half its move is the taken grid's error
-  // where the areas converge at order 1.6 or faster (a lone cap's at second order,
+  // Each snapshot's area fraction on both grids: kAutoAreaMoveShare (half) of its move is
+  // the taken grid's error where the areas converge at order 1.6 or faster (a lone cap's at second order,
   // docs/model.md 17.3; the square lattice at s = 3 as slowly as 2.9 a doubling: 1.13% off
   // on 120 nodes a pitch where it moved 2.2% from 60).
   for (const double t : run.times) {
     const double X = t > 0.0 ? load(t) : load.initial();
     const double a = coarse.at(X).area_fraction, b = fine.at(X).area_fraction;
-    run.grid_area_error.push_back(b > 0.0 ? std::abs(b - a) / (2.0 * b) : 0.0);
+    run.grid_area_error.push_back(b > 0.0 ? kAutoAreaMoveShare * std::abs(b - a) / b : 0.0);
   }
   for (std::size_t level = 1; level < L; ++level) {
     if (change[level] <= kAutoTStarAccuracy) continue;
@@ -846,8 +847,11 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     ++uncertain;
   }
   if (uncertain > 0) {
-    run.inputs.notes.push_back(std::to_string(uncertain) + " snapshot(s) flagged below_resolution: their area fraction moves by more than " +
-                               "2% from the grid of half the nodes (an error beyond 1% on the grid taken); a finer --grid answers");
+    std::ostringstream note;
+    note << uncertain << " snapshot(s) flagged below_resolution: their area fraction moves by more than "
+         << 100.0 * kAutoAreaAccuracy / kAutoAreaMoveShare << "% from the grid of half the nodes (an error beyond "
+         << 100.0 * kAutoAreaAccuracy << "% on the grid taken); a finer --grid answers";
+    run.inputs.notes.push_back(note.str());
   }
   // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
   const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,

@@ -16,6 +16,27 @@ constexpr double kPi = std::numbers::pi;
 
 }  // namespace
 
+template <class Term>
+void PeriodicPointLoads::add_images(double& sum, double x, double y, bool regular, const Term& term) const {
+  for (int i = -images_x_; i <= images_x_; ++i) {
+    for (int j = -images_y_; j <= images_y_; ++j) {
+      if (regular && i == 0 && j == 0) continue;
+      sum += term(std::hypot(x - i * Lx_, y - j * Ly_));
+    }
+  }
+}
+
+template <class Term>
+void PeriodicPointLoads::add_waves(double& sum, double x, double y, const Term& term) const {
+  for (int i = -waves_x_; i <= waves_x_; ++i) {
+    for (int j = -waves_y_; j <= waves_y_; ++j) {
+      if (i == 0 && j == 0) continue;
+      const double kx = 2.0 * kPi * i / Lx_, ky = 2.0 * kPi * j / Ly_;
+      sum += term(std::hypot(kx, ky)) * std::cos(kx * x + ky * y);
+    }
+  }
+}
+
 PeriodicPointLoads::PeriodicPointLoads(double Lx, double Ly) : Lx_(Lx), Ly_(Ly), area_(Lx * Ly), alpha_(2.0 / std::sqrt(Lx * Ly)) {
   // erfc(6) = 2e-17: the real sum to 6 / alpha, the Fourier sum to k = 12 alpha.
   const double side = std::sqrt(area_);
@@ -25,39 +46,20 @@ PeriodicPointLoads::PeriodicPointLoads(double Lx, double Ly) : Lx_(Lx), Ly_(Ly),
   waves_y_ = static_cast<int>(std::ceil(24.0 * Ly_ / (2.0 * kPi * side))) + 1;
   regular_displacement_ = sum_real(0.0, 0.0, true) - 2.0 * alpha_ / (kPi * std::sqrt(kPi));
   double fourier = 0.0;
-  for (int i = -waves_x_; i <= waves_x_; ++i) {
-    for (int j = -waves_y_; j <= waves_y_; ++j) {
-      if (i == 0 && j == 0) continue;
-      const double k = std::hypot(2.0 * kPi * i / Lx_, 2.0 * kPi * j / Ly_);
-      fourier += 2.0 / (k * area_) * std::erfc(k / (2.0 * alpha_));
-    }
-  }
+  add_waves(fourier, 0.0, 0.0, [&](double k) { return 2.0 / (k * area_) * std::erfc(k / (2.0 * alpha_)); });
   regular_displacement_ += fourier - 2.0 / (std::sqrt(kPi) * alpha_ * area_);
   regular_laplacian_ = sum_laplacian(0.0, 0.0, true);
 }
 
 double PeriodicPointLoads::sum_real(double x, double y, bool regular) const {
   double sum = 0.0;
-  for (int i = -images_x_; i <= images_x_; ++i) {
-    for (int j = -images_y_; j <= images_y_; ++j) {
-      if (regular && i == 0 && j == 0) continue;
-      const double r = std::hypot(x - i * Lx_, y - j * Ly_);
-      sum += std::erfc(alpha_ * r) / (kPi * r);
-    }
-  }
+  add_images(sum, x, y, regular, [&](double r) { return std::erfc(alpha_ * r) / (kPi * r); });
   return sum;
 }
 
 double PeriodicPointLoads::displacement(double x, double y) const {
   double fourier = 0.0;
-  for (int i = -waves_x_; i <= waves_x_; ++i) {
-    for (int j = -waves_y_; j <= waves_y_; ++j) {
-      if (i == 0 && j == 0) continue;
-      const double kx = 2.0 * kPi * i / Lx_, ky = 2.0 * kPi * j / Ly_;
-      const double k = std::hypot(kx, ky);
-      fourier += 2.0 / (k * area_) * std::erfc(k / (2.0 * alpha_)) * std::cos(kx * x + ky * y);
-    }
-  }
+  add_waves(fourier, x, y, [&](double k) { return 2.0 / (k * area_) * std::erfc(k / (2.0 * alpha_)); });
   return sum_real(x, y, false) - 2.0 / (std::sqrt(kPi) * alpha_ * area_) + fourier;
 }
 
@@ -72,25 +74,14 @@ double PeriodicPointLoads::sum_laplacian(double x, double y, bool regular) const
   // e''/(pi r) - e'/(pi r^2) + e/(pi r^3) with e = erfc(alpha r), and -k^2 times each wave.
   const double a = alpha_, root_pi = std::sqrt(kPi);
   double sum = 0.0;
-  for (int i = -images_x_; i <= images_x_; ++i) {
-    for (int j = -images_y_; j <= images_y_; ++j) {
-      if (regular && i == 0 && j == 0) continue;
-      const double r = std::hypot(x - i * Lx_, y - j * Ly_);
-      const double gauss = std::exp(-a * a * r * r);
-      const double e = std::erfc(a * r), e1 = -2.0 * a / root_pi * gauss, e2 = 4.0 * a * a * a * r / root_pi * gauss;
-      sum += (e2 / r - e1 / (r * r) + e / (r * r * r)) / kPi;
-    }
-  }
+  add_images(sum, x, y, regular, [&](double r) {
+    const double gauss = std::exp(-a * a * r * r);
+    const double e = std::erfc(a * r), e1 = -2.0 * a / root_pi * gauss, e2 = 4.0 * a * a * a * r / root_pi * gauss;
+    return (e2 / r - e1 / (r * r) + e / (r * r * r)) / kPi;
+  });
   // At a node, the limit of the screened part's Laplacian less 1/(pi r^3): 8 alpha^3 / (3 pi^1.5).
   if (regular) sum += 8.0 * a * a * a / (3.0 * kPi * root_pi);
-  for (int i = -waves_x_; i <= waves_x_; ++i) {
-    for (int j = -waves_y_; j <= waves_y_; ++j) {
-      if (i == 0 && j == 0) continue;
-      const double kx = 2.0 * kPi * i / Lx_, ky = 2.0 * kPi * j / Ly_;
-      const double k = std::hypot(kx, ky);
-      sum -= 2.0 * k / area_ * std::erfc(k / (2.0 * a)) * std::cos(kx * x + ky * y);
-    }
-  }
+  add_waves(sum, x, y, [&](double k) { return -(2.0 * k / area_ * std::erfc(k / (2.0 * a))); });
   return sum;
 }
 
@@ -193,6 +184,18 @@ class SmallSpotCell {
     }
     P0 *= total / P0.sum();
     Eigen::VectorXd eps = 0.25 * (L * P0), moment = 0.25 * (L * M0);
+    // Sneddon's relations for site i's profile C r^s + eps r^2 at radius a: its load P and
+    // sinking F, and their slopes in a.
+    struct Cap {
+      double P, dP, F, dF;
+    };
+    const auto cap = [&](Eigen::Index i, double a, double curvature) {
+      const std::size_t k = site(loaded, i);
+      const double s = shape(loaded, i).s;
+      return Cap{K_P_[k] * std::pow(a, s + 1.0) + 8.0 / 3.0 * curvature * std::pow(a, 3),
+                 (s + 1.0) * K_P_[k] * std::pow(a, s) + 8.0 * curvature * a * a,
+                 K_d_[k] * std::pow(a, s) + 2.0 * curvature * a * a, s * K_d_[k] * std::pow(a, s - 1.0) + 4.0 * curvature * a};
+    };
     for (int outer = 0; outer < 40; ++outer) {
       // Newton on the radii and delta, the curvatures and far-field moments held:
       // drop_i + moment_i + F_i(a_i) + sum_j G_ij P_j(a_j) = delta, sum_j P_j(a_j) = total.
@@ -202,12 +205,11 @@ class SmallSpotCell {
       for (int it = 0; it < 100 && !newton; ++it) {
         Eigen::VectorXd P(N), dP(N), F(N), dF(N);
         for (Eigen::Index i = 0; i < N; ++i) {
-          const std::size_t k = site(loaded, i);
-          const double s = shape(loaded, i).s;
-          P(i) = K_P_[k] * std::pow(a(i), s + 1.0) + 8.0 / 3.0 * eps(i) * std::pow(a(i), 3);
-          dP(i) = (s + 1.0) * K_P_[k] * std::pow(a(i), s) + 8.0 * eps(i) * a(i) * a(i);
-          F(i) = K_d_[k] * std::pow(a(i), s) + 2.0 * eps(i) * a(i) * a(i);
-          dF(i) = s * K_d_[k] * std::pow(a(i), s - 1.0) + 4.0 * eps(i) * a(i);
+          const Cap c = cap(i, a(i), eps(i));
+          P(i) = c.P;
+          dP(i) = c.dP;
+          F(i) = c.F;
+          dF(i) = c.dF;
         }
         Eigen::MatrixXd J = Eigen::MatrixXd::Zero(N + 1, N + 1);
         Eigen::VectorXd r(N + 1);
@@ -237,9 +239,8 @@ class SmallSpotCell {
       }
       Eigen::VectorXd P(N), M2(N);
       for (Eigen::Index i = 0; i < N; ++i) {
-        const double s = shape(loaded, i).s;
-        P(i) = K_P_[site(loaded, i)] * std::pow(a(i), s + 1.0) + 8.0 / 3.0 * eps(i) * std::pow(a(i), 3);
-        M2(i) = m2_[site(loaded, i)] * std::pow(a(i), s + 3.0);
+        P(i) = cap(i, a(i), eps(i)).P;
+        M2(i) = m2_[site(loaded, i)] * std::pow(a(i), shape(loaded, i).s + 3.0);
       }
       const double moved = (a - st.a).cwiseAbs().maxCoeff();
       st.a = a;
@@ -318,8 +319,12 @@ struct SmallSpotLimit::Cell : SmallSpotCell {
   using SmallSpotCell::SmallSpotCell;
 };
 
-SmallSpotLimit::SmallSpotLimit(const CellGeometry& geometry) : geometry_(geometry), tallest_(tallest_sites(geometry)) {
-  if (!tallest_.empty()) cell_ = std::make_shared<const Cell>(geometry_);
+SmallSpotLimit::SmallSpotLimit(const CellGeometry& geometry, int closing_level)
+    : geometry_(geometry), tallest_(tallest_sites(geometry)), closing_level_(closing_level) {
+  if (tallest_.empty()) return;
+  cell_ = std::make_shared<const Cell>(geometry_);
+  // The other levels touch as they do whatever the closing level's drop: found once.
+  if (closing_level_ >= 1) others_ = touchdowns(closing_level_);
 }
 
 std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) const {
@@ -327,6 +332,9 @@ std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) co
   if (!cell_) return out;
   std::vector<std::size_t> loaded = tallest_;
   for (const std::size_t k : loaded) out[k] = {0.0, 0.0};
+  // (The reach's first guess: the tallest caps' isolated spots, the cell shared among them.)
+  const double share = geometry_.Lx * geometry_.Ly / static_cast<double>(tallest_.size());
+  const Shape& tall = geometry_.sites[tallest_[0]].shape;
   // The sites touch in turn: each round finds every untouched site's touchdown with the
   // sites in contact so far, and the first (with those within 1e-9 of it) join them, where
   // the limit still holds for every other site there.
@@ -340,26 +348,30 @@ std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) co
         continue;
       }
       const double reach = cell_->nearest(loaded, k);
-      const auto state_at = [&](double log_X) { return cell_->at(loaded, std::exp(log_X)); };
-      const auto excess = [&](double log_X) {
-        const auto st = state_at(log_X);
-        const double c = cell_->closure(loaded, st, k);
-        return std::isnan(c) || !st.converged ? std::numeric_limits<double>::infinity() : c - geometry_.sites[k].drop;
+      const Site& site = geometry_.sites[k];
+      // One state at load X: its largest spot, and how far site k's gap is past closing
+      // (+infinity where the state is not found or a cone's tip is tilted off).
+      struct Probe {
+        double spot, excess;
       };
+      const auto probe_at = [&](double X) {
+        const SmallSpotCell::State st = cell_->at(loaded, X);
+        const double c = cell_->closure(loaded, st, k);
+        return Probe{st.a.maxCoeff(), std::isnan(c) || !st.converged ? std::numeric_limits<double>::infinity() : c - site.drop};
+      };
+      const auto probe = [&](double log_X) { return probe_at(std::exp(log_X)); };
       // A site like one found this round (a supercell's copies, a lattice's images) closes at
       // its load: one state there says so (its gap closed to rounding, its spots within reach).
-      const Site& site = geometry_.sites[k];
       const auto alike = std::find_if(found.begin(), found.end(), [&](const auto& f) {
         const Site& other = geometry_.sites[f.second];
         return other.level == site.level && other.drop == site.drop && other.shape.s == site.shape.s && other.shape.C == site.shape.C;
       });
       if (alike != found.end()) {
         const double X = alike->first;  // (a copy: found grows below)
-        const SmallSpotCell::State st = cell_->at(loaded, X);
-        const double c = cell_->closure(loaded, st, k);
-        if (st.converged && std::abs(c - site.drop) <= 1e-12 * site.drop && st.a.maxCoeff() <= kSmallSpotMaxRatio * reach) {
+        const Probe there = probe_at(X);
+        if (std::abs(there.excess) <= 1e-12 * site.drop && there.spot <= kSmallSpotMaxRatio * reach) {
           found.emplace_back(X, k);
-          out[k] = {X, st.a.maxCoeff() / reach};
+          out[k] = {X, there.spot / reach};
           continue;
         }
       }
@@ -367,28 +379,31 @@ std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) co
       // the nearest distance (bisection in log X), from just above the last touchdown (1e-6
       // of the load past it: the sites that joined there have spots, not points, which the
       // state's solve, holding curvatures and moments while it moves the radii, finds).
-      const double share = geometry_.Lx * geometry_.Ly / static_cast<double>(tallest_.size());
-      const Shape& tall = geometry_.sites[tallest_[0]].shape;
       double hi = std::log(load_coefficient(tall) * std::pow(2.0 * kSmallSpotMaxRatio * reach, tall.s + 1) / share);
       const double floor = X_from > 0.0 ? std::log(X_from) + 1e-6 : hi - 80.0;
-      const auto within = [&](double log_X) { return state_at(log_X).a.maxCoeff() <= kSmallSpotMaxRatio * reach; };
-      if (!(hi > floor) || !within(floor)) {
+      const auto within = [&](const Probe& p) { return p.spot <= kSmallSpotMaxRatio * reach; };
+      const Probe at_floor = hi > floor ? probe(floor) : Probe{};
+      if (!(hi > floor) || !within(at_floor)) {
         held_to = std::min(held_to, X_from);
         continue;
       }
-      if (!within(hi)) hi = bisect_boundary(within, floor, hi, 0.0, 24).first;  // (to 5e-6 of the range in log X)
-      const double f_hi = excess(hi), f_lo = excess(floor);
+      Probe at_hi = probe(hi);
+      if (!within(at_hi)) {
+        hi = bisect_boundary([&](double log_X) { return within(probe(log_X)); }, floor, hi, 0.0, 24).first;  // (to 5e-6 of the range in log X)
+        at_hi = probe(hi);
+      }
+      const double f_hi = at_hi.excess, f_lo = at_floor.excess;
       if (!(f_hi >= 0.0) || !(f_lo < 0.0)) {  // not closed within the reach (or closed before)
         held_to = std::min(held_to, std::exp(hi));
         continue;
       }
-      const RootResult root = brent(excess, floor, hi, f_lo, f_hi, 1e-13);
+      const RootResult root = brent([&](double log_X) { return probe(log_X).excess; }, floor, hi, f_lo, f_hi, 1e-13);
       if (!root.converged) {
         held_to = std::min(held_to, std::exp(floor));
         continue;
       }
       found.emplace_back(std::exp(root.x), k);
-      out[k] = {std::exp(root.x), state_at(root.x).a.maxCoeff() / reach};
+      out[k] = {std::exp(root.x), probe(root.x).spot / reach};
     }
     std::sort(found.begin(), found.end());
     // The first to touch keep their answers where no site left unanswered might have
@@ -407,11 +422,12 @@ std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) co
   return out;
 }
 
-std::optional<double> SmallSpotLimit::level_closure(int level, double X) const {
+std::optional<double> SmallSpotLimit::level_closure(double X) const {
+  const int level = closing_level_;
   if (!cell_ || level < 1) return std::nullopt;
   if (!(X > 0.0)) return 0.0;
   // The other levels' sites in contact by X, in the limit (each must be answered there).
-  const std::vector<SmallSpotTouchdown> others = touchdowns(level);
+  const std::vector<SmallSpotTouchdown>& others = others_;
   std::vector<std::size_t> loaded, mine;
   double least_drop = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {

@@ -52,6 +52,12 @@ class PeriodicPointLoads {
   double regular_laplacian() const { return regular_laplacian_; }
 
  private:
+  /// Adds term(r) over the nodes' distances r from (x, y) (the node at 0 left out where
+  /// `regular`), and term(k) cos(k . x) over the nonzero waves k: Ewald's two sums.
+  template <class Term>
+  void add_images(double& sum, double x, double y, bool regular, const Term& term) const;
+  template <class Term>
+  void add_waves(double& sum, double x, double y, const Term& term) const;
   double sum_real(double x, double y, bool regular) const;
   double sum_laplacian(double x, double y, bool regular) const;
 
@@ -82,25 +88,30 @@ constexpr std::size_t kSmallSpotMaxSites = 64;
 /// tens of sites), read at any load. Copies share them; the geometry must outlive it.
 class SmallSpotLimit {
  public:
-  explicit SmallSpotLimit(const CellGeometry& geometry);
+  /// `closing_level` >= 1: the level level_closure closes (a design's), whose sites the other
+  /// levels' touchdowns are then found without, once.
+  explicit SmallSpotLimit(const CellGeometry& geometry, int closing_level = 0);
 
   /// Whether the limit takes the cell (small_spot_touchdowns' conditions).
   bool answers() const { return cell_ != nullptr; }
   /// small_spot_touchdowns, the sites of `skipped_level` left out (they neither touch nor
   /// carry load: the level a design moves).
   std::vector<SmallSpotTouchdown> touchdowns(int skipped_level = -1) const;
-  /// The drop of level `level`'s tallest cap (each other cap keeping its offset below it)
-  /// at which its first cap closes at load X (E0*): reference::LevelClosure's answer, in the
-  /// limit, the other levels at their drops. Empty where the limit does not hold there (a
+  /// The drop of the closing level's tallest cap (each other cap keeping its offset below
+  /// it) at which its first cap closes at load X (E0*): reference::LevelClosure's answer, in
+  /// the limit, the other levels at their drops. Empty where the limit does not hold there (a
   /// spot beyond kSmallSpotMaxRatio, a site of another level unanswered by X, a cone tilted
-  /// off its tip, a drop past where a taller cap's surface covers the level's tip).
-  std::optional<double> level_closure(int level, double X) const;
+  /// off its tip, a drop past where a taller cap's surface covers the level's tip) or no
+  /// closing level was given.
+  std::optional<double> level_closure(double X) const;
 
  private:
   struct Cell;
   const CellGeometry& geometry_;
   std::vector<std::size_t> tallest_;
   std::shared_ptr<const Cell> cell_;
+  int closing_level_ = 0;
+  std::vector<SmallSpotTouchdown> others_;  ///< touchdowns(closing_level_), where it is >= 1
 };
 
 /// Each site's touchdown in the limit: the sites touch in turn, each later one in the field
