@@ -2,6 +2,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <cmath>
 #include <ostream>
 #include <sstream>
 
@@ -75,6 +76,10 @@ void write_curve_cost(std::ostream& out, const engine::CurveCost& cost) {
   if (cost.auto_grid) {
     out << "  --grid auto: the curves above at least; where t* still moves by more than " << engine::kAutoTStarAccuracy
         << " of itself between them the nodes double (to " << engine::kAutoMaxNodes << " a pitch)\n";
+  }
+  if (std::isfinite(cost.X_reach)) {
+    out << "  each curve stops at its first sample past X = " << cost.X_reach
+        << " E0*, X(inf) of the load (--full-curve: to full contact); the seconds are a whole curve's, at most\n";
   }
   out << "  estimated time: about " << seconds << " s (each estimate within a factor of " << engine::kCurveSecondsSpread
       << " of this machine's measured curves)\n";

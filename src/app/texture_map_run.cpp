@@ -87,7 +87,7 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
   std::size_t cached = 0, tables = 0, built = 0;
   std::map<std::string, std::size_t> groups;  // grids -> geometries
   for (std::size_t g = 0; g < G; ++g) {
-    const engine::CurveCost cost = engine::curve_cost(plan.keywords_of(g));
+    const engine::CurveCost cost = engine::curve_cost(plan.keywords_of(g), plan.load_points());
     std::ostringstream what;
     double mine = 0.0;
     if (cost.source != "cell") {

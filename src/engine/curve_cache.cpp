@@ -1,6 +1,7 @@
 #include "engine/curve_cache.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -49,7 +50,8 @@ const std::string& cell_maker_fingerprint() {
   return fingerprint;
 }
 
-/// Everything the curve depends on, as text: the geometry, the grid, the options, and the
+/// Everything the curve depends on, as text: the geometry, the grid, the options (but the
+/// reach: saved_curve cuts a longer curve to it), and the
 /// cell: a measured map's own fields (its heights are no sites' punches), hashed; else how
 /// cells are made from a geometry and a grid (cell_maker_fingerprint). A change of any
 /// gives another file.
@@ -102,14 +104,20 @@ CacheEntry cache_entry(const std::filesystem::path& folder, const std::string& k
   return entry;
 }
 
-/// The curve saved in `entry`'s file, where one of the same key is there: the file's first
-/// numbers are the key's digest (a file of another key under this name is not believed).
-std::optional<model::LoadCurve> saved_curve(const CacheEntry& entry) {
+/// The curve saved in `entry`'s file, where one of the same key is there (the file's first
+/// numbers are the key's digest: a file of another key under this name is not believed) and
+/// it reaches `X_reach`'s march end (reference::march_end), cut there.
+std::optional<model::LoadCurve> saved_curve(const CacheEntry& entry, const reference::LoadCurveOptions& options) {
   const std::vector<double> numbers = read_tables(entry.file);
-  if (numbers.size() > entry.digest.size() && std::equal(entry.digest.begin(), entry.digest.end(), numbers.begin())) {
-    return model::LoadCurve::from_tables(std::vector<double>(numbers.begin() + static_cast<std::ptrdiff_t>(entry.digest.size()), numbers.end()));
+  if (numbers.size() <= entry.digest.size() || !std::equal(entry.digest.begin(), entry.digest.end(), numbers.begin())) {
+    return std::nullopt;
   }
-  return std::nullopt;
+  std::optional<model::LoadCurve> curve =
+      model::LoadCurve::from_tables(std::vector<double>(numbers.begin() + static_cast<std::ptrdiff_t>(entry.digest.size()), numbers.end()));
+  if (!curve) return std::nullopt;
+  const double end = std::min(options.X_top, reference::march_end(curve->X_first(), options.samples_per_decade, options.X_reach));
+  if (std::isfinite(curve->X_full) || curve->X_last() >= end) return curve->up_to(end);
+  return std::nullopt;  // it stops short of this question's reach
 }
 
 /// The cache's folder where it may be used, else none.
@@ -134,7 +142,7 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
   const CacheEntry entry = cache_entry(*folder, curve_key(geometry, grid, options, measured));
   const FileLock lock(*folder / (entry.name + ".lock"));
   // Under the lock a builder before us has saved its curve by now.
-  if (std::optional<model::LoadCurve> curve = saved_curve(entry)) {
+  if (std::optional<model::LoadCurve> curve = saved_curve(entry, options)) {
     *origin = CurveOrigin::cache;
     return std::move(*curve);
   }
@@ -149,7 +157,7 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
 bool curve_is_cached(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
                      const reference::LoadCurveOptions& options, const reference::Cell* measured) {
   const std::optional<std::filesystem::path> folder = usable_cache();
-  return folder && saved_curve(cache_entry(*folder, curve_key(geometry, grid, options, measured))).has_value();
+  return folder && saved_curve(cache_entry(*folder, curve_key(geometry, grid, options, measured)), options).has_value();
 }
 
 }  // namespace punchsweep::engine

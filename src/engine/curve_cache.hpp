@@ -24,6 +24,12 @@ enum class CurveOrigin { cache, built };
 /// to build: a cached curve is read in milliseconds, without its cell. `measured`: a
 /// measured map's cell (its heights are data), else null. Without a usable cache it is
 /// built.
+///
+/// The key leaves out options.X_reach: a saved curve that reaches as far (to full contact,
+/// or a march that stopped at or past this one's end) is read and cut where the march for
+/// this reach stops (model::LoadCurve::up_to at reference::march_end), which gives the curve
+/// built for it, bit for bit; one that stops short is built again for this reach (from the
+/// start: a curve's march is not resumed) and saved in its place.
 model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
                                 const reference::LoadCurveOptions& options, const reference::Cell* measured,
                                 const std::function<const reference::Cell&()>& cell, CurveOrigin* origin = nullptr);

@@ -788,7 +788,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     double least = kInf;
     for (const Requirement& r : requirements) least = std::min(least, r.time);
     k = with(k, "times", input::json_number(std::isfinite(least) ? least : 0.0));
-    off_curve = engine::evaluate_surface(k);
+    off_curve = engine::evaluate_surface(k, engine::MoreLoadPoints::any_load());  // read across the window
     DesignTexture& t = *out.texture;
     t.supercell = off_curve->supercell;
     t.scatter = a.scatter.value_or("");

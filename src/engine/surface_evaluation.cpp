@@ -217,6 +217,11 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "needs --supercell")
       ("seed", po::value<std::string>()->value_name("N")->default_value("1"),
        "the seed of --scatter's draws, an integer in [0, 2^64-1] (std::mt19937_64, fully specified: the same seed gives the same caps)")
+      ("full-curve", po::bool_switch(),
+       "build the load curve to full contact; by default it stops at its first sample past the largest "
+       "creep-weighted load the question reaches (X(inf) of the pressure, over the tolerances' corners), "
+       "which answers the same (a level untouched by then never touches) and a cached curve that reaches "
+       "further serves")
       ("check", po::bool_switch(),
        "also step the same cell in time (the time-stepping boundary elements, which assume nothing of the "
        "contact's history) and print its touch times, areas and loads beside the curve's")
@@ -374,6 +379,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   }
   run.grid_nodes = read_grid(vm["grid"].as<std::string>());
   run.check = vm.count("check") && vm["check"].as<bool>();
+  run.full_curve = vm.count("full-curve") && vm["full-curve"].as<bool>();
   // The periodic model's tables are the two-level square lattice's, on their own grid.
   const std::string curve = input::read_choice(vm, "curve", {"auto", "tables", "cell"});
   const bool paper_lattice = !cell && run.lattice == model::LatticeKind::square && drops.size() == 1 &&
@@ -473,8 +479,8 @@ model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad
   // Each level's touch at the run's load and at every other load point asked.
   const auto touches = [&](const model::LoadCurve& curve) {
     std::vector<std::vector<model::LevelTouch>> rows{model::level_touches(curve, load)};
-    if (also_held) {
-      std::vector<std::vector<model::LevelTouch>> more = also_held(run, curve);
+    if (also_held.touches) {
+      std::vector<std::vector<model::LevelTouch>> more = also_held.touches(run, curve);
       rows.insert(rows.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
     }
     return rows;
@@ -741,11 +747,28 @@ bool tables_answer(const SurfaceRun& run) {
   return run.curve_source != CurveSource::cell &&
          model::periodic_curve_reaches(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem);
 }
+/// How far `run`'s curve is read (SurfaceRun::X_reach): the largest X(inf) of its load,
+/// its tolerances' corners and `also_held`'s points (t* asks whether X(t) ever reaches X*;
+/// every snapshot lies at or below X(inf)); +infinity under --full-curve.
+double curve_reach(const SurfaceRun& run, const MoreLoadPoints& also_held) {
+  if (run.full_curve) return std::numeric_limits<double>::infinity();
+  const model::SurfaceLoad load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values, run.inputs.problem.loading};
+  double X = 0.0;
+  try {
+    X = model::largest_final_load(load, run.tolerances);
+  } catch (const std::invalid_argument& e) {
+    throw input::UsageError(std::string("--tolerance: ") + e.what());
+  }
+  return also_held.X_reach ? std::max(X, also_held.X_reach(run)) : X;
+}
 }  // namespace
 
 /// The curve as far as the times reach, and the history on it.
 void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
+  const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
+                                        run.inputs.problem.loading};
+  run.X_reach = curve_reach(run, also_held);
   const auto start = std::chrono::steady_clock::now();
   std::optional<model::LoadCurve> tabulated;
   if (tables_answer(run)) {
@@ -768,13 +791,16 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
   if (tabulated) {
     run.curve_source = CurveSource::tables;
     run.curve = std::move(*tabulated);
+    run.X_reach = std::numeric_limits<double>::infinity();  // the tables' curve is whole
   } else {
     run.curve_source = CurveSource::cell;
     reference::LoadCurveOptions options;
-    // To full contact, where every level that can touch has: the curve is then the
-    // geometry's alone, whatever the material, temperature, pressure and times, and one
-    // cached curve serves them all. FFTW's plans are its estimate's, so that a curve and
-    // every answer read off it have the same bits in every process.
+    // As far as the loads asked reach (its first sample past X_reach): below it the curve is
+    // the full curve's, bit for bit, so a cached curve that reaches further serves (cut
+    // there), and a level untouched by then never touches under these loads. FFTW's plans
+    // are its estimate's, so that a curve and every answer read off it have the same bits
+    // in every process.
+    options.X_reach = run.X_reach;
     sweep::use_reproducible_fft_plans();
     std::optional<CurveProgressLine> line;  // the curve being built's, where progress is shown
     if (progress) {
@@ -854,8 +880,6 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     run.inputs.notes.push_back(note.str());
   }
   // Each level's sensitivity of t* to the load's inputs, and its range over the tolerances.
-  const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
-                                        run.inputs.problem.loading};
   run.derivatives.resize(static_cast<std::size_t>(run.curve.levels()));
   run.ranges.resize(static_cast<std::size_t>(run.curve.levels()));
   std::vector<model::TStarRange> ranges;
@@ -916,7 +940,7 @@ std::vector<int> cell_grids(const SurfaceRun& run) {
 
 }  // namespace
 
-CurveCost curve_cost(SurfaceRun& run) {
+CurveCost curve_cost(SurfaceRun& run, const MoreLoadPoints& also_held) {
   CurveCost cost;
   cost.caps = run.geometry.sites.size();
   cost.levels = run.geometry.levels();
@@ -929,6 +953,8 @@ CurveCost curve_cost(SurfaceRun& run) {
   cost.auto_grid = run.grid_nodes == 0 && !run.measured;
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
   const model::CellGeometry given = run.geometry;
+  reference::LoadCurveOptions options;
+  options.X_reach = cost.X_reach = curve_reach(run, also_held);
   for (const int nodes : grids) {
     run.geometry = given;
     run.grid_nodes = nodes;
@@ -938,7 +964,7 @@ CurveCost curve_cost(SurfaceRun& run) {
     g.nx = grid.nx;
     g.ny = grid.ny;
     g.bytes = curve_bytes(run, grid);
-    g.cached = curve_is_cached(run.geometry, grid, reference::LoadCurveOptions{}, run.measured ? &run.measured->cell : nullptr);
+    g.cached = curve_is_cached(run.geometry, grid, options, run.measured ? &run.measured->cell : nullptr);
     g.seconds = g.cached ? 0.0 : estimated_curve_seconds(grid, static_cast<double>(cost.caps));
     cost.grids.push_back(g);
   }
@@ -1019,8 +1045,8 @@ double check_surface(const input::Keywords& keywords) {
   });
 }
 
-CurveCost curve_cost(const input::Keywords& keywords) {
-  return with_keywords(keywords, [](SurfaceRun& run) { return curve_cost(run); });
+CurveCost curve_cost(const input::Keywords& keywords, const MoreLoadPoints& also_held) {
+  return with_keywords(keywords, [&](SurfaceRun& run) { return curve_cost(run, also_held); });
 }
 
 }  // namespace punchsweep::engine

@@ -11,6 +11,7 @@
 #include <boost/program_options/variables_map.hpp>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,10 +41,26 @@ double machine_bytes();
 /// `surface`, `design`, a texture's sweep and Python's surface() take the same.
 boost::program_options::options_description surface_options(const input::PointMaterial& material);
 
-/// Each level's touch at more load points than the run's own, read off a curve of the run's
-/// texture (surface-map's pressures and law values, one row a point): `--grid auto` holds
-/// every one of them to its accuracy, as it holds the run's own.
-using MoreLoadPoints = std::function<std::vector<std::vector<model::LevelTouch>>(const SurfaceRun&, const model::LoadCurve&)>;
+/// More load points than the run's own that read the run's curve (a texture map's pressures
+/// and law values, Python's arrays, a design's window): how far they reach, and each
+/// level's touch at each of them.
+struct MoreLoadPoints {
+  /// The largest creep-weighted load they read, X(inf) at the most (E0*), given the run as
+  /// read (its point fills what the points do not set): the curve reaches it as well as the
+  /// run's own (SurfaceRun::X_reach); +infinity for the whole curve. Empty: none beyond the
+  /// run's own.
+  std::function<double(const SurfaceRun&)> X_reach;
+  /// Each level's touch at each point off a curve of the run's texture (one row a point):
+  /// `--grid auto` holds every one of them to its accuracy, as it holds the run's own.
+  /// Empty: none held.
+  std::function<std::vector<std::vector<model::LevelTouch>>(const SurfaceRun&, const model::LoadCurve&)> touches;
+
+  /// Points at any load: the whole curve, to full contact (a design's window, a reader that
+  /// does not say how far it reads).
+  static MoreLoadPoints any_load() {
+    return {[](const SurfaceRun&) { return std::numeric_limits<double>::infinity(); }, {}};
+  }
+};
 
 /// --grid auto's top (nodes a pitch), and the accuracy it holds each level's t* to: the
 /// share of itself t* may move from the grid of half the nodes to the one taken.
@@ -137,10 +154,14 @@ struct CurveCost {
   std::vector<Grid> grids;
   std::size_t caps = 0;
   int levels = 0;
+  /// How far the curve is read (SurfaceRun::X_reach, E0*): it stops at its first sample past
+  /// it; the seconds are the whole curve's (the cost model's fit), so an upper bound there.
+  double X_reach = std::numeric_limits<double>::infinity();
 };
-/// What `run`'s curve asks (read_surface's run; its grid is changed and put back).
-CurveCost curve_cost(SurfaceRun& run);
+/// What `run`'s curve asks (read_surface's run; its grid is changed and put back), read at
+/// its own load and `also_held`'s.
+CurveCost curve_cost(SurfaceRun& run, const MoreLoadPoints& also_held = {});
 /// Throws input::UsageError for what evaluate_surface would refuse (check_surface).
-CurveCost curve_cost(const input::Keywords& keywords);
+CurveCost curve_cost(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
 
 }  // namespace punchsweep::engine

@@ -3,6 +3,7 @@
 /// One texture as `punchsweep surface` evaluates it (surface_command.hpp) and prints it
 /// (surface_output.hpp): its inputs, geometry, curve, history and checks.
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +47,12 @@ struct SurfaceRun {
   CurveSource curve_source = CurveSource::cell;  ///< asked; after evaluation tables or cell, what served
   model::LoadCurve curve;
   model::SurfaceHistory history;
+  /// The largest creep-weighted load the curve is read at (E0*): the run's own X(inf), over
+  /// the tolerances' corners and any more load points held (MoreLoadPoints::X_reach); the
+  /// curve's march stops at its first sample past it (reference::LoadCurveOptions::X_reach).
+  /// +infinity: to full contact (unlimited creep, --full-curve, or a reader of every load).
+  double X_reach = std::numeric_limits<double>::infinity();
+  bool full_curve = false;  ///< --full-curve: to full contact, whatever the loads reach
   double curve_seconds = 0.0;
   bool curve_cached = false;  ///< read from the table cache (texture/curve_cache.hpp)
   bool check = false;         ///< --check: step the same cell in time too

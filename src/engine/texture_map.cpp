@@ -446,6 +446,51 @@ input::Keywords TextureMapPlan::keywords_of(std::size_t g) const {
   return keywords;
 }
 
+namespace {
+
+/// Load point p of a map of `run`'s texture: its point with the load axes' values put in,
+/// its law and load.
+struct LoadPoint {
+  model::PointValues point;
+  std::unique_ptr<model::CreepLaw> creep;
+  std::optional<model::CreepWeightedLoad> load;
+};
+LoadPoint load_point(const MapInputs& in, const SurfaceMap& map, const SurfaceRun& run, std::size_t p) {
+  LoadPoint out{{run.inputs.problem, run.inputs.law_values}, nullptr, std::nullopt};
+  const std::vector<std::size_t> digits = digits_of(p, sizes_of(map.load));
+  for (std::size_t a = 0; a < map.load.size(); ++a) {
+    model::set_coordinate(in.load_coordinates[a], map.load[a].values[digits[a]], &out.point);
+  }
+  out.creep = model::make_creep_law(*in.spec, out.point.law);
+  out.load.emplace(*out.creep, out.point.problem.pbar0, out.point.problem.loading);
+  return out;
+}
+
+}  // namespace
+
+MoreLoadPoints TextureMapPlan::load_points() const {
+  const MapInputs& in = *in_;
+  const SurfaceMap& map = header_;
+  const std::size_t P = map.load_points();
+  MoreLoadPoints out;
+  // The curve reaches the largest X(inf) of them all.
+  out.X_reach = [&in, &map, P](const SurfaceRun& run) {
+    double X = 0.0;
+    for (std::size_t p = 0; p < P; ++p) X = std::max(X, load_point(in, map, run, p).load->final());
+    return X;
+  };
+  // --grid auto holds every load point's t* (not only the least pressure's, which sizes
+  // the grid): a level whose touch load the grid moves by a little moves t* most where the
+  // creep-weighted load reaches it slowly.
+  out.touches = [&in, &map, P](const SurfaceRun& run, const model::LoadCurve& curve) {
+    std::vector<std::vector<model::LevelTouch>> rows;
+    rows.reserve(P);
+    for (std::size_t p = 0; p < P; ++p) rows.push_back(model::level_touches(curve, *load_point(in, map, run, p).load));
+    return rows;
+  };
+  return out;
+}
+
 std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   const MapInputs& in = *in_;
   const SurfaceMap& map = header_;
@@ -453,34 +498,8 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   const std::size_t P = map.load_points();
   const input::Keywords keywords = keywords_of(g);
 
-  // Load point p of the run: its point with the load axes' values put in, its law and load.
-  struct LoadPoint {
-    model::PointValues point;
-    std::unique_ptr<model::CreepLaw> creep;
-    std::optional<model::CreepWeightedLoad> load;
-  };
-  const auto load_point = [&](const SurfaceRun& run, std::size_t p) {
-    LoadPoint out{{run.inputs.problem, run.inputs.law_values}, nullptr, std::nullopt};
-    const std::vector<std::size_t> digits = digits_of(p, load_sizes);
-    for (std::size_t a = 0; a < map.load.size(); ++a) {
-      model::set_coordinate(in.load_coordinates[a], map.load[a].values[digits[a]], &out.point);
-    }
-    out.creep = model::make_creep_law(*in.spec, out.point.law);
-    out.load.emplace(*out.creep, out.point.problem.pbar0, out.point.problem.loading);
-    return out;
-  };
-  // --grid auto holds every load point's t* (not only the least pressure's, which sizes
-  // the grid): a level whose touch load the grid moves by a little moves t* most where the
-  // creep-weighted load reaches it slowly.
-  const MoreLoadPoints hold_every_load_point = [&](const SurfaceRun& run, const model::LoadCurve& curve) {
-    std::vector<std::vector<model::LevelTouch>> rows;
-    rows.reserve(P);
-    for (std::size_t p = 0; p < P; ++p) rows.push_back(model::level_touches(curve, *load_point(run, p).load));
-    return rows;
-  };
-
   const auto start = std::chrono::steady_clock::now();
-  const SurfaceRun run = evaluate_surface(keywords, hold_every_load_point);
+  const SurfaceRun run = evaluate_surface(keywords, load_points());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::size_t L = static_cast<std::size_t>(run.curve.levels());
   // The geometry's block: a map of this one geometry.
@@ -501,7 +520,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   // Each load point off the curve.
   const std::size_t T = block.times.size();
   for (std::size_t p = 0; p < P; ++p) {
-    const LoadPoint at_p = load_point(run, p);
+    const LoadPoint at_p = load_point(in, map, run, p);
     const model::PointValues& point = at_p.point;
     const model::CreepWeightedLoad& load = *at_p.load;
     const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/surface_evaluation.hpp"
 #include "input/command_options.hpp"
 #include "map/layout_version.hpp"
 #include "map/texture_quantities.hpp"
@@ -116,6 +117,10 @@ class TextureMapPlan {
   /// Geometry g's texture as `surface`'s keywords (at the least pressure, the law's first
   /// values).
   input::Keywords keywords_of(std::size_t g) const;
+  /// The map's load points, as more than the run of keywords_of(g) holds (its least
+  /// pressure): how far any of them reads a geometry's curve (X(inf) at the most) and each
+  /// level's touch at each. The plan must outlive it.
+  MoreLoadPoints load_points() const;
   /// Geometry g's estimated seconds on one core (check_surface's; a cached curve not known).
   double estimated_seconds(std::size_t g) const { return seconds_[g]; }
   /// The order the geometries are dealt in: the costliest first (by estimated_seconds, ties

@@ -58,7 +58,7 @@ inline constexpr std::array<TextureQuantitySpec, 22> kTextureQuantities{{
     {"regime_high", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
      "each level's regime at the corner of greatest t*", TextureStored::tolerance},
     {"X_star", TextureExtent::geometry_level, TextureFlags::none, "E0/(1-nu^2)",
-     "each level's touchdown load (creep-weighted)"},
+     "each level's touchdown load (creep-weighted; +inf past the curve's end, which no load point reaches)"},
     {"resolved", TextureExtent::geometry_level, TextureFlags::yes_no, "",
      "whether the curve resolves the level's touchdown (1) or it lies below its resolution (0)"},
     {"touched", TextureExtent::load_time, TextureFlags::none, "1", "share of the caps whose tip has touched"},

@@ -617,8 +617,15 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
                           n > 0 ? input::json_number(law_values[j][least]) : nominal_value(spec.parameters[j]));
   }
   keywords.emplace_back("times", "0");
-  // The texture's parts: the paper's lattice by the periodic model, any other by its curve.
-  const engine::TextureParts texture_parts = engine::texture_parts(keywords);
+  // The texture's parts: the paper's lattice by the periodic model, any other by its curve,
+  // as far as the points reach (the whole curve for no points: their X_star are the
+  // texture's, as any call that reaches them gives).
+  engine::MoreLoadPoints points = engine::MoreLoadPoints::any_load();
+  if (n > 0) {
+    const double reach = model::largest_final_load(spec, axes, columns.values, columns.n);
+    points.X_reach = [reach](const engine::SurfaceRun&) { return reach; };
+  }
+  const engine::TextureParts texture_parts = engine::texture_parts(keywords, points);
   const engine::SurfaceRun& run = texture_parts.run;
   const model::GeometryParts& parts = *texture_parts.parts;
   const std::size_t L = static_cast<std::size_t>(parts.levels());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,21 @@ double full_contact_load(const Cell& cell) {
   std::vector<double> stiff(cell.profile.size());
   influence.apply_stiffness(cell.profile, stiff);
   return *std::max_element(stiff.begin(), stiff.end());
+}
+
+namespace {
+
+/// The march's step in load: samples_per_decade a decade.
+double march_step(int samples_per_decade) { return std::pow(10.0, 1.0 / samples_per_decade); }
+
+}  // namespace
+
+double march_end(double X_first, int samples_per_decade, double X_reach) {
+  if (!std::isfinite(X_reach)) return std::numeric_limits<double>::infinity();
+  const double step = march_step(samples_per_decade);
+  double X = X_first * step;
+  while (X < X_reach) X *= step;
+  return X;
 }
 
 namespace {
@@ -61,9 +77,11 @@ class CurveBuilder {
 
   model::LoadCurve build() {
     const double X_start = start_load(options_.min_spot_nodes);
+    // The march's end: the stated top, or its first sample past the question's reach.
+    const double top = std::min(options_.X_top, march_end(X_start, options_.samples_per_decade, options_.X_reach));
     if (options_.progress) {
       report_.X_start = X_start;
-      report_.X_full = std::min(full_contact_load(cell_), options_.X_top);
+      report_.X_full = std::min(full_contact_load(cell_), top);
     }
     curve_.X_resolved = start_load(options_.resolved_spot_nodes);
     // The tallest sites touch at any load; any other that has touched by X_start is found
@@ -79,10 +97,10 @@ class CurveBuilder {
     emit(a);
     // A grid so coarse that the first resolved spot already fills the cell: full there.
     if (a.full) curve_.X_full = a.sample.X;
-    const double step = std::pow(10.0, 1.0 / options_.samples_per_decade);
-    while (!a.full && a.sample.X < options_.X_top) {
+    const double step = march_step(options_.samples_per_decade);
+    while (!a.full && a.sample.X < top) {
       options_.stop.throw_if_requested();
-      Solved b = solve(std::min(a.sample.X * step, options_.X_top), a.p);
+      Solved b = solve(std::min(a.sample.X * step, top), a.p);
       if (b.full) {
         b = first_full(a, b);
         curve_.X_full = b.sample.X;
@@ -326,10 +344,10 @@ class CurveBuilder {
 }  // namespace
 
 model::LoadCurve build_load_curve(const model::CellGeometry& geometry, const Cell& cell, const LoadCurveOptions& options) {
-  if (!(options.X_top > 0.0) || options.min_spot_nodes < 1 || options.resolved_spot_nodes < options.min_spot_nodes || options.samples_per_decade < 1 ||
+  if (!(options.X_top > 0.0) || !(options.X_reach > 0.0) || options.min_spot_nodes < 1 || options.resolved_spot_nodes < options.min_spot_nodes || options.samples_per_decade < 1 ||
       !(options.area_tolerance > 0.0) || !(options.load_tolerance > 0.0) || options.max_refinements < 0 ||
       !(options.touchdown_tolerance > 0.0)) {
-    throw std::invalid_argument("build_load_curve: X_top > 0, min_spot_nodes, samples_per_decade >= 1, tolerances > 0");
+    throw std::invalid_argument("build_load_curve: X_top, X_reach > 0, min_spot_nodes, samples_per_decade >= 1, tolerances > 0");
   }
   if (cell.tips.size() != geometry.sites.size()) throw std::invalid_argument("build_load_curve: the cell is not the geometry's");
   return CurveBuilder(geometry, cell, options).build();

@@ -34,6 +34,12 @@ struct LoadCurveProgress {
 struct LoadCurveOptions {
   /// Stop here if full contact has not come before (E0*); the curve then ends at X_top.
   double X_top = std::numeric_limits<double>::infinity();
+  /// The largest load the question reads (E0*): the march stops at its first sample at or
+  /// past it (march_end), so the curve is the full curve's first samples, bit for bit, and
+  /// every reading at or below X_reach is the full curve's (docs/model.md 17.3). A site not
+  /// touched by then has site_touchdown +infinity: it never touches under a load that stays
+  /// at or below X_reach. +infinity: to full contact.
+  double X_reach = std::numeric_limits<double>::infinity();
   /// The first sample: where each of the tallest sites' spots, as an isolated punch's,
   /// covers this many nodes (a radius of 5.6 node spacings).
   int min_spot_nodes = 100;
@@ -67,6 +73,14 @@ struct LoadCurveOptions {
 /// node once X >= max S profile. The discrete problem's own full-contact load (the curve's
 /// X_full, found by bisection to its touchdown_tolerance), from one transform pair.
 double full_contact_load(const Cell& cell);
+
+/// Where a curve whose march starts at X_first (its first sample) stops for a question
+/// that reads loads up to X_reach: its first march sample at or past X_reach, and at least
+/// the one after X_first (the march's samples are X_first times step^k, step = 10^(1 /
+/// samples_per_decade), each the last times step as the march computes it); +infinity for
+/// an infinite X_reach. A cached curve cut here (model::LoadCurve::up_to) is the curve
+/// built with this X_reach.
+double march_end(double X_first, int samples_per_decade, double X_reach);
 
 /// The load curve of `geometry` on the grid of `cell` (make_cell(geometry, grid)). Throws
 /// std::invalid_argument for a bad option, std::runtime_error where a contact solve misses

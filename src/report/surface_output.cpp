@@ -141,6 +141,9 @@ std::string never_reason(const engine::SurfaceRun& run, bool hidden) {
     out << "hidden: its tips lie under the taller caps' surface, so it never touches as a cap of its own";
   } else if (std::isfinite(run.curve.X_full)) {
     out << "untouched up to full contact, X = " << run.curve.X_full << " E0*";
+  } else if (std::isfinite(run.X_reach) && run.curve.X_last() >= run.X_reach) {
+    out << "untouched up to X = " << run.curve.X_last() << " E0*, where the curve stops: past X(inf) = " << run.X_reach
+        << " E0*, the most the load reaches";
   } else {
     out << "untouched up to X = " << run.curve.X_last() << " E0*, where the curve ends";
   }
@@ -183,6 +186,7 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run) {
   out << "  \"curve\": {\"source\": " << input::json_string(curve_source_name(run)) << ", \"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_resolved\": " << num(run.curve.X_resolved)
       << ", \"X_last\": " << num(run.curve.X_last()) << ", \"X_full\": " << num(run.curve.X_full)
+      << ", \"X_reach\": " << num(run.X_reach)
       << ", \"seconds\": " << num(run.curve_seconds) << ", \"cached\": " << (run.curve_cached ? "true" : "false")
       << ", \"held_to_grid\": " << (run.grid_coarser > 0 ? std::to_string(run.grid_coarser) : std::string("null")) << "},\n";
   const model::SurfaceAdvisories advice = model::advise_surface(run.geometry, run.history);
@@ -258,7 +262,13 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
       << (run.curve_source == engine::CurveSource::tables ? "the periodic model's tables (with their small-spot table), " : "")
       << run.curve.nx << " x " << run.curve.ny << " nodes, "
       << run.curve.samples.size() << " samples from X = " << run.curve.X_first() << " to " << run.curve.X_last()
-      << " E0*" << (std::isfinite(run.curve.X_full) ? " (full contact)" : "") << ", " << run.curve_seconds << " s"
+      << " E0*";
+  if (std::isfinite(run.curve.X_full)) {
+    out << " (full contact)";
+  } else if (std::isfinite(run.X_reach) && run.curve.X_last() >= run.X_reach) {
+    out << " (its first sample past X = " << run.X_reach << " E0*, the most the loads reach; --full-curve goes on)";
+  }
+  out << ", " << run.curve_seconds << " s"
       << (run.curve_cached ? " (from the table cache)" : "") << "\n";
   if (run.grid_coarser > 0) {
     double worst = 0.0;

@@ -257,6 +257,55 @@ def test_the_curve_is_kept_in_the_table_cache_and_a_damaged_one_is_built_again(t
     assert rebuilt["levels"] == first["levels"] and rebuilt["series"] == first["series"]
 
 
+def test_the_curve_stops_past_the_most_the_load_reaches(tmp_path):
+    """The curve is read no further than X(inf), the most the load reaches (pbar T for the
+    standard linear solid in E0*, the model's J(inf) = T J(0)): it stops at its first sample
+    past it and answers as the whole curve (--full-curve) does, every t*, regime and
+    snapshot equal to the last bit, level 1's X* equal, while level 2, untouched by then,
+    never touches with X* null (the whole curve's lies past X(inf)). A whole curve in the
+    cache serves the shorter question, cut to it (the same answer as building it), and a
+    question that reaches further than a saved curve builds it again."""
+    env = {**os.environ, "PUNCHSWEEP_CACHE": str(tmp_path / "cache")}
+    geometry = ["--lattice", "hexagonal", "--l", "1.2", "--dh", "0.03", "--dh2", "0.08", "--s", "2", "--grid", "48",
+                "--times", "0,1,5", "--format", "json"]
+
+    def run(*more, cache="off"):
+        done = subprocess.run([BINARY, "surface", *geometry, *map(str, more)], capture_output=True, text=True,
+                              env={**env, "PUNCHSWEEP_CACHE": cache} if cache == "off" else env)
+        assert done.returncode == 0, done.stderr
+        return json.loads(done.stdout)
+
+    pbar, T = 0.005, 2.5
+    short, whole = run("--pbar", pbar, "--T", T), run("--pbar", pbar, "--T", T, "--full-curve")
+    assert short["curve"]["X_reach"] == pytest.approx(pbar * T, rel=1e-12)
+    assert whole["curve"]["X_reach"] is None and whole["curve"]["X_full"] is not None
+    assert short["curve"]["X_full"] is None
+    assert pbar * T <= short["curve"]["X_last"] < pbar * T * 10 ** 0.25
+    assert short["curve"]["samples"] < 0.6 * whole["curve"]["samples"]
+    assert short["series"] == whole["series"]
+    for mine, full in zip(short["levels"], whole["levels"]):
+        assert (mine["regime"], mine["t_star"]) == (full["regime"], full["t_star"])
+    assert short["levels"][1]["regime"] == "delayed" and short["levels"][1]["X_star"] == whole["levels"][1]["X_star"]
+    assert short["levels"][2]["regime"] == "never" and short["levels"][2]["X_star"] is None
+    assert whole["levels"][2]["X_star"] > pbar * T
+    table = subprocess.run([BINARY, "surface", *geometry[:-2], "--pbar", str(pbar), "--T", str(T)], capture_output=True,
+                           text=True, env={**env, "PUNCHSWEEP_CACHE": "off"})
+    assert "level 2: never (untouched up to X = " in table.stdout and "the most the load reaches" in table.stdout
+
+    # The cache: the whole curve saved, then the short question reads it cut.
+    assert run("--pbar", pbar, "--T", T, "--full-curve", cache="mine")["curve"]["cached"] is False
+    cut = run("--pbar", pbar, "--T", T, cache="mine")
+    assert cut["curve"]["cached"] is True
+    assert cut["curve"]["samples"] == short["curve"]["samples"] and cut["curve"]["X_last"] == short["curve"]["X_last"]
+    assert cut["levels"] == short["levels"] and cut["series"] == short["series"]
+    # A fresh cache: the short curve saved, then a question reaching further builds again.
+    env["PUNCHSWEEP_CACHE"] = str(tmp_path / "other")
+    assert run("--pbar", pbar, "--T", T, cache="mine")["curve"]["cached"] is False
+    further = run("--pbar", 4 * pbar, "--T", T, cache="mine")
+    assert further["curve"]["cached"] is False and further["curve"]["X_reach"] == pytest.approx(4 * pbar * T, rel=1e-12)
+    assert run("--pbar", pbar, "--T", T, cache="mine")["curve"]["cached"] is True
+
+
 def test_physical_units_where_R_and_a_material_give_them():
     """--R and a material: the JSON's "physical" gives X in Pa, areas in R's unit squared,
     loads in N and drops in R's unit, each the scaled value times its scale (E0* from the

@@ -4,6 +4,7 @@
 // and the curve's own invariants.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -207,4 +208,51 @@ TEST(LoadCurve, full_contact_from_the_profile_is_the_curves_full_contact) {
   }
   EXPECT_GE(mirrored, 1);  // both transforms held
   EXPECT_GE(full, 1);
+}
+
+// A curve built for a question that reads loads up to X_reach stops at its march's first
+// sample past it (reference::march_end) and is the whole curve's beginning, bit for bit: the
+// whole curve cut there (LoadCurve::up_to) has the same numbers, so every reading at or below
+// X_reach is the whole curve's (the march goes one step at least); a level the cut curve has not reached reads +infinity (it
+// never touches under such a load), one it has keeps the whole curve's X*. A hexagonal
+// three-level cell at reaches below, between and above its levels' touchdowns.
+TEST(LoadCurve, a_curve_to_a_reach_is_the_whole_curves_beginning) {
+  const model::CellGeometry g = model::lattice_cell(LatticeKind::hexagonal, 1.2, model::Shape{2, 0.5}, {0.02, 0.05});
+  const reference::Cell cell = reference::make_cell(g, reference::lattice_grid(g, LatticeKind::hexagonal, 32));
+  const model::LoadCurve whole = reference::build_load_curve(g, cell, {});
+  ASSERT_TRUE(std::isfinite(whole.X_full));
+  const std::vector<double> X_star = whole.level_touchdown;
+  std::printf("whole curve: %zu samples to full contact at X = %.6g; touchdowns %.6g %.6g\n", whole.samples.size(), whole.X_full,
+              X_star[1], X_star[2]);
+  const std::vector<double> reaches{0.5 * X_star[1], 0.5 * (X_star[1] + X_star[2]), 1.5 * X_star[2], 0.5 * whole.X_full};
+  for (const double reach : reaches) {
+    reference::LoadCurveOptions options;
+    options.X_reach = reach;
+    const model::LoadCurve cut = reference::build_load_curve(g, cell, options);
+    const double end = reference::march_end(whole.X_first(), options.samples_per_decade, reach);
+    std::printf("reach %.6g: %zu samples to X = %.6g (march end %.6g)\n", reach, cut.samples.size(), cut.X_last(), end);
+    EXPECT_EQ(cut.X_last(), end);
+    EXPECT_GE(cut.X_last(), reach);
+    EXPECT_LE(cut.X_last(), std::max(reach, whole.X_first()) * std::pow(10.0, 1.0 / options.samples_per_decade));
+    EXPECT_LT(cut.samples.size(), whole.samples.size());
+    EXPECT_EQ(cut.tables(), whole.up_to(end).tables()) << "reach " << reach;
+    for (std::size_t level = 1; level < X_star.size(); ++level) {
+      if (X_star[level] <= cut.X_last()) {
+        EXPECT_EQ(cut.level_touchdown[level], X_star[level]);
+      } else {
+        EXPECT_TRUE(std::isinf(cut.level_touchdown[level]));
+      }
+    }
+    for (const double share : {0.1, 0.5, 0.9, 1.0}) {
+      const model::CurveState a = cut.at(share * reach), b = whole.at(share * reach);
+      EXPECT_EQ(a.level_area, b.level_area);
+      EXPECT_EQ(a.level_load, b.level_load);
+      EXPECT_EQ(a.sites_touched, b.sites_touched);
+    }
+    EXPECT_EQ(cut.at(1.01 * cut.X_last()).range, model::CurveRange::above_top);
+  }
+  // Past full contact the reach changes nothing.
+  reference::LoadCurveOptions beyond;
+  beyond.X_reach = 10.0 * whole.X_full;
+  EXPECT_EQ(reference::build_load_curve(g, cell, beyond).tables(), whole.tables());
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <random>
@@ -101,6 +102,57 @@ TEST(CurveCache, a_measured_cell_keys_its_curve_by_its_heights) {
   EXPECT_FALSE(engine::curve_is_cached(geometry, grid, options, &other));
   // A measured cell's curve is not a made cell's (and the other way round).
   EXPECT_FALSE(engine::curve_is_cached(geometry, grid, options, nullptr));
+}
+
+}  // namespace
+
+namespace {
+
+// The cache keys a curve without its reach: a saved curve that reaches as far serves a
+// question of a smaller reach, cut where that question's march stops (the curve built for
+// it, bit for bit); one that stops short is built again and saved in its place.
+TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
+  const ScratchCache cache;
+  const model::CellGeometry geometry = hexagonal_two_levels();
+  const reference::PeriodicGrid grid = reference::lattice_grid(geometry, model::LatticeKind::hexagonal, 32, 1);
+  int cells_made = 0;
+  std::optional<reference::Cell> cell;
+  const auto made = [&]() -> const reference::Cell& {
+    ++cells_made;
+    cell = reference::make_cell(geometry, grid);
+    return *cell;
+  };
+  const reference::Cell fresh = reference::make_cell(geometry, grid);
+  const model::LoadCurve whole = reference::build_load_curve(geometry, fresh, {});
+  reference::LoadCurveOptions low, high;
+  low.X_reach = 2.0 * whole.X_first();
+  high.X_reach = 0.3 * whole.X_full;
+  const model::LoadCurve built_low = reference::build_load_curve(geometry, fresh, low);
+  const model::LoadCurve built_high = reference::build_load_curve(geometry, fresh, high);
+  ASSERT_LT(built_low.samples.size(), built_high.samples.size());
+  ASSERT_FALSE(std::isfinite(built_high.X_full));
+
+  engine::CurveOrigin origin{};
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, made, &origin).tables(), built_low.tables());
+  EXPECT_EQ(origin, engine::CurveOrigin::built);
+  // Further than the saved one: built again (and saved); nearer: read and cut.
+  EXPECT_FALSE(engine::curve_is_cached(geometry, grid, high, nullptr));
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, made, &origin).tables(), built_high.tables());
+  EXPECT_EQ(origin, engine::CurveOrigin::built);
+  EXPECT_EQ(cells_made, 2);
+  EXPECT_TRUE(engine::curve_is_cached(geometry, grid, low, nullptr));
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, made, &origin).tables(), built_low.tables());
+  EXPECT_EQ(origin, engine::CurveOrigin::cache);
+  EXPECT_EQ(cells_made, 2);
+  // The whole curve saved serves any reach.
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, {}, nullptr, made, &origin).tables(), whole.tables());
+  EXPECT_EQ(origin, engine::CurveOrigin::built);
+  for (const reference::LoadCurveOptions* options : {&low, &high}) {
+    EXPECT_EQ(engine::load_curve_for(geometry, grid, *options, nullptr, made, &origin).tables(),
+              (options == &low ? built_low : built_high).tables());
+    EXPECT_EQ(origin, engine::CurveOrigin::cache);
+  }
+  EXPECT_EQ(cells_made, 3);
 }
 
 }  // namespace

@@ -51,6 +51,11 @@ class GeometryParts {
                   double* t_star, std::int8_t* regime) const;
 };
 
+/// The largest X(inf) (E0*) of `n` points taken as GeometryParts::touches_at takes them (0
+/// for none): how far a curve is read for them.
+double largest_final_load(const CreepLawSpec& spec, const PointAxes& axes, std::span<const double* const> columns,
+                          std::size_t n);
+
 /// The paper's two-level square lattice (the problem's l, dh, shape) by its localization
 /// model: the model's parts of (s, l, dh) (model::dh_parts: the touchdown, and the guide or
 /// branch the point's other quantities read), level 1's touchdown theirs. The problem's

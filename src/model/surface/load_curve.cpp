@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace punchsweep::model {
@@ -95,6 +96,23 @@ bool LoadCurve::monotone_between(double X_a, double X_b) const {
     if (!pressure_monotone[k]) return false;
   }
   return true;
+}
+
+LoadCurve LoadCurve::up_to(double X_end) const {
+  LoadCurve out = *this;
+  const auto past = std::upper_bound(out.samples.begin(), out.samples.end(), X_end,
+                                     [](double x, const LoadCurveSample& s) { return x < s.X; });
+  out.samples.erase(past == out.samples.begin() ? past + 1 : past, out.samples.end());
+  out.pressure_monotone.resize(out.samples.size() - 1);
+  if (X_full > out.X_last()) out.X_full = std::numeric_limits<double>::infinity();
+  for (double& X : out.site_touchdown) X = X > out.X_last() ? std::numeric_limits<double>::infinity() : X;
+  std::fill(out.level_touchdown.begin(), out.level_touchdown.end(), std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < out.sites(); ++k) {
+    double& level = out.level_touchdown[static_cast<std::size_t>(out.site_level[k])];
+    level = std::min(level, out.site_touchdown[k]);
+  }
+  out.level_small_spot.clear();
+  return out;
 }
 
 std::vector<double> LoadCurve::tables() const {

@@ -90,6 +90,13 @@ struct LoadCurve {
   /// true in full contact, where extra load spreads evenly).
   bool monotone_between(double X_a, double X_b) const;
 
+  /// The curve as far as X_end, a sample of it (or past its last): its samples up to X_end,
+  /// the touchdowns past X_end +infinity, full contact only where it comes by X_end. A curve
+  /// built to full contact, cut at the sample where the march of a curve built for a smaller
+  /// reach stops (reference::march_end), is that curve (engine's cache reads a longer curve
+  /// so).
+  LoadCurve up_to(double X_end) const;
+
   /// The curve as numbers (what the table cache keeps): kFormat, then the sizes, the
   /// per-site and per-level fields, the intervals' record and the samples.
   std::vector<double> tables() const;

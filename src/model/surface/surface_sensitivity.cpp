@@ -65,8 +65,12 @@ std::vector<TStarDerivative> level_t_star_derivatives(const LoadCurve& curve, in
   return out;
 }
 
-std::vector<TStarRange> level_t_star_ranges(const LoadCurve& curve, const SurfaceLoad& load,
-                                            std::span<const Tolerance> tolerances) {
+namespace {
+
+/// Calls corner(load) for the load at each corner of `tolerances` (std::invalid_argument
+/// naming a tolerance on another input than the load's, or one a corner takes out of range).
+template <class Corner>
+void for_each_corner(const SurfaceLoad& load, std::span<const Tolerance> tolerances, Corner&& corner) {
   if (tolerances.size() > kMaxTolerances) throw std::invalid_argument("at most 6 tolerances");
   std::vector<int> index;
   for (const Tolerance& t : tolerances) {
@@ -77,25 +81,41 @@ std::vector<TStarRange> level_t_star_ranges(const LoadCurve& curve, const Surfac
                                   "tolerances on the pressure and the creep law's parameters");
     }
   }
-  std::vector<TStarRange> ranges(static_cast<std::size_t>(curve.levels()));
   const std::size_t corners = std::size_t{1} << tolerances.size();
-  for (std::size_t corner = 0; corner < corners; ++corner) {
+  for (std::size_t c = 0; c < corners; ++c) {
     SurfaceLoad moved = load;
     for (std::size_t k = 0; k < tolerances.size(); ++k) {
       const double base = index[k] < 0 ? load.pbar0 : load.law_values[static_cast<std::size_t>(index[k])];
-      const double x = (corner >> k) & 1 ? base + tolerances[k].plus : base - tolerances[k].minus;
+      const double x = (c >> k) & 1 ? base + tolerances[k].plus : base - tolerances[k].minus;
       if (!with_input(moved, index[k], x)) {
         throw std::invalid_argument(std::string(tolerances[k].parameter->name) + " = " + std::to_string(x) +
                                     " at a corner of the tolerances is outside its range: " +
                                     std::string(tolerances[k].parameter->range));
       }
     }
-    // Every level's touch at this corner from one creep law and one reading of the curve.
     const std::unique_ptr<CreepLaw> creep = make_creep_law(*moved.law, moved.law_values);
-    const std::vector<LevelTouch> touches = level_touches(curve, CreepWeightedLoad(*creep, moved.pbar0, moved.shape));
-    for (std::size_t level = 0; level < ranges.size(); ++level) ranges[level].take(touches[level].t_star, touches[level].regime);
+    corner(CreepWeightedLoad(*creep, moved.pbar0, moved.shape));
   }
+}
+
+}  // namespace
+
+std::vector<TStarRange> level_t_star_ranges(const LoadCurve& curve, const SurfaceLoad& load,
+                                            std::span<const Tolerance> tolerances) {
+  std::vector<TStarRange> ranges(static_cast<std::size_t>(curve.levels()));
+  // Every level's touch at each corner from one creep law and one reading of the curve.
+  for_each_corner(load, tolerances, [&](const CreepWeightedLoad& X) {
+    const std::vector<LevelTouch> touches = level_touches(curve, X);
+    for (std::size_t level = 0; level < ranges.size(); ++level) ranges[level].take(touches[level].t_star, touches[level].regime);
+  });
   return ranges;
+}
+
+double largest_final_load(const SurfaceLoad& load, std::span<const Tolerance> tolerances) {
+  const std::unique_ptr<CreepLaw> creep = make_creep_law(*load.law, load.law_values);
+  double X = CreepWeightedLoad(*creep, load.pbar0, load.shape).final();
+  if (!tolerances.empty()) for_each_corner(load, tolerances, [&](const CreepWeightedLoad& corner) { X = std::max(X, corner.final()); });
+  return X;
 }
 
 }  // namespace punchsweep::model

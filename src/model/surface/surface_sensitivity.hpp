@@ -40,4 +40,8 @@ std::vector<TStarDerivative> level_t_star_derivatives(const LoadCurve& curve, in
 std::vector<TStarRange> level_t_star_ranges(const LoadCurve& curve, const SurfaceLoad& load,
                                             std::span<const Tolerance> tolerances);
 
+/// The largest X(inf) (E0*) of `load` and of every corner of `tolerances` (as
+/// level_t_star_ranges takes them, and refuses them): as far as a curve is read for them.
+double largest_final_load(const SurfaceLoad& load, std::span<const Tolerance> tolerances);
+
 }  // namespace punchsweep::model
