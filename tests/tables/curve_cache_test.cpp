@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -53,26 +54,35 @@ model::CellGeometry hexagonal_two_levels() {
   return model::lattice_cell(model::LatticeKind::hexagonal, 1.2, shape, {0.05});
 }
 
+/// The cell of a geometry on a grid, made where a curve is built, counting how often.
+struct CountingCellMaker {
+  const model::CellGeometry& geometry;
+  const reference::PeriodicGrid& grid;
+  int made = 0;
+  std::optional<reference::Cell> cell;
+  CountingCellMaker(const model::CellGeometry& g, const reference::PeriodicGrid& n) : geometry(g), grid(n) {}
+  const reference::Cell& operator()() {
+    ++made;
+    cell = reference::make_cell(geometry, grid);
+    return *cell;
+  }
+};
+
 TEST(CurveCache, a_cached_curve_is_read_without_its_cell_and_equals_the_built_one) {
   const ScratchCache cache;
   const model::CellGeometry geometry = hexagonal_two_levels();
   const reference::PeriodicGrid grid = reference::lattice_grid(geometry, model::LatticeKind::hexagonal, 16, 1);
   const reference::LoadCurveOptions options;
-  int cells_made = 0;
-  std::optional<reference::Cell> cell;
-  const auto made = [&]() -> const reference::Cell& {
-    ++cells_made;
-    cell = reference::make_cell(geometry, grid);
-    return *cell;
-  };
+  CountingCellMaker made(geometry, grid);
+  const int& cells_made = made.made;
   EXPECT_FALSE(engine::curve_is_cached(geometry, grid, options, nullptr));
   engine::CurveOrigin origin{};
-  const model::LoadCurve built = engine::load_curve_for(geometry, grid, options, nullptr, made, &origin);
+  const model::LoadCurve built = engine::load_curve_for(geometry, grid, options, nullptr, std::ref(made), &origin);
   EXPECT_EQ(origin, engine::CurveOrigin::built);
   EXPECT_EQ(cells_made, 1);
   EXPECT_TRUE(engine::curve_is_cached(geometry, grid, options, nullptr));
 
-  const model::LoadCurve read = engine::load_curve_for(geometry, grid, options, nullptr, made, &origin);
+  const model::LoadCurve read = engine::load_curve_for(geometry, grid, options, nullptr, std::ref(made), &origin);
   EXPECT_EQ(origin, engine::CurveOrigin::cache);
   EXPECT_EQ(cells_made, 1) << "a cached curve was read by making its cell";
   EXPECT_EQ(read.tables(), built.tables());
@@ -115,13 +125,8 @@ TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   const ScratchCache cache;
   const model::CellGeometry geometry = hexagonal_two_levels();
   const reference::PeriodicGrid grid = reference::lattice_grid(geometry, model::LatticeKind::hexagonal, 32, 1);
-  int cells_made = 0;
-  std::optional<reference::Cell> cell;
-  const auto made = [&]() -> const reference::Cell& {
-    ++cells_made;
-    cell = reference::make_cell(geometry, grid);
-    return *cell;
-  };
+  CountingCellMaker made(geometry, grid);
+  const int& cells_made = made.made;
   const reference::Cell fresh = reference::make_cell(geometry, grid);
   const model::LoadCurve whole = reference::build_load_curve(geometry, fresh, {});
   reference::LoadCurveOptions low, high;
@@ -133,22 +138,22 @@ TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   ASSERT_FALSE(std::isfinite(built_high.X_full));
 
   engine::CurveOrigin origin{};
-  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, made, &origin).tables(), built_low.tables());
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, std::ref(made), &origin).tables(), built_low.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::built);
   // Further than the saved one: built again (and saved); nearer: read and cut.
   EXPECT_FALSE(engine::curve_is_cached(geometry, grid, high, nullptr));
-  EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, made, &origin).tables(), built_high.tables());
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, std::ref(made), &origin).tables(), built_high.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::built);
   EXPECT_EQ(cells_made, 2);
   EXPECT_TRUE(engine::curve_is_cached(geometry, grid, low, nullptr));
-  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, made, &origin).tables(), built_low.tables());
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, std::ref(made), &origin).tables(), built_low.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::cache);
   EXPECT_EQ(cells_made, 2);
   // The whole curve saved serves any reach.
-  EXPECT_EQ(engine::load_curve_for(geometry, grid, {}, nullptr, made, &origin).tables(), whole.tables());
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, {}, nullptr, std::ref(made), &origin).tables(), whole.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::built);
   for (const reference::LoadCurveOptions* options : {&low, &high}) {
-    EXPECT_EQ(engine::load_curve_for(geometry, grid, *options, nullptr, made, &origin).tables(),
+    EXPECT_EQ(engine::load_curve_for(geometry, grid, *options, nullptr, std::ref(made), &origin).tables(),
               (options == &low ? built_low : built_high).tables());
     EXPECT_EQ(origin, engine::CurveOrigin::cache);
   }
