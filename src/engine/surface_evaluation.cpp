@@ -87,10 +87,12 @@ class CurveProgressLine {
     tenth_ = tenth;
     std::ostringstream line;
     line << "punchsweep surface: load curve on " << grid_ << ": " << static_cast<int>(100.0 * f)
-         << "% of the load range to full contact (X = " << std::min(p.X_front, p.X_full) << " of " << p.X_full << " E0*), " << p.solves
-         << " solves in " << seconds_text(elapsed);
+         << "% of the load range to " << (p.X_full < p.X_full_contact ? "the loads' reach" : "full contact") << " (X = "
+         << std::min(p.X_front, p.X_full) << " of " << p.X_full << " E0*), " << p.solves << " solves in " << seconds_text(elapsed);
     if (f >= 0.02) {
-      const double by_rate = elapsed * (1.0 - f) / f, by_model = std::max(estimated_ - elapsed, 0.0);
+      // (The model's seconds are a whole curve's: a curve stopped at the loads' reach is
+      // given its share of the range in log X.)
+      const double by_rate = elapsed * (1.0 - f) / f, by_model = std::max(estimated_ * p.range_share() - elapsed, 0.0);
       line << ", about " << seconds_text((1.0 - f) * by_model + f * by_rate) << " left";
     }
     if (tty_) {

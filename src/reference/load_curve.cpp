@@ -17,6 +17,11 @@ double LoadCurveProgress::fraction() const {
   return std::clamp(std::log(X_front / X_start) / std::log(X_full / X_start), 0.0, 1.0);
 }
 
+double LoadCurveProgress::range_share() const {
+  if (!(X_full_contact > X_start) || !(X_full > X_start)) return 1.0;
+  return std::clamp(std::log(X_full / X_start) / std::log(X_full_contact / X_start), 0.0, 1.0);
+}
+
 double full_contact_load(const Cell& cell) {
   PeriodicInfluence influence(cell.grid);
   std::vector<double> stiff(cell.profile.size());
@@ -81,7 +86,8 @@ class CurveBuilder {
     const double top = std::min(options_.X_top, march_end(X_start, options_.samples_per_decade, options_.X_reach));
     if (options_.progress) {
       report_.X_start = X_start;
-      report_.X_full = std::min(full_contact_load(cell_), top);
+      report_.X_full_contact = full_contact_load(cell_);
+      report_.X_full = std::min(report_.X_full_contact, top);
     }
     curve_.X_resolved = start_load(options_.resolved_spot_nodes);
     // The tallest sites touch at any load; any other that has touched by X_start is found

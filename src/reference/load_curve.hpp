@@ -25,9 +25,15 @@ struct LoadCurveProgress {
   double X = 0.0;        ///< the load of the last solve (a bisection's may lie behind the front)
   double X_front = 0.0;  ///< the highest load solved so far, in E0*
   double X_start = 0.0;  ///< the march's first load
-  double X_full = 0.0;   ///< where it ends: full contact (full_contact_load), or X_top if less
+  double X_full = 0.0;   ///< where it ends: full contact (full_contact_load), or its top if less
+  /// Full contact's load (full_contact_load) whether or not the march gets there: X_full is
+  /// less where the curve stops at its top (LoadCurveOptions::X_top, X_reach's march end).
+  double X_full_contact = 0.0;
   /// The share of the load range done, log(X_front / X_start) / log(X_full / X_start), in [0, 1].
   double fraction() const;
+  /// The share of the whole curve's load range (to full contact) that this one's spans, in
+  /// log X: 1 where it goes to full contact.
+  double range_share() const;
 };
 
 /// The curve's numerical choices.

@@ -205,6 +205,8 @@ TEST(LoadCurve, full_contact_from_the_profile_is_the_curves_full_contact) {
     EXPECT_EQ(first.X_start, curve.X_first()) << c.name;
     EXPECT_EQ(first.fraction(), 0.0) << c.name;
     EXPECT_EQ(last.fraction(), 1.0) << c.name;  // the march passes full contact, then bisects back
+    EXPECT_EQ(first.X_full_contact, predicted) << c.name;
+    EXPECT_EQ(first.range_share(), 1.0) << c.name;
   }
   EXPECT_GE(mirrored, 1);  // both transforms held
   EXPECT_GE(full, 1);
@@ -228,7 +230,15 @@ TEST(LoadCurve, a_curve_to_a_reach_is_the_whole_curves_beginning) {
   for (const double reach : reaches) {
     reference::LoadCurveOptions options;
     options.X_reach = reach;
+    reference::LoadCurveProgress last;
+    options.progress = [&](const reference::LoadCurveProgress& p) { last = p; };
     const model::LoadCurve cut = reference::build_load_curve(g, cell, options);
+    // Its progress runs to its end, a share of the whole curve's range in log X.
+    EXPECT_EQ(last.X_full, cut.X_last());
+    EXPECT_EQ(last.X_full_contact, reference::full_contact_load(cell));
+    EXPECT_EQ(last.fraction(), 1.0);
+    EXPECT_NEAR(last.range_share(), std::log(cut.X_last() / cut.X_first()) / std::log(last.X_full_contact / cut.X_first()), 1e-15);
+    EXPECT_LT(last.range_share(), 1.0);
     const double end = reference::march_end(whole.X_first(), options.samples_per_decade, reach);
     std::printf("reach %.6g: %zu samples to X = %.6g (march end %.6g)\n", reach, cut.samples.size(), cut.X_last(), end);
     EXPECT_EQ(cut.X_last(), end);
