@@ -485,6 +485,31 @@ def test_surface_classify_reads_many_loads_off_one_curve():
         punchsweep.surface_classify(pbar=[0.01, -1.0], T=2.5, **texture)
 
 
+def test_surface_classify_and_maps_read_the_curve_as_far_as_their_loads_reach(tmp_path):
+    """surface_classify's curve reaches the largest X(inf) of its points (pbar T for the
+    standard linear solid): a level that none of them reaches reads X_star +inf and never at
+    every point, one they reach the whole curve's X* (surface --full-curve's, to the bit);
+    with no points the whole curve (every X_star finite). A texture map over the same
+    points reads the same X_star, so its t_star and regime equal surface_classify's."""
+    texture = dict(lattice="hexagonal", l=1.2, dh=0.03, dh2=0.08, s=2, grid=48)
+    whole = punchsweep.surface(pbar=0.005, T=2.5, times=[0], full_curve=True, **texture)
+    X_whole = [level["X_star"] for level in whole["levels"]]
+    assert all(np.isfinite(X_whole))
+    pbar = np.array([0.002, 0.005])
+    T = np.array([2.0, 2.5])
+    assert (pbar[:, None] * T[None, :]).max() < X_whole[2]  # level 2 is out of every point's reach
+    out = punchsweep.surface_classify(pbar=pbar[:, None], T=T[None, :], **texture)
+    assert list(out["X_star"][:2]) == X_whole[:2] and np.isinf(out["X_star"][2])
+    assert {punchsweep.REGIMES[int(code)] for code in out["regime"][..., 2].ravel()} == {"never"}
+    assert np.all(np.isinf(out["t_star"][..., 2]))
+    empty = punchsweep.surface_classify(pbar=np.array([]), T=2.5, **texture)
+    assert list(empty["X_star"]) == X_whole
+    ds = punchsweep.surface_map(pbar=pbar, T=T, times=[0, 1], output=tmp_path / "m.nc", **texture)
+    np.testing.assert_array_equal(ds.X_star.values.reshape(-1), out["X_star"])
+    np.testing.assert_array_equal(ds.t_star.values.reshape(out["t_star"].shape), out["t_star"])
+    np.testing.assert_array_equal(ds.regime.values.reshape(out["regime"].shape), out["regime"])
+
+
 def test_each_levels_t_star_moves_with_the_load_as_the_closed_form_says():
     """The standard linear solid, J(t) = T - (T - 1) exp(-t): a level touching at X* has
     J(t*) = X* / pbar, so d t*/d pbar = -X* / (pbar^2 (T - 1) exp(-t*)) and d t*/dT =

@@ -34,7 +34,7 @@ import numpy as np
 
 from .map_attributes import open_map as read_map
 from .texture_results import (DesignRequirement, DesignResult, SurfaceLevel, SurfaceResult, TextureClassification,
-                              gathered_sensitivity)
+                              _record, gathered_sensitivity)
 
 try:
     from . import _core
@@ -101,13 +101,13 @@ def _keywords(options: dict[str, Any]) -> list[tuple[str, str]]:
     return [(name.replace("_", "-"), _option_text(value, name)) for name, value in options.items() if value is not None]
 
 
-def _result(cls, raw: dict, consumed=lambda key: False):
-    """A result dataclass from the engine's dict: its fields, the series as float arrays, and
-    in `other` every key of the engine's that is neither a field nor `consumed` (gathered
-    into one: sensitivity, t_star_range), so no output the engine gains is dropped unseen."""
-    fields = {k: raw[k] for k in cls.__dataclass_fields__ if k not in ("series", "other") and k in raw}
-    other = {k: v for k, v in raw.items() if k not in cls.__dataclass_fields__ and not consumed(k)}
-    return cls(series={k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}, other=other, **fields)
+def _result(cls, raw: dict, consumed=()):
+    """A point's or reference's result dataclass from the engine's dict (_record's, the one
+    builder of every result): the series as float arrays, and in `other` every key of the
+    engine's that is neither a field nor `consumed` (gathered into one: sensitivity,
+    t_star_range), so no output the engine gains is dropped unseen."""
+    series = {k: np.asarray(v, dtype=float) for k, v in raw["series"].items()}
+    return _record(cls, raw, series=series, consumed=consumed)
 
 
 @dataclass(frozen=True)
@@ -205,7 +205,7 @@ def point(l: float | None = None, dh: float | None = None, T: float | None = Non
     raw = _core.point(keywords)
     sensitivity, bounds, corners, taken = gathered_sensitivity(raw)
     return _result(PointResult, {**raw, "sensitivity": sensitivity, "t_star_range": bounds,
-                                 "corner_regimes": corners}, taken.__contains__)
+                                 "corner_regimes": corners}, taken)
 
 
 def reference(l: float | None = None, dh: float | None = None, T: float | None = None,
@@ -259,9 +259,9 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
             grid: int | str | None = None, cell: str | None = None, height_map: str | None = None,
             pixel: float | str | None = None, supercell: int | None = None,
             scatter: str | None = None,
-            seed: int | None = None, check: bool = False, material: str | None = None, temperature: float | str | None = None,
-            pressure: str | None = None, ramp: float | str | None = None, load_table: str | None = None,
-            **options: Any) -> SurfaceResult:
+            seed: int | None = None, check: bool = False, full_curve: bool = False, material: str | None = None,
+            temperature: float | str | None = None, pressure: str | None = None, ramp: float | str | None = None,
+            load_table: str | None = None, **options: Any) -> SurfaceResult:
     """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
     two levels, or three with dh2, or any cell (cell="FILE", docs/cli.md), or a measured
     period (height_map="FILE" of CSV, .npy or SurfaceTopography NetCDF, pixel=, height_unit=, summit_radius=,
@@ -274,13 +274,16 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     per time), physical (with R and a material: X in Pa, areas, loads in N, drops, their
     units), check (with check=True: the time stepping's levels and series on the same cell),
     curve, cell, grid, units; it reads like the JSON's dict too (r["levels"][1]["t_star"]).
+    The curve stops at its first sample past X(inf), the most the load reaches (a level
+    untouched by then never touches: X_star None); full_curve=True builds it to full contact.
     ValueError with the command's message for bad input."""
     material = None if material is None else os.fspath(material)
     keywords = _keywords(dict(l=l, dh=dh, lattice=lattice, dh2=dh2, T=T, pbar=pbar, s=s, C=C, times=times,
                               grid=grid, cell=None if cell is None else os.fspath(cell),
                               height_map=None if height_map is None else os.fspath(height_map), pixel=pixel,
                               supercell=supercell,
-                              scatter=scatter, seed=seed, check="true" if _flag(check, "check") else None, material=material,
+                              scatter=scatter, seed=seed, check="true" if _flag(check, "check") else None,
+                              full_curve="true" if _flag(full_curve, "full_curve") else None, material=material,
                               temperature=temperature, pressure=pressure, ramp=ramp, load_table=load_table,
                               **options))
     return SurfaceResult.from_json(json.loads(_core.surface(keywords)))
@@ -292,13 +295,14 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
     dh2=, s=, C=, cell=, height_map=, supercell=, scatter=, grid=, ...) at many loads,
     broadcasting pbar (or pressure= with a material), the law's parameter (T, or temperature=
     with a material file) and ramp_time like numpy. The texture's load curve is built once
-    (to full contact, on the grid the least pressure asks under grid="auto", and kept in the
-    table cache); every point is then read off it (about 1e7 points a second): a material x
-    temperature x pressure sweep at the cost of one curve. Returns a TextureClassification
-    (it reads like a dict): t_star and regime (the map's codes, REGIMES; regime_names() as
-    text) shaped as the broadcast inputs plus a last axis of levels, X_star and resolved per
-    level, time_unit, grid and caps. Empty inputs give empty arrays of
-    their shape (the curve is read all the same, for the levels, at a nominal load).
+    (as far as the largest X(inf) of the points, or to full contact for none, on the grid the
+    least pressure asks under grid="auto", and kept in the table cache); every point is then
+    read off it (about 1e7 points a second): a material x temperature x pressure sweep at
+    the cost of one curve. Returns a TextureClassification (it reads like a dict): t_star and
+    regime (the map's codes, REGIMES; regime_names() as text) shaped as the broadcast inputs
+    plus a last axis of levels, X_star (+inf for a level no point reaches) and resolved per
+    level, time_unit, grid and caps. Empty inputs give empty arrays of their shape (the
+    curve is read all the same, for the levels, at a nominal load).
     ValueError with the command line's message for bad input, and naming the argument for a
     complex number, a bool or a list that mixes values with and without a unit."""
     if pressure is not None:

@@ -64,14 +64,16 @@ def _plain(value):
 
 
 def _record(cls, raw: dict, **made):
-    """`cls` from the engine's dict `raw`: each field from `made` (the converted values) or
-    from raw, and in `other` every key of raw that no field names and `made` did not take
-    (`made` may name keys it gathered into a field under "consumed")."""
+    """`cls` (a result dataclass with a field `other`) from the engine's dict `raw`: each
+    field from `made` (the converted values) or from raw, and in `other` every key of raw
+    that no field names and `made` did not take (`made` may name keys it gathered into a
+    field under "consumed"); a _JsonRecord also keeps raw's keys, in their order."""
     consumed = set(made.pop("consumed", ()))
     names = {f.name for f in fields(cls)} - {"other", "_keys"}
     values = {k: made[k] if k in made else raw[k] for k in names if k in made or k in raw}
     other = {k: v for k, v in raw.items() if k not in names and k not in consumed}
-    return cls(**values, other=other, _keys=tuple(raw))
+    keys = {"_keys": tuple(raw)} if issubclass(cls, _JsonRecord) else {}
+    return cls(**values, other=other, **keys)
 
 
 def _arrays(series: dict) -> dict:
