@@ -61,7 +61,7 @@ std::string curve_key(const model::CellGeometry& g, const reference::PeriodicGri
   key.precision(17);
   key << "punchsweep load curve, format " << model::LoadCurve::kFormat << "; cell " << g.Lx << " x " << g.Ly << "; sites";
   for (const model::Site& s : g.sites) key << " (" << s.x << ' ' << s.y << ' ' << s.shape.s << ' ' << s.shape.C << ' ' << s.drop << ' ' << s.level << ')';
-  key << "; grid " << grid.nx << " x " << grid.ny << (grid.mirrored() ? " quarter" : " whole") << "; top " << o.X_top
+  key << "; grid " << grid.nx << " x " << grid.ny << (grid.mirrored() ? " quarter" : grid.mirrored_x() ? " half" : " whole") << "; top " << o.X_top
       << "; spot " << o.min_spot_nodes << "; decade " << o.samples_per_decade << "; area " << o.area_tolerance << "; load "
       << o.load_tolerance << "; refinements " << o.max_refinements << "; touchdown " << o.touchdown_tolerance << "; solver "
       << o.solver.tolerance << ' ' << o.solver.max_iterations << ' ' << o.solver.precondition;

@@ -146,6 +146,10 @@ constexpr double kMachineShare = 0.8;
 /// (docs/performance.md, "A curve's cost").
 constexpr double kCurveSecondsScale = 1.68e-5, kCurveSecondsNodePower = 1.29, kCurveSecondsCapPower = 0.15,
                  kCurveSecondsMirrored = 0.31;
+/// On a grid solved as its half (Symmetry::mirror_x), the whole grid's estimate times this:
+/// the hexagonal three-level cell's curve took 0.69 and 0.57 of the whole grid's time at
+/// 128 and 256 nodes a pitch, side by side (the same 542 and 678 solves).
+constexpr double kCurveSecondsMirroredX = 0.63;
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
 
@@ -657,7 +661,11 @@ reference::PeriodicGrid boundary_element_grid(SurfaceRun& run, const model::Cree
   // A cell file's tips go to their nearest nodes: the move is reported.
   double moved = 0.0;
   run.geometry = reference::snap_tips(run.geometry, grid, &moved);
-  if (grid.mirrored() && !model::mirror_symmetric(run.geometry)) grid.symmetry = reference::Symmetry::none;
+  // The snapped tips keep the symmetry the grid was chosen for, or less.
+  const reference::Symmetry snapped = reference::symmetry_of(run.geometry);
+  if ((grid.mirrored() && snapped != reference::Symmetry::mirror) || (grid.mirrored_x() && snapped == reference::Symmetry::none)) {
+    grid.symmetry = snapped;
+  }
   if (moved > 1e-9 * std::min(grid.hx(), grid.hy())) {
     std::ostringstream note;
     note.precision(3);
@@ -1031,7 +1039,8 @@ double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps)
   // Fitted (log-linear least squares) to curves built on one core here: see
   // docs/performance.md for the runs and each one's ratio to this estimate.
   return kCurveSecondsScale * std::pow(static_cast<double>(grid.nodes()), kCurveSecondsNodePower) *
-         std::pow(caps, kCurveSecondsCapPower) * (grid.mirrored() ? kCurveSecondsMirrored : 1.0);
+         std::pow(caps, kCurveSecondsCapPower) *
+         (grid.mirrored() ? kCurveSecondsMirrored : grid.mirrored_x() ? kCurveSecondsMirroredX : 1.0);
 }
 
 double check_surface(const input::Keywords& keywords) {

@@ -30,7 +30,7 @@ int neighbour(int i, int step, int n, bool mirrored) {
 
 std::vector<double> level_contact_areas(const PeriodicGrid& g, const std::vector<std::vector<double>>& level_weight,
                                         std::span<const double> p, std::span<const double> rims) {
-  const bool mirrored = g.mirrored();
+  const bool mirrored_x = g.mirrored_x(), mirrored_y = g.mirrored_y();
   std::vector<double> area(level_weight.size() + 1, 0.0);
   for (int i = 0; i < g.stored_nx(); ++i) {
     for (int j = 0; j < g.stored_ny(); ++j) {
@@ -40,11 +40,11 @@ std::vector<double> level_contact_areas(const PeriodicGrid& g, const std::vector
       // the rows' estimate and half from the columns'.
       double nodes = 1.0;
       for (const int step : {-1, 1}) {
-        if (!(p[g.index(neighbour(i, step, g.nx, mirrored), j)] > 0.0)) {
-          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(neighbour(i, -step, g.nx, mirrored), j)]) - 0.5);
+        if (!(p[g.index(neighbour(i, step, g.nx, mirrored_x), j)] > 0.0)) {
+          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(neighbour(i, -step, g.nx, mirrored_x), j)]) - 0.5);
         }
-        if (!(p[g.index(i, neighbour(j, step, g.ny, mirrored))] > 0.0)) {
-          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(i, neighbour(j, -step, g.ny, mirrored))]) - 0.5);
+        if (!(p[g.index(i, neighbour(j, step, g.ny, mirrored_y))] > 0.0)) {
+          nodes += 0.5 * (edge_offset(rims[k], rims[g.index(i, neighbour(j, -step, g.ny, mirrored_y))]) - 0.5);
         }
       }
       const double m = g.multiplicity(k) * nodes;

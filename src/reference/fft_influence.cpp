@@ -73,6 +73,39 @@ void FftPlans::backward(std::complex<double>* in, double* out) const {
 
 std::shared_ptr<const FftPlans> fft_plans(int nx, int ny) { return shared_plan<FftPlans>(nx, ny); }
 
+RowFftPlans::RowFftPlans(int rows, int ny) {
+  if (rows < 1 || ny < 1) throw std::invalid_argument("FFT rows must be at least 1 x 1");
+  const int nyc = ny / 2 + 1;
+  FftwBuffer<double> real(static_cast<std::size_t>(rows) * static_cast<std::size_t>(ny));
+  FftwBuffer<std::complex<double>> spectrum(static_cast<std::size_t>(rows) * static_cast<std::size_t>(nyc));
+  auto* spec = reinterpret_cast<fftw_complex*>(spectrum.data());
+  forward_ = fftw_plan_many_dft_r2c(1, &ny, rows, real.data(), nullptr, 1, ny, spec, nullptr, 1, nyc,
+                                    FFTW_MEASURE | FFTW_PRESERVE_INPUT);
+  backward_ = fftw_plan_many_dft_c2r(1, &ny, rows, spec, nullptr, 1, nyc, real.data(), nullptr, 1, ny,
+                                     FFTW_MEASURE | FFTW_DESTROY_INPUT);
+  if (forward_ == nullptr || backward_ == nullptr) {
+    if (forward_ != nullptr) fftw_destroy_plan(as_plan(forward_));
+    if (backward_ != nullptr) fftw_destroy_plan(as_plan(backward_));
+    throw std::runtime_error("FFTW could not plan the transforms along y");
+  }
+}
+
+RowFftPlans::~RowFftPlans() {
+  const std::lock_guard<std::mutex> lock(planner_mutex());
+  fftw_destroy_plan(as_plan(forward_));
+  fftw_destroy_plan(as_plan(backward_));
+}
+
+void RowFftPlans::forward(double* in, std::complex<double>* out) const {
+  fftw_execute_dft_r2c(as_plan(forward_), in, reinterpret_cast<fftw_complex*>(out));
+}
+
+void RowFftPlans::backward(std::complex<double>* in, double* out) const {
+  fftw_execute_dft_c2r(as_plan(backward_), reinterpret_cast<fftw_complex*>(in), out);
+}
+
+std::shared_ptr<const RowFftPlans> row_fft_plans(int rows, int ny) { return shared_plan<RowFftPlans>(rows, ny); }
+
 template <class T>
 FftwBuffer<T>::FftwBuffer(std::size_t n) : size_(n) {
   if (n == 0) return;
@@ -146,17 +179,18 @@ struct CosineTransform::RowPlan {
   fftw_plan plan = nullptr;
 };
 
-CosineTransform::CosineTransform(int mx, int my)
+CosineTransform::CosineTransform(int mx, int my, bool along_y)
     : mx_(mx), my_(my) {
-  if (mx < 2 || my < 2) throw std::invalid_argument("a cosine transform needs at least 2 x 2 values");
+  if (mx < 2 || (along_y && my < 2) || my < 1) throw std::invalid_argument("a cosine transform needs at least 2 x 2 values");
   // Along y there are mx lines, along x my: full blocks, and a plan for the rest.
   const auto rows = [](int m, int lines) { return shared_plan<RowPlan>(m, lines); };
-  along_y_ = {rows(my, kCosineBlock), mx % kCosineBlock ? rows(my, mx % kCosineBlock) : nullptr};
+  if (along_y) along_y_ = {rows(my, kCosineBlock), mx % kCosineBlock ? rows(my, mx % kCosineBlock) : nullptr};
   along_x_ = {rows(mx, kCosineBlock), my % kCosineBlock ? rows(mx, my % kCosineBlock) : nullptr};
-  const std::size_t length = static_cast<std::size_t>(std::max(along_y_.block->length, along_x_.block->length));
+  const std::size_t length =
+      static_cast<std::size_t>(std::max(along_y ? along_y_.block->length : 0, along_x_.block->length));
   pad_ = FftwBuffer<double>(kCosineBlock * length);
   spec_ = FftwBuffer<std::complex<double>>(kCosineBlock * (length / 2 + 1));
-  middle_ = FftwBuffer<double>(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my));
+  if (along_y) middle_ = FftwBuffer<double>(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my));
 }
 
 namespace {
@@ -262,6 +296,10 @@ void CosineTransform::lines(const Axis& axis, const double* in, double* out, int
 }
 
 void CosineTransform::execute(const double* in, double* out) {
+  if (!along_y_.block) {  // along x alone
+    lines<true>(along_x_, in, out, my_);
+    return;
+  }
   // Along y (the rows), then along x (the columns, a column's values my apart).
   lines<false>(along_y_, in, middle_.data(), mx_);
   lines<true>(along_x_, middle_.data(), out, my_);
@@ -290,6 +328,20 @@ PeriodicInfluence::PeriodicInfluence(const PeriodicGrid& grid) : grid_(grid) {
       for (int j = 0; j < my; ++j) kernel_[grid.index(i, j)] = kernel_value(i, j, grid, normalisation);
     }
     cosines_ = FftwBuffer<double>(grid.size());
+    return;
+  }
+  if (grid.mirrored_x()) {
+    // The half's cosine coefficients along x (wave numbers 0 .. nx/2), each row's r2c
+    // half spectrum along y (0 .. ny/2; the negative ones its conjugates).
+    const int mx = grid.stored_nx(), nyc = grid.ny / 2 + 1;
+    cosine_ = std::make_unique<CosineTransform>(mx, grid.ny, false);
+    rows_ = row_fft_plans(mx, grid.ny);
+    kernel_.resize(static_cast<std::size_t>(mx) * static_cast<std::size_t>(nyc));
+    for (int i = 0; i < mx; ++i) {
+      for (int j = 0; j < nyc; ++j) kernel_[static_cast<std::size_t>(i) * nyc + j] = kernel_value(i, j, grid, normalisation);
+    }
+    cosines_ = FftwBuffer<double>(grid.size());
+    spectrum_ = FftwBuffer<std::complex<double>>(kernel_.size());
     return;
   }
   plans_ = fft_plans(grid.nx, grid.ny);
@@ -331,6 +383,16 @@ void PeriodicInfluence::convolve(std::span<const double> p, std::span<double> u,
     double* cosines = cosines_.data();
     cosine_->execute(p.data(), cosines);
     for (std::size_t i = 0; i < n; ++i) cosines[i] *= kernel[i] * scale;
+    cosine_->execute(cosines, u.data());
+    return;
+  }
+  if (grid_.mirrored_x()) {
+    double* cosines = cosines_.data();
+    cosine_->execute(p.data(), cosines);
+    rows_->forward(cosines, spectrum_.data());
+    std::complex<double>* spectrum = spectrum_.data();
+    for (std::size_t i = 0; i < kernel.size(); ++i) spectrum[i] *= kernel[i] * scale;
+    rows_->backward(spectrum, cosines);
     cosine_->execute(cosines, u.data());
     return;
   }

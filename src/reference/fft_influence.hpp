@@ -37,6 +37,26 @@ class FftPlans {
 /// (thread-safe; FFTW's planner is serialised by a mutex).
 std::shared_ptr<const FftPlans> fft_plans(int nx, int ny);
 
+/// Like FftPlans, along y alone: each of the `rows` rows of ny reals (row-major) to its
+/// ny/2 + 1 complex values and back, unnormalised.
+class RowFftPlans {
+ public:
+  RowFftPlans(int rows, int ny);
+  ~RowFftPlans();
+  RowFftPlans(const RowFftPlans&) = delete;
+  RowFftPlans& operator=(const RowFftPlans&) = delete;
+
+  /// in (rows x ny reals, preserved) -> out (rows x (ny/2 + 1) complex).
+  void forward(double* in, std::complex<double>* out) const;
+  /// in (spectrum, destroyed) -> out (reals).
+  void backward(std::complex<double>* in, double* out) const;
+
+ private:
+  void* forward_ = nullptr;
+  void* backward_ = nullptr;
+};
+std::shared_ptr<const RowFftPlans> row_fft_plans(int rows, int ny);
+
 /// Memory from fftw_malloc (SIMD-aligned, as FFTW's new-array execution requires).
 template <class T>
 class FftwBuffer {
@@ -68,7 +88,8 @@ class FftwBuffer {
 /// measured 1.3-1.6 times slower). One instance owns its scratch: not for concurrent use.
 class CosineTransform {
  public:
-  CosineTransform(int mx, int my);
+  /// `along_y` false: along x alone (each column's REDFT00; each row is left as it is).
+  CosineTransform(int mx, int my, bool along_y = true);
   /// in (mx x my, row-major) -> out (mx x my); in and out must not alias.
   void execute(const double* in, double* out);
 
@@ -100,7 +121,9 @@ class CosineTransform {
 /// On a mirrored grid (Symmetry::mirror) the fields are the stored quarters of even ones,
 /// and the operator is the same one through the cosine transform of the quarter: every
 /// wave vector's cosine pairs with its mirror images, so the spectrum is real and a quarter
-/// of the size, at about a third of the full transform's cost.
+/// of the size, at about a third of the full transform's cost. Mirrored in x alone
+/// (Symmetry::mirror_x), the half's cosine transform along x and real-to-complex transforms
+/// along y: the spectrum of the even field at wave numbers kx >= 0, half the whole's.
 ///
 /// One instance owns scratch buffers: not for concurrent use (make one per thread).
 class PeriodicInfluence {
@@ -119,9 +142,11 @@ class PeriodicInfluence {
  private:
   PeriodicGrid grid_;
   std::shared_ptr<const FftPlans> plans_;    ///< whole grid: r2c and c2r
-  std::unique_ptr<CosineTransform> cosine_;  ///< mirrored grid: the quarter's REDFT00
-  /// 2/|k| / (nx ny), 0 at k = 0: on the r2c half spectrum, or on the quarter's
-  /// non-negative wave numbers under mirror
+  std::unique_ptr<CosineTransform> cosine_;  ///< mirrored grid: the quarter's REDFT00 (mirror_x: along x)
+  std::shared_ptr<const RowFftPlans> rows_;  ///< mirror_x: r2c and c2r along y
+  /// 2/|k| / (nx ny), 0 at k = 0: on the r2c half spectrum, on the quarter's
+  /// non-negative wave numbers under mirror, or on kx >= 0 by the r2c half along y under
+  /// mirror_x
   std::vector<double> kernel_;
   std::vector<double> stiffness_;  ///< |k|/2 / (nx ny) on the kernel's modes, 0 at k = 0
   void convolve(std::span<const double> p, std::span<double> u, const std::vector<double>& kernel, double scale);

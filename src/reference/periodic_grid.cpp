@@ -17,6 +17,8 @@ std::string grid_error(const PeriodicGrid& grid) {
     out << "grid " << grid.nx << " x " << grid.ny << " is outside its range: nx, ny >= 1";
   } else if (grid.mirrored() && (grid.nx % 2 != 0 || grid.ny % 2 != 0)) {
     out << "mirrored grid " << grid.nx << " x " << grid.ny << " is outside its range: nx, ny even";
+  } else if (grid.mirrored_x() && grid.nx % 2 != 0) {
+    out << "grid " << grid.nx << " x " << grid.ny << " mirrored in x is outside its range: nx even";
   } else if (!(std::isfinite(grid.Lx) && grid.Lx > 0.0 && std::isfinite(grid.Ly) &&
                grid.Ly > 0.0)) {
     out << "cell " << grid.Lx << " x " << grid.Ly << " is outside its range: Lx, Ly > 0";
@@ -45,14 +47,12 @@ double level2_excess(double f1, double lower2) {
 
 std::vector<double> punch_profile(const PeriodicGrid& grid, const model::Shape& shape, double cx,
                                   double cy) {
-  if (grid.mirrored()) {
-    const auto mirror_point = [](double c, double L) {
-      const double d = std::abs(periodic_offset(c, L));
-      return d == 0.0 || d == 0.5 * L;
-    };
-    if (!mirror_point(cx, grid.Lx) || !mirror_point(cy, grid.Ly)) {
-      throw std::invalid_argument("punch_profile: a mirrored grid needs a centre at 0 or half the cell");
-    }
+  const auto mirror_point = [](double c, double L) {
+    const double d = std::abs(periodic_offset(c, L));
+    return d == 0.0 || d == 0.5 * L;
+  };
+  if ((grid.mirrored_x() && !mirror_point(cx, grid.Lx)) || (grid.mirrored_y() && !mirror_point(cy, grid.Ly))) {
+    throw std::invalid_argument("punch_profile: a mirrored grid needs a centre at 0 or half the cell along each mirrored axis");
   }
   std::vector<double> f(grid.size());
   for (int i = 0; i < grid.stored_nx(); ++i) {
@@ -109,12 +109,12 @@ double level_fraction(const PeriodicGrid& g, const Excess& excess, double x, dou
   return sum / kRows;
 }
 
-/// The node at a site's tip (under Symmetry::mirror, at its mirror image in the stored
-/// quarter), or std::invalid_argument where the tip is not a node.
+/// The node at a site's tip (under a mirror, at its image in the stored part), or
+/// std::invalid_argument where the tip is not a node.
 std::size_t tip_node(const PeriodicGrid& g, const model::Site& site, std::size_t k) {
   const auto node = [&](double c, double h, int n, int stored) {
     const double L = h * n;
-    if (g.mirrored() && c > 0.5 * L) c = L - c;
+    if (stored < n && c > 0.5 * L) c = L - c;  // (a mirrored axis stores n/2 + 1 of its n)
     const long i = std::lround(c / h);
     if (std::abs(i * h - c) > 1e-9 * h * n || i < 0 || i >= stored) {
       throw std::invalid_argument("make_cell: site " + std::to_string(k) + "'s tip is not a stored node of the grid");
@@ -125,6 +125,10 @@ std::size_t tip_node(const PeriodicGrid& g, const model::Site& site, std::size_t
 }
 
 }  // namespace
+
+Symmetry symmetry_of(const model::CellGeometry& geometry) {
+  return model::mirror_symmetric(geometry) ? Symmetry::mirror : model::mirror_symmetric_x(geometry) ? Symmetry::mirror_x : Symmetry::none;
+}
 
 Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   if (const std::string e = model::geometry_error(geometry); !e.empty()) throw std::invalid_argument("make_cell: " + e);
@@ -140,6 +144,9 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   // lowest surface of them all is).
   if (g.mirrored() && !model::mirror_symmetric(geometry)) {
     throw std::invalid_argument("make_cell: a mirrored grid needs a geometry whose sites are even in x and y");
+  }
+  if (g.mirrored_x() && !model::mirror_symmetric_x(geometry)) {
+    throw std::invalid_argument("make_cell: a grid mirrored in x needs a geometry whose sites are even in x");
   }
   const model::SurfaceLocator locator(geometry);
   const std::size_t levels = static_cast<std::size_t>(geometry.levels());
@@ -230,7 +237,7 @@ PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKin
       }
     }
   }
-  return {K * n, K * ny, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
+  return {K * n, K * ny, geometry.Lx, geometry.Ly, symmetry_of(geometry)};
 }
 
 PeriodicGrid cell_grid(const model::CellGeometry& geometry, int n) {
@@ -250,7 +257,7 @@ PeriodicGrid cell_grid(const model::CellGeometry& geometry, int n) {
       best_miss = miss;
     }
   }
-  return {n, best, geometry.Lx, geometry.Ly, model::mirror_symmetric(geometry) ? Symmetry::mirror : Symmetry::none};
+  return {n, best, geometry.Lx, geometry.Ly, symmetry_of(geometry)};
 }
 
 model::CellGeometry snap_tips(const model::CellGeometry& geometry, const PeriodicGrid& grid, double* moved) {

@@ -23,6 +23,11 @@ enum class Symmetry {
   /// even). Node (i, j) stands for its mirror images: multiplicity() of them. The two-level
   /// cell is such a field (its punches sit at (0, 0) and (l/2, l/2)).
   mirror,
+  /// Fields even in x alone, about node column i = 0 (hence about i = nx/2): only the half
+  /// 0 <= i <= nx/2 is stored ((nx/2 + 1) ny nodes, nx even); node (i, j) stands for
+  /// itself and its image across x = 0, multiplicity() 1 or 2. The hexagonal lattice of
+  /// three levels is such a field (its levels alternate along y).
+  mirror_x,
 };
 
 /// A periodic nx x ny grid of collocation nodes on the Lx x Ly cell. Node (i, j) sits at
@@ -44,9 +49,11 @@ struct PeriodicGrid {
   double hx() const { return Lx / nx; }
   double hy() const { return Ly / ny; }
   double cell_area() const { return hx() * hy(); }
-  bool mirrored() const { return symmetry == Symmetry::mirror; }
-  int stored_nx() const { return mirrored() ? nx / 2 + 1 : nx; }  ///< rows i = 0 .. stored_nx() - 1
-  int stored_ny() const { return mirrored() ? ny / 2 + 1 : ny; }  ///< columns j likewise
+  bool mirrored() const { return symmetry == Symmetry::mirror; }  ///< the quarter stored
+  bool mirrored_x() const { return symmetry != Symmetry::none; }  ///< even in x: half the rows stored
+  bool mirrored_y() const { return symmetry == Symmetry::mirror; }  ///< even in y: half the columns stored
+  int stored_nx() const { return mirrored_x() ? nx / 2 + 1 : nx; }  ///< rows i = 0 .. stored_nx() - 1
+  int stored_ny() const { return mirrored_y() ? ny / 2 + 1 : ny; }  ///< columns j likewise
   /// Stored nodes: the length of every field on the grid.
   std::size_t size() const { return static_cast<std::size_t>(stored_nx()) * static_cast<std::size_t>(stored_ny()); }
   /// Nodes of the whole periodic cell, nx ny: what a mean over the cell divides by.
@@ -57,13 +64,13 @@ struct PeriodicGrid {
   double x(int i) const { return i * hx(); }
   double y(int j) const { return j * hy(); }
   /// How many nodes of the whole cell stored node `k` stands for: 1 without symmetry; under
-  /// mirror 1, 2 or 4 (nodes on the lines i = 0, nx/2 or j = 0, ny/2 are their own images).
-  /// Sums over the cell are sums over the stored nodes weighted by it.
+  /// mirror 1, 2 or 4 (nodes on the lines i = 0, nx/2 or j = 0, ny/2 are their own images),
+  /// under mirror_x 1 or 2. Sums over the cell are sums over the stored nodes weighted by it.
   double multiplicity(std::size_t k) const {
-    if (!mirrored()) return 1.0;
+    if (!mirrored_x()) return 1.0;
     const int i = static_cast<int>(k / static_cast<std::size_t>(stored_ny()));
     const int j = static_cast<int>(k % static_cast<std::size_t>(stored_ny()));
-    return ((i == 0 || 2 * i == nx) ? 1.0 : 2.0) * ((j == 0 || 2 * j == ny) ? 1.0 : 2.0);
+    return ((i == 0 || 2 * i == nx) ? 1.0 : 2.0) * ((!mirrored_y() || j == 0 || 2 * j == ny) ? 1.0 : 2.0);
   }
 };
 
@@ -106,9 +113,13 @@ struct Cell {
 
 /// The cell of `geometry` on `grid` (its cell must be the geometry's, model::geometry_error
 /// empty, every tip a node, and under Symmetry::mirror the sites even in x and y,
-/// model::mirror_symmetric; else std::invalid_argument naming what is not). Under the
-/// mirror a tip outside the stored quarter is given as its image's node.
+/// model::mirror_symmetric, under mirror_x even in x; else std::invalid_argument naming
+/// what is not). Under a mirror a tip outside the stored part is given as its image's node.
 Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
+
+/// The most symmetry the sites of `geometry` allow a grid of its cell: mirror where they
+/// are even in x and y, mirror_x where in x alone, else none.
+Symmetry symmetry_of(const model::CellGeometry& geometry);
 
 /// Whether FFTW transforms `n` points with its fast codelets: 2^a 3^b 5^c 7^d 11^e 13^f with
 /// e + f at most 1 (FFTW's manual, "Complex DFTs"); a larger prime factor takes its generic
@@ -120,13 +131,14 @@ bool fft_friendly(int n);
 /// near square with every site's tip a node (the hexagonal cell: a multiple of 6, the
 /// FFT-friendly one nearest n sqrt 3 within 3% where there is one: 216 for 128 rather than
 /// 222 = 6 x 37, whose transforms took twice as long); its
-/// quarter (Symmetry::mirror) where the sites are even (model::mirror_symmetric).
+/// quarter or half where the sites are even (symmetry_of).
 /// A supercell of K x K lattice cells (model::supercell) takes K times the nodes each way.
 PeriodicGrid lattice_grid(const model::CellGeometry& geometry, model::LatticeKind lattice, int n, int K = 1);
 
 /// The grid of any cell with n nodes along x (n even) and, along y, the even number within
 /// 10% of square nodes (n Ly / Lx) that puts the tips nearest to nodes (on them where one
-/// does; the nearest to square among equals); its quarter where the sites are even.
+/// does; the nearest to square among equals); its quarter or half where the sites are
+/// even (symmetry_of).
 PeriodicGrid cell_grid(const model::CellGeometry& geometry, int n);
 
 /// `geometry` with every tip moved to its nearest node of `grid` (make_cell needs tips on

@@ -128,6 +128,49 @@ TEST(PeriodicInfluence, mirrored_quarter_gives_the_whole_grids_displacement) {
   }
 }
 
+TEST(PeriodicInfluence, half_mirrored_in_x_gives_the_whole_grids_displacement) {
+  // A field even in x but not in y, stored as its half 0 <= i <= nx/2: the cosine transform
+  // along x and real transforms along y must give the half of the whole grid's K p (and
+  // the stiffness its S p). Half sizes K + 1 with K even and odd; ny even and odd.
+  for (const auto& [nx, ny] : {std::pair{32, 32}, std::pair{48, 21}, std::pair{34, 30}, std::pair{36, 7}}) {
+    const PeriodicGrid whole{nx, ny, 1.5, 1.0};
+    const PeriodicGrid half{nx, ny, 1.5, 1.0, Symmetry::mirror_x};
+    ASSERT_EQ(half.size(), static_cast<std::size_t>((nx / 2 + 1) * ny));
+    std::vector<double> p(whole.size()), u(whole.size()), s(whole.size());
+    for (int i = 0; i < nx; ++i) {
+      for (int j = 0; j < ny; ++j) {
+        const double cx = std::cos(2 * pi * i / nx), sy = std::sin(2 * pi * 2 * j / ny);
+        const double r1 = std::hypot(std::min(i, nx - i) / double(nx), (j - 0.3 * ny) / double(ny));
+        p[whole.index(i, j)] = 1.0 + 0.5 * cx * sy + std::exp(-20 * r1 * r1);
+      }
+    }
+    PeriodicInfluence K(whole);
+    K.apply(p, u, 1.7);
+    K.apply_stiffness(p, s, 0.3);
+    std::vector<double> ph(half.size()), uh(half.size()), sh(half.size());
+    for (int i = 0; i < half.stored_nx(); ++i) {
+      for (int j = 0; j < half.stored_ny(); ++j) ph[half.index(i, j)] = p[whole.index(i, j)];
+    }
+    PeriodicInfluence Kh(half);
+    Kh.apply(ph, uh, 1.7);
+    Kh.apply_stiffness(ph, sh, 0.3);
+    double range = 0.0, s_range = 0.0;
+    for (const double v : u) range = std::max(range, std::abs(v));
+    for (const double v : s) s_range = std::max(s_range, std::abs(v));
+    for (int i = 0; i < half.stored_nx(); ++i) {
+      for (int j = 0; j < half.stored_ny(); ++j) {
+        EXPECT_NEAR(uh[half.index(i, j)], u[whole.index(i, j)], 1e-13 * range) << nx << " x " << ny << ": " << i << ", " << j;
+        EXPECT_NEAR(sh[half.index(i, j)], s[whole.index(i, j)], 1e-12 * s_range) << nx << " x " << ny << ": " << i << ", " << j;
+      }
+    }
+    double count = 0.0;
+    for (std::size_t k = 0; k < half.size(); ++k) count += half.multiplicity(k);
+    EXPECT_EQ(count, static_cast<double>(whole.nodes()));
+  }
+  EXPECT_NE(grid_error(PeriodicGrid{31, 32, 1.0, 1.0, Symmetry::mirror_x}), "");
+  EXPECT_EQ(grid_error(PeriodicGrid{32, 31, 1.0, 1.0, Symmetry::mirror_x}), "");
+}
+
 TEST(PeriodicInfluence, mirrored_grid_needs_even_sizes_and_mirror_point_centres) {
   EXPECT_NE(grid_error(PeriodicGrid{31, 32, 1.0, 1.0, Symmetry::mirror}), "");
   EXPECT_EQ(grid_error(PeriodicGrid{31, 32, 1.0, 1.0}), "");

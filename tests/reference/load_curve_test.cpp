@@ -122,8 +122,8 @@ TEST(LoadCurve, reads_keep_the_balance_and_the_contact_rules) {
 }
 
 // The hexagonal lattice's cell: l x l sqrt(3), two tallest sites, the triangles' centres; even
-// (its quarter solves it) with two levels, not with three (the upward and downward centres
-// swap under the mirror).
+// (its quarter solves it) with two levels; with three even in x alone (its half solves it:
+// the upward and downward centres swap under the mirror in y).
 TEST(LoadCurve, the_lattices_place_their_sites) {
   const model::CellGeometry two = model::lattice_cell(LatticeKind::hexagonal, 1.0, model::Shape{2, 0.5}, {0.1});
   EXPECT_EQ(two.sites.size(), 6u);
@@ -146,8 +146,9 @@ TEST(LoadCurve, the_lattices_place_their_sites) {
   }
   const model::CellGeometry three = model::lattice_cell(LatticeKind::hexagonal, 1.0, model::Shape{2, 0.5}, {0.1, 0.2});
   EXPECT_EQ(three.levels(), 3);
-  EXPECT_FALSE(model::mirror_symmetric(three));
-  EXPECT_EQ(reference::lattice_grid(three, LatticeKind::hexagonal, 64).symmetry, reference::Symmetry::none);
+  EXPECT_FALSE(model::mirror_symmetric(three));  // its levels alternate along y
+  EXPECT_TRUE(model::mirror_symmetric_x(three));
+  EXPECT_EQ(reference::lattice_grid(three, LatticeKind::hexagonal, 64).symmetry, reference::Symmetry::mirror_x);
   EXPECT_EQ(reference::lattice_grid(three, LatticeKind::hexagonal, 64).ny % 6, 0);
   const model::CellGeometry square = model::lattice_cell(LatticeKind::square, 1.0, model::Shape{2, 0.5}, {0.1, 0.2});
   EXPECT_TRUE(model::mirror_symmetric(square));
@@ -265,4 +266,49 @@ TEST(LoadCurve, a_curve_to_a_reach_is_the_whole_curves_beginning) {
   reference::LoadCurveOptions beyond;
   beyond.X_reach = 10.0 * whole.X_full;
   EXPECT_EQ(reference::build_load_curve(g, cell, beyond).tables(), whole.tables());
+}
+
+// The hexagonal lattice of three levels is even in x alone (its levels alternate along y):
+// its grid stores the half 0 <= x <= Lx/2 (Symmetry::mirror_x), the same discrete problem
+// on half the unknowns. Its curve against the whole grid's: each level's touchdown within
+// the touchdown tolerance (1e-7 of X) and the solves' (1e-8), the areas and loads read at
+// loads across the range within the refinement's tolerances (1e-3 of an area and half a
+// node, 1e-4 of the load share) and the same full contact; a scattered supercell (no
+// symmetry) and the two-level cell (its quarter) keep theirs.
+TEST(LoadCurve, a_cell_even_in_x_alone_is_solved_on_its_half) {
+  const model::CellGeometry g = model::lattice_cell(LatticeKind::hexagonal, 1.2, model::Shape{2, 0.5}, {0.03, 0.06});
+  ASSERT_TRUE(model::mirror_symmetric_x(g));
+  ASSERT_FALSE(model::mirror_symmetric(g));
+  const reference::PeriodicGrid half = reference::lattice_grid(g, LatticeKind::hexagonal, 48);
+  ASSERT_EQ(half.symmetry, reference::Symmetry::mirror_x);
+  reference::PeriodicGrid whole = half;
+  whole.symmetry = reference::Symmetry::none;
+  const reference::Cell half_cell = reference::make_cell(g, half), whole_cell = reference::make_cell(g, whole);
+  EXPECT_EQ(half_cell.profile.size() * 2, whole_cell.profile.size() + 2 * static_cast<std::size_t>(half.ny));
+  const model::LoadCurve a = reference::build_load_curve(g, half_cell, {}), b = reference::build_load_curve(g, whole_cell, {});
+  std::printf("half: %zu samples, whole: %zu; X_full %.10g and %.10g; touchdowns %.10g %.10g / %.10g %.10g\n", a.samples.size(),
+              b.samples.size(), a.X_full, b.X_full, a.level_touchdown[1], a.level_touchdown[2], b.level_touchdown[1],
+              b.level_touchdown[2]);
+  for (std::size_t level = 1; level < 3; ++level) {
+    EXPECT_NEAR(a.level_touchdown[level], b.level_touchdown[level], 2e-7 * b.level_touchdown[level]) << level;
+  }
+  EXPECT_NEAR(a.X_full, b.X_full, 2e-7 * b.X_full);
+  const double node_area = half.cell_area();
+  for (double X = 2.0 * b.X_first(); X < b.X_full; X *= 1.7) {
+    const model::CurveState x = a.at(X), y = b.at(X);
+    for (std::size_t level = 0; level < 3; ++level) {
+      EXPECT_NEAR(x.level_area[level], y.level_area[level], 2e-3 * y.level_area[level] + node_area) << "X " << X << " level " << level;
+      EXPECT_NEAR(x.level_load[level], y.level_load[level], 2e-4 * X * g.Lx * g.Ly) << "X " << X << " level " << level;
+    }
+    EXPECT_EQ(x.sites_touched, y.sites_touched) << "X " << X;
+  }
+  // The other cells keep their grids: the two-level cell its quarter, a scattered
+  // supercell the whole.
+  const model::CellGeometry two = model::lattice_cell(LatticeKind::hexagonal, 1.2, model::Shape{2, 0.5}, {0.03});
+  EXPECT_EQ(reference::lattice_grid(two, LatticeKind::hexagonal, 48).symmetry, reference::Symmetry::mirror);
+  model::HeightScatter scatter;
+  scatter.kind = model::HeightScatter::Kind::normal;
+  scatter.width = 0.005;
+  const model::CellGeometry scattered = model::supercell(g, 2, scatter);
+  EXPECT_EQ(reference::lattice_grid(scattered, LatticeKind::hexagonal, 24, 2).symmetry, reference::Symmetry::none);
 }

@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "model/numerics/integer_power.hpp"
 
@@ -159,7 +160,12 @@ std::size_t covered_site(const CellGeometry& geometry, const SurfaceLocator& sur
   return geometry.sites.size();
 }
 
-bool mirror_symmetric(const CellGeometry& g) {
+namespace {
+
+/// Whether each site's image (x, y) -> image(x, y) is a site of the same shape, drop and
+/// level, positions within 1e-12 of the cell, modulo it.
+template <class Image>
+bool sites_even(const CellGeometry& g, const Image& image) {
   const auto same = [](double a, double b, double L) {
     const double d = std::fmod(std::abs(a - b), L);
     return std::min(d, L - d) <= 1e-12 * L;
@@ -170,8 +176,20 @@ bool mirror_symmetric(const CellGeometry& g) {
              o.drop == like.drop && o.level == like.level;
     });
   };
-  return std::all_of(g.sites.begin(), g.sites.end(),
-                     [&](const Site& s) { return has(g.Lx - s.x, s.y, s) && has(s.x, g.Ly - s.y, s); });
+  return std::all_of(g.sites.begin(), g.sites.end(), [&](const Site& s) {
+    const auto [x, y] = image(s);
+    return has(x, y, s);
+  });
+}
+
+}  // namespace
+
+bool mirror_symmetric_x(const CellGeometry& g) {
+  return sites_even(g, [&](const Site& s) { return std::pair{g.Lx - s.x, s.y}; });
+}
+
+bool mirror_symmetric(const CellGeometry& g) {
+  return mirror_symmetric_x(g) && sites_even(g, [&](const Site& s) { return std::pair{s.x, g.Ly - s.y}; });
 }
 
 std::string lattice_name(LatticeKind lattice) { return lattice == LatticeKind::square ? "square" : "hexagonal"; }

@@ -123,6 +123,10 @@ bool tip_exposed(const CellGeometry& geometry, const SurfaceLocator& surface, st
 /// same shape, drop and level (positions within 1e-12 of the cell). Such a cell's fields
 /// are even, so the boundary elements may solve its quarter.
 bool mirror_symmetric(const CellGeometry& geometry);
+/// Whether the sites are even in x alone (each site's image (Lx - x, y) a site of the same
+/// shape, drop and level): the boundary elements may then solve its half 0 <= x <= Lx/2. The
+/// hexagonal lattice of three levels is (its levels alternate along y, so not even in y).
+bool mirror_symmetric_x(const CellGeometry& geometry);
 
 /// The lattices a texture's tallest sites may sit on.
 enum class LatticeKind {
