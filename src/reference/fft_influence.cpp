@@ -40,16 +40,24 @@ std::shared_ptr<const Plan> shared_plan(Args... args) {
 
 }  // namespace
 
-FftPlans::FftPlans(int nx, int ny) {
+FftPlans::FftPlans(int nx, int ny, bool rows) {
   if (nx < 1 || ny < 1) throw std::invalid_argument("FFT grid must be at least 1 x 1");
+  const int nyc = ny / 2 + 1;
   const std::size_t n_real = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
-  const std::size_t n_complex = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny / 2 + 1);
+  const std::size_t n_complex = static_cast<std::size_t>(nx) * static_cast<std::size_t>(nyc);
   // FFTW_MEASURE overwrites the arrays it plans on, so it gets its own scratch.
   FftwBuffer<double> real(n_real);
   FftwBuffer<std::complex<double>> spectrum(n_complex);
   auto* spec = reinterpret_cast<fftw_complex*>(spectrum.data());
-  forward_ = fftw_plan_dft_r2c_2d(nx, ny, real.data(), spec, FFTW_MEASURE | FFTW_PRESERVE_INPUT);
-  backward_ = fftw_plan_dft_c2r_2d(nx, ny, spec, real.data(), FFTW_MEASURE | FFTW_DESTROY_INPUT);
+  if (rows) {
+    forward_ = fftw_plan_many_dft_r2c(1, &ny, nx, real.data(), nullptr, 1, ny, spec, nullptr, 1, nyc,
+                                      FFTW_MEASURE | FFTW_PRESERVE_INPUT);
+    backward_ = fftw_plan_many_dft_c2r(1, &ny, nx, spec, nullptr, 1, nyc, real.data(), nullptr, 1, ny,
+                                       FFTW_MEASURE | FFTW_DESTROY_INPUT);
+  } else {
+    forward_ = fftw_plan_dft_r2c_2d(nx, ny, real.data(), spec, FFTW_MEASURE | FFTW_PRESERVE_INPUT);
+    backward_ = fftw_plan_dft_c2r_2d(nx, ny, spec, real.data(), FFTW_MEASURE | FFTW_DESTROY_INPUT);
+  }
   if (forward_ == nullptr || backward_ == nullptr) {
     if (forward_ != nullptr) fftw_destroy_plan(as_plan(forward_));
     if (backward_ != nullptr) fftw_destroy_plan(as_plan(backward_));
@@ -71,40 +79,8 @@ void FftPlans::backward(std::complex<double>* in, double* out) const {
   fftw_execute_dft_c2r(as_plan(backward_), reinterpret_cast<fftw_complex*>(in), out);
 }
 
-std::shared_ptr<const FftPlans> fft_plans(int nx, int ny) { return shared_plan<FftPlans>(nx, ny); }
+std::shared_ptr<const FftPlans> fft_plans(int nx, int ny, bool rows) { return shared_plan<FftPlans>(nx, ny, rows); }
 
-RowFftPlans::RowFftPlans(int rows, int ny) {
-  if (rows < 1 || ny < 1) throw std::invalid_argument("FFT rows must be at least 1 x 1");
-  const int nyc = ny / 2 + 1;
-  FftwBuffer<double> real(static_cast<std::size_t>(rows) * static_cast<std::size_t>(ny));
-  FftwBuffer<std::complex<double>> spectrum(static_cast<std::size_t>(rows) * static_cast<std::size_t>(nyc));
-  auto* spec = reinterpret_cast<fftw_complex*>(spectrum.data());
-  forward_ = fftw_plan_many_dft_r2c(1, &ny, rows, real.data(), nullptr, 1, ny, spec, nullptr, 1, nyc,
-                                    FFTW_MEASURE | FFTW_PRESERVE_INPUT);
-  backward_ = fftw_plan_many_dft_c2r(1, &ny, rows, spec, nullptr, 1, nyc, real.data(), nullptr, 1, ny,
-                                     FFTW_MEASURE | FFTW_DESTROY_INPUT);
-  if (forward_ == nullptr || backward_ == nullptr) {
-    if (forward_ != nullptr) fftw_destroy_plan(as_plan(forward_));
-    if (backward_ != nullptr) fftw_destroy_plan(as_plan(backward_));
-    throw std::runtime_error("FFTW could not plan the transforms along y");
-  }
-}
-
-RowFftPlans::~RowFftPlans() {
-  const std::lock_guard<std::mutex> lock(planner_mutex());
-  fftw_destroy_plan(as_plan(forward_));
-  fftw_destroy_plan(as_plan(backward_));
-}
-
-void RowFftPlans::forward(double* in, std::complex<double>* out) const {
-  fftw_execute_dft_r2c(as_plan(forward_), in, reinterpret_cast<fftw_complex*>(out));
-}
-
-void RowFftPlans::backward(std::complex<double>* in, double* out) const {
-  fftw_execute_dft_c2r(as_plan(backward_), reinterpret_cast<fftw_complex*>(in), out);
-}
-
-std::shared_ptr<const RowFftPlans> row_fft_plans(int rows, int ny) { return shared_plan<RowFftPlans>(rows, ny); }
 
 template <class T>
 FftwBuffer<T>::FftwBuffer(std::size_t n) : size_(n) {
@@ -335,7 +311,7 @@ PeriodicInfluence::PeriodicInfluence(const PeriodicGrid& grid) : grid_(grid) {
     // half spectrum along y (0 .. ny/2; the negative ones its conjugates).
     const int mx = grid.stored_nx(), nyc = grid.ny / 2 + 1;
     cosine_ = std::make_unique<CosineTransform>(mx, grid.ny, false);
-    rows_ = row_fft_plans(mx, grid.ny);
+    rows_ = fft_plans(mx, grid.ny, true);
     kernel_.resize(static_cast<std::size_t>(mx) * static_cast<std::size_t>(nyc));
     for (int i = 0; i < mx; ++i) {
       for (int j = 0; j < nyc; ++j) kernel_[static_cast<std::size_t>(i) * nyc + j] = kernel_value(i, j, grid, normalisation);

@@ -14,11 +14,13 @@
 namespace punchsweep::reference {
 
 /// A forward (r2c) and backward (c2r) FFTW plan pair for one grid size, made once with
-/// FFTW_MEASURE and kept for the life of the process. Executing the plans is thread-safe;
-/// they are applied to other arrays through FFTW's new-array interface.
+/// FFTW_MEASURE and kept for the life of the process: the 2-D transform, or with `rows`
+/// the 1-D transforms along y of each of the nx rows alone (the same layouts). Executing
+/// the plans is thread-safe; they are applied to other arrays through FFTW's new-array
+/// interface.
 class FftPlans {
  public:
-  FftPlans(int nx, int ny);
+  FftPlans(int nx, int ny, bool rows = false);
   ~FftPlans();
   FftPlans(const FftPlans&) = delete;
   FftPlans& operator=(const FftPlans&) = delete;
@@ -35,27 +37,8 @@ class FftPlans {
 
 /// The plans for an nx x ny grid: planned at the first request for that size, then shared
 /// (thread-safe; FFTW's planner is serialised by a mutex).
-std::shared_ptr<const FftPlans> fft_plans(int nx, int ny);
+std::shared_ptr<const FftPlans> fft_plans(int nx, int ny, bool rows = false);
 
-/// Like FftPlans, along y alone: each of the `rows` rows of ny reals (row-major) to its
-/// ny/2 + 1 complex values and back, unnormalised.
-class RowFftPlans {
- public:
-  RowFftPlans(int rows, int ny);
-  ~RowFftPlans();
-  RowFftPlans(const RowFftPlans&) = delete;
-  RowFftPlans& operator=(const RowFftPlans&) = delete;
-
-  /// in (rows x ny reals, preserved) -> out (rows x (ny/2 + 1) complex).
-  void forward(double* in, std::complex<double>* out) const;
-  /// in (spectrum, destroyed) -> out (reals).
-  void backward(std::complex<double>* in, double* out) const;
-
- private:
-  void* forward_ = nullptr;
-  void* backward_ = nullptr;
-};
-std::shared_ptr<const RowFftPlans> row_fft_plans(int rows, int ny);
 
 /// Memory from fftw_malloc (SIMD-aligned, as FFTW's new-array execution requires).
 template <class T>
@@ -143,7 +126,7 @@ class PeriodicInfluence {
   PeriodicGrid grid_;
   std::shared_ptr<const FftPlans> plans_;    ///< whole grid: r2c and c2r
   std::unique_ptr<CosineTransform> cosine_;  ///< mirrored grid: the quarter's REDFT00 (mirror_x: along x)
-  std::shared_ptr<const RowFftPlans> rows_;  ///< mirror_x: r2c and c2r along y
+  std::shared_ptr<const FftPlans> rows_;     ///< mirror_x: r2c and c2r along y
   /// 2/|k| / (nx ny), 0 at k = 0: on the r2c half spectrum, on the quarter's
   /// non-negative wave numbers under mirror, or on kx >= 0 by the r2c half along y under
   /// mirror_x
