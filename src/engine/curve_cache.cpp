@@ -104,20 +104,59 @@ CacheEntry cache_entry(const std::filesystem::path& folder, const std::string& k
   return entry;
 }
 
-/// The curve saved in `entry`'s file, where one of the same key is there (the file's first
-/// numbers are the key's digest: a file of another key under this name is not believed) and
-/// it reaches `X_reach`'s march end (reference::march_end), cut there.
-std::optional<model::LoadCurve> saved_curve(const CacheEntry& entry, const reference::LoadCurveOptions& options) {
-  const std::vector<double> numbers = read_tables(entry.file);
-  if (numbers.size() <= entry.digest.size() || !std::equal(entry.digest.begin(), entry.digest.end(), numbers.begin())) {
+/// The numbers saved in `file` after `digest`, where the file starts with it (a file of
+/// another key under this name is not believed); else empty.
+std::vector<double> saved_numbers(const std::filesystem::path& file, const std::vector<double>& digest) {
+  std::vector<double> numbers = read_tables(file);
+  if (numbers.size() <= digest.size() || !std::equal(digest.begin(), digest.end(), numbers.begin())) return {};
+  numbers.erase(numbers.begin(), numbers.begin() + static_cast<std::ptrdiff_t>(digest.size()));
+  return numbers;
+}
+
+/// The curve saved in `entry`'s file, whole (as far as it was built), where there is one.
+std::optional<model::LoadCurve> saved_curve(const CacheEntry& entry) {
+  const std::vector<double> numbers = saved_numbers(entry.file, entry.digest);
+  return numbers.empty() ? std::nullopt : model::LoadCurve::from_tables(numbers);
+}
+
+/// Where the march for `options` stops on a curve that starts at X_first.
+double march_end(const model::LoadCurve& curve, const reference::LoadCurveOptions& options) {
+  return std::min(options.X_top, reference::march_end(curve.X_first(), options.samples_per_decade, options.X_reach));
+}
+
+/// Whether `curve` reaches the end of the march for `options`.
+bool reaches(const model::LoadCurve& curve, const reference::LoadCurveOptions& options) {
+  return std::isfinite(curve.X_full) || curve.X_last() >= march_end(curve, options);
+}
+
+/// The front saved beside a curve that stops at X_last short of full contact
+/// (reference::CurveFront), in the file beside the curve's: the digest, X_last, the sizes,
+/// the pressure, the h's; none where it is not that curve's.
+std::filesystem::path front_file(const CacheEntry& entry) {
+  std::filesystem::path file = entry.file;
+  return file.replace_extension(".front");
+}
+std::optional<reference::CurveFront> saved_front(const CacheEntry& entry, const model::LoadCurve& curve) {
+  const std::vector<double> n = saved_numbers(front_file(entry), entry.digest);
+  if (n.size() < 3 || n[0] != curve.X_last() || n.size() != 3 + static_cast<std::size_t>(n[1]) + static_cast<std::size_t>(n[2])) {
     return std::nullopt;
   }
-  std::optional<model::LoadCurve> curve =
-      model::LoadCurve::from_tables(std::vector<double>(numbers.begin() + static_cast<std::ptrdiff_t>(entry.digest.size()), numbers.end()));
-  if (!curve) return std::nullopt;
-  const double end = std::min(options.X_top, reference::march_end(curve->X_first(), options.samples_per_decade, options.X_reach));
-  if (std::isfinite(curve->X_full) || curve->X_last() >= end) return curve->up_to(end);
-  return std::nullopt;  // it stops short of this question's reach
+  const auto p = n.begin() + 3, h = p + static_cast<std::ptrdiff_t>(n[1]);
+  return reference::CurveFront{std::vector<double>(p, h), std::vector<double>(h, n.end())};
+}
+
+/// Saves `curve` (and where it stops short of full contact, its front) under `entry`.
+void save_curve(const CacheEntry& entry, const model::LoadCurve& curve, const reference::CurveFront& front) {
+  std::vector<double> saved = entry.digest;
+  const std::vector<double> tables = curve.tables();
+  saved.insert(saved.end(), tables.begin(), tables.end());
+  write_tables(entry.file, saved);
+  if (front.p.empty()) return;
+  std::vector<double> numbers = entry.digest;
+  numbers.insert(numbers.end(), {curve.X_last(), static_cast<double>(front.p.size()), static_cast<double>(front.h.size())});
+  numbers.insert(numbers.end(), front.p.begin(), front.p.end());
+  numbers.insert(numbers.end(), front.h.begin(), front.h.end());
+  write_tables(front_file(entry), numbers);
 }
 
 /// The cache's folder where it may be used, else none.
@@ -141,23 +180,29 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
   if (!folder) return reference::build_load_curve(geometry, cell(), options);
   const CacheEntry entry = cache_entry(*folder, curve_key(geometry, grid, options, measured));
   const FileLock lock(*folder / (entry.name + ".lock"));
-  // Under the lock a builder before us has saved its curve by now.
-  if (std::optional<model::LoadCurve> curve = saved_curve(entry, options)) {
+  // Under the lock a builder before us has saved its curve by now: read and cut where it
+  // reaches as far, else continued from where it stopped (its front), else built.
+  std::optional<model::LoadCurve> saved = saved_curve(entry);
+  if (saved && reaches(*saved, options)) {
     *origin = CurveOrigin::cache;
-    return std::move(*curve);
+    return saved->up_to(march_end(*saved, options));
   }
-  model::LoadCurve curve = reference::build_load_curve(geometry, cell(), options);
-  std::vector<double> saved = entry.digest;
-  const std::vector<double> tables = curve.tables();
-  saved.insert(saved.end(), tables.begin(), tables.end());
-  write_tables(entry.file, saved);
+  reference::CurveFront front;
+  std::optional<reference::CurveFront> from;
+  if (saved && !std::isfinite(saved->X_full)) from = saved_front(entry, *saved);
+  model::LoadCurve curve = from ? reference::extend_load_curve(geometry, cell(), std::move(*saved), *from, options, &front)
+                                : reference::build_load_curve(geometry, cell(), options, &front);
+  if (from) *origin = CurveOrigin::extended;
+  save_curve(entry, curve, front);
   return curve;
 }
 
 bool curve_is_cached(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
                      const reference::LoadCurveOptions& options, const reference::Cell* measured) {
   const std::optional<std::filesystem::path> folder = usable_cache();
-  return folder && saved_curve(cache_entry(*folder, curve_key(geometry, grid, options, measured)), options).has_value();
+  if (!folder) return false;
+  const std::optional<model::LoadCurve> saved = saved_curve(cache_entry(*folder, curve_key(geometry, grid, options, measured)));
+  return saved && reaches(*saved, options);
 }
 
 }  // namespace punchsweep::engine

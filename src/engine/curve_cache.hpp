@@ -14,7 +14,8 @@
 namespace punchsweep::engine {
 
 /// Where a curve came from.
-enum class CurveOrigin { cache, built };
+/// (extended: a saved curve that stopped short, continued from where it stopped.)
+enum class CurveOrigin { cache, built, extended };
 
 /// The load curve of `geometry` on `grid` with `options`: read from the table cache where
 /// this engine saved one for the same geometry, grid, options and cell (they are hashed
@@ -28,8 +29,10 @@ enum class CurveOrigin { cache, built };
 /// The key leaves out options.X_reach: a saved curve that reaches as far (to full contact,
 /// or a march that stopped at or past this one's end) is read and cut where the march for
 /// this reach stops (model::LoadCurve::up_to at reference::march_end), which gives the curve
-/// built for it, bit for bit; one that stops short is built again for this reach (from the
-/// start: a curve's march is not resumed) and saved in its place.
+/// built for it, bit for bit; one that stops short is continued to this reach from where it
+/// stopped (its front, saved beside it: the pressure and the sites' closures at its last
+/// sample), which gives the curve built for the new reach, bit for bit, at the cost of the
+/// part past the old end (from the start where no front is saved), and saved in its place.
 model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
                                 const reference::LoadCurveOptions& options, const reference::Cell* measured,
                                 const std::function<const reference::Cell&()>& cell, CurveOrigin* origin = nullptr);

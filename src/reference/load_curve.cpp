@@ -80,15 +80,9 @@ class CurveBuilder {
     curve_.level_share[0] = rest;
   }
 
-  model::LoadCurve build() {
+  model::LoadCurve build(CurveFront* front) {
     const double X_start = start_load(options_.min_spot_nodes);
-    // The march's end: the stated top, or its first sample past the question's reach.
-    const double top = std::min(options_.X_top, march_end(X_start, options_.samples_per_decade, options_.X_reach));
-    if (options_.progress) {
-      report_.X_start = X_start;
-      report_.X_full_contact = full_contact_load(cell_);
-      report_.X_full = std::min(report_.X_full_contact, top);
-    }
+    const double top = report_range(X_start);
     curve_.X_resolved = start_load(options_.resolved_spot_nodes);
     // The tallest sites touch at any load; any other that has touched by X_start is found
     // below it from the uniform start.
@@ -103,6 +97,43 @@ class CurveBuilder {
     emit(a);
     // A grid so coarse that the first resolved spot already fills the cell: full there.
     if (a.full) curve_.X_full = a.sample.X;
+    return march(std::move(a), top, front);
+  }
+
+  /// `curve` (this builder's, stopped at its top short of full contact) continued from
+  /// `from`, the state at its last sample, as if the march had not stopped.
+  model::LoadCurve extend(model::LoadCurve curve, const CurveFront& from, CurveFront* front) {
+    if (std::isfinite(curve.X_full) || curve.nx != cell_.grid.nx || curve.ny != cell_.grid.ny ||
+        curve.sites() != geometry_.sites.size() || from.p.size() != cell_.grid.size() || from.h.size() != geometry_.sites.size()) {
+      throw std::invalid_argument("extend_load_curve: the curve and its front are not this cell's, stopped short of full contact");
+    }
+    curve.level_small_spot.clear();
+    curve_ = std::move(curve);
+    const double top = report_range(curve_.X_first());
+    Solved a;
+    a.sample = curve_.samples.back();
+    a.p = from.p;
+    a.h = from.h;
+    last_p_ = from.p;
+    return march(std::move(a), top, front);
+  }
+
+ private:
+  /// The march's end for a march from X_start (the stated top, or its first sample past the
+  /// question's reach), told to the progress.
+  double report_range(double X_start) {
+    const double top = std::min(options_.X_top, march_end(X_start, options_.samples_per_decade, options_.X_reach));
+    if (options_.progress) {
+      report_.X_start = X_start;
+      report_.X_full_contact = full_contact_load(cell_);
+      report_.X_full = std::min(report_.X_full_contact, top);
+    }
+    return top;
+  }
+
+  /// The march in load from sample a (emitted) to `top` or full contact; `front` (where
+  /// given) receives the state at the last sample where it stops short of full contact.
+  model::LoadCurve march(Solved a, double top, CurveFront* front) {
     const double step = march_step(options_.samples_per_decade);
     while (!a.full && a.sample.X < top) {
       options_.stop.throw_if_requested();
@@ -122,11 +153,11 @@ class CurveBuilder {
       refine(a, b, 0);
       a = std::move(b);
     }
+    if (front != nullptr) *front = a.full ? CurveFront{} : CurveFront{a.p, a.h};
     curve_.level_touchdown = level_touchdowns_found();
     return std::move(curve_);
   }
 
- private:
   /// The load at which each tallest site's spot, as an isolated punch's, covers
   /// `spot_nodes` nodes: P = K_P a^(s+1) per site.
   double start_load(int spot_nodes) const {
@@ -349,14 +380,30 @@ class CurveBuilder {
 
 }  // namespace
 
-model::LoadCurve build_load_curve(const model::CellGeometry& geometry, const Cell& cell, const LoadCurveOptions& options) {
+namespace {
+
+void check_options(const LoadCurveOptions& options) {
   if (!(options.X_top > 0.0) || !(options.X_reach > 0.0) || options.min_spot_nodes < 1 || options.resolved_spot_nodes < options.min_spot_nodes || options.samples_per_decade < 1 ||
       !(options.area_tolerance > 0.0) || !(options.load_tolerance > 0.0) || options.max_refinements < 0 ||
       !(options.touchdown_tolerance > 0.0)) {
     throw std::invalid_argument("build_load_curve: X_top, X_reach > 0, min_spot_nodes, samples_per_decade >= 1, tolerances > 0");
   }
+}
+
+}  // namespace
+
+model::LoadCurve build_load_curve(const model::CellGeometry& geometry, const Cell& cell, const LoadCurveOptions& options,
+                                  CurveFront* front) {
+  check_options(options);
   if (cell.tips.size() != geometry.sites.size()) throw std::invalid_argument("build_load_curve: the cell is not the geometry's");
-  return CurveBuilder(geometry, cell, options).build();
+  return CurveBuilder(geometry, cell, options).build(front);
+}
+
+model::LoadCurve extend_load_curve(const model::CellGeometry& geometry, const Cell& cell, model::LoadCurve curve,
+                                   const CurveFront& from, const LoadCurveOptions& options, CurveFront* front) {
+  check_options(options);
+  if (cell.tips.size() != geometry.sites.size()) throw std::invalid_argument("extend_load_curve: the cell is not the geometry's");
+  return CurveBuilder(geometry, cell, options).extend(std::move(curve), from, front);
 }
 
 }  // namespace punchsweep::reference

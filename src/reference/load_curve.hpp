@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <limits>
+#include <vector>
 
 #include "model/numerics/stop_request.hpp"
 #include "model/problem/cell_geometry.hpp"
@@ -88,11 +89,27 @@ double full_contact_load(const Cell& cell);
 /// built with this X_reach.
 double march_end(double X_first, int samples_per_decade, double X_reach);
 
-/// The load curve of `geometry` on the grid of `cell` (make_cell(geometry, grid)). Throws
-/// std::invalid_argument for a bad option, std::runtime_error where a contact solve misses
-/// its tolerance from both the last pressure and the uniform one, model::Stopped on a stop
-/// request.
+/// Where a curve's march stopped short of full contact: the pressure at its last sample
+/// (the next solve's start) and each site's h there (its gap's closure). With it the march
+/// goes on as if it had not stopped (extend_load_curve). Empty for a curve at full contact.
+struct CurveFront {
+  std::vector<double> p;  ///< the stored grid's pressure, in E0*
+  std::vector<double> h;  ///< per site: u(tallest tip) - u(its tip), in R
+};
+
+/// The load curve of `geometry` on the grid of `cell` (make_cell(geometry, grid)); `front`,
+/// where given, receives where it stopped. Throws std::invalid_argument for a bad option,
+/// std::runtime_error where a contact solve misses its tolerance from both the last
+/// pressure and the uniform one, model::Stopped on a stop request.
 model::LoadCurve build_load_curve(const model::CellGeometry& geometry, const Cell& cell,
-                                  const LoadCurveOptions& options = {});
+                                  const LoadCurveOptions& options = {}, CurveFront* front = nullptr);
+
+/// `curve` (build_load_curve's on this cell with these options but a smaller reach, its
+/// front `from`) continued to `options`' reach: the curve build_load_curve gives for it, bit
+/// for bit (the march's samples, warm starts and touchdown bisections are the same), at the
+/// cost of the part past the old end. std::invalid_argument where the curve or front is not
+/// this cell's or the curve reached full contact.
+model::LoadCurve extend_load_curve(const model::CellGeometry& geometry, const Cell& cell, model::LoadCurve curve,
+                                   const CurveFront& from, const LoadCurveOptions& options = {}, CurveFront* front = nullptr);
 
 }  // namespace punchsweep::reference

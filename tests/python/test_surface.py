@@ -264,7 +264,8 @@ def test_the_curve_stops_past_the_most_the_load_reaches(tmp_path):
     snapshot equal to the last bit, level 1's X* equal, while level 2, untouched by then,
     never touches with X* null (the whole curve's lies past X(inf)). A whole curve in the
     cache serves the shorter question, cut to it (the same answer as building it), and a
-    question that reaches further than a saved curve builds it again."""
+    question that reaches further than a saved curve continues it from where it stopped (the
+    same answer as building it for that question at once)."""
     env = {**os.environ, "PUNCHSWEEP_CACHE": str(tmp_path / "cache")}
     geometry = ["--lattice", "hexagonal", "--l", "1.2", "--dh", "0.03", "--dh2", "0.08", "--s", "2", "--grid", "48",
                 "--times", "0,1,5", "--format", "json"]
@@ -298,11 +299,15 @@ def test_the_curve_stops_past_the_most_the_load_reaches(tmp_path):
     assert cut["curve"]["cached"] is True
     assert cut["curve"]["samples"] == short["curve"]["samples"] and cut["curve"]["X_last"] == short["curve"]["X_last"]
     assert cut["levels"] == short["levels"] and cut["series"] == short["series"]
-    # A fresh cache: the short curve saved, then a question reaching further builds again.
+    # A fresh cache: the short curve saved, then a question reaching further continues it
+    # from where it stopped: the answer of a curve built for it at once, to the bit.
     env["PUNCHSWEEP_CACHE"] = str(tmp_path / "other")
     assert run("--pbar", pbar, "--T", T, cache="mine")["curve"]["cached"] is False
     further = run("--pbar", 4 * pbar, "--T", T, cache="mine")
     assert further["curve"]["cached"] is False and further["curve"]["X_reach"] == pytest.approx(4 * pbar * T, rel=1e-12)
+    at_once = run("--pbar", 4 * pbar, "--T", T)
+    assert further["levels"] == at_once["levels"] and further["series"] == at_once["series"]
+    assert further["curve"]["samples"] == at_once["curve"]["samples"]
     assert run("--pbar", pbar, "--T", T, cache="mine")["curve"]["cached"] is True
 
 

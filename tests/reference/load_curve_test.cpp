@@ -262,6 +262,23 @@ TEST(LoadCurve, a_curve_to_a_reach_is_the_whole_curves_beginning) {
     }
     EXPECT_EQ(cut.at(1.01 * cut.X_last()).range, model::CurveRange::above_top);
   }
+  // A curve stopped at one reach, continued from its front to the next and to full
+  // contact, is the curve built for each at once, bit for bit.
+  reference::CurveFront front;
+  reference::LoadCurveOptions first;
+  first.X_reach = reaches.front();
+  model::LoadCurve grown = reference::build_load_curve(g, cell, first, &front);
+  EXPECT_EQ(front.p.size(), cell.grid.size());
+  for (std::size_t r = 1; r <= reaches.size(); ++r) {
+    reference::LoadCurveOptions next;
+    if (r < reaches.size()) next.X_reach = reaches[r];
+    reference::CurveFront after;
+    grown = reference::extend_load_curve(g, cell, std::move(grown), front, next, &after);
+    EXPECT_EQ(grown.tables(), reference::build_load_curve(g, cell, next).tables()) << "extended to reach " << next.X_reach;
+    front = std::move(after);
+  }
+  EXPECT_TRUE(front.p.empty());  // at full contact: nothing to go on from
+  EXPECT_THROW(reference::extend_load_curve(g, cell, whole, front, {}), std::invalid_argument);
   // Past full contact the reach changes nothing.
   reference::LoadCurveOptions beyond;
   beyond.X_reach = 10.0 * whole.X_full;

@@ -120,7 +120,8 @@ namespace {
 
 // The cache keys a curve without its reach: a saved curve that reaches as far serves a
 // question of a smaller reach, cut where that question's march stops (the curve built for
-// it, bit for bit); one that stops short is built again and saved in its place.
+// it, bit for bit); one that stops short is continued from its front (saved beside it) to
+// the further reach, again the curve built for it, and saved in its place.
 TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   const ScratchCache cache;
   const model::CellGeometry geometry = hexagonal_two_levels();
@@ -140,10 +141,11 @@ TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   engine::CurveOrigin origin{};
   EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, std::ref(made), &origin).tables(), built_low.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::built);
-  // Further than the saved one: built again (and saved); nearer: read and cut.
+  // Further than the saved one: continued from where it stopped (and saved); nearer: read
+  // and cut.
   EXPECT_FALSE(engine::curve_is_cached(geometry, grid, high, nullptr));
   EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, std::ref(made), &origin).tables(), built_high.tables());
-  EXPECT_EQ(origin, engine::CurveOrigin::built);
+  EXPECT_EQ(origin, engine::CurveOrigin::extended);
   EXPECT_EQ(cells_made, 2);
   EXPECT_TRUE(engine::curve_is_cached(geometry, grid, low, nullptr));
   EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, std::ref(made), &origin).tables(), built_low.tables());
@@ -151,13 +153,24 @@ TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   EXPECT_EQ(cells_made, 2);
   // The whole curve saved serves any reach.
   EXPECT_EQ(engine::load_curve_for(geometry, grid, {}, nullptr, std::ref(made), &origin).tables(), whole.tables());
-  EXPECT_EQ(origin, engine::CurveOrigin::built);
+  EXPECT_EQ(origin, engine::CurveOrigin::extended);
   for (const reference::LoadCurveOptions* options : {&low, &high}) {
     EXPECT_EQ(engine::load_curve_for(geometry, grid, *options, nullptr, std::ref(made), &origin).tables(),
               (options == &low ? built_low : built_high).tables());
     EXPECT_EQ(origin, engine::CurveOrigin::cache);
   }
   EXPECT_EQ(cells_made, 3);
+  // Without its front (a file lost) a short curve is built again, from the start.
+  for (const auto& file : std::filesystem::directory_iterator(cache.path)) {
+    if (file.path().extension() == ".tables" || file.path().extension() == ".front") std::filesystem::remove(file.path());
+  }
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, std::ref(made), &origin).tables(), built_low.tables());
+  EXPECT_EQ(origin, engine::CurveOrigin::built);
+  for (const auto& file : std::filesystem::directory_iterator(cache.path)) {
+    if (file.path().extension() == ".front") std::filesystem::remove(file.path());
+  }
+  EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, std::ref(made), &origin).tables(), built_high.tables());
+  EXPECT_EQ(origin, engine::CurveOrigin::built);
 }
 
 }  // namespace
