@@ -119,14 +119,9 @@ std::optional<model::LoadCurve> saved_curve(const CacheEntry& entry) {
   return numbers.empty() ? std::nullopt : model::LoadCurve::from_tables(numbers);
 }
 
-/// Where the march for `options` stops on a curve that starts at X_first.
-double march_end(const model::LoadCurve& curve, const reference::LoadCurveOptions& options) {
-  return std::min(options.X_top, reference::march_end(curve.X_first(), options.samples_per_decade, options.X_reach));
-}
-
 /// Whether `curve` reaches the end of the march for `options`.
 bool reaches(const model::LoadCurve& curve, const reference::LoadCurveOptions& options) {
-  return std::isfinite(curve.X_full) || curve.X_last() >= march_end(curve, options);
+  return std::isfinite(curve.X_full) || curve.X_last() >= reference::march_end(curve.X_first(), options);
 }
 
 /// The front saved beside a curve that stops at X_last short of full contact
@@ -185,7 +180,7 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
   std::optional<model::LoadCurve> saved = saved_curve(entry);
   if (saved && reaches(*saved, options)) {
     *origin = CurveOrigin::cache;
-    return saved->up_to(march_end(*saved, options));
+    return saved->up_to(reference::march_end(saved->X_first(), options));
   }
   reference::CurveFront front;
   std::optional<reference::CurveFront> from;

@@ -757,15 +757,19 @@ bool tables_answer(const SurfaceRun& run) {
   return run.curve_source != CurveSource::cell &&
          model::periodic_curve_reaches(model::periodic_solution(run.inputs.problem.shape.s), run.inputs.problem);
 }
+/// The load's inputs of `run`: its pressure, law and values, and load shape.
+model::SurfaceLoad surface_load_of(const SurfaceRun& run) {
+  return {run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values, run.inputs.problem.loading};
+}
+
 /// How far `run`'s curve is read (SurfaceRun::X_reach): the largest X(inf) of its load,
 /// its tolerances' corners and `also_held`'s points (t* asks whether X(t) ever reaches X*;
 /// every snapshot lies at or below X(inf)); +infinity under --full-curve.
 double curve_reach(const SurfaceRun& run, const MoreLoadPoints& also_held) {
   if (run.full_curve) return std::numeric_limits<double>::infinity();
-  const model::SurfaceLoad load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values, run.inputs.problem.loading};
   double X = 0.0;
   try {
-    X = model::largest_final_load(load, run.tolerances);
+    X = model::largest_final_load(surface_load_of(run), run.tolerances);
   } catch (const std::invalid_argument& e) {
     throw input::UsageError(std::string("--tolerance: ") + e.what());
   }
@@ -776,8 +780,7 @@ double curve_reach(const SurfaceRun& run, const MoreLoadPoints& also_held) {
 /// The curve as far as the times reach, and the history on it.
 void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
   const model::CreepWeightedLoad load(*run.inputs.creep, run.inputs.problem.pbar0, run.inputs.problem.loading);
-  const model::SurfaceLoad surface_load{run.inputs.problem.pbar0, run.inputs.law, run.inputs.law_values,
-                                        run.inputs.problem.loading};
+  const model::SurfaceLoad surface_load = surface_load_of(run);
   run.X_reach = curve_reach(run, also_held);
   const auto start = std::chrono::steady_clock::now();
   std::optional<model::LoadCurve> tabulated;

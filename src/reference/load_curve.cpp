@@ -36,12 +36,12 @@ double march_step(int samples_per_decade) { return std::pow(10.0, 1.0 / samples_
 
 }  // namespace
 
-double march_end(double X_first, int samples_per_decade, double X_reach) {
-  if (!std::isfinite(X_reach)) return std::numeric_limits<double>::infinity();
-  const double step = march_step(samples_per_decade);
+double march_end(double X_first, const LoadCurveOptions& options) {
+  if (!std::isfinite(options.X_reach)) return options.X_top;
+  const double step = march_step(options.samples_per_decade);
   double X = X_first * step;
-  while (X < X_reach) X *= step;
-  return X;
+  while (X < options.X_reach) X *= step;
+  return std::min(X, options.X_top);
 }
 
 namespace {
@@ -122,7 +122,7 @@ class CurveBuilder {
   /// The march's end for a march from X_start (the stated top, or its first sample past the
   /// question's reach), told to the progress.
   double report_range(double X_start) {
-    const double top = std::min(options_.X_top, march_end(X_start, options_.samples_per_decade, options_.X_reach));
+    const double top = march_end(X_start, options_);
     if (options_.progress) {
       report_.X_start = X_start;
       report_.X_full_contact = full_contact_load(cell_);
@@ -310,14 +310,7 @@ class CurveBuilder {
   }
 
   /// Each level's touchdown: the least of its sites' found so far (+infinity for none).
-  std::vector<double> level_touchdowns_found() const {
-    std::vector<double> least(static_cast<std::size_t>(levels_), std::numeric_limits<double>::infinity());
-    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      double& level = least[static_cast<std::size_t>(geometry_.sites[k].level)];
-      level = std::min(level, curve_.site_touchdown[k]);
-    }
-    return least;
-  }
+  std::vector<double> level_touchdowns_found() const { return curve_.least_site_touchdowns(levels_); }
 
   /// Whether the curve's reading between a and b (LoadCurve::at) meets the solve m.
   bool interpolation_holds(const Solved& a, const Solved& m, const Solved& b) const {

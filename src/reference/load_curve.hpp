@@ -81,13 +81,13 @@ struct LoadCurveOptions {
 /// X_full, found by bisection to its touchdown_tolerance), from one transform pair.
 double full_contact_load(const Cell& cell);
 
-/// Where a curve whose march starts at X_first (its first sample) stops for a question
-/// that reads loads up to X_reach: its first march sample at or past X_reach, and at least
-/// the one after X_first (the march's samples are X_first times step^k, step = 10^(1 /
-/// samples_per_decade), each the last times step as the march computes it); +infinity for
-/// an infinite X_reach. A cached curve cut here (model::LoadCurve::up_to) is the curve
-/// built with this X_reach.
-double march_end(double X_first, int samples_per_decade, double X_reach);
+/// Where a curve whose march starts at X_first (its first sample) stops under `options`
+/// short of full contact: its first march sample at or past X_reach, and at least the one
+/// after X_first (the march's samples are X_first times step^k, step = 10^(1 /
+/// samples_per_decade), each the last times step as the march computes it), or X_top if
+/// less; X_top for an infinite X_reach. A cached curve cut here (model::LoadCurve::up_to) is
+/// the curve built with these options.
+double march_end(double X_first, const LoadCurveOptions& options);
 
 /// Where a curve's march stopped short of full contact: the pressure at its last sample
 /// (the next solve's start) and each site's h there (its gap's closure). With it the march

@@ -240,7 +240,7 @@ TEST(LoadCurve, a_curve_to_a_reach_is_the_whole_curves_beginning) {
     EXPECT_EQ(last.fraction(), 1.0);
     EXPECT_NEAR(last.range_share(), std::log(cut.X_last() / cut.X_first()) / std::log(last.X_full_contact / cut.X_first()), 1e-15);
     EXPECT_LT(last.range_share(), 1.0);
-    const double end = reference::march_end(whole.X_first(), options.samples_per_decade, reach);
+    const double end = reference::march_end(whole.X_first(), options);
     std::printf("reach %.6g: %zu samples to X = %.6g (march end %.6g)\n", reach, cut.samples.size(), cut.X_last(), end);
     EXPECT_EQ(cut.X_last(), end);
     EXPECT_GE(cut.X_last(), reach);

@@ -106,13 +106,18 @@ LoadCurve LoadCurve::up_to(double X_end) const {
   out.pressure_monotone.resize(out.samples.size() - 1);
   if (X_full > out.X_last()) out.X_full = std::numeric_limits<double>::infinity();
   for (double& X : out.site_touchdown) X = X > out.X_last() ? std::numeric_limits<double>::infinity() : X;
-  std::fill(out.level_touchdown.begin(), out.level_touchdown.end(), std::numeric_limits<double>::infinity());
-  for (std::size_t k = 0; k < out.sites(); ++k) {
-    double& level = out.level_touchdown[static_cast<std::size_t>(out.site_level[k])];
-    level = std::min(level, out.site_touchdown[k]);
-  }
+  out.level_touchdown = out.least_site_touchdowns(levels());
   out.level_small_spot.clear();
   return out;
+}
+
+std::vector<double> LoadCurve::least_site_touchdowns(int levels) const {
+  std::vector<double> least(static_cast<std::size_t>(levels), std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < sites(); ++k) {
+    double& level = least[static_cast<std::size_t>(site_level[k])];
+    level = std::min(level, site_touchdown[k]);
+  }
+  return least;
 }
 
 std::vector<double> LoadCurve::tables() const {

@@ -79,6 +79,9 @@ struct LoadCurve {
   int levels() const { return static_cast<int>(level_touchdown.size()); }
   std::size_t sites() const { return site_level.size(); }
   double X_first() const { return samples.front().X; }
+  /// Each of `levels` levels' touchdown: the least of its sites' (site_touchdown by
+  /// site_level; +infinity for a level none of whose sites has touched).
+  std::vector<double> least_site_touchdowns(int levels) const;
   double X_last() const { return samples.back().X; }
 
   /// The state at load X >= 0: between samples, each level's area interpolated linearly

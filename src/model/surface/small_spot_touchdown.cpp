@@ -488,11 +488,7 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
     ++answered;
   }
   if (answered == 0) return 0;
-  std::fill(curve.level_touchdown.begin(), curve.level_touchdown.end(), std::numeric_limits<double>::infinity());
-  for (std::size_t k = 0; k < curve.sites(); ++k) {
-    double& level = curve.level_touchdown[static_cast<std::size_t>(curve.site_level[k])];
-    level = std::min(level, curve.site_touchdown[k]);
-  }
+  curve.level_touchdown = curve.least_site_touchdowns(curve.levels());
   for (std::size_t k = 0; k < curve.sites(); ++k) {
     const std::size_t level = static_cast<std::size_t>(curve.site_level[k]);
     if (level > 0 && limit[k].X == curve.site_touchdown[k] && curve.level_touchdown[level] == curve.site_touchdown[k]) curve.level_small_spot[level] = 1;
