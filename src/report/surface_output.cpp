@@ -287,7 +287,10 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);
     if (t.regime == model::Regime::delayed) out << " at t* = " << t.t_star << " " << run.inputs.time_unit;
-    if (!t.resolved) {
+    if (!t.resolved && !std::isfinite(t.X_star)) {
+      out << " (" << never_reason(run, hidden[static_cast<std::size_t>(level)] != 0)
+          << "; below the curve's resolution: a finer --grid answers)\n";
+    } else if (!t.resolved) {
       out << " (touches at X* = " << t.X_star << " E0*, below the curve's resolution: a finer --grid answers)\n";
     } else if (std::isfinite(t.X_star)) {
       out << " (touches at X* = " << t.X_star << " E0*)\n";

@@ -147,3 +147,32 @@ TEST(SmallSpotTouchdown, a_curve_takes_the_limits_touchdowns_where_it_answers) {
   const model::CellGeometry scattered = model::supercell(g, 2, model::HeightScatter{model::HeightScatter::Kind::normal, 1e-3, {}, 3});
   for (const model::SmallSpotTouchdown& t : model::small_spot_touchdowns(scattered)) EXPECT_TRUE(std::isinf(t.X));
 }
+
+namespace {
+
+// A curve stopped at a question's reach, short of a site the small-spot limit closes past
+// its end, takes the limit's touchdown there, as the whole curve does (whose own touchdown
+// the limit replaces): the same X* and the level marked the limit's. A stopped curve's
+// level untouched below its resolution is not resolved; one untouched at full contact is.
+TEST(SmallSpotTouchdown, a_stopped_curve_takes_the_limits_touchdown_past_its_end) {
+  using namespace punchsweep;
+  const model::CellGeometry g = model::lattice_cell(model::LatticeKind::hexagonal, 3.0, model::Shape{2, 0.5}, {0.05});
+  const reference::Cell cell = reference::make_cell(g, reference::lattice_grid(g, model::LatticeKind::hexagonal, 128));
+  model::LoadCurve whole = reference::build_load_curve(g, cell, {});
+  ASSERT_GT(model::answer_small_spots(whole, g), 0u);
+  ASSERT_EQ(whole.level_small_spot[1], 1);
+  reference::LoadCurveOptions short_of;
+  short_of.X_reach = whole.X_first();
+  model::LoadCurve cut = reference::build_load_curve(g, cell, short_of);
+  ASSERT_LT(cut.X_last(), whole.level_touchdown[1]);
+  ASSERT_TRUE(std::isinf(cut.level_touchdown[1]));
+  EXPECT_FALSE(model::touchdown_resolved(cut, 1)) << "untouched below the curve's resolution";
+  model::answer_small_spots(cut, g);
+  EXPECT_EQ(cut.level_touchdown[1], whole.level_touchdown[1]);
+  EXPECT_EQ(cut.level_small_spot[1], 1);
+  EXPECT_TRUE(model::touchdown_resolved(cut, 1));
+  std::printf("stopped at X = %.6g; level 1 from the limit at %.10g (whole curve: %.10g)\n", cut.X_last(),
+              cut.level_touchdown[1], whole.level_touchdown[1]);
+}
+
+}  // namespace

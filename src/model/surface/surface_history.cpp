@@ -29,7 +29,10 @@ SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveS
 bool touchdown_resolved(const LoadCurve& curve, std::size_t level) {
   const double X_star = curve.level_touchdown[level];
   const bool limit = level < curve.level_small_spot.size() && curve.level_small_spot[level] != 0;
-  return limit || X_star == 0.0 || !std::isfinite(X_star) || X_star >= curve.X_resolved;
+  // (A level untouched by the curve's end: resolved where that end is, at full contact or
+  // past X_resolved; a curve stopped below its resolution cannot say it is untouched.)
+  if (!std::isfinite(X_star)) return limit || std::isfinite(curve.X_full) || curve.X_last() >= curve.X_resolved;
+  return limit || X_star == 0.0 || X_star >= curve.X_resolved;
 }
 
 LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& load) {

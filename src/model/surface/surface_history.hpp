@@ -72,9 +72,10 @@ struct SurfaceHistory {
 /// below_resolution; valid otherwise. (history_cost is the loads' alone.)
 SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveState& state);
 
-/// Whether `curve` resolves level `level`'s touchdown: its X* is 0, +infinity, at or above
+/// Whether `curve` resolves level `level`'s touchdown: its X* is 0, at or above
 /// the curve's X_resolved (below it the tallest spots span too few nodes), or the small-spot
-/// limit's (LoadCurve::level_small_spot).
+/// limit's (LoadCurve::level_small_spot); +infinity (untouched by the curve's end) where the
+/// curve reached full contact or ends at or above X_resolved.
 bool touchdown_resolved(const LoadCurve& curve, std::size_t level);
 
 /// A level's touch under `load` from its touchdown load X* (model::classify), `resolved` as
