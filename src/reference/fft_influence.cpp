@@ -1,6 +1,7 @@
 #include "reference/fft_influence.hpp"
 
 #include <fftw3.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,8 @@
 #include <stdexcept>
 #include <tuple>
 #include <utility>
+
+#include "reference/transform_threads.hpp"
 
 namespace punchsweep::reference {
 
@@ -23,6 +26,17 @@ std::mutex& planner_mutex() {
 }
 
 fftw_plan as_plan(void* p) { return static_cast<fftw_plan>(p); }
+
+}  // namespace
+
+void prepare_fftw() {
+  // FFTW asks for its threads' set-up before any other of its calls (a static's
+  // initialisation runs once, whichever thread comes first).
+  static const bool ready = fftw_init_threads() != 0;
+  if (!ready) throw std::runtime_error("FFTW could not start its threads");
+}
+
+namespace {
 
 /// The plan of type Plan made from `args`, made at the first request for them and shared
 /// until exit (a sweep revisits the same few sizes). Plans are made under the planner's
@@ -40,8 +54,11 @@ std::shared_ptr<const Plan> shared_plan(Args... args) {
 
 }  // namespace
 
-FftPlans::FftPlans(int nx, int ny, bool rows) {
+FftPlans::FftPlans(int nx, int ny, bool rows, int threads) {
   if (nx < 1 || ny < 1) throw std::invalid_argument("FFT grid must be at least 1 x 1");
+  if (threads < 1) throw std::invalid_argument("FFT plans need at least one thread");
+  prepare_fftw();
+  fftw_plan_with_nthreads(threads);
   const int nyc = ny / 2 + 1;
   const std::size_t n_real = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
   const std::size_t n_complex = static_cast<std::size_t>(nx) * static_cast<std::size_t>(nyc);
@@ -58,6 +75,7 @@ FftPlans::FftPlans(int nx, int ny, bool rows) {
     forward_ = fftw_plan_dft_r2c_2d(nx, ny, real.data(), spec, FFTW_MEASURE | FFTW_PRESERVE_INPUT);
     backward_ = fftw_plan_dft_c2r_2d(nx, ny, spec, real.data(), FFTW_MEASURE | FFTW_DESTROY_INPUT);
   }
+  fftw_plan_with_nthreads(1);  // (the cosine transform's plans are one thread's)
   if (forward_ == nullptr || backward_ == nullptr) {
     if (forward_ != nullptr) fftw_destroy_plan(as_plan(forward_));
     if (backward_ != nullptr) fftw_destroy_plan(as_plan(backward_));
@@ -79,12 +97,16 @@ void FftPlans::backward(std::complex<double>* in, double* out) const {
   fftw_execute_dft_c2r(as_plan(backward_), reinterpret_cast<fftw_complex*>(in), out);
 }
 
-std::shared_ptr<const FftPlans> fft_plans(int nx, int ny, bool rows) { return shared_plan<FftPlans>(nx, ny, rows); }
+std::shared_ptr<const FftPlans> fft_plans(int nx, int ny, bool rows) {
+  const long values = static_cast<long>(nx) * ny;
+  return shared_plan<FftPlans>(nx, ny, rows, values >= kThreadedValues ? transform_threads() : 1);
+}
 
 
 template <class T>
 FftwBuffer<T>::FftwBuffer(std::size_t n) : size_(n) {
   if (n == 0) return;
+  prepare_fftw();
   data_ = static_cast<T*>(fftw_malloc(n * sizeof(T)));
   if (data_ == nullptr) throw std::bad_alloc();
   for (std::size_t i = 0; i < n; ++i) new (data_ + i) T{};
@@ -162,10 +184,8 @@ CosineTransform::CosineTransform(int mx, int my, bool along_y)
   const auto rows = [](int m, int lines) { return shared_plan<RowPlan>(m, lines); };
   if (along_y) along_y_ = {rows(my, kCosineBlock), mx % kCosineBlock ? rows(my, mx % kCosineBlock) : nullptr};
   along_x_ = {rows(mx, kCosineBlock), my % kCosineBlock ? rows(mx, my % kCosineBlock) : nullptr};
-  const std::size_t length =
-      static_cast<std::size_t>(std::max(along_y ? along_y_.block->length : 0, along_x_.block->length));
-  pad_ = FftwBuffer<double>(kCosineBlock * length);
-  spec_ = FftwBuffer<std::complex<double>>(kCosineBlock * (length / 2 + 1));
+  length_ = static_cast<std::size_t>(std::max(along_y ? along_y_.block->length : 0, along_x_.block->length));
+  scratch_.push_back({FftwBuffer<double>(kCosineBlock * length_), FftwBuffer<std::complex<double>>(kCosineBlock * (length_ / 2 + 1))});
   if (along_y) middle_ = FftwBuffer<double>(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my));
 }
 
@@ -241,10 +261,20 @@ void CosineTransform::lines(const Axis& axis, const double* in, double* out, int
   const std::ptrdiff_t step = kColumns ? my_ : 1;
   const std::ptrdiff_t length = shape.length;
   const std::ptrdiff_t spectrum = shape.spectrum;
-  double* pad = pad_.data();
-  std::complex<double>* spec = spec_.data();
-  double odd[kCosineBlock];  // halved: the running odd sums of each line
-  for (int first = 0; first < count; first += kCosineBlock) {
+  const int blocks = (count + kCosineBlock - 1) / kCosineBlock;
+  const long values = static_cast<long>(count) * m;
+  const int threads = values >= kThreadedValues ? std::min(transform_threads(), blocks) : 1;
+  while (static_cast<int>(scratch_.size()) < threads) {
+    scratch_.push_back({FftwBuffer<double>(kCosineBlock * length_), FftwBuffer<std::complex<double>>(kCosineBlock * (length_ / 2 + 1))});
+  }
+  // Each block alone, on whichever thread: the same bits for any number of them.
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (int index = 0; index < blocks; ++index) {
+    Scratch& mine = scratch_[static_cast<std::size_t>(threads > 1 ? omp_get_thread_num() : 0)];
+    double* pad = mine.pad.data();
+    std::complex<double>* spec = mine.spec.data();
+    double odd[kCosineBlock];  // halved: the running odd sums of each line
+    const int first = index * kCosineBlock;
     const int block = std::min(kCosineBlock, count - first);
     const double* x = in + first * line;
     double* y = out + first * line;

@@ -13,14 +13,18 @@
 
 namespace punchsweep::reference {
 
+/// Readies FFTW's threads, once a process (FFTW asks for it before any of its other calls;
+/// every FFTW use here goes through this file, which calls it first).
+void prepare_fftw();
+
 /// A forward (r2c) and backward (c2r) FFTW plan pair for one grid size, made once with
 /// FFTW_MEASURE and kept for the life of the process: the 2-D transform, or with `rows`
-/// the 1-D transforms along y of each of the nx rows alone (the same layouts). Executing
-/// the plans is thread-safe; they are applied to other arrays through FFTW's new-array
-/// interface.
+/// the 1-D transforms along y of each of the nx rows alone (the same layouts), each
+/// transform split over `threads` (FFTW's threads). Executing the plans is thread-safe;
+/// they are applied to other arrays through FFTW's new-array interface.
 class FftPlans {
  public:
-  FftPlans(int nx, int ny, bool rows = false);
+  FftPlans(int nx, int ny, bool rows = false, int threads = 1);
   ~FftPlans();
   FftPlans(const FftPlans&) = delete;
   FftPlans& operator=(const FftPlans&) = delete;
@@ -35,7 +39,8 @@ class FftPlans {
   void* backward_ = nullptr;
 };
 
-/// The plans for an nx x ny grid: planned at the first request for that size, then shared
+/// The plans for an nx x ny grid: planned at the first request for that size (and thread
+/// count: transform_threads() from kThreadedValues values, else one), then shared
 /// (thread-safe; FFTW's planner is serialised by a mutex).
 std::shared_ptr<const FftPlans> fft_plans(int nx, int ny, bool rows = false);
 
@@ -68,7 +73,9 @@ class FftwBuffer {
 /// 4 (mx - 1)(my - 1). Each axis is done as real-to-complex transforms of its lines' even
 /// extensions, eight lines a time (FFTW's many-transform plans, shared between instances
 /// and made once per length; FFTW's own 2-D REDFT00 allocates and copies on every call and
-/// measured 1.3-1.6 times slower). One instance owns its scratch: not for concurrent use.
+/// measured 1.3-1.6 times slower). The blocks of a large transform are split over
+/// transform_threads() (each block alone, so the bits do not depend on how many). One
+/// instance owns its scratch: not for concurrent use.
 class CosineTransform {
  public:
   /// `along_y` false: along x alone (each column's REDFT00; each row is left as it is).
@@ -88,10 +95,16 @@ class CosineTransform {
   template <bool kColumns>
   void lines(const Axis& axis, const double* in, double* out, int count);
 
+  /// One thread's scratch: a block of even extensions and their spectra.
+  struct Scratch {
+    FftwBuffer<double> pad;
+    FftwBuffer<std::complex<double>> spec;
+  };
+
   int mx_, my_;
+  std::size_t length_ = 0;                  ///< the longest line's real transform
   Axis along_x_, along_y_;
-  FftwBuffer<double> pad_;                  ///< a block of even extensions
-  FftwBuffer<std::complex<double>> spec_;   ///< their spectra
+  std::vector<Scratch> scratch_;            ///< a thread's each, made as threads come
   FftwBuffer<double> middle_;               ///< after the first axis
 };
 

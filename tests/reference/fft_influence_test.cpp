@@ -1,9 +1,12 @@
-// The periodic influence operator: exact on a harmonic, symmetric and positive, planned once.
+// The periodic influence operator: exact on a harmonic, symmetric and positive, planned once,
+// the same on any number of threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <numbers>
 #include <random>
@@ -11,6 +14,7 @@
 
 #include "reference/fft_influence.hpp"
 #include "reference/periodic_grid.hpp"
+#include "reference/transform_threads.hpp"
 
 using namespace punchsweep::reference;
 
@@ -177,4 +181,87 @@ TEST(PeriodicInfluence, mirrored_grid_needs_even_sizes_and_mirror_point_centres)
   const PeriodicGrid g = PeriodicGrid::square(16, 1.0, Symmetry::mirror);
   EXPECT_NO_THROW(punch_profile(g, {2, 0.5}, 0.5, 0.0));
   EXPECT_THROW(punch_profile(g, {2, 0.5}, 0.25, 0.0), std::invalid_argument);
+}
+
+// A large cosine transform's blocks of lines are split over the threads, each block computed
+// alone: the bits do not depend on how many threads there are (reference/transform_threads.hpp).
+// Quarter sizes above kThreadedValues, K even and odd; the same instance on 1, 2 and 3 threads.
+TEST(CosineTransform, gives_the_same_bits_on_any_number_of_threads) {
+  const int before = transform_threads();
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  for (const auto& [mx, my] : {std::pair{129, 161}, std::pair{150, 131}}) {
+    ASSERT_GE(static_cast<long>(mx) * my, kThreadedValues);
+    std::vector<double> in(static_cast<std::size_t>(mx) * my);
+    for (double& v : in) v = value(random);
+    CosineTransform transform(mx, my);
+    std::vector<std::vector<double>> out;
+    for (const int threads : {1, 2, 3}) {
+      set_transform_threads(threads);
+      out.emplace_back(in.size());
+      transform.execute(in.data(), out.back().data());
+    }
+    EXPECT_EQ(out[0], out[1]) << mx << " x " << my;
+    EXPECT_EQ(out[0], out[2]) << mx << " x " << my;
+    // And it is the transform: REDFT00's value at (1, 2) summed directly.
+    double direct = 0.0;
+    for (int i = 0; i < mx; ++i) {
+      for (int j = 0; j < my; ++j) {
+        const double wx = (i == 0 || i == mx - 1) ? 1.0 : 2.0, wy = (j == 0 || j == my - 1) ? 1.0 : 2.0;
+        direct += wx * wy * in[static_cast<std::size_t>(i) * my + j] * std::cos(pi * i * 1 / (mx - 1)) * std::cos(pi * j * 2 / (my - 1));
+      }
+    }
+    EXPECT_NEAR(out[0][1 * static_cast<std::size_t>(my) + 2], direct, 1e-12 * static_cast<double>(mx) * my);
+  }
+  set_transform_threads(before);
+}
+
+// The whole grid's 2-D transforms and the half's rows go through FFTW's own threads, whose
+// plans FFTW chooses per thread count: the same operator to round-off (seen equal to the
+// bit on this machine; FFTW does not promise it).
+TEST(PeriodicInfluence, threads_give_the_same_operator) {
+  const int before = transform_threads();
+  for (const Symmetry symmetry : {Symmetry::none, Symmetry::mirror_x}) {
+    const PeriodicGrid grid{256, 150, 1.0, 0.6, symmetry};
+    std::vector<double> p(grid.size());
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] = 1.0 + std::sin(0.37 * static_cast<double>(k)) * std::cos(0.011 * static_cast<double>(k));
+    std::vector<std::vector<double>> u;
+    for (const int threads : {1, 2}) {
+      set_transform_threads(threads);
+      PeriodicInfluence K(grid);
+      u.emplace_back(grid.size());
+      K.apply(p, u.back(), 1.0);
+    }
+    double range = 0.0;
+    for (const double v : u[0]) range = std::max(range, std::abs(v));
+    for (std::size_t k = 0; k < p.size(); ++k) ASSERT_NEAR(u[1][k], u[0][k], 1e-14 * range) << k;
+  }
+  set_transform_threads(before);
+}
+
+// Threads a rank takes: what the launcher gave it, else its share of the node's CPUs.
+TEST(TransformThreads, ranks_share_the_cores_they_are_given) {
+  const char* asked = std::getenv("OMP_NUM_THREADS");
+  const std::string kept = asked != nullptr ? asked : "";
+  unsetenv("OMP_NUM_THREADS");
+  EXPECT_EQ(threads_for_ranks(1, 2, 2), 2);    // one process: every core
+  EXPECT_EQ(threads_for_ranks(2, 2, 2), 1);    // two ranks unbound on two cores
+  EXPECT_EQ(threads_for_ranks(4, 2, 2), 1);    // oversubscribed: never none
+  EXPECT_EQ(threads_for_ranks(2, 1, 2), 1);    // mpirun's binding to a core each
+  EXPECT_EQ(threads_for_ranks(4, 4, 16), 4);   // Slurm's --cpus-per-task=4
+  EXPECT_EQ(threads_for_ranks(4, 16, 16), 4);  // four ranks unbound on 16 cores
+  setenv("OMP_NUM_THREADS", "3", 1);
+  EXPECT_EQ(threads_for_ranks(4, 16, 16), 3);  // the user's word
+  EXPECT_EQ(default_transform_threads(), 3);
+  setenv("OMP_NUM_THREADS", "3,1", 1);         // OpenMP's list: this level's first
+  EXPECT_EQ(default_transform_threads(), 3);
+  setenv("OMP_NUM_THREADS", "none", 1);        // not a number: the affinity's
+  EXPECT_EQ(default_transform_threads(), affinity_cpus());
+  if (asked != nullptr) {
+    setenv("OMP_NUM_THREADS", kept.c_str(), 1);
+  } else {
+    unsetenv("OMP_NUM_THREADS");
+  }
+  EXPECT_GE(affinity_cpus(), 1);
+  EXPECT_LE(affinity_cpus(), machine_cpus());
 }

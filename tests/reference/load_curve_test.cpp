@@ -15,6 +15,7 @@
 #include "reference/cell_touchdown.hpp"
 #include "reference/load_curve.hpp"
 #include "reference/periodic_grid.hpp"
+#include "reference/transform_threads.hpp"
 
 using namespace punchsweep;
 using model::LatticeKind;
@@ -328,4 +329,29 @@ TEST(LoadCurve, a_cell_even_in_x_alone_is_solved_on_its_half) {
   scatter.width = 0.005;
   const model::CellGeometry scattered = model::supercell(g, 2, scatter);
   EXPECT_EQ(reference::lattice_grid(scattered, LatticeKind::hexagonal, 24, 2).symmetry, reference::Symmetry::none);
+}
+
+// A curve built on two threads is the curve built on one, bit for bit, on the quarter (the
+// cosine transform's blocks, each computed alone); a cache or map that reads it cannot tell.
+// A two-level hexagonal cell on 208 nodes a pitch (a quarter above
+// kThreadedValues), to a reach past its second level's touchdown.
+TEST(LoadCurve, two_threads_build_the_curve_of_one) {
+  const int before = reference::transform_threads();
+  const model::CellGeometry g = model::lattice_cell(LatticeKind::hexagonal, 1.2, model::Shape{2, 0.5}, {0.01});
+  const reference::PeriodicGrid grid = reference::lattice_grid(g, LatticeKind::hexagonal, 208);
+  ASSERT_EQ(grid.symmetry, reference::Symmetry::mirror);
+  ASSERT_GE(static_cast<long>(grid.stored_nx()) * grid.stored_ny(), reference::kThreadedValues);
+  const reference::Cell cell = reference::make_cell(g, grid);
+  reference::LoadCurveOptions options;
+  options.X_reach = 0.002;
+  std::vector<model::LoadCurve> curves;
+  for (const int threads : {1, 2}) {
+    reference::set_transform_threads(threads);
+    curves.push_back(reference::build_load_curve(g, cell, options));
+  }
+  reference::set_transform_threads(before);
+  std::printf("%zu samples to X = %.6g, level 1 touches at %.6g\n", curves[0].samples.size(), curves[0].X_last(), curves[0].level_touchdown[1]);
+  ASSERT_LT(curves[0].level_touchdown[1], options.X_reach);
+  EXPECT_EQ(curves[0].tables(), curves[1].tables());
+  EXPECT_EQ(curves[0].level_touchdown, curves[1].level_touchdown);
 }

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// The threads one large transform is split over. The cosine transform's lines go in
+/// blocks of eight, each block's even extensions, FFT and cosine sums computed alone (by one
+/// thread, whichever), so a transform gives the same bits on any number of threads: a curve
+/// built on four threads is the curve built on one, and a cache or a map that reads it does
+/// not know how it was built. Transforms of fewer than kThreadedValues values stay on one
+/// thread (a parallel region's start costs more than they take).
+
+namespace punchsweep::reference {
+
+/// Transforms of at least this many values are split over the threads (a 128 x 128 quarter).
+inline constexpr long kThreadedValues = 128L * 128L;
+
+/// The threads a large transform is split over: set_transform_threads's, else
+/// default_transform_threads().
+int transform_threads();
+
+/// Sets them (at least 1; a value beyond the CPUs only oversubscribes them). For the whole
+/// process; not to be changed while a transform runs.
+void set_transform_threads(int threads);
+
+/// OMP_NUM_THREADS where it is set to a positive whole number, else the CPUs this process
+/// may run on (its affinity mask: what mpirun's binding, Slurm's --cpus-per-task or taskset
+/// give it; the machine's cores where nothing narrows it).
+int default_transform_threads();
+
+/// The threads of one of `local_ranks` processes on a node (MPI ranks): OMP_NUM_THREADS
+/// where set; else the CPUs of its affinity mask where the launcher narrowed it (mpirun's
+/// binding, Slurm's --cpus-per-task); else the machine's CPUs shared among the ranks (at
+/// least 1), so that ranks do not oversubscribe the cores between them.
+int threads_for_ranks(int local_ranks, int affinity, int machine);
+
+/// The CPUs of this process's affinity mask (at least 1), and of the machine.
+int affinity_cpus();
+int machine_cpus();
+
+}  // namespace punchsweep::reference
