@@ -68,6 +68,9 @@ void write_curve_cost(std::ostream& out, const engine::CurveCost& cost) {
     out << ": about " << grid.bytes / 1e6 << " MB; ";
     if (grid.cached) {
       out << "in the cache (read, not built)\n";
+    } else if (grid.continued_from > 0.0) {
+      out << "in the cache to X = " << grid.continued_from << " E0*, continued from there, at most about " << grid.seconds
+          << " s on one core\n";
     } else {
       out << "to build, about " << grid.seconds << " s on one core\n";
     }

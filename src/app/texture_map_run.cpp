@@ -84,7 +84,7 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
   out << "  points: " << G << " geometr" << (G == 1 ? "y" : "ies") << " x " << P
       << " load points\n";
   double seconds = 0.0, largest = 0.0, bytes = 0.0;
-  std::size_t cached = 0, tables = 0, built = 0;
+  std::size_t cached = 0, tables = 0, built = 0, continued = 0;
   std::map<std::string, std::size_t> groups;  // grids -> geometries
   for (std::size_t g = 0; g < G; ++g) {
     const engine::CurveCost cost = engine::curve_cost(plan.keywords_of(g), plan.load_points());
@@ -94,20 +94,23 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
       ++tables;
       what << "off the periodic tables";
     } else {
-      bool all_cached = true;
+      bool all_cached = true, any_continued = false;
       for (std::size_t k = 0; k < cost.grids.size(); ++k) {
         const engine::CurveCost::Grid& grid = cost.grids[k];
         what << (k ? ", then " : "") << grid.nx << " x " << grid.ny << " nodes";
         if (grid.nodes_per_pitch > 0) what << " (" << grid.nodes_per_pitch << " a pitch)";
-        what << (grid.cached ? " cached" : "");
+        what << (grid.cached ? " cached" : grid.continued_from > 0.0 ? " continued from the cache" : "");
         mine += grid.seconds;
         bytes = std::max(bytes, grid.bytes);
         all_cached = all_cached && grid.cached;
+        any_continued = any_continued || grid.continued_from > 0.0;
       }
       what << ", " << cost.caps << " caps, " << cost.levels << " levels";
       if (cost.auto_grid) what << " (--grid auto: at least these grids)";
       if (all_cached) {
         ++cached;
+      } else if (any_continued) {
+        ++continued;
       } else {
         ++built;
       }
@@ -123,7 +126,9 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
     }
   }
   for (const auto& [what, count] : groups) out << "  " << count << " geometr" << (count == 1 ? "y" : "ies") << ": " << what << "\n";
-  out << "  curves: " << built << " to build, " << cached << " in the cache, " << tables << " off the periodic tables\n";
+  out << "  curves: " << built << " to build, " << cached << " in the cache, ";
+  if (continued > 0) out << continued << " continued from the cache (its beginning saved), ";
+  out << tables << " off the periodic tables\n";
   if (bytes > 0.0) {
     const double machine = engine::machine_bytes();
     out << "  memory: about " << bytes_text(bytes) << " a rank for the largest curve (" << ranks << " rank"

@@ -192,12 +192,22 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
   return curve;
 }
 
-bool curve_is_cached(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
-                     const reference::LoadCurveOptions& options, const reference::Cell* measured) {
+CachedCurve cached_curve(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
+                         const reference::LoadCurveOptions& options, const reference::Cell* measured) {
+  CachedCurve out;
   const std::optional<std::filesystem::path> folder = usable_cache();
-  if (!folder) return false;
-  const std::optional<model::LoadCurve> saved = saved_curve(cache_entry(*folder, curve_key(geometry, grid, options, measured)));
-  return saved && reaches(*saved, options);
+  if (!folder) return out;
+  const CacheEntry entry = cache_entry(*folder, curve_key(geometry, grid, options, measured));
+  const std::optional<model::LoadCurve> saved = saved_curve(entry);
+  if (!saved) return out;
+  out.X_first = saved->X_first();
+  out.X_last = saved->X_last();
+  if (reaches(*saved, options)) {
+    out.holds = CachedCurve::Holds::whole;
+  } else if (!std::isfinite(saved->X_full) && saved_front(entry, *saved)) {
+    out.holds = CachedCurve::Holds::beginning;
+  }
+  return out;
 }
 
 }  // namespace punchsweep::engine

@@ -37,9 +37,17 @@ model::LoadCurve load_curve_for(const model::CellGeometry& geometry, const refer
                                 const reference::LoadCurveOptions& options, const reference::Cell* measured,
                                 const std::function<const reference::Cell&()>& cell, CurveOrigin* origin = nullptr);
 
-/// Whether load_curve_for would read this curve from the cache (a dry run's question; it
+/// What the cache holds of a curve: nothing load_curve_for would use, the curve as far as
+/// `options` reach (read, not built), or its beginning with its front (continued from
+/// X_last: only the rest is built).
+struct CachedCurve {
+  enum class Holds { nothing, whole, beginning } holds = Holds::nothing;
+  double X_first = 0.0, X_last = 0.0;  ///< the saved curve's extent (E0*), where one is saved
+};
+
+/// What load_curve_for would find in the cache for this curve (a dry run's question; it
 /// builds nothing, makes no cell and takes no lock).
-bool curve_is_cached(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
-                     const reference::LoadCurveOptions& options, const reference::Cell* measured);
+CachedCurve cached_curve(const model::CellGeometry& geometry, const reference::PeriodicGrid& grid,
+                         const reference::LoadCurveOptions& options, const reference::Cell* measured);
 
 }  // namespace punchsweep::engine

@@ -977,7 +977,9 @@ CurveCost curve_cost(SurfaceRun& run, const MoreLoadPoints& also_held) {
     g.nx = grid.nx;
     g.ny = grid.ny;
     g.bytes = curve_bytes(run, grid);
-    g.cached = curve_is_cached(run.geometry, grid, options, run.measured ? &run.measured->cell : nullptr);
+    const CachedCurve held = cached_curve(run.geometry, grid, options, run.measured ? &run.measured->cell : nullptr);
+    g.cached = held.holds == CachedCurve::Holds::whole;
+    if (held.holds == CachedCurve::Holds::beginning) g.continued_from = held.X_last;
     g.seconds = g.cached ? 0.0 : estimated_curve_seconds(grid, static_cast<double>(cost.caps));
     cost.grids.push_back(g);
   }

@@ -148,8 +148,11 @@ struct CurveCost {
     int nodes_per_pitch = 0;  ///< 0: a measured map's pixels
     int nx = 0, ny = 0;
     double bytes = 0.0;       ///< the solve's memory
-    bool cached = false;
-    double seconds = 0.0;
+    bool cached = false;      ///< read from the cache, not built
+    /// Where the cache holds the curve's beginning (and its front): its last load (E0*),
+    /// from which it is continued; 0 otherwise.
+    double continued_from = 0.0;
+    double seconds = 0.0;     ///< to build (a continued curve's: the whole's, at most)
   };
   std::vector<Grid> grids;
   std::size_t caps = 0;

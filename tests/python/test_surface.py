@@ -265,7 +265,7 @@ def test_the_curve_stops_past_the_most_the_load_reaches(tmp_path):
     never touches with X* null (the whole curve's lies past X(inf)). A whole curve in the
     cache serves the shorter question, cut to it (the same answer as building it), and a
     question that reaches further than a saved curve continues it from where it stopped (the
-    same answer as building it for that question at once)."""
+    same answer as building it for that question at once; its dry run says so)."""
     env = {**os.environ, "PUNCHSWEEP_CACHE": str(tmp_path / "cache")}
     geometry = ["--lattice", "hexagonal", "--l", "1.2", "--dh", "0.03", "--dh2", "0.08", "--s", "2", "--grid", "48",
                 "--times", "0,1,5", "--format", "json"]
@@ -302,7 +302,18 @@ def test_the_curve_stops_past_the_most_the_load_reaches(tmp_path):
     # A fresh cache: the short curve saved, then a question reaching further continues it
     # from where it stopped: the answer of a curve built for it at once, to the bit.
     env["PUNCHSWEEP_CACHE"] = str(tmp_path / "other")
-    assert run("--pbar", pbar, "--T", T, cache="mine")["curve"]["cached"] is False
+    saved = run("--pbar", pbar, "--T", T, cache="mine")
+    assert saved["curve"]["cached"] is False
+    # The dry run says so: the further question's curve is in the cache to where the short
+    # one stopped, and continued from there; the short question's is read.
+    dry = [subprocess.run([BINARY, "surface", *geometry[:-2], "--pbar", str(p), "--T", str(T), "--dry-run"],
+                          capture_output=True, text=True, env=env) for p in (4 * pbar, pbar)]
+    assert all(done.returncode == 0 for done in dry), [done.stderr for done in dry]
+    X_saved = re.search(r"in the cache to X = (\S+) E0\*, continued from there, at most about \S+ s on one core",
+                        dry[0].stdout)
+    assert X_saved, dry[0].stdout
+    assert float(X_saved.group(1)) == pytest.approx(saved["curve"]["X_last"], rel=1e-2)  # (printed to 3 digits)
+    assert "in the cache (read, not built)" in dry[1].stdout
     further = run("--pbar", 4 * pbar, "--T", T, cache="mine")
     assert further["curve"]["cached"] is False and further["curve"]["X_reach"] == pytest.approx(4 * pbar * T, rel=1e-12)
     at_once = run("--pbar", 4 * pbar, "--T", T)

@@ -20,6 +20,10 @@
 
 namespace {
 
+// What the dry run reads: the cache holds the curve as far as asked, or nothing of it.
+#define EXPECT_WHOLE(held) EXPECT_EQ((held).holds, engine::CachedCurve::Holds::whole)
+#define EXPECT_NOTHING(held) EXPECT_EQ((held).holds, engine::CachedCurve::Holds::nothing)
+
 using namespace punchsweep;
 
 /// PUNCHSWEEP_CACHE set to a private scratch folder for the test's life (then as it was).
@@ -75,12 +79,12 @@ TEST(CurveCache, a_cached_curve_is_read_without_its_cell_and_equals_the_built_on
   const reference::LoadCurveOptions options;
   CountingCellMaker made(geometry, grid);
   const int& cells_made = made.made;
-  EXPECT_FALSE(engine::curve_is_cached(geometry, grid, options, nullptr));
+  EXPECT_NOTHING(engine::cached_curve(geometry, grid, options, nullptr));
   engine::CurveOrigin origin{};
   const model::LoadCurve built = engine::load_curve_for(geometry, grid, options, nullptr, std::ref(made), &origin);
   EXPECT_EQ(origin, engine::CurveOrigin::built);
   EXPECT_EQ(cells_made, 1);
-  EXPECT_TRUE(engine::curve_is_cached(geometry, grid, options, nullptr));
+  EXPECT_WHOLE(engine::cached_curve(geometry, grid, options, nullptr));
 
   const model::LoadCurve read = engine::load_curve_for(geometry, grid, options, nullptr, std::ref(made), &origin);
   EXPECT_EQ(origin, engine::CurveOrigin::cache);
@@ -90,11 +94,11 @@ TEST(CurveCache, a_cached_curve_is_read_without_its_cell_and_equals_the_built_on
   EXPECT_EQ(reference::build_load_curve(geometry, reference::make_cell(geometry, grid), options).tables(), built.tables());
 
   // Another grid or another drop is another curve.
-  EXPECT_FALSE(engine::curve_is_cached(geometry, reference::lattice_grid(geometry, model::LatticeKind::hexagonal, 20, 1),
+  EXPECT_NOTHING(engine::cached_curve(geometry, reference::lattice_grid(geometry, model::LatticeKind::hexagonal, 20, 1),
                                        options, nullptr));
   model::CellGeometry deeper = geometry;
   for (model::Site& site : deeper.sites) site.drop *= site.level == 1 ? 1.5 : 1.0;
-  EXPECT_FALSE(engine::curve_is_cached(deeper, grid, options, nullptr));
+  EXPECT_NOTHING(engine::cached_curve(deeper, grid, options, nullptr));
 }
 
 TEST(CurveCache, a_measured_cell_keys_its_curve_by_its_heights) {
@@ -105,13 +109,13 @@ TEST(CurveCache, a_measured_cell_keys_its_curve_by_its_heights) {
   const reference::Cell measured = reference::make_cell(geometry, grid);
   const auto given = [&]() -> const reference::Cell& { return measured; };
   engine::load_curve_for(geometry, grid, options, &measured, given);
-  EXPECT_TRUE(engine::curve_is_cached(geometry, grid, options, &measured));
+  EXPECT_WHOLE(engine::cached_curve(geometry, grid, options, &measured));
   // The same sites and grid with other heights between them: another curve.
   reference::Cell other = measured;
   other.profile[other.profile.size() / 2] += 1e-3;
-  EXPECT_FALSE(engine::curve_is_cached(geometry, grid, options, &other));
+  EXPECT_NOTHING(engine::cached_curve(geometry, grid, options, &other));
   // A measured cell's curve is not a made cell's (and the other way round).
-  EXPECT_FALSE(engine::curve_is_cached(geometry, grid, options, nullptr));
+  EXPECT_NOTHING(engine::cached_curve(geometry, grid, options, nullptr));
 }
 
 }  // namespace
@@ -143,11 +147,14 @@ TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   EXPECT_EQ(origin, engine::CurveOrigin::built);
   // Further than the saved one: continued from where it stopped (and saved); nearer: read
   // and cut.
-  EXPECT_FALSE(engine::curve_is_cached(geometry, grid, high, nullptr));
+  const engine::CachedCurve short_one = engine::cached_curve(geometry, grid, high, nullptr);
+  EXPECT_EQ(short_one.holds, engine::CachedCurve::Holds::beginning);  // the dry run: "continued"
+  EXPECT_EQ(short_one.X_last, built_low.X_last());
+  EXPECT_EQ(short_one.X_first, whole.X_first());
   EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, std::ref(made), &origin).tables(), built_high.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::extended);
   EXPECT_EQ(cells_made, 2);
-  EXPECT_TRUE(engine::curve_is_cached(geometry, grid, low, nullptr));
+  EXPECT_WHOLE(engine::cached_curve(geometry, grid, low, nullptr));
   EXPECT_EQ(engine::load_curve_for(geometry, grid, low, nullptr, std::ref(made), &origin).tables(), built_low.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::cache);
   EXPECT_EQ(cells_made, 2);
@@ -169,6 +176,7 @@ TEST(CurveCache, a_saved_curve_serves_every_reach_up_to_its_own) {
   for (const auto& file : std::filesystem::directory_iterator(cache.path)) {
     if (file.path().extension() == ".front") std::filesystem::remove(file.path());
   }
+  EXPECT_EQ(engine::cached_curve(geometry, grid, high, nullptr).holds, engine::CachedCurve::Holds::nothing);
   EXPECT_EQ(engine::load_curve_for(geometry, grid, high, nullptr, std::ref(made), &origin).tables(), built_high.tables());
   EXPECT_EQ(origin, engine::CurveOrigin::built);
 }
