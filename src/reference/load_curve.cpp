@@ -142,11 +142,11 @@ class CurveBuilder {
         b = first_full(a, b);
         curve_.X_full = b.sample.X;
       }
-      // The sites that touch within (a, b], each a knot of the curve.
-      std::vector<double> knots = find_touchdowns(a, b);
-      for (double X : knots) {
-        if (X >= b.sample.X * (1.0 - 1e-12)) continue;
-        Solved knot = solve(X, a.p);  // the bisection's upper end: touched
+      // The sites that touch within (a, b], each a knot of the curve: the state at its
+      // touchdown, the bisection's last touched solve.
+      std::vector<Solved> knots = find_touchdowns(a, b);
+      for (Solved& knot : knots) {
+        if (knot.sample.X >= b.sample.X * (1.0 - 1e-12)) continue;
         refine(a, knot, 0);
         a = std::move(knot);
       }
@@ -217,11 +217,25 @@ class CurveBuilder {
     return geometry_.sites[k].drop - geometry_.sites[reference_].drop - s.h[k];
   }
 
+  /// The pressure to start a solve at X in [a.X, b.X] from: the two states' pressures
+  /// mixed as X lies between them in log X (within an interval whose contact set does not
+  /// change the solution is affine in X; a quarter fewer iterations than from a's alone,
+  /// measured); none (the uniform field) where a is the floor below the first sample.
+  static std::vector<double> between(const Solved& a, const Solved& b, double X) {
+    if (a.p.empty()) return {};
+    const double w = std::clamp(std::log(X / a.sample.X) / std::log(b.sample.X / a.sample.X), 0.0, 1.0);
+    std::vector<double> p(a.p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] = (1.0 - w) * a.p[i] + w * b.p[i];
+    return p;
+  }
+
   /// The sites untouched in a and touched in b: each one's touchdown by bisection in log X
   /// (sites of the same level, drop and shape whose h agree in a and b to 1e-12 share it,
-  /// as symmetric images do). Returns the distinct touchdowns, increasing.
-  std::vector<double> find_touchdowns(const Solved& a, const Solved& b) {
-    std::vector<double> found;
+  /// as symmetric images do), each trial started between the bracket's solves. Returns the
+  /// state at each distinct touchdown (the bisection's last touched solve: b where the
+  /// bracket never closed from above), increasing in X.
+  std::vector<Solved> find_touchdowns(const Solved& a, const Solved& b) {
+    std::vector<Solved> found;
     std::vector<std::size_t> done;
     for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
       if (touched(a, k)) continue;
@@ -245,7 +259,9 @@ class CurveBuilder {
       // bracket in a few solves (as the time stepping's t* search does). A trial that lands
       // on the other side than aimed makes the next one the midpoint.
       double lo = std::log(a.sample.X), hi = std::log(b.sample.X);
-      const bool from_uniform = std::isinf(a.h[k]);
+      const Solved* below = &a;  // the bracket's solves: untouched, touched
+      const Solved* above = &b;
+      Solved last_below, last_above;
       const double tolerance = options_.touchdown_tolerance;
       double x0 = 0.0, g0 = 0.0, x1 = lo, g1 = gap(a, k);
       bool two = false, halve = false;
@@ -270,11 +286,13 @@ class CurveBuilder {
           const double margin = std::min(0.1 * tolerance, 0.25 * (hi - lo));
           trial = std::clamp(aim_above ? predicted + 0.45 * tolerance : predicted - short_of, lo + margin, hi - margin);
         }
-        const Solved m = solve(std::exp(trial), from_uniform ? std::vector<double>{} : a.p);
+        Solved m = solve(std::exp(trial), between(*below, *above, std::exp(trial)));
         const bool now = touched(m, k);
         halve = !halve && now != aim_above;
         if (now) {
           hi = trial;
+          last_above = std::move(m);
+          above = &last_above;
         } else {
           lo = trial;
           x0 = x1;
@@ -282,14 +300,17 @@ class CurveBuilder {
           x1 = trial;
           g1 = gap(m, k);
           two = true;
+          last_below = std::move(m);
+          below = &last_below;
         }
       }
       curve_.site_touchdown[k] = std::exp(hi);
-      found.push_back(std::exp(hi));
+      found.push_back(above == &b ? b : std::move(last_above));
       done.push_back(k);
     }
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
+    std::sort(found.begin(), found.end(), [](const Solved& x, const Solved& y) { return x.sample.X < y.sample.X; });
+    found.erase(std::unique(found.begin(), found.end(), [](const Solved& x, const Solved& y) { return x.sample.X == y.sample.X; }),
+                found.end());
     return found;
   }
 
@@ -298,7 +319,7 @@ class CurveBuilder {
     double lo = std::log(a.sample.X), hi = std::log(b.sample.X);
     while (hi - lo > options_.touchdown_tolerance) {
       const double mid = 0.5 * (lo + hi);
-      Solved m = solve(std::exp(mid), a.p);
+      Solved m = solve(std::exp(mid), between(a, b, std::exp(mid)));
       if (m.full) {
         hi = mid;
         b = std::move(m);
@@ -336,7 +357,8 @@ class CurveBuilder {
   /// interpolation needs.
   void refine(const Solved& a, const Solved& b, int depth) {
     if (depth < options_.max_refinements) {
-      Solved m = solve(std::sqrt(a.sample.X * b.sample.X), a.p);
+      const double X = std::sqrt(a.sample.X * b.sample.X);
+      Solved m = solve(X, between(a, b, X));
       if (!interpolation_holds(a, m, b)) {
         refine(a, m, depth + 1);
         refine(m, b, depth + 1);

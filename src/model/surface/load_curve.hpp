@@ -106,7 +106,9 @@ struct LoadCurve {
   /// The curve of tables(); nullopt for numbers of another format, sizes that do not add
   /// up, or a curve load_curve_error refuses.
   static std::optional<LoadCurve> from_tables(const std::vector<double>& numbers);
-  static constexpr double kFormat = 4.0;  ///< 2: touchdowns by the tip's pressure; 3: X_resolved; 4: solves scale-free at any relief
+  /// 2: touchdowns by the tip's pressure; 3: X_resolved; 4: solves scale-free at any relief; 5: a
+  /// midpoint's and a bisection's solve started between its bracket's (the last bits move)
+  static constexpr double kFormat = 5.0;
 };
 
 /// Empty when `curve` is one the readers can use (samples increasing in X, sizes matching,
