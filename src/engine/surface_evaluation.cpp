@@ -140,16 +140,13 @@ constexpr double kMaxNodeCaps = 1073741824.0;  // 2^30
 /// ranks' curves, the map).
 constexpr double kMachineShare = 0.8;
 /// estimated_curve_seconds' power law: seconds = scale x nodes^node_power x caps^cap_power,
-/// times `mirrored` on a grid solved as its quarter. Fitted to 16 curves built on one core
-/// here (square, hexagonal, three levels, 2x2 and 4x4 scattered supercells; 1024 to 113664
-/// nodes, 2 to 32 caps; 0.05 to 30 s): each within a factor 1.91 of its estimate
-/// (docs/performance.md, "A curve's cost").
-constexpr double kCurveSecondsScale = 1.68e-5, kCurveSecondsNodePower = 1.29, kCurveSecondsCapPower = 0.15,
-                 kCurveSecondsMirrored = 0.31;
-/// On a grid solved as its half (Symmetry::mirror_x), the whole grid's estimate times this:
-/// the hexagonal three-level cell's curve took 0.69 and 0.57 of the whole grid's time at
-/// 128 and 256 nodes a pitch, side by side (the same 542 and 678 solves).
-constexpr double kCurveSecondsMirroredX = 0.63;
+/// times `mirrored` on a grid solved as its quarter and `mirrored_x` as its half. Fitted to
+/// 17 whole curves built on one thread here (square, hexagonal, three levels, 2x2 and 4x4
+/// scattered supercells; 1024 to 262144 nodes, 2 to 32 caps; 0.05 to 14 s), after the
+/// bracketed warm starts (467c182): each within a factor 1.42 of its estimate
+/// (docs/performance.md, "A curve's cost"). On more threads a curve takes less.
+constexpr double kCurveSecondsScale = 5.54e-5, kCurveSecondsNodePower = 1.047, kCurveSecondsCapPower = 0.175,
+                 kCurveSecondsMirrored = 0.410, kCurveSecondsMirroredX = 0.696;
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
 
