@@ -7,19 +7,12 @@
 #        hex3-256  three-level hexagonal, 256 (its half: cosine along x, FFTW rows along y)
 #        square-512  two-level square, --curve cell, 512 (its quarter)
 #        super-64  4 x 4 scattered hexagonal supercell, 64 a pitch (the whole grid: FFTW 2-D)
-# Usage: benchmarks/curve_threads.sh [--bin BIN] [--threads N] [--repeats K] [--cells "hex2-256 super-64"]
+# Usage: [THREADS=N] [REPEATS=K] [CELLS="hex2-256 super-64"] benchmarks/curve_threads.sh [BIN]
+# (defaults: the machine's cores, 3, every cell; build/src/app/punchsweep)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bin="$root/build/src/app/punchsweep" threads=$(nproc) repeats=3 cells="hex2-256 hex3-256 square-512 super-64"
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --bin) bin=$2; shift 2 ;;
-    --threads) threads=$2; shift 2 ;;
-    --repeats) repeats=$2; shift 2 ;;
-    --cells) cells=$2; shift 2 ;;
-    *) echo "curve_threads.sh: unknown argument $1" >&2; exit 2 ;;
-  esac
-done
+bin=${1:-"$root/build/src/app/punchsweep"}
+threads=${THREADS:-$(nproc)} repeats=${REPEATS:-3} cells=${CELLS:-"hex2-256 hex3-256 square-512 super-64"}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export PUNCHSWEEP_CACHE=off  # every run builds its curve
