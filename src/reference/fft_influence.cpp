@@ -34,6 +34,7 @@ void prepare_fftw() {
   // initialisation runs once, whichever thread comes first).
   static const bool ready = fftw_init_threads() != 0;
   if (!ready) throw std::runtime_error("FFTW could not start its threads");
+  one_thread_after_fork();
 }
 
 namespace {
@@ -268,9 +269,7 @@ void CosineTransform::lines(const Axis& axis, const double* in, double* out, int
     scratch_.push_back({FftwBuffer<double>(kCosineBlock * length_), FftwBuffer<std::complex<double>>(kCosineBlock * (length_ / 2 + 1))});
   }
   // Each block alone, on whichever thread: the same bits for any number of them.
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-  for (int index = 0; index < blocks; ++index) {
-    Scratch& mine = scratch_[static_cast<std::size_t>(threads > 1 ? omp_get_thread_num() : 0)];
+  const auto transform_block = [&](int index, Scratch& mine) {
     double* pad = mine.pad.data();
     std::complex<double>* spec = mine.spec.data();
     double odd[kCosineBlock];  // halved: the running odd sums of each line
@@ -298,6 +297,12 @@ void CosineTransform::lines(const Axis& axis, const double* in, double* out, int
         for (int j = 0; j < m; ++j) put(b, j, spec[b * spectrum + j].real());
       }
     }
+  };
+  if (threads > 1) {
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (int index = 0; index < blocks; ++index) transform_block(index, scratch_[static_cast<std::size_t>(omp_get_thread_num())]);
+  } else {  // (no OpenMP region at all: a process forked after one must not enter another)
+    for (int index = 0; index < blocks; ++index) transform_block(index, scratch_.front());
   }
 }
 

@@ -1,5 +1,6 @@
 #include "reference/transform_threads.hpp"
 
+#include <pthread.h>
 #include <sched.h>
 #include <unistd.h>
 
@@ -60,5 +61,13 @@ int transform_threads() {
 }
 
 void set_transform_threads(int threads) { chosen().store(std::max(1, threads), std::memory_order_relaxed); }
+
+void one_thread_after_fork() {
+  // GNU OpenMP's threads do not survive a fork: a child that enters a parallel region the
+  // parent had run waits for them for ever (Python's multiprocessing, measured: a forked
+  // pool's first large curve hung). The child's transforms run on its own thread.
+  static const bool registered = pthread_atfork(nullptr, nullptr, [] { chosen().store(1, std::memory_order_relaxed); }) == 0;
+  (void)registered;
+}
 
 }  // namespace punchsweep::reference

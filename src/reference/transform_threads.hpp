@@ -20,6 +20,11 @@ int transform_threads();
 /// process; not to be changed while a transform runs.
 void set_transform_threads(int threads);
 
+/// Makes a process forked from this one run its transforms on one thread (GNU OpenMP's
+/// threads do not survive a fork: Python's multiprocessing forks). Called before the first
+/// transform (prepare_fftw); once a process.
+void one_thread_after_fork();
+
 /// OMP_NUM_THREADS where it is set to a positive whole number, else the CPUs this process
 /// may run on (its affinity mask: what mpirun's binding, Slurm's --cpus-per-task or taskset
 /// give it; the machine's cores where nothing narrows it).

@@ -8,6 +8,7 @@ import json
 import re
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -799,3 +800,26 @@ def test_the_studys_first_run_reads_its_touchdowns_in_the_small_spot_limit():
     # is 0.3% from 176's.)
     assert auto["series"]["reason"][0] == "below_resolution" and auto["series"]["reason"][2:] == ["valid", "valid"]
     assert any(note.startswith("--grid auto sized the grid for the times after 0") for note in auto["notes"])
+
+
+def test_a_forked_process_builds_curves_after_the_parent_ran_threads(tmp_path):
+    """A large curve's transforms run on OpenMP threads, whose pool does not survive a fork:
+    a process forked after them (Python's multiprocessing, fork being Linux's default) must
+    still build its curves (on one thread), not wait for the parent's threads for ever. The
+    parent builds a 208-node curve on two threads, then a forked pool's worker builds another
+    and gives the answer the parent gives for it."""
+    script = tmp_path / "fork.py"
+    script.write_text(
+        "import json, multiprocessing as mp, punchsweep\n"
+        "kw = dict(lattice='hexagonal', l=1.2, s=2, pbar=0.001, T=2.5, grid=208, times=[0, 1])\n"
+        "punchsweep.surface(dh=0.01, **kw)\n"
+        "def child(dh):\n"
+        "    return punchsweep.surface(dh=dh, **kw)['levels'][1]['t_star']\n"
+        "with mp.get_context('fork').Pool(1) as pool:\n"
+        "    forked = pool.map(child, [0.011])[0]\n"
+        "print(json.dumps([forked, punchsweep.surface(dh=0.011, **kw)['levels'][1]['t_star']]))\n")
+    env = {**os.environ, "OMP_NUM_THREADS": "2", "PUNCHSWEEP_CACHE": "off"}
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, env=env, timeout=240)
+    assert done.returncode == 0, done.stderr
+    forked, here = json.loads(done.stdout)
+    assert forked == here and forked > 0
