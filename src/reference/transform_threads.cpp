@@ -42,16 +42,12 @@ int omp_num_threads() {
 
 }  // namespace
 
-int default_transform_threads() {
-  const int asked = omp_num_threads();
-  return asked > 0 ? asked : affinity_cpus();
+int threads_given(int affinity, int machine) {
+  if (const int asked = omp_num_threads(); asked > 0) return asked;
+  return affinity < machine ? std::max(1, affinity) : 1;
 }
 
-int threads_for_ranks(int local_ranks, int affinity, int machine) {
-  if (const int asked = omp_num_threads(); asked > 0) return asked;
-  if (affinity < machine) return std::max(1, affinity);
-  return std::max(1, machine / std::max(1, local_ranks));
-}
+int default_transform_threads() { return threads_given(affinity_cpus(), machine_cpus()); }
 
 int transform_threads() {
   const int set = chosen().load(std::memory_order_relaxed);

@@ -25,16 +25,16 @@ void set_transform_threads(int threads);
 /// transform (prepare_fftw); once a process.
 void one_thread_after_fork();
 
-/// OMP_NUM_THREADS where it is set to a positive whole number, else the CPUs this process
-/// may run on (its affinity mask: what mpirun's binding, Slurm's --cpus-per-task or taskset
-/// give it; the machine's cores where nothing narrows it).
+/// The threads a process takes unless told (threads_given with this process's CPUs).
 int default_transform_threads();
 
-/// The threads of one of `local_ranks` processes on a node (MPI ranks): OMP_NUM_THREADS
-/// where set; else the CPUs of its affinity mask where the launcher narrowed it (mpirun's
-/// binding, Slurm's --cpus-per-task); else the machine's CPUs shared among the ranks (at
-/// least 1), so that ranks do not oversubscribe the cores between them.
-int threads_for_ranks(int local_ranks, int affinity, int machine);
+/// OMP_NUM_THREADS where it is set to a positive whole number; else the CPUs of the
+/// affinity mask where a launcher narrowed it below the machine's (`affinity` < `machine`:
+/// mpirun's or srun's binding, Slurm's --cpus-per-task, taskset: those cores are this
+/// process's); else one. Not every core by default: GNU OpenMP's threads spin while they
+/// wait, so two processes that each took both cores of this machine took 195 s for what
+/// each does in 4 s alone (measured); a process that shares its cores must not take them all.
+int threads_given(int affinity, int machine);
 
 /// The CPUs of this process's affinity mask (at least 1), and of the machine.
 int affinity_cpus();

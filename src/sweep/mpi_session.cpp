@@ -8,8 +8,6 @@
 
 #include <cstdlib>
 
-#include "reference/transform_threads.hpp"
-
 namespace punchsweep::sweep {
 
 MpiSession::MpiSession() {
@@ -24,14 +22,6 @@ MpiSession::MpiSession() {
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
-  // A large transform's threads: the cores this rank was given, or its share of the node's.
-  MPI_Comm node;
-  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
-  int local_ranks = 1;
-  MPI_Comm_size(node, &local_ranks);
-  MPI_Comm_free(&node);
-  reference::set_transform_threads(
-      reference::threads_for_ranks(local_ranks, reference::affinity_cpus(), reference::machine_cpus()));
 }
 
 MpiSession::~MpiSession() { MPI_Finalize(); }

@@ -16,8 +16,6 @@ namespace punchsweep::sweep {
 /// MPI for the life of a command (MPI_Init_thread, FUNNELED, to MPI_Finalize). Under Open
 /// MPI's launcher a rank does not outlive it (Linux: the parent's death kills it), so after
 /// `kill -9 mpirun` no orphan goes on writing the map that --resume is about to rebuild.
-/// Each rank's transform threads are set from the ranks on its node
-/// (reference::threads_for_ranks: the cores it is bound to, else its share of the node's).
 class MpiSession {
  public:
   MpiSession();

@@ -239,24 +239,25 @@ TEST(PeriodicInfluence, threads_give_the_same_operator) {
   set_transform_threads(before);
 }
 
-// Threads a rank takes: what the launcher gave it, else its share of the node's CPUs.
-TEST(TransformThreads, ranks_share_the_cores_they_are_given) {
+// Threads a process takes: the user's word, else the cores a launcher gave it, else one
+// (GNU OpenMP's threads spin while they wait: processes sharing cores must not take them all).
+TEST(TransformThreads, a_process_takes_the_cores_it_is_given) {
   const char* asked = std::getenv("OMP_NUM_THREADS");
   const std::string kept = asked != nullptr ? asked : "";
   unsetenv("OMP_NUM_THREADS");
-  EXPECT_EQ(threads_for_ranks(1, 2, 2), 2);    // one process: every core
-  EXPECT_EQ(threads_for_ranks(2, 2, 2), 1);    // two ranks unbound on two cores
-  EXPECT_EQ(threads_for_ranks(4, 2, 2), 1);    // oversubscribed: never none
-  EXPECT_EQ(threads_for_ranks(2, 1, 2), 1);    // mpirun's binding to a core each
-  EXPECT_EQ(threads_for_ranks(4, 4, 16), 4);   // Slurm's --cpus-per-task=4
-  EXPECT_EQ(threads_for_ranks(4, 16, 16), 4);  // four ranks unbound on 16 cores
+  EXPECT_EQ(threads_given(2, 2), 1);    // a plain process: one, whatever the machine
+  EXPECT_EQ(threads_given(16, 16), 1);
+  EXPECT_EQ(threads_given(1, 2), 1);    // mpirun's binding to a core each
+  EXPECT_EQ(threads_given(4, 16), 4);   // Slurm's --cpus-per-task=4, taskset -c 0-3
+  EXPECT_EQ(default_transform_threads(), threads_given(affinity_cpus(), machine_cpus()));
   setenv("OMP_NUM_THREADS", "3", 1);
-  EXPECT_EQ(threads_for_ranks(4, 16, 16), 3);  // the user's word
+  EXPECT_EQ(threads_given(16, 16), 3);  // the user's word
+  EXPECT_EQ(threads_given(1, 16), 3);
   EXPECT_EQ(default_transform_threads(), 3);
-  setenv("OMP_NUM_THREADS", "3,1", 1);         // OpenMP's list: this level's first
+  setenv("OMP_NUM_THREADS", "3,1", 1);  // OpenMP's list: this level's first
   EXPECT_EQ(default_transform_threads(), 3);
-  setenv("OMP_NUM_THREADS", "none", 1);        // not a number: the affinity's
-  EXPECT_EQ(default_transform_threads(), affinity_cpus());
+  setenv("OMP_NUM_THREADS", "none", 1);  // not a number: as unset
+  EXPECT_EQ(default_transform_threads(), threads_given(affinity_cpus(), machine_cpus()));
   if (asked != nullptr) {
     setenv("OMP_NUM_THREADS", kept.c_str(), 1);
   } else {
