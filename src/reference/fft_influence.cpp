@@ -99,8 +99,7 @@ void FftPlans::backward(std::complex<double>* in, double* out) const {
 }
 
 std::shared_ptr<const FftPlans> fft_plans(int nx, int ny, bool rows) {
-  const long values = static_cast<long>(nx) * ny;
-  return shared_plan<FftPlans>(nx, ny, rows, values >= kThreadedValues ? transform_threads() : 1);
+  return shared_plan<FftPlans>(nx, ny, rows, threads_for(static_cast<long>(nx) * ny));
 }
 
 
@@ -186,7 +185,6 @@ CosineTransform::CosineTransform(int mx, int my, bool along_y)
   if (along_y) along_y_ = {rows(my, kCosineBlock), mx % kCosineBlock ? rows(my, mx % kCosineBlock) : nullptr};
   along_x_ = {rows(mx, kCosineBlock), my % kCosineBlock ? rows(mx, my % kCosineBlock) : nullptr};
   length_ = static_cast<std::size_t>(std::max(along_y ? along_y_.block->length : 0, along_x_.block->length));
-  scratch_.push_back({FftwBuffer<double>(kCosineBlock * length_), FftwBuffer<std::complex<double>>(kCosineBlock * (length_ / 2 + 1))});
   if (along_y) middle_ = FftwBuffer<double>(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my));
 }
 
@@ -263,9 +261,8 @@ void CosineTransform::lines(const Axis& axis, const double* in, double* out, int
   const std::ptrdiff_t length = shape.length;
   const std::ptrdiff_t spectrum = shape.spectrum;
   const int blocks = (count + kCosineBlock - 1) / kCosineBlock;
-  const long values = static_cast<long>(count) * m;
-  const int threads = values >= kThreadedValues ? std::min(transform_threads(), blocks) : 1;
-  while (static_cast<int>(scratch_.size()) < threads) {
+  const int threads = std::min(threads_for(static_cast<long>(count) * m), blocks);
+  while (static_cast<int>(scratch_.size()) < threads) {  // (made as threads come)
     scratch_.push_back({FftwBuffer<double>(kCosineBlock * length_), FftwBuffer<std::complex<double>>(kCosineBlock * (length_ / 2 + 1))});
   }
   // Each block alone, on whichever thread: the same bits for any number of them.

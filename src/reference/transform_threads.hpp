@@ -16,6 +16,10 @@ inline constexpr long kThreadedValues = 128L * 128L;
 /// default_transform_threads().
 int transform_threads();
 
+/// The threads a transform of `values` values is split over: transform_threads() from
+/// kThreadedValues, else one.
+inline int threads_for(long values) { return values >= kThreadedValues ? transform_threads() : 1; }
+
 /// Sets them (at least 1; a value beyond the CPUs only oversubscribes them). For the whole
 /// process; not to be changed while a transform runs.
 void set_transform_threads(int threads);
