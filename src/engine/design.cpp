@@ -483,7 +483,9 @@ std::vector<double> least_drops(const model::CellGeometry& geometry) {
 /// the maker's grid. A level whose caps scatter moves as one: the drop is the level's design
 /// drop, which lies `shift` above its tallest cap's (the scatter's draws and the supercell's
 /// tallest tip set it; 0 on a lattice and for a cell file, whose level's drop is its tallest
-/// cap's). Each load is solved once (temperatures and corners that meet the same load share it).
+/// cap's). A requirement on a share of the level's caps closes the cap that decides it (the
+/// m-th to touch, as share_load counts them) by the closure's bisection over the drop. Each
+/// load is solved once (temperatures and corners that meet the same load share it).
 class TextureGap {
  public:
   /// `design_drop`: the searched level's drop as the maker's cells are made with it.
@@ -491,13 +493,14 @@ class TextureGap {
       : make_(std::move(make)), level_(level), design_drop_(design_drop) {}
 
   /// The drop closed by time t (0: at once; +infinity: ever) under the problem's pressure
-  /// and load on `creep`, at its pitch and shape; +infinity where the law creeps without end.
-  double operator()(const model::ContactProblem& problem, const model::CreepLaw& creep, double t) {
+  /// and load on `creep`, at its pitch and shape, for requirement `r` (its level's first cap,
+  /// or its share of the level's caps: then -infinity where no drop from 0 brings that
+  /// share down by then, +infinity where a share of none asks nothing); +infinity where the
+  /// law creeps without end.
+  double operator()(const model::ContactProblem& problem, const model::CreepLaw& creep, double t, const Requirement& r) {
     const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
     const double X = load.by(t);
     if (std::isinf(X)) return kInf;
-    const std::array<double, 3> key{problem.l, problem.shape.C, X};
-    if (const auto found = known_.find(key); found != known_.end()) return found->second;
     // A closure holds its grid's fields (tens of MB at 256 nodes a pitch): --find l asks a
     // new pitch at every trial, so only the last few are kept (a box has at most 4 corners
     // of l and C).
@@ -507,17 +510,32 @@ class TextureGap {
       closure.made = std::make_unique<const engine::TextureGeometry>(make_(problem.l, problem.shape));
       closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry, level_);
       closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
+      for (const model::Site& site : closure.made->geometry.sites) closure.caps += site.level == level_ ? 1 : 0;
     }
-    // Where the spots in contact are small at X, the small-spot limit answers, as it answers
-    // `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
-    if (const std::optional<double> limit = closure.limit->level_closure(X)) {
-      ++small_spot_;
-      return known_[key] = *limit + closure.shift;
+    // The cap that decides: touch_by holds once the ceil(S n)-th has touched, no_touch_by
+    // until the (floor(S n) + 1)-th has (share_load's counts; the first cap for both without
+    // a share).
+    const double n = static_cast<double>(closure.caps);
+    const std::size_t cap = !r.is_share() ? 1
+                            : r.kind == Requirement::Kind::touch_by
+                                ? static_cast<std::size_t>(std::ceil(r.share * n - 1e-9))
+                                : static_cast<std::size_t>(std::floor(r.share * n + 1e-9)) + 1;
+    if (cap == 0) return kInf;             // at least none: any drop
+    if (cap > closure.caps) return -kInf;  // at most all: no drop
+    const std::array<double, 4> key{problem.l, problem.shape.C, X, static_cast<double>(cap)};
+    if (const auto found = known_.find(key); found != known_.end()) return found->second;
+    // Where the spots in contact are small at X, the small-spot limit answers the first cap,
+    // as it answers `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
+    if (cap == 1) {
+      if (const std::optional<double> limit = closure.limit->level_closure(X)) {
+        ++small_spot_;
+        return known_[key] = *limit + closure.shift;
+      }
     }
     if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
-    const reference::LevelClosed closed = closure.solve->at(X);
+    const reference::LevelClosed closed = closure.solve->at(X, cap);
     every_drop_ = every_drop_ || closed.every_drop;
-    ++solves_;
+    solves_ += closed.solves;
     return known_[key] = closure.shift == 0.0 ? closed.drop : closed.drop + closure.shift;
   }
   /// Whether some load pressed the level's tips at any drop it can have (its bound is then
@@ -533,11 +551,12 @@ class TextureGap {
     std::unique_ptr<const model::SmallSpotLimit> limit;  ///< of made's geometry
     std::unique_ptr<reference::LevelClosure> solve;      ///< built where the limit does not answer
     double shift = 0.0;
+    std::size_t caps = 0;  ///< of the level
   };
   TextureCellMaker make_;
   int level_;
   double design_drop_;
-  std::map<std::array<double, 3>, double> known_;
+  std::map<std::array<double, 4>, double> known_;
   std::map<std::pair<double, double>, Closure> closures_;
   bool every_drop_ = false;
   int solves_ = 0;
@@ -765,10 +784,15 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                               "(--supercell K --scatter DIST, a cell file or a height map, with --find pressure); on a "
                               "lattice each level's caps touch together");
     }
-    if (r.is_share() && !by_pressure) {
-      throw input::UsageError("--require '" + r.text + "': a share of caps is read off the load curve of every cap, with "
-                              "--find pressure; the window of a drop or pitch takes requirements on the level's first cap "
-                              "('touch within 1s at 30kPa', one contact solve a trial; a share would need a curve a trial)");
+    // A drop or pitch window moves or presses the searched level: a share of its caps (the
+    // others' shares would not turn once as its drop does).
+    if (r.is_share() && !by_pressure && r.share_level != out.texture->level) {
+      const std::string level = std::to_string(out.texture->level);
+      throw input::UsageError(
+          "--require '" + r.text + "': the window of " + (by_l ? "the pitch" : "a level's drop") +
+          " takes a share of the searched level's caps ('90% of level " + level + " within 1min at 30kPa'; level " +
+          level + " here" + (by_l || a.from_file() ? ", --level L for another" : a.find == "dh" ? ", --find dh2 for level 2's" : "") +
+          "); a share of every cap, or of another level, is read off the load curve with --find pressure");
     }
   }
   // A scattered supercell, a cell file or a height map under --find pressure: the load curve
@@ -877,7 +901,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             // quantity's value (the corner's pitch where none is searched).
             const auto gap_at = [&](double x) {
               (by_pressure ? in.problem.pbar0 : in.problem.l) = x;
-              const double g = texture ? (*texture)(in.problem, *in.creep, r.time)
+              const double g = texture ? (*texture)(in.problem, *in.creep, r.time, r)
                                        : model::dh_touching_at(in.problem, *in.creep, r.time);
               if (std::isnan(g)) {
                 throw std::runtime_error("the gap closed at " + std::string(by_pressure ? "pbar = " : "l = ") +
@@ -887,7 +911,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             };
             if (!searched) {
               const double gap = gap_at(l);
-              endless = endless || std::isinf(gap);
+              endless = endless || gap == kInf;
               take(DesignBound{T, p, l, Cs[c], dh0, gap});
               continue;
             }
@@ -907,7 +931,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             // requirement's time is that dh, by bisection in its log over the range (the gap
             // grows with it; checked).
             const double g_lo = gap_at(lo), g_hi = gap_at(hi);
-            endless = endless || std::isinf(g_lo);
+            endless = endless || g_lo == kInf;
             if (!(g_hi >= g_lo)) {
               out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from " + a.find + " = " +
                                   model::number_text(lo, 4) + " to " + model::number_text(hi, 4) +
@@ -923,7 +947,11 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                 // Each gap is a contact solve of the cell: Brent's method in the log, to
                 // 1e-9 of the value (the grid's own error is some 1e-4), in 8-12 solves
                 // where bisection to 1e-15 took 50.
-                const auto f = [&](double y) { return gap_at(std::exp(y)) - dh; };
+                // (A share no drop from 0 brings down, -infinity, is below any dh.)
+                const auto f = [&](double y) {
+                  const double gap = gap_at(std::exp(y));
+                  return gap == -kInf ? -1.0 - dh : gap - dh;
+                };
                 value = std::exp(model::brent(f, std::log(lo), std::log(hi), g_lo - dh, g_hi - dh, kTextureSearchTolerance).x);
               } else {
                 double a_ = std::log(lo), b_ = std::log(hi);

@@ -60,7 +60,10 @@ LevelClosure::LevelClosure(const model::CellGeometry& geometry, int level, const
     throw std::invalid_argument("level closure: level " + std::to_string(level) + " has no depth at which it is a punch of its own");
   }
   for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-    if (in_level(geometry_, level, k)) geometry_.sites[k].drop = deepest_ * (1.0 - kExposedMargin) + offset_[k];
+    if (in_level(geometry_, level, k)) {
+      geometry_.sites[k].drop = deepest_ * (1.0 - kExposedMargin) + offset_[k];
+      ++caps_;
+    }
   }
   cell_ = make_cell(geometry_, grid);
 }
@@ -75,6 +78,7 @@ LevelClosed LevelClosure::at(double X) {
   const PeriodicGrid& g = cell_.grid;
   std::vector<double> p(g.size(), 0.0), u(g.size());
   out.status = solver_.solve(cell_.profile, X, 1.0, p, u);
+  out.solves = 1;
   if (!out.status.converged) {
     throw std::runtime_error("level closure: the contact solve at X = " + std::to_string(X) + " E0* missed its tolerance (residual " +
                              std::to_string(out.status.residual) + " after " + std::to_string(out.status.iterations) +
@@ -89,6 +93,73 @@ LevelClosed LevelClosure::at(double X) {
     closed = std::max(closed, reference_drop + u_reference - u[cell_.tips[k]] - offset_[k]);
   }
   out.drop = out.every_drop ? deepest_ : std::clamp(closed, 0.0, deepest_);
+  return out;
+}
+
+LevelClosed LevelClosure::at(double X, std::size_t caps) {
+  if (caps < 1 || caps > caps_) {
+    throw std::invalid_argument("level closure: " + std::to_string(caps) + " caps of level " + std::to_string(level_) +
+                                ", which has " + std::to_string(caps_));
+  }
+  if (caps == 1 || X == 0.0) return at(X);
+  if (!(X > 0.0)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not >= 0");
+  LevelClosed out;
+  out.status.converged = true;
+  const std::size_t n = cell_.grid.size();
+  if (others_.empty()) {
+    model::CellGeometry top = geometry_;
+    for (std::size_t k = 0; k < top.sites.size(); ++k) {
+      if (in_level(top, level_, k)) top.sites[k].drop = offset_[k];
+    }
+    level_at_top_ = level_surfaces(top, cell_.grid)[static_cast<std::size_t>(level_)];
+    const std::vector<std::vector<double>> deep = level_surfaces(geometry_, cell_.grid);
+    others_.assign(n, std::numeric_limits<double>::infinity());
+    for (std::size_t q = 0; q < deep.size(); ++q) {
+      if (static_cast<int>(q) == level_) continue;
+      for (std::size_t i = 0; i < n; ++i) others_[i] = std::min(others_[i], deep[q][i]);
+    }
+  }
+  // The level's caps in contact at load X with its tallest cap at `drop` (the others at
+  // their offsets below it). The level's tips stay on the surface at any drop to its
+  // deepest, so the closure's cell says which are pressed.
+  const double deepest = deepest_ * (1.0 - kExposedMargin);
+  std::vector<double> profile(n), u(n);
+  if (pressure_.size() != n) pressure_.assign(n, 0.0);
+  const auto touched = [&](double drop) {
+    for (std::size_t i = 0; i < n; ++i) profile[i] = std::min(others_[i], level_at_top_[i] + drop);
+    const ContactStatus status = solver_.solve(profile, X, 1.0, pressure_, u);
+    ++out.solves;
+    if (!status.converged) {
+      throw std::runtime_error("level closure: the contact solve at X = " + std::to_string(X) + " E0* with level " +
+                               std::to_string(level_) + " at drop " + std::to_string(drop) +
+                               " R missed its tolerance (residual " + std::to_string(status.residual) + ")");
+    }
+    out.status.iterations += status.iterations;
+    out.status.residual = std::max(out.status.residual, status.residual);
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+      if (in_level(geometry_, level_, k) && cell_.touched(k, pressure_)) ++count;
+    }
+    return count;
+  };
+  if (touched(deepest) >= caps) {
+    out.every_drop = true;
+    out.drop = deepest_;
+    return out;
+  }
+  // The first cap closes at at(X).drop: the caps-th no deeper.
+  const LevelClosed first = at(X);
+  out.solves += first.solves;
+  double low = 0.0, high = std::min(first.drop, deepest);
+  if (touched(low) < caps) {
+    out.drop = -std::numeric_limits<double>::infinity();
+    return out;
+  }
+  while (high - low > kDropTolerance * deepest_) {
+    const double mid = 0.5 * (low + high);
+    (touched(mid) >= caps ? low : high) = mid;
+  }
+  out.drop = 0.5 * (low + high);
   return out;
 }
 

@@ -30,6 +30,7 @@ struct LevelClosed {
   /// at the load it touches at any drop.
   bool every_drop = false;
   ContactStatus status;  ///< the solve's (status.converged: it met its tolerance)
+  int solves = 0;        ///< contact solves made for it
 };
 
 /// One level of one geometry on one grid, solved at any load. The level's sites are set
@@ -48,6 +49,23 @@ class LevelClosure {
   /// std::runtime_error where the contact solve misses its tolerance.
   LevelClosed at(double X);
 
+  /// The drop of the level's tallest cap at which `caps` of the level's caps (1 to their
+  /// number) have touched at load X (a share of a scattered level's caps, where the first
+  /// is at(X)). Past the first cap the state depends on the drop (the caps in contact carry
+  /// load), so it is found by bisection over the drop, one contact solve of the cell a trial
+  /// (each started from the last trial's pressure), to kDropTolerance of the deepest drop:
+  /// fewer than `caps` touch at a deeper level, at least `caps` at a shallower one (the
+  /// level's own caps are pressed the harder the higher it lies). -infinity where fewer
+  /// than `caps` touch even at drop 0 (the level's tallest cap as tall as the cell's
+  /// tallest tip); every_drop where they touch at the deepest. Throws
+  /// std::invalid_argument for `caps` outside 1 to the level's caps.
+  LevelClosed at(double X, std::size_t caps);
+
+  /// How close a bisection brings at(X, caps) to the drop, relative to deepest().
+  static constexpr double kDropTolerance = 1e-10;
+  /// The level's number of caps.
+  std::size_t caps() const { return caps_; }
+
   /// The deepest drop of the level's tallest cap at which its caps are all still punches of
   /// their own (in R): past it the other levels' surfaces lie above one of its tips.
   double deepest() const { return deepest_; }
@@ -61,6 +79,13 @@ class LevelClosure {
   std::size_t reference_ = 0;  ///< a tallest site
   std::vector<double> offset_;  ///< each of the level's sites' drop below its tallest (0 elsewhere)
   double deepest_ = 0.0;
+  std::size_t caps_ = 0;
+  std::vector<double> pressure_;  ///< the last trial's, a bisection's first guess
+  /// For at(X, caps), made at its first call: the other levels' lowest surface at the nodes
+  /// (with the level at its deepest, where their reach is the widest) and the level's with
+  /// its tallest cap at drop 0 (where its reach is): the cell's profile with the level at
+  /// drop d is their least, the level's raised by d.
+  std::vector<double> others_, level_at_top_;
 };
 
 }  // namespace punchsweep::reference

@@ -124,6 +124,44 @@ std::size_t tip_node(const PeriodicGrid& g, const model::Site& site, std::size_t
   return g.index(node(site.x, g.hx(), g.nx, g.stored_nx()), node(site.y, g.hy(), g.ny, g.stored_ny()));
 }
 
+std::vector<std::vector<double>> level_surfaces(const model::CellGeometry& geometry, const PeriodicGrid& g,
+                                                const model::SurfaceLocator& locator, std::vector<std::size_t>* tips,
+                                                std::vector<char>* tip_exposed) {
+  const std::vector<model::Site>& sites = geometry.sites;
+  const std::size_t levels = static_cast<std::size_t>(geometry.levels());
+  // Each level's lowest surface f(r) + drop at the nodes, each site read over its reach
+  // alone (never a grid per site: a supercell has thousands).
+  std::vector<std::vector<double>> level_low(levels, std::vector<double>(g.size(), std::numeric_limits<double>::infinity()));
+  // The nodes i (along one axis of n nodes, `stored` of them kept) within `reach` of c.
+  const auto window = [](double c, double reach, double h, int n, int stored, std::vector<int>* out) {
+    out->clear();
+    const double first = std::ceil((c - reach) / h), last = std::floor((c + reach) / h);
+    const bool all = !(last - first + 1.0 < n);
+    const long from = all ? 0 : static_cast<long>(first), to = all ? n - 1 : static_cast<long>(last);
+    for (long i = from; i <= to; ++i) {
+      const int wrapped = static_cast<int>(((i % n) + n) % n);
+      if (wrapped < stored) out->push_back(wrapped);
+    }
+  };
+  std::vector<int> rows, columns;
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const model::Site& site = sites[k];
+    if (tips) tips->push_back(tip_node(g, site, k));
+    if (tip_exposed) tip_exposed->push_back(model::tip_exposed(geometry, locator, k) ? 1 : 0);
+    if (locator.reach(k) < 0.0) continue;  // nowhere the lowest
+    window(site.x, locator.reach(k), g.hx(), g.nx, g.stored_nx(), &rows);
+    window(site.y, locator.reach(k), g.hy(), g.ny, g.stored_ny(), &columns);
+    std::vector<double>& low = level_low[static_cast<std::size_t>(site.level)];
+    for (const int i : rows) {
+      for (const int j : columns) {
+        double& v = low[g.index(i, j)];
+        v = std::min(v, punch_height(g, site.shape, g.x(i), g.y(j), site.x, site.y) + site.drop);
+      }
+    }
+  }
+  return level_low;
+}
+
 }  // namespace
 
 Symmetry symmetry_of(const model::CellGeometry& geometry) {
@@ -150,36 +188,7 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
   }
   const model::SurfaceLocator locator(geometry);
   const std::size_t levels = static_cast<std::size_t>(geometry.levels());
-  // Each level's lowest surface f(r) + drop at the nodes, each site read over its reach
-  // alone (never a grid per site: a supercell has thousands).
-  std::vector<std::vector<double>> level_low(levels, std::vector<double>(g.size(), std::numeric_limits<double>::infinity()));
-  // The nodes i (along one axis of n nodes, `stored` of them kept) within `reach` of c.
-  const auto window = [](double c, double reach, double h, int n, int stored, std::vector<int>* out) {
-    out->clear();
-    const double first = std::ceil((c - reach) / h), last = std::floor((c + reach) / h);
-    const bool all = !(last - first + 1.0 < n);
-    const long from = all ? 0 : static_cast<long>(first), to = all ? n - 1 : static_cast<long>(last);
-    for (long i = from; i <= to; ++i) {
-      const int wrapped = static_cast<int>(((i % n) + n) % n);
-      if (wrapped < stored) out->push_back(wrapped);
-    }
-  };
-  std::vector<int> rows, columns;
-  for (std::size_t k = 0; k < sites.size(); ++k) {
-    const model::Site& site = sites[k];
-    cell.tips.push_back(tip_node(g, site, k));
-    cell.tip_exposed.push_back(model::tip_exposed(geometry, locator, k) ? 1 : 0);
-    if (locator.reach(k) < 0.0) continue;  // nowhere the lowest
-    window(site.x, locator.reach(k), g.hx(), g.nx, g.stored_nx(), &rows);
-    window(site.y, locator.reach(k), g.hy(), g.ny, g.stored_ny(), &columns);
-    std::vector<double>& low = level_low[static_cast<std::size_t>(site.level)];
-    for (const int i : rows) {
-      for (const int j : columns) {
-        double& v = low[g.index(i, j)];
-        v = std::min(v, punch_height(g, site.shape, g.x(i), g.y(j), site.x, site.y) + site.drop);
-      }
-    }
-  }
+  const std::vector<std::vector<double>> level_low = level_surfaces(geometry, g, locator, &cell.tips, &cell.tip_exposed);
   cell.profile.assign(g.size(), std::numeric_limits<double>::infinity());
   for (const std::vector<double>& low : level_low) {
     for (std::size_t k = 0; k < g.size(); ++k) cell.profile[k] = std::min(cell.profile[k], low[k]);
@@ -210,6 +219,15 @@ Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
     cell.level_node.push_back(std::move(own_node));
   }
   return cell;
+}
+
+std::vector<std::vector<double>> level_surfaces(const model::CellGeometry& geometry, const PeriodicGrid& grid) {
+  if (const std::string e = model::geometry_error(geometry); !e.empty()) throw std::invalid_argument("level_surfaces: " + e);
+  if (const std::string e = grid_error(grid); !e.empty()) throw std::invalid_argument("level_surfaces: " + e);
+  if (grid.Lx != geometry.Lx || grid.Ly != geometry.Ly) {
+    throw std::invalid_argument("level_surfaces: the grid's cell is not the geometry's");
+  }
+  return level_surfaces(geometry, grid, model::SurfaceLocator(geometry), nullptr, nullptr);
 }
 
 bool fft_friendly(int n) {

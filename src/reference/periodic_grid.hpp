@@ -117,6 +117,12 @@ struct Cell {
 /// what is not). Under a mirror a tip outside the stored part is given as its image's node.
 Cell make_cell(const model::CellGeometry& geometry, const PeriodicGrid& grid);
 
+/// Each level's lowest surface f(r) + drop at the grid's stored nodes (+infinity where none
+/// of its sites is the texture's lowest within its reach): make_cell's profile is their
+/// least. For a caller that moves one level and keeps the rest (reference::LevelClosure).
+/// Throws std::invalid_argument as make_cell does.
+std::vector<std::vector<double>> level_surfaces(const model::CellGeometry& geometry, const PeriodicGrid& grid);
+
 /// The most symmetry the sites of `geometry` allow a grid of its cell: mirror where they
 /// are even in x and y, mirror_x where in x alone, else none.
 Symmetry symmetry_of(const model::CellGeometry& geometry);

@@ -234,6 +234,60 @@ def test_a_scattered_moulds_pitch_window():
     assert scattered_t_star(texture, 30, l=lower * (1 - 1e-3)) > 1.0 > scattered_t_star(texture, 30, l=lower * (1 + 1e-3))
 
 
+def level_shares(texture: list, p_kPa: float, time: str, **given) -> float:
+    """Level 1's share of caps in contact at `time` by `surface` (the load curve of every cap)
+    on a scattered mould at 20 C, with the lengths in `given` (l=, dh= in um) set."""
+    args = [a for a in texture]
+    for name, value in given.items():
+        if f"--{name}" in args:
+            args[args.index(f"--{name}") + 1] = f"{value!r}um"
+        else:
+            args += [f"--{name}", f"{value!r}um"]
+    r = cli("surface", "--material", TRUTH, *MOULD, *args, "--pressure", f"{p_kPa!r}kPa", "--temperature", 20,
+            "--times", time, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)["series"]["touched_1"][0]
+
+
+def test_a_scattered_moulds_drop_window_from_shares_of_its_level():
+    """--find dh on the scattered mould (3 x 3 cells, 18 level-1 caps) with shares of the
+    level's caps: "90% of level 1 within 1min at 20kPa" holds while its 17th cap has touched
+    (ceil(0.9 x 18)), "at most 5% of level 1 within 1s at 5kPa" while no cap has (floor(0.05 x
+    18) = 0). Each is the closure of the cap that decides it, by bisection over the level's
+    drop (a contact solve a trial, no curve). 1e-4 of dh either side of each edge `surface`
+    (the load curve of every cap, another code path, on the same grid) crosses it: 17 caps
+    (94%) inside the upper edge, 16 (89%) outside; none outside the lower, one (5.6%) inside."""
+    texture = [a for a in SCATTERED if a not in ("--dh", "2um")]
+    d = design(*texture, "--temperature", 20, "--require", "90% of level 1 within 1min at 20kPa",
+               "--require", "at most 5% of level 1 within 1s at 5kPa")
+    most, least = d["requirements"]
+    assert (most["share"], most["share_level"], least["share"], least["share_level"]) == (0.9, 1, 0.05, 1)
+    assert most["side"] == "upper" and least["side"] == "lower" and not d["empty"]
+    upper, lower = most["edge_physical"], least["edge_physical"]
+    assert 2 < lower < upper < 10
+    assert level_shares(texture, 20, "1min", dh=upper * (1 - 1e-4)) == pytest.approx(17 / 18)
+    assert level_shares(texture, 20, "1min", dh=upper * (1 + 1e-4)) == pytest.approx(16 / 18)
+    assert level_shares(texture, 5, "1s", dh=lower * (1 + 1e-4)) == 0
+    assert level_shares(texture, 5, "1s", dh=lower * (1 - 1e-4)) == pytest.approx(1 / 18)
+
+
+def test_a_scattered_moulds_pitch_window_from_a_share_of_its_level():
+    """--find l on a 2 x 2 scattered mould (8 level-1 caps at 6.5 um): "50% of level 1 within 1s
+    at 30kPa", the pitch at which the level's 4th cap touches by then (each trial pitch a
+    supercell made anew, its 4th cap's closure bisected over the drop). It lies above the
+    pitch of the first cap's ("touch within 1s"); 1e-4 of the pitch either side `surface` gives
+    3 caps (37.5%) below the edge and 4 (50%) above."""
+    texture = ["--dh", "6.5um", "--dh2", "9um", "--supercell", 2, "--scatter", "normal:0.3um", "--seed", 2, "--grid", 32]
+    d = design(*texture, "--find", "l", "--l", "100um..400um", "--temperature", 20,
+               "--require", "50% of level 1 within 1s at 30kPa", "--require", "touch within 1s at 30kPa")
+    half, first = d["requirements"]
+    assert half["side"] == "lower" and first["side"] == "lower"
+    lower = half["edge_physical"]
+    assert 100 < first["edge_physical"] < lower < 400 and d["physical"]["lower"] == lower
+    assert level_shares(texture, 30, "1s", l=lower * (1 - 1e-4)) == pytest.approx(3 / 8)
+    assert level_shares(texture, 30, "1s", l=lower * (1 + 1e-4)) == pytest.approx(4 / 8)
+
+
 def offset_cell(path: Path, drop_um: float) -> Path:
     """The shipped hexagonal cell file with its two level-1 caps at drop_um and drop_um + 0.4."""
     text = (REPO / "examples" / "cells" / "hexagonal_two_level.ini").read_text()
@@ -303,8 +357,13 @@ def test_a_height_maps_pressure_window_is_its_lattices(tmp_path):
     (["--cell", "cell.ini", "--dh", "2um", "--find", "pressure", "--pressure", "1kPa..9kPa", "--require", "touch within 1s"],
      "--dh beside --cell: the file gives the cell"),
     (["--require", "90% of level 1 within 1s at 5kPa"], "a share of caps is a requirement where heights scatter"),
-    (["--supercell", "3", "--scatter", "normal:0.3um", "--require", "90% of level 1 within 1s at 5kPa"],
-     "a share of caps is read off the load curve of every cap, with --find pressure"),
+    (["--supercell", "3", "--scatter", "normal:0.3um", "--require", "90% of caps within 1s at 5kPa"],
+     "the window of a level's drop takes a share of the searched level's caps ('90% of level 1 within 1min at 30kPa'; "
+     "level 1 here, --find dh2 for level 2's)"),
+    (["--dh", "2um", "--dh2", "5um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "l", "--l",
+      "100um..400um", "--require", "90% of level 2 within 1s at 5kPa"],
+     "the window of the pitch takes a share of the searched level's caps ('90% of level 1 within 1min at 30kPa'; "
+     "level 1 here, --level L for another)"),
     (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
       "--tolerance", "dh=0.1um", "--require", "touch within 1s"], "takes tolerances on the pressure and the temperature"),
     (["--dh", "2um", "--supercell", "3", "--scatter", "normal:0.3um", "--find", "pressure", "--pressure", "1kPa..9kPa",
@@ -319,7 +378,8 @@ def test_a_height_maps_pressure_window_is_its_lattices(tmp_path):
 ])
 def test_what_the_texture_design_cannot_answer_is_refused_by_name(args, message):
     lattice = [] if "--lattice" in args else ["--lattice", "hexagonal"]
-    r = cli("design", "--material", TRUTH, *MOULD[:4], *lattice, "--l", "200um", *args)
+    pitch = [] if "--l" in args else ["--l", "200um"]
+    r = cli("design", "--material", TRUTH, *MOULD[:4], *lattice, *pitch, *args)
     assert r.returncode == 2 and r.stdout == "" and message in r.stderr, r.stderr
 
 

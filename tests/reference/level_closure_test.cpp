@@ -4,8 +4,10 @@
 // X*, the closure of that level is the level's own drop.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "model/problem/cell_geometry.hpp"
 #include "model/problem/shape.hpp"
@@ -94,6 +96,57 @@ TEST(LevelClosure, moves_a_scattered_level_as_one) {
       EXPECT_NEAR(closed.drop, least, 1e-6 * least) << "level " << level;
       EXPECT_LT(closure.at(X * (1.0 - 1e-4)).drop, least);
       EXPECT_GT(closure.at(X * (1.0 + 1e-4)).drop, least);
+    }
+  }
+}
+
+// A share of a scattered level's caps: on the same supercells, the curve's k-th least
+// touchdown of the level's caps (k = 2 to all of them) is the load at which k of them have
+// touched, and there the closure of k caps (a bisection over the drop, a contact solve a
+// trial) is the drop of the level's tallest cap. The curve finds each X* to 1e-7 of itself,
+// and the k-th cap's closure moves about as the first's with the load (the caps before it
+// carry part of it: measured here d ln drop / d ln X at most about 1), so 2e-6 of the drop
+// bounds what the two may differ by; 1e-4 of X either side the k-th cap is short of the
+// drop or past it. Fewer than one or more caps than the level has are refused.
+TEST(LevelClosure, closes_a_share_of_a_scattered_levels_caps) {
+  const model::Shape shape{2, 0.5};
+  model::HeightScatter scatter;
+  scatter.kind = model::HeightScatter::Kind::normal;
+  scatter.width = 0.004;
+  scatter.seed = 3;
+  for (const Case& c : {Case{LatticeKind::square, 3.0, {0.02}}, Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0, 5.0 / 60.0}}}) {
+    const int K = 2;
+    const model::CellGeometry g = model::supercell(model::lattice_cell(c.lattice, c.l, shape, c.drops), K, scatter);
+    const reference::PeriodicGrid grid = reference::lattice_grid(g, c.lattice, 32, K);
+    reference::LoadCurveOptions options;
+    options.X_top = 1.0;
+    const model::LoadCurve curve = reference::build_load_curve(g, reference::make_cell(g, grid), options);
+    for (int level = 1; level < g.levels(); ++level) {
+      std::vector<double> touchdowns;
+      double least = 1e300;
+      for (std::size_t k = 0; k < g.sites.size(); ++k) {
+        if (g.sites[k].level != level) continue;
+        touchdowns.push_back(curve.site_touchdown[k]);
+        least = std::min(least, g.sites[k].drop);
+      }
+      std::sort(touchdowns.begin(), touchdowns.end());
+      reference::LevelClosure closure(g, level, grid);
+      ASSERT_EQ(closure.caps(), touchdowns.size());
+      for (std::size_t caps = 2; caps <= touchdowns.size(); ++caps) {
+        const double X = touchdowns[caps - 1];
+        ASSERT_TRUE(std::isfinite(X)) << "cap " << caps << " of level " << level << " touches on the curve";
+        const reference::LevelClosed closed = closure.at(X, caps);
+        std::printf("%s K = 2, level %d, %zu of %zu caps: X = %.9g, closure %.9g against the level's tallest cap %.9g "
+                    "(%.1e) in %d solves\n",
+                    model::lattice_name(c.lattice).c_str(), level, caps, touchdowns.size(), X, closed.drop, least,
+                    closed.drop / least - 1.0, closed.solves);
+        EXPECT_FALSE(closed.every_drop);
+        EXPECT_NEAR(closed.drop, least, 2e-6 * least) << "level " << level << ", " << caps << " caps";
+        EXPECT_LT(closure.at(X * (1.0 - 1e-4), caps).drop, least);
+        EXPECT_GT(closure.at(X * (1.0 + 1e-4), caps).drop, least);
+      }
+      EXPECT_THROW(closure.at(0.01, 0), std::invalid_argument);
+      EXPECT_THROW(closure.at(0.01, touchdowns.size() + 1), std::invalid_argument);
     }
   }
 }
