@@ -591,24 +591,34 @@ std::string nominal_value(const model::Parameter& p) {
 
 }  // namespace
 
-/// `surface_classify`: each level's regime and t* of one texture (the keywords of
-/// `punchsweep surface`, without the load's) at many points of pressure, law parameters and
-/// ramp: one load curve (to full contact, cached), then the classification at each point
-/// from the levels' touchdown loads. The grid (auto) is the one the least pressure asks.
-py::dict surface_classify(const input::Keywords& texture, const Columns& given) {
+/// One texture's answers at its points (surface_classify's, of one geometry).
+struct TextureAnswers {
+  std::size_t levels = 0;
+  std::vector<double> t_star;        ///< n x levels, row-major
+  std::vector<std::int8_t> regime;   ///< n x levels
+  std::vector<double> X_star;        ///< per level
+  std::vector<char> resolved;        ///< per level
+  std::string time_unit;
+  std::array<int, 2> grid{};
+  std::size_t caps = 0;
+};
+
+/// Each level's regime and t* of the texture of `texture`'s keywords at the points of
+/// `given` (the load's coordinates: pbar, the law's parameters, ramp_time): one load curve
+/// (as far as the points reach, cached; from a run at the least pressure, whose grid
+/// --grid auto takes), then the classification at each point from the levels' touchdown
+/// loads. No points read the curve at a nominal load (nominal_value), for the levels.
+TextureAnswers classify_texture(const input::Keywords& texture, const Columns& given) {
   const input::PointMaterial material = input::find_point_material(texture);
   const model::CreepLawSpec& spec = material.spec;
   const model::PointAxes axes(spec.parameters, given.contains(std::string(model::ramp_time_parameter().name)));
   const AxisColumns columns = axis_columns(given, axes, true, "surface_classify");
-  const auto n = static_cast<py::ssize_t>(columns.n);
+  const std::size_t n = columns.n;
   const double* pbar = columns.values[axes.find(model::Coordinate::pressure)];
   std::vector<const double*> law_values;
   for (const std::size_t j : axes.law()) law_values.push_back(columns.values[j]);
-  // The texture's curve, from a run at the least pressure (its grid, under --grid auto).
-  // No points (an empty input) give empty answers, as classify's; the curve is read all the
-  // same, for the answers' axis of levels and X_star, at a nominal load (nominal_value).
-  py::ssize_t least = 0;
-  for (py::ssize_t i = 1; i < n; ++i) least = pbar[i] < pbar[least] ? i : least;
+  std::size_t least = 0;
+  for (std::size_t i = 1; i < n; ++i) least = pbar[i] < pbar[least] ? i : least;
   input::Keywords keywords = texture;
   keywords.emplace_back("pbar", n > 0 ? input::json_number(pbar[least])
                                       : nominal_value(*model::find_parameter(model::kPressure)));
@@ -628,34 +638,155 @@ py::dict surface_classify(const input::Keywords& texture, const Columns& given) 
   const engine::TextureParts texture_parts = engine::texture_parts(keywords, points);
   const engine::SurfaceRun& run = texture_parts.run;
   const model::GeometryParts& parts = *texture_parts.parts;
-  const std::size_t L = static_cast<std::size_t>(parts.levels());
-  py::array_t<double> t_star({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
-  py::array_t<std::int8_t> regime({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(L)});
-  double* t_data = t_star.mutable_data();
-  std::int8_t* r_data = regime.mutable_data();
-  {
-    py::gil_scoped_release release;
-    parts.touches_at(spec, axes, columns.values, columns.n, t_data, r_data);
-  }
-  py::list X_star, resolved;
+  TextureAnswers out;
+  out.levels = static_cast<std::size_t>(parts.levels());
+  out.t_star.resize(n * out.levels);
+  out.regime.resize(n * out.levels);
+  parts.touches_at(spec, axes, columns.values, columns.n, out.t_star.data(), out.regime.data());
   for (const model::LevelTouch& touch : parts.touches(model::CreepWeightedLoad(*run.inputs.creep, run.inputs.problem.pbar0))) {
-    X_star.append(touch.X_star);
-    resolved.append(touch.resolved);
+    out.X_star.push_back(touch.X_star);
+    out.resolved.push_back(touch.resolved ? 1 : 0);
   }
-  py::dict out;
-  out["t_star"] = t_star;
-  out["regime"] = regime;
-  out["X_star"] = X_star;
-  out["resolved"] = resolved;
-  out["time_unit"] = run.inputs.time_unit;
+  out.time_unit = run.inputs.time_unit;
   // The grid: the curve's, or the periodic tables' own (nodes a pitch).
   if (const model::LoadCurve* curve = parts.curve()) {
-    out["grid"] = py::make_tuple(curve->nx, curve->ny);
+    out.grid = {curve->nx, curve->ny};
   } else {
     const int tables = model::periodic_solution(run.inputs.problem.shape.s).tables().n;
-    out["grid"] = py::make_tuple(tables, tables);
+    out.grid = {tables, tables};
   }
-  out["caps"] = run.geometry.sites.size();
+  out.caps = run.geometry.sites.size();
+  return out;
+}
+
+/// The texture's geometry that surface_classify takes as columns of points (each distinct
+/// combination one load curve): surface's keywords.
+constexpr std::array<const char*, 4> kGeometryColumns{"l", "dh", "dh2", "s"};
+
+/// `surface_classify`: each level's regime and t* of a texture (the keywords of `punchsweep
+/// surface`, without the load's) at many points of pressure, law parameters and ramp, and of
+/// its geometry where `given` has columns of it (l, dh, dh2, s, each value as the keyword
+/// reads it: in R, or a whole s): the points are grouped by geometry, each group's texture
+/// read as classify_texture reads one (its curve built once, cached), and the answers put
+/// back in the points' order. With geometry columns X_star, resolved and grid are per point
+/// (n x levels, n x 2); without, per level and one grid, as the one texture's.
+py::dict surface_classify(const input::Keywords& texture, const Columns& given) {
+  Columns load = given;
+  std::vector<std::pair<std::string, Column>> geometry;
+  for (const char* name : kGeometryColumns) {
+    if (const auto found = load.find(name); found != load.end()) {
+      if (std::any_of(texture.begin(), texture.end(), [&](const auto& kv) { return kv.first == name; })) {
+        throw input::UsageError(std::string("surface_classify: ") + name + " given both as a keyword and as a column");
+      }
+      geometry.emplace_back(name, found->second);
+      load.erase(found);
+    }
+  }
+  if (geometry.empty()) {
+    TextureAnswers a;
+    {
+      py::gil_scoped_release release;  // (the curve, and the points' reading)
+      a = classify_texture(texture, load);
+    }
+    const auto L = static_cast<py::ssize_t>(a.levels);
+    const auto n = static_cast<py::ssize_t>(a.levels == 0 ? 0 : a.t_star.size() / a.levels);
+    py::array_t<double> t_star({n, L});
+    py::array_t<std::int8_t> regime({n, L});
+    std::copy(a.t_star.begin(), a.t_star.end(), t_star.mutable_data());
+    std::copy(a.regime.begin(), a.regime.end(), regime.mutable_data());
+    py::list X_star, resolved;
+    for (std::size_t k = 0; k < a.levels; ++k) {
+      X_star.append(a.X_star[k]);
+      resolved.append(a.resolved[k] != 0);
+    }
+    py::dict out;
+    out["t_star"] = t_star;
+    out["regime"] = regime;
+    out["X_star"] = X_star;
+    out["resolved"] = resolved;
+    out["time_unit"] = a.time_unit;
+    out["grid"] = py::make_tuple(a.grid[0], a.grid[1]);
+    out["caps"] = a.caps;
+    return out;
+  }
+  const auto n = static_cast<std::size_t>(geometry.front().second.size());
+  for (const auto& [name, column] : geometry) {
+    if (static_cast<std::size_t>(column.size()) != n) {
+      throw std::invalid_argument("surface_classify: the arrays must have the same size (broadcast first)");
+    }
+  }
+  if (n == 0) {
+    throw input::UsageError("surface_classify: no points, so the geometry's columns (" + geometry.front().first +
+                            ", ...) name no texture to read; give at least one point");
+  }
+  // The points of each distinct geometry, in the points' order.
+  std::map<std::vector<double>, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<double> key;
+    for (const auto& [name, column] : geometry) key.push_back(column.data()[i]);
+    groups[key].push_back(i);
+  }
+  py::dict out;
+  std::size_t L = 0;
+  std::vector<double> t_star, X_star;
+  std::vector<std::int8_t> regime;
+  std::vector<char> resolved;
+  std::vector<int> grid(2 * n);
+  for (const auto& [values, points] : groups) {
+    input::Keywords keywords = texture;
+    for (std::size_t q = 0; q < geometry.size(); ++q) keywords.emplace_back(geometry[q].first, input::json_number(values[q]));
+    // The group's load columns, copied in its points' order.
+    Columns subset;
+    for (const auto& [name, column] : load) {
+      Column part(static_cast<py::ssize_t>(points.size()));
+      double* to = part.mutable_data();
+      for (std::size_t k = 0; k < points.size(); ++k) to[k] = column.data()[points[k]];
+      subset.emplace(name, std::move(part));
+    }
+    TextureAnswers a;
+    {
+      py::gil_scoped_release release;
+      a = classify_texture(keywords, subset);
+    }
+    if (L == 0) {
+      L = a.levels;
+      t_star.resize(n * L);
+      regime.resize(n * L);
+      X_star.resize(n * L);
+      resolved.resize(n * L);
+      out["time_unit"] = a.time_unit;
+      out["caps"] = a.caps;
+    } else if (a.levels != L) {
+      throw input::UsageError("surface_classify: the geometries have " + std::to_string(L) + " and " +
+                              std::to_string(a.levels) + " levels; one call takes textures of as many levels");
+    }
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const std::size_t i = points[k];
+      for (std::size_t level = 0; level < L; ++level) {
+        t_star[i * L + level] = a.t_star[k * L + level];
+        regime[i * L + level] = a.regime[k * L + level];
+        X_star[i * L + level] = a.X_star[level];
+        resolved[i * L + level] = a.resolved[level];
+      }
+      grid[2 * i] = a.grid[0];
+      grid[2 * i + 1] = a.grid[1];
+    }
+  }
+  const auto N = static_cast<py::ssize_t>(n), levels = static_cast<py::ssize_t>(L);
+  py::array_t<double> t_out({N, levels}), X_out({N, levels});
+  py::array_t<std::int8_t> regime_out({N, levels});
+  py::array_t<bool> resolved_out({N, levels});
+  py::array_t<int> grid_out({N, py::ssize_t{2}});
+  std::copy(t_star.begin(), t_star.end(), t_out.mutable_data());
+  std::copy(X_star.begin(), X_star.end(), X_out.mutable_data());
+  std::copy(regime.begin(), regime.end(), regime_out.mutable_data());
+  std::transform(resolved.begin(), resolved.end(), resolved_out.mutable_data(), [](char c) { return c != 0; });
+  std::copy(grid.begin(), grid.end(), grid_out.mutable_data());
+  out["t_star"] = t_out;
+  out["regime"] = regime_out;
+  out["X_star"] = X_out;
+  out["resolved"] = resolved_out;
+  out["grid"] = grid_out;
   return out;
 }
 
@@ -686,9 +817,9 @@ PYBIND11_MODULE(_core, m) {
   m.def("surface", &report::surface_json, py::arg("keywords"),
         "punchsweep surface of (option name, value text) pairs, in-process: its JSON text");
   m.def("surface_classify", &surface_classify, py::arg("texture"), py::arg("columns"),
-        "each level's regime and t* of one texture (surface's keywords without the load's) at points given as "
+        "each level's regime and t* of a texture (surface's keywords without the load's) at points given as "
         "equal-sized 1-D arrays by coordinate name (pbar, the law's parameters, ramp_time: point_axes without the "
-        "texture's)");
+        "texture's; and l, dh, dh2, s of the texture, one curve per distinct geometry)");
   m.def("classify", &classify, py::arg("columns"), py::arg("C"), py::arg("localization"), py::arg("material"),
         py::arg("quantities"),
         "the map's per-point quantities (those named in quantities; all where it is empty) of points given as "

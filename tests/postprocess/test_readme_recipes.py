@@ -57,5 +57,9 @@ def test_the_readme_python_recipe_runs(tmp_path, monkeypatch):
     # As the README's comment says (the periodic model's t* here; docs/model.md 14.4 has the BEM's 0.874).
     assert r.regime == "delayed" and abs(r.t_star - 0.873568135068006) < 1e-12
     assert c["regime"].shape == (111, 200)
+    # A texture through classify: a curve per pitch, the levels last.
+    h = scope["h"]
+    assert isinstance(h, punchsweep.TextureClassification) and h.t_star.shape == (2, 50, 3)
+    assert tuple(h.grid[1, 0]) == (64, 108)
     assert 0 < m.J(1.0, temperature=60) < 1  # a polymer's compliance in 1/Pa is far below 1
     assert ds["regime"].shape == (1, 2, 1, 2, 1)

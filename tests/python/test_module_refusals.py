@@ -91,7 +91,7 @@ def test_numpy_bools_are_switches():
     (lambda: punchsweep.surface(T=2.5, pbar=np.array([[0.02]]), **TEXTURE), "pbar = array([[0.02]]): an array of shape (1, 1)"),
     (lambda: punchsweep.surface_classify(pbar=[0.02, 0.04], T=2.5, times=[[0], [1]], **TEXTURE),
      "times = [[0], [1]]: an array of shape (2, 1)"),
-    (lambda: punchsweep.surface_classify(pbar=0.02, T=2.5, l=[[0.75]], dh=0.05, s=2), "l = [[0.75]]: an array of shape (1, 1)"),
+    (lambda: punchsweep.surface_map(pbar=0.02, T=2.5, l=[[0.75]], dh=0.05, s=2), "l = [[0.75]]: an array of shape (1, 1)"),
     (lambda: punchsweep.point(l=0.75, dh=0.05, T=2.5, pbar=0.02, s=2, times=[[0, 1], [2]]), "times = [[0, 1], [2]]: an array of lists"),
     (lambda: punchsweep.surface_map(pbar=[[0.02, 0.04]], T=2.5, **TEXTURE), "pbar = [[0.02, 0.04]]: an array of shape (1, 2)"),
 ])

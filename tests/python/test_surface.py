@@ -18,6 +18,7 @@ import punchsweep
 from lattice_maps import lattice_heights
 
 REPO = Path(__file__).resolve().parents[2]
+TRUTH = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
 BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
 TIMES = [0, 0.5, 1, 2, 5, 50]
 
@@ -500,6 +501,45 @@ def test_surface_classify_reads_many_loads_off_one_curve():
             assert (expected["t_star"] is None and np.isinf(t)) or t == expected["t_star"]
     with pytest.raises(ValueError, match="pbar = -1"):
         punchsweep.surface_classify(pbar=[0.01, -1.0], T=2.5, **texture)
+
+
+def test_classify_of_a_texture_reads_a_curve_per_geometry():
+    """classify with a texture keyword is one batch call over geometries and loads: l (3
+    pitches) x dh (2 drops) x pbar (4) broadcast, six curves; at every point each level's
+    t*, regime, X_star, resolved and grid equal surface_classify's for that geometry alone
+    (the same curve, the same reading: the same bits). In physical units (pitches and drops
+    with a unit beside R=, pressures in kPa under a material) likewise. The model's own
+    arguments (quantities=, localization=) are refused beside a texture, naming it."""
+    texture = dict(lattice="hexagonal", dh2=0.09, s=2, grid=32)
+    l = np.array([1.0, 1.2, 1.5])[:, None, None]
+    dh = np.array([0.03, 0.05])[None, :, None]
+    pbar = np.geomspace(2e-3, 0.04, 4)[None, None, :]
+    out = punchsweep.classify(l, dh, T=2.5, pbar=pbar, **texture)
+    assert isinstance(out, punchsweep.TextureClassification)
+    assert out.t_star.shape == out.regime.shape == out.X_star.shape == (3, 2, 4, 3) and out.grid.shape == (3, 2, 4, 2)
+    assert out.levels == 3 and out.caps == 6
+    for i in range(3):
+        for j in range(2):
+            alone = punchsweep.surface_classify(pbar=pbar[0, 0], T=2.5, l=float(l[i, 0, 0]), dh=float(dh[0, j, 0]),
+                                                **texture)
+            np.testing.assert_array_equal(out.t_star[i, j], alone.t_star)
+            np.testing.assert_array_equal(out.regime[i, j], alone.regime)
+            for k in range(4):
+                np.testing.assert_array_equal(out.X_star[i, j, k], alone.X_star)
+                np.testing.assert_array_equal(out.resolved[i, j, k], alone.resolved)
+                assert tuple(out.grid[i, j, k]) == alone.grid
+    names = {punchsweep.REGIMES[int(code)] for code in np.unique(out.regime[..., 1:])}
+    assert len(names) >= 2
+    physical = dict(material=str(TRUTH), R="60um", temperature=20, lattice="hexagonal", dh2="5um", s=2, grid=32)
+    pressure = ["5kPa", "20kPa"]
+    out = punchsweep.classify([["200um"], ["250um"]], "2um", pressure=pressure, **physical)
+    assert out.t_star.shape == (2, 2, 3) and out.X_star.shape == (2, 2, 3)
+    for i, pitch in enumerate(["200um", "250um"]):
+        alone = punchsweep.surface_classify(pressure=pressure, l=pitch, dh="2um", **physical)
+        np.testing.assert_array_equal(out.t_star[i], alone.t_star)
+        np.testing.assert_array_equal(out.X_star[i, 0], alone.X_star)
+    with pytest.raises(ValueError, match="quantities= and localization= are the paper's lattice's.*lattice="):
+        punchsweep.classify(1.2, 0.03, T=2.5, pbar=0.01, quantities=["t_star"], **texture)
 
 
 def test_surface_classify_and_maps_read_the_curve_as_far_as_their_loads_reach(tmp_path):

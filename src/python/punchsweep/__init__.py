@@ -289,22 +289,31 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     return SurfaceResult.from_json(json.loads(_core.surface(keywords)))
 
 
+# The texture's geometry that surface_classify (and classify with a texture) takes as arrays:
+# each distinct combination is one load curve.
+_GEOMETRY_COLUMNS = ("l", "dh", "dh2", "s")
+
+
 def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp_time=None,
                      material: str | None = None, R: str | None = None, **texture: Any) -> TextureClassification:
-    """Each level's regime and t* of one texture (surface()'s keywords: lattice=, l=, dh=,
+    """Each level's regime and t* of a texture (surface()'s keywords: lattice=, l=, dh=,
     dh2=, s=, C=, cell=, height_map=, supercell=, scatter=, grid=, ...) at many loads,
     broadcasting pbar (or pressure= with a material), the law's parameter (T, or temperature=
-    with a material file) and ramp_time like numpy. The texture's load curve is built once
-    (as far as the largest X(inf) of the points, or to full contact for none, on the grid the
-    least pressure asks under grid="auto", and kept in the table cache); every point is then
-    read off it (about 1e7 points a second): a material x temperature x pressure sweep at
-    the cost of one curve. Returns a TextureClassification (it reads like a dict): t_star and
-    regime (the map's codes, REGIMES; regime_names() as text) shaped as the broadcast inputs
-    plus a last axis of levels, X_star (+inf for a level no point reaches) and resolved per
-    level, time_unit, grid and caps. Empty inputs give empty arrays of their shape (the
-    curve is read all the same, for the levels, at a nominal load).
-    ValueError with the command line's message for bad input, and naming the argument for a
-    complex number, a bool or a list that mixes values with and without a unit."""
+    with a material file) and ramp_time like numpy, and the geometry's l, dh, dh2 and s where
+    given as arrays (or lists): each distinct geometry is one load curve. Each curve is built
+    once (as far as the largest X(inf) of its points, or to full contact for none, on the grid
+    its least pressure asks under grid="auto", and kept in the table cache); every point is
+    then read off it (about 1e7 points a second): a material x temperature x pressure sweep at
+    the cost of one curve a geometry. Returns a TextureClassification (it reads like a dict):
+    t_star and regime (the map's codes, REGIMES; regime_names() as text) shaped as the
+    broadcast inputs plus a last axis of levels; X_star (+inf for a level no point reaches)
+    and resolved per level, and grid (nodes x, y), for one geometry, or each with the
+    broadcast shape first (grid: a last axis of 2) where the geometry is given as arrays;
+    time_unit and caps. Empty inputs give empty arrays of their shape (the curve is read all
+    the same, for the levels, at a nominal load; not where the geometry is arrays: then
+    there is no texture to read). ValueError with the command line's message for bad input,
+    and naming the argument for a complex number, a bool or a list that mixes values with and
+    without a unit. classify() with a texture keyword (lattice=, cell=, ...) is this call."""
     if pressure is not None:
         if pbar is not None:
             raise ValueError("surface_classify: pbar and pressure both given; valid: one of them")
@@ -321,15 +330,30 @@ def surface_classify(pbar=None, T=None, *, pressure=None, temperature=None, ramp
     if ramp_time is not None:
         ramp_time = _in_scale(ramp_time, "ramp_time", material, R, "surface_classify: ramp_time")
     law = _law_arrays("surface_classify", T, temperature, material)
-    shape, columns = _point_columns(dict(pbar=pbar, **law, ramp_time=ramp_time))
+    # The geometry given as arrays: columns of points, in the scales (lengths in R, as the
+    # engine reads a bare number beside R=).
+    geometry = {}
+    for name in _GEOMETRY_COLUMNS:
+        value = texture.get(name)
+        if value is not None and np.ndim(np.asarray(value, dtype=object)) > 0:
+            _real(value, f"surface_classify: {name}")
+            geometry[name] = value if name == "s" else _in_scale(value, "dh" if name == "dh2" else name, material, R,
+                                                                 f"surface_classify: {name}")
+            del texture[name]
+    shape, columns = _point_columns(dict(pbar=pbar, **law, ramp_time=ramp_time, **geometry))
     keywords = _keywords(dict(material=None if material is None else os.fspath(material), R=R, **{
         k: (os.fspath(v) if k in ("cell", "height_map") and v is not None else v) for k, v in texture.items()}))
     raw = _core.surface_classify(keywords, columns)
-    levels = len(raw["X_star"])
-    return TextureClassification(t_star=np.asarray(raw["t_star"]).reshape(*shape, levels),
-                                 regime=np.asarray(raw["regime"]).reshape(*shape, levels),
-                                 X_star=np.asarray(raw["X_star"]), resolved=np.asarray(raw["resolved"], dtype=bool),
-                                 time_unit=raw["time_unit"], grid=tuple(raw["grid"]), caps=raw["caps"])
+    levels = np.asarray(raw["t_star"]).shape[-1]
+    per_point = bool(geometry)
+    return TextureClassification(
+        t_star=np.asarray(raw["t_star"]).reshape(*shape, levels),
+        regime=np.asarray(raw["regime"]).reshape(*shape, levels),
+        X_star=np.asarray(raw["X_star"]).reshape(*shape, levels) if per_point else np.asarray(raw["X_star"]),
+        resolved=(np.asarray(raw["resolved"], dtype=bool).reshape(*shape, levels) if per_point
+                  else np.asarray(raw["resolved"], dtype=bool)),
+        time_unit=raw["time_unit"],
+        grid=np.asarray(raw["grid"]).reshape(*shape, 2) if per_point else tuple(raw["grid"]), caps=raw["caps"])
 
 
 
@@ -620,9 +644,10 @@ def _point_columns(coordinates: dict) -> tuple[tuple, dict]:
     return arrays[0].shape, {k: np.ascontiguousarray(a).reshape(-1) for k, a in zip(given, arrays)}
 
 
-def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str | None = None, *,
+def classify(l=None, dh=None, T=None, pbar=None, s=None, C: float | None = None, localization: str | None = None, *,
              material: str | None = None, temperature=None, ramp_time=None, pressure=None,
-             R: str | None = None, quantities: Iterable[str] | None = None) -> Classification:
+             R: str | None = None, quantities: Iterable[str] | None = None,
+             **texture: Any) -> Classification | TextureClassification:
     """The regime, t*, h(0), h(inf) and validity of every point, broadcasting l, dh, pbar, s and
     the law's parameter (numbers or arrays) like numpy: T of the standard linear solid, or with
     material=FILE (a material file, as point()'s --material) its temperature in degC where the
@@ -639,7 +664,20 @@ def classify(l, dh, T=None, pbar=None, s=None, C: float = 0.5, localization: str
     punch's radius of curvature); ramp_time with a time unit ('30s') with a material. Bare
     numbers stay in the scales (R, E0*, T_eps or the material's time unit).
     quantities: the names to return (of Classification's; None: all of them). Each array
-    costs a large grid about 8% of its time: ("regime", "t_star") runs a third faster."""
+    costs a large grid about 8% of its time: ("regime", "t_star") runs a third faster.
+    Any texture (surface()'s keywords: lattice="hexagonal", dh2=, cell=, height_map=,
+    supercell=, scatter=, seed=, grid=, curve=, ...): each level's regime and t* at every
+    point, l, dh, s (and dh2) broadcast with the load's arrays, one load curve per distinct
+    geometry: surface_classify()'s answer, a TextureClassification (the model's h(0), h(inf)
+    and validity, quantities= and localization= are the paper's lattice's)."""
+    if texture:
+        if quantities is not None or localization is not None:
+            raise ValueError("classify: quantities= and localization= are the paper's lattice's (its model's "
+                             f"outputs); a texture ({', '.join(f'{k}=' for k in texture)}) gives each level's t* and "
+                             "regime (surface_classify's)")
+        return surface_classify(pbar=pbar, T=T, pressure=pressure, temperature=temperature, ramp_time=ramp_time,
+                                material=material, R=R, l=l, dh=dh, s=s, C=C, **texture)
+    C = 0.5 if C is None else C
     if pressure is not None:
         if pbar is not None:
             raise ValueError("classify: pbar and pressure both given; valid: one of them")

@@ -256,13 +256,16 @@ class DesignResult(_JsonRecord):
 
 @dataclass(frozen=True, eq=False)
 class TextureClassification(_JsonRecord):
-    """`surface_classify()`'s answer: each level's regime and t* of one texture at many loads.
+    """`surface_classify()`'s answer (and classify()'s with a texture): each level's regime and t*
+    of a texture at many loads (and geometries).
 
     t_star (float64 in time_unit, 0 at once, +inf for never, as a texture map's) and regime (int8, the map's codes: see
     punchsweep.REGIMES) are shaped as the broadcast inputs plus a last axis of levels;
-    X_star (E0*) and resolved (bool) per level, the touchdowns they were read from; grid:
-    the load curve's nodes (x, y), or the periodic tables' (512, 512) where they answered;
-    caps: caps in the cell. Reads like the dict it was (c["t_star"])."""
+    X_star (E0*) and resolved (bool) per level, the touchdowns they were read from (shaped as
+    t_star where the geometry was given as arrays); grid: the load curve's nodes (x, y), or
+    the periodic tables' (512, 512) where they answered (an array of the inputs' shape and a
+    last axis of 2 where the geometry was arrays); caps: caps in the cell. Reads like the
+    dict it was (c["t_star"])."""
     t_star: np.ndarray = field(repr=False)
     regime: np.ndarray = field(repr=False)
     X_star: np.ndarray
@@ -275,7 +278,7 @@ class TextureClassification(_JsonRecord):
     @property
     def levels(self) -> int:
         """The texture's levels (the arrays' last axis)."""
-        return len(self.X_star)
+        return self.t_star.shape[-1]
 
     def regime_names(self) -> np.ndarray:
         """The regimes as text ('immediate', 'delayed', 'never'), of regime's shape."""
