@@ -28,6 +28,7 @@
 #include "model/point/sensitivity.hpp"
 #include "model/problem/cell_geometry.hpp"
 #include "model/problem/parameter.hpp"
+#include "model/surface/surface_advisory.hpp"
 #include "model/surface/small_spot_touchdown.hpp"
 #include "reference/level_closure.hpp"
 #include "reference/periodic_grid.hpp"
@@ -504,14 +505,7 @@ class TextureGap {
     // A closure holds its grid's fields (tens of MB at 256 nodes a pitch): --find l asks a
     // new pitch at every trial, so only the last few are kept (a box has at most 4 corners
     // of l and C).
-    if (closures_.size() >= kKeptClosures && !closures_.contains({problem.l, problem.shape.C})) closures_.clear();
-    Closure& closure = closures_[{problem.l, problem.shape.C}];
-    if (!closure.made) {
-      closure.made = std::make_unique<const engine::TextureGeometry>(make_(problem.l, problem.shape));
-      closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry, level_);
-      closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
-      for (const model::Site& site : closure.made->geometry.sites) closure.caps += site.level == level_ ? 1 : 0;
-    }
+    Closure& closure = made(problem);
     // The cap that decides: touch_by holds once the ceil(S n)-th has touched, no_touch_by
     // until the (floor(S n) + 1)-th has (share_load's counts; the first cap for both without
     // a share).
@@ -538,6 +532,17 @@ class TextureGap {
     solves_ += closed.solves;
     return known_[key] = closure.shift == 0.0 ? closed.drop : closed.drop + closure.shift;
   }
+  /// The advisories of the cell at load X (E0*) with the searched level at its design drop
+  /// `drop` (R), at the problem's pitch and shape: its caps' contact radii from one contact
+  /// solve of the cell (LevelClosure::state), the level's drop clipped to where it is a cap
+  /// of its own.
+  model::SurfaceAdvisories advice(const model::ContactProblem& problem, double X, double drop) {
+    Closure& closure = made(problem);
+    if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
+    const double at = std::clamp(drop - closure.shift, 0.0, closure.solve->deepest());
+    return model::advise_surface(closure.made->geometry, closure.solve->state(X, at));
+  }
+
   /// Whether some load pressed the level's tips at any drop it can have (its bound is then
   /// the deepest at which it is still a punch of its own).
   bool every_drop() const { return every_drop_; }
@@ -553,6 +558,19 @@ class TextureGap {
     double shift = 0.0;
     std::size_t caps = 0;  ///< of the level
   };
+  /// The closure of the problem's pitch and shape, its cell made where it is new.
+  Closure& made(const model::ContactProblem& problem) {
+    if (closures_.size() >= kKeptClosures && !closures_.contains({problem.l, problem.shape.C})) closures_.clear();
+    Closure& closure = closures_[{problem.l, problem.shape.C}];
+    if (!closure.made) {
+      closure.made = std::make_unique<const engine::TextureGeometry>(make_(problem.l, problem.shape));
+      closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry, level_);
+      closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
+      for (const model::Site& site : closure.made->geometry.sites) closure.caps += site.level == level_ ? 1 : 0;
+    }
+    return closure;
+  }
+
   TextureCellMaker make_;
   int level_;
   double design_drop_;
@@ -1043,6 +1061,35 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
       out.notes.push_back("'" + r.text + "' holds at no " + (by_l ? "pitch" : "pressure") + " from " +
                           value(out.search_lo) + " to " + value(out.search_hi) + " at every corner: widen " +
                           range_option + " or change dh");
+    }
+    // Point's advisories at the edge: the binding corner with the searched quantity at its
+    // edge, in the long term (X(inf) of that corner's pressure and law).
+    const bool edge_inside = std::isfinite(b.edge) && (searched ? b.edge >= lo && b.edge <= hi : b.edge > 0.0);
+    if (edge_inside && !b.bounds.empty()) {
+      const DesignBound& at = b.binding;
+      input::Keywords k = with(base_keywords, "pbar", input::json_number(by_pressure ? b.edge : at.pbar));
+      if (!std::isnan(at.temperature)) k = with(k, "temperature", input::json_number(at.temperature));
+      if (box.C > 0.0) k = with(k, "C", input::json_number(at.C));
+      input::PointInputs in = point_at(k, what);
+      in.problem.l = by_l ? b.edge : at.l;
+      const double drop = searched ? at.dh : b.edge;  // the searched level's
+      const double X_inf = model::CreepWeightedLoad(*in.creep, in.problem.pbar0, in.problem.loading).by(kInf);
+      if (std::isfinite(X_inf)) {
+        if (!out.texture) {
+          in.problem.dh = drop;
+          b.advice = model::advise(in.problem, model::summarize_point(in.problem, *in.creep), std::nullopt);
+        } else {
+          const model::SurfaceAdvisories advice =
+              off_curve ? model::advise_surface(off_curve->geometry, off_curve->curve.at(X_inf))
+                        : texture->advice(in.problem, X_inf, drop);
+          b.advice = advice.all;
+          for (std::size_t level = 0; level < advice.level.size(); ++level) {
+            if (b.advice_level < 0 || advice.level[level].a_max > advice.level[static_cast<std::size_t>(b.advice_level)].a_max) {
+              b.advice_level = static_cast<int>(level);
+            }
+          }
+        }
+      }
     }
     out.bounds.push_back(std::move(b));
   }

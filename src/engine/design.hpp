@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "input/command_options.hpp"
+#include "model/point/advisory.hpp"
 
 namespace punchsweep::engine {
 
@@ -89,6 +90,14 @@ struct RequirementBound {
   /// the relaxed compliance do not shift), so `binding.temperature` is only the first.
   bool every_temperature = false;
   std::vector<DesignBound> bounds;  ///< temperature-major, then corner
+  /// `point`'s advisories at the edge (docs/model.md, section 16): at the binding corner with
+  /// the searched quantity at its edge, the caps' contact radius in the long term (X(inf):
+  /// radii only grow while the contact does) against the paraboloid's and the strain's
+  /// bounds; nothing raised where the edge is not finite or the law creeps without end.
+  model::Advisories advice;
+  /// The level of the widest caps there (a texture's); -1 on the paper's lattice by its
+  /// model (its tall caps).
+  int advice_level = -1;
 };
 
 /// A texture's design (docs/design.md, "Any texture"): a lattice of two or three levels,

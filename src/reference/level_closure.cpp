@@ -1,5 +1,7 @@
 #include "reference/level_closure.hpp"
 
+#include "reference/contact_areas.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -160,6 +162,53 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
     (touched(mid) >= caps ? low : high) = mid;
   }
   out.drop = 0.5 * (low + high);
+  return out;
+}
+
+model::CurveState LevelClosure::state(double X, double drop) {
+  if (!(drop >= 0.0 && drop <= deepest_)) {
+    throw std::invalid_argument("level closure: the drop " + std::to_string(drop) + " R is outside 0 to the level's deepest, " +
+                                std::to_string(deepest_) + " R");
+  }
+  if (!(X >= 0.0) || std::isinf(X)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not finite and >= 0");
+  model::CellGeometry at = geometry_;
+  for (std::size_t k = 0; k < at.sites.size(); ++k) {
+    if (in_level(at, level_, k)) at.sites[k].drop = std::min(drop, deepest_ * (1.0 - kExposedMargin)) + offset_[k];
+  }
+  const Cell cell = make_cell(at, cell_.grid);
+  const std::size_t n = cell.grid.size();
+  const std::size_t L = static_cast<std::size_t>(at.levels());
+  model::CurveState out;
+  out.X = X;
+  out.level_area.assign(L, 0.0);
+  out.level_load.assign(L, 0.0);
+  out.level_sites_touched.assign(L, 0.0);
+  if (X == 0.0) return out;
+  std::vector<double> p(n, 0.0), u(n);
+  const ContactStatus status = solver_.solve(cell.profile, X, 1.0, p, u);
+  if (!status.converged) {
+    throw std::runtime_error("level closure: the contact solve at X = " + std::to_string(X) + " E0* missed its tolerance (residual " +
+                             std::to_string(status.residual) + ")");
+  }
+  out.level_area = level_contact_areas(cell.grid, cell.level_weight, p, p);
+  out.level_load = level_loads(cell.grid, cell.level_weight, p);
+  std::vector<double> sites(L, 0.0);
+  double touched = 0.0;
+  for (std::size_t k = 0; k < at.sites.size(); ++k) {
+    const auto level = static_cast<std::size_t>(at.sites[k].level);
+    sites[level] += 1.0;
+    if (cell.touched(k, p)) {
+      out.level_sites_touched[level] += 1.0;
+      touched += 1.0;
+    }
+  }
+  double area = 0.0;
+  for (std::size_t level = 0; level < L; ++level) {
+    if (sites[level] > 0.0) out.level_sites_touched[level] /= sites[level];
+    area += out.level_area[level];
+  }
+  out.sites_touched = touched / static_cast<double>(at.sites.size());
+  out.area_fraction = area / (at.Lx * at.Ly);
   return out;
 }
 

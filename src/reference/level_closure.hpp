@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "model/problem/cell_geometry.hpp"
+#include "model/surface/load_curve.hpp"
 #include "reference/contact_solver.hpp"
 #include "reference/periodic_grid.hpp"
 
@@ -60,6 +61,15 @@ class LevelClosure {
   /// tallest tip); every_drop where they touch at the deepest. Throws
   /// std::invalid_argument for `caps` outside 1 to the level's caps.
   LevelClosed at(double X, std::size_t caps);
+
+  /// The cell's state at load X with the level's tallest cap at `drop` (0 to deepest(), the
+  /// others at their offsets below it): each level's contact area and share of its caps
+  /// touched (model::CurveState's level_area and level_sites_touched, as a load curve's
+  /// sample gives them; level_load and the totals too), from one contact solve of the cell
+  /// made at that drop. What the design's advisories read at an edge. Throws
+  /// std::invalid_argument for a drop outside 0 to deepest() and std::runtime_error where
+  /// the solve misses its tolerance.
+  model::CurveState state(double X, double drop);
 
   /// How close a bisection brings at(X, caps) to the drop, relative to deepest().
   static constexpr double kDropTolerance = 1e-10;

@@ -131,6 +131,15 @@ engine::Unit quantity_unit(const engine::DesignResult& d) {
 
 /// What to say where no value meets every requirement: the nearest miss (in the quantity's
 /// unit `L`).
+/// A requirement's advisories at its edge as sentences ("" for none raised): which caps,
+/// then point's reasons.
+std::string edge_advisory_text(const engine::RequirementBound& b) {
+  if (b.advice.raised.empty()) return "";
+  return std::string("at the edge, in the long term, on the ") +
+         (b.advice_level < 0 ? std::string("tall caps") : "widest caps, level " + std::to_string(b.advice_level) + "'s") +
+         ": " + b.advice.reason(0.0);
+}
+
 std::string miss_text(const engine::DesignResult& d, const engine::Unit& L) {
   const std::string q = quantity_name(d);
   if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
@@ -221,7 +230,10 @@ std::string design_json(const engine::DesignResult& d) {
       << ", \"every_temperature\": " << (b.every_temperature ? "true" : "false") << ", \"pbar\": " << num(b.binding.pbar)
       << ", \"l\": " << num(b.binding.l) << ", \"C\": " << num(b.binding.C) << ", \"dh\": " << num(b.binding.dh)
       << ", \"value\": " << num(b.binding.value)
-      << "},\n   \"bounds\": [";
+      << "},\n   \"advisories\": " << input::json_string(b.advice.names())
+      << ", \"advisory_reason\": " << input::json_string(edge_advisory_text(b))
+      << ", \"contact_radius\": " << num(b.advice.a_max) << ", \"strain\": " << num(b.advice.strain)
+      << ",\n   \"bounds\": [";
     for (std::size_t k = 0; k < b.bounds.size(); ++k) {
       const engine::DesignBound& x = b.bounds[k];
       s << (k ? ", " : "") << "{\"temperature\": " << num(x.temperature) << ", \"pbar\": " << num(x.pbar)
@@ -269,6 +281,7 @@ void write_design_table(std::ostream& out, const engine::DesignResult& d) {
     out << "  " << b.requirement.text << ": " << q << " " << sign(b)
         << (std::isinf(b.edge) ? std::string(b.edge > 0 ? "inf" : "-inf") : len(b.edge)) << "  (binds at "
         << where_text(b, d, L, touch) << ")\n";
+    if (const std::string advice = edge_advisory_text(b); !advice.empty()) out << "    advisories " << advice << "\n";
   }
   out << "\n";
   const bool tolerance = engine::own_tolerance(d.tolerance, d.quantity).width > 0;

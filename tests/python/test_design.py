@@ -53,6 +53,34 @@ def fitted(tmp_path_factory) -> Path:
     return out
 
 
+def test_each_edge_carries_points_advisories_at_its_binding_corner():
+    """The README's question (TPE-A, 80 um caps on 250 um, 30 and 5 kPa): each edge's
+    advisories are `point`'s at its binding corner with dh at the edge (the tall caps'
+    long-term radius a1_inf and the strain from it, to 1e-9: the same model at the same
+    point), and the table prints them under the requirement. At 1 kPa "never" binds where the
+    caps stay within the paraboloid's bound: nothing raised, no line."""
+    d = design(TRUTH, "--temperature", "20..40C", "--require", "touch within 1s at 30kPa", "--require", "never at 5kPa",
+               "--require", "never at 1kPa")
+    for r in d["requirements"]:
+        at = r["binds_at"]
+        pressure_kPa = float(r["text"].split(" at ")[1].removesuffix("kPa"))
+        p = point(TRUTH, r["edge_physical"], pressure_kPa, at["temperature"])
+        assert r["contact_radius"] == pytest.approx(p["a1_inf"], rel=1e-9), r["text"]
+        assert r["advisories"] == p["advisories"], r["text"]
+        assert r["strain"] == pytest.approx(p["strain"], rel=1e-9)
+    touch, never, light = d["requirements"]
+    assert touch["advisories"] == "beyond_paraboloid, large_strain" and never["advisories"] == "beyond_paraboloid"
+    assert light["advisories"] == "" and light["advisory_reason"] == "" and light["contact_radius"] < 0.3
+    assert "on the tall caps: The contact radius reaches 0.5041 R" in touch["advisory_reason"]
+    r = cli("design", "--material", TRUTH, *GEOMETRY, "--temperature", "20..40C", "--require", "touch within 1s at 30kPa",
+            "--require", "never at 1kPa")
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    at = next(i for i, line in enumerate(lines) if line.startswith("  touch within 1s at 30kPa: dh <= "))
+    assert lines[at + 1].startswith("    advisories at the edge, in the long term, on the tall caps: The contact radius")
+    assert lines[at + 2].startswith("  never at 1kPa: dh > ") and not lines[at + 3].strip().startswith("advisories")
+
+
 def test_the_window_holds_at_every_corner_and_its_edges_are_tight():
     """At every temperature checked and every corner of the box, the window's dh meets every
     requirement by `point`'s t*; just past each edge, at the corner it names, it fails."""

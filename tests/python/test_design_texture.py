@@ -271,6 +271,33 @@ def test_a_scattered_moulds_drop_window_from_shares_of_its_level():
     assert level_shares(texture, 5, "1s", dh=lower * (1 - 1e-4)) == pytest.approx(1 / 18)
 
 
+def test_texture_edges_carry_the_advisories_surface_gives_there():
+    """A texture's edge carries `surface`'s advisories at its binding corner in the long term:
+    the widest caps' contact radius sqrt(area / (pi caps)) against the paraboloid's bound.
+    The scattered mould's share window in dh (one contact solve of the cell at X(inf) with the
+    level at its edge) against `surface` at that dh, pressure and 1e12 s (the load curve read
+    at X(inf), another code path: interpolated between its samples), within 2e-3; its pressure
+    window (read off its own curve) to 1e-9. Level 0's caps are the widest in both."""
+    texture = [a for a in SCATTERED if a not in ("--dh", "2um")]
+    d = design(*texture, "--temperature", 20, "--require", "90% of level 1 within 1min at 20kPa")
+    edge = d["requirements"][0]
+    r = cli("surface", "--material", TRUTH, *MOULD, *texture, "--dh", f"{edge['edge_physical']!r}um", "--pressure",
+            "20kPa", "--temperature", 20, "--times", "1e12s", "--format", "json")
+    assert r.returncode == 0, r.stderr
+    s = json.loads(r.stdout)
+    radii = [level["contact_radius"] for level in s["levels"]]
+    assert edge["advisories"] == s["advisories"] == "beyond_paraboloid"
+    assert edge["contact_radius"] == pytest.approx(max(radii), rel=2e-3) and max(radii) == radii[0]
+    assert "on the widest caps, level 0's" in edge["advisory_reason"]
+    d = design(*SCATTERED, "--find", "pressure", "--pressure", "1kPa..100kPa", "--temperature", 20,
+               "--require", "at most 5% of level 2 within 1s")
+    edge = d["requirements"][0]
+    s = json.loads(cli("surface", "--material", TRUTH, *MOULD, *SCATTERED, "--pressure", f"{edge['edge_physical']!r}kPa",
+                       "--temperature", 20, "--times", "1e12s", "--format", "json").stdout)
+    radii = [level["contact_radius"] for level in s["levels"]]
+    assert edge["contact_radius"] == pytest.approx(max(radii), rel=1e-9) and edge["advisories"] == s["advisories"]
+
+
 def test_a_scattered_moulds_pitch_window_from_a_share_of_its_level():
     """--find l on a 2 x 2 scattered mould (8 level-1 caps at 6.5 um): "50% of level 1 within 1s
     at 30kPa", the pitch at which the level's 4th cap touches by then (each trial pitch a

@@ -200,7 +200,8 @@ class DesignRequirement(_JsonRecord):
     share_level; side: which edge of the window it makes ('upper' or 'lower'); edge: that
     edge (R, or E0* for a pressure) and edge_physical in the physical unit; binds_at: where it
     binds (temperature, pbar, l, C, dh of the tolerance corner); bounds: its edge at every
-    temperature and corner."""
+    temperature and corner; advisories, advisory_reason, contact_radius (R) and strain:
+    point()'s advisories at the edge (the binding corner, in the long term; "" where none)."""
     text: str
     kind: str
     side: str | None = None
@@ -212,6 +213,10 @@ class DesignRequirement(_JsonRecord):
     pbar: float | None = None
     binds_at: dict | None = None
     bounds: list = field(default_factory=list)
+    advisories: str = ""
+    advisory_reason: str = ""
+    contact_radius: float | None = None
+    strain: float | None = None
     other: dict = field(default_factory=dict)
 
     @classmethod
