@@ -98,6 +98,22 @@ LevelClosed LevelClosure::at(double X) {
   return out;
 }
 
+void LevelClosure::prepare_moves() {
+  if (!others_.empty()) return;
+  const std::size_t n = cell_.grid.size();
+  model::CellGeometry top = geometry_;
+  for (std::size_t k = 0; k < top.sites.size(); ++k) {
+    if (in_level(top, level_, k)) top.sites[k].drop = offset_[k];
+  }
+  level_at_top_ = level_surfaces(top, cell_.grid)[static_cast<std::size_t>(level_)];
+  deep_ = level_surfaces(geometry_, cell_.grid);
+  others_.assign(n, std::numeric_limits<double>::infinity());
+  for (std::size_t q = 0; q < deep_.size(); ++q) {
+    if (static_cast<int>(q) == level_) continue;
+    for (std::size_t i = 0; i < n; ++i) others_[i] = std::min(others_[i], deep_[q][i]);
+  }
+}
+
 LevelClosed LevelClosure::at(double X, std::size_t caps) {
   if (caps < 1 || caps > caps_) {
     throw std::invalid_argument("level closure: " + std::to_string(caps) + " caps of level " + std::to_string(level_) +
@@ -108,26 +124,21 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
   LevelClosed out;
   out.status.converged = true;
   const std::size_t n = cell_.grid.size();
-  if (others_.empty()) {
-    model::CellGeometry top = geometry_;
-    for (std::size_t k = 0; k < top.sites.size(); ++k) {
-      if (in_level(top, level_, k)) top.sites[k].drop = offset_[k];
-    }
-    level_at_top_ = level_surfaces(top, cell_.grid)[static_cast<std::size_t>(level_)];
-    const std::vector<std::vector<double>> deep = level_surfaces(geometry_, cell_.grid);
-    others_.assign(n, std::numeric_limits<double>::infinity());
-    for (std::size_t q = 0; q < deep.size(); ++q) {
-      if (static_cast<int>(q) == level_) continue;
-      for (std::size_t i = 0; i < n; ++i) others_[i] = std::min(others_[i], deep[q][i]);
-    }
-  }
+  prepare_moves();
   // The level's caps in contact at load X with its tallest cap at `drop` (the others at
-  // their offsets below it). The level's tips stay on the surface at any drop to its
-  // deepest, so the closure's cell says which are pressed.
+  // their offsets below it), and where fewer than `caps` are, the gap of the cap that would
+  // be the caps-th (the (caps - count)-th least tip gap of the untouched: it falls to 0 as
+  // the drop nears the answer from below, continuously as caps touch before it). The
+  // level's tips stay on the surface at any drop to its deepest, so the closure's cell says
+  // which are pressed.
   const double deepest = deepest_ * (1.0 - kExposedMargin);
-  std::vector<double> profile(n), u(n);
+  std::vector<double> profile(n), u(n), gaps;
   if (pressure_.size() != n) pressure_.assign(n, 0.0);
-  const auto touched = [&](double drop) {
+  struct Trial {
+    std::size_t count = 0;
+    double gap = 0.0;  ///< the deciding cap's, where count < caps
+  };
+  const auto trial_at = [&](double drop) {
     for (std::size_t i = 0; i < n; ++i) profile[i] = std::min(others_[i], level_at_top_[i] + drop);
     const ContactStatus status = solver_.solve(profile, X, 1.0, pressure_, u);
     ++out.solves;
@@ -138,13 +149,26 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
     }
     out.status.iterations += status.iterations;
     out.status.residual = std::max(out.status.residual, status.residual);
-    std::size_t count = 0;
+    Trial t;
+    gaps.clear();
     for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      if (in_level(geometry_, level_, k) && cell_.touched(k, pressure_)) ++count;
+      if (!in_level(geometry_, level_, k)) continue;
+      if (cell_.touched(k, pressure_)) {
+        ++t.count;
+      } else {
+        const std::size_t tip = cell_.tips[k];
+        gaps.push_back(profile[tip] + u[tip] - status.approach);
+      }
     }
-    return count;
+    if (t.count < caps) {
+      const auto nth = gaps.begin() + static_cast<std::ptrdiff_t>(caps - t.count - 1);
+      std::nth_element(gaps.begin(), nth, gaps.end());
+      t.gap = *nth;
+    }
+    return t;
   };
-  if (touched(deepest) >= caps) {
+  const Trial at_deepest = trial_at(deepest);
+  if (at_deepest.count >= caps) {
     out.every_drop = true;
     out.drop = deepest_;
     return out;
@@ -153,13 +177,46 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
   const LevelClosed first = at(X);
   out.solves += first.solves;
   double low = 0.0, high = std::min(first.drop, deepest);
-  if (touched(low) < caps) {
+  if (trial_at(low).count < caps) {
     out.drop = -std::numeric_limits<double>::infinity();
     return out;
   }
-  while (high - low > kDropTolerance * deepest_) {
-    const double mid = 0.5 * (low + high);
-    (touched(mid) >= caps ? low : high) = mid;
+  // Bisection over the drop, aimed as load_curve.cpp's touchdowns are (its find_touchdowns,
+  // in log X): the deciding cap's gap is smooth on the untouched (deeper) side, so the
+  // secant through the last two untouched trials predicts where it closes; a trial just
+  // short of the prediction (on the untouched side), then one just past it, closes the
+  // bracket in a few solves. A trial that lands on the other side than aimed makes the next
+  // one the midpoint.
+  const double tolerance = kDropTolerance * deepest_;
+  double x0 = 0.0, g0 = 0.0, x1 = deepest, g1 = at_deepest.gap;
+  bool two = false, halve = false;
+  double last_predicted = -std::numeric_limits<double>::infinity();
+  while (high - low > tolerance) {
+    double drop = 0.5 * (low + high);
+    bool aim_touched = true;
+    const double secant = two && g0 > g1 && g1 > 0.0 ? x1 - g1 * (x0 - x1) / (g0 - g1) : low;
+    if (!halve && secant > low) {
+      const double predicted = secant;
+      aim_touched = high - predicted <= 0.5 * tolerance;
+      const double short_of =
+          std::max(0.45 * tolerance, std::min(0.1 * (high - predicted), 2.0 * std::abs(predicted - last_predicted)));
+      last_predicted = predicted;
+      const double margin = std::min(0.1 * tolerance, 0.25 * (high - low));
+      drop = std::clamp(aim_touched ? predicted - 0.45 * tolerance : predicted + short_of, low + margin, high - margin);
+    }
+    const Trial t = trial_at(drop);
+    const bool now = t.count >= caps;
+    halve = !halve && now != aim_touched;
+    if (now) {
+      low = drop;
+    } else {
+      high = drop;
+      x0 = x1;
+      g0 = g1;
+      x1 = drop;
+      g1 = t.gap;
+      two = true;
+    }
   }
   out.drop = 0.5 * (low + high);
   return out;
@@ -171,13 +228,30 @@ model::CurveState LevelClosure::state(double X, double drop) {
                                 std::to_string(deepest_) + " R");
   }
   if (!(X >= 0.0) || std::isinf(X)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not finite and >= 0");
-  model::CellGeometry at = geometry_;
-  for (std::size_t k = 0; k < at.sites.size(); ++k) {
-    if (in_level(at, level_, k)) at.sites[k].drop = std::min(drop, deepest_ * (1.0 - kExposedMargin)) + offset_[k];
+  prepare_moves();
+  const PeriodicGrid& g = cell_.grid;
+  const std::size_t n = g.size();
+  const std::size_t L = static_cast<std::size_t>(geometry_.levels());
+  const double at = std::min(drop, deepest_ * (1.0 - kExposedMargin));
+  // The profile with the level at `at`, and each node counted to the level whose surface is
+  // the lowest at its centre (level_weight's shares, which make_cell samples within each
+  // node's square at many times the cost, differ only where two levels' surfaces meet, away
+  // from the spots until the contact nearly fills the cell).
+  std::vector<double> profile(n);
+  std::vector<std::vector<double>> weight(L - 1, std::vector<double>(n, 0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t lowest = 0;
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t q = 0; q < L; ++q) {
+      const double v = static_cast<int>(q) == level_ ? level_at_top_[i] + at : deep_[q][i];
+      if (v < least) {
+        least = v;
+        lowest = q;
+      }
+    }
+    profile[i] = least;
+    if (lowest > 0) weight[lowest - 1][i] = 1.0;
   }
-  const Cell cell = make_cell(at, cell_.grid);
-  const std::size_t n = cell.grid.size();
-  const std::size_t L = static_cast<std::size_t>(at.levels());
   model::CurveState out;
   out.X = X;
   out.level_area.assign(L, 0.0);
@@ -185,19 +259,19 @@ model::CurveState LevelClosure::state(double X, double drop) {
   out.level_sites_touched.assign(L, 0.0);
   if (X == 0.0) return out;
   std::vector<double> p(n, 0.0), u(n);
-  const ContactStatus status = solver_.solve(cell.profile, X, 1.0, p, u);
+  const ContactStatus status = solver_.solve(profile, X, 1.0, p, u);
   if (!status.converged) {
     throw std::runtime_error("level closure: the contact solve at X = " + std::to_string(X) + " E0* missed its tolerance (residual " +
                              std::to_string(status.residual) + ")");
   }
-  out.level_area = level_contact_areas(cell.grid, cell.level_weight, p, p);
-  out.level_load = level_loads(cell.grid, cell.level_weight, p);
+  out.level_area = level_contact_areas(g, weight, p, p);
+  out.level_load = level_loads(g, weight, p);
   std::vector<double> sites(L, 0.0);
   double touched = 0.0;
-  for (std::size_t k = 0; k < at.sites.size(); ++k) {
-    const auto level = static_cast<std::size_t>(at.sites[k].level);
+  for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+    const auto level = static_cast<std::size_t>(geometry_.sites[k].level);
     sites[level] += 1.0;
-    if (cell.touched(k, p)) {
+    if (cell_.touched(k, p)) {
       out.level_sites_touched[level] += 1.0;
       touched += 1.0;
     }
@@ -207,8 +281,8 @@ model::CurveState LevelClosure::state(double X, double drop) {
     if (sites[level] > 0.0) out.level_sites_touched[level] /= sites[level];
     area += out.level_area[level];
   }
-  out.sites_touched = touched / static_cast<double>(at.sites.size());
-  out.area_fraction = area / (at.Lx * at.Ly);
+  out.sites_touched = touched / static_cast<double>(geometry_.sites.size());
+  out.area_fraction = area / (geometry_.Lx * geometry_.Ly);
   return out;
 }
 

@@ -66,7 +66,8 @@ class LevelClosure {
   /// others at their offsets below it): each level's contact area and share of its caps
   /// touched (model::CurveState's level_area and level_sites_touched, as a load curve's
   /// sample gives them; level_load and the totals too), from one contact solve of the cell
-  /// made at that drop. What the design's advisories read at an edge. Throws
+  /// with the level at that drop, each node counted to the level whose surface is lowest at
+  /// its centre. What the design's advisories read at an edge. Throws
   /// std::invalid_argument for a drop outside 0 to deepest() and std::runtime_error where
   /// the solve misses its tolerance.
   model::CurveState state(double X, double drop);
@@ -96,6 +97,8 @@ class LevelClosure {
   /// its tallest cap at drop 0 (where its reach is): the cell's profile with the level at
   /// drop d is their least, the level's raised by d.
   std::vector<double> others_, level_at_top_;
+  std::vector<std::vector<double>> deep_;  ///< each level's lowest surface, the level at its deepest
+  void prepare_moves();  ///< makes others_, level_at_top_ and deep_ once
 };
 
 }  // namespace punchsweep::reference
