@@ -298,6 +298,61 @@ def test_texture_edges_carry_the_advisories_surface_gives_there():
     assert edge["contact_radius"] == pytest.approx(max(radii), rel=1e-9) and edge["advisories"] == s["advisories"]
 
 
+def test_share_drop_windows_hold_at_random_textures():
+    """--find dh with a share of the level's caps on scattered moulds drawn at random over the
+    range users reach (square or hexagonal two-level lattices, pitch log-uniform 2 to 6 R (120
+    to 360 um), scatter width log-uniform 0.05 to 0.5 um, a 2 x 2 or 3 x 3 supercell, seed,
+    share 20% to 100% of level 1 "within TIME" or "at most" 0% to 60%, pressure log-uniform 3
+    to 100 kPa, time log-uniform 0.1 s to 1 h, 20 to 40 C; grid 24). At each finite edge
+    inside (0, 120 um) `surface` (the load curve of every cap, another code path, on the same
+    grid) gives level 1's share of caps in contact at TIME on each side 1e-4 of dh away: at
+    least the share inside a "within" edge and less outside; at most the share outside an "at
+    most" edge and more inside. The deciding cap's count: ceil(S n), or floor(S n) + 1."""
+    rng = np.random.default_rng(4902)
+    checked = 0
+    for case in range(5):
+        hexagonal = bool(rng.integers(2))
+        K = int(rng.integers(2, 4))
+        l_um = float(60 * np.exp(rng.uniform(np.log(2), np.log(6))))
+        width = float(np.exp(rng.uniform(np.log(0.05), np.log(0.5))))
+        p_kPa = float(np.exp(rng.uniform(np.log(3), np.log(100))))
+        time_s = float(np.exp(rng.uniform(np.log(0.1), np.log(3600))))
+        temperature = float(rng.uniform(20, 40))
+        seed = int(rng.integers(1, 1000))
+        at_most = bool(rng.integers(2))
+        share = int(rng.integers(0, 61)) if at_most else int(rng.integers(20, 101))
+        texture = ["--lattice", "hexagonal" if hexagonal else "square", "--l", f"{l_um!r}um", "--supercell", K,
+                   "--scatter", f"normal:{width!r}um", "--seed", seed, "--grid", 24]
+        requirement = f"{'at most ' if at_most else ''}{share}% of level 1 within {time_s!r}s at {p_kPa!r}kPa"
+        r = cli("design", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--temperature", temperature,
+                "--require", requirement, "--format", "json")
+        assert r.returncode == 0, (case, r.stderr)
+        d = json.loads(r.stdout)
+        edge = d["requirements"][0]["edge_physical"]
+        print(f"case {case}: {'hexagonal' if hexagonal else 'square'} K {K}, l {l_um:.4g} um, scatter {width:.3g} um, "
+              f"'{requirement}' at {temperature:.3g} C: edge {edge} um")
+        if edge is None or not 0 < edge < 120:
+            continue
+
+        def touched(dh_um: float) -> tuple[int, int]:
+            """Level 1's caps in contact at TIME, and its caps."""
+            run = cli("surface", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--dh", f"{dh_um!r}um",
+                      "--pressure", f"{p_kPa!r}kPa", "--temperature", temperature, "--times", f"{time_s!r}",
+                      "--format", "json")
+            assert run.returncode == 0, run.stderr
+            out = json.loads(run.stdout)
+            n = out["levels"][1]["sites"]
+            return round(out["series"]["touched_1"][0] * n), n
+
+        (shallower, n), (deeper, _) = touched(edge * (1 - 1e-4)), touched(edge * (1 + 1e-4))
+        deciding = int(np.floor(share / 100 * n + 1e-9)) + 1 if at_most else int(np.ceil(share / 100 * n - 1e-9))
+        print(f"case {case}: the {deciding}-th of {n} caps decides; in contact 1e-4 above the edge {shallower}, "
+              f"below it {deeper}")
+        assert shallower >= deciding > deeper, (case, texture, requirement)
+        checked += 1
+    assert checked >= 3
+
+
 def test_a_scattered_moulds_pitch_window_from_a_share_of_its_level():
     """--find l on a 2 x 2 scattered mould (8 level-1 caps at 6.5 um): "50% of level 1 within 1s
     at 30kPa", the pitch at which the level's 4th cap touches by then (each trial pitch a
