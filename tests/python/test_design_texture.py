@@ -353,6 +353,53 @@ def test_share_drop_windows_hold_at_random_textures():
     assert checked >= 3
 
 
+def test_share_pitch_windows_hold_at_random_textures():
+    """--find l with a share of level 1's caps on scattered 2 x 2 moulds drawn at random
+    (square or hexagonal two-level lattices, level 1 4 to 10 um down, scatter 0.05-0.5 um
+    log-uniform, "N% of level 1 within TIME at PRESSURE" with N 20-100, pressure 3-30 kPa
+    and time 0.1 s-1 h log-uniform, 20-40 C; pitches searched 100-400 um; grid 24): at each
+    lower edge inside the range `surface` counts fewer than the deciding cap (ceil(S n)) in
+    contact at TIME 1e-4 of the pitch below it and at least that many 1e-4 above."""
+    rng = np.random.default_rng(4903)
+    checked = 0
+    for case in range(6):
+        hexagonal = bool(rng.integers(2))
+        dh_um = float(rng.uniform(4, 10))
+        width = float(np.exp(rng.uniform(np.log(0.05), np.log(0.5))))
+        p_kPa = float(np.exp(rng.uniform(np.log(3), np.log(30))))
+        time_s = float(np.exp(rng.uniform(np.log(0.1), np.log(3600))))
+        temperature = float(rng.uniform(20, 40))
+        seed = int(rng.integers(1, 1000))
+        share = int(rng.integers(20, 101))
+        texture = ["--lattice", "hexagonal" if hexagonal else "square", "--dh", f"{dh_um!r}um", "--supercell", 2,
+                   "--scatter", f"normal:{width!r}um", "--seed", seed, "--grid", 24]
+        requirement = f"{share}% of level 1 within {time_s!r}s at {p_kPa!r}kPa"
+        r = cli("design", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--find", "l", "--l",
+                "100um..400um", "--temperature", temperature, "--require", requirement, "--format", "json")
+        assert r.returncode == 0, (case, r.stderr)
+        edge = json.loads(r.stdout)["requirements"][0]["edge_physical"]
+        print(f"case {case}: {'hexagonal' if hexagonal else 'square'}, dh {dh_um:.3g} um, scatter {width:.3g} um, "
+              f"'{requirement}' at {temperature:.3g} C: l >= {edge} um")
+        if edge is None or not 100 < edge < 400:
+            continue
+
+        def touched(l_um: float) -> tuple[int, int]:
+            run = cli("surface", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--l", f"{l_um!r}um",
+                      "--pressure", f"{p_kPa!r}kPa", "--temperature", temperature, "--times", f"{time_s!r}",
+                      "--format", "json")
+            assert run.returncode == 0, run.stderr
+            out = json.loads(run.stdout)
+            n = out["levels"][1]["sites"]
+            return round(out["series"]["touched_1"][0] * n), n
+
+        (below, n), (above, _) = touched(edge * (1 - 1e-4)), touched(edge * (1 + 1e-4))
+        deciding = int(np.ceil(share / 100 * n - 1e-9))
+        print(f"case {case}: the {deciding}-th of {n} caps decides; in contact 1e-4 below the edge {below}, above {above}")
+        assert below < deciding <= above, (case, texture, requirement)
+        checked += 1
+    assert checked >= 3
+
+
 def test_a_scattered_moulds_pitch_window_from_a_share_of_its_level():
     """--find l on a 2 x 2 scattered mould (8 level-1 caps at 6.5 um): "50% of level 1 within 1s
     at 30kPa", the pitch at which the level's 4th cap touches by then (each trial pitch a
