@@ -13,6 +13,7 @@
 #include <optional>
 #include <ostream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -508,27 +509,30 @@ class TextureGap {
     Closure& closure = made(problem);
     // The cap that decides: touch_by holds once the ceil(S n)-th has touched, no_touch_by
     // until the (floor(S n) + 1)-th has (share_load's counts; the first cap for both without
-    // a share).
-    const double n = static_cast<double>(closure.caps);
+    // a share), of the level's caps or of every cap of the cell.
+    const bool every = r.is_share() && r.share_level < 0;
+    const std::size_t counted = every ? closure.made->geometry.sites.size() : closure.caps;
+    const double n = static_cast<double>(counted);
     const std::size_t cap = !r.is_share() ? 1
                             : r.kind == Requirement::Kind::touch_by
                                 ? static_cast<std::size_t>(std::ceil(r.share * n - 1e-9))
                                 : static_cast<std::size_t>(std::floor(r.share * n + 1e-9)) + 1;
-    if (cap == 0) return kInf;             // at least none: any drop
-    if (cap > closure.caps) return -kInf;  // at most all: no drop
-    const std::array<double, 4> key{problem.l, problem.shape.C, X, static_cast<double>(cap)};
+    if (cap == 0) return kInf;         // at least none: any drop
+    if (cap > counted) return -kInf;   // at most all: no drop
+    const std::array<double, 5> key{problem.l, problem.shape.C, X, static_cast<double>(cap), every ? 1.0 : 0.0};
     if (const auto found = known_.find(key); found != known_.end()) return found->second;
     // Where the spots in contact are small at X, the small-spot limit answers the first cap,
     // as it answers `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
-    if (cap == 1) {
+    if (cap == 1 && !every) {
       if (const std::optional<double> limit = closure.limit->level_closure(X)) {
         ++small_spot_;
         return known_[key] = *limit + closure.shift;
       }
     }
     if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
-    const reference::LevelClosed closed = closure.solve->at(X, cap);
+    const reference::LevelClosed closed = closure.solve->at(X, cap, every);
     every_drop_ = every_drop_ || closed.every_drop;
+    if (!closed.steady) unsteady_.insert(r.text);
     solves_ += closed.solves;
     return known_[key] = closure.shift == 0.0 ? closed.drop : closed.drop + closure.shift;
   }
@@ -548,6 +552,9 @@ class TextureGap {
   bool every_drop() const { return every_drop_; }
   int solves() const { return solves_; }
   int small_spot() const { return small_spot_; }
+  /// Whether requirement `text`'s count of every cap rose somewhere as the level sank (its
+  /// edge is then one crossing of the count, not the window's whole bound).
+  bool unsteady(const std::string& text) const { return unsteady_.contains(text); }
   int level() const { return level_; }
 
  private:
@@ -574,7 +581,8 @@ class TextureGap {
   TextureCellMaker make_;
   int level_;
   double design_drop_;
-  std::map<std::array<double, 4>, double> known_;
+  std::map<std::array<double, 5>, double> known_;
+  std::set<std::string> unsteady_;
   std::map<std::pair<double, double>, Closure> closures_;
   bool every_drop_ = false;
   int solves_ = 0;
@@ -802,15 +810,15 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                               "(--supercell K --scatter DIST, a cell file or a height map, with --find pressure); on a "
                               "lattice each level's caps touch together");
     }
-    // A drop or pitch window moves or presses the searched level: a share of its caps (the
-    // others' shares would not turn once as its drop does).
-    if (r.is_share() && !by_pressure && r.share_level != out.texture->level) {
+    // A drop or pitch window moves or presses the searched level: a share of its caps, or of
+    // every cap (another level's alone would rise as the searched one sinks).
+    if (r.is_share() && !by_pressure && r.share_level >= 0 && r.share_level != out.texture->level) {
       const std::string level = std::to_string(out.texture->level);
       throw input::UsageError(
           "--require '" + r.text + "': the window of " + (by_l ? "the pitch" : "a level's drop") +
           " takes a share of the searched level's caps ('90% of level " + level + " within 1min at 30kPa'; level " +
           level + " here" + (by_l || a.from_file() ? ", --level L for another" : a.find == "dh" ? ", --find dh2 for level 2's" : "") +
-          "); a share of every cap, or of another level, is read off the load curve with --find pressure");
+          ") or of every cap ('at most 5% of caps at 5kPa'); another level's is read off the load curve with --find pressure");
     }
   }
   // A scattered supercell, a cell file or a height map under --find pressure: the load curve
@@ -1061,6 +1069,12 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
       out.notes.push_back("'" + r.text + "' holds at no " + (by_l ? "pitch" : "pressure") + " from " +
                           value(out.search_lo) + " to " + value(out.search_hi) + " at every corner: widen " +
                           range_option + " or change dh");
+    }
+    if (texture && texture->unsteady(r.text)) {
+      out.notes.push_back("'" + r.text + "': the count of every cap in contact rose somewhere as level " +
+                          std::to_string(out.texture->level) + " sank (its own caps touch later, the others sooner): " +
+                          "the edge is where the count crosses the share, and drops beyond it may meet the requirement "
+                          "too; `surface` at a few drops says where");
     }
     // Point's advisories at the edge: the binding corner with the searched quantity at its
     // edge, in the long term (X(inf) of that corner's pressure and law).

@@ -31,7 +31,7 @@ inline constexpr const char* kRequirementForms =
     "'never at PRESSURE', 'no touch within TIME at PRESSURE' (with --find pressure, without 'at PRESSURE'); "
     "on a scattered supercell, a cell file or a height map also 'N% of level L within TIME', "
     "'at most N% of caps within TIME' (of level L, or of caps: every one; without a time, ever; a drop or pitch "
-    "window: of its level, 'at PRESSURE' added); TIME with a unit (1s, 5min) where a material file "
+    "window: of its level or of every cap, 'at PRESSURE' added); TIME with a unit (1s, 5min) where a material file "
     "gives one (else in T_eps), PRESSURE with one (30kPa) where it gives a modulus (else in E0/(1-nu^2))";
 
 /// One requirement as the user states it.

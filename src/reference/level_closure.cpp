@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace punchsweep::reference {
 
@@ -114,12 +116,14 @@ void LevelClosure::prepare_moves() {
   }
 }
 
-LevelClosed LevelClosure::at(double X, std::size_t caps) {
-  if (caps < 1 || caps > caps_) {
-    throw std::invalid_argument("level closure: " + std::to_string(caps) + " caps of level " + std::to_string(level_) +
-                                ", which has " + std::to_string(caps_));
+LevelClosed LevelClosure::at(double X, std::size_t caps, bool every_level) {
+  const std::size_t counted = every_level ? geometry_.sites.size() : caps_;
+  if (caps < 1 || caps > counted) {
+    throw std::invalid_argument("level closure: " + std::to_string(caps) + " caps of " +
+                                (every_level ? std::string("the cell") : "level " + std::to_string(level_)) + ", which has " +
+                                std::to_string(counted));
   }
-  if (caps == 1 || X == 0.0) return at(X);
+  if ((caps == 1 && !every_level) || X == 0.0) return at(X);
   if (!(X > 0.0)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not >= 0");
   LevelClosed out;
   out.status.converged = true;
@@ -133,6 +137,7 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
   // which are pressed.
   const double deepest = deepest_ * (1.0 - kExposedMargin);
   std::vector<double> profile(n), u(n), gaps;
+  std::vector<std::pair<double, std::size_t>> tried;
   if (pressure_.size() != n) pressure_.assign(n, 0.0);
   struct Trial {
     std::size_t count = 0;
@@ -152,7 +157,7 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
     Trial t;
     gaps.clear();
     for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      if (!in_level(geometry_, level_, k)) continue;
+      if (!every_level && !in_level(geometry_, level_, k)) continue;
       if (cell_.touched(k, pressure_)) {
         ++t.count;
       } else {
@@ -165,7 +170,16 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
       std::nth_element(gaps.begin(), nth, gaps.end());
       t.gap = *nth;
     }
+    tried.emplace_back(drop, t.count);
     return t;
+  };
+  // Every trial's drop and count: whether the count fell steadily with the drop.
+  const auto steady = [&tried] {
+    std::sort(tried.begin(), tried.end());
+    for (std::size_t k = 1; k < tried.size(); ++k) {
+      if (tried[k].second > tried[k - 1].second) return false;
+    }
+    return true;
   };
   const Trial at_deepest = trial_at(deepest);
   if (at_deepest.count >= caps) {
@@ -173,12 +187,16 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
     out.drop = deepest_;
     return out;
   }
-  // The first cap closes at at(X).drop: the caps-th no deeper.
-  const LevelClosed first = at(X);
-  out.solves += first.solves;
-  double low = 0.0, high = std::min(first.drop, deepest);
+  // The level's first cap closes at at(X).drop: its caps-th no deeper.
+  double low = 0.0, high = deepest;
+  if (!every_level) {
+    const LevelClosed first = at(X);
+    out.solves += first.solves;
+    high = std::min(first.drop, deepest);
+  }
   if (trial_at(low).count < caps) {
     out.drop = -std::numeric_limits<double>::infinity();
+    out.steady = steady();
     return out;
   }
   // Bisection over the drop, aimed as load_curve.cpp's touchdowns are (its find_touchdowns,
@@ -219,6 +237,7 @@ LevelClosed LevelClosure::at(double X, std::size_t caps) {
     }
   }
   out.drop = 0.5 * (low + high);
+  out.steady = steady();
   return out;
 }
 

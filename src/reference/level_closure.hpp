@@ -32,6 +32,9 @@ struct LevelClosed {
   bool every_drop = false;
   ContactStatus status;  ///< the solve's (status.converged: it met its tolerance)
   int solves = 0;        ///< contact solves made for it
+  /// at(X, caps): the caps in contact fell as the drop grew at every trial (always for the
+  /// level's own caps; see at()).
+  bool steady = true;
 };
 
 /// One level of one geometry on one grid, solved at any load. The level's sites are set
@@ -51,16 +54,18 @@ class LevelClosure {
   LevelClosed at(double X);
 
   /// The drop of the level's tallest cap at which `caps` of the level's caps (1 to their
-  /// number) have touched at load X (a share of a scattered level's caps, where the first
-  /// is at(X)). Past the first cap the state depends on the drop (the caps in contact carry
-  /// load), so it is found by bisection over the drop, one contact solve of the cell a trial
-  /// (each started from the last trial's pressure), to kDropTolerance of the deepest drop:
-  /// fewer than `caps` touch at a deeper level, at least `caps` at a shallower one (the
-  /// level's own caps are pressed the harder the higher it lies). -infinity where fewer
-  /// than `caps` touch even at drop 0 (the level's tallest cap as tall as the cell's
-  /// tallest tip); every_drop where they touch at the deepest. Throws
-  /// std::invalid_argument for `caps` outside 1 to the level's caps.
-  LevelClosed at(double X, std::size_t caps);
+  /// number; of every cap of the cell with `every_level`) have touched at load X (a share of
+  /// a scattered level's caps, where the first of the level's is at(X)). Past the first cap
+  /// the state depends on the drop (the caps in contact carry load), so it is found by
+  /// bisection over the drop, one contact solve of the cell a trial (each started from the
+  /// last trial's pressure), to kDropTolerance of the deepest drop: fewer than `caps` touch
+  /// at a deeper level, at least `caps` at a shallower one (the level's own caps are pressed
+  /// the harder the higher it lies; with `every_level` the other levels' the less, so the
+  /// count need not fall steadily: `steady` says whether every trial's count did).
+  /// -infinity where fewer than `caps` touch even at drop 0 (the level's tallest cap as tall
+  /// as the cell's tallest tip); every_drop where they touch at the deepest. Throws
+  /// std::invalid_argument for `caps` outside 1 to the caps counted.
+  LevelClosed at(double X, std::size_t caps, bool every_level = false);
 
   /// The cell's state at load X with the level's tallest cap at `drop` (0 to deepest(), the
   /// others at their offsets below it): each level's contact area and share of its caps
