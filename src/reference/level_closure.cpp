@@ -1,6 +1,7 @@
 #include "reference/level_closure.hpp"
 
 #include "reference/contact_areas.hpp"
+#include "reference/touchdown_search.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -199,43 +200,21 @@ LevelClosed LevelClosure::at(double X, std::size_t caps, bool every_level) {
     out.steady = steady();
     return out;
   }
-  // Bisection over the drop, aimed as load_curve.cpp's touchdowns are (its find_touchdowns,
-  // in log X): the deciding cap's gap is smooth on the untouched (deeper) side, so the
-  // secant through the last two untouched trials predicts where it closes; a trial just
-  // short of the prediction (on the untouched side), then one just past it, closes the
-  // bracket in a few solves. A trial that lands on the other side than aimed makes the next
-  // one the midpoint.
-  const double tolerance = kDropTolerance * deepest_;
-  double x0 = 0.0, g0 = 0.0, x1 = deepest, g1 = at_deepest.gap;
-  bool two = false, halve = false;
-  double last_predicted = -std::numeric_limits<double>::infinity();
-  while (high - low > tolerance) {
-    double drop = 0.5 * (low + high);
-    bool aim_touched = true;
-    const double secant = two && g0 > g1 && g1 > 0.0 ? x1 - g1 * (x0 - x1) / (g0 - g1) : low;
-    if (!halve && secant > low) {
-      const double predicted = secant;
-      aim_touched = high - predicted <= 0.5 * tolerance;
-      const double short_of =
-          std::max(0.45 * tolerance, std::min(0.1 * (high - predicted), 2.0 * std::abs(predicted - last_predicted)));
-      last_predicted = predicted;
-      const double margin = std::min(0.1 * tolerance, 0.25 * (high - low));
-      drop = std::clamp(aim_touched ? predicted - 0.45 * tolerance : predicted + short_of, low + margin, high - margin);
-    }
+  // Bisection over the drop, aimed as the load curve's touchdowns are
+  // (reference/touchdown_search.hpp) in x = -drop: the deciding cap's gap is smooth on the
+  // untouched (deeper) side.
+  TouchdownSearch search(-high, -low, -deepest, at_deepest.gap, kDropTolerance * deepest_);
+  while (search.open()) {
+    const double drop = -search.trial();
     const Trial t = trial_at(drop);
-    const bool now = t.count >= caps;
-    halve = !halve && now != aim_touched;
-    if (now) {
-      low = drop;
+    if (t.count >= caps) {
+      search.touched(-drop);
     } else {
-      high = drop;
-      x0 = x1;
-      g0 = g1;
-      x1 = drop;
-      g1 = t.gap;
-      two = true;
+      search.untouched(-drop, t.gap);
     }
   }
+  low = -search.hi();
+  high = -search.lo();
   out.drop = 0.5 * (low + high);
   out.steady = steady();
   return out;

@@ -9,6 +9,7 @@
 
 #include "reference/contact_areas.hpp"
 #include "reference/fft_influence.hpp"
+#include "reference/touchdown_search.hpp"
 
 namespace punchsweep::reference {
 
@@ -253,57 +254,29 @@ class CurveBuilder {
         }
       }
       if (shared) continue;
-      // Bisection in log X, aimed: the site's gap (drop - h, > 0 while untouched) is smooth
-      // on the untouched side, so the secant through the last two untouched solves predicts
-      // the touchdown; a trial just short of it, then one just past it, usually closes the
-      // bracket in a few solves (as the time stepping's t* search does). A trial that lands
-      // on the other side than aimed makes the next one the midpoint.
-      double lo = std::log(a.sample.X), hi = std::log(b.sample.X);
+      // Bisection in log X, aimed by the secant of the site's gap (drop - h, > 0 while
+      // untouched; reference/touchdown_search.hpp), each trial started between the
+      // bracket's solves.
       const Solved* below = &a;  // the bracket's solves: untouched, touched
       const Solved* above = &b;
       Solved last_below, last_above;
-      const double tolerance = options_.touchdown_tolerance;
-      double x0 = 0.0, g0 = 0.0, x1 = lo, g1 = gap(a, k);
-      bool two = false, halve = false;
-      double last_predicted = std::numeric_limits<double>::infinity();
-      while (hi - lo > tolerance) {
+      TouchdownSearch search(std::log(a.sample.X), std::log(b.sample.X), std::log(a.sample.X), gap(a, k),
+                             options_.touchdown_tolerance);
+      while (search.open()) {
         options_.stop.throw_if_requested();
-        double trial = 0.5 * (lo + hi);
-        bool aim_above = true;
-        const double secant = two && g0 > g1 && g1 > 0.0 && std::isfinite(g0) ? x1 + g1 * (x1 - x0) / (g0 - g1) : hi;
-        if (!halve && secant < hi) {  // (a zero at or past the touched end says the secant is far off)
-          // The gap falls ever slower as the spot nears (it is convex in log X), so the
-          // secant overshoots: a trial short of its zero (at least half a tolerance) stays
-          // untouched and brings the next secant close; once the zero lies within half a
-          // tolerance, one just past it closes the bracket.
-          const double predicted = secant;
-          aim_above = predicted - lo <= 0.5 * tolerance;
-          // Short by a tenth of the way, or by twice the last move of the prediction once
-          // that is less (the secant converging).
-          const double short_of =
-              std::max(0.45 * tolerance, std::min(0.1 * (predicted - lo), 2.0 * std::abs(predicted - last_predicted)));
-          last_predicted = predicted;
-          const double margin = std::min(0.1 * tolerance, 0.25 * (hi - lo));
-          trial = std::clamp(aim_above ? predicted + 0.45 * tolerance : predicted - short_of, lo + margin, hi - margin);
-        }
+        const double trial = search.trial();
         Solved m = solve(std::exp(trial), between(*below, *above, std::exp(trial)));
-        const bool now = touched(m, k);
-        halve = !halve && now != aim_above;
-        if (now) {
-          hi = trial;
+        if (touched(m, k)) {
+          search.touched(trial);
           last_above = std::move(m);
           above = &last_above;
         } else {
-          lo = trial;
-          x0 = x1;
-          g0 = g1;
-          x1 = trial;
-          g1 = gap(m, k);
-          two = true;
+          search.untouched(trial, gap(m, k));
           last_below = std::move(m);
           below = &last_below;
         }
       }
+      const double hi = search.hi();
       curve_.site_touchdown[k] = std::exp(hi);
       found.push_back(above == &b ? b : std::move(last_above));
       done.push_back(k);

@@ -328,6 +328,17 @@ def test_a_scattered_moulds_drop_window_from_shares_of_every_cap():
     assert not any(note.startswith("'70% of caps") for note in d["notes"])
 
 
+def level_1_caps(texture: list, p_kPa: float, time_s: float, temperature: float) -> tuple[int, int]:
+    """Level 1's caps in contact at time_s by `surface` (60 um caps, s = 2, the TPE-A truth),
+    and its caps."""
+    run = cli("surface", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--pressure", f"{p_kPa!r}kPa",
+              "--temperature", temperature, "--times", f"{time_s!r}", "--format", "json")
+    assert run.returncode == 0, run.stderr
+    out = json.loads(run.stdout)
+    n = out["levels"][1]["sites"]
+    return round(out["series"]["touched_1"][0] * n), n
+
+
 def test_share_drop_windows_hold_at_random_textures():
     """--find dh with a share of the level's caps on scattered moulds drawn at random over the
     range users reach (square or hexagonal two-level lattices, pitch log-uniform 2 to 6 R (120
@@ -365,14 +376,7 @@ def test_share_drop_windows_hold_at_random_textures():
             continue
 
         def touched(dh_um: float) -> tuple[int, int]:
-            """Level 1's caps in contact at TIME, and its caps."""
-            run = cli("surface", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--dh", f"{dh_um!r}um",
-                      "--pressure", f"{p_kPa!r}kPa", "--temperature", temperature, "--times", f"{time_s!r}",
-                      "--format", "json")
-            assert run.returncode == 0, run.stderr
-            out = json.loads(run.stdout)
-            n = out["levels"][1]["sites"]
-            return round(out["series"]["touched_1"][0] * n), n
+            return level_1_caps([*texture, "--dh", f"{dh_um!r}um"], p_kPa, time_s, temperature)
 
         (shallower, n), (deeper, _) = touched(edge * (1 - 1e-4)), touched(edge * (1 + 1e-4))
         deciding = int(np.floor(share / 100 * n + 1e-9)) + 1 if at_most else int(np.ceil(share / 100 * n - 1e-9))
@@ -414,13 +418,7 @@ def test_share_pitch_windows_hold_at_random_textures():
             continue
 
         def touched(l_um: float) -> tuple[int, int]:
-            run = cli("surface", "--material", TRUTH, "--R", "60um", "--s", "2", *texture, "--l", f"{l_um!r}um",
-                      "--pressure", f"{p_kPa!r}kPa", "--temperature", temperature, "--times", f"{time_s!r}",
-                      "--format", "json")
-            assert run.returncode == 0, run.stderr
-            out = json.loads(run.stdout)
-            n = out["levels"][1]["sites"]
-            return round(out["series"]["touched_1"][0] * n), n
+            return level_1_caps([*texture, "--l", f"{l_um!r}um"], p_kPa, time_s, temperature)
 
         (below, n), (above, _) = touched(edge * (1 - 1e-4)), touched(edge * (1 + 1e-4))
         deciding = int(np.ceil(share / 100 * n - 1e-9))

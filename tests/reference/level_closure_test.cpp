@@ -26,6 +26,31 @@ struct Case {
   std::vector<double> drops;
 };
 
+// 2 x 2 supercells of a square two-level and a hexagonal three-level lattice, each cap's
+// height scattered (normal, 0.004 R, seed 3), on 32 nodes a pitch, with their load curves
+// to full contact.
+const std::vector<Case> kScattered{Case{LatticeKind::square, 3.0, {0.02}},
+                                   Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0, 5.0 / 60.0}}};
+struct Scattered {
+  model::CellGeometry geometry;
+  reference::PeriodicGrid grid;
+  model::LoadCurve curve;
+};
+Scattered scattered(const Case& c) {
+  model::HeightScatter scatter;
+  scatter.kind = model::HeightScatter::Kind::normal;
+  scatter.width = 0.004;
+  scatter.seed = 3;
+  const int K = 2;
+  Scattered out;
+  out.geometry = model::supercell(model::lattice_cell(c.lattice, c.l, model::Shape{2, 0.5}, c.drops), K, scatter);
+  out.grid = reference::lattice_grid(out.geometry, c.lattice, 32, K);
+  reference::LoadCurveOptions options;
+  options.X_top = 1.0;
+  out.curve = reference::build_load_curve(out.geometry, reference::make_cell(out.geometry, out.grid), options);
+  return out;
+}
+
 }  // namespace
 
 // Square and hexagonal lattices of two and three levels (drops from 0.005 to 0.05 R, the
@@ -66,18 +91,11 @@ TEST(LevelClosure, closes_each_level_at_its_touchdown_on_the_curve) {
 // the curve's touchdown of the level's first cap is the drop of the level's tallest cap, for
 // each level (the level's other caps keep their offsets below it).
 TEST(LevelClosure, moves_a_scattered_level_as_one) {
-  const model::Shape shape{2, 0.5};
-  model::HeightScatter scatter;
-  scatter.kind = model::HeightScatter::Kind::normal;
-  scatter.width = 0.004;
-  scatter.seed = 3;
-  for (const Case& c : {Case{LatticeKind::square, 3.0, {0.02}}, Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0, 5.0 / 60.0}}}) {
-    const int K = 2;
-    const model::CellGeometry g = model::supercell(model::lattice_cell(c.lattice, c.l, shape, c.drops), K, scatter);
-    const reference::PeriodicGrid grid = reference::lattice_grid(g, c.lattice, 32, K);
-    reference::LoadCurveOptions options;
-    options.X_top = 1.0;
-    const model::LoadCurve curve = reference::build_load_curve(g, reference::make_cell(g, grid), options);
+  for (const Case& c : kScattered) {
+    const Scattered made = scattered(c);
+    const model::CellGeometry& g = made.geometry;
+    const reference::PeriodicGrid& grid = made.grid;
+    const model::LoadCurve& curve = made.curve;
     for (int level = 1; level < g.levels(); ++level) {
       double least = 1e300, most = 0.0;
       for (const model::Site& site : g.sites) {
@@ -109,18 +127,11 @@ TEST(LevelClosure, moves_a_scattered_level_as_one) {
 // bounds what the two may differ by; 1e-4 of X either side the k-th cap is short of the
 // drop or past it. Fewer than one or more caps than the level has are refused.
 TEST(LevelClosure, closes_a_share_of_a_scattered_levels_caps) {
-  const model::Shape shape{2, 0.5};
-  model::HeightScatter scatter;
-  scatter.kind = model::HeightScatter::Kind::normal;
-  scatter.width = 0.004;
-  scatter.seed = 3;
-  for (const Case& c : {Case{LatticeKind::square, 3.0, {0.02}}, Case{LatticeKind::hexagonal, 200.0 / 60.0, {2.0 / 60.0, 5.0 / 60.0}}}) {
-    const int K = 2;
-    const model::CellGeometry g = model::supercell(model::lattice_cell(c.lattice, c.l, shape, c.drops), K, scatter);
-    const reference::PeriodicGrid grid = reference::lattice_grid(g, c.lattice, 32, K);
-    reference::LoadCurveOptions options;
-    options.X_top = 1.0;
-    const model::LoadCurve curve = reference::build_load_curve(g, reference::make_cell(g, grid), options);
+  for (const Case& c : kScattered) {
+    const Scattered made = scattered(c);
+    const model::CellGeometry& g = made.geometry;
+    const reference::PeriodicGrid& grid = made.grid;
+    const model::LoadCurve& curve = made.curve;
     for (int level = 1; level < g.levels(); ++level) {
       std::vector<double> touchdowns;
       double least = 1e300;
