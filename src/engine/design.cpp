@@ -531,8 +531,15 @@ class TextureGap {
     }
     if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
     const reference::LevelClosed closed = closure.solve->at(X, cap, every);
-    every_drop_ = every_drop_ || closed.every_drop;
     if (!closed.steady) unsteady_.insert(r.text);
+    if (every && closed.every_drop) {
+      // So many caps touch even with the level at its deepest that "at most" the share holds
+      // at no drop, and "at least" at every one (its bound the deepest, as a level's).
+      (r.kind == Requirement::Kind::no_touch_by ? unreachable_ : reached_).insert(r.text);
+      if (r.kind == Requirement::Kind::no_touch_by) return known_[key] = kInf;
+    } else {
+      every_drop_ = every_drop_ || closed.every_drop;
+    }
     solves_ += closed.solves;
     return known_[key] = closure.shift == 0.0 ? closed.drop : closed.drop + closure.shift;
   }
@@ -555,6 +562,12 @@ class TextureGap {
   /// Whether requirement `text`'s count of every cap rose somewhere as the level sank (its
   /// edge is then one crossing of the count, not the window's whole bound).
   bool unsteady(const std::string& text) const { return unsteady_.contains(text); }
+  /// Whether requirement `text` ("at most" a share of every cap) is past reach at every drop:
+  /// at its deepest the level leaves more caps touching than it allows.
+  bool unreachable(const std::string& text) const { return unreachable_.contains(text); }
+  /// Whether requirement `text` (at least a share of every cap) holds with the level at its
+  /// deepest: the other levels' caps reach the share.
+  bool reached(const std::string& text) const { return reached_.contains(text); }
   int level() const { return level_; }
 
  private:
@@ -582,7 +595,7 @@ class TextureGap {
   int level_;
   double design_drop_;
   std::map<std::array<double, 5>, double> known_;
-  std::set<std::string> unsteady_;
+  std::set<std::string> unsteady_, unreachable_, reached_;
   std::map<std::pair<double, double>, Closure> closures_;
   bool every_drop_ = false;
   int solves_ = 0;
@@ -937,7 +950,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             };
             if (!searched) {
               const double gap = gap_at(l);
-              endless = endless || gap == kInf;
+              endless = endless || (gap == kInf && !(texture && texture->unreachable(r.text)));
               take(DesignBound{T, p, l, Cs[c], dh0, gap});
               continue;
             }
@@ -1069,6 +1082,16 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
       out.notes.push_back("'" + r.text + "' holds at no " + (by_l ? "pitch" : "pressure") + " from " +
                           value(out.search_lo) + " to " + value(out.search_hi) + " at every corner: widen " +
                           range_option + " or change dh");
+    }
+    if (texture && texture->unreachable(r.text)) {
+      out.notes.push_back("'" + r.text + "': at some corner more caps than it allows touch with level " +
+                          std::to_string(out.texture->level) + " at its deepest (the other levels' caps alone reach " +
+                          "the share): no drop of the level meets it there");
+    }
+    if (texture && texture->reached(r.text)) {
+      out.notes.push_back("'" + r.text + "': at some corner the caps it asks for touch with level " +
+                          std::to_string(out.texture->level) + " at its deepest (the other levels' caps reach the " +
+                          "share): its bound there is the deepest drop at which the level is still a cap of its own");
     }
     if (texture && texture->unsteady(r.text)) {
       out.notes.push_back("'" + r.text + "': the count of every cap in contact rose somewhere as level " +

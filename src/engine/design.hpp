@@ -134,9 +134,11 @@ struct DesignResult {
   std::vector<double> temperatures;
   DesignTolerance tolerance;
   std::vector<RequirementBound> bounds;
-  double lower = 0.0, upper = 0.0;  ///< R or E0*; lower > upper: no value meets every requirement
+  /// R or E0*; lower > upper, or lower +infinity (a requirement no value meets): no value
+  /// meets every requirement.
+  double lower = 0.0, upper = 0.0;
   std::vector<std::string> notes;
-  bool empty() const { return !(lower <= upper); }
+  bool empty() const { return !(lower <= upper) || lower == std::numeric_limits<double>::infinity(); }
 };
 
 /// The design of `keywords` (the command's options as keywords: --require repeats; the

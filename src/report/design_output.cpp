@@ -143,7 +143,7 @@ std::string edge_advisory_text(const engine::RequirementBound& b) {
 std::string miss_text(const engine::DesignResult& d, const engine::Unit& L) {
   const std::string q = quantity_name(d);
   if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {
-    return finds_drop(d) ? "no " + q + ": a 'never' requirement cannot hold for this law"
+    return finds_drop(d) ? "no " + q + ": a requirement holds at no " + q + " (see the notes)"
                      : "no " + std::string(q == "l" ? "pitch" : "pressure") +
                            " of the range searched: a requirement holds at none of them (see the notes)";
   }

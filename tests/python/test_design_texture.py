@@ -339,6 +339,34 @@ def level_1_caps(texture: list, p_kPa: float, time_s: float, temperature: float)
     return round(out["series"]["touched_1"][0] * n), n
 
 
+def test_a_share_of_every_cap_past_any_drop_is_said():
+    """--find dh2 on the scattered mould (level 1 at 2 um): level 0's 18 caps touch whatever
+    level 2's drop, so "at most 10% of caps at 3kPa" (5 of 54) holds at no drop (an empty
+    window, a note naming it, no "creeps without end"), and "20% of caps within 1s at 3kPa"
+    (11) holds at every drop (its edge the deepest at which level 2 is still a cap, a note
+    saying why). `surface` with level 2 just inside that deepest drop counts 11 caps or more
+    at 1 s and more than 5 in the long term."""
+    texture = [a for a in SCATTERED if a not in ("--dh2", "5um")]
+    d = design(*texture, "--find", "dh2", "--temperature", 20, "--require", "at most 10% of caps at 3kPa")
+    assert d["empty"] and d["requirements"][0]["edge"] is None  # (+inf: JSON null)
+    assert any(n.startswith("'at most 10% of caps at 3kPa': at some corner more caps than it allows touch")
+               for n in d["notes"]) and not any("creeps without end" in n for n in d["notes"]), d["notes"]
+    d = design(*texture, "--find", "dh2", "--temperature", 20, "--require", "20% of caps within 1s at 3kPa")
+    deepest = d["requirements"][0]["edge_physical"]
+    assert not d["empty"] and d["requirements"][0]["side"] == "upper" and deepest > 5
+    assert any(n.startswith("'20% of caps within 1s at 3kPa': at some corner the caps it asks for touch")
+               for n in d["notes"]), d["notes"]
+
+    def caps(time: str) -> int:
+        r = cli("surface", "--material", TRUTH, *MOULD, *texture, "--dh2", f"{deepest * 0.99!r}um", "--pressure", "3kPa",
+                "--temperature", 20, "--times", time, "--format", "json")
+        assert r.returncode == 0, r.stderr
+        out = json.loads(r.stdout)
+        return round(out["series"]["sites_touched"][0] * out["caps"])
+
+    assert caps("1s") >= 11 and caps("1e12s") > 5
+
+
 def test_share_drop_windows_hold_at_random_textures():
     """--find dh with a share of the level's caps on scattered moulds drawn at random over the
     range users reach (square or hexagonal two-level lattices, pitch log-uniform 2 to 6 R (120
