@@ -889,6 +889,14 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
   const std::vector<double> temperatures = out.temperatures.empty() ? std::vector<double>{kNaN} : out.temperatures;
   out.lower = searched ? out.search_lo : 0.0;
   out.upper = searched ? out.search_hi : kInf;
+  // A corner's point (its pressure, temperature and, with a tolerance on C, shape factor),
+  // read through the point command's options and checks.
+  const auto corner_point = [&](double pbar, double T, double C, const std::string& what) {
+    input::Keywords k = with(base_keywords, "pbar", input::json_number(pbar));
+    if (!std::isnan(T)) k = with(k, "temperature", input::json_number(T));
+    if (box.C > 0.0) k = with(k, "C", input::json_number(C));
+    return point_at(k, what);
+  };
   for (const Requirement& r : requirements) {
     RequirementBound b;
     b.requirement = r;
@@ -919,7 +927,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
       b.bounds.push_back(d);
     };
     const std::string what = "--require '" + r.text + "' (a corner of the box)";
-    bool endless = false;  // the gap closed at last is infinite somewhere: the law creeps without end
+    bool endless = false;  // the load grows without end by the requirement's time at some corner
     for (const double T : temperatures) {
       for (const double p : by_pressure ? std::vector<double>{lo} : sides(r.pbar, box.pressure, box.pressure_absolute)) {
         // Each corner's point read once (its creep law made once); only its pitch or pressure
@@ -927,10 +935,9 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
         std::vector<input::PointInputs> at_C;
         const std::vector<double> Cs = sides(C0, box.C, false);
         for (const double C : Cs) {
-          input::Keywords k = with(base_keywords, "pbar", input::json_number(p));
-          if (!std::isnan(T)) k = with(k, "temperature", input::json_number(T));
-          if (box.C > 0.0) k = with(k, "C", input::json_number(C));
-          at_C.push_back(point_at(k, what));
+          at_C.push_back(corner_point(p, T, C, what));
+          // (A law that creeps without end closes any gap at last: no "never" holds.)
+          endless = endless || std::isinf(model::CreepWeightedLoad(*at_C.back().creep, 1.0, at_C.back().problem.loading).by(r.time));
         }
         for (const double l : by_l ? std::vector<double>{l0} : sides(l0, box.l, box.l_absolute)) {
           for (std::size_t c = 0; c < Cs.size(); ++c) {
@@ -950,7 +957,6 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             };
             if (!searched) {
               const double gap = gap_at(l);
-              endless = endless || (gap == kInf && !(texture && texture->unreachable(r.text)));
               take(DesignBound{T, p, l, Cs[c], dh0, gap});
               continue;
             }
@@ -960,7 +966,6 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
               // the pressure's amplitude).
               const double g = model::CreepWeightedLoad(*in.creep, 1.0, in.problem.loading).by(r.time);
               const double X = share_load(off_curve->curve, r.share_level == 0 ? out.texture->level : r.share_level, r);
-              endless = endless || std::isinf(g);
               double value = std::isinf(g) ? 0.0 : g > 0.0 ? X / g : X == 0.0 ? 0.0 : kInf;
               value = value <= lo ? lo : value > hi ? kInf : value;
               take(DesignBound{T, p, lo, Cs[c], dh0, value});
@@ -970,7 +975,6 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             // requirement's time is that dh, by bisection in its log over the range (the gap
             // grows with it; checked).
             const double g_lo = gap_at(lo), g_hi = gap_at(hi);
-            endless = endless || g_lo == kInf;
             if (!(g_hi >= g_lo)) {
               out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from " + a.find + " = " +
                                   model::number_text(lo, 4) + " to " + model::number_text(hi, 4) +
@@ -1058,9 +1062,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     // d t*/dx along the pressure: -X/(t dX/dt), X = pbar g(t)). The edge is still where the
     // level touches by that time; the time the window promises hangs on a small change.
     if (!by_pressure && !r.is_share() && r.time > 0.0 && std::isfinite(r.time) && std::isfinite(b.edge)) {
-      input::Keywords k = with(base_keywords, "pbar", input::json_number(b.binding.pbar));
-      if (!std::isnan(b.binding.temperature)) k = with(k, "temperature", input::json_number(b.binding.temperature));
-      const input::PointInputs in = point_at(k, what);
+      const input::PointInputs in = corner_point(b.binding.pbar, b.binding.temperature, b.binding.C, what);
       const model::CreepWeightedLoad load(*in.creep, 1.0, in.problem.loading);
       const double elasticity = -load.response(r.time) / (r.time * load.response_rate(r.time));
       if (std::abs(elasticity) > model::kKnifeEdgeElasticity) {
@@ -1104,10 +1106,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     const bool edge_inside = std::isfinite(b.edge) && (searched ? b.edge >= lo && b.edge <= hi : b.edge > 0.0);
     if (edge_inside && !b.bounds.empty()) {
       const DesignBound& at = b.binding;
-      input::Keywords k = with(base_keywords, "pbar", input::json_number(by_pressure ? b.edge : at.pbar));
-      if (!std::isnan(at.temperature)) k = with(k, "temperature", input::json_number(at.temperature));
-      if (box.C > 0.0) k = with(k, "C", input::json_number(at.C));
-      input::PointInputs in = point_at(k, what);
+      input::PointInputs in = corner_point(by_pressure ? b.edge : at.pbar, at.temperature, at.C, what);
       in.problem.l = by_l ? b.edge : at.l;
       const double drop = searched ? at.dh : b.edge;  // the searched level's
       const double X_inf = model::CreepWeightedLoad(*in.creep, in.problem.pbar0, in.problem.loading).by(kInf);
@@ -1120,11 +1119,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
               off_curve ? model::advise_surface(off_curve->geometry, off_curve->curve.at(X_inf))
                         : texture->advice(in.problem, X_inf, drop);
           b.advice = advice.all;
-          for (std::size_t level = 0; level < advice.level.size(); ++level) {
-            if (b.advice_level < 0 || advice.level[level].a_max > advice.level[static_cast<std::size_t>(b.advice_level)].a_max) {
-              b.advice_level = static_cast<int>(level);
-            }
-          }
+          b.advice_level = static_cast<int>(advice.widest());
         }
       }
     }

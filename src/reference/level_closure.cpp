@@ -226,10 +226,16 @@ model::CurveState LevelClosure::state(double X, double drop) {
                                 std::to_string(deepest_) + " R");
   }
   if (!(X >= 0.0) || std::isinf(X)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not finite and >= 0");
+  const std::size_t L = static_cast<std::size_t>(geometry_.levels());
+  model::CurveState out;
+  out.X = X;
+  out.level_area.assign(L, 0.0);
+  out.level_load.assign(L, 0.0);
+  out.level_sites_touched.assign(L, 0.0);
+  if (X == 0.0) return out;
   prepare_moves();
   const PeriodicGrid& g = cell_.grid;
   const std::size_t n = g.size();
-  const std::size_t L = static_cast<std::size_t>(geometry_.levels());
   const double at = std::min(drop, deepest_ * (1.0 - kExposedMargin));
   // The profile with the level at `at`, and each node counted to the level whose surface is
   // the lowest at its centre (level_weight's shares, which make_cell samples within each
@@ -250,12 +256,6 @@ model::CurveState LevelClosure::state(double X, double drop) {
     profile[i] = least;
     if (lowest > 0) weight[lowest - 1][i] = 1.0;
   }
-  model::CurveState out;
-  out.X = X;
-  out.level_area.assign(L, 0.0);
-  out.level_load.assign(L, 0.0);
-  out.level_sites_touched.assign(L, 0.0);
-  if (X == 0.0) return out;
   std::vector<double> p(n, 0.0), u(n);
   const ContactStatus status = solver_.solve(profile, X, 1.0, p, u);
   if (!status.converged) {

@@ -129,8 +129,6 @@ engine::Unit quantity_unit(const engine::DesignResult& d) {
   return d.quantity == model::kPressure ? engine::pressure_unit(d.inputs, d.search_hi) : engine::length_unit(d.inputs);
 }
 
-/// What to say where no value meets every requirement: the nearest miss (in the quantity's
-/// unit `L`).
 /// A requirement's advisories at its edge as sentences ("" for none raised): which caps,
 /// then point's reasons.
 std::string edge_advisory_text(const engine::RequirementBound& b) {
@@ -140,6 +138,8 @@ std::string edge_advisory_text(const engine::RequirementBound& b) {
          ": " + b.advice.reason(0.0);
 }
 
+/// What to say where no value meets every requirement: the nearest miss (in the quantity's
+/// unit `L`).
 std::string miss_text(const engine::DesignResult& d, const engine::Unit& L) {
   const std::string q = quantity_name(d);
   if (!std::isfinite(d.lower) || !std::isfinite(d.upper)) {

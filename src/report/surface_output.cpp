@@ -154,12 +154,8 @@ std::string never_reason(const engine::SurfaceRun& run, bool hidden) {
 /// and the level they are on (each level's radius is in the JSON).
 std::string advisory_reason(const model::SurfaceAdvisories& advice) {
   if (advice.all.raised.empty()) return "";
-  std::size_t widest = 0;
-  for (std::size_t level = 0; level < advice.level.size(); ++level) {
-    if (advice.level[level].a_max > advice.level[widest].a_max) widest = level;
-  }
   std::string text = "On the widest caps, level ";
-  text += std::to_string(widest);
+  text += std::to_string(advice.widest());
   text += "'s, at the last time: ";
   text += advice.all.reason(0.0);
   return text;

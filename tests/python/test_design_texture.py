@@ -365,6 +365,13 @@ def test_a_share_of_every_cap_past_any_drop_is_said():
         return round(out["series"]["sites_touched"][0] * out["caps"])
 
     assert caps("1s") >= 11 and caps("1e12s") > 5
+    # A pitch window likewise: no pitch keeps 5% of a 2 x 2 mould's 24 caps out of contact
+    # (its 8 tallest touch), said as such, not as a law that creeps without end.
+    d = design("--dh", "6.5um", "--dh2", "9um", "--supercell", 2, "--scatter", "normal:0.3um", "--seed", 2, "--grid", 32,
+               "--find", "l", "--l", "100um..400um", "--temperature", 20, "--require", "at most 5% of caps within 1s at 3kPa")
+    assert d["empty"] and not any("creeps without end" in n for n in d["notes"]), d["notes"]
+    assert any(n.startswith("'at most 5% of caps within 1s at 3kPa' holds at no pitch from 100 um to 400 um")
+               for n in d["notes"]), d["notes"]
 
 
 def test_share_drop_windows_hold_at_random_textures():

@@ -47,4 +47,12 @@ SurfaceAdvisories advise_surface(const CellGeometry& geometry, const CurveState&
   return out;
 }
 
+std::size_t SurfaceAdvisories::widest() const {
+  std::size_t widest = 0;
+  for (std::size_t level = 0; level < this->level.size(); ++level) {
+    if (this->level[level].a_max > this->level[widest].a_max) widest = level;
+  }
+  return widest;
+}
+
 }  // namespace punchsweep::model

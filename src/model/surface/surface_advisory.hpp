@@ -24,6 +24,8 @@ struct SurfaceAdvisories {
   std::vector<Advisories> level;
   /// Over all levels: a_max and strain the largest, `raised` every advisory any level raises.
   Advisories all;
+  /// The level of the widest caps (the least such level; 0 where none touches).
+  std::size_t widest() const;
 };
 
 /// The advisories of `history` on `geometry` (no snapshots: none).
