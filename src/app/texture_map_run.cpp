@@ -81,9 +81,13 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
       out << "]" << (unit == "1" ? "" : " " + unit) << (axes == &map.geometry ? " (geometry: a load curve each)" : "") << "\n";
     }
   }
-  out << "  points: " << G << " geometr" << (G == 1 ? "y" : "ies") << " x " << P
-      << " load points\n";
-  double seconds = 0.0, largest = 0.0, bytes = 0.0;
+  out << "  points: " << G << " geometr" << (G == 1 ? "y" : "ies") << " x " << P << " load points";
+  if (const std::size_t per = map.tiles_per_geometry(); per > 1) {
+    out << " in " << plan.tiles() << " tiles (" << per << " a geometry, up to " << map.tile_rows * map.points_per_row()
+        << " load points each)";
+  }
+  out << "\n";
+  double seconds = 0.0, largest = 0.0, bytes = 0.0, reading = 0.0;
   std::size_t cached = 0, tables = 0, built = 0, continued = 0;
   std::map<std::string, std::size_t> groups;  // grids -> geometries
   for (std::size_t g = 0; g < G; ++g) {
@@ -117,6 +121,7 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
     }
     seconds += mine;
     largest = std::max(largest, mine);
+    reading += engine::estimated_reading_seconds(P, cost.levels, plan.times());
     if (G <= kListed) {
       out << "  geometry " << g + 1 << " (" << plan.describe(g) << "): " << what.str();
       if (mine > 0.0) out << "; about " << engine::seconds_text(mine);
@@ -134,12 +139,13 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
     out << "  memory: about " << bytes_text(bytes) << " a rank for the largest curve (" << ranks << " rank"
         << (ranks == 1 ? "" : "s") << " on one node: " << bytes_text(bytes * ranks) << " of this machine's " << bytes_text(machine) << ")\n";
   }
-  // Dealt one at a time, the costliest first: the run takes about the larger of the share
-  // of a rank and the largest curve.
-  const double wall = std::max(seconds / ranks, largest);
+  // Dealt one at a time, the costliest first, the readings in tiles: the run takes about
+  // the larger of the share of a rank and the largest curve.
+  const double wall = std::max((seconds + reading) / ranks, largest);
   out << "  estimated time: about " << engine::seconds_text(wall) << " on " << ranks << " rank" << (ranks == 1 ? "" : "s") << " ("
       << engine::seconds_text(seconds) << " of curves on one core, each estimate within a factor of " << engine::kCurveSecondsSpread
-      << " on this machine's measurements; reading the load points adds little)\n";
+      << " on this machine's measurements; " << engine::seconds_text(reading) << " of reading the load points off them, "
+      << "within 25%)\n";
   out << "  output: " << job.output << " (nothing written by a dry run)\n";
 }
 
@@ -159,7 +165,8 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     if (root) say(e.what());
     return input::kUsageExitCode;
   }
-  const std::size_t G = plan->geometries(), P = plan->header().load_points();
+  const std::size_t G = plan->geometries(), P = plan->header().load_points(), U = plan->tiles();
+  const std::size_t per = plan->header().tiles_per_geometry();
   const run::OutputPaths paths(job.output);
   const std::vector<std::string> identity = engine::texture_map_identity(job.keywords);
   const std::string identity_text = run::join(identity, "\n");  // the journal's header, the map's attribute
@@ -184,7 +191,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     if (root) print_dry_run(*plan, job, ranks, std::cout);
     return 0;
   }
-  const std::vector<std::size_t> order = plan->dealing_order();
+  const std::vector<std::size_t> order = plan->dealing_order(ranks);
 
   // Rank 0 claims the map's name, then applies the sweep's resume policy; every rank
   // learns the verdict.
@@ -220,10 +227,10 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     try {
       // (The resume policy has decided about an existing map: overwrite here.)
       writer.emplace(job.output, std::move(header), true, job.keywords);
-      std::vector<bool> done(G, false);
+      std::vector<bool> done(U, false);
       if (start == run::Start::resume) {
         const std::size_t good = io::TileJournal::replay(paths.journal, [&](const io::EncodedTile& tile) {
-          if (tile.tile >= G || tile.chunks.size() != 1 || done[tile.tile]) return false;
+          if (tile.tile >= U || tile.chunks.size() != 1 || done[tile.tile]) return false;
           try {
             writer->write(tile.tile, as_values(tile.chunks.front()));
           } catch (const std::exception&) {
@@ -237,7 +244,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
         journal.emplace(io::TileJournal::create(paths.journal, identity_text));
       }
       // The scheduler deals positions in the dealing order (the costliest curve first).
-      for (std::size_t k = 0; k < G; ++k) {
+      for (std::size_t k = 0; k < U; ++k) {
         if (done[order[k]]) {
           ++resumed;
         } else {
@@ -254,20 +261,21 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
   }
   if (root && !job.quiet) {
     std::ostringstream line;
-    line << G << " geometr" << (G == 1 ? "y" : "ies") << " (a load curve each) x " << P << " load points on " << ranks
-         << " rank" << (ranks == 1 ? "" : "s");
+    line << G << " geometr" << (G == 1 ? "y" : "ies") << " (a load curve each) x " << P << " load points";
+    if (per > 1) line << " in " << U << " tiles" << (G > 1 ? " (" + std::to_string(per) + " a geometry)" : "");
+    line << " on " << ranks << " rank" << (ranks == 1 ? "" : "s");
     if (resumed > 0) line << "; " << resumed << " already done (from " << paths.journal << ")";
     say(line.str());
   }
 
   for (const int signal : {SIGTERM, SIGUSR1, SIGINT}) std::signal(signal, on_texture_stop_signal);
-  // Every rank: a geometry computed into its block, as one journal record. A geometry that
+  // Every rank: a tile computed into its block, as one journal record. A geometry that
   // fails stops every rank (said by the rank that met it, with the geometry).
   const sweep::TileWork work = [&](std::uint64_t k) {
-    const std::size_t g = order.at(k);
+    const std::size_t u = order.at(k), g = plan->header().tile(u).geometry;
     std::vector<double> block;
     try {
-      block = plan->evaluate(g);
+      block = plan->evaluate(u);
     } catch (const input::UsageError& e) {
       say("geometry " + std::to_string(g + 1) + " (" + plan->describe(g) + "): " + e.what());
       sweep::abort_all_ranks(input::kUsageExitCode);
@@ -276,12 +284,12 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
       sweep::abort_all_ranks(1);
     }
     io::EncodedTile tile;
-    tile.tile = g;
+    tile.tile = u;
     tile.chunks.push_back(as_bytes(block));
-    tile.summary.points = P;
+    tile.summary.points = plan->header().tile(u).count;
     return io::pack_encoded_tile(tile);
   };
-  // Rank 0: each geometry journalled first, then placed, then a progress line.
+  // Rank 0: each tile journalled first, then placed, then a progress line.
   std::size_t done = resumed;
   const auto begun = std::chrono::steady_clock::now();
   const sweep::TileSink sink = [&](std::span<const std::byte> bytes) {
@@ -293,24 +301,29 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     if (job.quiet) return;
     const engine::GeometryCost cost = engine::geometry_cost(block);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
-    const double left = elapsed / static_cast<double>(done - resumed) * static_cast<double>(G - done);
+    const double left = elapsed / static_cast<double>(done - resumed) * static_cast<double>(U - done);
+    const engine::SurfaceMap::Tile at = plan->header().tile(tile.tile);
     std::ostringstream line;
-    line << "geometry " << tile.tile + 1 << " (" << plan->describe(tile.tile) << "): curve " << cost.source << " in "
-         << engine::seconds_text(cost.seconds) << "; " << done << " of " << G << " done (" << (100 * done) / G << "%)";
-    if (done < G) line << ", about " << engine::seconds_text(left) << " left";
+    line << "geometry " << at.geometry + 1 << " (" << plan->describe(at.geometry) << ")";
+    if (per > 1) line << ", load points " << at.first + 1 << " to " << at.first + at.count << " of " << P;
+    line << ": curve " << cost.source;
+    if (!cost.held) line << " in " << engine::seconds_text(cost.seconds);
+    line << "; " << done << " of " << U << " done (" << (100 * done) / U << "%)";
+    if (done < U) line << ", about " << engine::seconds_text(left) << " left";
     say(line.str());
   };
   int code = 0;
   try {
     const sweep::ScheduleResult result =
         sweep::run_world_schedule(root ? pending : sweep::TileRanges{}, work, root ? sink : sweep::TileSink{}, &g_stop_signal,
-                                   sweep::Pace::units);
+                                   per > 1 ? sweep::Pace::readings : sweep::Pace::units);
     if (root && result.interrupted) {
       const int signal = result.stop_signal != 0 ? result.stop_signal : static_cast<int>(g_stop_signal);
       std::string resume = job.command;
       if (!job.resume) resume += " --resume";
       say("stopped by signal " + std::to_string(signal) + " (received by rank " + std::to_string(result.stop_rank) +
-          ") with " + std::to_string(done) + " of " + std::to_string(G) + " geometries done; the finished ones are kept in " +
+          ") with " + std::to_string(done) + " of " + std::to_string(U) + (per > 1 ? " tiles" : " geometries") +
+          " done; the finished ones are kept in " +
           paths.journal + ".\n  Resume with: " + resume);
       code = run::kInterruptedExitCode;
     } else if (root) {

@@ -1,13 +1,14 @@
 #pragma once
 /// @file
 /// A texture map's run over MPI ranks: `punchsweep sweep` with a [texture] section and
-/// `punchsweep surface-map` both end here. A geometry (one load curve, seconds to minutes)
-/// is the unit of work: the sweep's scheduler deals them dynamically, every finished
-/// geometry goes into the sweep's tile journal before anything else, so a run killed at any
-/// moment (kill -9, a Slurm requeue) resumes with --resume and computes only the geometries
-/// the journal lacks; the resume policy, the output lock and the exit codes are the
-/// sweep's (run/preflight.hpp). Each geometry is a pure function of its keywords, so the map
-/// is bit-identical on any number of ranks and after any resume.
+/// `punchsweep surface-map` both end here. A tile (a geometry's load points in rows of the
+/// pressure axis; its first also builds the geometry's load curve, seconds to minutes) is
+/// the unit of work: the sweep's scheduler deals them dynamically, every finished tile goes
+/// into the sweep's tile journal before anything else, so a run killed at any moment (kill
+/// -9, a Slurm requeue) resumes with --resume and computes only the tiles the journal lacks;
+/// the resume policy, the output lock and the exit codes are the sweep's
+/// (run/preflight.hpp). Each tile is a pure function of its keywords, so the map is
+/// bit-identical on any number of ranks, in any tiles and after any resume.
 
 #include <string>
 #include <vector>

@@ -1045,16 +1045,16 @@ double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps)
          (grid.mirrored() ? kCurveSecondsMirrored : grid.mirrored_x() ? kCurveSecondsMirroredX : 1.0);
 }
 
-double check_surface(const input::Keywords& keywords) {
+SurfaceCheck check_surface(const input::Keywords& keywords) {
   return with_keywords(keywords, [](const SurfaceRun& run) {
+    SurfaceCheck out{0.0, run.times.size()};
     // The tables need no cell; where they may not reach the lattice's dh (auto), the cell's
     // refusals come when it is built.
-    if (run.curve_source != CurveSource::cell) return 0.0;
-    double seconds = 0.0;
+    if (run.curve_source != CurveSource::cell) return out;
     for (const int nodes : cell_grids(run)) {
-      seconds += estimated_curve_seconds(curve_grid(run, nodes), static_cast<double>(run.geometry.sites.size()));
+      out.seconds += estimated_curve_seconds(curve_grid(run, nodes), static_cast<double>(run.geometry.sites.size()));
     }
-    return seconds;
+    return out;
   });
 }
 

@@ -126,8 +126,13 @@ SurfaceRun step_surface(const input::Keywords& keywords, const reference::Cell& 
 /// refuse before building anything: a bad or missing option, a cell whose scales the
 /// boundary elements cannot take, a grid beyond the engine's budget. No curve is built, no
 /// cell made. Returns the estimated seconds of its curve(s) on one core
-/// (estimated_curve_seconds; 0 off the periodic tables; a cached curve not known here).
-double check_surface(const input::Keywords& keywords);
+/// (estimated_curve_seconds; 0 off the periodic tables; a cached curve not known here) and
+/// its snapshot times.
+struct SurfaceCheck {
+  double seconds = 0.0;
+  std::size_t times = 0;
+};
+SurfaceCheck check_surface(const input::Keywords& keywords);
 
 /// The seconds a cell's load curve on `grid` takes to build on one core of this machine,
 /// estimated from the grid's nodes and the cell's caps: a power law fitted to measured

@@ -54,6 +54,9 @@ constexpr const char* kQuiet = "quiet";
 /// The map's sample of load points checked by time stepping, and its seed.
 constexpr const char* kCheckSample = "check-sample";
 constexpr const char* kCheckSeed = "check-seed";
+/// The target values a tile of the map holds (load points x snapshot times), and its default.
+constexpr const char* kChunk = "chunk";
+constexpr std::size_t kDefaultChunk = 4096;
 
 
 /// The options `surface` has that a map does not take, and why.
@@ -66,11 +69,12 @@ constexpr Refused kRefused[] = {
     {"format", "the map is a netCDF-4 file (--output)"},
 };
 
-/// A map's limits (refused up front): geometries, each a load curve; geometries x load
-/// points, held on rank 0 (with three levels and ten times, about 150 bytes a point).
+/// A map's limits (refused up front): geometries, each a load curve.
 constexpr std::size_t kMaxGeometries = 10000;
-/// A geometry's load points: its block (every load point's values) travels whole between
-/// ranks and into the journal (with three levels and ten times, about 500 MB at the limit).
+/// A geometry's load points: a tile (a row of the first load axis at the least, the whole
+/// geometry at the most) travels whole between ranks and into the journal (with three
+/// levels and ten times, about 500 bytes a load point), and --grid auto holds each level's
+/// touch at every load point on two grids.
 constexpr double kMaxLoadPoints = 1e6;
 
 const std::string* find(const input::Keywords& keywords, const std::string& name) {
@@ -114,6 +118,8 @@ struct MapInputs {
   /// --check-sample K and --check-seed S: K load points of the map checked by time stepping.
   std::uint64_t check_sample = 0;
   std::uint64_t check_seed = 1;
+  /// --chunk N: the target values of a tile (load points x snapshot times).
+  std::size_t chunk = kDefaultChunk;
   /// The material (or law) the keywords name: its law spec is what the load points build.
   std::shared_ptr<const input::PointMaterial> material;
   const model::CreepLawSpec* spec = nullptr;  ///< material->spec
@@ -155,6 +161,18 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
       const std::uint64_t n = input::parse_seed(value, std::string("--") + key);
       if (key == kCheckSample && n == 0) throw input::UsageError("--check-sample = 0: valid: at least 1 load point");
       (key == kCheckSample ? in.check_sample : in.check_seed) = n;
+      continue;
+    }
+    if (key == kChunk) {
+      const std::string valid = ": valid: an integer >= 1 (load points x snapshot times a tile)";
+      int n = 0;
+      try {
+        n = input::parse_integer(value, "--chunk");
+      } catch (const input::UsageError&) {
+        throw input::UsageError("--chunk = '" + value + "' is not an integer" + valid);
+      }
+      if (n < 1) throw input::UsageError("--chunk = " + value + valid);
+      in.chunk = static_cast<std::size_t>(n);
       continue;
     }
     for (const Refused& r : kRefused) {
@@ -285,8 +303,26 @@ std::size_t SurfaceMap::load_points() const {
   return n;
 }
 
-std::size_t SurfaceMap::per_geometry(std::size_t q) const {
-  const std::size_t P = load_points(), L = static_cast<std::size_t>(levels), T = times.size();
+std::size_t SurfaceMap::points_per_row() const {
+  std::size_t n = 1;
+  for (std::size_t a = 1; a < load.size(); ++a) n *= load[a].values.size();
+  return n;
+}
+
+std::size_t SurfaceMap::tiles_per_geometry() const {
+  const std::size_t rows = load.empty() ? 1 : load.front().values.size();
+  return (rows + tile_rows - 1) / tile_rows;
+}
+
+SurfaceMap::Tile SurfaceMap::tile(std::size_t u) const {
+  const std::size_t per = tiles_per_geometry(), rows = load.empty() ? 1 : load.front().values.size();
+  if (u >= geometries() * per) throw std::invalid_argument("tile " + std::to_string(u) + " outside the map's " + std::to_string(geometries() * per));
+  const std::size_t row = (u % per) * tile_rows;
+  return {u / per, row * points_per_row(), std::min(tile_rows, rows - row) * points_per_row()};
+}
+
+std::size_t SurfaceMap::per_points(std::size_t q, std::size_t P) const {
+  const std::size_t L = static_cast<std::size_t>(levels), T = times.size();
   switch (map::kTextureQuantities[q].extent) {
     case map::TextureExtent::load_level: return P * L;
     case map::TextureExtent::geometry_level: return L;
@@ -307,8 +343,21 @@ void for_each_stored(const SurfaceMap& map, Visit&& visit) {
     if (map.stores(q)) visit(q, map.per_geometry(q));
   }
 }
+/// The same over `points` load points of a geometry (a tile's).
+template <class Visit>
+void for_each_stored(const SurfaceMap& map, std::size_t points, Visit&& visit) {
+  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
+    if (map.stores(q)) visit(q, map.per_points(q, points));
+  }
+}
 
-/// A block's head: levels, caps, E0* in Pa, the curve's seconds and source, the number of
+/// Whether a quantity of `extent` runs over the load's axes (then a tile holds its rows).
+constexpr bool over_load(map::TextureExtent extent) {
+  return extent != map::TextureExtent::geometry && extent != map::TextureExtent::geometry_level;
+}
+
+/// A block's head: levels, caps, E0* in Pa, the curve's seconds and source (0 built, 1
+/// from the cache, 2 off the tables, 3 held from the rank's tile before), the number of
 /// times, then the times.
 enum Head : std::size_t { kLevels, kCaps, kE0, kSeconds, kSource, kTimes, kHead };
 
@@ -340,6 +389,13 @@ constexpr std::size_t kTStar = map::texture_quantity("t_star"), kRegime = map::t
 }  // namespace
 
 struct TextureMapPlan::Inputs : MapInputs {};
+
+/// A geometry's run as a tile reads it, and what opening it cost.
+struct TextureMapPlan::Opened {
+  std::size_t geometry;
+  SurfaceRun run;
+  double seconds;
+};
 
 TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
     : in_(std::make_unique<const Inputs>(Inputs{read_map_inputs(keywords)})) {
@@ -377,20 +433,28 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
   }
   if (static_cast<double>(P) > kMaxLoadPoints) {
     throw input::UsageError("the map has " + std::to_string(P) + " load points a geometry, beyond " + input::json_number(kMaxLoadPoints) +
-                            " (a geometry's values travel whole between ranks and into the journal): split the load's axes over "
+                            " (a tile of them travels whole between ranks and into the journal): split the load's axes over "
                             "several maps");
   }
   // Every geometry's texture read as `surface` reads it, before any curve is built: a
   // missing or bad option, a scale or a grid beyond the engine is refused here (exit 2,
   // nothing written), not by the rank that meets it in the middle of the run.
   seconds_.assign(G, 0.0);
+  std::size_t times = 0;
   for (std::size_t g = 0; g < G; ++g) {
     try {
-      seconds_[g] = check_surface(keywords_of(g));
+      const SurfaceCheck check = check_surface(keywords_of(g));
+      seconds_[g] = check.seconds;
+      times = check.times;
     } catch (const input::UsageError& e) {
       throw input::UsageError("geometry " + std::to_string(g + 1) + " (" + describe(g) + "): " + e.what());
     }
   }
+  // Tiles of whole rows of the first load axis (the pressure), as many as hold about
+  // `chunk` values of a quantity over load points and times, one row at the least.
+  times_ = times;
+  const std::size_t row_values = map.points_per_row() * std::max<std::size_t>(times, 1);
+  map.tile_rows = std::clamp<std::size_t>(in.chunk / row_values, 1, map.load.front().values.size());
 }
 
 TextureMapPlan::~TextureMapPlan() = default;
@@ -414,10 +478,23 @@ std::string TextureMapPlan::describe(std::size_t g) const {
   return line.str();
 }
 
-std::vector<std::size_t> TextureMapPlan::dealing_order() const {
-  std::vector<std::size_t> order(seconds_.size());
-  for (std::size_t g = 0; g < order.size(); ++g) order[g] = g;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return seconds_[a] > seconds_[b]; });
+std::vector<std::size_t> TextureMapPlan::dealing_order(int ranks) const {
+  std::vector<std::size_t> geometries(seconds_.size());
+  for (std::size_t g = 0; g < geometries.size(); ++g) geometries[g] = g;
+  std::stable_sort(geometries.begin(), geometries.end(), [&](std::size_t a, std::size_t b) { return seconds_[a] > seconds_[b]; });
+  // In waves of `ranks` geometries: their first tiles (each a curve to build), then the
+  // rest of their tiles a geometry after another (each read off a curve built by then, or
+  // being built: from the table cache, where the build holds its lock).
+  const std::size_t per = header_.tiles_per_geometry(), wave = static_cast<std::size_t>(std::max(ranks, 1));
+  std::vector<std::size_t> order;
+  order.reserve(geometries.size() * per);
+  for (std::size_t begin = 0; begin < geometries.size(); begin += wave) {
+    const std::size_t end = std::min(begin + wave, geometries.size());
+    for (std::size_t k = begin; k < end; ++k) order.push_back(geometries[k] * per);
+    for (std::size_t k = begin; k < end; ++k) {
+      for (std::size_t t = 1; t < per; ++t) order.push_back(geometries[k] * per + t);
+    }
+  }
   return order;
 }
 
@@ -473,11 +550,15 @@ MoreLoadPoints TextureMapPlan::load_points() const {
   const SurfaceMap& map = header_;
   const std::size_t P = map.load_points();
   MoreLoadPoints out;
-  // The curve reaches the largest X(inf) of them all.
-  out.X_reach = [&in, &map, P](const SurfaceRun& run) {
-    double X = 0.0;
-    for (std::size_t p = 0; p < P; ++p) X = std::max(X, load_point(in, map, run, p).load->final());
-    return X;
+  // The curve reaches the largest X(inf) of them all: the same for every geometry (a load
+  // point's law and load are the load axes' and the texture's keywords), so found once.
+  out.X_reach = [&in, &map, P, this](const SurfaceRun& run) {
+    if (!reach_) {
+      double X = 0.0;
+      for (std::size_t p = 0; p < P; ++p) X = std::max(X, load_point(in, map, run, p).load->final());
+      reach_ = X;
+    }
+    return *reach_;
   };
   // --grid auto holds every load point's t* (not only the least pressure's, which sizes
   // the grid): a level whose touch load the grid moves by a little moves t* most where the
@@ -491,20 +572,41 @@ MoreLoadPoints TextureMapPlan::load_points() const {
   return out;
 }
 
-std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
+const TextureMapPlan::Opened& TextureMapPlan::open(std::size_t g, bool* held) const {
+  *held = last_ && last_->geometry == g;
+  if (*held) return *last_;
+  last_.reset();  // (its curve and cell freed before the next is built)
+  const auto start = std::chrono::steady_clock::now();
+  SurfaceRun run = evaluate_surface(keywords_of(g), load_points());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  last_ = std::make_unique<Opened>(Opened{g, std::move(run), seconds});
+  return *last_;
+}
+
+std::vector<double> TextureMapPlan::evaluate(std::size_t u) const {
   const MapInputs& in = *in_;
   const SurfaceMap& map = header_;
+  const SurfaceMap::Tile tile = map.tile(u);
+  const std::size_t g = tile.geometry;
   const std::vector<std::size_t> load_sizes = sizes_of(map.load);
   const std::size_t P = map.load_points();
   const input::Keywords keywords = keywords_of(g);
 
-  const auto start = std::chrono::steady_clock::now();
-  const SurfaceRun run = evaluate_surface(keywords, load_points());
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The geometry's run: this process's own where its last tile was of the same geometry,
+  // else its curve built, read from the table cache (where another rank built it: the same
+  // bits) or off the periodic tables.
+  bool held = false;
+  const Opened& opened = open(g, &held);
+  const SurfaceRun& run = opened.run;
   const std::size_t L = static_cast<std::size_t>(run.curve.levels());
-  // The geometry's block: a map of this one geometry.
+  // The tile's block: a map of this one geometry and the tile's rows of the first load axis.
   SurfaceMap block = map;
   for (SurfaceMapAxis& axis : block.geometry) axis.values.resize(1);
+  {
+    std::vector<double>& rows = block.load.front().values;
+    const std::size_t first = tile.first / map.points_per_row(), count = tile.count / map.points_per_row();
+    rows = std::vector<double>(rows.begin() + static_cast<std::ptrdiff_t>(first), rows.begin() + static_cast<std::ptrdiff_t>(first + count));
+  }
   block.levels = run.curve.levels();
   block.caps = run.geometry.sites.size();
   block.times = run.times;
@@ -517,10 +619,10 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
     block[kXStar][level] = run.history.levels[level].X_star;
     block[kResolved][level] = run.history.levels[level].resolved ? 1 : 0;
   }
-  // Each load point off the curve.
+  // Each load point of the tile off the curve: the map's p, the block's p - tile.first.
   const std::size_t T = block.times.size();
-  for (std::size_t p = 0; p < P; ++p) {
-    const LoadPoint at_p = load_point(in, map, run, p);
+  for (std::size_t p = 0; p < tile.count; ++p) {
+    const LoadPoint at_p = load_point(in, map, run, tile.first + p);
     const model::PointValues& point = at_p.point;
     const model::CreepWeightedLoad& load = *at_p.load;
     const std::vector<model::LevelTouch> touches = model::level_touches(run.curve, load);
@@ -586,14 +688,14 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   // The sampled load points of this geometry, each stepped in time on the same cell (as
   // surface --check: the same grid as the curve's).
   std::optional<reference::Cell> check_cell;
-  for (std::size_t p = 0; p < P && check_; ++p) {
-    if (!check_->contains(static_cast<std::uint64_t>(g) * P + p)) continue;
+  for (std::size_t p = 0; p < tile.count && check_; ++p) {
+    if (!check_->contains(static_cast<std::uint64_t>(g) * P + tile.first + p)) continue;
     input::Keywords at_p;
     for (const auto& [key, value] : keywords) {
       const bool load_key = key == "pbar" || std::any_of(in.load.begin(), in.load.end(), [&](const SurfaceMapAxis& a) { return a.name == key; });
       if (!load_key && key != "grid") at_p.emplace_back(key, value);
     }
-    const std::vector<std::size_t> digits = digits_of(p, load_sizes);
+    const std::vector<std::size_t> digits = digits_of(tile.first + p, load_sizes);
     for (std::size_t a = 0; a < map.load.size(); ++a) {
       const std::string& name = map.load[a].name;
       at_p.emplace_back(name == model::ramp_time_parameter().name ? "ramp" : name, text_of(map.load[a].values[digits[a]]));
@@ -626,18 +728,25 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t g) const {
   values[kLevels] = static_cast<double>(L);
   values[kCaps] = static_cast<double>(block.caps);
   values[kE0] = run.inputs.scales.E0_star ? run.inputs.scales.E0_star->si() : 0.0;
-  values[kSeconds] = seconds;
-  values[kSource] = run.curve_source == CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
+  values[kSeconds] = held ? 0.0 : opened.seconds;
+  values[kSource] = held ? 3.0 : run.curve_source == CurveSource::tables ? 2.0 : run.curve_cached ? 1.0 : 0.0;
   values[kTimes] = static_cast<double>(T);
   values.insert(values.end(), block.times.begin(), block.times.end());
   for_each_stored(block, [&](std::size_t q, std::size_t) { values.insert(values.end(), block[q].begin(), block[q].end()); });
   return values;
 }
 
+double estimated_reading_seconds(std::size_t points, int levels, std::size_t times) {
+  return static_cast<double>(points) * levels * (19e-6 + 16e-6 * static_cast<double>(times));
+}
+
 GeometryCost geometry_cost(std::span<const double> block) {
   if (block.size() < kHead) throw std::invalid_argument("a geometry's block shorter than its head");
-  const char* source = block[kSource] == 2.0 ? "from the periodic tables" : block[kSource] == 1.0 ? "from the cache" : "built";
-  return {block[kSeconds], source};
+  const char* source = block[kSource] == 3.0   ? "held from the rank's tile before"
+                       : block[kSource] == 2.0 ? "from the periodic tables"
+                       : block[kSource] == 1.0 ? "from the cache"
+                                               : "built";
+  return {block[kSeconds], source, block[kSource] == 3.0};
 }
 
 namespace {
@@ -675,7 +784,7 @@ struct TextureMapWriter::File {
 };
 
 TextureMapWriter::TextureMapWriter(std::string path, SurfaceMap header, bool overwrite, const input::Keywords& keywords)
-    : path_(std::move(path)), header_(std::move(header)), written_(header_.geometries(), false) {
+    : path_(std::move(path)), header_(std::move(header)), written_(header_.tiles(), false) {
   if (const std::string problem = map_output_problem(path_, overwrite, keywords); !problem.empty()) {
     throw input::UsageError(problem);
   }
@@ -786,16 +895,18 @@ void TextureMapWriter::create(std::span<const double> block) {
     if (spec.extent == TextureExtent::load_time || spec.extent == TextureExtent::load_time_level) over.emplace_back("t");
     if (spec.extent != TextureExtent::geometry && spec.extent != TextureExtent::load_time) over.emplace_back("level");
     const std::string long_name = std::string(spec.long_name) + (spec.stored == map::TextureStored::tolerance ? box : "");
-    // One geometry a slab (and a chunk): the map arrives, and is written, a geometry at a time.
+    // One tile a slab (and a chunk): a geometry's tile_rows of the first load axis; the
+    // map arrives, and is written, a tile at a time.
+    const std::size_t rows = over_load(spec.extent) ? map.tile_rows : 0;
     if (spec.flags == map::TextureFlags::none) {
       file.declare(std::string(spec.name), over, geometry_dims.size(), false, kNaN,
-                   with(units(std::string(spec.scale)), {{"long_name", long_name}}));
+                   with(units(std::string(spec.scale)), {{"long_name", long_name}}), {}, rows);
       continue;
     }
     const FlagSet set = flag_set(spec.flags);
     io::Attributes attributes{{"long_name", long_name}};
     if (!set.meanings.empty()) attributes.emplace_back("flag_meanings", set.meanings);
-    file.declare(std::string(spec.name), over, geometry_dims.size(), true, kNotComputed, attributes, set.codes);
+    file.declare(std::string(spec.name), over, geometry_dims.size(), true, kNotComputed, attributes, set.codes, rows);
   }
   if (map.E0_star_Pa > 0.0) {
     std::vector<double> pressure;
@@ -804,11 +915,11 @@ void TextureMapWriter::create(std::span<const double> block) {
   }
 }
 
-void TextureMapWriter::write(std::size_t g, std::span<const double> block) {
-  const auto refuse = [g](const std::string& why) {
-    return std::invalid_argument("geometry " + std::to_string(g) + "'s block " + why);
+void TextureMapWriter::write(std::size_t u, std::span<const double> block) {
+  const auto refuse = [u](const std::string& why) {
+    return std::invalid_argument("tile " + std::to_string(u) + "'s block " + why);
   };
-  if (g >= written_.size()) throw refuse("lies outside the map's " + std::to_string(written_.size()) + " geometries");
+  if (u >= written_.size()) throw refuse("lies outside the map's " + std::to_string(written_.size()) + " tiles");
   if (block.size() < kHead || block.size() < kHead + static_cast<std::size_t>(block[kTimes])) throw refuse("is shorter than its head");
   const std::size_t T = static_cast<std::size_t>(block[kTimes]);
   if (!file_) create(block);
@@ -822,24 +933,28 @@ void TextureMapWriter::write(std::size_t g, std::span<const double> block) {
       T != map.times.size()) {
     throw refuse("has other snapshot times than the map's");
   }
+  const SurfaceMap::Tile tile = map.tile(u);
   std::size_t expected = kHead + T;
-  for_each_stored(map, [&expected](std::size_t, std::size_t n) { expected += n; });
+  for_each_stored(map, tile.count, [&expected](std::size_t, std::size_t n) { expected += n; });
   if (block.size() != expected) {
-    throw refuse("holds " + std::to_string(block.size()) + " values where the map's geometry has " + std::to_string(expected));
+    throw refuse("holds " + std::to_string(block.size()) + " values where the map's tile has " + std::to_string(expected));
   }
-  const std::vector<std::size_t> at = digits_of(g, sizes_of(map.geometry));
+  const std::vector<std::size_t> at = digits_of(tile.geometry, sizes_of(map.geometry));
+  // The tile's rows of the first load axis, in the quantities over the load.
+  const io::NetcdfFile::Rows rows{tile.first / map.points_per_row(), tile.count / map.points_per_row()};
   std::size_t k = kHead + T;
-  for_each_stored(map, [&](std::size_t q, std::size_t n) {
-    file_->netcdf.write_slab(std::string(map::kTextureQuantities[q].name), at, block.subspan(k, n));
+  for_each_stored(map, tile.count, [&](std::size_t q, std::size_t n) {
+    file_->netcdf.write_slab(std::string(map::kTextureQuantities[q].name), at, block.subspan(k, n),
+                             over_load(map::kTextureQuantities[q].extent) ? rows : io::NetcdfFile::Rows{});
     k += n;
   });
-  written_[g] = true;
+  written_[u] = true;
 }
 
 void TextureMapWriter::finish() {
   const auto missing = std::find(written_.begin(), written_.end(), false);
   if (missing != written_.end()) {
-    throw std::logic_error("the map is finished without geometry " + std::to_string(missing - written_.begin()));
+    throw std::logic_error("the map is finished without tile " + std::to_string(missing - written_.begin()));
   }
   file_->netcdf.close();
   file_.reset();
@@ -852,11 +967,12 @@ void write_texture_map(const input::Keywords& keywords, const std::string& path,
   header.identity = run::join(texture_map_identity(keywords), "\n");
   TextureMapWriter writer(path, std::move(header), overwrite, keywords);
   const std::size_t G = plan.geometries();
-  for (std::size_t g = 0; g < G; ++g) {
-    const std::vector<double> block = plan.evaluate(g);
-    writer.write(g, block);
-    if (progress) {
-      const GeometryCost cost = geometry_cost(block);
+  for (const std::size_t u : plan.dealing_order(1)) {
+    const std::vector<double> block = plan.evaluate(u);
+    writer.write(u, block);
+    const GeometryCost cost = geometry_cost(block);
+    if (progress && !cost.held) {
+      const std::size_t g = plan.header().tile(u).geometry;
       std::cerr << "punchsweep surface-map: geometry " << g + 1 << " of " << G << " (" << plan.describe(g) << "): curve "
                 << cost.source << " in " << cost.seconds << " s\n";
     }
@@ -876,7 +992,10 @@ po::options_description texture_map_options(const input::PointMaterial& material
       ("check-sample", po::value<std::string>()->value_name("K"),
        "step the same cell in time (surface --check) at K load points of the map drawn at random, into "
        "check_regime, check_t_star, check_area_fraction")
-      ("check-seed", po::value<std::string>()->value_name("S")->default_value("1"), "the seed of --check-sample's draw");
+      ("check-seed", po::value<std::string>()->value_name("S")->default_value("1"), "the seed of --check-sample's draw")
+      ("chunk", po::value<std::string>()->value_name("N"),
+       "the target values of a tile, the unit of work, of the journal and of an HDF5 chunk: load points x snapshot "
+       "times, in whole rows of the pressure axis (at least one); 4096 by default");
   po::options_description opts;
   opts.add(own).add(surface_options(material));
   return opts;

@@ -5,8 +5,9 @@
 /// Each geometry value (a pitch l, a level's drop dh or dh2, a scatter's width) is one load
 /// curve; the pressure and the creep law's parameters are then read off each curve: every
 /// level's regime and t*, and at each time the share of caps in contact, the area fraction
-/// and their validity. The run (app/texture_map_run.hpp) deals the geometries to the MPI
-/// ranks and journals them; rank 0 writes the map, a netCDF-4 file, a geometry at a time.
+/// and their validity, in tiles of a geometry's load points (rows of the pressure axis). The
+/// run (app/texture_map_run.hpp) deals the tiles to the MPI ranks and journals them; rank 0
+/// writes the map, a netCDF-4 file, a tile at a time.
 
 #include <boost/program_options/options_description.hpp>
 
@@ -66,8 +67,9 @@ struct SurfaceMap {
   /// by sweep::ReferenceSample with check_seed); 0 without one.
   std::uint64_t check_sample = 0;
   std::uint64_t check_seed = 1;
-  /// The values quantity q has per geometry.
-  std::size_t per_geometry(std::size_t q) const;
+  /// The values quantity q has per geometry; over `points` load points of it (a tile's).
+  std::size_t per_geometry(std::size_t q) const { return per_points(q, load_points()); }
+  std::size_t per_points(std::size_t q, std::size_t points) const;
   double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
   std::string texture;                  ///< the texture's keywords, as JSON
   std::string material;                 ///< the material file, or empty
@@ -89,6 +91,22 @@ struct SurfaceMap {
 
   std::size_t geometries() const;
   std::size_t load_points() const;
+
+  /// A map's unit of work and of its journal: geometry g's load points [first, first +
+  /// count), whole rows of the first load axis (the pressure), each every value of the
+  /// load's other axes.
+  struct Tile {
+    std::size_t geometry, first, count;
+  };
+  /// Rows of the first load axis a tile holds (TextureMapPlan sizes them from `chunk`): at
+  /// least 1, at most the axis's length.
+  std::size_t tile_rows = 1;
+  std::size_t tiles_per_geometry() const;
+  std::size_t tiles() const { return geometries() * tiles_per_geometry(); }
+  /// Tile u (0 to tiles() - 1; a geometry's tiles one after another, in its rows' order).
+  Tile tile(std::size_t u) const;
+  /// The load points of a row of the first load axis (every value of the others).
+  std::size_t points_per_row() const;
 };
 
 /// A texture map's inputs, read once (the texture's keywords, the geometry's axes, the
@@ -110,10 +128,15 @@ class TextureMapPlan {
   std::size_t geometries() const { return header_.geometries(); }
   /// Geometry g's coordinates as "l = 1 R, dh = 0.02 R".
   std::string describe(std::size_t g) const;
-  /// Geometry g computed: its curve (built, from the cache or the tables) and every load
-  /// point read off it, as the values that travel between ranks and into a journal
-  /// (TextureMapWriter::write reads them). A pure function of g and the keywords.
-  std::vector<double> evaluate(std::size_t g) const;
+  /// The map's tiles (SurfaceMap::tile): a geometry's rows of the first load axis.
+  std::size_t tiles() const { return header_.tiles(); }
+  /// The snapshot times each load point is read at.
+  std::size_t times() const { return times_; }
+  /// Tile u computed: its geometry's curve (built, from the cache or the tables; held from
+  /// the tile before where that was of the same geometry) and each of its load points read
+  /// off it, as the values that travel between ranks and into a journal
+  /// (TextureMapWriter::write reads them). A pure function of u and the keywords.
+  std::vector<double> evaluate(std::size_t u) const;
   /// Geometry g's texture as `surface`'s keywords (at the least pressure, the law's first
   /// values).
   input::Keywords keywords_of(std::size_t g) const;
@@ -123,30 +146,46 @@ class TextureMapPlan {
   MoreLoadPoints load_points() const;
   /// Geometry g's estimated seconds on one core (check_surface's; a cached curve not known).
   double estimated_seconds(std::size_t g) const { return seconds_[g]; }
-  /// The order the geometries are dealt in: the costliest first (by estimated_seconds, ties
-  /// in index order), so that no long curve starts last while the other ranks idle.
-  std::vector<std::size_t> dealing_order() const;
+  /// The order the tiles are dealt in to `ranks` ranks: the geometries the costliest first
+  /// (by estimated_seconds, ties in index order), so that no long curve starts last while
+  /// the other ranks idle; in waves of `ranks` geometries, their first tiles (a curve each)
+  /// before the rest of their tiles, so that the ranks build curves side by side.
+  std::vector<std::size_t> dealing_order(int ranks) const;
 
  private:
   std::vector<double> seconds_;
+  std::size_t times_ = 0;
   struct Inputs;
   std::unique_ptr<const Inputs> in_;
   SurfaceMap header_;
   std::optional<sweep::ReferenceSample> check_;  ///< the load points checked by time stepping
+  mutable std::optional<double> reach_;          ///< the load points' largest X(inf), found once
+  /// The last geometry a tile read, kept for the next tile of the same geometry.
+  struct Opened;
+  mutable std::unique_ptr<Opened> last_;
+  const Opened& open(std::size_t g, bool* held) const;
 };
 
-/// What a geometry's curve cost: seconds, and "built", "from the cache" or "from the
-/// periodic tables".
+/// The seconds `points` load points of a geometry of `levels` levels take to read off its
+/// curve at `times` snapshot times on one core of this machine (each level's touch, areas
+/// and load by its history): levels x (19 + 16 times) us a load point, fitted to maps of
+/// 20,000 load points of two and three levels at 1, 3 and 10 times (each within 25%).
+double estimated_reading_seconds(std::size_t points, int levels, std::size_t times);
+
+/// What a tile's curve cost: seconds, and "built", "from the cache", "from the periodic
+/// tables" or held from the rank's tile before (`held`: it cost nothing).
 struct GeometryCost {
   double seconds;
   const char* source;
+  bool held = false;
 };
 GeometryCost geometry_cost(std::span<const double> block);
 
-/// Writes a texture's map a geometry at a time (TextureMapPlan::evaluate's blocks, in any
-/// order), never holding it whole: into FILE.partial, one slab (and one HDF5 chunk) a
-/// geometry in every variable, renamed to FILE by finish(). The levels and the times come
-/// with the first block; the .partial is removed when the writer goes unfinished.
+/// Writes a texture's map a tile at a time (TextureMapPlan::evaluate's blocks, in any
+/// order), never holding it whole: into FILE.partial, one slab (and one HDF5 chunk) a tile
+/// in every variable over the load (a geometry's slab in the others), renamed to FILE by
+/// finish(). The levels and the times come with the first block; the .partial is removed
+/// when the writer goes unfinished.
 class TextureMapWriter {
  public:
   /// Checks `path` as every output is (io::output_file_problem for it and its .partial;
@@ -157,13 +196,13 @@ class TextureMapWriter {
   TextureMapWriter(const TextureMapWriter&) = delete;
   TextureMapWriter& operator=(const TextureMapWriter&) = delete;
 
-  /// Geometry g's block. Throws input::UsageError where its levels differ from the first
+  /// Tile u's block. Throws input::UsageError where its levels differ from the first
   /// block's, std::invalid_argument where it does not fit the map.
-  void write(std::size_t g, std::span<const double> block);
+  void write(std::size_t u, std::span<const double> block);
   /// The map's levels and snapshot times (0 before the first block).
   int levels() const { return header_.levels; }
   std::size_t times() const { return header_.times.size(); }
-  /// Closes the file and gives it its name. Throws std::logic_error when a geometry is missing.
+  /// Closes the file and gives it its name. Throws std::logic_error when a tile is missing.
   void finish();
 
  private:

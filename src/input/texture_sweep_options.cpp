@@ -106,6 +106,8 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
       set(command_line, "output.file", value_of(k, option));
     } else if (option == "--resume" || option == "--overwrite" || option == "--quiet") {
       set(command_line, "run." + option.substr(2), a.find('=') == std::string::npos ? "true" : value_of(k, option));
+    } else if (option == "--chunk") {
+      set(command_line, "run.chunk", value_of(k, option));
     } else if (a == "--dry-run") {
       out.dry_run = true;
     } else if (option.rfind("--", 0) == 0 && option.find('.') != std::string::npos) {
@@ -148,8 +150,12 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
         out.overwrite = read_switch(key, value);
       } else if (name == "quiet") {
         out.quiet = read_switch(key, value);
+      } else if (name == "chunk") {
+        // The map's tiles (engine::TextureMapPlan): a keyword of the map, part of its identity.
+        out.keywords.emplace_back("chunk", value);
+        out.origins.push_back(key);
       } else {
-        throw UsageError("unknown key " + key + " (keys of [run] for a texture's map: resume, overwrite, quiet)");
+        throw UsageError("unknown key " + key + " (keys of [run] for a texture's map: resume, overwrite, quiet, chunk)");
       }
     } else if (section == "reference") {
       // A sample of the map's load points stepped in time on the same cell (surface --check).
@@ -177,10 +183,11 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
 const char* const kTextureSweepHelp =
     "A texture's map (any lattice, levels, cell file, scattered supercell or height map): a\n"
     "config with a [texture] section, or --texture.KEY on the command line. Each geometry\n"
-    "(a value of l, dh, dh2) is one load curve, dealt to the ranks as a unit of work and\n"
-    "journalled when done (--resume computes only what the journal lacks); the pressures,\n"
-    "the law's values and the ramp times are read off it. The map is a netCDF-4 file with a\n"
-    "level dimension (docs/cli.md, \"A texture's map through sweep\").\n"
+    "(a value of l, dh, dh2) is one load curve; the pressures, the law's values and the ramp\n"
+    "times are read off it in tiles (rows of the pressure axis, about run.chunk load points x\n"
+    "times each), dealt to the ranks as units of work and journalled when done (--resume\n"
+    "computes only what the journal lacks). The map is a netCDF-4 file with a level\n"
+    "dimension (docs/cli.md, \"A texture's map through sweep\").\n"
     "  # hexagonal.ini\n"
     "  [texture]\n"
     "  lattice = hexagonal\n"
@@ -202,7 +209,7 @@ const char* const kTextureSweepHelp =
     "pixel, supercell, scatter, seed, grid, curve, ...); [grid] l, dh, dh2, pbar or pressure, T or\n"
     "temperature, ramp_time; [model] material, R, s, C, load_table; [time] times; [reference]\n"
     "sample (K load points stepped in time on the same cell, as surface --check), seed; [output]\n"
-    "file, tolerance; [run] resume, overwrite, quiet. --dry-run: each curve's grid, memory,\n"
+    "file, tolerance; [run] resume, overwrite, quiet, chunk (4096). --dry-run: each curve's grid, memory,\n"
     "whether the cache holds it and an estimate of its time on this machine; nothing is run.\n";
 
 }  // namespace punchsweep::input

@@ -104,12 +104,15 @@ void NetcdfFile::variable(const std::string& name, const std::vector<std::string
 }
 
 void NetcdfFile::declare(const std::string& name, const std::vector<std::string>& dims, std::size_t slab_dims,
-                         bool int8, double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values) {
+                         bool int8, double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values,
+                         std::size_t slab_rows) {
   const std::string where = "'" + name + "' in " + path_;
   if (slab_dims > dims.size()) throw std::invalid_argument("NetcdfFile: " + where + " has fewer dimensions than its slabs'");
   const std::vector<hsize_t> shape = shape_of(dims, where);
   std::vector<hsize_t> chunk = shape;  // a slab: 1 along its first slab_dims dimensions
   std::fill(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(slab_dims), hsize_t{1});
+  // (slab_rows of the next dimension, at most its length)
+  if (slab_rows > 0 && slab_dims < shape.size()) chunk[slab_dims] = std::min<hsize_t>(slab_rows, std::max<hsize_t>(shape[slab_dims], 1));
   const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, "make dataspace of " + where);
   const Handle dcpl = creation_properties(chunk, where);
   const std::int8_t code = static_cast<std::int8_t>(fill);
@@ -124,7 +127,8 @@ void NetcdfFile::declare(const std::string& name, const std::vector<std::string>
   declared_.emplace_back(name, Declared{std::move(dataset), shape, slab_dims, int8});
 }
 
-void NetcdfFile::write_slab(const std::string& name, const std::vector<std::size_t>& at, std::span<const double> values) {
+void NetcdfFile::write_slab(const std::string& name, const std::vector<std::size_t>& at, std::span<const double> values,
+                            Rows rows) {
   const std::string where = "'" + name + "' in " + path_;
   const auto found = std::find_if(declared_.begin(), declared_.end(), [&](const auto& d) { return d.first == name; });
   if (found == declared_.end()) throw std::invalid_argument("NetcdfFile: " + where + " was not declared");
@@ -137,6 +141,13 @@ void NetcdfFile::write_slab(const std::string& name, const std::vector<std::size
       if (at[d] >= v.shape[d]) throw std::invalid_argument("NetcdfFile: slab index outside " + where);
       start[d] = at[d];
       count[d] = 1;
+    } else if (d == v.slab_dims && rows.count > 0) {
+      if (rows.first + rows.count > v.shape[d]) {
+        throw std::invalid_argument("NetcdfFile: rows " + std::to_string(rows.first) + " to " +
+                                    std::to_string(rows.first + rows.count) + " outside " + where);
+      }
+      start[d] = rows.first;
+      count[d] = rows.count;
     }
     n *= static_cast<std::size_t>(count[d]);
   }

@@ -21,6 +21,12 @@ namespace punchsweep::io {
 /// String attributes, in the order written.
 using Attributes = std::vector<std::pair<std::string, std::string>>;
 
+/// Rows of a slab's next dimension (after its fixed ones): `count` from `first`; a count of
+/// 0 spans the whole dimension.
+struct SlabRows {
+  std::size_t first = 0, count = 0;
+};
+
 class NetcdfFile {
  public:
   /// Creates `path` (replacing what is there; nothing is half written where the caller
@@ -35,15 +41,20 @@ class NetcdfFile {
   void variable(const std::string& name, const std::vector<std::string>& dims, const std::vector<double>& values,
                 const Attributes& attributes);
   /// A variable over `dims` written later in slabs (write_slab): a slab fixes its first
-  /// `slab_dims` indices and spans the rest, and is one chunk (shuffled, deflated), so that
-  /// a map arriving a slab at a time is never held whole. float64, or int8 codes with
-  /// flag_values where `int8`; unwritten values read as `fill` (NaN, or the not-computed code).
+  /// `slab_dims` indices and spans the rest (or `slab_rows` of the next dimension, where
+  /// that is not 0), and is one chunk (shuffled, deflated), so that a map arriving a slab at
+  /// a time is never held whole. float64, or int8 codes with flag_values where `int8`;
+  /// unwritten values read as `fill` (NaN, or the not-computed code).
   void declare(const std::string& name, const std::vector<std::string>& dims, std::size_t slab_dims, bool int8,
-               double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values = {});
-  /// Writes the slab of a declared variable at `at` (one index per slab dimension): its
-  /// values, row-major (codes converted to int8 for an int8 variable). Throws
-  /// std::invalid_argument when `at` or the count does not fit.
-  void write_slab(const std::string& name, const std::vector<std::size_t>& at, std::span<const double> values);
+               double fill, const Attributes& attributes, const std::vector<std::int8_t>& flag_values = {},
+               std::size_t slab_rows = 0);
+  using Rows = SlabRows;
+  /// Writes the slab of a declared variable at `at` (one index per slab dimension), over
+  /// `rows` of the next dimension where the variable has one: its values, row-major (codes
+  /// converted to int8 for an int8 variable). Throws std::invalid_argument when `at`, the
+  /// rows or the count does not fit.
+  void write_slab(const std::string& name, const std::vector<std::size_t>& at, std::span<const double> values,
+                  Rows rows = {});
   /// Closes the file (flushes); the destructor does too, without reporting failure.
   void close();
 

@@ -98,13 +98,15 @@ void work(MPI_Comm comm, const TileWork& compute, const volatile std::sig_atomic
 class Manager {
  public:
   Manager(MPI_Comm comm, int ranks, const TileWork& compute, const TileRanges& pending, const TileSink& sink, Pace pace)
-      : comm_(comm), ranks_(ranks), in_flight_(pace == Pace::units ? 1 : kBatchesInFlight), pace_(pace), compute_(compute),
+      : comm_(comm), ranks_(ranks),
+        in_flight_(pace == Pace::tiles ? kBatchesInFlight : pace == Pace::readings ? 2 : 1), pace_(pace), compute_(compute),
         sink_(sink), queue_(pending),
         outstanding_(static_cast<std::size_t>(ranks), 0), to_do_(pending.size()) {}
 
   ScheduleResult run(const volatile std::sig_atomic_t* stop) {
+    // (Readings: one each at first, the long first units spread over the ranks.)
     for (int w = 1; w < ranks_; ++w) {
-      for (int b = 0; b < in_flight_; ++b) send_batch(w);
+      for (int b = 0; b < (pace_ == Pace::readings ? 1 : in_flight_); ++b) send_batch(w);
     }
     while (true) {
       if (*stop && result_.stop_signal == 0) {  // a signal to rank 0 (a worker's is taken in drain_results)
@@ -135,7 +137,7 @@ class Manager {
   // Guided size: large batches early (at most kMaxBatch, so no message and no worker's
   // backlog grows with the grid), single tiles at the end.
   std::size_t guided_size() const {
-    if (pace_ == Pace::units) return 1;
+    if (pace_ != Pace::tiles) return 1;
     const std::uint64_t size = queue_.size() / (4 * static_cast<std::uint64_t>(ranks_));
     return static_cast<std::size_t>(std::clamp<std::uint64_t>(size, 1, kMaxBatch));
   }

@@ -51,8 +51,10 @@ struct ScheduleResult {
 /// guided batches queued at each worker, so none waits for the next) or Pace::units (a
 /// tile is seconds to minutes of work, such as a texture's load curve: one tile at a time
 /// to each worker, handed out as it finishes, so no worker holds a queue while another is
-/// idle).
-enum class Pace { tiles, units };
+/// idle), or Pace::readings (units, the first of them long, most a fraction of a second,
+/// such as a texture map's tiles read off curves built once: one tile at a time to each
+/// worker at first, then two queued at each, so that none waits while rank 0 computes).
+enum class Pace { tiles, units, readings };
 ScheduleResult run_schedule(MPI_Comm comm, const TileRanges& pending, const TileWork& work,
                             const TileSink& sink, const volatile std::sig_atomic_t* stop, Pace pace = Pace::tiles);
 

@@ -84,5 +84,52 @@ TEST(NetcdfFile, slabs_come_back_where_they_were_written_and_the_rest_reads_as_t
   }
 }
 
+TEST(NetcdfFile, slabs_of_rows_tile_the_next_dimension_and_chunk_it) {
+  const ScratchDir dir;
+  const std::string path = dir.file("tiles.nc");
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  {
+    NetcdfFile file(path);
+    file.coordinate("l", {1.0, 2.0}, {});
+    file.coordinate("pbar", {0.1, 0.2, 0.3, 0.4, 0.5}, {});
+    file.coordinate("T", {20.0, 40.0}, {});
+    // A geometry (l) a slab; its pressures in tiles of 2 rows (the last of one), each tile
+    // every temperature.
+    file.declare("t_star", {"l", "pbar", "T"}, 1, false, kNaN, {}, {}, 2);
+    file.declare("X_star", {"l"}, 1, false, kNaN, {}, {}, 2);  // (no dimension after the slab's)
+    for (const std::size_t l : {1u, 0u}) {
+      for (const std::size_t first : {4u, 0u, 2u}) {
+        const std::size_t rows = first == 4 ? 1 : 2;
+        if (l == 1 && first == 2) continue;  // never written
+        std::vector<double> values;
+        for (std::size_t p = first; p < first + rows; ++p) {
+          for (std::size_t T = 0; T < 2; ++T) values.push_back(static_cast<double>(100 * l + 10 * p + T));
+        }
+        file.write_slab("t_star", {l}, values, {first, rows});
+      }
+      file.write_slab("X_star", {l}, std::vector<double>{static_cast<double>(l)}, {0, 2});  // (rows: no such dimension)
+    }
+    EXPECT_THROW(file.write_slab("t_star", {0}, std::vector<double>(4, 0.0), {4, 2}), std::invalid_argument);  // past 5
+    EXPECT_THROW(file.write_slab("t_star", {0}, std::vector<double>(2, 0.0), {0, 2}), std::invalid_argument);  // 4 values
+    file.close();
+  }
+  std::vector<hsize_t> chunk;
+  const std::vector<double> t = read_all<double>(path, "t_star", H5T_NATIVE_DOUBLE, &chunk);
+  EXPECT_EQ(chunk, (std::vector<hsize_t>{1, 2, 2}));
+  for (std::size_t l = 0; l < 2; ++l) {
+    for (std::size_t p = 0; p < 5; ++p) {
+      for (std::size_t T = 0; T < 2; ++T) {
+        const std::size_t k = (l * 5 + p) * 2 + T;
+        if (l == 1 && (p == 2 || p == 3)) {
+          EXPECT_TRUE(std::isnan(t[k])) << k;
+        } else {
+          EXPECT_EQ(t[k], static_cast<double>(100 * l + 10 * p + T)) << k;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(read_all<double>(path, "X_star", H5T_NATIVE_DOUBLE, &chunk), (std::vector<double>{0.0, 1.0}));
+}
+
 }  // namespace
 }  // namespace punchsweep::io

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # punchsweep sweep of a texture ([texture] in the config): a hexagonal three-level map is
-# bit-identical on 1, 2 and 3 ranks, the same map as surface-map's, resumes after kill -9
-# of mpirun to the map of an uninterrupted run without building the journalled geometries
-# again, and refuses bad keys, a geometry `surface` would refuse and an interrupted map
+# bit-identical on 1, 2 and 3 ranks, and in tiles of one pressure (run.chunk) on 1 and 3,
+# the same map as surface-map's, resumes after kill -9 of mpirun (in tiles) to the map of an
+# uninterrupted run without computing the journalled tiles again, and refuses bad keys, a geometry `surface` would refuse and an interrupted map
 # without --resume once (rank 0), exit 2, before any curve.
 source "$(dirname "$0")/common.sh"
 cat > hex.ini <<'INI'
@@ -95,6 +95,22 @@ for n in 2 3; do
   PUNCHSWEEP_CACHE="$work/cache_np$n" run_ranks "$n" sweep --config hex.ini --output "np$n.nc" --quiet
   same_texture_maps one.nc "np$n.nc"
 done
+# In tiles of one pressure (chunk 4: fewer values than a row's 2 temperatures x 3 times),
+# six a geometry: the same map; its variables over the load chunked a tile (a pressure) each.
+PUNCHSWEEP_CACHE="$work/cache_tiles" run_ranks 0 sweep --config hex.ini --chunk 4 --output tiles1.nc 2> tiles.log
+grep -q "6 geometries (a load curve each) x 12 load points in 36 tiles (6 a geometry) on 1 rank" tiles.log || { cat tiles.log; exit 1; }
+grep -q "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R), load points 3 to 4 of 12: curve held from the rank's tile before; " tiles.log ||
+  { echo "FAIL: a tile's curve not held"; cat tiles.log; exit 1; }
+same_texture_maps one.nc tiles1.nc
+PUNCHSWEEP_CACHE="$work/cache_tiles3" run_ranks 3 sweep --config hex.ini --run.chunk 4 --output tiles3.nc --quiet
+same_texture_maps one.nc tiles3.nc
+/usr/bin/python3 -c "
+import h5py
+with h5py.File('tiles3.nc') as f:
+    assert f['t_star'].chunks == (1, 1, 1, 1, 2, 3), f['t_star'].chunks
+    assert f['touched'].chunks == (1, 1, 1, 1, 2, 3), f['touched'].chunks
+    assert f['X_star'].chunks == (1, 1, 1, 3), f['X_star'].chunks
+"
 # The same keys through surface-map (its spelling of the same run) and on the command line.
 PUNCHSWEEP_CACHE="$work/cache_map" run_ranks 2 surface-map --lattice hexagonal --grid 64 --s 2 --l 1.2 \
   --dh 'linspace(0.01, 0.06, 6)' --dh2 0.08 --pbar 'logspace(0.002, 0.05, 6)' --T 2,4 --times 0,1,5 --check-sample 3 --output map.nc --quiet
@@ -104,31 +120,35 @@ PUNCHSWEEP_CACHE="$work/cache_cli" run_ranks 0 sweep --texture.lattice hexagonal
   --grid.T 2,4 --time.times 0,1,5 --reference.sample 3 --output cli.nc --quiet
 same_texture_maps one.nc cli.nc
 
-# kill -9 of mpirun once the journal holds its first geometry, then --resume.
+# kill -9 of mpirun once the journal holds its first tile (a pressure of a geometry), then --resume.
 map="$work/k.nc"
 export PUNCHSWEEP_CACHE="$work/cache_kill"
 has_a_geometry() { grep -qa PSRC "$map.partial.journal" 2>/dev/null; }
-start_ranks 2 sweep --config hex.ini --output "$map" --quiet; pid=$!
-wait_until 120 "$pid" "$map's journal to hold a geometry" -- has_a_geometry || true
+start_ranks 2 sweep --config hex.ini --chunk 4 --output "$map" --quiet; pid=$!
+wait_until 120 "$pid" "$map's journal to hold a tile" -- has_a_geometry || true
 kill -9 "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
 wait_until 10 "" "the ranks to end with mpirun" -- gone "--output $map"
 test -f "$map.partial.journal" && test ! -e "$map" || { echo "FAIL: the kill came too late to test anything"; exit 1; }
-# Without --resume the interrupted map is refused, once, with what to do.
+# Without --resume the interrupted map is refused, once, with what to do; in other tiles too.
 set +e
-run_ranks 2 sweep --config hex.ini --output "$map" > out 2> err; rc=$?
+run_ranks 2 sweep --config hex.ini --chunk 4 --output "$map" > out 2> err; rc=$?
 set -e
 [ "$rc" = 2 ] && grep -q "pass --resume to finish it" err && [ "$(grep -c "^punchsweep sweep: " err)" = 1 ] ||
   { echo "FAIL: exit $rc"; cat err; exit 1; }
-run_ranks 2 sweep --config hex.ini --output "$map" --resume 2> resume.log || { cat resume.log; exit 1; }
+set +e
+run_ranks 2 sweep --config hex.ini --chunk 8 --output "$map" --resume > out 2> err; rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "chunk: the existing map has 4; this run asks for 8" err || { echo "FAIL: resumed in other tiles: exit $rc"; cat err; exit 1; }
+run_ranks 2 sweep --config hex.ini --chunk 4 --output "$map" --resume 2> resume.log || { cat resume.log; exit 1; }
 grep -q "already done (from $map.partial.journal)" resume.log || { echo "FAIL: nothing resumed"; cat resume.log; exit 1; }
 test ! -e "$map.partial" && test ! -e "$map.partial.journal"
 same_texture_maps one.nc "$map"
 # A finished map resumed again: nothing to do; with another configuration: refused.
-run_ranks 0 sweep --config hex.ini --output "$map" --resume 2> again.log
+run_ranks 0 sweep --config hex.ini --chunk 4 --output "$map" --resume 2> again.log
 grep -q "already complete" again.log
 set +e
-run_ranks 0 sweep --config hex.ini --grid.T 2,5 --output "$map" --resume 2> err; rc=$?
+run_ranks 0 sweep --config hex.ini --chunk 4 --grid.T 2,5 --output "$map" --resume 2> err; rc=$?
 set -e
 [ "$rc" = 2 ] && grep -q "T: the existing map has 2, 4; this run asks for 2,5" err || { echo "FAIL: exit $rc"; cat err; exit 1; }
 
@@ -149,10 +169,12 @@ refuse "unknown key output.quantities" --config hex.ini --output.quantities full
 refuse "--check-sample = 73: valid: 1 to the map's 72 load points (6 geometries x 12)" --config hex.ini --reference.sample 73 --output bad.nc
 refuse "--dh = '-0.01': height difference of the punch levels dh = -0.01 is outside its range" --config hex.ini --grid.dh=-0.01 --output bad.nc
 refuse "run.resume = true and run.overwrite = true" --config hex.ini --resume --overwrite --output bad.nc
+refuse "--chunk = 0: valid: an integer >= 1" --config hex.ini --chunk 0 --output bad.nc
+refuse "--chunk = '4k' is not an integer: valid: an integer >= 1" --config hex.ini --run.chunk 4k --output bad.nc
 # What `surface` would refuse of a geometry is refused before any curve, not by the rank
 # that meets it (before, mpirun aborted and left a journal behind).
 sed '/^s = 2$/d' hex.ini > no-s.ini
 refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): missing required option --s" --config no-s.ini --output bad.nc
 refuse "geometry 1 (l = 1.2 R, dh = 0.01 R, dh2 = 0.08 R): the curve's grid, 16384 x 28512 nodes" \
   --config hex.ini --texture.supercell 16 --texture.grid 1024 --output bad.nc
-echo "PASS: texture sweeps identical for 1, 2, 3 ranks, surface-map and the command line; resumed after kill -9"
+echo "PASS: texture sweeps identical for 1, 2, 3 ranks, in tiles, surface-map and the command line; resumed after kill -9"
