@@ -498,7 +498,10 @@ class TextureGap {
   /// and load on `creep`, at its pitch and shape, for requirement `r` (its level's first cap,
   /// or its share of the level's caps: then -infinity where no drop from 0 brings that
   /// share down by then, +infinity where a share of none asks nothing); +infinity where the
-  /// law creeps without end.
+  /// law creeps without end. For a share of another level's caps (reversed(r)): the least
+  /// drop at which that share has touched by then (it touches the sooner the deeper the
+  /// searched level lies), +infinity where not even at its deepest, -infinity where a share
+  /// of none asks nothing.
   double operator()(const model::ContactProblem& problem, const model::CreepLaw& creep, double t, const Requirement& r) {
     const model::CreepWeightedLoad load(creep, problem.pbar0, problem.loading);
     const double X = load.by(t);
@@ -510,28 +513,36 @@ class TextureGap {
     // The cap that decides: touch_by holds once the ceil(S n)-th has touched, no_touch_by
     // until the (floor(S n) + 1)-th has (share_load's counts; the first cap for both without
     // a share), of the level's caps or of every cap of the cell.
-    const bool every = r.is_share() && r.share_level < 0;
-    const std::size_t counted = every ? closure.made->geometry.sites.size() : closure.caps;
+    const bool every = r.is_share() && r.share_level < 0, other = reversed(r);
+    const int level = every ? reference::LevelClosure::kEveryLevel : other ? r.share_level : level_;
+    const std::size_t counted = every ? closure.made->geometry.sites.size() : closure.caps_of[static_cast<std::size_t>(level)];
     const double n = static_cast<double>(counted);
     const std::size_t cap = !r.is_share() ? 1
                             : r.kind == Requirement::Kind::touch_by
                                 ? static_cast<std::size_t>(std::ceil(r.share * n - 1e-9))
                                 : static_cast<std::size_t>(std::floor(r.share * n + 1e-9)) + 1;
-    if (cap == 0) return kInf;         // at least none: any drop
-    if (cap > counted) return -kInf;   // at most all: no drop
-    const std::array<double, 5> key{problem.l, problem.shape.C, X, static_cast<double>(cap), every ? 1.0 : 0.0};
+    if (cap == 0) return other ? -kInf : kInf;        // at least none: any drop
+    if (cap > counted) return other ? kInf : -kInf;   // at most all: no drop
+    const std::array<double, 5> key{problem.l, problem.shape.C, X, static_cast<double>(cap), static_cast<double>(level)};
     if (const auto found = known_.find(key); found != known_.end()) return found->second;
     // Where the spots in contact are small at X, the small-spot limit answers the first cap,
     // as it answers `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
-    if (cap == 1 && !every) {
+    if (cap == 1 && level == level_) {
       if (const std::optional<double> limit = closure.limit->level_closure(X)) {
         ++small_spot_;
         return known_[key] = *limit + closure.shift;
       }
     }
     if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
-    const reference::LevelClosed closed = closure.solve->at(X, cap, every);
+    const reference::LevelClosed closed = closure.solve->counting(X, cap, level);
     if (!closed.steady) unsteady_.insert(r.text);
+    if (other) {
+      solves_ += closed.solves;
+      // (Not even with the level at its deepest, "at least" the share holds at no drop; even
+      // with it at the top, "at most" holds at none.)
+      if (closed.drop == (r.kind == Requirement::Kind::touch_by ? kInf : -kInf)) unreachable_.insert(r.text);
+      return known_[key] = std::isinf(closed.drop) ? closed.drop : closed.drop + closure.shift;
+    }
     if (every && closed.every_drop) {
       // So many caps touch even with the level at its deepest that "at most" the share holds
       // at no drop, and "at least" at every one (its bound the deepest, as a level's).
@@ -569,6 +580,9 @@ class TextureGap {
   /// deepest: the other levels' caps reach the share.
   bool reached(const std::string& text) const { return reached_.contains(text); }
   int level() const { return level_; }
+  /// Whether `r` asks for a share of another level's caps than the searched one's: its drop
+  /// (operator()) is then the least at which the share touches, a lower edge of the drop.
+  bool reversed(const Requirement& r) const { return r.is_share() && r.share_level > 0 && r.share_level != level_; }
 
  private:
   struct Closure {
@@ -577,6 +591,7 @@ class TextureGap {
     std::unique_ptr<reference::LevelClosure> solve;      ///< built where the limit does not answer
     double shift = 0.0;
     std::size_t caps = 0;  ///< of the level
+    std::vector<std::size_t> caps_of;  ///< of each level
   };
   /// The closure of the problem's pitch and shape, its cell made where it is new.
   Closure& made(const model::ContactProblem& problem) {
@@ -586,7 +601,9 @@ class TextureGap {
       closure.made = std::make_unique<const engine::TextureGeometry>(make_(problem.l, problem.shape));
       closure.limit = std::make_unique<const model::SmallSpotLimit>(closure.made->geometry, level_);
       closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
-      for (const model::Site& site : closure.made->geometry.sites) closure.caps += site.level == level_ ? 1 : 0;
+      closure.caps_of.assign(static_cast<std::size_t>(closure.made->geometry.levels()), 0);
+      for (const model::Site& site : closure.made->geometry.sites) ++closure.caps_of[static_cast<std::size_t>(site.level)];
+      closure.caps = closure.caps_of[static_cast<std::size_t>(level_)];
     }
     return closure;
   }
@@ -823,16 +840,6 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                               "(--supercell K --scatter DIST, a cell file or a height map, with --find pressure); on a "
                               "lattice each level's caps touch together");
     }
-    // A drop or pitch window moves or presses the searched level: a share of its caps, or of
-    // every cap (another level's alone would rise as the searched one sinks).
-    if (r.is_share() && !by_pressure && r.share_level >= 0 && r.share_level != out.texture->level) {
-      const std::string level = std::to_string(out.texture->level);
-      throw input::UsageError(
-          "--require '" + r.text + "': the window of " + (by_l ? "the pitch" : "a level's drop") +
-          " takes a share of the searched level's caps ('90% of level " + level + " within 1min at 30kPa'; level " +
-          level + " here" + (by_l || a.from_file() ? ", --level L for another" : a.find == "dh" ? ", --find dh2 for level 2's" : "") +
-          ") or of every cap ('at most 5% of caps at 5kPa'); another level's is read off the load curve with --find pressure");
-    }
   }
   // A scattered supercell, a cell file or a height map under --find pressure: the load curve
   // of its every cap (surface's, to full contact, cached), read for each requirement's share
@@ -901,10 +908,14 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     RequirementBound b;
     b.requirement = r;
     const bool touch = r.kind == Requirement::Kind::touch_by;
+    // A share of another level's caps than the searched one's (in a drop or pitch window):
+    // they touch the sooner the deeper the searched level lies, so its drop is the least at
+    // which they have (TextureGap), a lower edge where the level's own is an upper one.
+    const bool reversed = texture && texture->reversed(r);
     // dh: touching by t is dh <= the gap closed by t, an upper edge; l and the pressure: the
     // gap grows with each (more load on each tall punch), so touching is l (or p) >= the one
     // that closes dh.
-    b.upper = searched ? !touch : touch;
+    b.upper = searched ? !touch : touch != reversed;
     b.edge = b.upper ? kInf : -kInf;
     const double lo = out.search_lo, hi = out.search_hi;
     // A bound less the quantity's own tolerance: dh's shifts it; for a searched quantity,
@@ -912,7 +923,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     // end where the gap never reaches dh in it; none where it does at the start), then its
     // tolerance moves it inward.
     const auto edge_of = [&](const DesignBound& d) {
-      if (!searched) return touch ? d.value - own.width : d.value + own.width;
+      if (!searched) return b.upper ? d.value - own.width : d.value + own.width;
       const double e = touch ? d.value : d.value <= lo ? -kInf : std::min(d.value, hi);
       if (!std::isfinite(e)) return e;
       if (b.upper) return own.relative ? e / (1.0 + own.width) : e - own.width;
@@ -920,7 +931,8 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
     };
     const auto take = [&](DesignBound d) {
       d.edge = edge_of(d);
-      if (b.upper ? d.edge < b.edge : d.edge > b.edge) {
+      // (The first corner binds where every one holds everywhere or nowhere: +-infinity.)
+      if (b.bounds.empty() || (b.upper ? d.edge < b.edge : d.edge > b.edge)) {
         b.edge = d.edge;
         b.binding = d;
       }
@@ -973,14 +985,20 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
             }
             // --find l (pressure): at each dh of the box, the pitch (pressure) whose gap by the
             // requirement's time is that dh, by bisection in its log over the range (the gap
-            // grows with it; checked).
-            const double g_lo = gap_at(lo), g_hi = gap_at(hi);
+            // grows with it; checked). Reversed, the least drop at which another level's share
+            // touches falls as the pitch grows: its negative is the gap, and -dh the drop.
+            const auto closing = [&](double x) {
+              const double g = gap_at(x);
+              return reversed ? -g : g;
+            };
+            const double g_lo = closing(lo), g_hi = closing(hi);
             if (!(g_hi >= g_lo)) {
               out.notes.push_back("'" + r.text + "': the gap closed by its time shrinks from " + a.find + " = " +
                                   model::number_text(lo, 4) + " to " + model::number_text(hi, 4) +
                                   " here; the window assumes it grows with " + a.find);
             }
-            for (const double dh : sides(dh0, box.dh, true)) {
+            for (const double drop : sides(dh0, box.dh, true)) {
+              const double dh = reversed ? -drop : drop;
               double value;
               if (g_lo >= dh) {
                 value = lo;  // touches by then over the whole range
@@ -992,8 +1010,8 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                 // where bisection to 1e-15 took 50.
                 // (A share no drop from 0 brings down, -infinity, is below any dh.)
                 const auto f = [&](double y) {
-                  const double gap = gap_at(std::exp(y));
-                  return gap == -kInf ? -1.0 - dh : gap - dh;
+                  const double gap = closing(std::exp(y));
+                  return gap == -kInf ? -1.0 - std::abs(dh) : gap - dh;
                 };
                 value = std::exp(model::brent(f, std::log(lo), std::log(hi), g_lo - dh, g_hi - dh, kTextureSearchTolerance).x);
               } else {
@@ -1004,7 +1022,7 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                 }
                 value = std::exp(b_);  // the least of the range whose gap reaches dh (to 1e-15)
               }
-              take(DesignBound{T, p, by_l ? lo : l, Cs[c], dh, value});
+              take(DesignBound{T, p, by_l ? lo : l, Cs[c], drop, value});
             }
           }
         }
@@ -1085,20 +1103,31 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
                           value(out.search_lo) + " to " + value(out.search_hi) + " at every corner: widen " +
                           range_option + " or change dh");
     }
-    if (texture && texture->unreachable(r.text)) {
-      out.notes.push_back("'" + r.text + "': at some corner more caps than it allows touch with level " +
-                          std::to_string(out.texture->level) + " at its deepest (the other levels' caps alone reach " +
-                          "the share): no drop of the level meets it there");
+    // (A pitch window's search meets drops past reach at pitches outside its window: that
+    // is the window's edge, not a note.)
+    if (texture && !searched && texture->unreachable(r.text)) {
+      out.notes.push_back("'" + r.text + "': at some corner " +
+                          (!reversed ? "more caps than it allows touch"
+                           : touch   ? "fewer of level " + std::to_string(r.share_level) + "'s caps than it asks touch even"
+                                     : "more of level " + std::to_string(r.share_level) + "'s caps than it allows touch even") +
+                          " with level " + std::to_string(out.texture->level) + (reversed && !touch ? "'s tallest cap at the top" : " at its deepest") +
+                          (reversed ? "" : " (the other levels' caps alone reach the share)") +
+                          ": no drop of the level meets it there");
     }
-    if (texture && texture->reached(r.text)) {
+    if (texture && !searched && texture->reached(r.text)) {
       out.notes.push_back("'" + r.text + "': at some corner the caps it asks for touch with level " +
                           std::to_string(out.texture->level) + " at its deepest (the other levels' caps reach the " +
                           "share): its bound there is the deepest drop at which the level is still a cap of its own");
     }
     if (texture && texture->unsteady(r.text)) {
-      out.notes.push_back("'" + r.text + "': the count of every cap in contact rose somewhere as level " +
-                          std::to_string(out.texture->level) + " sank (its own caps touch later, the others sooner): " +
-                          "the edge is where the count crosses the share, and drops beyond it may meet the requirement "
+      const std::string level = std::to_string(out.texture->level);
+      out.notes.push_back("'" + r.text + "': " +
+                          (reversed ? "the count of level " + std::to_string(r.share_level) + "'s caps in contact fell somewhere "
+                                      "as level " + level + " sank (it carries less, but the others' caps take the load "
+                                      "unevenly)"
+                                    : "the count of every cap in contact rose somewhere as level " + level +
+                                          " sank (its own caps touch later, the others sooner)") +
+                          ": the edge is where the count crosses the share, and drops beyond it may meet the requirement "
                           "too; `surface` at a few drops says where");
     }
     // Point's advisories at the edge: the binding corner with the searched quantity at its

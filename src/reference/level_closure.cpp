@@ -118,14 +118,33 @@ void LevelClosure::prepare_moves() {
 }
 
 LevelClosed LevelClosure::at(double X, std::size_t caps, bool every_level) {
-  const std::size_t counted = every_level ? geometry_.sites.size() : caps_;
+  return counting(X, caps, every_level ? kEveryLevel : level_);
+}
+
+LevelClosed LevelClosure::counting(double X, std::size_t caps, int level) {
+  const bool every_level = level == kEveryLevel;
+  // Another level's caps: more of them touch the deeper this level lies (it carries less).
+  const bool rising = !every_level && level != level_;
+  std::size_t counted = 0;
+  for (std::size_t k = 0; k < geometry_.sites.size(); ++k) counted += every_level || in_level(geometry_, level, k) ? 1 : 0;
+  if (rising && (level < 1 || level >= geometry_.levels())) {
+    throw std::invalid_argument("level closure: level " + std::to_string(level) + " is not one of the geometry's levels 1 to " +
+                                std::to_string(geometry_.levels() - 1) + " (level 0, the tallest, is the reference)");
+  }
   if (caps < 1 || caps > counted) {
     throw std::invalid_argument("level closure: " + std::to_string(caps) + " caps of " +
-                                (every_level ? std::string("the cell") : "level " + std::to_string(level_)) + ", which has " +
+                                (every_level ? std::string("the cell") : "level " + std::to_string(level)) + ", which has " +
                                 std::to_string(counted));
   }
-  if ((caps == 1 && !every_level) || X == 0.0) return at(X);
-  if (!(X > 0.0)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not >= 0");
+  if (!(X >= 0.0)) throw std::invalid_argument("level closure: the load X = " + std::to_string(X) + " is not >= 0");
+  if (rising && X == 0.0) {  // (nothing but the tallest tips touches at no load)
+    LevelClosed out;
+    out.status.converged = true;
+    out.rising = true;
+    out.drop = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  if ((caps == 1 && level == level_) || X == 0.0) return at(X);
   LevelClosed out;
   out.status.converged = true;
   const std::size_t n = cell_.grid.size();
@@ -158,7 +177,7 @@ LevelClosed LevelClosure::at(double X, std::size_t caps, bool every_level) {
     Trial t;
     gaps.clear();
     for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      if (!every_level && !in_level(geometry_, level_, k)) continue;
+      if (!every_level && !in_level(geometry_, level, k)) continue;
       if (cell_.touched(k, pressure_)) {
         ++t.count;
       } else {
@@ -174,14 +193,46 @@ LevelClosed LevelClosure::at(double X, std::size_t caps, bool every_level) {
     tried.emplace_back(drop, t.count);
     return t;
   };
-  // Every trial's drop and count: whether the count fell steadily with the drop.
-  const auto steady = [&tried] {
+  // Every trial's drop and count: whether the count fell (rose, for another level's caps)
+  // steadily with the drop.
+  const auto steady = [&tried, rising] {
     std::sort(tried.begin(), tried.end());
     for (std::size_t k = 1; k < tried.size(); ++k) {
-      if (tried[k].second > tried[k - 1].second) return false;
+      if (rising ? tried[k].second < tried[k - 1].second : tried[k].second > tried[k - 1].second) return false;
     }
     return true;
   };
+  if (rising) {
+    // The least drop at which `caps` of the other level's caps have touched: -infinity where
+    // they have with this level at the top (at every drop it can have), +infinity where not
+    // even at its deepest; between, an aimed bisection in x = drop (the deciding cap's gap
+    // smooth on the shallower side).
+    out.rising = true;
+    const Trial at_top = trial_at(0.0);
+    if (at_top.count >= caps) {
+      out.drop = -std::numeric_limits<double>::infinity();
+      out.steady = steady();
+      return out;
+    }
+    if (trial_at(deepest).count < caps) {
+      out.drop = std::numeric_limits<double>::infinity();
+      out.steady = steady();
+      return out;
+    }
+    TouchdownSearch search(0.0, deepest, 0.0, at_top.gap, kDropTolerance * deepest_);
+    while (search.open()) {
+      const double drop = search.trial();
+      const Trial t = trial_at(drop);
+      if (t.count >= caps) {
+        search.touched(drop);
+      } else {
+        search.untouched(drop, t.gap);
+      }
+    }
+    out.drop = 0.5 * (search.lo() + search.hi());
+    out.steady = steady();
+    return out;
+  }
   const Trial at_deepest = trial_at(deepest);
   if (at_deepest.count >= caps) {
     out.every_drop = true;

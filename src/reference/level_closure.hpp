@@ -33,8 +33,11 @@ struct LevelClosed {
   ContactStatus status;  ///< the solve's (status.converged: it met its tolerance)
   int solves = 0;        ///< contact solves made for it
   /// at(X, caps): the caps in contact fell as the drop grew at every trial (always for the
-  /// level's own caps; see at()).
+  /// level's own caps; see at()); counting() another level's: rose.
   bool steady = true;
+  /// counting() another level's caps: `drop` is the least at which they have touched (at
+  /// least the caps asked), not the most.
+  bool rising = false;
 };
 
 /// One level of one geometry on one grid, solved at any load. The level's sites are set
@@ -66,6 +69,18 @@ class LevelClosure {
   /// as the cell's tallest tip); every_drop where they touch at the deepest. Throws
   /// std::invalid_argument for `caps` outside 1 to the caps counted.
   LevelClosed at(double X, std::size_t caps, bool every_level = false);
+
+  /// at(X, caps) counting the caps of `level`: this level's (as at()), every cap of the
+  /// cell (kEveryLevel, as at()'s every_level) or another level's. Another level's caps
+  /// touch the sooner the deeper this level lies (it carries less of the load): the answer
+  /// is then `rising`, the least drop of this level's tallest cap at which `caps` of that
+  /// level's have touched at load X, to kDropTolerance of the deepest drop, by the same
+  /// aimed bisection: -infinity where they have with this level's tallest cap at the top (so
+  /// at every drop), +infinity where they have not even at its deepest; `steady` says whether the count rose steadily with the
+  /// drop at every trial. Throws std::invalid_argument for a level the cell lacks or `caps`
+  /// outside 1 to the caps counted.
+  static constexpr int kEveryLevel = -1;
+  LevelClosed counting(double X, std::size_t caps, int level);
 
   /// The cell's state at load X with the level's tallest cap at `drop` (0 to deepest(), the
   /// others at their offsets below it): each level's contact area and share of its caps

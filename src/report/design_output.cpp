@@ -271,11 +271,20 @@ void write_design_table(std::ostream& out, const engine::DesignResult& d) {
         << (q == "l" ? "" : " (" + drop_name(d) + " = " + model::number_text(level_drop(d) * L.per, 4) + " " + L.unit + ")") << "\n";
   }
   out << "\n";
-  // dh: touching by t is dh <= (closed), never is dh > (open); l: touching is l >=, never l <.
+  // dh: touching by t is dh <= (closed), never is dh > (open); another level's share the other
+  // way round (touching dh >=, never dh <); l: touching is l >=, never l <.
   const auto sign = [&](const engine::RequirementBound& b) {
     const bool touch = b.requirement.kind == engine::Requirement::Kind::touch_by;
-    return finds_drop(d) ? (touch ? "<= " : "> ") : (touch ? ">= " : "< ");
+    return b.upper ? (touch ? "<= " : "< ") : (touch ? ">= " : "> ");
   };
+  // Whether a drop's window edge is closed: where a touch binds it (the searched level's own
+  // upper edge, another level's share's lower one), and at 0.
+  const auto closed_by_touch = [&](bool upper, double edge) {
+    return std::any_of(d.bounds.begin(), d.bounds.end(), [&](const engine::RequirementBound& b) {
+      return b.upper == upper && b.edge == edge && b.requirement.kind == engine::Requirement::Kind::touch_by;
+    });
+  };
+  const bool lower_closed = !finds_drop(d) || d.lower == 0 || closed_by_touch(false, d.lower);
   for (const engine::RequirementBound& b : d.bounds) {
     const bool touch = b.requirement.kind == engine::Requirement::Kind::touch_by;
     out << "  " << b.requirement.text << ": " << q << " " << sign(b)
@@ -289,11 +298,11 @@ void write_design_table(std::ostream& out, const engine::DesignResult& d) {
     out << "no design meets this: the requirements leave " << q << " between " << len(d.lower) << " and "
         << len(d.upper) << ", an empty window; " << miss_text(d, Q) << "\n";
   } else if (std::isinf(d.upper)) {
-    out << "window: " << q << " " << (d.lower > 0 ? "> " : ">= ") << len(d.lower) << " (no upper edge)\n";
+    out << "window: " << q << " " << (lower_closed ? ">= " : "> ") << len(d.lower) << " (no upper edge)\n";
   } else {
-    const bool open_low = finds_drop(d) && d.lower > 0;
+    const bool open_low = !lower_closed;
     out << "window: " << len(d.lower) << (open_low ? " < " : " <= ") << q
-        << (!finds_drop(d) && d.upper < d.search_hi ? " < " : " <= ")
+        << ((finds_drop(d) ? !closed_by_touch(true, d.upper) : d.upper < d.search_hi) ? " < " : " <= ")
         << len(d.upper) << "; centre " << len(0.5 * (d.lower + d.upper)) << ", margin +- "
         << len(0.5 * (d.upper - d.lower)) << (tolerance ? " beyond the tolerance" : "") << "\n";
     if (!finds_drop(d) && (d.lower == d.search_lo || d.upper == d.search_hi)) {

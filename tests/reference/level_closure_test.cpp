@@ -162,6 +162,95 @@ TEST(LevelClosure, closes_a_share_of_a_scattered_levels_caps) {
   }
 }
 
+// A share of another level's caps (LevelClosure::counting): on the hexagonal three-level
+// supercell, the curve's k-th least touchdown of level 2's caps (k = 1 to all) is the load
+// at which k of them have touched with level 1 where it is (in contact by then), and there
+// the least drop of level 1's tallest cap at which k of level 2's caps have touched is level
+// 1's own. The two methods differ by what the curve's 1e-7 of X* moves that drop: the
+// drop's own slope in X, measured from the closures 1e-4 of X either side (which must lie
+// past and short of level 1's drop: more load, less sinking needed), times 1e-3, twice over,
+// and 1e-8 of the drop for the solves. Level 0 (the reference) and counts outside 1 to the
+// level's caps are refused.
+TEST(LevelClosure, closes_a_share_of_another_levels_caps) {
+  int checked = 0;
+  for (const Case& c : kScattered) {
+    const Scattered made = scattered(c);
+    const model::CellGeometry& g = made.geometry;
+    if (g.levels() < 3) continue;
+    const model::LoadCurve& curve = made.curve;
+    {
+      const int level = 1, other = 2;
+      std::vector<double> touchdowns;
+      double least = 1e300;
+      for (std::size_t k = 0; k < g.sites.size(); ++k) {
+        if (g.sites[k].level == other) touchdowns.push_back(curve.site_touchdown[k]);
+        if (g.sites[k].level == level) least = std::min(least, g.sites[k].drop);
+      }
+      std::sort(touchdowns.begin(), touchdowns.end());
+      reference::LevelClosure closure(g, level, made.grid);
+      for (std::size_t caps = 1; caps <= touchdowns.size(); ++caps) {
+        const double X = touchdowns[caps - 1];
+        ASSERT_TRUE(std::isfinite(X)) << "cap " << caps << " of level " << other << " touches on the curve";
+        const reference::LevelClosed closed = closure.counting(X, caps, other);
+        const double past = closure.counting(X * (1.0 + 1e-4), caps, other).drop;
+        const double short_of = closure.counting(X * (1.0 - 1e-4), caps, other).drop;
+        const double bound = 2.0 * 1e-3 * 0.5 * (short_of - past) + 1e-8 * least;
+        std::printf("hexagonal K = 2, level %d's drop, %zu of level %d's %zu caps: X = %.9g, closure %.9g against "
+                    "the level's tallest cap %.9g (%.1e; bound %.1e) in %d solves\n",
+                    level, caps, other, touchdowns.size(), X, closed.drop, least, closed.drop / least - 1.0,
+                    bound / least, closed.solves);
+        EXPECT_TRUE(closed.rising);
+        EXPECT_NEAR(closed.drop, least, bound) << "level " << level << ", " << caps << " caps of level " << other;
+        EXPECT_LT(past, least);
+        EXPECT_GT(short_of, least);
+        ++checked;
+      }
+      EXPECT_THROW(closure.counting(0.01, 0, other), std::invalid_argument);
+      EXPECT_THROW(closure.counting(0.01, touchdowns.size() + 1, other), std::invalid_argument);
+      EXPECT_THROW(closure.counting(0.01, 1, 0), std::invalid_argument);
+    }
+    // Level 2's drop, counting level 1's caps: at the curve's k-th touchdown of level 1,
+    // level 2 (deeper) has not touched, and level 1's count is the same at any drop of level
+    // 2 until it rises into contact and takes load off level 1: the least drop at which k of
+    // level 1's caps have touched is where level 2 starts to carry, above its own. The curve
+    // of the supercell with level 2 moved there (each cap keeping its offset) has level 1's
+    // k-th touchdown at the same X: a cap in contact carries load as the 3/2 power of its
+    // depth, so X moves little with that drop, and the curve finds X* to 1e-7 (1e-5 here).
+    reference::LevelClosure closure(g, 2, made.grid);
+    std::vector<double> level_1;
+    double least_2 = 1e300;
+    for (std::size_t k = 0; k < g.sites.size(); ++k) {
+      if (g.sites[k].level == 1) level_1.push_back(curve.site_touchdown[k]);
+      if (g.sites[k].level == 2) least_2 = std::min(least_2, g.sites[k].drop);
+    }
+    std::sort(level_1.begin(), level_1.end());
+    for (const std::size_t caps : {std::size_t{1}, std::size_t{4}, level_1.size()}) {
+      const double X = level_1[caps - 1];
+      const reference::LevelClosed closed = closure.counting(X, caps, 1);
+      ASSERT_TRUE(closed.rising && std::isfinite(closed.drop));
+      EXPECT_LT(closed.drop, least_2);
+      model::CellGeometry moved = g;
+      for (model::Site& site : moved.sites) {
+        if (site.level == 2) site.drop = closed.drop + (site.drop - least_2);
+      }
+      reference::LoadCurveOptions options;
+      options.X_top = 1.0;
+      const model::LoadCurve again = reference::build_load_curve(moved, reference::make_cell(moved, made.grid), options);
+      std::vector<double> touched;
+      for (std::size_t k = 0; k < moved.sites.size(); ++k) {
+        if (moved.sites[k].level == 1) touched.push_back(again.site_touchdown[k]);
+      }
+      std::sort(touched.begin(), touched.end());
+      std::printf("hexagonal K = 2, level 2's drop, %zu of level 1's caps at X = %.9g: level 2 at %.9g (its own %.9g); "
+                  "the curve there has level 1's %zu-th touchdown at %.9g (%.1e)\n",
+                  caps, X, closed.drop, least_2, caps, touched[caps - 1], touched[caps - 1] / X - 1.0);
+      EXPECT_NEAR(touched[caps - 1], X, 1e-5 * X) << caps << " caps";
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 8 + 3);
+}
+
 // Past full contact of the other levels, every node is pressed: the level touches at any
 // drop it can have, and the closure says so with the deepest (where the tall caps' own
 // surfaces reach its tips: on the square lattice's centre, two tall caps' C r^2 at r = l/sqrt(2)
