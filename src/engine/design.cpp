@@ -33,6 +33,7 @@
 #include "model/surface/small_spot_touchdown.hpp"
 #include "reference/level_closure.hpp"
 #include "reference/periodic_grid.hpp"
+#include "sweep/reproducible_fft.hpp"
 
 namespace po = boost::program_options;
 
@@ -752,6 +753,9 @@ DesignResult design_pass(const DesignArgs& a, int nodes) {
   std::optional<TextureGap> texture;
   double dh2 = kNaN;
   if (a.texture()) {
+    // The closures' contact solves on FFTW plans chosen without timing them, as `surface`'s
+    // curves: the same edges, to the bit, in every run (timed plans round differently).
+    sweep::use_reproducible_fft_plans();
     DesignTexture& t = out.texture.emplace();
     t.lattice = a.lattice.value_or("square");
     if (a.dh2) dh2 = read_drop("dh2", *a.dh2, out.inputs.scales);

@@ -322,6 +322,19 @@ def test_a_scattered_moulds_pitch_window_from_shares_of_another_level():
     assert level_shares(texture, 10, "1s", 2, l=upper * (1 + 1e-4)) == pytest.approx(3 / 8)
 
 
+def test_a_texture_design_gives_the_same_bits_in_every_run():
+    """The closures' contact solves plan their transforms without timing them (as `surface`'s
+    curves do), so a texture's design is the same bytes run after run: with timed plans
+    (FFTW_MEASURE) three runs of this share design gave three different edges in their last
+    bits."""
+    texture = [a for a in SCATTERED if a not in ("--dh", "2um")]
+    args = ["design", "--material", TRUTH, *MOULD, *texture, "--temperature", 20, "--require",
+            "90% of level 1 within 1min at 20kPa", "--require", "at most 5% of level 1 within 1s at 5kPa", "--format", "json"]
+    runs = [cli(*args) for _ in range(3)]
+    assert all(r.returncode == 0 for r in runs), runs[0].stderr
+    assert runs[0].stdout == runs[1].stdout == runs[2].stdout
+
+
 def test_texture_edges_carry_the_advisories_surface_gives_there():
     """A texture's edge carries `surface`'s advisories at its binding corner in the long term:
     the widest caps' contact radius sqrt(area / (pi caps)) against the paraboloid's bound.
