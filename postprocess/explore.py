@@ -362,8 +362,9 @@ def payload(ds, x: str, y: str, steps: dict[str, int], map_path: str) -> dict:
 
 
 def is_surface_map(path: str) -> bool:
-    """Whether `path` is a map `punchsweep surface-map` wrote (regime over a level axis, the
-    caps touched over time), not a regime map."""
+    """Whether `path` is a map `punchsweep surface-map` wrote (regime over a level axis, each
+    level's touchdown load; with full quantities the caps touched over time), not a regime
+    map."""
     import os
 
     import h5py
@@ -371,7 +372,7 @@ def is_surface_map(path: str) -> bool:
         return False
     try:
         with h5py.File(path, "r") as f:
-            return "touched" in f and "regime" in f and "level" in f
+            return "regime" in f and "level" in f and "X_star" in f
     except OSError:
         return False
 
@@ -439,11 +440,11 @@ def surface_arrays(ds) -> list[tuple[str, str, str]]:
     over (some of) the map's axes, as the file declares them: the flags (regime; with a box of
     tolerances regime_low, regime_high) and the reals (t*, X*; t_star_low, t_star_high), so
     that one the command gains reaches the page unchanged; and the series over time (the caps
-    touched, the area fraction)."""
+    touched, the area fraction; a map of regime quantities has none)."""
     names = list(ds["regime"].dims)
     reals, flag_names = point_variables(ds, over=lambda dims: "level" in dims and set(dims) <= set(names))
     return ([("flags", v, "<i1") for v in flag_names] + [("variables", v, "<f8") for v in reals]
-            + [("series", v, "<f8") for v in ("touched", "area_fraction")])
+            + [("series", v, "<f8") for v in ("touched", "area_fraction") if v in ds])
 
 
 def surface_array(ds, kind: str, name: str) -> np.ndarray:
@@ -475,7 +476,7 @@ def surface_estimate_mb(ds, steps: dict[str, int]) -> float:
     sel = {n: slice(None, None, k) for n, k in steps.items()}
     thinned = ds.isel(sel) if sel else ds
     names = tuple(thinned["regime"].dims)
-    valid = thinned["valid"].values
+    valid = thinned["valid"].values if "valid" in thinned else np.empty(0)
     trusted = float(np.mean(valid == 0)) if valid.size else 1.0
     arrays = surface_arrays(thinned)
     stored = stored_bytes(ds, [name for _, name, _ in arrays])
@@ -537,7 +538,7 @@ def surface_payload(ds, x: str | None, y: str | None, map_path: str, steps: dict
         "time_unit": attr_text(ds.attrs.get("time_unit", "T_eps")),
         "axes": axes, "x": x, "y": y, "shape": [len(a["values"]) for a in axes],
         "variables": parts["variables"], "flags": parts["flags"], "series": parts["series"],
-        "time": [float(t) for t in ds["t"].values],
+        "time": [float(t) for t in ds["t"].values] if parts["series"] else [],
         "colours": pm.REGIME_COLOURS, "coarsened": {n: k for n, k in steps.items() if k > 1},
         "initial": {"level": 1 if ds.sizes["level"] > 1 else 0},
         "surface": {"texture": {k: v for k, v in texture.items() if k != "times"},

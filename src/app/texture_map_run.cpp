@@ -121,7 +121,7 @@ void print_dry_run(const engine::TextureMapPlan& plan, const TextureMapJob& job,
     }
     seconds += mine;
     largest = std::max(largest, mine);
-    reading += engine::estimated_reading_seconds(P, cost.levels, plan.times());
+    reading += engine::estimated_reading_seconds(P, cost.levels, plan.times(), map.full);
     if (G <= kListed) {
       out << "  geometry " << g + 1 << " (" << plan.describe(g) << "): " << what.str();
       if (mine > 0.0) out << "; about " << engine::seconds_text(mine);

@@ -56,6 +56,8 @@ constexpr const char* kCheckSample = "check-sample";
 constexpr const char* kCheckSeed = "check-seed";
 /// The target values a tile of the map holds (load points x snapshot times), and its default.
 constexpr const char* kChunk = "chunk";
+/// What the map stores: regime (each level's touch) or full (and what the times read).
+constexpr const char* kQuantities = "quantities";
 constexpr std::size_t kDefaultChunk = 4096;
 
 
@@ -120,6 +122,8 @@ struct MapInputs {
   std::uint64_t check_seed = 1;
   /// --chunk N: the target values of a tile (load points x snapshot times).
   std::size_t chunk = kDefaultChunk;
+  /// --quantities regime|full.
+  bool full = true;
   /// The material (or law) the keywords name: its law spec is what the load points build.
   std::shared_ptr<const input::PointMaterial> material;
   const model::CreepLawSpec* spec = nullptr;  ///< material->spec
@@ -161,6 +165,14 @@ MapInputs read_map_inputs(const input::Keywords& keywords) {
       const std::uint64_t n = input::parse_seed(value, std::string("--") + key);
       if (key == kCheckSample && n == 0) throw input::UsageError("--check-sample = 0: valid: at least 1 load point");
       (key == kCheckSample ? in.check_sample : in.check_seed) = n;
+      continue;
+    }
+    if (key == kQuantities) {
+      if (value != "regime" && value != "full") {
+        throw input::UsageError("--quantities = '" + value + "': valid: regime (each level's touch) or full (and what the "
+                                "snapshot times read: caps and areas in contact, each level's load)");
+      }
+      in.full = value == "full";
       continue;
     }
     if (key == kChunk) {
@@ -406,6 +418,7 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
   map.texture = json_keywords(in.texture);
   map.scatter_kind = in.scatter_kind;
   map.tolerance = in.tolerance_text;
+  map.full = in.full;
   map.time_unit = in.material->time_unit();
   if (const std::string* m = find(keywords, "material")) map.material = *m;
   if (const std::string* R = find(keywords, "R")) {
@@ -453,7 +466,7 @@ TextureMapPlan::TextureMapPlan(const input::Keywords& keywords)
   // Tiles of whole rows of the first load axis (the pressure), as many as hold about
   // `chunk` values of a quantity over load points and times, one row at the least.
   times_ = times;
-  const std::size_t row_values = map.points_per_row() * std::max<std::size_t>(times, 1);
+  const std::size_t row_values = map.points_per_row() * (map.full ? std::max<std::size_t>(times, 1) : 1);
   map.tile_rows = std::clamp<std::size_t>(in.chunk / row_values, 1, map.load.front().values.size());
 }
 
@@ -655,6 +668,8 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t u) const {
         block[kRegimeHigh][p * L + level] = static_cast<std::int8_t>(r.regime_high);
       }
     }
+    // What the snapshot times read (a map of full quantities).
+    if (!map.full) continue;
     const double X0 = load.initial();
     for (std::size_t k = 0; k < T; ++k) {
       const double t = block.times[k];
@@ -736,7 +751,8 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t u) const {
   return values;
 }
 
-double estimated_reading_seconds(std::size_t points, int levels, std::size_t times) {
+double estimated_reading_seconds(std::size_t points, int levels, std::size_t times, bool full) {
+  if (!full) return static_cast<double>(points) * (5e-6 + 0.7e-6 * levels);
   return static_cast<double>(points) * levels * (19e-6 + 16e-6 * static_cast<double>(times));
 }
 
@@ -993,6 +1009,9 @@ po::options_description texture_map_options(const input::PointMaterial& material
        "step the same cell in time (surface --check) at K load points of the map drawn at random, into "
        "check_regime, check_t_star, check_area_fraction")
       ("check-seed", po::value<std::string>()->value_name("S")->default_value("1"), "the seed of --check-sample's draw")
+      ("quantities", po::value<std::string>()->value_name("WHAT"),
+       "regime: each level's touch alone (t_star, regime, X_star, resolved; reads in a fraction of the time); full (the "
+       "default): also what the snapshot times read (caps and areas in contact, each level's load, the contact radius)")
       ("chunk", po::value<std::string>()->value_name("N"),
        "the target values of a tile, the unit of work, of the journal and of an HDF5 chunk: load points x snapshot "
        "times, in whole rows of the pressure axis (at least one); 4096 by default");

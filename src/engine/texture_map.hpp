@@ -54,10 +54,14 @@ struct SurfaceMap {
   std::array<Values, map::kTextureQuantityCount> values;
   std::vector<double>& operator[](std::size_t q) { return values[q]; }
   const std::vector<double>& operator[](std::size_t q) const { return values[q]; }
+  /// Whether the map stores what the snapshot times read (`quantities = full`, the
+  /// default) or each level's touch alone (`regime`).
+  bool full = true;
   /// Whether quantity q is stored (a tolerance's only with one).
   bool stores(std::size_t q) const {
     switch (map::kTextureQuantities[q].stored) {
       case map::TextureStored::always: return true;
+      case map::TextureStored::full: return full;
       case map::TextureStored::tolerance: return !tolerance.empty();
       case map::TextureStored::check: return check_sample > 0;
     }
@@ -167,10 +171,12 @@ class TextureMapPlan {
 };
 
 /// The seconds `points` load points of a geometry of `levels` levels take to read off its
-/// curve at `times` snapshot times on one core of this machine (each level's touch, areas
-/// and load by its history): levels x (19 + 16 times) us a load point, fitted to maps of
-/// 20,000 load points of two and three levels at 1, 3 and 10 times (each within 25%).
-double estimated_reading_seconds(std::size_t points, int levels, std::size_t times);
+/// curve at `times` snapshot times on one core of this machine: with full quantities
+/// (each level's touch, areas and load by its history) levels x (19 + 16 times) us a load
+/// point, fitted to maps of 20,000 load points of two and three levels at 1, 3 and 10 times
+/// (each within 25%); each level's touch alone (`full` false) 5 + 0.7 levels us, fitted to
+/// maps of 100,000 load points of two and three levels (0.70-0.79 s a run, within 10%).
+double estimated_reading_seconds(std::size_t points, int levels, std::size_t times, bool full);
 
 /// What a tile's curve cost: seconds, and "built", "from the cache", "from the periodic
 /// tables" or held from the rank's tile before (`held`: it cost nothing).

@@ -108,6 +108,8 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
       set(command_line, "run." + option.substr(2), a.find('=') == std::string::npos ? "true" : value_of(k, option));
     } else if (option == "--chunk") {
       set(command_line, "run.chunk", value_of(k, option));
+    } else if (option == "--quantities") {
+      set(command_line, "output.quantities", value_of(k, option));
     } else if (a == "--dry-run") {
       out.dry_run = true;
     } else if (option.rfind("--", 0) == 0 && option.find('.') != std::string::npos) {
@@ -137,11 +139,11 @@ TextureSweepOptions parse_texture_sweep_options(const std::vector<std::string>& 
     if (section == "output") {
       if (name == "file") {
         out.output = value;
-      } else if (name == "tolerance") {
-        out.keywords.emplace_back("tolerance", value);
+      } else if (name == "tolerance" || name == "quantities") {
+        out.keywords.emplace_back(name, value);
         out.origins.push_back(key);
       } else {
-        throw UsageError("unknown key " + key + " (keys of [output] for a texture's map: file, tolerance)");
+        throw UsageError("unknown key " + key + " (keys of [output] for a texture's map: file, tolerance, quantities)");
       }
     } else if (section == "run") {
       if (name == "resume") {
@@ -209,7 +211,8 @@ const char* const kTextureSweepHelp =
     "pixel, supercell, scatter, seed, grid, curve, ...); [grid] l, dh, dh2, pbar or pressure, T or\n"
     "temperature, ramp_time; [model] material, R, s, C, load_table; [time] times; [reference]\n"
     "sample (K load points stepped in time on the same cell, as surface --check), seed; [output]\n"
-    "file, tolerance; [run] resume, overwrite, quiet, chunk (4096). --dry-run: each curve's grid, memory,\n"
+    "file, tolerance, quantities (regime or full); [run] resume, overwrite, quiet, chunk (4096).\n"
+    "--dry-run: each curve's grid, memory,\n"
     "whether the cache holds it and an estimate of its time on this machine; nothing is run.\n";
 
 }  // namespace punchsweep::input

@@ -31,9 +31,12 @@ enum class TextureFlags {
   yes_no,                  ///< 0 or 1
 };
 
-/// When a texture quantity is stored: always, with a box of tolerances, or with a sample
-/// of load points checked by time stepping (`surface --check` at each).
-enum class TextureStored { always, tolerance, check };
+/// When a texture quantity is stored: always, in a map of full quantities only (what the
+/// snapshot times read: caps and areas in contact, each level's load, the contact radius
+/// by the last time; `quantities = regime` leaves them out, and their cost), with a box of
+/// tolerances, or with a sample of load points checked by time stepping (`surface --check`
+/// at each).
+enum class TextureStored { always, full, tolerance, check };
 
 struct TextureQuantitySpec {
   std::string_view name;
@@ -61,20 +64,20 @@ inline constexpr std::array<TextureQuantitySpec, 22> kTextureQuantities{{
      "each level's touchdown load (creep-weighted; +inf past the curve's end, which no load point reaches)"},
     {"resolved", TextureExtent::geometry_level, TextureFlags::yes_no, "",
      "whether the curve resolves the level's touchdown (1) or it lies below its resolution (0)"},
-    {"touched", TextureExtent::load_time, TextureFlags::none, "1", "share of the caps whose tip has touched"},
-    {"area_fraction", TextureExtent::load_time, TextureFlags::none, "1", "contact area over the cell's"},
+    {"touched", TextureExtent::load_time, TextureFlags::none, "1", "share of the caps whose tip has touched", TextureStored::full},
+    {"area_fraction", TextureExtent::load_time, TextureFlags::none, "1", "contact area over the cell's", TextureStored::full},
     {"valid", TextureExtent::load_time, TextureFlags::surface_validity, "",
-     "whether touched and area_fraction may be trusted at the time"},
+     "whether touched and area_fraction may be trusted at the time", TextureStored::full},
     {"level_touched", TextureExtent::load_time_level, TextureFlags::none, "1",
-     "share of each level's caps whose tip has touched"},
-    {"level_area", TextureExtent::load_time_level, TextureFlags::none, "R^2", "each level's contact area in the cell"},
+     "share of each level's caps whose tip has touched", TextureStored::full},
+    {"level_area", TextureExtent::load_time_level, TextureFlags::none, "R^2", "each level's contact area in the cell", TextureStored::full},
     {"level_load", TextureExtent::load_time_level, TextureFlags::none, "R^2 E0/(1-nu^2)",
-     "the load each level carries in the cell, P_L(t); NaN where its history integral would cost too much"},
+     "the load each level carries in the cell, P_L(t); NaN where its history integral would cost too much", TextureStored::full},
     {"contact_radius", TextureExtent::load_level, TextureFlags::none, "R",
-     "each level's contact radius by the last time: sqrt(area / (pi caps in contact)), 0 where none touches"},
+     "each level's contact radius by the last time: sqrt(area / (pi caps in contact)), 0 where none touches", TextureStored::full},
     {"advised", TextureExtent::load_level, TextureFlags::yes_no, "",
      "whether the level's caps pass the paraboloid's bound (a > 0.3 R on a sphere) or the strain's (0.2 f'(a) > 0.1) "
-     "by the last time (surface's advisories: the answer stands for less than it seems)"},
+     "by the last time (surface's advisories: the answer stands for less than it seems)", TextureStored::full},
     {"check_regime", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
      "each level's regime by time stepping the same cell (surface --check) at the sampled load points; not_computed "
      "elsewhere", TextureStored::check},

@@ -434,6 +434,31 @@ def test_a_surface_map_in_chromium(tmp_path):
     assert r["time_slider"] == {"changed": True}
 
 
+@pytest.mark.browser
+def test_a_surface_map_of_regime_quantities_in_chromium(tmp_path):
+    """A texture map of each level's touch alone (quantities="regime": no caps or areas over
+    time, read in a fraction of the time) is a surface map on the page: each cell's regime and
+    t* are the file's, there is no time slider, and the page logs no error."""
+    import punchsweep
+    path = tmp_path / "regime.nc"
+    punchsweep.surface_map(lattice="hexagonal", l=1.2, dh=[0.04, 0.06], dh2=0.09, s=2, grid=32,
+                           pbar=[0.002, 0.01, 0.05], T=[2.0, 8.0], times=[0, 1, 5], quantities="regime", output=path)
+    with h5py.File(path) as f:
+        assert "touched" not in f and "level_load" not in f and "t_star" in f
+    page = tmp_path / "regime.html"
+    done = explore(path, "-o", page)
+    assert done.returncode == 0, done.stderr
+    r, _ = in_chromium(page, [[0, 0], [2, 1]], tmp_path)
+    with h5py.File(path) as f:
+        names, codes = regime_axes_and_codes(f)
+        for cell in r["cells"]:
+            index = tuple(cell["index"])
+            assert cell["regime"] == codes[f["regime"][index]]
+            t = f["t_star"][index]
+            assert cell["t_star"] == (None if np.isinf(t) else t) or (np.isinf(t) and cell["t_star"] is None)
+    assert r["time_slider"] is None
+
+
 def test_a_material_surface_map_in_kPa_and_um_in_chromium(tmp_path):
     """Issue 49: a texture map made with a material and R shows its axes as the one reader
     gives them (pressure in kPa, dh in um: it showed E0* and R), and each cell's command is

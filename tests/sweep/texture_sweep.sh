@@ -111,6 +111,21 @@ with h5py.File('tiles3.nc') as f:
     assert f['touched'].chunks == (1, 1, 1, 1, 2, 3), f['touched'].chunks
     assert f['X_star'].chunks == (1, 1, 1, 3), f['X_star'].chunks
 "
+# Each level's touch alone ([output] quantities = regime): the full map's variables but
+# what the snapshot times read, the same bits.
+PUNCHSWEEP_CACHE="$work/cache_regime" run_ranks 2 sweep --config hex.ini --quantities regime --output regime.nc --quiet
+/usr/bin/python3 - one.nc regime.nc <<'PY'
+import sys
+import h5py
+with h5py.File(sys.argv[1]) as full, h5py.File(sys.argv[2]) as regime:
+    kept = sorted(k for k in regime if isinstance(regime[k], h5py.Dataset))
+    left = sorted(k for k in full if isinstance(full[k], h5py.Dataset) and k not in regime)
+    assert left == ["advised", "area_fraction", "contact_radius", "level_area", "level_load", "level_touched", "touched",
+                    "valid"], left
+    assert {"t_star", "regime", "X_star", "resolved", "check_regime", "check_area_fraction"} <= set(kept), kept
+    bad = [k for k in kept if full[k][()].tobytes() != regime[k][()].tobytes()]
+    assert not bad, bad
+PY
 # The same keys through surface-map (its spelling of the same run) and on the command line.
 PUNCHSWEEP_CACHE="$work/cache_map" run_ranks 2 surface-map --lattice hexagonal --grid 64 --s 2 --l 1.2 \
   --dh 'linspace(0.01, 0.06, 6)' --dh2 0.08 --pbar 'logspace(0.002, 0.05, 6)' --T 2,4 --times 0,1,5 --check-sample 3 --output map.nc --quiet
@@ -165,7 +180,7 @@ refuse() {  # refuse MESSAGE ARGS...
   if ls bad.nc* >/dev/null 2>&1; then echo "FAIL: $* left a file"; exit 1; fi
 }
 refuse "unknown key texture.latice" --config hex.ini --texture.latice square --output bad.nc
-refuse "unknown key output.quantities" --config hex.ini --output.quantities full --output bad.nc
+refuse "--quantities = 'series': valid: regime (each level's touch) or full" --config hex.ini --output.quantities series --output bad.nc
 refuse "--check-sample = 73: valid: 1 to the map's 72 load points (6 geometries x 12)" --config hex.ini --reference.sample 73 --output bad.nc
 refuse "--dh = '-0.01': height difference of the punch levels dh = -0.01 is outside its range" --config hex.ini --grid.dh=-0.01 --output bad.nc
 refuse "run.resume = true and run.overwrite = true" --config hex.ini --resume --overwrite --output bad.nc

@@ -177,8 +177,9 @@ def is_texture_map(ds) -> bool:
 def check_layout(ds, error=ValueError) -> None:
     """A map's layout as the engine writes it: regime over its axes (a texture's map: and
     `level` last), each axis a coordinate variable of finite values (or labels), valid over
-    the same axes (a texture's map: its axes and `t`), both flag variables with their codes'
-    meanings, and its physical scales what the engine writes."""
+    the same axes (a texture's map: its axes and `t`; none in a texture's map of regime
+    quantities, which reads no snapshot), both flag variables with their codes' meanings,
+    and its physical scales what the engine writes."""
     names = tuple(ds["regime"].dims)
     if not names:
         raise error("regime has no dimensions")
@@ -198,9 +199,12 @@ def check_layout(ds, error=ValueError) -> None:
         if values.dtype.kind in "fiu" and not np.all(np.isfinite(values)):
             raise error(f"the axis {name} holds values that are not finite numbers: "
                         f"{[float(v) for v in values if not np.isfinite(v)][:3]}")
+    flag_table(ds["regime"].attrs, "regime", error)
+    if "valid" not in ds and is_texture_map(ds):
+        scale_attributes(ds.attrs, error)
+        return
     if set(ds["valid"].dims) != expected_valid:
         raise error(f"valid has the dimensions {', '.join(ds['valid'].dims)}, regime {', '.join(ds['regime'].dims)}")
-    flag_table(ds["regime"].attrs, "regime", error)
     flag_table(ds["valid"].attrs, "valid", error)
     scale_attributes(ds.attrs, error)
 
@@ -228,7 +232,9 @@ def open_map(path, units: str = "physical", pressure_unit: str = "Pa", decode_fl
 
     try:
         with h5py.File(text, "r") as f:
-            missing = [n for n in ("regime", "valid") if n not in f]
+            # (A texture's map of regime quantities, each level's touch alone, has no valid.)
+            texture = "X_star" in f and "level" in f
+            missing = [n for n in ("regime", "valid") if n not in f and not (n == "valid" and texture)]
     except Exception as e:  # a damaged file
         raise unreadable(e) from None
     if missing:
