@@ -668,9 +668,19 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t u) const {
         block[kRegimeHigh][p * L + level] = static_cast<std::int8_t>(r.regime_high);
       }
     }
+    const double X0 = load.initial();
+    // Each level's contact radius and advisories by the last time (surface's, per level):
+    // in every map, as every answer carries them.
+    if (T > 0) {
+      const double t_last = block.times[T - 1];
+      const model::SurfaceAdvisories advice = model::advise_surface(run.geometry, run.curve.at(t_last > 0.0 ? load(t_last) : X0));
+      for (std::size_t level = 0; level < L; ++level) {
+        block[kContactRadius][p * L + level] = advice.level[level].a_max;
+        block[kAdvised][p * L + level] = advice.level[level].raised.empty() ? 0.0 : 1.0;
+      }
+    }
     // What the snapshot times read (a map of full quantities).
     if (!map.full) continue;
-    const double X0 = load.initial();
     for (std::size_t k = 0; k < T; ++k) {
       const double t = block.times[k];
       const model::CurveState state = run.curve.at(t > 0.0 ? load(t) : X0);
@@ -688,15 +698,6 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t u) const {
     for (std::size_t k = 0; k < T; ++k) {
       for (std::size_t level = 0; level < L; ++level) {
         block[kLevelLoad][(p * T + k) * L + level] = history.snapshots[k].level_load[level];
-      }
-    }
-    // Each level's contact radius and advisories by the last time (surface's, per level).
-    if (T > 0) {
-      const double t_last = block.times[T - 1];
-      const model::SurfaceAdvisories advice = model::advise_surface(run.geometry, run.curve.at(t_last > 0.0 ? load(t_last) : X0));
-      for (std::size_t level = 0; level < L; ++level) {
-        block[kContactRadius][p * L + level] = advice.level[level].a_max;
-        block[kAdvised][p * L + level] = advice.level[level].raised.empty() ? 0.0 : 1.0;
       }
     }
   }
@@ -752,7 +753,7 @@ std::vector<double> TextureMapPlan::evaluate(std::size_t u) const {
 }
 
 double estimated_reading_seconds(std::size_t points, int levels, std::size_t times, bool full) {
-  if (!full) return static_cast<double>(points) * (5e-6 + 0.7e-6 * levels);
+  if (!full) return static_cast<double>(points) * (5e-6 + 1e-6 * levels);
   return static_cast<double>(points) * levels * (19e-6 + 16e-6 * static_cast<double>(times));
 }
 
@@ -1010,8 +1011,9 @@ po::options_description texture_map_options(const input::PointMaterial& material
        "check_regime, check_t_star, check_area_fraction")
       ("check-seed", po::value<std::string>()->value_name("S")->default_value("1"), "the seed of --check-sample's draw")
       ("quantities", po::value<std::string>()->value_name("WHAT"),
-       "regime: each level's touch alone (t_star, regime, X_star, resolved; reads in a fraction of the time); full (the "
-       "default): also what the snapshot times read (caps and areas in contact, each level's load, the contact radius)")
+       "regime: each level's touch and advisories alone (t_star, regime, X_star, resolved, contact_radius, advised; "
+       "reads in a fraction of the time); full (the default): also what each snapshot time reads (caps and areas in "
+       "contact, each level's load)")
       ("chunk", po::value<std::string>()->value_name("N"),
        "the target values of a tile, the unit of work, of the journal and of an HDF5 chunk: load points x snapshot "
        "times, in whole rows of the pressure axis (at least one); 4096 by default");

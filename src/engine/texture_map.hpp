@@ -174,8 +174,9 @@ class TextureMapPlan {
 /// curve at `times` snapshot times on one core of this machine: with full quantities
 /// (each level's touch, areas and load by its history) levels x (19 + 16 times) us a load
 /// point, fitted to maps of 20,000 load points of two and three levels at 1, 3 and 10 times
-/// (each within 25%); each level's touch alone (`full` false) 5 + 0.7 levels us, fitted to
-/// maps of 100,000 load points of two and three levels (0.70-0.79 s a run, within 10%).
+/// (each within 25%); each level's touch and advisories alone (`full` false) 5 + levels us,
+/// fitted to maps of 100,000 load points of two and three levels (0.74-0.86 s a run, within
+/// 10%).
 double estimated_reading_seconds(std::size_t points, int levels, std::size_t times, bool full);
 
 /// What a tile's curve cost: seconds, and "built", "from the cache", "from the periodic

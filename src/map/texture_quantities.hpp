@@ -31,9 +31,9 @@ enum class TextureFlags {
   yes_no,                  ///< 0 or 1
 };
 
-/// When a texture quantity is stored: always, in a map of full quantities only (what the
-/// snapshot times read: caps and areas in contact, each level's load, the contact radius
-/// by the last time; `quantities = regime` leaves them out, and their cost), with a box of
+/// When a texture quantity is stored: always, in a map of full quantities only (what each
+/// snapshot time reads: caps and areas in contact, each level's load; `quantities = regime`
+/// leaves them out, and their cost), with a box of
 /// tolerances, or with a sample of load points checked by time stepping (`surface --check`
 /// at each).
 enum class TextureStored { always, full, tolerance, check };
@@ -74,10 +74,10 @@ inline constexpr std::array<TextureQuantitySpec, 22> kTextureQuantities{{
     {"level_load", TextureExtent::load_time_level, TextureFlags::none, "R^2 E0/(1-nu^2)",
      "the load each level carries in the cell, P_L(t); NaN where its history integral would cost too much", TextureStored::full},
     {"contact_radius", TextureExtent::load_level, TextureFlags::none, "R",
-     "each level's contact radius by the last time: sqrt(area / (pi caps in contact)), 0 where none touches", TextureStored::full},
+     "each level's contact radius by the last time: sqrt(area / (pi caps in contact)), 0 where none touches"},
     {"advised", TextureExtent::load_level, TextureFlags::yes_no, "",
      "whether the level's caps pass the paraboloid's bound (a > 0.3 R on a sphere) or the strain's (0.2 f'(a) > 0.1) "
-     "by the last time (surface's advisories: the answer stands for less than it seems)", TextureStored::full},
+     "by the last time (surface's advisories: the answer stands for less than it seems)"},
     {"check_regime", TextureExtent::load_level, TextureFlags::regime_or_not_computed, "",
      "each level's regime by time stepping the same cell (surface --check) at the sampled load points; not_computed "
      "elsewhere", TextureStored::check},

@@ -370,7 +370,7 @@ def surface_map(*, pbar=None, pressure=None, T=None, temperature=None, material:
     level (t_star, regime) or t (touched, area_fraction, valid); a keyword given as one value
     is no dimension. tolerance="pressure=10%, T=0.2" adds t_star_low, t_star_high,
     regime_low and regime_high: each level's t* and regimes at the ends of that box about
-    every point. quantities="regime" stores each level's touch alone (no caps, areas or
+    every point. quantities="regime" stores each level's touch and advisories alone (no caps, areas or
     loads over time: read in a fraction of the time); chunk=N sets the tiles (load points x
     times). The file (netCDF-4, the command's)
     is written to `output` where given (overwrite=True replaces one), else to a temporary
