@@ -290,7 +290,7 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     return io::pack_encoded_tile(tile);
   };
   // Rank 0: each tile journalled first, then placed, then a progress line.
-  std::size_t done = resumed;
+  std::size_t done = resumed, last_step = 20 * resumed / std::max<std::size_t>(U, 1);
   const auto begun = std::chrono::steady_clock::now();
   const sweep::TileSink sink = [&](std::span<const std::byte> bytes) {
     journal->append_packed(bytes);
@@ -300,6 +300,12 @@ int run_texture_map(const TextureMapJob& job, int rank, int ranks) {
     ++done;
     if (job.quiet) return;
     const engine::GeometryCost cost = engine::geometry_cost(block);
+    // A line for every tile that opened its curve (built, read from the cache or the
+    // tables); of the tiles that read a curve the rank held, one at each 5% of the map and
+    // the last: a map of many tiles does not flood the log.
+    const std::size_t step = 20 * done / U;
+    if (cost.held && step == last_step && done < U) return;
+    last_step = step;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
     const double left = elapsed / static_cast<double>(done - resumed) * static_cast<double>(U - done);
     const engine::SurfaceMap::Tile at = plan->header().tile(tile.tile);
