@@ -534,15 +534,14 @@ class TextureGap {
         return known_[key] = *limit + closure.shift;
       }
     }
-    if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
-    const reference::LevelClosed closed = closure.solve->counting(X, cap, level);
+    const reference::LevelClosed closed = solver(closure).counting(X, cap, level);
     if (!closed.steady) unsteady_.insert(r.text);
     if (other) {
       solves_ += closed.solves;
       // (Not even with the level at its deepest, "at least" the share holds at no drop; even
       // with it at the top, "at most" holds at none.)
       if (closed.drop == (r.kind == Requirement::Kind::touch_by ? kInf : -kInf)) unreachable_.insert(r.text);
-      return known_[key] = std::isinf(closed.drop) ? closed.drop : closed.drop + closure.shift;
+      return known_[key] = closed.drop + closure.shift;  // (+-infinity stays)
     }
     if (every && closed.every_drop) {
       // So many caps touch even with the level at its deepest that "at most" the share holds
@@ -561,9 +560,9 @@ class TextureGap {
   /// of its own.
   model::SurfaceAdvisories advice(const model::ContactProblem& problem, double X, double drop) {
     Closure& closure = made(problem);
-    if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
-    const double at = std::clamp(drop - closure.shift, 0.0, closure.solve->deepest());
-    return model::advise_surface(closure.made->geometry, closure.solve->state(X, at));
+    reference::LevelClosure& solve = solver(closure);
+    const double at = std::clamp(drop - closure.shift, 0.0, solve.deepest());
+    return model::advise_surface(closure.made->geometry, solve.state(X, at));
   }
 
   /// Whether some load pressed the level's tips at any drop it can have (its bound is then
@@ -591,9 +590,13 @@ class TextureGap {
     std::unique_ptr<const model::SmallSpotLimit> limit;  ///< of made's geometry
     std::unique_ptr<reference::LevelClosure> solve;      ///< built where the limit does not answer
     double shift = 0.0;
-    std::size_t caps = 0;  ///< of the level
     std::vector<std::size_t> caps_of;  ///< of each level
   };
+  /// The closure's contact solves, made at the first that the limit does not answer.
+  reference::LevelClosure& solver(Closure& closure) {
+    if (!closure.solve) closure.solve = std::make_unique<reference::LevelClosure>(closure.made->geometry, level_, closure.made->grid);
+    return *closure.solve;
+  }
   /// The closure of the problem's pitch and shape, its cell made where it is new.
   Closure& made(const model::ContactProblem& problem) {
     if (closures_.size() >= kKeptClosures && !closures_.contains({problem.l, problem.shape.C})) closures_.clear();
@@ -604,7 +607,6 @@ class TextureGap {
       closure.shift = design_drop_ - least_drops(closure.made->geometry)[static_cast<std::size_t>(level_ - 1)];
       closure.caps_of.assign(static_cast<std::size_t>(closure.made->geometry.levels()), 0);
       for (const model::Site& site : closure.made->geometry.sites) ++closure.caps_of[static_cast<std::size_t>(site.level)];
-      closure.caps = closure.caps_of[static_cast<std::size_t>(level_)];
     }
     return closure;
   }

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
+#include <utility>
 
 #include "engine/surface_evaluation.hpp"
 #include "run/text_lines.hpp"
@@ -349,18 +350,16 @@ namespace {
 
 /// Each stored quantity and its values a geometry, in map::kTextureQuantities' order: the
 /// order a geometry's values travel (between ranks, into the journal) and are written.
-template <class Visit>
-void for_each_stored(const SurfaceMap& map, Visit&& visit) {
-  for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
-    if (map.stores(q)) visit(q, map.per_geometry(q));
-  }
-}
-/// The same over `points` load points of a geometry (a tile's).
+/// Over `points` load points of a geometry (a tile's), or all of them.
 template <class Visit>
 void for_each_stored(const SurfaceMap& map, std::size_t points, Visit&& visit) {
   for (std::size_t q = 0; q < map::kTextureQuantityCount; ++q) {
     if (map.stores(q)) visit(q, map.per_points(q, points));
   }
+}
+template <class Visit>
+void for_each_stored(const SurfaceMap& map, Visit&& visit) {
+  for_each_stored(map, map.load_points(), std::forward<Visit>(visit));
 }
 
 /// Whether a quantity of `extent` runs over the load's axes (then a tile holds its rows).

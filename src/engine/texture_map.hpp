@@ -71,8 +71,7 @@ struct SurfaceMap {
   /// by sweep::ReferenceSample with check_seed); 0 without one.
   std::uint64_t check_sample = 0;
   std::uint64_t check_seed = 1;
-  /// The values quantity q has per geometry; over `points` load points of it (a tile's).
-  std::size_t per_geometry(std::size_t q) const { return per_points(q, load_points()); }
+  /// The values quantity q has over `points` load points of a geometry (a tile's, or all).
   std::size_t per_points(std::size_t q, std::size_t points) const;
   double E0_star_Pa = 0.0;              ///< with a material: pbar in Pa; else 0
   std::string texture;                  ///< the texture's keywords, as JSON

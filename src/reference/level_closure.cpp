@@ -202,11 +202,28 @@ LevelClosed LevelClosure::counting(double X, std::size_t caps, int level) {
     }
     return true;
   };
+  // Aimed bisection over the drop, as the load curve's touchdowns are
+  // (reference/touchdown_search.hpp), in x = sign x drop (touched at the greater x): the
+  // bracket from an untouched drop to a touched one, the secant's first point a drop whose
+  // deciding cap's gap is known (at or beyond the untouched end); the bracket's middle.
+  const auto bisect = [&](double sign, double untouched, double touched, double known, double gap) {
+    TouchdownSearch search(sign * untouched, sign * touched, sign * known, gap, kDropTolerance * deepest_);
+    while (search.open()) {
+      const double drop = sign * search.trial();
+      const Trial t = trial_at(drop);
+      if (t.count >= caps) {
+        search.touched(sign * drop);
+      } else {
+        search.untouched(sign * drop, t.gap);
+      }
+    }
+    return sign * (0.5 * (search.lo() + search.hi()));
+  };
   if (rising) {
     // The least drop at which `caps` of the other level's caps have touched: -infinity where
     // they have with this level at the top (at every drop it can have), +infinity where not
-    // even at its deepest; between, an aimed bisection in x = drop (the deciding cap's gap
-    // smooth on the shallower side).
+    // even at its deepest; between, the bisection in x = drop (the deciding cap's gap smooth
+    // on the shallower side).
     out.rising = true;
     const Trial at_top = trial_at(0.0);
     if (at_top.count >= caps) {
@@ -219,17 +236,7 @@ LevelClosed LevelClosure::counting(double X, std::size_t caps, int level) {
       out.steady = steady();
       return out;
     }
-    TouchdownSearch search(0.0, deepest, 0.0, at_top.gap, kDropTolerance * deepest_);
-    while (search.open()) {
-      const double drop = search.trial();
-      const Trial t = trial_at(drop);
-      if (t.count >= caps) {
-        search.touched(drop);
-      } else {
-        search.untouched(drop, t.gap);
-      }
-    }
-    out.drop = 0.5 * (search.lo() + search.hi());
+    out.drop = bisect(1.0, 0.0, deepest, 0.0, at_top.gap);
     out.steady = steady();
     return out;
   }
@@ -251,22 +258,9 @@ LevelClosed LevelClosure::counting(double X, std::size_t caps, int level) {
     out.steady = steady();
     return out;
   }
-  // Bisection over the drop, aimed as the load curve's touchdowns are
-  // (reference/touchdown_search.hpp) in x = -drop: the deciding cap's gap is smooth on the
-  // untouched (deeper) side.
-  TouchdownSearch search(-high, -low, -deepest, at_deepest.gap, kDropTolerance * deepest_);
-  while (search.open()) {
-    const double drop = -search.trial();
-    const Trial t = trial_at(drop);
-    if (t.count >= caps) {
-      search.touched(-drop);
-    } else {
-      search.untouched(-drop, t.gap);
-    }
-  }
-  low = -search.hi();
-  high = -search.lo();
-  out.drop = 0.5 * (low + high);
+  // The bisection in x = -drop: the deciding cap's gap is smooth on the untouched (deeper)
+  // side.
+  out.drop = bisect(-1.0, high, low, deepest, at_deepest.gap);
   out.steady = steady();
   return out;
 }
