@@ -70,7 +70,9 @@ HeightMap read_npy(const std::string& path, const std::string& bytes) {
     if (written && (*written == 4 || *written == 8)) size = static_cast<std::size_t>(*written);
   }
   if (size == 0) fail("'descr' (dtype) '" + descr + "'; " + valid_dtype);
-  if (std::regex_search(header, std::regex(R"('fortran_order'\s*:\s*True)"))) fail("a Fortran-order array; valid: C order");
+  // Fortran order (numpy writes it for a transposed array, Z.T, without saying): the same
+  // array, its columns stored one after another.
+  const bool fortran = std::regex_search(header, std::regex(R"('fortran_order'\s*:\s*True)"));
   if (!std::regex_search(header, m, std::regex(R"('shape'\s*:\s*\(([^)]*)\))"))) fail("a .npy header without 'shape'");
   const std::string shape = m[1];
   std::vector<std::uint64_t> dims;
@@ -100,14 +102,19 @@ HeightMap read_npy(const std::string& path, const std::string& bytes) {
   map.nx = static_cast<std::size_t>(dims[1]);
   map.height.resize(map.nx * map.ny);
   for (std::size_t k = 0; k < map.height.size(); ++k) {
+    // Item k of the file is row k / nx, column k % nx in C order; row k % ny, column
+    // k / ny in Fortran order.
+    const std::size_t at = fortran ? (k % map.ny) * map.nx + k / map.ny : k;
     if (size == 8) {
-      std::memcpy(&map.height[k], bytes.data() + data + 8 * k, 8);
+      std::memcpy(&map.height[at], bytes.data() + data + 8 * k, 8);
     } else {
       float v;
       std::memcpy(&v, bytes.data() + data + 4 * k, 4);
-      map.height[k] = v;
+      map.height[at] = v;
     }
-    if (!std::isfinite(map.height[k])) fail("pixel " + std::to_string(k) + " is not a finite number");
+    if (!std::isfinite(map.height[at])) {
+      fail("pixel (row " + std::to_string(at / map.nx) + ", column " + std::to_string(at % map.nx) + ") is not a finite number");
+    }
   }
   return map;
 }

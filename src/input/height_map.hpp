@@ -2,7 +2,7 @@
 /// @file
 /// A measured height map of one period of a texture, as a profilometer exports it: a CSV
 /// grid (one row per line, values separated by commas, semicolons, tabs or spaces), a
-/// NumPy .npy array (2-D, float64 or float32, little-endian, C order), rows along y; or the
+/// NumPy .npy array (2-D, float64 or float32, little-endian, C or Fortran order), rows along y; or the
 /// NetCDF container the SurfaceTopography ecosystem writes (Topography.to_netcdf: classic or
 /// 64-bit-offset NetCDF-3 in serial, NetCDF-4 in parallel; a variable `heights(x, y)`, and
 /// on the variables `x` and `y` the attributes `length`, `periodic` and `length_unit`; the
@@ -32,10 +32,11 @@ struct HeightMap {
 
 /// The map in `path` (.npy and NetCDF by their magic strings, else CSV). Throws UsageError naming the
 /// file and the problem (ragged rows, a value that is no finite number, a CSV layout that
-/// mixes commas and blanks between values, an unsupported dtype or order, a .npy shape that
+/// mixes commas and blanks between values, an unsupported dtype, a .npy shape that
 /// is no two decimal counts or does not match its data, fewer than 4 x 4 pixels).
 /// A CSV map's separator is its first row's: with ';' or tabs between values a decimal comma
 /// is a point ("1,5;2,25"), as spreadsheets in many locales write it (input/csv_cells.hpp).
+/// A Fortran-order .npy (numpy's Z.T) is read as the array it is.
 /// A NetCDF map's unit "µm" (either micro sign) comes back as "um".
 HeightMap read_height_map(const std::string& path);
 

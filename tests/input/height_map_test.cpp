@@ -102,6 +102,22 @@ TEST(HeightMap, a_npy_map_whose_shape_matches_its_data_is_read_rows_along_y) {
   EXPECT_TRUE(map.notes.empty());
 }
 
+TEST(HeightMap, a_fortran_order_npy_map_is_the_same_array_its_columns_stored_first) {
+  // numpy writes Z.T (or np.asfortranarray(Z)) column after column with fortran_order True:
+  // the same 4 x 8 array as its C-order copy, every pixel where that puts it.
+  std::vector<double> z(32), columns;
+  for (std::size_t k = 0; k < z.size(); ++k) z[k] = static_cast<double>(k) + 0.25 * static_cast<double>(k % 3);
+  for (std::size_t c = 0; c < 8; ++c) {
+    for (std::size_t r = 0; r < 4; ++r) columns.push_back(z[r * 8 + c]);
+  }
+  const HeightMap map = read_height_map(write_file("fortran.npy", npy("{'descr': '<f8', 'fortran_order': True, 'shape': (4, 8), }", columns)));
+  EXPECT_EQ(map.nx, 8u);
+  EXPECT_EQ(map.ny, 4u);
+  EXPECT_EQ(map.height, z);
+  const HeightMap c_order = read_height_map(write_file("c_order.npy", npy("{'descr': '<f8', 'fortran_order': False, 'shape': (4, 8), }", z)));
+  EXPECT_EQ(c_order.height, map.height);
+}
+
 /// A 4 x 4 grid, each row one period of a sinusoid along x (1.5, 1.75, 1.5, 1.25), as text
 /// with `sep` between values and `point` as the decimal mark.
 std::string grid_text(const std::string& sep, char point) {
