@@ -96,7 +96,7 @@ struct DesignArgs {
   std::optional<std::string> supercell, scatter, seed;
   bool scattered() const { return supercell || scatter || seed; }
   /// A cell file or a measured height map (surface's --cell, --height-map and the map's
-  /// --pixel, --height-unit, --summit-radius, --level-gap), as given: with --find pressure.
+  /// --pixel, --height-unit, --summit-radius, --prominence, --level-gap), as given: with --find pressure.
   input::Keywords texture_file;
   bool from_file() const { return !texture_file.empty(); }
   /// Read off the texture's load curve (every cap's touchdown), not solved per load.
@@ -158,7 +158,7 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
     } else if (name == "seed") {
       a.seed = value;
     } else if (name == "cell" || name == "height-map" || name == "pixel" || name == "height-unit" ||
-               name == "summit-radius" || name == "level-gap") {
+               name == "summit-radius" || name == "prominence" || name == "level-gap") {
       a.texture_file.emplace_back(name, value);
     } else if (name == "pbar" || name == "pressure") {
       a.pressure_option = "--" + name;

@@ -22,6 +22,7 @@
 #include "input/scaled_value.hpp"
 #include "input/usage_error.hpp"
 #include "input/value_parsing.hpp"
+#include "model/numerics/number_text.hpp"
 #include "model/periodic/periodic_model.hpp"
 #include "model/surface/periodic_curve.hpp"
 #include "model/surface/small_spot_touchdown.hpp"
@@ -209,6 +210,9 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "the unit of the map's heights: R, or a length unit with --R (um, nm)")
       ("summit-radius", po::value<std::string>()->value_name("L"),
        "a summit is higher than every pixel within this length (default 3 pixels)")
+      ("prominence", po::value<std::string>()->value_name("H"),
+       "a summit must rise this high above the highest saddle on any path to higher ground (a length; "
+       "0 keeps every summit; default 2% of the map's height range, so that land roughness is no cap)")
       ("level-gap", po::value<std::string>()->value_name("L"),
        "summits sorted by depth start a new level where the depth jumps by more than L (default: one level)")
       ("supercell", po::value<int>()->value_name("K")->default_value(1),
@@ -256,8 +260,40 @@ int read_grid(const std::string& text) {
 
 namespace {
 
-/// --height-map FILE with --pixel, --height-unit, --summit-radius and --level-gap: the
-/// measured cell, lengths in R. A NetCDF map that states its lengths and unit gives the
+/// A length in R as the user reads it: in R's unit where the run has R, else in R.
+std::string measured_length(double value, const input::PhysicalScales& scales) {
+  if (const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", scales)) {
+    return model::number_text(value * unit->per_scaled, 3) + " " + unit->units;
+  }
+  return model::number_text(value, 3) + " R";
+}
+
+/// The note where most of a measured map's summits look like land roughness taken for
+/// caps: far below the highest (more than half the map's height range) and rising little
+/// above their saddles (less than a tenth of it); "" where they do not.
+std::string roughness_note(const reference::MeasuredCell& cell, const input::PhysicalScales& scales) {
+  const std::vector<model::Site>& sites = cell.geometry.sites;
+  std::size_t rough = 0;
+  double least = std::numeric_limits<double>::infinity(), most = 0.0;
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    if (sites[k].drop > 0.5 * cell.height_range && cell.prominence[k] < 0.1 * cell.height_range) {
+      ++rough;
+      least = std::min(least, sites[k].drop);
+      most = std::max(most, sites[k].drop);
+    }
+  }
+  if (2 * rough <= sites.size()) return "";
+  std::ostringstream note;
+  note << rough << " of the map's " << sites.size() << " summits lie " << measured_length(least, scales) << " to "
+       << measured_length(most, scales) << " below the highest (more than half its height range, "
+       << measured_length(cell.height_range, scales) << ") and rise less than a tenth of that above their saddles: "
+       << "land roughness taken for caps? A summit must now rise " << measured_length(cell.least_prominence, scales)
+       << " (--prominence); raise it, or --summit-radius, to keep the caps alone";
+  return note.str();
+}
+
+/// --height-map FILE with --pixel, --height-unit, --summit-radius, --prominence and
+/// --level-gap: the measured cell, lengths in R. A NetCDF map that states its lengths and unit gives the
 /// pixel and the heights' unit (the options then override it); `notes` gets what the
 /// reading says of the map.
 reference::MeasuredCell read_measured(const po::variables_map& vm, const input::PhysicalScales& scales,
@@ -310,7 +346,18 @@ reference::MeasuredCell read_measured(const po::variables_map& vm, const input::
                                            : std::numeric_limits<double>::infinity();
   std::vector<double> z = map.height;
   for (double& v : z) v *= per_unit;
-  return reference::make_measured_cell(z, map.nx, map.ny, pixel, radius, gap);
+  const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
+  double prominence = reference::kDefaultProminenceShare * (*highest - *lowest);
+  if (vm.count("prominence")) {
+    const std::string text = vm["prominence"].as<std::string>();
+    prominence = input::read_length(text, scales, "--prominence");
+    if (!(std::isfinite(prominence) && prominence >= 0.0)) {
+      throw input::UsageError("--prominence = " + text + " is outside its range: a length >= 0");
+    }
+  }
+  reference::MeasuredCell cell = reference::make_measured_cell(z, map.nx, map.ny, pixel, radius, gap, prominence);
+  if (const std::string note = roughness_note(cell, scales); !note.empty()) notes->push_back(note);
+  return cell;
 }
 
 }  // namespace

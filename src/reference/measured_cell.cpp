@@ -1,6 +1,7 @@
 #include "reference/measured_cell.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -9,13 +10,14 @@
 namespace punchsweep::reference {
 
 MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, std::size_t ny, double pixel,
-                                double summit_radius, double level_gap) {
+                                double summit_radius, double level_gap, double least_prominence) {
   if (nx % 2 != 0 || ny % 2 != 0 || nx < 4 || ny < 4 || z.size() != nx * ny) {
     throw std::invalid_argument("make_measured_cell: an even number of pixels each way, at least 4");
   }
   if (!(pixel > 0.0 && std::isfinite(pixel)) || !(summit_radius >= pixel)) {
     throw std::invalid_argument("make_measured_cell: pixel > 0 and a summit radius of at least one pixel");
   }
+  if (!(least_prominence >= 0.0)) throw std::invalid_argument("make_measured_cell: a prominence >= 0");
   const int NX = static_cast<int>(nx), NY = static_cast<int>(ny);
   const auto index = [&](int i, int j) {
     return static_cast<std::size_t>(((j % NY) + NY) % NY) * nx + static_cast<std::size_t>(((i % NX) + NX) % NX);
@@ -57,9 +59,53 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
       up[k] = best;
     }
   }
+  // Each pixel's prominence, by joining the pixels from the highest down (8-connected,
+  // periodic) into grounds, each named by its peak: a pixel none of whose neighbours came
+  // before it is a peak of its own; where grounds meet at pixel p, each but the one of the
+  // highest peak ends there, its peak rising z(peak) - z(p) above the highest saddle on any
+  // path to higher ground, which `higher` names (a pixel that is no peak rises 0, next to
+  // higher ground). The highest peak rises +infinity.
+  std::vector<std::size_t> by_height(z.size());
+  std::iota(by_height.begin(), by_height.end(), 0);
+  std::sort(by_height.begin(), by_height.end(), beats);
+  constexpr double kHighest = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> ground(z.size(), z.size());  // union-find: z.size() not yet reached
+  std::vector<std::size_t> higher(z.size(), z.size());
+  std::vector<double> prominence(z.size(), 0.0);
+  const auto find = [&](std::size_t a) {
+    while (ground[a] != a) a = ground[a] = ground[ground[a]];
+    return a;
+  };
+  for (const std::size_t p : by_height) {
+    const int i = static_cast<int>(p % nx), j = static_cast<int>(p / nx);
+    std::array<std::size_t, 8> met{};
+    std::size_t count = 0;
+    for (int dj = -1; dj <= 1; ++dj) {
+      for (int di = -1; di <= 1; ++di) {
+        const std::size_t q = index(i + di, j + dj);
+        if ((di == 0 && dj == 0) || ground[q] == z.size()) continue;
+        const std::size_t g = find(q);
+        if (std::find(met.begin(), met.begin() + count, g) == met.begin() + count) met[count++] = g;
+      }
+    }
+    if (count == 0) {
+      ground[p] = p;
+      prominence[p] = kHighest;
+      continue;
+    }
+    const std::size_t best = *std::min_element(met.begin(), met.begin() + count, beats);
+    ground[p] = best;
+    higher[p] = best;
+    for (std::size_t m = 0; m < count; ++m) {
+      if (met[m] == best) continue;
+      prominence[met[m]] = z[met[m]] - z[p];
+      higher[met[m]] = best;
+      ground[met[m]] = best;
+    }
+  }
   struct Summit {
     int i, j;
-    double drop;
+    double drop, prominence;
   };
   std::vector<Summit> summits;
   std::vector<std::size_t> summit_of(z.size(), z.size());
@@ -80,21 +126,23 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
   // A flat top (8-connected pixels of exactly one height) is one summit however wide: the
   // row order's tie rule would make a second where the top wraps round the cell's edge (a
   // flat cap at a corner gave two). Its other tops climb to its first in row order (which
-  // beats them: the same height, earlier).
+  // beats them: the same height, earlier). Its prominence is its first pixel's (the first
+  // joined); a top that rises less than least_prominence climbs on to the higher ground.
   std::vector<char> on_top(z.size(), 0);
   for (const std::size_t k : tops) on_top[k] = 1;
   std::vector<char> filled(z.size(), 0);
   std::vector<std::size_t> front;
+  std::size_t below = 0;
   for (const std::size_t k : tops) {
     if (up[k] != k) continue;  // merged into an earlier top
     const int i = static_cast<int>(k % nx), j = static_cast<int>(k / nx);
-    summit_of[k] = summits.size();
-    summits.push_back({i, j, top - z[k]});
+    std::size_t first = k;
     front.assign(1, k);
     filled[k] = 1;
     while (!front.empty()) {
       const std::size_t q = front.back();
       front.pop_back();
+      first = std::min(first, q);
       if (on_top[q] && q != k) up[q] = k;
       const int qi = static_cast<int>(q % nx), qj = static_cast<int>(q / nx);
       for (int dj = -1; dj <= 1; ++dj) {
@@ -107,6 +155,13 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
         }
       }
     }
+    if (prominence[first] < least_prominence) {
+      up[k] = higher[first];  // strictly higher: a flat top's first pixel ends only below it
+      ++below;
+      continue;
+    }
+    summit_of[k] = summits.size();
+    summits.push_back({i, j, top - z[k], prominence[first]});
   }
   // Each pixel's summit: follow the climb (every step beats the last, so it ends), then
   // give the path its end.
@@ -130,6 +185,10 @@ MeasuredCell make_measured_cell(const std::vector<double>& z, std::size_t nx, st
     level[order[k]] = level[order[k - 1]] + (gap ? 1 : 0);
   }
   MeasuredCell out;
+  out.height_range = top - *std::min_element(z.begin(), z.end());
+  out.least_prominence = least_prominence;
+  out.summits_below = below;
+  for (const Summit& summit : summits) out.prominence.push_back(summit.prominence);
   model::CellGeometry& g = out.geometry;
   g.Lx = NX * pixel;
   g.Ly = NY * pixel;

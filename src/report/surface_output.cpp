@@ -11,6 +11,7 @@
 #include "engine/surface_evaluation.hpp"
 #include "input/command_options.hpp"
 #include "model/laws/material.hpp"
+#include "model/numerics/number_text.hpp"
 #include "model/surface/surface_advisory.hpp"
 
 namespace punchsweep::report {
@@ -165,6 +166,15 @@ std::string advisory_reason(const model::SurfaceAdvisories& advice) {
 /// boundary elements).
 std::string curve_source_name(const engine::SurfaceRun& run) { return run.curve_source == engine::CurveSource::tables ? "tables" : "cell"; }
 
+/// Site k's touch, unresolved where it is its level's first and the level is (the run
+/// marks a level unresolved after its curve: --grid auto's hold, --check).
+model::LevelTouch cap_touch(const engine::SurfaceRun& run, std::size_t k) {
+  model::LevelTouch touch = run.history.sites[k];
+  const model::LevelTouch& level = run.history.levels[static_cast<std::size_t>(run.geometry.sites[k].level)];
+  if (touch.X_star == level.X_star) touch.resolved = touch.resolved && level.resolved;
+  return touch;
+}
+
 void write_json(std::ostream& out, const engine::SurfaceRun& run) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
@@ -215,7 +225,23 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run) {
     }
     out << "}";
   }
-  out << "\n  ],\n  \"series\": {\n";
+  out << "\n  ],\n";
+  if (run.measured) {
+    out << "  \"summits\": {\"least_prominence\": " << num(run.measured->least_prominence) << ", \"height_range\": "
+        << num(run.measured->height_range) << ", \"below_prominence\": " << run.measured->summits_below << "},\n";
+  }
+  out << "  \"cap_list\": [";
+  for (std::size_t k = 0; k < run.geometry.sites.size(); ++k) {
+    const model::Site& site = run.geometry.sites[k];
+    const model::LevelTouch touch = cap_touch(run, k);
+    out << (k ? ",\n    " : "\n    ") << "{\"x\": " << num(site.x) << ", \"y\": " << num(site.y) << ", \"level\": " << site.level
+        << ", \"drop\": " << num(site.drop) << ", \"s\": " << num(site.shape.s) << ", \"C\": " << num(site.shape.C);
+    if (run.measured) out << ", \"prominence\": " << num(run.measured->prominence[k]);
+    out << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime))) << ", \"t_star\": " << num(touch.t_star)
+        << ", \"X_star\": " << num(touch.X_star) << ", \"resolved\": " << (touch.resolved ? "true" : "false") << "}";
+  }
+  out << (run.geometry.sites.empty() ? "],\n" : "\n  ],\n");
+  out << "  \"series\": {\n";
   const auto series = [&](const char* name, auto value, bool last = false) {
     out << "    \"" << name << "\": [";
     for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) out << (k ? ", " : "") << value(run.history.snapshots[k]);
@@ -244,6 +270,29 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run) {
   if (run.stepped) write_check(out, run);
   out << "  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
       << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\", \"contact_radius\": \"R\"}\n}\n";
+}
+
+/// A measured map's summits: what a summit had to rise, and each cap's place, drop, shape,
+/// prominence and touch (lengths in R's unit where the run has R; the tip radius of
+/// curvature 1 / (2 C) of its paraboloid).
+void write_measured_caps(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
+  const reference::MeasuredCell& measured = *run.measured;
+  const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
+  const double per = unit ? unit->per_scaled : 1.0;
+  const std::string units = unit ? unit->units : "R";
+  const char* lead = csv ? "# " : "  ";
+  out << lead << "summits: those rising at least " << measured.least_prominence * per << " " << units
+      << " above the highest saddle to higher ground (--prominence; the map's height range " << measured.height_range * per << " "
+      << units << "); " << measured.summits_below << " lower ones are part of the ground they rise from\n";
+  for (std::size_t k = 0; k < run.geometry.sites.size(); ++k) {
+    const model::Site& site = run.geometry.sites[k];
+    const model::LevelTouch touch = cap_touch(run, k);
+    out << lead << "cap " << k << ": level " << site.level << " at (" << site.x * per << ", " << site.y * per << ") " << units
+        << ", drop " << site.drop * per << " " << units << ", tip radius " << 0.5 / site.shape.C * per << " " << units << ", prominence "
+        << (std::isfinite(measured.prominence[k]) ? model::number_text(measured.prominence[k] * per, 6) + " " + units : std::string("the highest")) << ": " << model::regime_name(touch.regime);
+    if (touch.regime == model::Regime::delayed) out << " at t* = " << touch.t_star << " " << run.inputs.time_unit;
+    out << (touch.resolved ? "" : " (below the curve's resolution)") << "\n";
+  }
 }
 
 void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
@@ -279,6 +328,7 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
     out << (level ? ", " : "") << drop_range(run.geometry, level).sites << " of level " << level;
   }
   out << ")\n";
+  if (run.measured) write_measured_caps(out, run, csv);
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);

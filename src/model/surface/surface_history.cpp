@@ -35,6 +35,14 @@ bool touchdown_resolved(const LoadCurve& curve, std::size_t level) {
   return limit || X_star == 0.0 || X_star >= curve.X_resolved;
 }
 
+bool site_touchdown_resolved(const LoadCurve& curve, std::size_t site) {
+  const double X_star = curve.site_touchdown[site];
+  const std::size_t level = static_cast<std::size_t>(curve.site_level[site]);
+  if (X_star == curve.level_touchdown[level]) return touchdown_resolved(curve, level);
+  if (!std::isfinite(X_star)) return std::isfinite(curve.X_full) || curve.X_last() >= curve.X_resolved;
+  return X_star == 0.0 || X_star >= curve.X_resolved;
+}
+
 LevelTouch level_touch(double X_star, bool resolved, const CreepWeightedLoad& load) {
   const Classification c = classify(Touchdown{0.0, X_star}, load);
   return {c.regime, c.t_star, X_star, resolved};
@@ -48,6 +56,9 @@ SurfaceHistory surface_history(const LoadCurve& curve, const CreepWeightedLoad& 
                                const HistoryQuadrature& quadrature) {
   SurfaceHistory out;
   out.levels = level_touches(curve, load);
+  for (std::size_t site = 0; site < curve.sites(); ++site) {
+    out.sites.push_back(level_touch(curve.site_touchdown[site], site_touchdown_resolved(curve, site), load));
+  }
   const double X0 = load.initial();
   const auto X_at = [&](double t) { return t > 0.0 ? load(t) : X0; };
   double t_max = 0.0;

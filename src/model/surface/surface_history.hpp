@@ -61,9 +61,12 @@ struct SurfaceSnapshot {
   SurfaceValidity validity = SurfaceValidity::valid;
 };
 
-/// The texture under a load: each level's touch and the snapshots.
+/// The texture under a load: each level's touch, each site's (cap's), and the snapshots.
 struct SurfaceHistory {
   std::vector<LevelTouch> levels;
+  /// Per site (the geometry's order): when its own tip touches, from its own touchdown load
+  /// (LoadCurve::site_touchdown); a level's touch is its first site's.
+  std::vector<LevelTouch> sites;
   std::vector<SurfaceSnapshot> snapshots;
 };
 
@@ -77,6 +80,11 @@ SurfaceValidity reading_validity(const LoadCurve& curve, double X0, const CurveS
 /// limit's (LoadCurve::level_small_spot); +infinity (untouched by the curve's end) where the
 /// curve reached full contact or ends at or above X_resolved.
 bool touchdown_resolved(const LoadCurve& curve, std::size_t level);
+
+/// Whether `curve` resolves site `site`'s touchdown: as its level's where it is the level's
+/// first (the same load), else where it is 0, at or above X_resolved, or +infinity with
+/// the curve ending at full contact or past X_resolved.
+bool site_touchdown_resolved(const LoadCurve& curve, std::size_t site);
 
 /// A level's touch under `load` from its touchdown load X* (model::classify), `resolved` as
 /// its parts say.

@@ -265,7 +265,7 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     """`punchsweep surface` in-process: a square or hexagonal lattice (lattice="hexagonal") of
     two levels, or three with dh2, or any cell (cell="FILE", docs/cli.md), or a measured
     period (height_map="FILE" of CSV, .npy or SurfaceTopography NetCDF, pixel=, height_unit=, summit_radius=,
-    level_gap=), or a supercell of a lattice or cell whose caps' heights scatter
+    prominence=, level_gap=), or a supercell of a lattice or cell whose caps' heights scatter
     (supercell=8, scatter="normal:0.5um", seed=1), under a material and a load, from its
     cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns a
     SurfaceResult (the command's JSON, typed): levels (a SurfaceLevel each: regime, t_star,

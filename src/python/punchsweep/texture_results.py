@@ -161,7 +161,11 @@ class SurfaceResult(_JsonRecord):
     curve: the load curve's source, samples, first/resolved/last/full loads (E0*), seconds,
     whether cached and the grid it was held to; inputs: the inputs as the command reads them;
     lattice ('square', 'hexagonal', 'cell' or 'height map'); cell: the cell's sides (R);
-    grid: its nodes (x, y); supercell; caps: caps in the cell; advisories and
+    grid: its nodes (x, y); supercell; caps: caps in the cell; cap_list: a dict per cap
+    (x, y, drop in R; level; s, C of its paraboloid; its own touch: regime, t_star, X_star,
+    resolved; prominence in R for a measured map, None for its highest); summits: for a
+    measured map what a summit had to rise (least_prominence, R), the map's height_range (R)
+    and how many rose less (below_prominence), else None; advisories and
     advisory_reason: the texture's physical advisories and their sentence; notes: what
     reading the inputs changed; units: the unit of each scaled quantity."""
     inputs: str
@@ -173,6 +177,8 @@ class SurfaceResult(_JsonRecord):
     grid: list = field(default_factory=list)
     supercell: int = 1
     caps: int = 0
+    cap_list: list = field(default_factory=list)
+    summits: dict | None = None
     curve: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
     advisories: str = ""
