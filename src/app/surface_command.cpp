@@ -47,6 +47,11 @@ int run_surface_command(const std::vector<std::string>& given, std::ostream& out
     return 0;
   }
   const report::OutputFormat format = report::read_output_format(vm);
+  if (run.seeds > 1) {
+    const engine::SurfaceEnsemble ensemble = engine::evaluate_ensemble(run, vm, material, true);
+    report::write_surface(out, format, run, &ensemble);
+    return 0;
+  }
   engine::evaluate(run, true);
   report::write_surface(out, format, run);
   return 0;

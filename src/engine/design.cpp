@@ -157,6 +157,9 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
       a.scatter = value;
     } else if (name == "seed") {
       a.seed = value;
+    } else if (name == "seeds") {
+      throw input::UsageError("--seeds: a design answers one drawn supercell (--seed); an ensemble's spread is "
+                              "surface --seeds N's, at the edges the design gives");
     } else if (name == "cell" || name == "height-map" || name == "pixel" || name == "height-unit" ||
                name == "summit-radius" || name == "prominence" || name == "level-gap") {
       a.texture_file.emplace_back(name, value);

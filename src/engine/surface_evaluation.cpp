@@ -11,6 +11,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -150,6 +151,8 @@ constexpr double kCurveSecondsScale = 5.54e-5, kCurveSecondsNodePower = 1.047, k
                  kCurveSecondsMirrored = 0.410, kCurveSecondsMirroredX = 0.696;
 /// The largest supercell: K x K lattice cells.
 constexpr int kMaxSupercell = 32;
+/// The most draws of an ensemble (--seeds): each its own curve.
+constexpr int kMaxSeeds = 1000;
 
 /// --scatter's text: normal:SD, uniform:HALFWIDTH (lengths, >= 0) or list:V1,V2,...
 model::HeightScatter read_scatter(const std::string& text, const input::PhysicalScales& scales) {
@@ -224,6 +227,11 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "needs --supercell")
       ("seed", po::value<std::string>()->value_name("N")->default_value("1"),
        "the seed of --scatter's draws, an integer in [0, 2^64-1] (std::mt19937_64, fully specified: the same seed gives the same caps)")
+      ("seeds", po::value<int>()->value_name("N")->default_value(1),
+       "an ensemble: the scatter drawn with seeds --seed to --seed + N - 1 (each its own supercell and curve); "
+       "each level's touch times of its first, median and last cap and each time's area fraction and shares of "
+       "caps in contact as their mean, standard deviation, standard error and 5-95% band over the draws: an "
+       "integer in [1, 1000]; N > 1 needs --scatter normal or uniform")
       ("full-curve", po::bool_switch(),
        "build the load curve to full contact; by default it stops at its first sample past the largest "
        "creep-weighted load the question reaches (X(inf) of the pressure, over the tolerances' corners), "
@@ -466,6 +474,21 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
                               std::to_string(caps) + " for " + std::to_string(run.supercell) + " x " +
                               std::to_string(run.supercell) + " cells of " + std::to_string(run.geometry.sites.size()) +
                               " caps");
+    }
+  }
+  run.seeds = vm["seeds"].as<int>();
+  if (run.seeds < 1 || run.seeds > kMaxSeeds) {
+    throw input::UsageError("--seeds = " + std::to_string(run.seeds) + " is outside its range: an integer in [1, " +
+                            std::to_string(kMaxSeeds) + "]");
+  }
+  if (run.seeds > 1) {
+    if (run.scatter.kind != model::HeightScatter::Kind::normal && run.scatter.kind != model::HeightScatter::Kind::uniform) {
+      throw input::UsageError("--seeds " + std::to_string(run.seeds) +
+                              " draws the scatter again for each seed: it needs --scatter normal:SD or uniform:HALFWIDTH "
+                              "(with --supercell K)");
+    }
+    if (seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(run.seeds - 1)) {
+      throw input::UsageError("--seed + --seeds - 1 passes 2^64 - 1: a lower --seed");
     }
   }
   if (run.supercell > 1) run.geometry = model::supercell(run.geometry, run.supercell, run.scatter);
@@ -1035,6 +1058,93 @@ SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoint
     evaluate(run, false, also_held);
     return std::move(run);
   });
+}
+
+namespace {
+
+/// One draw's values for its ensemble.
+SurfaceEnsemble::Member ensemble_member(const SurfaceRun& run, std::uint64_t seed) {
+  SurfaceEnsemble::Member m;
+  m.seed = seed;
+  const std::size_t L = run.history.levels.size();
+  std::vector<std::vector<double>> caps(L);
+  for (std::size_t k = 0; k < run.geometry.sites.size(); ++k) {
+    caps[static_cast<std::size_t>(run.geometry.sites[k].level)].push_back(run.history.sites[k].t_star);
+  }
+  for (std::vector<double>& times : caps) {
+    std::sort(times.begin(), times.end());
+    m.first.push_back(times.front());
+    m.median.push_back(model::percentile(times, 0.5));
+    m.last.push_back(times.back());
+  }
+  const auto series = [&](auto value) {
+    std::vector<double> out;
+    for (const model::SurfaceSnapshot& s : run.history.snapshots) out.push_back(value(s));
+    return out;
+  };
+  m.series.push_back(series([](const model::SurfaceSnapshot& s) { return s.state.area_fraction; }));
+  m.series.push_back(series([](const model::SurfaceSnapshot& s) { return s.state.sites_touched; }));
+  for (std::size_t level = 0; level < L; ++level) {
+    m.series.push_back(series([level](const model::SurfaceSnapshot& s) { return s.state.level_sites_touched[level]; }));
+  }
+  for (std::size_t level = 0; level < L; ++level) m.resolved.push_back(run.history.levels[level].resolved ? 1 : 0);
+  m.valid = series([](const model::SurfaceSnapshot& s) { return s.validity == model::SurfaceValidity::valid ? 1.0 : 0.0; });
+  return m;
+}
+
+}  // namespace
+
+SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& given, const input::PointMaterial& material,
+                                  bool progress) {
+  SurfaceEnsemble out;
+  const std::uint64_t first = run.scatter.seed;
+  for (int k = 0; k < run.seeds; ++k) {
+    const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
+    if (progress) std::cerr << "punchsweep surface: draw " << k + 1 << " of " << run.seeds << " (seed " << seed << ")\n";
+    if (k == 0) {
+      evaluate(run, progress);
+      out.members.push_back(ensemble_member(run, seed));
+      continue;
+    }
+    po::variables_map vm = given;
+    static_cast<std::map<std::string, po::variable_value>&>(vm)["seed"] = po::variable_value(boost::any(std::to_string(seed)), false);
+    SurfaceRun draw = read_surface(vm, material);
+    evaluate(draw, progress);
+    out.members.push_back(ensemble_member(draw, seed));
+  }
+  const std::size_t L = run.history.levels.size();
+  const auto over_draws = [&](auto value) {
+    std::vector<double> values;
+    for (const SurfaceEnsemble::Member& m : out.members) values.push_back(value(m));
+    return model::sample_statistics(std::move(values));
+  };
+  for (std::size_t level = 0; level < L; ++level) {
+    out.levels.push_back({over_draws([level](const SurfaceEnsemble::Member& m) { return m.first[level]; }),
+                          over_draws([level](const SurfaceEnsemble::Member& m) { return m.median[level]; }),
+                          over_draws([level](const SurfaceEnsemble::Member& m) { return m.last[level]; })});
+  }
+  out.series_names = {"area_fraction", "touched"};
+  for (std::size_t level = 0; level < L; ++level) out.series_names.push_back("touched_" + std::to_string(level));
+  for (std::size_t q = 0; q < out.series_names.size(); ++q) {
+    std::vector<model::SampleStatistics> at;
+    for (std::size_t t = 0; t < run.history.snapshots.size(); ++t) {
+      at.push_back(over_draws([q, t](const SurfaceEnsemble::Member& m) { return m.series[q][t]; }));
+    }
+    out.series.push_back(std::move(at));
+  }
+  return out;
+}
+
+std::pair<SurfaceRun, std::optional<SurfaceEnsemble>> evaluate_surface_ensemble(const input::Keywords& keywords) {
+  const input::PointMaterial material = input::find_point_material(keywords);
+  const po::variables_map vm = input::parse_keywords(keywords, surface_options(material), "surface");
+  SurfaceRun run = read_surface(vm, material);
+  if (run.seeds == 1) {
+    evaluate(run, false);
+    return {std::move(run), std::nullopt};
+  }
+  SurfaceEnsemble ensemble = evaluate_ensemble(run, vm, material, false);
+  return {std::move(run), std::move(ensemble)};
 }
 
 TextureParts texture_parts(const input::Keywords& keywords, const MoreLoadPoints& also_held) {

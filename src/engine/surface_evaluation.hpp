@@ -10,10 +10,13 @@
 #include <boost/program_options/options_description.hpp>
 #include <boost/program_options/variables_map.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "input/command_options.hpp"
@@ -82,6 +85,16 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held = 
 /// command's own options, checks and code; `also_held`: the load points --grid auto holds
 /// beside the run's own.
 SurfaceRun evaluate_surface(const input::Keywords& keywords, const MoreLoadPoints& also_held = {});
+
+/// The ensemble of `run` (read_surface's, run.seeds > 1): the run evaluated as it is (the
+/// first draw) and again with each later seed, re-read from `given` with the seed changed.
+/// The first stays in `run`.
+SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const boost::program_options::variables_map& given,
+                                  const input::PointMaterial& material, bool progress);
+
+/// The ensemble of `punchsweep surface`'s keywords (Python's surface(seeds=N)): its first
+/// draw's run and the ensemble (empty for one seed).
+std::pair<SurfaceRun, std::optional<SurfaceEnsemble>> evaluate_surface_ensemble(const input::Keywords& keywords);
 
 /// A texture's parts (model::GeometryParts) and the run they come from.
 struct TextureParts {

@@ -3,6 +3,7 @@
 /// One texture as `punchsweep surface` evaluates it (surface_command.hpp) and prints it
 /// (surface_output.hpp): its inputs, geometry, curve, history and checks.
 
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@
 #include "model/surface/load_curve.hpp"
 #include "model/surface/surface_history.hpp"
 #include "reference/cell_stepping.hpp"
+#include "model/numerics/sample_statistics.hpp"
 #include "reference/measured_cell.hpp"
 
 namespace punchsweep::engine {
@@ -34,6 +36,7 @@ struct SurfaceRun {
   std::vector<double> times;
   int supercell = 1;   ///< K: the cell is K x K lattice cells
   model::HeightScatter scatter;
+  int seeds = 1;       ///< --seeds N: an ensemble of N draws of the scatter (evaluate_ensemble)
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
   /// --grid auto: the grid the taken one was held to (half its nodes; 0 where not held),
   /// each level's relative move of t* between them (+infinity where the regime changed),
@@ -66,6 +69,31 @@ struct SurfaceRun {
   /// The stepping's touch times are the middles of intervals this wide (their uncertainty
   /// is half of it): reference::CellReferenceOptions::t_star_resolution, scaled to the law.
   double check_t_star_resolution = 0.0;
+};
+
+/// What an ensemble of drawn textures (--seeds N: the scatter drawn with seeds --seed to
+/// --seed + N - 1, each its own supercell and curve) says: per level the touch times of its
+/// first, median and last cap, per time the area fraction and the shares of caps in
+/// contact (all and each level's), each as its mean, spread and 5-95% band over the draws;
+/// and each draw's own values.
+struct SurfaceEnsemble {
+  struct Member {
+    std::uint64_t seed = 0;
+    /// Per level: the touch time of its first, median and last cap (+infinity: never).
+    std::vector<double> first, median, last;
+    /// Per series (SurfaceEnsemble::series_names), per time.
+    std::vector<std::vector<double>> series;
+    std::vector<char> resolved;  ///< per level: whether the draw's curve resolves its touch
+    std::vector<double> valid;   ///< per time: 1 where the draw's snapshot is valid, else 0
+  };
+  struct Level {
+    model::SampleStatistics first, median, last;
+  };
+  std::vector<Member> members;
+  std::vector<Level> levels;
+  /// area_fraction, touched, touched_0, touched_1, ...: per series, per time.
+  std::vector<std::string> series_names;
+  std::vector<std::vector<model::SampleStatistics>> series;
 };
 
 }  // namespace punchsweep::engine

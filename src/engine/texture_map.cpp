@@ -70,6 +70,7 @@ struct Refused {
 constexpr Refused kRefused[] = {
     {"check", "the time stepping checks a sample of the map's load points: --check-sample K"},
     {"format", "the map is a netCDF-4 file (--output)"},
+    {"seeds", "a map draws one supercell per value of its seed axis ([texture] seed = 1:8) and keeps each"},
 };
 
 /// A map's limits (refused up front): geometries, each a load curve.

@@ -12,6 +12,7 @@
 #include "input/command_options.hpp"
 #include "model/laws/material.hpp"
 #include "model/numerics/number_text.hpp"
+#include "model/numerics/sample_statistics.hpp"
 #include "model/surface/surface_advisory.hpp"
 
 namespace punchsweep::report {
@@ -175,7 +176,58 @@ model::LevelTouch cap_touch(const engine::SurfaceRun& run, std::size_t k) {
   return touch;
 }
 
-void write_json(std::ostream& out, const engine::SurfaceRun& run) {
+/// A sample's statistics as a JSON object (null for a NaN or infinite value).
+std::string stats_json(const model::SampleStatistics& s) {
+  std::ostringstream o;
+  o << "{\"n\": " << s.n << ", \"mean\": " << num(s.mean) << ", \"sd\": " << num(s.sd) << ", \"se\": " << num(s.se)
+    << ", \"p5\": " << num(s.p5) << ", \"median\": " << num(s.median) << ", \"p95\": " << num(s.p95)
+    << ", \"infinite\": " << s.infinite << "}";
+  return o.str();
+}
+
+/// The JSON list of `values`, each by `text`.
+template <class Values, class Text>
+std::string json_list(const Values& values, Text text) {
+  std::string o = "[";
+  for (std::size_t k = 0; k < values.size(); ++k) o += (k ? ", " : "") + text(values[k]);
+  return o + "]";
+}
+
+/// "ensemble": an ensemble's statistics and each draw's values (engine::SurfaceEnsemble).
+void write_ensemble_json(std::ostream& out, const engine::SurfaceEnsemble& e) {
+  out << "  \"ensemble\": {\n    \"seeds\": " << json_list(e.members, [](const auto& m) { return std::to_string(m.seed); })
+      << ",\n    \"levels\": [";
+  for (std::size_t level = 0; level < e.levels.size(); ++level) {
+    out << (level ? ",\n      " : "\n      ") << "{\"level\": " << level << ", \"first\": " << stats_json(e.levels[level].first)
+        << ", \"median\": " << stats_json(e.levels[level].median) << ", \"last\": " << stats_json(e.levels[level].last) << "}";
+  }
+  out << "\n    ],\n    \"series\": {";
+  for (std::size_t q = 0; q < e.series_names.size(); ++q) {
+    const std::vector<model::SampleStatistics>& at = e.series[q];
+    const auto column = [&](double model::SampleStatistics::*field) {
+      return json_list(at, [field](const model::SampleStatistics& s) { return num(s.*field); });
+    };
+    out << (q ? ",\n      " : "\n      ") << input::json_string(e.series_names[q]) << ": {\"mean\": " << column(&model::SampleStatistics::mean)
+        << ", \"sd\": " << column(&model::SampleStatistics::sd) << ", \"se\": " << column(&model::SampleStatistics::se)
+        << ", \"p5\": " << column(&model::SampleStatistics::p5) << ", \"median\": " << column(&model::SampleStatistics::median)
+        << ", \"p95\": " << column(&model::SampleStatistics::p95) << "}";
+  }
+  out << "\n    },\n    \"members\": [";
+  for (std::size_t k = 0; k < e.members.size(); ++k) {
+    const engine::SurfaceEnsemble::Member& m = e.members[k];
+    out << (k ? ",\n      " : "\n      ") << "{\"seed\": " << m.seed << ", \"first\": " << json_list(m.first, num)
+        << ", \"median\": " << json_list(m.median, num) << ", \"last\": " << json_list(m.last, num)
+        << ", \"resolved\": " << json_list(m.resolved, [](char r) { return std::string(r ? "true" : "false"); })
+        << ", \"valid\": " << json_list(m.valid, [](double v) { return std::string(v != 0.0 ? "true" : "false"); });
+    for (std::size_t q = 0; q < e.series_names.size(); ++q) {
+      out << ", " << input::json_string(e.series_names[q]) << ": " << json_list(m.series[q], num);
+    }
+    out << "}";
+  }
+  out << "\n    ]\n  },\n";
+}
+
+void write_json(std::ostream& out, const engine::SurfaceRun& run, const engine::SurfaceEnsemble* ensemble) {
   const int L = run.curve.levels();
   out << "{\n  \"inputs\": " << input::json_string(run.inputs.describe()) << ",\n";
   out << "  \"lattice\": " << input::json_string(run.measured ? "height map" : run.cell_file.empty() ? model::lattice_name(run.lattice) : "cell") << ",\n";
@@ -268,6 +320,7 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run) {
   out << "  },\n";
   write_physical(out, run, advice);
   if (run.stepped) write_check(out, run);
+  if (ensemble) write_ensemble_json(out, *ensemble);
   out << "  \"units\": {\"t\": " << input::json_string(run.inputs.time_unit)
       << ", \"X\": \"E0*\", \"area\": \"R^2\", \"load\": \"R^2 E0*\", \"drop\": \"R\", \"cell\": \"R\", \"contact_radius\": \"R\"}\n}\n";
 }
@@ -295,7 +348,54 @@ void write_measured_caps(std::ostream& out, const engine::SurfaceRun& run, bool 
   }
 }
 
-void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
+/// An ensemble's lines: each level's first, median and last cap's touch time over the
+/// draws, then per time the area fraction and shares of caps in contact (mean, sd, 5-95%).
+void write_ensemble_table(std::ostream& out, const engine::SurfaceRun& run, const engine::SurfaceEnsemble& e, bool csv) {
+  const char* lead = csv ? "# " : "  ";
+  const char* sep = csv ? "," : "  ";
+  const std::size_t n = e.members.size();
+  out << lead << "ensemble: " << n << " draws of the scatter, seeds " << e.members.front().seed << " to " << e.members.back().seed
+      << " (the caps and levels above are seed " << e.members.front().seed << "'s; the rows below are over the draws)\n";
+  const auto stats = [&](const model::SampleStatistics& s) {
+    std::ostringstream o;
+    if (s.infinite == s.n) return std::string("never in every draw");
+    o << "mean " << s.mean;
+    if (std::isfinite(s.sd)) o << " +- " << s.se << " (sd " << s.sd << ")";
+    o << ", 5-95% " << s.p5 << " to " << s.p95;
+    if (s.infinite > 0) o << " (never in " << s.infinite << " of " << s.n << " draws)";
+    return o.str();
+  };
+  for (std::size_t level = 1; level < e.levels.size(); ++level) {
+    const char* names[] = {"first", "median", "last"};
+    const model::SampleStatistics* of[] = {&e.levels[level].first, &e.levels[level].median, &e.levels[level].last};
+    std::size_t unresolved = 0;
+    for (const engine::SurfaceEnsemble::Member& m : e.members) unresolved += m.resolved[level] ? 0 : 1;
+    for (int k = 0; k < 3; ++k) {
+      out << lead << "ensemble: level " << level << ", its " << names[k] << " cap's t*: " << stats(*of[k]) << " " << run.inputs.time_unit
+          << "\n";
+    }
+    if (unresolved > 0) {
+      out << lead << "ensemble: level " << level << " below the curve's resolution in " << unresolved << " of " << n
+          << " draws (a finer --grid answers)\n";
+    }
+  }
+  out << "t";
+  for (const std::string& name : e.series_names) {
+    for (const char* stat : {"mean", "sd", "p5", "p95"}) out << sep << name << "_" << stat;
+  }
+  out << sep << "valid_draws\n";
+  for (std::size_t t = 0; t < run.history.snapshots.size(); ++t) {
+    out << run.history.snapshots[t].t;
+    for (const std::vector<model::SampleStatistics>& at : e.series) {
+      out << sep << at[t].mean << sep << at[t].sd << sep << at[t].p5 << sep << at[t].p95;
+    }
+    double valid = 0.0;
+    for (const engine::SurfaceEnsemble::Member& m : e.members) valid += m.valid[t];
+    out << sep << valid << "\n";
+  }
+}
+
+void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv, const engine::SurfaceEnsemble* ensemble) {
   const int L = run.curve.levels();
   const char* sep = csv ? "," : "  ";
   out << (csv ? "# " : "") << "punchsweep surface: "
@@ -375,6 +475,10 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
     }
     out << (csv ? "# " : "  ") << "check: " << run.stepped->steps << " time steps, " << run.check_seconds << " s\n";
   }
+  if (ensemble) {
+    write_ensemble_table(out, run, *ensemble, csv);
+    return;
+  }
   out << "t" << sep << "X" << sep << "area_fraction" << sep << "sites_touched";
   for (int level = 0; level < L; ++level) out << sep << "area_" << level;
   for (int level = 0; level < L; ++level) out << sep << "load_" << level;
@@ -394,17 +498,18 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
 
 }  // namespace
 
-void write_surface(std::ostream& out, OutputFormat format, const engine::SurfaceRun& run) {
+void write_surface(std::ostream& out, OutputFormat format, const engine::SurfaceRun& run, const engine::SurfaceEnsemble* ensemble) {
   if (format == OutputFormat::json) {
-    write_json(out, run);
+    write_json(out, run, ensemble);
   } else {
-    write_table(out, run, format == OutputFormat::csv);
+    write_table(out, run, format == OutputFormat::csv, ensemble);
   }
 }
 
 std::string surface_json(const input::Keywords& keywords) {
   std::ostringstream out;
-  write_surface(out, OutputFormat::json, engine::evaluate_surface(keywords));
+  const auto [run, ensemble] = engine::evaluate_surface_ensemble(keywords);
+  write_surface(out, OutputFormat::json, run, ensemble ? &*ensemble : nullptr);
   return out.str();
 }
 

@@ -165,7 +165,11 @@ class SurfaceResult(_JsonRecord):
     (x, y, drop in R; level; s, C of its paraboloid; its own touch: regime, t_star, X_star,
     resolved; prominence in R for a measured map, None for its highest); summits: for a
     measured map what a summit had to rise (least_prominence, R), the map's height_range (R)
-    and how many rose less (below_prominence), else None; advisories and
+    and how many rose less (below_prominence), else None; ensemble: with seeds=N > 1 the
+    draws' seeds, per level the touch times of its first, median and last cap and per series
+    (area_fraction, touched, touched_0, ...) per time, each as n, mean, sd, se, p5, median,
+    p95 (and infinite: draws that never touch), and each draw's own values (members), else
+    None (the rest of the result is the first draw's); advisories and
     advisory_reason: the texture's physical advisories and their sentence; notes: what
     reading the inputs changed; units: the unit of each scaled quantity."""
     inputs: str
@@ -179,6 +183,7 @@ class SurfaceResult(_JsonRecord):
     caps: int = 0
     cap_list: list = field(default_factory=list)
     summits: dict | None = None
+    ensemble: dict | None = None
     curve: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
     advisories: str = ""

@@ -1,0 +1,93 @@
+"""An ensemble of drawn textures (issue 51): `surface --seeds N` draws the scatter with seeds
+--seed .. --seed + N - 1 and gives each level's first, median and last cap's touch time and
+each time's area fraction and shares of caps in contact as mean, spread and 5-95% band over
+the draws. Expected values: the N single-seed runs (seed=k, each its own call), their caps'
+touch times sorted here, and numpy's mean, std (ddof=1) and percentile (linear)."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import punchsweep
+
+REPO = Path(__file__).resolve().parents[2]
+BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punchsweep"))
+
+# A hexagonal two-level mould, 2 x 2 cells, each cap's height scattered by 0.005 R: level 1's
+# caps touch over about a decade of time, differently in each draw.
+TEXTURE = dict(lattice="hexagonal", l=1.5, dh=0.06, s=2, supercell=2, scatter="normal:0.005", grid=32, T=2.5, pbar=0.01,
+               times=[0, 0.1, 0.3, 1, 3])
+
+
+def check_statistics(stats: dict, values: list[float]) -> None:
+    v = np.asarray(values, dtype=float)
+    assert stats["n"] == len(v)
+    assert stats["mean"] == pytest.approx(v.mean(), rel=1e-12, abs=1e-15)
+    assert stats["sd"] == pytest.approx(v.std(ddof=1), rel=1e-9, abs=1e-15)
+    assert stats["se"] == pytest.approx(v.std(ddof=1) / np.sqrt(len(v)), rel=1e-9, abs=1e-15)
+    for key, p in (("p5", 5), ("median", 50), ("p95", 95)):
+        assert stats[key] == pytest.approx(np.percentile(v, p), rel=1e-12, abs=1e-15)
+
+
+def test_eight_seeds_give_the_mean_spread_and_band_of_the_eight_draws():
+    out = punchsweep.surface(seed=3, seeds=8, **TEXTURE)
+    ensemble = out.ensemble
+    assert ensemble["seeds"] == list(range(3, 11))
+    singles = [punchsweep.surface(seed=seed, **TEXTURE) for seed in range(3, 11)]
+    # The result's own levels and caps are the first draw's.
+    assert [c["t_star"] for c in out.cap_list] == [c["t_star"] for c in singles[0].cap_list]
+    for level in range(len(out.levels)):
+        firsts, medians, lasts = [], [], []
+        for single in singles:
+            times = sorted(np.inf if c["t_star"] is None else c["t_star"] for c in single.cap_list if c["level"] == level)
+            firsts.append(times[0])
+            medians.append(float(np.median(times)))
+            lasts.append(times[-1])
+            assert times[0] == (np.inf if single.levels[level].t_star is None else single.levels[level].t_star)
+        stats = ensemble["levels"][level]
+        check_statistics(stats["first"], firsts)
+        check_statistics(stats["median"], medians)
+        check_statistics(stats["last"], lasts)
+    # Level 1 spreads: its caps touch at different times in each draw.
+    assert ensemble["levels"][1]["first"]["sd"] > 0 and ensemble["levels"][1]["last"]["p95"] > ensemble["levels"][1]["first"]["p5"]
+    for name, key in (("area_fraction", "area_fraction"), ("touched", "sites_touched"), ("touched_1", "touched_1")):
+        series = ensemble["series"][name]
+        for t in range(len(TEXTURE["times"])):
+            draws = [float(single.series[key][t]) for single in singles]
+            stats = {stat: series[stat][t] for stat in ("mean", "sd", "se", "p5", "median", "p95")}
+            check_statistics(dict(stats, n=8), draws)
+    for member, single in zip(ensemble["members"], singles):
+        np.testing.assert_array_equal(member["area_fraction"], single.series["area_fraction"])
+
+
+def test_the_table_and_csv_give_the_ensemble_rows():
+    args = ["--lattice", "hexagonal", "--l", "1.5", "--dh", "0.06", "--s", "2", "--supercell", "2", "--scatter", "normal:0.005",
+            "--grid", "32", "--T", "2.5", "--pbar", "0.01", "--times", "0,0.1,0.3,1,3", "--seeds", "3"]
+    csv = subprocess.run([BINARY, "surface", *args, "--format", "csv"], capture_output=True, text=True, timeout=600)
+    assert csv.returncode == 0, csv.stderr
+    rows = [line for line in csv.stdout.splitlines() if not line.startswith("#")]
+    assert rows[0].split(",")[:3] == ["t", "area_fraction_mean", "area_fraction_sd"] and rows[0].endswith("valid_draws")
+    assert len(rows) == 6
+    js = json.loads(subprocess.run([BINARY, "surface", *args, "--format", "json"], capture_output=True, text=True,
+                                   timeout=600).stdout)
+    first_row = [float(x) for x in rows[1].split(",")]
+    assert first_row[1] == pytest.approx(js["ensemble"]["series"]["area_fraction"]["mean"][0], rel=1e-5)
+    assert "# ensemble: level 1, its first cap's t*: mean" in csv.stdout
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--seeds", "4"], "needs --scatter normal:SD or uniform:HALFWIDTH"),
+    (["--supercell", "2", "--scatter", "list:" + ",".join(["0"] * 24), "--seeds", "4"], "needs --scatter normal:SD or uniform"),
+    (["--supercell", "2", "--scatter", "normal:0.005", "--seeds", "0"], "--seeds = 0 is outside its range: an integer in [1, 1000]"),
+    (["--supercell", "2", "--scatter", "normal:0.005", "--seeds", "1001"], "an integer in [1, 1000]"),
+])
+def test_a_bad_ensemble_is_refused_by_name(args, message):
+    run = subprocess.run([BINARY, "surface", "--lattice", "hexagonal", "--l", "1.5", "--dh", "0.06", "--s", "2", "--T", "2.5",
+                          "--pbar", "0.01", *args], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2 and message in run.stderr, run.stderr
+    assert run.stdout == ""
