@@ -157,6 +157,9 @@ DesignArgs split_keywords(const input::Keywords& keywords) {
       a.scatter = value;
     } else if (name == "seed") {
       a.seed = value;
+    } else if (name == "curvature-scatter") {
+      throw input::UsageError("--curvature-scatter: a design's caps keep one shape a level (surface and maps take "
+                              "scattered curvatures)");
     } else if (name == "seeds") {
       throw input::UsageError("--seeds: a design answers one drawn supercell (--seed); an ensemble's spread is "
                               "surface --seeds N's, at the edges the design gives");

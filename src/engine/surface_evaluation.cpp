@@ -155,30 +155,43 @@ constexpr int kMaxSupercell = 32;
 constexpr int kMaxSeeds = 1000;
 
 /// --scatter's text: normal:SD, uniform:HALFWIDTH (lengths, >= 0) or list:V1,V2,...
-model::HeightScatter read_scatter(const std::string& text, const input::PhysicalScales& scales) {
-  const std::string valid = "normal:SD, uniform:HALFWIDTH (a length >= 0) or list:V1,V2,... (lengths)";
+/// A scatter's text (`option`'s): normal:SD, uniform:HALFWIDTH (>= 0) or list:V1,V2,...,
+/// each value read by `value` (a length for --scatter, a pure number for
+/// --curvature-scatter, whose `what` says which).
+template <class Value>
+model::HeightScatter read_scatter(const std::string& text, const std::string& option, const std::string& what, Value value) {
+  const std::string valid = "normal:SD, uniform:HALFWIDTH (" + what + " >= 0) or list:V1,V2,...";
   const std::size_t colon = text.find(':');
   const std::string kind = text.substr(0, colon), rest = colon == std::string::npos ? "" : text.substr(colon + 1);
-  const auto length = [&](const std::string& value) { return input::read_length(value, scales, "--scatter"); };
   model::HeightScatter out;
   if (kind == "normal" || kind == "uniform") {
     out.kind = kind == "normal" ? model::HeightScatter::Kind::normal : model::HeightScatter::Kind::uniform;
-    out.width = length(rest);
+    out.width = value(rest);
     if (!(std::isfinite(out.width) && out.width >= 0.0)) {
-      throw input::UsageError("--scatter = '" + text + "' is outside its range: " + valid);
+      throw input::UsageError(option + " = '" + text + "' is outside its range: " + valid);
     }
   } else if (kind == "list") {
     out.kind = model::HeightScatter::Kind::list;
     std::stringstream items(rest);
     for (std::string item; std::getline(items, item, ',');) {
-      const double v = length(item);
-      if (!std::isfinite(v)) throw input::UsageError("--scatter = '" + text + "': " + item + " is not finite");
+      const double v = value(item);
+      if (!std::isfinite(v)) throw input::UsageError(option + " = '" + text + "': " + item + " is not finite");
       out.values.push_back(v);
     }
   } else {
-    throw input::UsageError("--scatter = '" + text + "' is not one of: " + valid);
+    throw input::UsageError(option + " = '" + text + "' is not one of: " + valid);
   }
   return out;
+}
+
+model::HeightScatter read_height_scatter(const std::string& text, const input::PhysicalScales& scales) {
+  return read_scatter(text, "--scatter", "a length", [&](const std::string& v) { return input::read_length(v, scales, "--scatter"); });
+}
+
+model::HeightScatter read_curvature_scatter(const std::string& text) {
+  return read_scatter(text, "--curvature-scatter", "a pure number", [&](const std::string& v) {
+    return input::parse_real(v, "--curvature-scatter");
+  });
 }
 
 }  // namespace
@@ -225,6 +238,10 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "each cap's height change (a positive one lowers the cap): normal:SD, uniform:HALFWIDTH (lengths "
        "in R, or with a unit and --R; >= 0) or list:V1,V2,... (one per cap of the supercell, in R); "
        "needs --supercell")
+      ("curvature-scatter", po::value<std::string>()->value_name("DIST"),
+       "each cap's curvature change in the supercell, relative: its C becomes C (1 + d) (a paraboloid's tip radius "
+       "over 1 + d): normal:SD, uniform:HALFWIDTH (pure numbers >= 0, the half-width below 1) or list:D1,D2,... "
+       "(one per cap); drawn after --scatter's heights from the same --seed; needs --supercell")
       ("seed", po::value<std::string>()->value_name("N")->default_value("1"),
        "the seed of --scatter's draws, an integer in [0, 2^64-1] (std::mt19937_64, fully specified: the same seed gives the same caps)")
       ("seeds", po::value<int>()->value_name("N")->default_value(1),
@@ -466,7 +483,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     if (run.supercell == 1 && vm["supercell"].defaulted()) {
       throw input::UsageError("--scatter needs --supercell K (the caps whose heights scatter: K x K cells)");
     }
-    run.scatter = read_scatter(vm["scatter"].as<std::string>(), run.inputs.scales);
+    run.scatter = read_height_scatter(vm["scatter"].as<std::string>(), run.inputs.scales);
     run.scatter.seed = seed;
     const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
     if (run.scatter.kind == model::HeightScatter::Kind::list && run.scatter.values.size() != caps) {
@@ -476,22 +493,47 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
                               " caps");
     }
   }
+  if (vm.count("curvature-scatter")) {
+    if (run.supercell == 1 && vm["supercell"].defaulted()) {
+      throw input::UsageError("--curvature-scatter needs --supercell K (the caps whose shapes scatter: K x K cells)");
+    }
+    run.curvature = read_curvature_scatter(vm["curvature-scatter"].as<std::string>());
+    run.curvature.seed = seed;
+    const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
+    if (run.curvature.kind == model::HeightScatter::Kind::list && run.curvature.values.size() != caps) {
+      throw input::UsageError("--curvature-scatter list has " + std::to_string(run.curvature.values.size()) +
+                              " values: it needs one per cap, " + std::to_string(caps));
+    }
+    if (run.curvature.kind == model::HeightScatter::Kind::uniform && !(run.curvature.width < 1.0)) {
+      throw input::UsageError("--curvature-scatter uniform:" + input::json_number(run.curvature.width) +
+                              " is outside its range: a half-width below 1 (C (1 + d) must stay > 0)");
+    }
+  }
   run.seeds = vm["seeds"].as<int>();
   if (run.seeds < 1 || run.seeds > kMaxSeeds) {
     throw input::UsageError("--seeds = " + std::to_string(run.seeds) + " is outside its range: an integer in [1, " +
                             std::to_string(kMaxSeeds) + "]");
   }
   if (run.seeds > 1) {
-    if (run.scatter.kind != model::HeightScatter::Kind::normal && run.scatter.kind != model::HeightScatter::Kind::uniform) {
+    const auto drawn = [](const model::HeightScatter& s) {
+      return s.kind == model::HeightScatter::Kind::normal || s.kind == model::HeightScatter::Kind::uniform;
+    };
+    if (!drawn(run.scatter) && !drawn(run.curvature)) {
       throw input::UsageError("--seeds " + std::to_string(run.seeds) +
                               " draws the scatter again for each seed: it needs --scatter normal:SD or uniform:HALFWIDTH "
-                              "(with --supercell K)");
+                              "(or --curvature-scatter's, with --supercell K)");
     }
     if (seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(run.seeds - 1)) {
       throw input::UsageError("--seed + --seeds - 1 passes 2^64 - 1: a lower --seed");
     }
   }
-  if (run.supercell > 1) run.geometry = model::supercell(run.geometry, run.supercell, run.scatter);
+  if (run.supercell > 1) {
+    try {
+      run.geometry = model::supercell(run.geometry, run.supercell, run.scatter, run.curvature);
+    } catch (const std::invalid_argument& e) {
+      throw input::UsageError(std::string("--curvature-scatter: ") + e.what() + " (a narrower width, or another --seed)");
+    }
+  }
   return run;
 }
 

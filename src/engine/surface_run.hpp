@@ -36,6 +36,7 @@ struct SurfaceRun {
   std::vector<double> times;
   int supercell = 1;   ///< K: the cell is K x K lattice cells
   model::HeightScatter scatter;
+  model::HeightScatter curvature;  ///< --curvature-scatter: each cap's C changed by C (1 + d)
   int seeds = 1;       ///< --seeds N: an ensemble of N draws of the scatter (evaluate_ensemble)
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
   /// --grid auto: the grid the taken one was held to (half its nodes; 0 where not held),

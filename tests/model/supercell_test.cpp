@@ -69,3 +69,32 @@ TEST(Supercell, copies_the_cell_and_takes_drops_from_the_tallest_cap) {
   EXPECT_EQ(g.sites[9].level, 1);
   EXPECT_FALSE(model::mirror_symmetric(g));
 }
+
+TEST(Supercell, a_curvature_scatter_changes_each_caps_C_and_leaves_the_heights_drawn) {
+  // Heights drawn alone, and with a curvature scatter after them from the same generator:
+  // the same drops; each cap's C is C (1 + d), d the generator's next draws after the
+  // heights' (so the first 18 normal draws of seed 7 are the heights', at width 0.01, and the
+  // next 18, at width 0.1, the curvatures').
+  const model::CellGeometry cell = model::lattice_cell(model::LatticeKind::square, 2.0, model::Shape{2, 0.5}, {0.1});
+  const model::HeightScatter heights{model::HeightScatter::Kind::normal, 0.01, {}, 7};
+  const model::HeightScatter curvature{model::HeightScatter::Kind::normal, 0.1, {}, 7};
+  const model::CellGeometry alone = model::supercell(cell, 3, heights);
+  const model::CellGeometry both = model::supercell(cell, 3, heights, curvature);
+  model::HeightScatter unit = heights;
+  unit.width = 1.0;
+  const std::vector<double> z = model::scatter_draws(unit, 36);  // standard normal draws of seed 7
+  ASSERT_EQ(both.sites.size(), 18u);
+  for (std::size_t k = 0; k < 18; ++k) {
+    EXPECT_EQ(both.sites[k].drop, alone.sites[k].drop);
+    EXPECT_EQ(alone.sites[k].shape.C, 0.5);
+    EXPECT_NEAR(both.sites[k].shape.C, 0.5 * (1.0 + 0.1 * z[18 + k]), 1e-15) << k;
+  }
+  // A list: its changes, cap by cap; a change of -1 or below is refused by the cap.
+  model::HeightScatter list{model::HeightScatter::Kind::list, 0.0, std::vector<double>(18, 0.0), 1};
+  list.values[5] = 0.25;
+  const model::CellGeometry one = model::supercell(cell, 3, {}, list);
+  EXPECT_DOUBLE_EQ(one.sites[5].shape.C, 0.625);
+  EXPECT_DOUBLE_EQ(one.sites[4].shape.C, 0.5);
+  list.values[5] = -1.0;
+  EXPECT_THROW(model::supercell(cell, 3, {}, list), std::invalid_argument);
+}

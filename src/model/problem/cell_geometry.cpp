@@ -226,7 +226,10 @@ CellGeometry lattice_cell(LatticeKind lattice, double l, const Shape& shape, con
   return g;
 }
 
-std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count) {
+namespace {
+
+/// `scatter`'s draws for `count` sites from `engine` (list: its values).
+std::vector<double> draws_from(const HeightScatter& scatter, std::size_t count, std::mt19937_64& engine) {
   using Kind = HeightScatter::Kind;
   if (scatter.kind == Kind::list) {
     if (scatter.values.size() != count) {
@@ -237,7 +240,6 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
   }
   std::vector<double> out(count, 0.0);
   if (scatter.kind == Kind::none) return out;
-  std::mt19937_64 engine(scatter.seed);
   // A double in (0, 1) from the engine's top 53 bits (never 0: Box-Muller takes its log).
   const auto unit = [&engine]() { return (static_cast<double>(engine() >> 11) + 0.5) * 0x1.0p-53; };
   for (std::size_t k = 0; k < count; ++k) {
@@ -251,12 +253,26 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
   return out;
 }
 
-CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter) {
+bool random(const HeightScatter& scatter) {
+  return scatter.kind == HeightScatter::Kind::normal || scatter.kind == HeightScatter::Kind::uniform;
+}
+
+}  // namespace
+
+std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count) {
+  std::mt19937_64 engine(scatter.seed);
+  return draws_from(scatter, count, engine);
+}
+
+CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature) {
   if (K < 1) throw std::invalid_argument("supercell: K >= 1");
   CellGeometry out;
   out.Lx = K * cell.Lx;
   out.Ly = K * cell.Ly;
-  const std::vector<double> draws = scatter_draws(scatter, static_cast<std::size_t>(K) * K * cell.sites.size());
+  const std::size_t count = static_cast<std::size_t>(K) * K * cell.sites.size();
+  std::mt19937_64 engine(random(scatter) ? scatter.seed : curvature.seed);
+  const std::vector<double> draws = draws_from(scatter, count, engine);
+  const std::vector<double> changes = draws_from(curvature, count, engine);
   std::size_t next = 0;
   for (const Site& site : cell.sites) {
     for (int i = 0; i < K; ++i) {
@@ -264,7 +280,14 @@ CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& sca
         Site copy = site;
         copy.x += i * cell.Lx;
         copy.y += j * cell.Ly;
-        copy.drop += draws[next++];
+        copy.drop += draws[next];
+        copy.shape.C *= 1.0 + changes[next];
+        if (!(copy.shape.C > 0.0) || !std::isfinite(copy.shape.C)) {
+          throw std::invalid_argument("supercell: cap " + std::to_string(next) + "'s curvature change " +
+                                      std::to_string(changes[next]) + " leaves its C at " + std::to_string(copy.shape.C) +
+                                      ": every change must be > -1");
+        }
+        ++next;
         out.sites.push_back(copy);
       }
     }

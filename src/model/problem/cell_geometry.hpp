@@ -149,7 +149,8 @@ std::string lattice_name(LatticeKind lattice);
 /// places Lattice names.
 CellGeometry lattice_cell(LatticeKind lattice, double l, const Shape& shape, const std::vector<double>& drops);
 
-/// How the heights of a supercell's sites scatter about their lattice's.
+/// How the heights of a supercell's sites scatter about their lattice's (or, as a pure
+/// number, their shapes' C: supercell's `curvature`).
 struct HeightScatter {
   enum class Kind { none, normal, uniform, list };
   Kind kind = Kind::none;
@@ -165,9 +166,14 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
 
 /// K x K copies of `cell` as one periodic cell (K >= 1), each copy's site raised by the
 /// next draw of `scatter` (a draw > 0 lowers the tip: it adds to the drop), the drops then
-/// taken from the tallest tip of all (the least drop becomes 0). The sites keep their
-/// levels; the copies of site k follow each other row by row.
-CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter);
+/// taken from the tallest tip of all (the least drop becomes 0), and its shape's C changed
+/// by the next draw d of `curvature` to C (1 + d) (a relative change: a paraboloid's tip
+/// radius 1 / (2C) over 1 + d). Where both draw at random, the curvature's draws follow the
+/// heights' from one generator, seeded with the heights' seed (so the heights are the same
+/// with or without them); alone, from the curvature's own seed. The sites keep their
+/// levels; the copies of site k follow each other row by row. Throws std::invalid_argument
+/// where a draw leaves C <= 0 (naming the cap).
+CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature = {});
 
 /// The two-level square lattice of `problem` (docs/model.md, section 3): the l x l cell, the
 /// level-1 punch at its corner (0, 0), the level-2 punch, lower by dh, at its centre

@@ -266,7 +266,8 @@ def surface(l: float | str | None = None, dh: float | str | None = None, *, latt
     two levels, or three with dh2, or any cell (cell="FILE", docs/cli.md), or a measured
     period (height_map="FILE" of CSV, .npy or SurfaceTopography NetCDF, pixel=, height_unit=, summit_radius=,
     prominence=, level_gap=), or a supercell of a lattice or cell whose caps' heights scatter
-    (supercell=8, scatter="normal:0.5um", seed=1; seeds=8 for an ensemble of eight draws), under a material and a load, from its
+    (supercell=8, scatter="normal:0.5um", curvature_scatter="normal:0.05", seed=1; seeds=8 for an ensemble of eight
+    draws), under a material and a load, from its
     cell's elastic load curve on grid nodes per pitch (docs/model.md, section 17). Returns a
     SurfaceResult (the command's JSON, typed): levels (a SurfaceLevel each: regime, t_star,
     X_star, resolved, drop, sites, share, contact_radius, advisories), series (t, X,
