@@ -529,7 +529,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   }
   if (run.supercell > 1) {
     try {
-      run.geometry = model::supercell(run.geometry, run.supercell, run.scatter, run.curvature);
+      run.geometry = model::supercell(run.geometry, run.supercell, run.scatter, run.curvature, &run.tallest_rise);
     } catch (const std::invalid_argument& e) {
       throw input::UsageError(std::string("--curvature-scatter: ") + e.what() + " (a narrower width, or another --seed)");
     }

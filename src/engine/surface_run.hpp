@@ -37,6 +37,9 @@ struct SurfaceRun {
   int supercell = 1;   ///< K: the cell is K x K lattice cells
   model::HeightScatter scatter;
   model::HeightScatter curvature;  ///< --curvature-scatter: each cap's C changed by C (1 + d)
+  /// A supercell's: how far its tallest tip drawn (the drops' origin) lies above the tallest
+  /// tips' design height, in R (0 without a height scatter).
+  double tallest_rise = 0.0;
   int seeds = 1;       ///< --seeds N: an ensemble of N draws of the scatter (evaluate_ensemble)
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
   /// --grid auto: the grid the taken one was held to (half its nodes; 0 where not held),

@@ -240,6 +240,7 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run, const engine::
   out << "  \"cell\": [" << num(run.geometry.Lx) << ", " << num(run.geometry.Ly) << "],\n";
   out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
   out << "  \"supercell\": " << run.supercell << ",\n";
+  if (run.supercell > 1) out << "  \"tallest_rise\": " << num(run.tallest_rise) << ",\n";
   out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
   out << "  \"curve\": {\"source\": " << input::json_string(curve_source_name(run)) << ", \"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_resolved\": " << num(run.curve.X_resolved)
@@ -429,6 +430,11 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv, con
   }
   out << ")\n";
   if (run.measured) write_measured_caps(out, run, csv);
+  if (run.supercell > 1 && run.scatter.kind != model::HeightScatter::Kind::none) {
+    const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
+    out << (csv ? "# " : "  ") << "heights: drops from the tallest tip drawn, " << run.tallest_rise * (unit ? unit->per_scaled : 1.0)
+        << " " << (unit ? unit->units : "R") << " above the tallest tips' design height (a larger supercell draws a taller one)\n";
+  }
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];
     out << (csv ? "# " : "  ") << "level " << level << ": " << model::regime_name(t.regime);

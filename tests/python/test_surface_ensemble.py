@@ -20,8 +20,8 @@ BINARY = os.environ.get("PUNCHSWEEP", str(REPO / "build" / "src" / "app" / "punc
 
 # A hexagonal two-level mould, 2 x 2 cells, each cap's height scattered by 0.005 R: level 1's
 # caps touch over about a decade of time, differently in each draw.
-TEXTURE = dict(lattice="hexagonal", l=1.5, dh=0.06, s=2, supercell=2, scatter="normal:0.005", grid=32, T=2.5, pbar=0.01,
-               times=[0, 0.1, 0.3, 1, 3])
+TEXTURE_NO_SCATTER = dict(lattice="hexagonal", l=1.5, dh=0.06, s=2, grid=32, T=2.5, pbar=0.01, times=[0, 0.1, 0.3, 1, 3])
+TEXTURE = dict(TEXTURE_NO_SCATTER, supercell=2, scatter="normal:0.005")
 
 
 def check_statistics(stats: dict, values: list[float]) -> None:
@@ -91,3 +91,18 @@ def test_a_bad_ensemble_is_refused_by_name(args, message):
                           "--pbar", "0.01", *args], capture_output=True, text=True, timeout=60)
     assert run.returncode == 2 and message in run.stderr, run.stderr
     assert run.stdout == ""
+
+
+def test_the_drops_origin_is_stated_above_the_design_height():
+    """The drops are taken from the tallest tip drawn; `tallest_rise` says how far it lies
+    above the tall caps' design height: -min over caps of (design drop + draw), here with
+    the draws listed so that a tall cap, then a lower one, is the tallest."""
+    plain = punchsweep.surface(supercell=2, scatter="list:" + ",".join(["0"] * 24), **TEXTURE_NO_SCATTER)
+    levels = [cap["level"] for cap in plain.cap_list]
+    tall, low = levels.index(0), levels.index(1)
+    for k, draw, rise in ((tall, -0.003, 0.003), (low, -0.07, 0.07 - 0.06)):
+        draws = [0.0] * 24
+        draws[k] = draw
+        out = punchsweep.surface(supercell=2, scatter="list:" + ",".join(map(str, draws)), **TEXTURE_NO_SCATTER)
+        assert out["tallest_rise"] == pytest.approx(rise, rel=1e-12)
+        assert out.cap_list[k]["drop"] == 0.0

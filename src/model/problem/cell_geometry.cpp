@@ -264,7 +264,8 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
   return draws_from(scatter, count, engine);
 }
 
-CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature) {
+CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature,
+                       double* rise) {
   if (K < 1) throw std::invalid_argument("supercell: K >= 1");
   CellGeometry out;
   out.Lx = K * cell.Lx;
@@ -292,9 +293,11 @@ CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& sca
       }
     }
   }
-  double least = std::numeric_limits<double>::infinity();
+  double least = std::numeric_limits<double>::infinity(), design = std::numeric_limits<double>::infinity();
   for (const Site& site : out.sites) least = std::min(least, site.drop);
+  for (const Site& site : cell.sites) design = std::min(design, site.drop);
   for (Site& site : out.sites) site.drop -= least;
+  if (rise != nullptr) *rise = design - least;
   return out;
 }
 

@@ -172,8 +172,11 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
 /// heights' from one generator, seeded with the heights' seed (so the heights are the same
 /// with or without them); alone, from the curvature's own seed. The sites keep their
 /// levels; the copies of site k follow each other row by row. Throws std::invalid_argument
-/// where a draw leaves C <= 0 (naming the cap).
-CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature = {});
+/// where a draw leaves C <= 0 (naming the cap). `rise` (where given) receives how far the
+/// tallest tip drawn, from which the drops are taken, lies above the tallest tips' design
+/// height (the least drop of `cell`): the scatter's extreme, which grows with K.
+CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature = {},
+                       double* rise = nullptr);
 
 /// The two-level square lattice of `problem` (docs/model.md, section 3): the l x l cell, the
 /// level-1 punch at its corner (0, 0), the level-2 punch, lower by dh, at its centre

@@ -169,7 +169,8 @@ class SurfaceResult(_JsonRecord):
     draws' seeds, per level the touch times of its first, median and last cap and per series
     (area_fraction, touched, touched_0, ...) per time, each as n, mean, sd, se, p5, median,
     p95 (and infinite: draws that never touch), and each draw's own values (members), else
-    None (the rest of the result is the first draw's); advisories and
+    None (the rest of the result is the first draw's); tallest_rise: a supercell's tallest
+    tip drawn (the drops' origin) above the tall caps' design height, R; advisories and
     advisory_reason: the texture's physical advisories and their sentence; notes: what
     reading the inputs changed; units: the unit of each scaled quantity."""
     inputs: str
@@ -184,6 +185,7 @@ class SurfaceResult(_JsonRecord):
     cap_list: list = field(default_factory=list)
     summits: dict | None = None
     ensemble: dict | None = None
+    tallest_rise: float | None = None
     curve: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
     advisories: str = ""
