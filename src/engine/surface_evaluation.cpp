@@ -153,6 +153,8 @@ constexpr double kCurveSecondsScale = 5.54e-5, kCurveSecondsNodePower = 1.047, k
 constexpr int kMaxSupercell = 32;
 /// The most draws of an ensemble (--seeds): each its own curve.
 constexpr int kMaxSeeds = 1000;
+/// The least draws --target-error takes before it judges the standard errors.
+constexpr int kLeastDraws = 4;
 
 /// --scatter's text: normal:SD, uniform:HALFWIDTH (lengths, >= 0) or list:V1,V2,...
 /// A scatter's text (`option`'s): normal:SD, uniform:HALFWIDTH (>= 0) or list:V1,V2,...,
@@ -249,6 +251,10 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "each level's touch times of its first, median and last cap and each time's area fraction and shares of "
        "caps in contact as their mean, standard deviation, standard error and 5-95% band over the draws: an "
        "integer in [1, 1000]; N > 1 needs --scatter normal or uniform")
+      ("target-error", po::value<std::string>()->value_name("E"),
+       "with --seeds N: stop drawing once the standard error of every mean share of caps in contact and area "
+       "fraction (each level's, at each time) is at most E (a share: 0.01 is one point), after at least 4 draws "
+       "and at most N: a number in (0, 1)")
       ("full-curve", po::bool_switch(),
        "build the load curve to full contact; by default it stops at its first sample past the largest "
        "creep-weighted load the question reaches (X(inf) of the pressure, over the tolerances' corners), "
@@ -513,6 +519,17 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
   if (run.seeds < 1 || run.seeds > kMaxSeeds) {
     throw input::UsageError("--seeds = " + std::to_string(run.seeds) + " is outside its range: an integer in [1, " +
                             std::to_string(kMaxSeeds) + "]");
+  }
+  if (vm.count("target-error")) {
+    const std::string text = vm["target-error"].as<std::string>();
+    run.target_error = input::parse_real(text, "--target-error");
+    if (!(run.target_error > 0.0 && run.target_error < 1.0)) {
+      throw input::UsageError("--target-error = " + text + " is outside its range: a share in (0, 1)");
+    }
+    if (run.seeds <= kLeastDraws) {
+      throw input::UsageError("--target-error needs --seeds N above " + std::to_string(kLeastDraws) +
+                              " (the most draws; it stops at the first that meets it)");
+    }
   }
   if (run.seeds > 1) {
     const auto drawn = [](const model::HeightScatter& s) {
@@ -1139,8 +1156,26 @@ SurfaceEnsemble::Member ensemble_member(const SurfaceRun& run, std::uint64_t see
 SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& given, const input::PointMaterial& material,
                                   bool progress) {
   SurfaceEnsemble out;
+  out.target_error = run.target_error;
   const std::uint64_t first = run.scatter.seed;
+  // --target-error: the largest standard error of a mean share or area fraction so far.
+  const auto largest_error = [&out] {
+    double worst = 0.0;
+    const std::size_t times = out.members.front().valid.size();
+    for (std::size_t q = 0; q < out.members.front().series.size(); ++q) {
+      for (std::size_t t = 0; t < times; ++t) {
+        std::vector<double> values;
+        for (const SurfaceEnsemble::Member& m : out.members) values.push_back(m.series[q][t]);
+        worst = std::max(worst, model::sample_statistics(std::move(values)).se);
+      }
+    }
+    return worst;
+  };
   for (int k = 0; k < run.seeds; ++k) {
+    if (run.target_error > 0.0 && k >= kLeastDraws) {
+      out.reached_error = largest_error();
+      if (out.reached_error <= run.target_error) break;
+    }
     const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
     if (progress) std::cerr << "punchsweep surface: draw " << k + 1 << " of " << run.seeds << " (seed " << seed << ")\n";
     if (k == 0) {
@@ -1153,6 +1188,16 @@ SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& give
     SurfaceRun draw = read_surface(vm, material);
     evaluate(draw, progress);
     out.members.push_back(ensemble_member(draw, seed));
+  }
+  if (run.target_error > 0.0) {
+    out.reached_error = largest_error();
+    if (out.reached_error > run.target_error) {
+      std::ostringstream note;
+      note << "--target-error " << run.target_error << ": after " << out.members.size()
+           << " draws (--seeds, the most) the largest standard error of a mean share or area fraction is "
+           << out.reached_error << "; more --seeds reach it";
+      run.inputs.notes.push_back(note.str());
+    }
   }
   const std::size_t L = run.history.levels.size();
   const auto over_draws = [&](auto value) {

@@ -41,6 +41,7 @@ struct SurfaceRun {
   /// tips' design height, in R (0 without a height scatter).
   double tallest_rise = 0.0;
   int seeds = 1;       ///< --seeds N: an ensemble of N draws of the scatter (evaluate_ensemble)
+  double target_error = 0.0;  ///< --target-error: the ensemble stops at this standard error (0: all N)
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)
   /// --grid auto: the grid the taken one was held to (half its nodes; 0 where not held),
   /// each level's relative move of t* between them (+infinity where the regime changed),
@@ -95,6 +96,10 @@ struct SurfaceEnsemble {
   };
   std::vector<Member> members;
   std::vector<Level> levels;
+  /// --target-error: asked (0: none) and the largest standard error of a mean share or area
+  /// fraction at the draws taken (NaN without one).
+  double target_error = 0.0;
+  double reached_error = std::numeric_limits<double>::quiet_NaN();
   /// area_fraction, touched, touched_0, touched_1, ...: per series, per time.
   std::vector<std::string> series_names;
   std::vector<std::vector<model::SampleStatistics>> series;

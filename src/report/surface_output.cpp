@@ -196,7 +196,8 @@ std::string json_list(const Values& values, Text text) {
 /// "ensemble": an ensemble's statistics and each draw's values (engine::SurfaceEnsemble).
 void write_ensemble_json(std::ostream& out, const engine::SurfaceEnsemble& e) {
   out << "  \"ensemble\": {\n    \"seeds\": " << json_list(e.members, [](const auto& m) { return std::to_string(m.seed); })
-      << ",\n    \"levels\": [";
+      << ",\n    \"target_error\": " << (e.target_error > 0.0 ? num(e.target_error) : std::string("null"))
+      << ", \"largest_error\": " << num(e.reached_error) << ",\n    \"levels\": [";
   for (std::size_t level = 0; level < e.levels.size(); ++level) {
     out << (level ? ",\n      " : "\n      ") << "{\"level\": " << level << ", \"first\": " << stats_json(e.levels[level].first)
         << ", \"median\": " << stats_json(e.levels[level].median) << ", \"last\": " << stats_json(e.levels[level].last) << "}";
@@ -357,6 +358,10 @@ void write_ensemble_table(std::ostream& out, const engine::SurfaceRun& run, cons
   const std::size_t n = e.members.size();
   out << lead << "ensemble: " << n << " draws of the scatter, seeds " << e.members.front().seed << " to " << e.members.back().seed
       << " (the caps and levels above are seed " << e.members.front().seed << "'s; the rows below are over the draws)\n";
+  if (e.target_error > 0.0) {
+    out << lead << "ensemble: the largest standard error of a mean share or area fraction is " << e.reached_error
+        << (e.reached_error <= e.target_error ? " (--target-error " : " (short of --target-error ") << e.target_error << ")\n";
+  }
   const auto stats = [&](const model::SampleStatistics& s) {
     std::ostringstream o;
     if (s.infinite == s.n) return std::string("never in every draw");

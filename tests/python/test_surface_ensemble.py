@@ -85,6 +85,9 @@ def test_the_table_and_csv_give_the_ensemble_rows():
     (["--supercell", "2", "--scatter", "list:" + ",".join(["0"] * 24), "--seeds", "4"], "needs --scatter normal:SD or uniform"),
     (["--supercell", "2", "--scatter", "normal:0.005", "--seeds", "0"], "--seeds = 0 is outside its range: an integer in [1, 1000]"),
     (["--supercell", "2", "--scatter", "normal:0.005", "--seeds", "1001"], "an integer in [1, 1000]"),
+    (["--supercell", "2", "--scatter", "normal:0.005", "--target-error", "0.01"], "--target-error needs --seeds N above 4"),
+    (["--supercell", "2", "--scatter", "normal:0.005", "--seeds", "8", "--target-error", "0"],
+     "--target-error = 0 is outside its range: a share in (0, 1)"),
 ])
 def test_a_bad_ensemble_is_refused_by_name(args, message):
     run = subprocess.run([BINARY, "surface", "--lattice", "hexagonal", "--l", "1.5", "--dh", "0.06", "--s", "2", "--T", "2.5",
@@ -106,3 +109,27 @@ def test_the_drops_origin_is_stated_above_the_design_height():
         out = punchsweep.surface(supercell=2, scatter="list:" + ",".join(map(str, draws)), **TEXTURE_NO_SCATTER)
         assert out["tallest_rise"] == pytest.approx(rise, rel=1e-12)
         assert out.cap_list[k]["drop"] == 0.0
+
+
+def test_a_target_error_stops_at_the_first_draw_that_meets_it():
+    """--target-error E: draws until the standard error of every mean share and area
+    fraction is at most E (at least 4 draws, at most --seeds). The stopping draw is found
+    here from the members of an ensemble of all ten draws, by numpy's standard errors."""
+    full = punchsweep.surface(seeds=10, **TEXTURE).ensemble
+    names = ["area_fraction", "touched"] + [f"touched_{level}" for level in range(2)]
+
+    def largest_error(n: int) -> float:
+        return max(np.std([m[name][t] for m in full["members"][:n]], ddof=1) / np.sqrt(n)
+                   for name in names for t in range(len(TEXTURE["times"])))
+
+    errors = {n: largest_error(n) for n in range(4, 11)}
+    target = errors[7] * 1.0000001
+    expected = next(n for n in range(4, 11) if errors[n] <= target)
+    assert expected <= 7
+    out = punchsweep.surface(seeds=10, target_error=target, **TEXTURE)
+    assert len(out.ensemble["seeds"]) == expected
+    assert out.ensemble["largest_error"] == pytest.approx(errors[expected], rel=1e-9)
+    assert not any("--target-error" in note for note in out.notes)
+    short = punchsweep.surface(seeds=5, target_error=1e-9, **TEXTURE)
+    assert len(short.ensemble["seeds"]) == 5
+    assert any("--target-error 1e-09: after 5 draws" in note for note in short.notes)

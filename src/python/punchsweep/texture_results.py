@@ -168,7 +168,9 @@ class SurfaceResult(_JsonRecord):
     and how many rose less (below_prominence), else None; ensemble: with seeds=N > 1 the
     draws' seeds, per level the touch times of its first, median and last cap and per series
     (area_fraction, touched, touched_0, ...) per time, each as n, mean, sd, se, p5, median,
-    p95 (and infinite: draws that never touch), and each draw's own values (members), else
+    p95 (and infinite: draws that never touch), target_error and largest_error (with
+    target_error=E: the largest standard error of a mean share or area fraction at the draws
+    taken), and each draw's own values (members), else
     None (the rest of the result is the first draw's); tallest_rise: a supercell's tallest
     tip drawn (the drops' origin) above the tall caps' design height, R; advisories and
     advisory_reason: the texture's physical advisories and their sentence; notes: what
