@@ -43,7 +43,18 @@ int run_surface_command(const std::vector<std::string>& given, std::ostream& out
   }
   engine::SurfaceRun run = engine::read_surface(vm, material);
   if (dry_run) {
-    write_curve_cost(out, engine::curve_cost(run));
+    const engine::CurveCost cost = engine::curve_cost(run);
+    write_curve_cost(out, cost);
+    if (run.seeds > 1) {
+      double each = 0.0;
+      for (const engine::CurveCost::Grid& grid : cost.grids) each += grid.built_seconds;
+      const std::streamsize precision = out.precision(3);
+      out << "  --seeds " << run.seeds << ": as many draws, each its own supercell and curve on the same grid (the "
+          << "first's above): about " << each << " s each to build, " << each * (run.seeds - 1) << " s for the other "
+          << run.seeds - 1 << (run.target_error > 0.0 ? " at most (--target-error may stop sooner)" : "")
+          << "; a draw the cache holds is read\n";
+      out.precision(precision);
+    }
     return 0;
   }
   const report::OutputFormat format = report::read_output_format(vm);

@@ -1106,7 +1106,8 @@ CurveCost curve_cost(SurfaceRun& run, const MoreLoadPoints& also_held) {
     const CachedCurve held = cached_curve(run.geometry, grid, options, run.measured ? &run.measured->cell : nullptr);
     g.cached = held.holds == CachedCurve::Holds::whole;
     if (held.holds == CachedCurve::Holds::beginning) g.continued_from = held.X_last;
-    g.seconds = g.cached ? 0.0 : estimated_curve_seconds(grid, static_cast<double>(cost.caps));
+    g.built_seconds = estimated_curve_seconds(grid, static_cast<double>(cost.caps));
+    g.seconds = g.cached ? 0.0 : g.built_seconds;
     cost.grids.push_back(g);
   }
   return cost;

@@ -171,6 +171,7 @@ struct CurveCost {
     /// from which it is continued; 0 otherwise.
     double continued_from = 0.0;
     double seconds = 0.0;     ///< to build (a continued curve's: the whole's, at most)
+    double built_seconds = 0.0;  ///< to build it whole, cached or not (another draw's, --seeds)
   };
   std::vector<Grid> grids;
   std::size_t caps = 0;

@@ -133,3 +133,14 @@ def test_a_target_error_stops_at_the_first_draw_that_meets_it():
     short = punchsweep.surface(seeds=5, target_error=1e-9, **TEXTURE)
     assert len(short.ensemble["seeds"]) == 5
     assert any("--target-error 1e-09: after 5 draws" in note for note in short.notes)
+
+
+def test_a_dry_run_counts_every_draw():
+    run = subprocess.run([BINARY, "surface", "--lattice", "hexagonal", "--l", "1.5", "--dh", "0.06", "--s", "2", "--supercell", "2",
+                          "--scatter", "normal:0.005", "--seeds", "8", "--grid", "32", "--T", "2.5", "--pbar", "0.01", "--dry-run"],
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stderr
+    line = next(line for line in run.stdout.splitlines() if line.strip().startswith("--seeds 8"))
+    each = float(line.split("about ")[1].split(" s each")[0])
+    others = float(line.split("to build, ")[1].split(" s for the other 7")[0])
+    assert each > 0 and others == pytest.approx(7 * each, rel=1e-2)
