@@ -9,7 +9,11 @@ where it never does; and, where the map has them, the share of caps in contact a
 its times (--time, default the last), blank where that snapshot is flagged. A map with a box
 of tolerances (surface-map --tolerance) has the cells whose regime differs between the box's
 ends hatched: there the answer depends on where in the box the part falls. Axes beyond two are fixed by --at NAME=VALUE (the nearest value is used
-and said); an axis of one value needs none.
+and said); an axis of one value needs none. A map of a scattered supercell with a seed axis
+(one draw per seed) is drawn over its draws with --over-seeds: each level's median t* over
+them (its regime: at once where the median is 0, never where it is infinite), the mean
+share of caps in contact (blank where any draw's snapshot is flagged), and hatched the
+cells where the draws' regimes differ.
 
 Example:
   mpirun -n 2 punchsweep surface-map --lattice hexagonal --l 1.2 --dh 0.04,0.05,0.06 --dh2 0.09 \
@@ -37,6 +41,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p = pm.Parser(prog="surface_picture.py", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("map", metavar="MAP.nc", help="written by punchsweep surface-map (or punchsweep.surface_map)")
     p.add_argument("-o", "--output", required=True, help="picture to write (.png or .pdf)")
+    p.add_argument("--over-seeds", action="store_true",
+                   help="draw a scattered map over its seed axis: median t*, mean share, cells whose draws differ hatched")
     p.add_argument("--at", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
                    help="fix an axis beyond the two drawn at its nearest value (said in the title)")
     p.add_argument("--time", type=float, default=None, metavar="T",
@@ -53,6 +59,31 @@ def read_map(path: str):
             raise pm.MapError(f"{path}: no '{name}' over a 'level' axis: not a map surface_map wrote (a regime map "
                               f"of punchsweep sweep is drawn by regime_map.py)")
     return ds.load()
+
+
+def over_seeds(ds):
+    """The map's draws (its `seed` axis, two values or more) as one: each level's median t*
+    over them and its regime (immediate where the median is 0, never where it is +inf,
+    delayed otherwise), `regime_spread` (1 where the draws' regimes differ), the mean share of
+    caps in contact, and `valid` 0 only where every draw's snapshot is."""
+    if "seed" not in ds.t_star.dims or ds.sizes["seed"] < 2:
+        raise pm.MapError("--over-seeds: the map has no seed axis of two values or more (surface-map --supercell K "
+                          "--scatter normal:SD --seed 1:8)")
+    n = ds.sizes["seed"]
+    out = ds.isel(seed=0, drop=True)
+    t = ds.t_star.median("seed", skipna=False, keep_attrs=True)
+    out["t_star"] = t
+    out["X_star"] = ds.X_star.median("seed", skipna=False, keep_attrs=True)
+    out["regime"] = t.copy(data=np.where(t.values == 0, IMMEDIATE, np.where(np.isinf(t.values), NEVER, DELAYED)))
+    out["regime_spread"] = (ds.regime.min("seed") != ds.regime.max("seed")).astype(np.int8)
+    if "touched" in ds:
+        out["touched"] = ds.touched.mean("seed", keep_attrs=True)
+        out["valid"] = ds.valid.max("seed", keep_attrs=True)
+    for name in ("regime_low", "regime_high"):  # (a box of tolerances: per draw, not drawn over them)
+        if name in out:
+            out = out.drop_vars(name)
+    out.attrs["over_seeds"] = f"{n} draws, seeds {', '.join(str(int(v)) for v in ds.seed.values)}"
+    return out
 
 
 def select(ds, at: list[str]):
@@ -138,12 +169,15 @@ def render(ds, said: list[str], time: float | None = None):
                 fig.colorbar(mesh, ax=panel, label=f"log10 t* ({unit})")
             handles = [Patch(color="#d9d9d9", label="touches at once"), Patch(color="#404040", label="never touches")]
             band = tolerance_band(ds, level, axes[::-1])
+            label = f"regime depends on\nthe tolerance ({ds.attrs.get('tolerance', '')})"
+            if "regime_spread" in ds:
+                band = ds.regime_spread.sel(level=level).transpose(*axes[::-1]).values != 0
+                label = f"regime differs\nbetween the draws ({ds.attrs['over_seeds'].split(',')[0]})"
             if band is not None and band.any():
                 rects = [Rectangle((xe[i], ye[j]), xe[i + 1] - xe[i], ye[j + 1] - ye[j])
                          for j, i in zip(*np.nonzero(band))]
                 panel.add_collection(PatchCollection(rects, facecolor="none", edgecolor="0.5", hatch="xx", linewidth=0))
-                handles.append(Patch(facecolor="white", edgecolor="0.5", hatch="xx", linewidth=0,
-                                     label=f"regime depends on\nthe tolerance ({ds.attrs.get('tolerance', '')})"))
+                handles.append(Patch(facecolor="white", edgecolor="0.5", hatch="xx", linewidth=0, label=label))
             panel.legend(handles=handles, fontsize=7, loc="upper left")
             panel.set_ylabel(f"{axes[1]} ({pm.units(ds, axes[1])})")
         else:
@@ -187,17 +221,20 @@ def render(ds, said: list[str], time: float | None = None):
             panel.set_xscale("log")
         panel.set_xlabel(f"{axes[0]} ({pm.units(ds, axes[0])})")
         blank = " (blank: flagged)" if np.isnan(trusted).any() else ""
-        panel.set_title(f"caps in contact at t = {at:.4g} {pm.units(ds, 't')}{blank}", fontsize=9)
+        mean = "mean share of " if "over_seeds" in ds.attrs else ""
+        panel.set_title(f"{mean}caps in contact at t = {at:.4g} {pm.units(ds, 't')}{blank}", fontsize=9)
     texture = json.loads(ds.attrs.get("texture", "{}"))
     words = ", ".join(f"{k} = {v}" for k, v in texture.items() if v not in ("None", ""))
-    fig.suptitle(f"each level's touch time: {words}" + (f"; {', '.join(said)}" if said else ""), fontsize=9)
+    over = f"; median over {ds.attrs['over_seeds']}" if "over_seeds" in ds.attrs else ""
+    fig.suptitle(f"each level's touch time: {words}" + (f"; {', '.join(said)}" if said else "") + over, fontsize=9)
     return fig
 
 
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
     out = pm.check_output(args.output, inputs=[args.map])
-    ds, said = select(read_map(args.map), args.at)
+    ds = read_map(args.map)
+    ds, said = select(over_seeds(ds) if args.over_seeds else ds, args.at)
     pm.save_figure(render(ds, said, args.time), out, dpi=FIG_DPI, inputs=[args.map])
     print(f"wrote {args.output}")
     return 0

@@ -95,3 +95,35 @@ def test_a_material_map_is_drawn_in_kPa_and_um(tmp_path):
     labels = [a.get_xlabel() for a in fig.axes] + [a.get_ylabel() for a in fig.axes]
     assert "pbar (kPa)" in labels and "dh (um)" in labels
     assert all(a.get_title().endswith("kPa") for a in fig.axes[:2] if a.get_title().startswith("level"))
+
+
+def test_a_scattered_map_is_drawn_over_its_draws(tmp_path):
+    """--over-seeds (issue 51): a map with a seed axis drawn as its median t* over the draws,
+    the mean share of caps in contact, and hatched the cells whose draws' regimes differ;
+    each against the map's own arrays reduced here by numpy."""
+    path = tmp_path / "seeds.nc"
+    punchsweep.surface_map(lattice="hexagonal", l=1.5, dh=[0.03, 0.06, 0.09], s=2, supercell=2, scatter="normal:0.01",
+                           seed=[1, 2, 3], grid=16, pbar=[0.003, 0.006, 0.01, 0.03], T=2.5, times=[0.3, 3], output=path)
+    whole = surface_picture.read_map(str(path))
+    ds, said = surface_picture.select(surface_picture.over_seeds(whole), [])
+    whole = whole.squeeze()  # (l, T and the scatter's width: one value each)
+    t = whole.t_star.sel(level=1).transpose("seed", "dh", "pbar").values
+    median = np.median(t, axis=0)
+    np.testing.assert_array_equal(ds.t_star.sel(level=1).transpose("dh", "pbar").values, median)
+    regimes = whole.regime.sel(level=1).transpose("seed", "dh", "pbar").values
+    spread = regimes.min(axis=0) != regimes.max(axis=0)
+    np.testing.assert_array_equal(ds.regime_spread.sel(level=1).transpose("dh", "pbar").values != 0, spread)
+    np.testing.assert_allclose(ds.touched.transpose("t", "dh", "pbar").values,
+                               whole.touched.transpose("seed", "t", "dh", "pbar").values.mean(axis=0), rtol=1e-15)
+    expected_regime = np.where(median == 0, 0, np.where(np.isinf(median), 2, 1))
+    np.testing.assert_array_equal(ds.regime.sel(level=1).transpose("dh", "pbar").values, expected_regime)
+    fig = surface_picture.render(ds, said)
+    panel = [a for a in fig.axes if a.get_title().startswith("level 1")][0]
+    hatched = [c for c in panel.collections if c.get_hatch() == "xx"]
+    assert spread.any() and len(hatched) == 1 and len(hatched[0].get_paths()) == spread.sum()
+    assert any("between the draws (3 draws)" in t.get_text() for t in panel.get_legend().get_texts())
+    assert "median over 3 draws, seeds 1, 2, 3" in fig._suptitle.get_text()
+    rc, _, err = call(surface_picture, path, "--over-seeds", "-o", tmp_path / "seeds.png")
+    assert rc == 0, err
+    rc, _, err = call(surface_picture, path, "-o", tmp_path / "x.png")
+    assert rc == 2 and "fix all but two with --at" in err  # without --over-seeds the seed is an axis like any
