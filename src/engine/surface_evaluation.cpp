@@ -155,6 +155,8 @@ constexpr int kMaxSupercell = 32;
 constexpr int kMaxSeeds = 1000;
 /// The least draws --target-error takes before it judges the standard errors.
 constexpr int kLeastDraws = 4;
+/// The most caps --part-caps takes (a part's: a square metre of 1 um caps).
+constexpr std::uint64_t kMaxPartCaps = 1000000000000000ULL;
 
 /// --scatter's text: normal:SD, uniform:HALFWIDTH (lengths, >= 0) or list:V1,V2,...
 /// A scatter's text (`option`'s): normal:SD, uniform:HALFWIDTH (>= 0) or list:V1,V2,...,
@@ -244,6 +246,10 @@ po::options_description surface_options(const input::PointMaterial& material) {
        "each cap's curvature change in the supercell, relative: its C becomes C (1 + d) (a paraboloid's tip radius "
        "over 1 + d): normal:SD, uniform:HALFWIDTH (pure numbers >= 0, the half-width below 1) or list:D1,D2,... "
        "(one per cap); drawn after --scatter's heights from the same --seed; needs --supercell")
+      ("part-caps", po::value<std::string>()->value_name("N"),
+       "the caps of the whole part the supercell samples: how far its tallest tip would lie above the tall caps' "
+       "design height (median and 5-95%) from --scatter's distribution, beside the supercell's own; a whole number "
+       "in [1, 1e15]; needs --scatter normal or uniform")
       ("seed", po::value<std::string>()->value_name("N")->default_value("1"),
        "the seed of --scatter's draws, an integer in [0, 2^64-1] (std::mt19937_64, fully specified: the same seed gives the same caps)")
       ("seeds", po::value<int>()->value_name("N")->default_value(1),
@@ -542,6 +548,38 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     }
     if (seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(run.seeds - 1)) {
       throw input::UsageError("--seed + --seeds - 1 passes 2^64 - 1: a lower --seed");
+    }
+  }
+  if (vm.count("part-caps")) {
+    const std::string text = vm["part-caps"].as<std::string>();
+    const std::uint64_t caps = input::parse_seed(text, "--part-caps");
+    if (caps < 1 || caps > kMaxPartCaps) {
+      throw input::UsageError("--part-caps = " + text + " is outside its range: a whole number in [1, 1e15]");
+    }
+    if (run.scatter.kind != model::HeightScatter::Kind::normal && run.scatter.kind != model::HeightScatter::Kind::uniform) {
+      throw input::UsageError("--part-caps: the tallest of a part's caps follows from the heights' distribution: it "
+                              "needs --scatter normal:SD or uniform:HALFWIDTH (with --supercell K)");
+    }
+    if (!(run.scatter.width > 0.0)) throw input::UsageError("--part-caps: --scatter's width is 0: every tip at its design height");
+    // Each level's caps a cell and design drop, then the part's and the supercell's counts.
+    const int levels = run.geometry.levels();
+    std::vector<double> drops(static_cast<std::size_t>(levels), std::numeric_limits<double>::infinity()), per_cell(drops.size(), 0.0);
+    for (const model::Site& site : run.geometry.sites) {
+      const std::size_t L = static_cast<std::size_t>(site.level);
+      drops[L] = std::min(drops[L], site.drop);
+      per_cell[L] += 1.0;
+    }
+    const double sites = static_cast<double>(run.geometry.sites.size()), copies = static_cast<double>(run.supercell) * run.supercell;
+    std::vector<double> part(per_cell.size()), ours(per_cell.size());
+    for (std::size_t L = 0; L < per_cell.size(); ++L) {
+      part[L] = static_cast<double>(caps) * per_cell[L] / sites;
+      ours[L] = copies * per_cell[L];
+    }
+    run.part_caps = static_cast<double>(caps);
+    const double q[3] = {0.05, 0.5, 0.95};
+    for (int k = 0; k < 3; ++k) {
+      run.part_rise[static_cast<std::size_t>(k)] = model::tallest_rise_quantile(run.scatter, drops, part, q[k]);
+      run.supercell_rise[static_cast<std::size_t>(k)] = model::tallest_rise_quantile(run.scatter, drops, ours, q[k]);
     }
   }
   if (run.supercell > 1) {

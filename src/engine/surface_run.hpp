@@ -3,6 +3,7 @@
 /// One texture as `punchsweep surface` evaluates it (surface_command.hpp) and prints it
 /// (surface_output.hpp): its inputs, geometry, curve, history and checks.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -40,6 +41,11 @@ struct SurfaceRun {
   /// A supercell's: how far its tallest tip drawn (the drops' origin) lies above the tallest
   /// tips' design height, in R (0 without a height scatter).
   double tallest_rise = 0.0;
+  /// --part-caps N: how far the tallest tip of a part of N caps would lie above the tall caps'
+  /// design height (p5, median, p95, R), and of this supercell's caps, from the height
+  /// scatter's distribution (model::tallest_rise_quantile); part_caps 0: not asked.
+  double part_caps = 0.0;
+  std::array<double, 3> part_rise{}, supercell_rise{};
   int seeds = 1;       ///< --seeds N: an ensemble of N draws of the scatter (evaluate_ensemble)
   double target_error = 0.0;  ///< --target-error: the ensemble stops at this standard error (0: all N)
   int grid_nodes = 0;  ///< nodes per pitch (0: --grid auto, until evaluated)

@@ -1,6 +1,7 @@
 #include "report/surface_output.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -242,6 +243,11 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run, const engine::
   out << "  \"grid\": [" << run.curve.nx << ", " << run.curve.ny << "],\n";
   out << "  \"supercell\": " << run.supercell << ",\n";
   if (run.supercell > 1) out << "  \"tallest_rise\": " << num(run.tallest_rise) << ",\n";
+  if (run.part_caps > 0.0) {
+    const auto band = [](const std::array<double, 3>& r) { return "[" + num(r[0]) + ", " + num(r[1]) + ", " + num(r[2]) + "]"; };
+    out << "  \"part\": {\"caps\": " << num(run.part_caps) << ", \"tallest_rise\": " << band(run.part_rise)
+        << ", \"supercell_tallest_rise\": " << band(run.supercell_rise) << "},\n";
+  }
   out << "  \"caps\": " << run.geometry.sites.size() << ",\n";
   out << "  \"curve\": {\"source\": " << input::json_string(curve_source_name(run)) << ", \"samples\": " << run.curve.samples.size() << ", \"X_first\": " << num(run.curve.X_first())
       << ", \"X_resolved\": " << num(run.curve.X_resolved)
@@ -439,6 +445,16 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv, con
     const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
     out << (csv ? "# " : "  ") << "heights: drops from the tallest tip drawn, " << run.tallest_rise * (unit ? unit->per_scaled : 1.0)
         << " " << (unit ? unit->units : "R") << " above the tallest tips' design height (a larger supercell draws a taller one)\n";
+  }
+  if (run.part_caps > 0.0) {
+    const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
+    const double per = unit ? unit->per_scaled : 1.0;
+    const std::string units = unit ? unit->units : "R";
+    out << (csv ? "# " : "  ") << "part of " << run.part_caps << " caps: its tallest tip about " << run.part_rise[1] * per << " "
+        << units << " above the design height (5-95%: " << run.part_rise[0] * per << " to " << run.part_rise[2] * per
+        << "), this supercell's " << run.supercell_rise[0] * per << " to " << run.supercell_rise[2] * per << " (drawn: "
+        << run.tallest_rise * per << "): the part's lower caps lie about " << (run.part_rise[1] - run.tallest_rise) * per << " "
+        << units << " further below its tallest than here\n";
   }
   for (int level = 0; level < L; ++level) {
     const model::LevelTouch& t = run.history.levels[static_cast<std::size_t>(level)];

@@ -98,3 +98,20 @@ TEST(Supercell, a_curvature_scatter_changes_each_caps_C_and_leaves_the_heights_d
   list.values[5] = -1.0;
   EXPECT_THROW(model::supercell(cell, 3, {}, list), std::invalid_argument);
 }
+
+TEST(Supercell, the_tallest_of_n_caps_has_the_closed_forms_of_its_order_statistic) {
+  // One cap, normal: its own quantiles (the 95% point 1.6448536269514722 SD). Two caps,
+  // uniform on [-w, w]: P(max <= x) = ((x + w) / 2w)^2, so x = w (2 sqrt(q) - 1).
+  const model::HeightScatter normal{model::HeightScatter::Kind::normal, 0.2, {}, 1};
+  EXPECT_NEAR(model::tallest_rise_quantile(normal, {0.0}, {1.0}, 0.95), 0.2 * 1.6448536269514722, 1e-11);
+  EXPECT_NEAR(model::tallest_rise_quantile(normal, {0.0}, {1.0}, 0.5), 0.0, 1e-11);
+  const model::HeightScatter uniform{model::HeightScatter::Kind::uniform, 0.5, {}, 1};
+  for (const double q : {0.05, 0.5, 0.95}) {
+    EXPECT_NEAR(model::tallest_rise_quantile(uniform, {0.0}, {2.0}, q), 0.5 * (2.0 * std::sqrt(q) - 1.0), 1e-11);
+  }
+  // 1000 caps, normal: the median solves Phi(x)^1000 = 1/2, x = 3.1975894953840083 SD
+  // (Phi^-1(0.5^(1/1000)), by scipy.stats.norm.ppf).
+  EXPECT_NEAR(model::tallest_rise_quantile(normal, {0.0}, {1000.0}, 0.5), 0.2 * 3.1975894953840083, 1e-9);
+  EXPECT_THROW(model::tallest_rise_quantile(model::HeightScatter{}, {0.0}, {1.0}, 0.5), std::invalid_argument);
+  EXPECT_THROW(model::tallest_rise_quantile(normal, {0.0}, {1.0}, 1.0), std::invalid_argument);
+}

@@ -88,6 +88,8 @@ def test_the_table_and_csv_give_the_ensemble_rows():
     (["--supercell", "2", "--scatter", "normal:0.005", "--target-error", "0.01"], "--target-error needs --seeds N above 4"),
     (["--supercell", "2", "--scatter", "normal:0.005", "--seeds", "8", "--target-error", "0"],
      "--target-error = 0 is outside its range: a share in (0, 1)"),
+    (["--part-caps", "100"], "--part-caps: the tallest of a part's caps follows from the heights' distribution"),
+    (["--supercell", "2", "--scatter", "normal:0.005", "--part-caps", "0"], "--part-caps = 0 is outside its range"),
 ])
 def test_a_bad_ensemble_is_refused_by_name(args, message):
     run = subprocess.run([BINARY, "surface", "--lattice", "hexagonal", "--l", "1.5", "--dh", "0.06", "--s", "2", "--T", "2.5",
@@ -144,3 +146,26 @@ def test_a_dry_run_counts_every_draw():
     each = float(line.split("about ")[1].split(" s each")[0])
     others = float(line.split("to build, ")[1].split(" s for the other 7")[0])
     assert each > 0 and others == pytest.approx(7 * each, rel=1e-2)
+
+
+@pytest.mark.parametrize("scatter, width", [("normal", 0.005), ("uniform", 0.008)])
+def test_a_parts_tallest_tip_is_the_extreme_of_its_caps_draws(scatter, width):
+    """--part-caps N: the 5%, 50% and 95% points of how far the tallest of a part's N caps
+    lies above the tall caps' design height, against numpy's draws of N caps (tall and
+    lower ones as the hexagonal cell has them, 2 and 4 a cell; dh 0.004 R, within the scatter,
+    so lower caps may be the tallest), 20000 parts; and the supercell's own band, which its
+    drawn rise lies in for most seeds."""
+    dh, part = 0.004, 600
+    out = punchsweep.surface(supercell=2, scatter=f"{scatter}:{width}", part_caps=part, **dict(TEXTURE_NO_SCATTER, dh=dh))
+    rng = np.random.default_rng(11)
+    draw = (lambda size: rng.normal(0, width, size)) if scatter == "normal" else (lambda size: rng.uniform(-width, width, size))
+    tall, low = part // 3, part - part // 3
+    rises = np.maximum(draw((20000, tall)).max(axis=1), draw((20000, low)).max(axis=1) - dh)
+    expected = np.percentile(rises, [5, 50, 95])
+    spread = expected[2] - expected[0]
+    np.testing.assert_allclose(out["part"]["tallest_rise"], expected, atol=0.03 * spread)
+    assert out["part"]["caps"] == part
+    band = out["part"]["supercell_tallest_rise"]
+    small = np.maximum(draw((20000, 8)).max(axis=1), draw((20000, 16)).max(axis=1) - dh)
+    np.testing.assert_allclose(band, np.percentile(small, [5, 50, 95]), atol=0.03 * (band[2] - band[0]))
+    assert band[1] < out["part"]["tallest_rise"][1]  # more caps, a taller tallest

@@ -264,6 +264,40 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
   return draws_from(scatter, count, engine);
 }
 
+double tallest_rise_quantile(const HeightScatter& scatter, const std::vector<double>& drops, const std::vector<double>& counts,
+                             double q) {
+  const bool normal = scatter.kind == HeightScatter::Kind::normal;
+  if ((!normal && scatter.kind != HeightScatter::Kind::uniform) || !(scatter.width > 0.0) || !(q > 0.0 && q < 1.0) ||
+      drops.size() != counts.size() || drops.empty()) {
+    throw std::invalid_argument("tallest_rise_quantile: a normal or uniform scatter of width > 0, 0 < q < 1, a count per drop");
+  }
+  const double w = scatter.width;
+  // log F(x) of one draw: the normal's through its upper tail where that is small (log1p
+  // keeps the digits that 1 - tail would lose).
+  const auto log_cdf = [&](double x) {
+    if (normal) {
+      const double z = x / w;
+      return z > 0.0 ? std::log1p(-0.5 * std::erfc(z / std::numbers::sqrt2)) : std::log(0.5 * std::erfc(-z / std::numbers::sqrt2));
+    }
+    const double F = std::clamp((x + w) / (2.0 * w), 0.0, 1.0);
+    return std::log(F);
+  };
+  const auto log_probability = [&](double x) {  // log P(the tallest tip lies at most x above)
+    double sum = 0.0;
+    for (std::size_t L = 0; L < drops.size(); ++L) {
+      if (counts[L] > 0.0) sum += counts[L] * log_cdf(x + drops[L]);
+    }
+    return sum;
+  };
+  const double target = std::log(q);
+  double lo = -40.0 * w, hi = 40.0 * w;  // (a normal draw past 40 SD: probability below 1e-300)
+  while (hi - lo > 1e-12 * w) {
+    const double mid = 0.5 * (lo + hi);
+    (log_probability(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& scatter, const HeightScatter& curvature,
                        double* rise) {
   if (K < 1) throw std::invalid_argument("supercell: K >= 1");

@@ -164,6 +164,16 @@ struct HeightScatter {
 /// the C++ standard); list: its values (std::invalid_argument unless there are `count`).
 std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count);
 
+/// The `q` quantile (0 < q < 1) of how far the tallest tip of a part lies above the tall
+/// caps' design height, where the part holds `counts[L]` caps of each level L (design drop
+/// `drops[L]`, R) and each cap's height changes by an independent draw of `scatter` (normal
+/// or uniform): the rise x with prod_L F(x + drops[L])^counts[L] = q, F the draws' CDF
+/// (symmetric: a draw raises as often as it lowers). Solved by bisection to 1e-12 of the
+/// scatter's width. Throws std::invalid_argument for a scatter not drawn at random, a width
+/// of 0 or q outside (0, 1).
+double tallest_rise_quantile(const HeightScatter& scatter, const std::vector<double>& drops, const std::vector<double>& counts,
+                             double q);
+
 /// K x K copies of `cell` as one periodic cell (K >= 1), each copy's site raised by the
 /// next draw of `scatter` (a draw > 0 lowers the tip: it adds to the drop), the drops then
 /// taken from the tallest tip of all (the least drop becomes 0), and its shape's C changed

@@ -172,7 +172,9 @@ class SurfaceResult(_JsonRecord):
     target_error=E: the largest standard error of a mean share or area fraction at the draws
     taken), and each draw's own values (members), else
     None (the rest of the result is the first draw's); tallest_rise: a supercell's tallest
-    tip drawn (the drops' origin) above the tall caps' design height, R; advisories and
+    tip drawn (the drops' origin) above the tall caps' design height, R; with part_caps=N,
+    other["part"] (caps; tallest_rise and supercell_tallest_rise as [p5, median, p95], R);
+    advisories and
     advisory_reason: the texture's physical advisories and their sentence; notes: what
     reading the inputs changed; units: the unit of each scaled quantity."""
     inputs: str
