@@ -71,6 +71,8 @@ constexpr Refused kRefused[] = {
     {"check", "the time stepping checks a sample of the map's load points: --check-sample K"},
     {"format", "the map is a netCDF-4 file (--output)"},
     {"seeds", "a map draws one supercell per value of its seed axis ([texture] seed = 1:8) and keeps each"},
+    {"part-caps", "a map keeps each drawn supercell; surface --part-caps N says how far a part's tallest tip lies"},
+    {"target-error", "a map draws one supercell per value of its seed axis, as many as it lists"},
 };
 
 /// A map's limits (refused up front): geometries, each a load curve.

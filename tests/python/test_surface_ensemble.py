@@ -169,3 +169,15 @@ def test_a_parts_tallest_tip_is_the_extreme_of_its_caps_draws(scatter, width):
     small = np.maximum(draw((20000, 8)).max(axis=1), draw((20000, 16)).max(axis=1) - dh)
     np.testing.assert_allclose(band, np.percentile(small, [5, 50, 95]), atol=0.03 * (band[2] - band[0]))
     assert band[1] < out["part"]["tallest_rise"][1]  # more caps, a taller tallest
+
+
+@pytest.mark.parametrize("option", [["--seeds", "3"], ["--part-caps", "100"]])
+def test_a_map_refuses_the_ensembles_options_by_name(option, tmp_path):
+    """A map keeps each drawn supercell on its seed axis: --seeds and --part-caps are
+    surface's, refused by name with nothing written."""
+    out = tmp_path / "m.nc"
+    run = subprocess.run([BINARY, "surface-map", "--lattice", "hexagonal", "--l", "1.5", "--dh", "0.06", "--s", "2",
+                          "--supercell", "2", "--scatter", "normal:0.005", *option, "--T", "2.5", "--pbar", "0.01",
+                          "--output", out], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2 and f"{option[0]} is not a map's" in run.stderr, run.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
