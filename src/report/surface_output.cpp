@@ -60,7 +60,20 @@ void write_physical(std::ostream& out, const engine::SurfaceRun& run, const mode
         << num(run.history.levels[static_cast<std::size_t>(level)].X_star * pressure->per_scaled)
         << ", \"contact_radius\": " << num(advice.level[static_cast<std::size_t>(level)].a_max * length->per_scaled) << "}";
   }
-  out << "],\n    \"series\": {\n";
+  out << "],\n    \"caps\": {";
+  // Each cap's place, drop, tip radius 1 / (2C) and touchdown load, in the units above.
+  const auto caps = [&](const char* name, auto value, bool last) {
+    out << "\"" << name << "\": [";
+    for (std::size_t k = 0; k < run.geometry.sites.size(); ++k) out << (k ? ", " : "") << num(value(k));
+    out << "]" << (last ? "" : ", ");
+  };
+  const std::vector<model::Site>& sites = run.geometry.sites;
+  caps("x", [&](std::size_t k) { return sites[k].x * length->per_scaled; }, false);
+  caps("y", [&](std::size_t k) { return sites[k].y * length->per_scaled; }, false);
+  caps("drop", [&](std::size_t k) { return sites[k].drop * length->per_scaled; }, false);
+  caps("tip_radius", [&](std::size_t k) { return 0.5 / sites[k].shape.C * length->per_scaled; }, false);
+  caps("X_star", [&](std::size_t k) { return run.history.sites[k].X_star * pressure->per_scaled; }, true);
+  out << "},\n    \"series\": {\n";
   const auto series = [&](const std::string& name, auto value, bool last) {
     out << "      \"" << name << "\": [";
     for (std::size_t k = 0; k < run.history.snapshots.size(); ++k) out << (k ? ", " : "") << num(value(run.history.snapshots[k]));

@@ -185,3 +185,24 @@ def test_a_fortran_order_npy_is_the_array_it_holds(tmp_path):
     for key, values in c_order["series"].items():
         np.testing.assert_array_equal(fortran["series"][key], values)
     assert [level.to_dict() for level in fortran["levels"]] == [level.to_dict() for level in c_order["levels"]]
+
+
+def test_each_cap_in_physical_units_with_a_material(tmp_path):
+    """With --R and a material, `physical.caps` gives each cap's place, drop and tip radius in
+    um and its touchdown load in Pa: the cap list's values (R, E0*) times R and times the
+    scale the levels' own physical X* use."""
+    z, pixel = scan()
+    np.save(tmp_path / "scan.npy", z)
+    truth = REPO / "examples" / "dma_exports" / "tpe_a_truth.ini"
+    out = punchsweep.surface(height_map=str(tmp_path / "scan.npy"), pixel=f"{pixel}um", R="80um", height_unit="um",
+                             level_gap="0.3um", material=str(truth), temperature=20, pressure="20kPa", times="1s, 1min")
+    caps = out.physical["caps"]
+    assert out.physical["units"]["drop"] == "um"
+    np.testing.assert_allclose(caps["x"], [80 * c["x"] for c in out.cap_list], rtol=1e-12)
+    np.testing.assert_allclose(caps["drop"], [80 * c["drop"] for c in out.cap_list], rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(caps["tip_radius"], 80.0, rtol=1e-6)
+    level = next(lv for lv in out.levels if lv.level == 1)
+    per = out.physical["levels"][1]["X_star"] / level.X_star
+    touched = [k for k, c in enumerate(out.cap_list) if c["X_star"] is not None]
+    np.testing.assert_allclose([caps["X_star"][k] for k in touched], [per * out.cap_list[k]["X_star"] for k in touched],
+                               rtol=1e-12)
