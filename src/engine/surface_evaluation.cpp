@@ -490,7 +490,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     throw input::UsageError("--supercell = " + std::to_string(run.supercell) + " is outside its range: an integer in [1, " +
                             std::to_string(kMaxSupercell) + "]");
   }
-  const std::uint64_t seed = input::parse_seed(vm["seed"].as<std::string>(), "--seed");
+  const std::uint64_t seed = run.seed = input::parse_seed(vm["seed"].as<std::string>(), "--seed");
   if (vm.count("scatter")) {
     if (run.supercell == 1 && vm["supercell"].defaulted()) {
       throw input::UsageError("--scatter needs --supercell K (the caps whose heights scatter: K x K cells)");
@@ -1196,7 +1196,7 @@ SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& give
                                   bool progress) {
   SurfaceEnsemble out;
   out.target_error = run.target_error;
-  const std::uint64_t first = run.scatter.seed;
+  const std::uint64_t first = run.seed;
   // --target-error: the largest standard error of a mean share or area fraction so far.
   const auto largest_error = [&out] {
     double worst = 0.0;

@@ -38,6 +38,7 @@ struct SurfaceRun {
   int supercell = 1;   ///< K: the cell is K x K lattice cells
   model::HeightScatter scatter;
   model::HeightScatter curvature;  ///< --curvature-scatter: each cap's C changed by C (1 + d)
+  std::uint64_t seed = 1;          ///< --seed: the scatters' (an ensemble's first draw's)
   /// A supercell's: how far its tallest tip drawn (the drops' origin) lies above the tallest
   /// tips' design height, in R (0 without a height scatter).
   double tallest_rise = 0.0;

@@ -61,3 +61,13 @@ def test_a_bad_curvature_scatter_is_refused_by_name(value, message):
     with pytest.raises(ValueError, match="--curvature-scatter") as refused:
         punchsweep.surface(supercell=2, curvature_scatter=value, **LATTICE)
     assert message in str(refused.value)
+
+
+def test_an_ensemble_of_curvatures_alone_starts_at_the_seed_given():
+    """--seeds with --curvature-scatter alone: the draws are --seed, --seed + 1, ... (the
+    first took the height scatter's default seed, 1, while its draw was --seed's)."""
+    ensemble = punchsweep.surface(supercell=2, curvature_scatter="normal:0.1", seed=5, seeds=2, **LATTICE).ensemble
+    assert ensemble["seeds"] == [5, 6]
+    for member in ensemble["members"]:
+        single = punchsweep.surface(supercell=2, curvature_scatter="normal:0.1", seed=member["seed"], **LATTICE)
+        np.testing.assert_array_equal(member["area_fraction"], single.series["area_fraction"])
