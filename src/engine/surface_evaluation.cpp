@@ -299,10 +299,8 @@ namespace {
 
 /// A length in R as the user reads it: in R's unit where the run has R, else in R.
 std::string measured_length(double value, const input::PhysicalScales& scales) {
-  if (const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", scales)) {
-    return model::number_text(value * unit->per_scaled, 3) + " " + unit->units;
-  }
-  return model::number_text(value, 3) + " R";
+  const input::PhysicalUnit unit = input::physical_unit_or_scaled("R", scales);
+  return model::number_text(value * unit.per_scaled, 3) + " " + unit.units;
 }
 
 /// The note where most of a measured map's summits look like land roughness taken for
@@ -491,31 +489,29 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
                             std::to_string(kMaxSupercell) + "]");
   }
   const std::uint64_t seed = run.seed = input::parse_seed(vm["seed"].as<std::string>(), "--seed");
-  if (vm.count("scatter")) {
+  // --scatter's and --curvature-scatter's draws: each needs the supercell's caps, a list one
+  // value per cap.
+  const auto supercell_scatter = [&](const char* option, const char* what, auto read) {
     if (run.supercell == 1 && vm["supercell"].defaulted()) {
-      throw input::UsageError("--scatter needs --supercell K (the caps whose heights scatter: K x K cells)");
+      throw input::UsageError(std::string("--") + option + " needs --supercell K (the caps whose " + what + " scatter: K x K cells)");
     }
-    run.scatter = read_height_scatter(vm["scatter"].as<std::string>(), run.inputs.scales);
-    run.scatter.seed = seed;
+    model::HeightScatter scatter = read(vm[option].as<std::string>());
+    scatter.seed = seed;
     const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
-    if (run.scatter.kind == model::HeightScatter::Kind::list && run.scatter.values.size() != caps) {
-      throw input::UsageError("--scatter list has " + std::to_string(run.scatter.values.size()) + " values: it needs one per cap, " +
-                              std::to_string(caps) + " for " + std::to_string(run.supercell) + " x " +
-                              std::to_string(run.supercell) + " cells of " + std::to_string(run.geometry.sites.size()) +
+    if (scatter.kind == model::HeightScatter::Kind::list && scatter.values.size() != caps) {
+      throw input::UsageError(std::string("--") + option + " list has " + std::to_string(scatter.values.size()) +
+                              " values: it needs one per cap, " + std::to_string(caps) + " for " + std::to_string(run.supercell) +
+                              " x " + std::to_string(run.supercell) + " cells of " + std::to_string(run.geometry.sites.size()) +
                               " caps");
     }
+    return scatter;
+  };
+  if (vm.count("scatter")) {
+    run.scatter = supercell_scatter("scatter", "heights",
+                                    [&](const std::string& text) { return read_height_scatter(text, run.inputs.scales); });
   }
   if (vm.count("curvature-scatter")) {
-    if (run.supercell == 1 && vm["supercell"].defaulted()) {
-      throw input::UsageError("--curvature-scatter needs --supercell K (the caps whose shapes scatter: K x K cells)");
-    }
-    run.curvature = read_curvature_scatter(vm["curvature-scatter"].as<std::string>());
-    run.curvature.seed = seed;
-    const std::size_t caps = static_cast<std::size_t>(run.supercell) * run.supercell * run.geometry.sites.size();
-    if (run.curvature.kind == model::HeightScatter::Kind::list && run.curvature.values.size() != caps) {
-      throw input::UsageError("--curvature-scatter list has " + std::to_string(run.curvature.values.size()) +
-                              " values: it needs one per cap, " + std::to_string(caps));
-    }
+    run.curvature = supercell_scatter("curvature-scatter", "shapes", read_curvature_scatter);
     if (run.curvature.kind == model::HeightScatter::Kind::uniform && !(run.curvature.width < 1.0)) {
       throw input::UsageError("--curvature-scatter uniform:" + input::json_number(run.curvature.width) +
                               " is outside its range: a half-width below 1 (C (1 + d) must stay > 0)");
@@ -538,10 +534,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     }
   }
   if (run.seeds > 1) {
-    const auto drawn = [](const model::HeightScatter& s) {
-      return s.kind == model::HeightScatter::Kind::normal || s.kind == model::HeightScatter::Kind::uniform;
-    };
-    if (!drawn(run.scatter) && !drawn(run.curvature)) {
+    if (!model::drawn_at_random(run.scatter) && !model::drawn_at_random(run.curvature)) {
       throw input::UsageError("--seeds " + std::to_string(run.seeds) +
                               " draws the scatter again for each seed: it needs --scatter normal:SD or uniform:HALFWIDTH "
                               "(or --curvature-scatter's, with --supercell K)");
@@ -556,7 +549,7 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
     if (caps < 1 || caps > kMaxPartCaps) {
       throw input::UsageError("--part-caps = " + text + " is outside its range: a whole number in [1, 1e15]");
     }
-    if (run.scatter.kind != model::HeightScatter::Kind::normal && run.scatter.kind != model::HeightScatter::Kind::uniform) {
+    if (!model::drawn_at_random(run.scatter)) {
       throw input::UsageError("--part-caps: the tallest of a part's caps follows from the heights' distribution: it "
                               "needs --scatter normal:SD or uniform:HALFWIDTH (with --supercell K)");
     }
@@ -1190,6 +1183,29 @@ SurfaceEnsemble::Member ensemble_member(const SurfaceRun& run, std::uint64_t see
   return m;
 }
 
+/// Each series' statistics over `members`' draws, per time.
+std::vector<std::vector<model::SampleStatistics>> series_statistics(const std::vector<SurfaceEnsemble::Member>& members) {
+  std::vector<std::vector<model::SampleStatistics>> out;
+  for (std::size_t q = 0; q < members.front().series.size(); ++q) {
+    std::vector<model::SampleStatistics>& at = out.emplace_back();
+    for (std::size_t t = 0; t < members.front().series[q].size(); ++t) {
+      std::vector<double> values;
+      for (const SurfaceEnsemble::Member& m : members) values.push_back(m.series[q][t]);
+      at.push_back(model::sample_statistics(std::move(values)));
+    }
+  }
+  return out;
+}
+
+/// The largest standard error among `series`' means (--target-error's measure).
+double largest_error(const std::vector<std::vector<model::SampleStatistics>>& series) {
+  double worst = 0.0;
+  for (const std::vector<model::SampleStatistics>& at : series) {
+    for (const model::SampleStatistics& s : at) worst = std::max(worst, s.se);
+  }
+  return worst;
+}
+
 }  // namespace
 
 SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& given, const input::PointMaterial& material,
@@ -1197,24 +1213,8 @@ SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& give
   SurfaceEnsemble out;
   out.target_error = run.target_error;
   const std::uint64_t first = run.seed;
-  // --target-error: the largest standard error of a mean share or area fraction so far.
-  const auto largest_error = [&out] {
-    double worst = 0.0;
-    const std::size_t times = out.members.front().valid.size();
-    for (std::size_t q = 0; q < out.members.front().series.size(); ++q) {
-      for (std::size_t t = 0; t < times; ++t) {
-        std::vector<double> values;
-        for (const SurfaceEnsemble::Member& m : out.members) values.push_back(m.series[q][t]);
-        worst = std::max(worst, model::sample_statistics(std::move(values)).se);
-      }
-    }
-    return worst;
-  };
   for (int k = 0; k < run.seeds; ++k) {
-    if (run.target_error > 0.0 && k >= kLeastDraws) {
-      out.reached_error = largest_error();
-      if (out.reached_error <= run.target_error) break;
-    }
+    if (run.target_error > 0.0 && k >= kLeastDraws && largest_error(series_statistics(out.members)) <= run.target_error) break;
     const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
     if (progress) std::cerr << "punchsweep surface: draw " << k + 1 << " of " << run.seeds << " (seed " << seed << ")\n";
     if (k == 0) {
@@ -1228,8 +1228,9 @@ SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& give
     evaluate(draw, progress);
     out.members.push_back(ensemble_member(draw, seed));
   }
+  out.series = series_statistics(out.members);
   if (run.target_error > 0.0) {
-    out.reached_error = largest_error();
+    out.reached_error = largest_error(out.series);
     if (out.reached_error > run.target_error) {
       std::ostringstream note;
       note << "--target-error " << run.target_error << ": after " << out.members.size()
@@ -1251,13 +1252,6 @@ SurfaceEnsemble evaluate_ensemble(SurfaceRun& run, const po::variables_map& give
   }
   out.series_names = {"area_fraction", "touched"};
   for (std::size_t level = 0; level < L; ++level) out.series_names.push_back("touched_" + std::to_string(level));
-  for (std::size_t q = 0; q < out.series_names.size(); ++q) {
-    std::vector<model::SampleStatistics> at;
-    for (std::size_t t = 0; t < run.history.snapshots.size(); ++t) {
-      at.push_back(over_draws([q, t](const SurfaceEnsemble::Member& m) { return m.series[q][t]; }));
-    }
-    out.series.push_back(std::move(at));
-  }
   return out;
 }
 

@@ -53,6 +53,10 @@ std::optional<PhysicalUnit> physical_unit(std::string_view scaled_unit, const Ph
   return std::nullopt;
 }
 
+PhysicalUnit physical_unit_or_scaled(std::string_view scaled_unit, const PhysicalScales& scales) {
+  return physical_unit(scaled_unit, scales).value_or(PhysicalUnit{1.0, std::string(scaled_unit)});
+}
+
 double read_scaled(const std::string& text, const Scale& scale) {
   const std::optional<model::Physical> physical = model::parse_physical(text, scale.dimension);
   if (!physical) return input::parse_axis_number(text);

@@ -47,6 +47,9 @@ struct PhysicalUnit {
 /// R's unit, E0/(1-nu^2) in Pa, R^2 E0/(1-nu^2) in N, T_eps in the material's time unit;
 /// nullopt for a pure number or an unknown scale.
 std::optional<PhysicalUnit> physical_unit(std::string_view scaled_unit, const PhysicalScales& scales);
+/// The same, or the scaled unit itself (1 of `scaled_unit`) where `scales` does not know it:
+/// how a value is printed for people, in um where the run has R and in R otherwise.
+PhysicalUnit physical_unit_or_scaled(std::string_view scaled_unit, const PhysicalScales& scales);
 
 /// How a scaled quantity reads a physical value: its dimension, scale, and what gives the
 /// scale (for the message when it is missing).

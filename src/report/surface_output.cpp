@@ -351,9 +351,7 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run, const engine::
 /// curvature 1 / (2 C) of its paraboloid).
 void write_measured_caps(std::ostream& out, const engine::SurfaceRun& run, bool csv) {
   const reference::MeasuredCell& measured = *run.measured;
-  const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
-  const double per = unit ? unit->per_scaled : 1.0;
-  const std::string units = unit ? unit->units : "R";
+  const auto [per, units] = input::physical_unit_or_scaled("R", run.inputs.scales);
   const char* lead = csv ? "# " : "  ";
   out << lead << "summits: those rising at least " << measured.least_prominence * per << " " << units
       << " above the highest saddle to higher ground (--prominence; the map's height range " << measured.height_range * per << " "
@@ -454,15 +452,12 @@ void write_table(std::ostream& out, const engine::SurfaceRun& run, bool csv, con
   }
   out << ")\n";
   if (run.measured) write_measured_caps(out, run, csv);
+  const auto [per, units] = input::physical_unit_or_scaled("R", run.inputs.scales);
   if (run.supercell > 1 && run.scatter.kind != model::HeightScatter::Kind::none) {
-    const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
-    out << (csv ? "# " : "  ") << "heights: drops from the tallest tip drawn, " << run.tallest_rise * (unit ? unit->per_scaled : 1.0)
-        << " " << (unit ? unit->units : "R") << " above the tallest tips' design height (a larger supercell draws a taller one)\n";
+    out << (csv ? "# " : "  ") << "heights: drops from the tallest tip drawn, " << run.tallest_rise * per << " " << units
+        << " above the tallest tips' design height (a larger supercell draws a taller one)\n";
   }
   if (run.part_caps > 0.0) {
-    const std::optional<input::PhysicalUnit> unit = input::physical_unit("R", run.inputs.scales);
-    const double per = unit ? unit->per_scaled : 1.0;
-    const std::string units = unit ? unit->units : "R";
     out << (csv ? "# " : "  ") << "part of " << run.part_caps << " caps: its tallest tip about " << run.part_rise[1] * per << " "
         << units << " above the design height (5-95%: " << run.part_rise[0] * per << " to " << run.part_rise[2] * per
         << "), this supercell's " << run.supercell_rise[0] * per << " to " << run.supercell_rise[2] * per << " (drawn: "

@@ -253,11 +253,11 @@ std::vector<double> draws_from(const HeightScatter& scatter, std::size_t count, 
   return out;
 }
 
-bool random(const HeightScatter& scatter) {
+}  // namespace
+
+bool drawn_at_random(const HeightScatter& scatter) {
   return scatter.kind == HeightScatter::Kind::normal || scatter.kind == HeightScatter::Kind::uniform;
 }
-
-}  // namespace
 
 std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t count) {
   std::mt19937_64 engine(scatter.seed);
@@ -267,7 +267,7 @@ std::vector<double> scatter_draws(const HeightScatter& scatter, std::size_t coun
 double tallest_rise_quantile(const HeightScatter& scatter, const std::vector<double>& drops, const std::vector<double>& counts,
                              double q) {
   const bool normal = scatter.kind == HeightScatter::Kind::normal;
-  if ((!normal && scatter.kind != HeightScatter::Kind::uniform) || !(scatter.width > 0.0) || !(q > 0.0 && q < 1.0) ||
+  if (!drawn_at_random(scatter) || !(scatter.width > 0.0) || !(q > 0.0 && q < 1.0) ||
       drops.size() != counts.size() || drops.empty()) {
     throw std::invalid_argument("tallest_rise_quantile: a normal or uniform scatter of width > 0, 0 < q < 1, a count per drop");
   }
@@ -305,7 +305,7 @@ CellGeometry supercell(const CellGeometry& cell, int K, const HeightScatter& sca
   out.Lx = K * cell.Lx;
   out.Ly = K * cell.Ly;
   const std::size_t count = static_cast<std::size_t>(K) * K * cell.sites.size();
-  std::mt19937_64 engine(random(scatter) ? scatter.seed : curvature.seed);
+  std::mt19937_64 engine(drawn_at_random(scatter) ? scatter.seed : curvature.seed);
   const std::vector<double> draws = draws_from(scatter, count, engine);
   const std::vector<double> changes = draws_from(curvature, count, engine);
   std::size_t next = 0;

@@ -159,6 +159,10 @@ struct HeightScatter {
   unsigned long long seed = 1;
 };
 
+/// Whether `scatter` draws at random (normal or uniform), as a seed, an ensemble of seeds
+/// and the tallest of many caps ask; a list or none does not.
+bool drawn_at_random(const HeightScatter& scatter);
+
 /// The draws of `scatter` for `count` sites, in R: normal by Box-Muller and uniform on
 /// [-width, width], both from std::mt19937_64 seeded with `seed` (the engine's sequence is fixed by
 /// the C++ standard); list: its values (std::invalid_argument unless there are `count`).
