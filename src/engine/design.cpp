@@ -532,13 +532,20 @@ class TextureGap {
     if (cap > counted) return other ? kInf : -kInf;   // at most all: no drop
     const std::array<double, 5> key{problem.l, problem.shape.C, X, static_cast<double>(cap), static_cast<double>(level)};
     if (const auto found = known_.find(key); found != known_.end()) return found->second;
-    // Where the spots in contact are small at X, the small-spot limit answers the first cap,
-    // as it answers `surface`'s touchdowns there (docs/model.md 17.6): one answer for both.
+    // Where the spots in contact are small at X, the small-spot limit answers, as it answers
+    // `surface`'s touchdowns there (docs/model.md 17.6): one answer for both. The first cap
+    // of the level from one state; a share of caps by bisection over the drop, each trial the
+    // limit's touchdowns.
+    std::optional<model::SmallSpotCount> limit;
     if (cap == 1 && level == level_) {
-      if (const std::optional<double> limit = closure.limit->level_closure(X)) {
-        ++small_spot_;
-        return known_[key] = *limit + closure.shift;
-      }
+      if (const std::optional<double> drop = closure.limit->level_closure(X)) limit = model::SmallSpotCount{*drop, true};
+    } else {
+      limit = closure.limit->counting(X, cap, every ? model::SmallSpotLimit::kEveryLevel : level);
+    }
+    if (limit) {
+      ++small_spot_;
+      if (!limit->steady) unsteady_.insert(r.text);
+      return known_[key] = limit->drop + closure.shift;
     }
     const reference::LevelClosed closed = solver(closure).counting(X, cap, level);
     if (!closed.steady) unsteady_.insert(r.text);
@@ -1199,11 +1206,14 @@ double edge_move(const DesignResult& coarse, const DesignResult& fine) {
 
 /// The design: the paper's lattice by the model; a texture on --grid N, or (--grid auto)
 /// on grids of doubling nodes from kAutoGridStart until no edge moves by more than
-/// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves).
+/// kAutoGridAccuracy of itself, up to kAutoGridMax (a note says where it still moves); on
+/// kAutoGridStart alone where the small-spot limit closed every edge (no grid read).
 DesignResult design(const DesignArgs& a) {
   if (!a.texture() || a.by_curve()) return design_pass(a, 0);  // (a curve holds its own grid)
   if (const int nodes = engine::read_grid(a.grid.value_or("auto")); nodes != 0) return design_pass(a, nodes);
   DesignResult coarse = design_pass(a, kAutoGridStart);
+  // Every closure in the small-spot limit, none by a contact solve: the edges read no grid.
+  if (coarse.texture->solves == 0 && coarse.texture->small_spot > 0) return coarse;
   for (int nodes = 2 * kAutoGridStart;; nodes *= 2) {
     DesignResult fine = design_pass(a, nodes);
     fine.texture->coarser = coarse.texture->nodes;

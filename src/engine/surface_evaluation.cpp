@@ -1018,6 +1018,14 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
                << grid.nx << " x " << grid.ny << " nodes gave " << own[level];
           run.inputs.notes.push_back(note.str());
         }
+        // A scattered cell's tall caps below its tallest, each its own touchdown.
+        std::size_t tall = 0;
+        for (std::size_t k = 0; k < curve.site_small_spot.size(); ++k) tall += curve.site_small_spot[k] != 0 && given.sites[k].level == 0;
+        if (tall > 0) {
+          run.inputs.notes.push_back("level 0: " + std::to_string(tall) +
+                                     " caps below the tallest touch at loads from the small-spot limit (each in the periodic field of the "
+                                     "caps in contact before it; cap_list's touchdown_from)");
+        }
       }
       line.reset();  // the next curve (--grid auto's finer one) says its own line
       cached = cached && origin == CurveOrigin::cache;

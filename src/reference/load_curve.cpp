@@ -109,6 +109,7 @@ class CurveBuilder {
       throw std::invalid_argument("extend_load_curve: the curve and its front are not this cell's, stopped short of full contact");
     }
     curve.level_small_spot.clear();
+    curve.site_small_spot.clear();
     curve_ = std::move(curve);
     const double top = report_range(curve_.X_first());
     Solved a;

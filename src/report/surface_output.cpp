@@ -132,6 +132,15 @@ std::string touchdown_source(const engine::SurfaceRun& run, int level) {
   return at < run.curve.level_small_spot.size() && run.curve.level_small_spot[at] != 0 ? "small_spot_limit" : "curve";
 }
 
+/// What gave cap k's touchdown, as touchdown_source says a level's ("tallest" for a tip at
+/// drop 0 of level 0).
+std::string cap_touchdown_source(const engine::SurfaceRun& run, std::size_t k) {
+  const model::Site& site = run.geometry.sites[k];
+  if (site.level == 0 && site.drop == 0.0) return "tallest";
+  if (run.curve_source == engine::CurveSource::tables) return "tables";
+  return k < run.curve.site_small_spot.size() && run.curve.site_small_spot[k] != 0 ? "small_spot_limit" : "curve";
+}
+
 /// Per level, whether every cap of it lies under the taller caps' surface
 /// (model::tip_exposed); level 0 never does. One scan of the cell for all levels.
 std::vector<char> hidden_levels(const engine::SurfaceRun& run) {
@@ -311,7 +320,8 @@ void write_json(std::ostream& out, const engine::SurfaceRun& run, const engine::
         << ", \"drop\": " << num(site.drop) << ", \"s\": " << num(site.shape.s) << ", \"C\": " << num(site.shape.C);
     if (run.measured) out << ", \"prominence\": " << num(run.measured->prominence[k]);
     out << ", \"regime\": " << input::json_string(std::string(model::regime_name(touch.regime))) << ", \"t_star\": " << num(touch.t_star)
-        << ", \"X_star\": " << num(touch.X_star) << ", \"resolved\": " << (touch.resolved ? "true" : "false") << "}";
+        << ", \"X_star\": " << num(touch.X_star) << ", \"resolved\": " << (touch.resolved ? "true" : "false")
+        << ", \"touchdown_from\": " << input::json_string(cap_touchdown_source(run, k)) << "}";
   }
   out << (run.geometry.sites.empty() ? "],\n" : "\n  ],\n");
   out << "  \"series\": {\n";

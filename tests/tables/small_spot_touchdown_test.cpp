@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -121,8 +122,7 @@ TEST(SmallSpotTouchdown, a_hexagonal_three_level_cell_closes_at_the_drops_on_fin
 }
 
 // answer_small_spots on a curve: the limit's touchdowns replace the curve's, the levels say
-// so and read as resolved; a scattered supercell (its tallest caps at loads of their own) and
-// a curve's never-touching site are left to the curve.
+// so and read as resolved; a curve's never-touching site is left to the curve.
 TEST(SmallSpotTouchdown, a_curve_takes_the_limits_touchdowns_where_it_answers) {
   const double l = 200.0 / 60.0;
   const model::CellGeometry g = model::lattice_cell(model::LatticeKind::hexagonal, l, model::Shape{2, 0.5}, {2.0 / 60.0, 5.0 / 60.0});
@@ -144,8 +144,63 @@ TEST(SmallSpotTouchdown, a_curve_takes_the_limits_touchdowns_where_it_answers) {
   untouched.site_touchdown[4] = untouched.site_touchdown[5] = std::numeric_limits<double>::infinity();
   EXPECT_EQ(model::answer_small_spots(untouched, g), 2u);
   EXPECT_TRUE(std::isinf(untouched.site_touchdown[4]) && std::isinf(untouched.level_touchdown[2]));
-  const model::CellGeometry scattered = model::supercell(g, 2, model::HeightScatter{model::HeightScatter::Kind::normal, 1e-3, {}, 3});
-  for (const model::SmallSpotTouchdown& t : model::small_spot_touchdowns(scattered)) EXPECT_TRUE(std::isinf(t.X));
+}
+
+// Caps of one level at heights of their own (a scattered supercell's): the tall caps below
+// the tallest touch in turn, as the lower levels' do. A 3 x 1.5 R cell of two square-lattice
+// cells (l = 1.5 R), its tall caps 0.01 R apart and its level-1 caps at 0.02 and 0.025 R:
+// each site's touchdown is the boundary elements' (the curve's own bisection, to 1e-7) on 128
+// and 256 nodes a pitch within twice their change and 2e-4 of X*; with the tallest cap alone
+// the second's X* is Hertz's (the cell's load on one cap at the drop) to the limit's field.
+TEST(SmallSpotTouchdown, caps_of_one_level_at_their_own_heights_touch_as_the_boundary_elements_say) {
+  model::CellGeometry g;
+  g.Lx = 3.0;
+  g.Ly = 1.5;
+  const model::Shape hertz{2, 0.5};
+  g.sites = {{0.75, 0.75, hertz, 0.0, 0}, {2.25, 0.75, hertz, 0.01, 0}, {0.0, 0.0, hertz, 0.02, 1}, {1.5, 0.0, hertz, 0.025, 1}};
+  const std::vector<model::SmallSpotTouchdown> limit = model::small_spot_touchdowns(g);
+  ASSERT_EQ(limit.size(), 4u);
+  EXPECT_EQ(limit[0].X, 0.0);
+  for (std::size_t k = 1; k < 4; ++k) ASSERT_TRUE(std::isfinite(limit[k].X) && limit[k].X > 0.0) << "site " << k;
+  EXPECT_LT(limit[1].X, limit[2].X);
+  EXPECT_LT(limit[2].X, limit[3].X);
+  // Hertz: P = (4/3) d^(3/2) on the tallest cap at d = 0.01, less the field's share (its
+  // images and the balance: a few percent at this spacing).
+  EXPECT_NEAR(limit[1].X, 4.0 / 3.0 * std::pow(0.01, 1.5) / (g.Lx * g.Ly), 0.05 * limit[1].X);
+  reference::LoadCurveOptions options;
+  options.X_top = 1.2 * limit[3].X;
+  std::vector<std::vector<double>> grids;
+  for (const int n : {256, 512}) {  // nodes along Lx = 2 l
+    const reference::Cell cell = reference::make_cell(g, reference::cell_grid(g, n));
+    grids.push_back(reference::build_load_curve(g, cell, options).site_touchdown);
+  }
+  for (std::size_t k = 1; k < 4; ++k) {
+    const double X = limit[k].X, coarse = grids[0][k], fine = grids[1][k];
+    std::printf("site %zu: X* %.9e (spot ratio %.3f); curve on 128 and 256 nodes a pitch %+.2e, %+.2e of it\n", k, X,
+                limit[k].spot_ratio, coarse / X - 1.0, fine / X - 1.0);
+    EXPECT_LE(std::abs(fine - X), 2.0 * std::abs(fine - coarse) + 1e-5 * X) << "site " << k;
+    EXPECT_LE(std::abs(fine - X), 2e-4 * X) << "site " << k;
+  }
+  // A share of a level (both its caps) and of every cap (3 of 4) at a load past the last
+  // touchdown: the level's drop at which they have touched, the limit's (by its touchdowns,
+  // the level moved) against the boundary elements' (reference::LevelClosure, a contact
+  // solve a trial) on 128 and 256 nodes a pitch.
+  const model::SmallSpotLimit closing(g, 1);
+  const double X = 1.1 * limit[3].X;
+  for (const auto& [caps, level] : {std::pair<std::size_t, int>{2, 1}, std::pair<std::size_t, int>{3, model::SmallSpotLimit::kEveryLevel}}) {
+    const std::optional<model::SmallSpotCount> found = closing.counting(X, caps, level);
+    ASSERT_TRUE(found.has_value()) << caps << " caps";
+    EXPECT_TRUE(found->steady);
+    std::vector<double> solved;
+    for (const int n : {256, 512}) {
+      reference::LevelClosure closure(g, 1, reference::cell_grid(g, n));
+      solved.push_back(closure.counting(X, caps, level == model::SmallSpotLimit::kEveryLevel ? reference::LevelClosure::kEveryLevel : level).drop);
+    }
+    std::printf("%zu caps of level %d by X = %.6e: drop %.9e; contact solves on 128 and 256 nodes a pitch %+.2e, %+.2e of it\n", caps,
+                level, X, found->drop, solved[0] / found->drop - 1.0, solved[1] / found->drop - 1.0);
+    EXPECT_LE(std::abs(solved[1] - found->drop), 2.0 * std::abs(solved[1] - solved[0]) + 1e-5 * found->drop) << caps << " caps";
+    EXPECT_LE(std::abs(solved[1] - found->drop), 2e-4 * found->drop) << caps << " caps";
+  }
 }
 
 namespace {

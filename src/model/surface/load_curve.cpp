@@ -108,6 +108,7 @@ LoadCurve LoadCurve::up_to(double X_end) const {
   for (double& X : out.site_touchdown) X = X > out.X_last() ? std::numeric_limits<double>::infinity() : X;
   out.level_touchdown = out.least_site_touchdowns(levels());
   out.level_small_spot.clear();
+  out.site_small_spot.clear();
   return out;
 }
 

@@ -75,6 +75,9 @@ struct LoadCurve {
   /// docs/model.md section 17.6), which holds it below X_resolved as well; empty on a curve
   /// as built or read (the limit is taken after, from the geometry; tables() leaves it out).
   std::vector<char> level_small_spot;
+  /// Per site: 1 where its touchdown is the small-spot limit's (as level_small_spot; empty
+  /// alike on a curve as built or read).
+  std::vector<char> site_small_spot;
 
   int levels() const { return static_cast<int>(level_touchdown.size()); }
   std::size_t sites() const { return site_level.size(); }

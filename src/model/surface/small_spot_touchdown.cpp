@@ -154,7 +154,17 @@ class SmallSpotCell {
     double delta = 0.0;
     bool converged = false;
   };
-  State at(const std::vector<std::size_t>& loaded, double X) const {
+  /// The state from `from` where given (a converged state of the first sites of `loaded`, at
+  /// a load near X: the sites that joined since start at a thousandth of its largest radius),
+  /// or where Newton does not converge from there, from the isolated caps.
+  State at(const std::vector<std::size_t>& loaded, double X, const State* from = nullptr) const {
+    if (from != nullptr && from->converged && from->a.size() > 0 && from->a.size() <= static_cast<Eigen::Index>(loaded.size())) {
+      State warm = solve(loaded, X, from);
+      if (warm.converged) return warm;
+    }
+    return solve(loaded, X, nullptr);
+  }
+  State solve(const std::vector<std::size_t>& loaded, double X, const State* from) const {
     const Eigen::Index N = static_cast<Eigen::Index>(loaded.size());
     const double total = X * geometry_.Lx * geometry_.Ly;
     Eigen::MatrixXd G(N, N), L(N, N);
@@ -168,22 +178,44 @@ class SmallSpotCell {
     st.P = Eigen::VectorXd::Zero(N);
     st.M2 = Eigen::VectorXd::Zero(N);
     st.a = Eigen::VectorXd(N);
-    // Start: the load shared evenly, each radius its isolated punch's (a tenth of it for a
-    // lower site, which joined at a spot of zero).
-    for (Eigen::Index i = 0; i < N; ++i) {
-      st.a(i) = std::pow(total / static_cast<double>(N) / K_P_[site(loaded, i)], 1.0 / (shape(loaded, i).s + 1.0));
-      if (geometry_.sites[site(loaded, i)].drop > 0.0) st.a(i) *= 0.1;
-    }
-    // The curvatures and far-field moments start from the tallest caps' isolated share
-    // (the lower sites, just in contact, carry little).
     Eigen::VectorXd P0 = Eigen::VectorXd::Zero(N), M0 = Eigen::VectorXd::Zero(N);
-    for (Eigen::Index i = 0; i < N; ++i) {
-      if (geometry_.sites[site(loaded, i)].drop > 0.0) continue;
-      P0(i) = K_P_[site(loaded, i)] * std::pow(st.a(i), shape(loaded, i).s + 1.0);
-      M0(i) = m2_[site(loaded, i)] * std::pow(st.a(i), shape(loaded, i).s + 3.0);
+    if (from != nullptr) {
+      const Eigen::Index n = from->a.size();
+      st.a.head(n) = from->a;
+      st.a.tail(N - n).setConstant(1e-3 * from->a.maxCoeff());
+      P0.head(n) = from->P;
+      M0.head(n) = from->M2;
+      st.delta = from->delta;
+    } else {
+      // Start: each cap an isolated punch sunk to one depth delta0 below the tallest tip
+      // (Greenwood and Williamson's independent caps), delta0 such that they carry the load; a
+      // cap in contact that delta0 does not reach (a lower site just joined) starts at a
+      // thousandth of the largest radius. The curvatures, far-field moments and tilts start
+      // from those caps' loads.
+      const auto isolated_radius = [&](Eigen::Index i, double delta0) {
+        const double depth = delta0 - geometry_.sites[site(loaded, i)].drop;
+        return depth > 0.0 ? std::pow(depth / K_d_[site(loaded, i)], 1.0 / shape(loaded, i).s) : 0.0;
+      };
+      const auto isolated_load = [&](double delta0) {
+        double sum = 0.0;
+        for (Eigen::Index i = 0; i < N; ++i) sum += K_P_[site(loaded, i)] * std::pow(isolated_radius(i, delta0), shape(loaded, i).s + 1.0);
+        return sum;
+      };
+      double least_drop = std::numeric_limits<double>::infinity();
+      for (Eigen::Index i = 0; i < N; ++i) least_drop = std::min(least_drop, geometry_.sites[site(loaded, i)].drop);
+      double deep = 1.0;
+      while (isolated_load(least_drop + deep) < total) deep *= 2.0;
+      const double delta0 = bisect_boundary([&](double d) { return isolated_load(least_drop + d) < total; }, 0.0, deep, 1e-15, 200).first + least_drop;
+      for (Eigen::Index i = 0; i < N; ++i) {
+        st.a(i) = isolated_radius(i, delta0);
+        P0(i) = K_P_[site(loaded, i)] * std::pow(st.a(i), shape(loaded, i).s + 1.0);
+        M0(i) = m2_[site(loaded, i)] * std::pow(st.a(i), shape(loaded, i).s + 3.0);
+      }
+      const double widest = st.a.maxCoeff();
+      for (Eigen::Index i = 0; i < N; ++i) st.a(i) = std::max(st.a(i), 1e-3 * widest);
     }
     P0 *= total / P0.sum();
-    Eigen::VectorXd eps = 0.25 * (L * P0), moment = 0.25 * (L * M0);
+    Eigen::VectorXd eps = 0.25 * (L * P0), moment = 0.25 * (L * M0), tilt = tilts(loaded, P0);
     // Sneddon's relations for site i's profile C r^s + eps r^2 at radius a: its load P and
     // sinking F, and their slopes in a.
     struct Cap {
@@ -196,12 +228,13 @@ class SmallSpotCell {
                  (s + 1.0) * K_P_[k] * std::pow(a, s) + 8.0 * curvature * a * a,
                  K_d_[k] * std::pow(a, s) + 2.0 * curvature * a * a, s * K_d_[k] * std::pow(a, s - 1.0) + 4.0 * curvature * a};
     };
+    int restarts = 0;
     for (int outer = 0; outer < 40; ++outer) {
-      // Newton on the radii and delta, the curvatures and far-field moments held:
-      // drop_i + moment_i + F_i(a_i) + sum_j G_ij P_j(a_j) = delta, sum_j P_j(a_j) = total.
+      // Newton on the radii and delta, the curvatures, far-field moments and tilts held:
+      // drop_i - tilt_i + moment_i + F_i(a_i) + sum_j G_ij P_j(a_j) = delta, sum_j P_j(a_j) = total.
       Eigen::VectorXd a = st.a;
       double delta = st.delta;
-      bool newton = false;
+      bool newton = false, collapsed = false;
       for (int it = 0; it < 100 && !newton; ++it) {
         Eigen::VectorXd P(N), dP(N), F(N), dF(N);
         for (Eigen::Index i = 0; i < N; ++i) {
@@ -215,7 +248,7 @@ class SmallSpotCell {
         Eigen::VectorXd r(N + 1);
         const Eigen::VectorXd GP = G * P;
         for (Eigen::Index i = 0; i < N; ++i) {
-          r(i) = geometry_.sites[site(loaded, i)].drop + moment(i) + F(i) + GP(i) - delta;
+          r(i) = geometry_.sites[site(loaded, i)].drop - tilt(i) + moment(i) + F(i) + GP(i) - delta;
           J.row(i).head(N) = G.row(i).cwiseProduct(dP.transpose());
           J(i, i) += dF(i);
           J(i, N) = -1.0;
@@ -231,7 +264,11 @@ class SmallSpotCell {
         }
         a -= damp * step.head(N);
         delta -= damp * step(N);
-        if (!a.allFinite() || a.minCoeff() < 1e-12 * a.maxCoeff()) break;  // a site not in contact at this load
+        if (!a.allFinite()) break;
+        if (a.minCoeff() < 1e-12 * a.maxCoeff()) {  // a site not in contact at this load (with these fields)
+          collapsed = true;
+          break;
+        }
         // Converged where the step or the residual is at rounding (a just-joined site's small
         // radius moves by 1e-13 of the largest for a residual of 1e-17).
         newton = damp == 1.0 && (step.head(N).cwiseAbs().maxCoeff() <= 1e-12 * a.maxCoeff() ||
@@ -249,7 +286,15 @@ class SmallSpotCell {
       st.delta = delta;
       eps = 0.25 * (L * P);
       moment = 0.25 * (L * M2);
-      if (!newton) break;
+      tilt = tilts(loaded, P);
+      if (!newton) {
+        // A site just in contact whose spot the held fields close (the start's fields, a
+        // little off the state's): again from this state's fields, its radius a thousandth
+        // of the largest; twice at most.
+        if (!collapsed || ++restarts > 2) break;
+        st.a = a.cwiseMax(1e-3 * a.maxCoeff());
+        continue;
+      }
       if (outer > 0 && moved <= 1e-12 * a.maxCoeff()) {
         st.converged = true;
         break;
@@ -270,19 +315,38 @@ class SmallSpotCell {
       gx += st.P(J) * Gx_(k, loaded[j]);
       gy += st.P(J) * Gy_(k, loaded[j]);
     }
-    const double slope = std::hypot(gx, gy);
-    double tilt = 0.0;
-    if (target.shape.s == 1) {
-      if (slope > target.shape.C) return std::numeric_limits<double>::quiet_NaN();
-    } else {
-      const double s = target.shape.s;
-      const double y = std::pow(slope / (s * target.shape.C), 1.0 / (s - 1.0));
-      tilt = (s - 1.0) * target.shape.C * std::pow(y, s);
-    }
+    const double tilt = tilt_of(target.shape, std::hypot(gx, gy));
+    if (std::isnan(tilt)) return tilt;
     return st.delta - u + tilt;
   }
 
  private:
+  /// How far a field of this slope lowers the gap of a cap of `shape` at its lowest point,
+  /// off the tip where the field tilts, (s - 1) C y^s, y = (slope / (s C))^(1 / (s - 1)) (a
+  /// paraboloid's vertex moved by the tilted plane, exactly); NaN for a cone the slope
+  /// turns off its tip (slope > C), 0 for a cone within.
+  static double tilt_of(const Shape& shape, double slope) {
+    if (shape.s == 1) return slope > shape.C ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+    const double s = shape.s;
+    const double y = std::pow(slope / (s * shape.C), 1.0 / (s - 1.0));
+    return (s - 1.0) * shape.C * std::pow(y, s);
+  }
+  /// Each loaded site's tilt (tilt_of) in the field of the loads P of `loaded` (a scattered
+  /// cell's caps lie on slopes of each other's fields; a lattice's by symmetry do not); 0
+  /// for a cone.
+  Eigen::VectorXd tilts(const std::vector<std::size_t>& loaded, const Eigen::VectorXd& P) const {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(loaded.size()));
+    for (std::size_t i = 0; i < loaded.size(); ++i) {
+      double gx = 0.0, gy = 0.0;
+      for (std::size_t j = 0; j < loaded.size(); ++j) {
+        gx += P(static_cast<Eigen::Index>(j)) * Gx_(loaded[i], loaded[j]);
+        gy += P(static_cast<Eigen::Index>(j)) * Gy_(loaded[i], loaded[j]);
+      }
+      const double t = tilt_of(geometry_.sites[loaded[i]].shape, std::hypot(gx, gy));
+      out(static_cast<Eigen::Index>(i)) = std::isnan(t) ? 0.0 : t;
+    }
+    return out;
+  }
   static std::size_t site(const std::vector<std::size_t>& loaded, Eigen::Index i) { return loaded[static_cast<std::size_t>(i)]; }
   const Shape& shape(const std::vector<std::size_t>& loaded, Eigen::Index i) const { return geometry_.sites[site(loaded, i)].shape; }
   /// Site a's tip less site b's, to the nearest periodic image.
@@ -299,16 +363,14 @@ class SmallSpotCell {
   Eigen::MatrixXd G_, L_, Gx_, Gy_;  ///< between every pair of sites: G, its Laplacian and gradient
 };
 
-/// Whether the limit takes the cell: every level-0 site at drop 0 (a scattered supercell's
-/// nearly tallest caps touch at loads of their own, which are the curve's), at most
+/// Whether the limit takes the cell: a level-0 site at drop 0 (the tallest tips; a
+/// scattered supercell's other tall caps touch in turn, as lower sites do), at most
 /// kSmallSpotMaxSites sites. The tallest sites, or none.
 std::vector<std::size_t> tallest_sites(const CellGeometry& geometry) {
   std::vector<std::size_t> tallest;
   if (geometry.sites.empty() || geometry.sites.size() > kSmallSpotMaxSites) return {};
   for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
-    if (geometry.sites[k].level != 0) continue;
-    if (geometry.sites[k].drop != 0.0) return {};
-    tallest.push_back(k);
+    if (geometry.sites[k].level == 0 && geometry.sites[k].drop == 0.0) tallest.push_back(k);
   }
   return tallest;
 }
@@ -327,99 +389,126 @@ SmallSpotLimit::SmallSpotLimit(const CellGeometry& geometry, int closing_level)
   if (closing_level_ >= 1) others_ = touchdowns(closing_level_);
 }
 
-std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) const {
-  std::vector<SmallSpotTouchdown> out(geometry_.sites.size());
-  if (!cell_) return out;
-  std::vector<std::size_t> loaded = tallest_;
+namespace {
+
+/// small_spot_touchdowns of `geometry` (whose fields `cell` holds: the sites' places and
+/// shapes, whatever their drops), its tallest sites `tallest`, the sites of `skipped_level`
+/// left out; where `enough` > 0, only until that many sites of `counted_level` (every
+/// site's for SmallSpotLimit::kEveryLevel) have touched, and only until past X_stop.
+std::vector<SmallSpotTouchdown> touchdowns_of(const CellGeometry& geometry, const SmallSpotCell& cell, const std::vector<std::size_t>& tallest,
+                                              int skipped_level, int counted_level = SmallSpotLimit::kEveryLevel, std::size_t enough = 0,
+                                              double X_stop = std::numeric_limits<double>::infinity()) {
+  std::vector<SmallSpotTouchdown> out(geometry.sites.size());
+  std::vector<std::size_t> loaded = tallest;
   for (const std::size_t k : loaded) out[k] = {0.0, 0.0};
   // (The reach's first guess: the tallest caps' isolated spots, the cell shared among them.)
-  const double share = geometry_.Lx * geometry_.Ly / static_cast<double>(tallest_.size());
-  const Shape& tall = geometry_.sites[tallest_[0]].shape;
-  // The sites touch in turn: each round finds every untouched site's touchdown with the
-  // sites in contact so far, and the first (with those within 1e-9 of it) join them, where
-  // the limit still holds for every other site there.
+  const double share = geometry.Lx * geometry.Ly / static_cast<double>(tallest.size());
+  const Shape& tall = geometry.sites[tallest[0]].shape;
+  // The sites touch in turn: each round finds the least load at which an untouched site's
+  // gap closes with the sites in contact so far (the root of the largest closure past its
+  // drop, one state a trial load for every site), and the sites closed there (within 1e-9
+  // of it) join them, as long as the limit holds for every untouched site: past the first
+  // load where the spots outgrow one's nearest distance nothing more is answered (a site
+  // there might have touched before the next).
   double X_from = 0.0;
+  SmallSpotCell::State last;  // the last round's state where its sites joined
   for (;;) {
-    std::vector<std::pair<double, std::size_t>> found;
-    double held_to = std::numeric_limits<double>::infinity();  // the least load where a site's reach ends unanswered
-    for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-      if (std::find(loaded.begin(), loaded.end(), k) != loaded.end() || geometry_.sites[k].level == skipped_level ||
-          !(geometry_.sites[k].drop > 0.0)) {
-        continue;
-      }
-      const double reach = cell_->nearest(loaded, k);
-      const Site& site = geometry_.sites[k];
-      // One state at load X: its largest spot, and how far site k's gap is past closing
-      // (+infinity where the state is not found or a cone's tip is tilted off).
-      struct Probe {
-        double spot, excess;
-      };
-      const auto probe_at = [&](double X) {
-        const SmallSpotCell::State st = cell_->at(loaded, X);
-        const double c = cell_->closure(loaded, st, k);
-        return Probe{st.a.maxCoeff(), std::isnan(c) || !st.converged ? std::numeric_limits<double>::infinity() : c - site.drop};
-      };
-      const auto probe = [&](double log_X) { return probe_at(std::exp(log_X)); };
-      // A site like one found this round (a supercell's copies, a lattice's images) closes at
-      // its load: one state there says so (its gap closed to rounding, its spots within reach).
-      const auto alike = std::find_if(found.begin(), found.end(), [&](const auto& f) {
-        const Site& other = geometry_.sites[f.second];
-        return other.level == site.level && other.drop == site.drop && other.shape.s == site.shape.s && other.shape.C == site.shape.C;
-      });
-      if (alike != found.end()) {
-        const double X = alike->first;  // (a copy: found grows below)
-        const Probe there = probe_at(X);
-        if (std::abs(there.excess) <= 1e-12 * site.drop && there.spot <= kSmallSpotMaxRatio * reach) {
-          found.emplace_back(X, k);
-          out[k] = {X, there.spot / reach};
-          continue;
-        }
-      }
-      // The limit's reach: the largest load whose spots stay within kSmallSpotMaxRatio of
-      // the nearest distance (bisection in log X), from just above the last touchdown (1e-6
-      // of the load past it: the sites that joined there have spots, not points, which the
-      // state's solve, holding curvatures and moments while it moves the radii, finds).
-      double hi = std::log(load_coefficient(tall) * std::pow(2.0 * kSmallSpotMaxRatio * reach, tall.s + 1) / share);
-      const double floor = X_from > 0.0 ? std::log(X_from) + 1e-6 : hi - 80.0;
-      const auto within = [&](const Probe& p) { return p.spot <= kSmallSpotMaxRatio * reach; };
-      const Probe at_floor = hi > floor ? probe(floor) : Probe{};
-      if (!(hi > floor) || !within(at_floor)) {
-        held_to = std::min(held_to, X_from);
-        continue;
-      }
-      Probe at_hi = probe(hi);
-      if (!within(at_hi)) {
-        hi = bisect_boundary([&](double log_X) { return within(probe(log_X)); }, floor, hi, 0.0, 24).first;  // (to 5e-6 of the range in log X)
-        at_hi = probe(hi);
-      }
-      const double f_hi = at_hi.excess, f_lo = at_floor.excess;
-      if (!(f_hi >= 0.0) || !(f_lo < 0.0)) {  // not closed within the reach (or closed before)
-        held_to = std::min(held_to, std::exp(hi));
-        continue;
-      }
-      const RootResult root = brent([&](double log_X) { return probe(log_X).excess; }, floor, hi, f_lo, f_hi, 1e-13);
-      if (!root.converged) {
-        held_to = std::min(held_to, std::exp(floor));
-        continue;
-      }
-      found.emplace_back(std::exp(root.x), k);
-      out[k] = {std::exp(root.x), probe(root.x).spot / reach};
-    }
-    std::sort(found.begin(), found.end());
-    // The first to touch keep their answers where no site left unanswered might have
-    // touched before them; the later ones are found again with them.
-    const double first = found.empty() ? std::numeric_limits<double>::infinity() : found.front().first;
-    for (const auto& [X, k] : found) {
-      if (X <= first * (1.0 + 1e-9) && first <= held_to) {
-        loaded.push_back(k);
-      } else {
-        out[k] = {};
+    std::vector<std::size_t> untouched;
+    for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+      if (std::find(loaded.begin(), loaded.end(), k) == loaded.end() && geometry.sites[k].level != skipped_level &&
+          geometry.sites[k].drop > 0.0) {
+        untouched.push_back(k);
       }
     }
-    if (found.empty() || !(first <= held_to)) break;
-    X_from = first;
+    if (untouched.empty()) break;
+    double reach = std::numeric_limits<double>::infinity();
+    for (const std::size_t k : untouched) reach = std::min(reach, cell.nearest(loaded, k));
+    // One state at load X: its largest spot, and how far the untouched sites' gaps are past
+    // closing, the furthest (+infinity where the state is not found or a cone's tip is
+    // tilted off).
+    // (Each state starts from the round's first, at its floor, which starts from the last
+    // round's.)
+    struct Probe {
+      double spot, excess;
+      std::vector<double> excesses;
+      SmallSpotCell::State state;
+    };
+    const SmallSpotCell::State* start = &last;
+    const auto probe_at = [&](double X) {
+      SmallSpotCell::State st = cell.at(loaded, X, start);
+      Probe p{st.a.maxCoeff(), -std::numeric_limits<double>::infinity(), {}, {}};
+      for (const std::size_t k : untouched) {
+        const double c = cell.closure(loaded, st, k);
+        p.excesses.push_back(std::isnan(c) || !st.converged ? std::numeric_limits<double>::infinity() : c - geometry.sites[k].drop);
+        p.excess = std::max(p.excess, p.excesses.back());
+      }
+      p.state = std::move(st);
+      return p;
+    };
+    const auto probe = [&](double log_X) { return probe_at(std::exp(log_X)); };
+    const auto within = [&](const Probe& p) { return p.spot <= kSmallSpotMaxRatio * reach; };
+    // The limit's reach: the largest load whose spots stay within kSmallSpotMaxRatio of the
+    // nearest distance (bisection in log X), from just above the last touchdown (1e-6 of the
+    // load past it: the sites that joined there have spots, not points, which the state's
+    // solve, holding curvatures and moments while it moves the radii, finds).
+    // Its first guess: the tallest caps' spots at twice that size, each isolated, the cell's
+    // load shared among them; where the spots there are still within and no site has closed
+    // (the load shared with more caps: a scattered cell's), four times the load, and on.
+    double hi = std::log(load_coefficient(tall) * std::pow(2.0 * kSmallSpotMaxRatio * reach, tall.s + 1) / share);
+    const double floor = X_from > 0.0 ? std::log(X_from) + 1e-6 : hi - 80.0;
+    if (!(hi > floor)) hi = floor + std::log(4.0);
+    const Probe at_floor = probe(floor);
+    if (!within(at_floor) || !(at_floor.excess < 0.0)) break;
+    start = &at_floor.state;
+    double lo = floor;  // the last load known within, every site still open there
+    double open = at_floor.excess;
+    Probe at_hi = probe(hi);
+    while (within(at_hi) && !(at_hi.excess >= 0.0) && hi < floor + 80.0) {
+      lo = hi;
+      open = at_hi.excess;
+      hi += std::log(4.0);
+      at_hi = probe(hi);
+    }
+    if (!within(at_hi)) {
+      hi = bisect_boundary([&](double log_X) { return within(probe(log_X)); }, lo, hi, 0.0, 24).first;  // (to 5e-6 of the range in log X)
+      at_hi = probe(hi);
+    }
+    if (!(at_hi.excess >= 0.0)) break;  // none closes within the reach
+    const RootResult root = brent([&](double log_X) { return probe(log_X).excess; }, lo, hi, open, at_hi.excess, 1e-13);
+    if (!root.converged) break;
+    const double X = std::exp(root.x);
+    // (A closure past its drop, found: +infinity is a state not found or a cone tilted off.)
+    const Probe joined = probe_at(X * (1.0 + 1e-9));
+    const auto closed = [&](std::size_t i) { return joined.excesses[i] >= 0.0 && std::isfinite(joined.excesses[i]); };
+    bool any = false;
+    for (std::size_t i = 0; i < untouched.size(); ++i) {
+      if (!closed(i)) continue;
+      out[untouched[i]] = {X, joined.spot / cell.nearest(loaded, untouched[i])};
+      any = true;
+    }
+    if (!any) break;
+    for (std::size_t i = 0; i < untouched.size(); ++i) {
+      if (closed(i)) loaded.push_back(untouched[i]);
+    }
+    last = joined.state;
+    X_from = X;
+    if (X_from > X_stop) break;
+    if (enough > 0) {
+      std::size_t touched = 0;
+      for (std::size_t k = 0; k < out.size(); ++k) {
+        touched += std::isfinite(out[k].X) && (counted_level == SmallSpotLimit::kEveryLevel || geometry.sites[k].level == counted_level);
+      }
+      if (touched >= enough) break;
+    }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<SmallSpotTouchdown> SmallSpotLimit::touchdowns(int skipped_level) const {
+  if (!cell_) return std::vector<SmallSpotTouchdown>(geometry_.sites.size());
+  return touchdowns_of(geometry_, *cell_, tallest_, skipped_level);
 }
 
 std::optional<double> SmallSpotLimit::level_closure(double X) const {
@@ -470,10 +559,141 @@ std::optional<double> SmallSpotLimit::level_closure(double X) const {
   return drop;
 }
 
+std::optional<SmallSpotCount> SmallSpotLimit::counting(double X, std::size_t caps, int level) const {
+  const int closing = closing_level_;
+  if (!cell_ || closing < 1 || !(X > 0.0) || caps < 1) return std::nullopt;
+  // The closing level's caps below its tallest, and the deepest drop at which each of its
+  // tips still lies on the other levels' surfaces (reference::LevelClosure's).
+  double least_drop = std::numeric_limits<double>::infinity();
+  std::size_t number = 0;  // of the caps counted
+  for (const Site& site : geometry_.sites) {
+    if (site.level == closing) least_drop = std::min(least_drop, site.drop);
+    number += level == kEveryLevel || site.level == level ? 1 : 0;
+  }
+  if (caps > number) return std::nullopt;
+  const SurfaceLocator surface(geometry_);
+  double deepest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
+    if (geometry_.sites[k].level != closing) continue;
+    for (std::size_t j = 0; j < geometry_.sites.size(); ++j) {
+      if (geometry_.sites[j].level == closing) continue;
+      const double covered = surface.surface(j, surface.distance(geometry_.sites[k].x, geometry_.sites[k].y, j));
+      deepest = std::min(deepest, covered - (geometry_.sites[k].drop - least_drop));
+    }
+  }
+  deepest *= 1.0 - 1e-8;
+  if (!(deepest > 0.0) || !std::isfinite(deepest)) return std::nullopt;
+  // The cell with the level's tallest cap at `drop`, its fields the limit's own (they do not
+  // depend on the drops).
+  CellGeometry moved = geometry_;
+  const SmallSpotCell cell(moved);
+  const auto move_to = [&](double drop) {
+    for (std::size_t k = 0; k < moved.sites.size(); ++k) {
+      if (moved.sites[k].level == closing) moved.sites[k].drop = drop + (geometry_.sites[k].drop - least_drop);
+    }
+  };
+  const auto counted = [&](std::size_t k) { return level == kEveryLevel || moved.sites[k].level == level; };
+  const double top = 1e-9 * deepest;  // (at drop 0 a cap of the level would be a tallest tip)
+  if (level != kEveryLevel) {
+    // One level's caps: the caps-th least of their touchdowns with the level's tallest cap at
+    // `drop` (+infinity where the limit does not answer it: it answers the sites in the
+    // order they touch, up to its reach), continuous in the drop. f = it less X rises with
+    // the drop: the closing level's caps touch the later the deeper it lies, another level's
+    // the sooner (its sign then turned). An unanswered touchdown lies where the caps in
+    // contact outgrow the limit's reach (deep for the level's own, high for another's): +-10 X
+    // stands for it, and the root found must be a touchdown the limit answers at X.
+    const auto touch_at = [&](double drop) {
+      move_to(drop);
+      const std::vector<SmallSpotTouchdown> found = touchdowns_of(moved, cell, tallest_, -1, level, caps);
+      std::vector<double> touches;
+      for (std::size_t k = 0; k < moved.sites.size(); ++k) {
+        if (counted(k) && std::isfinite(found[k].X)) touches.push_back(found[k].X);
+      }
+      if (touches.size() < caps) return std::numeric_limits<double>::infinity();
+      std::nth_element(touches.begin(), touches.begin() + static_cast<std::ptrdiff_t>(caps - 1), touches.end());
+      return touches[caps - 1];
+    };
+    const bool rising = level != closing;
+    const auto f = [&](double drop) {
+      const double touch = touch_at(drop);
+      const double g = std::isfinite(touch) ? touch - X : 10.0 * X;
+      return rising ? -g : g;
+    };
+    const double f_top = f(top), f_deepest = f(deepest);
+    if (!(f_top < 0.0) || !(f_deepest > 0.0)) return std::nullopt;  // no crossing: an edge, for the contact solves
+    const RootResult root = brent(f, top, deepest, f_top, f_deepest, 1e-10 * deepest);
+    if (!root.converged || !(std::abs(touch_at(root.x) - X) <= 1e-6 * X)) return std::nullopt;
+    return SmallSpotCount{root.x, true};
+  }
+  // Every cap: the count touched by X, which need not fall steadily as the level sinks (its
+  // caps touch later, the other levels' sooner): by bisection over the drop, as
+  // reference::LevelClosure counts, every trial's count kept to say whether it fell
+  // steadily. A count the limit leaves incomplete (a site unanswered by X) is at least the
+  // caps it answered by then; a trial it does not decide lies deep (the other caps carry the
+  // load, their spots past the reach), and the answer stands where the last trial below it
+  // was decided.
+  struct Count {
+    std::size_t n = 0;
+    bool complete = true;
+  };
+  const auto count_at = [&](double drop) {
+    move_to(drop);
+    const std::vector<SmallSpotTouchdown> found = touchdowns_of(moved, cell, tallest_, -1, kEveryLevel, 0, X);
+    double answered = 0.0;
+    for (const SmallSpotTouchdown& t : found) answered = std::isfinite(t.X) ? std::max(answered, t.X) : answered;
+    Count c;
+    for (std::size_t k = 0; k < moved.sites.size(); ++k) {
+      if (found[k].X <= X) {
+        ++c.n;
+      } else if (!std::isfinite(found[k].X) && !(answered > X)) {
+        c.complete = false;
+      }
+    }
+    return c;
+  };
+  const auto above = [&](const Count& c) -> std::optional<bool> {  // at least `caps`: the drop lies above the answer
+    if (c.n >= caps) return true;
+    if (c.complete) return false;
+    return std::nullopt;
+  };
+  std::vector<std::pair<double, Count>> trials;
+  const auto trial = [&](double drop) {
+    trials.emplace_back(drop, count_at(drop));
+    return trials.back().second;
+  };
+  const Count at_top = trial(top), at_deepest = trial(deepest);
+  const std::optional<bool> top_above = above(at_top), deepest_above = above(at_deepest);
+  if (!top_above || !*top_above || (deepest_above && *deepest_above)) return std::nullopt;  // no crossing: an edge
+  double lo = top, hi = deepest;
+  std::optional<bool> hi_above = deepest_above;
+  while (hi - lo > 1e-10 * deepest) {
+    const double mid = 0.5 * (lo + hi);
+    const std::optional<bool> mid_above = above(trial(mid));
+    if (mid_above.value_or(false)) {
+      lo = mid;
+    } else {
+      hi = mid;
+      hi_above = mid_above;
+    }
+  }
+  if (!hi_above) return std::nullopt;
+  // Steady: every decided count no greater than any decided at a shallower trial.
+  std::sort(trials.begin(), trials.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  bool steady = true;
+  std::size_t least = std::numeric_limits<std::size_t>::max();
+  for (const auto& [drop, c] : trials) {
+    if (!c.complete) continue;
+    if (c.n > least) steady = false;
+    least = std::min(least, c.n);
+  }
+  return SmallSpotCount{lo, steady};
+}
+
 std::vector<SmallSpotTouchdown> small_spot_touchdowns(const CellGeometry& geometry) { return SmallSpotLimit(geometry).touchdowns(); }
 
 std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
   curve.level_small_spot.assign(static_cast<std::size_t>(curve.levels()), 0);
+  curve.site_small_spot.assign(curve.sites(), 0);
   if (geometry.sites.size() != curve.sites()) return 0;
   const std::vector<SmallSpotTouchdown> limit = SmallSpotLimit(geometry).touchdowns();
   const bool stopped = !std::isfinite(curve.X_full);  // at its top, short of full contact
@@ -488,9 +708,10 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
     // off (the study's hexagonal level 1), and one answer on every grid keeps --grid auto's
     // comparison its own.
     const double own = curve.site_touchdown[k];
-    if (geometry.sites[k].level == 0 || !std::isfinite(limit[k].X) || own == 0.0) continue;
+    if (!(limit[k].X > 0.0) || !std::isfinite(limit[k].X) || own == 0.0) continue;  // (the tallest tips: 0)
     if (!std::isfinite(own) && !(stopped && limit[k].X > curve.X_last() && tip_exposed(geometry, surface, k))) continue;
     curve.site_touchdown[k] = limit[k].X;
+    curve.site_small_spot[k] = 1;
     ++answered;
   }
   if (answered == 0) return 0;

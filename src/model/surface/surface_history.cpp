@@ -39,6 +39,7 @@ bool site_touchdown_resolved(const LoadCurve& curve, std::size_t site) {
   const double X_star = curve.site_touchdown[site];
   const std::size_t level = static_cast<std::size_t>(curve.site_level[site]);
   if (X_star == curve.level_touchdown[level]) return touchdown_resolved(curve, level);
+  if (site < curve.site_small_spot.size() && curve.site_small_spot[site] != 0) return true;
   if (!std::isfinite(X_star)) return std::isfinite(curve.X_full) || curve.X_last() >= curve.X_resolved;
   return X_star == 0.0 || X_star >= curve.X_resolved;
 }
