@@ -687,10 +687,11 @@ model::LoadCurve auto_grid_curve(SurfaceRun& run, const model::CreepWeightedLoad
   // the taken grid's error where the areas converge at order 1.6 or faster (a lone cap's at second order,
   // docs/model.md 17.3; the square lattice at s = 3 as slowly as 2.9 a doubling: 1.13% off
   // on 120 nodes a pitch where it moved 2.2% from 60).
+  // (A reading of the small-spot limit's states reads no grid: no error of one.)
   for (const double t : run.times) {
     const double X = t > 0.0 ? load(t) : load.initial();
     const double a = coarse.at(X).area_fraction, b = fine.at(X).area_fraction;
-    run.grid_area_error.push_back(b > 0.0 ? kAutoAreaMoveShare * std::abs(b - a) / b : 0.0);
+    run.grid_area_error.push_back(b > 0.0 && X > fine.X_small_spot ? kAutoAreaMoveShare * std::abs(b - a) / b : 0.0);
   }
   for (std::size_t level = 1; level < L; ++level) {
     if (change[level] <= kAutoTStarAccuracy) continue;
@@ -1026,6 +1027,17 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
                                      " caps below the tallest touch at loads from the small-spot limit (each in the periodic field of the "
                                      "caps in contact before it; cap_list's touchdown_from)");
         }
+      }
+      // Below the curve's resolution the spots' areas and loads from the limit too, where it
+      // holds up to there (docs/model.md 17.6): the curve the same whatever load reads it (a
+      // map's points and `surface` alike).
+      const double unresolved = curve.X_resolved;
+      if (!run.measured && model::resolve_small_spots(curve, given)) {
+        std::ostringstream note;
+        note.precision(6);
+        note << "areas and loads below X = " << unresolved << " E0* (where the spots span too few of the " << grid.nx << " x " << grid.ny
+             << " nodes) from the small-spot limit, from X = " << curve.X_first() << " E0*";
+        run.inputs.notes.push_back(note.str());
       }
       line.reset();  // the next curve (--grid auto's finer one) says its own line
       cached = cached && origin == CurveOrigin::cache;

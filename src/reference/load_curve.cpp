@@ -110,6 +110,7 @@ class CurveBuilder {
     }
     curve.level_small_spot.clear();
     curve.site_small_spot.clear();
+    curve.X_small_spot = 0.0;
     curve_ = std::move(curve);
     const double top = report_range(curve_.X_first());
     Solved a;

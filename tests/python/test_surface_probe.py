@@ -215,15 +215,18 @@ def test_every_valid_snapshot_of_the_cell_curve_is_within_one_percent_of_the_tab
     note that a finer --grid answers. (With the grid sized for the times after 0, 120 and 140
     nodes a pitch, the areas at s = 3 were 1.1-1.2% off where they had moved 2.2% from the
     grid of half the nodes, which a third of the move left valid: the move's half is the
-    estimate.)"""
+    estimate. Where the small-spot limit holds up to the curve's resolution it gives the
+    areas there, on every grid alike, and every snapshot here is valid.)"""
     ends = point_json(l=l, dh=0, T=2.5, pbar=pbar, s=s)
     dh = 0.5 * (ends["h_0"] + ends["h_inf"])
     times = [0, 0.5, 1, 2, 5, 20]
     ref = punchsweep.point(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times)
     out = punchsweep.surface(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times, curve="cell")
     valid = np.asarray(out["series"]["valid"], dtype=bool)
-    assert valid.sum() >= 2 and set(np.asarray(out["series"]["reason"])[~valid]) == {"below_resolution"}
-    assert any("a finer --grid answers" in note for note in out["notes"])
+    assert valid.sum() >= 2
+    if not valid.all():
+        assert set(np.asarray(out["series"]["reason"])[~valid]) == {"below_resolution"}
+        assert any("a finer --grid answers" in note for note in out["notes"])
     mine, theirs = np.asarray(out["series"]["area_fraction"]), np.asarray(ref.series["area_fraction"])
     np.testing.assert_allclose(mine[valid], theirs[valid], rtol=1e-2)
 

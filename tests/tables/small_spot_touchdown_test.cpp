@@ -169,18 +169,43 @@ TEST(SmallSpotTouchdown, caps_of_one_level_at_their_own_heights_touch_as_the_bou
   EXPECT_NEAR(limit[1].X, 4.0 / 3.0 * std::pow(0.01, 1.5) / (g.Lx * g.Ly), 0.05 * limit[1].X);
   reference::LoadCurveOptions options;
   options.X_top = 1.2 * limit[3].X;
-  std::vector<std::vector<double>> grids;
+  std::vector<model::LoadCurve> curves;
   for (const int n : {256, 512}) {  // nodes along Lx = 2 l
     const reference::Cell cell = reference::make_cell(g, reference::cell_grid(g, n));
-    grids.push_back(reference::build_load_curve(g, cell, options).site_touchdown);
+    curves.push_back(reference::build_load_curve(g, cell, options));
   }
   for (std::size_t k = 1; k < 4; ++k) {
-    const double X = limit[k].X, coarse = grids[0][k], fine = grids[1][k];
+    const double X = limit[k].X, coarse = curves[0].site_touchdown[k], fine = curves[1].site_touchdown[k];
     std::printf("site %zu: X* %.9e (spot ratio %.3f); curve on 128 and 256 nodes a pitch %+.2e, %+.2e of it\n", k, X,
                 limit[k].spot_ratio, coarse / X - 1.0, fine / X - 1.0);
     EXPECT_LE(std::abs(fine - X), 2.0 * std::abs(fine - coarse) + 1e-5 * X) << "site " << k;
     EXPECT_LE(std::abs(fine - X), 2e-4 * X) << "site " << k;
   }
+  // The areas too: the curve on 128 nodes a pitch read with the limit's states
+  // (resolve_small_spots: the limit holds past that curve's X_resolved) against the curves'
+  // own where both resolve the spots (past their X_resolved), at loads up to the top: each
+  // level's area within twice the change from 128 to 256 nodes a pitch and 2e-3.
+  model::LoadCurve coarse_curve = curves[0];
+  model::answer_small_spots(coarse_curve, g);
+  ASSERT_TRUE(model::resolve_small_spots(coarse_curve, g));
+  EXPECT_EQ(coarse_curve.X_resolved, coarse_curve.X_first());
+  int compared = 0;
+  for (int step = 0; step <= 8; ++step) {
+    const double X = limit[1].X * std::pow(options.X_top / limit[1].X, step / 8.0);
+    if (X < curves[0].X_resolved) continue;
+    const model::CurveState mine = coarse_curve.at(X), medium = curves[0].at(X), fine = curves[1].at(X);
+    for (std::size_t level = 0; level < 2; ++level) {
+      if (!(fine.level_area[level] > 0.0)) continue;
+      ++compared;
+      const double grid_move = std::abs(fine.level_area[level] - medium.level_area[level]);
+      std::printf("X %.4e level %zu: area %.6e; curves on 128 and 256 nodes a pitch %+.2e, %+.2e of it\n", X, level,
+                  mine.level_area[level], medium.level_area[level] / mine.level_area[level] - 1.0,
+                  fine.level_area[level] / mine.level_area[level] - 1.0);
+      EXPECT_LE(std::abs(mine.level_area[level] - fine.level_area[level]), 2.0 * grid_move + 2e-3 * fine.level_area[level])
+          << "X " << X << ", level " << level;
+    }
+  }
+  EXPECT_GE(compared, 4);
   // A share of a level (both its caps) and of every cap (3 of 4) at a load past the last
   // touchdown: the level's drop at which they have touched, the limit's (by its touchdowns,
   // the level moved) against the boundary elements' (reference::LevelClosure, a contact

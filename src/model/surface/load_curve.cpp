@@ -109,6 +109,7 @@ LoadCurve LoadCurve::up_to(double X_end) const {
   out.level_touchdown = out.least_site_touchdowns(levels());
   out.level_small_spot.clear();
   out.site_small_spot.clear();
+  out.X_small_spot = 0.0;
   return out;
 }
 

@@ -78,6 +78,9 @@ struct LoadCurve {
   /// Per site: 1 where its touchdown is the small-spot limit's (as level_small_spot; empty
   /// alike on a curve as built or read).
   std::vector<char> site_small_spot;
+  /// The load up to which the readings are the small-spot limit's states, the same on every
+  /// grid (model::resolve_small_spots); 0 where none are (a curve as built or read).
+  double X_small_spot = 0.0;
 
   int levels() const { return static_cast<int>(level_touchdown.size()); }
   std::size_t sites() const { return site_level.size(); }

@@ -137,9 +137,14 @@ class SmallSpotCell {
 
   /// The nearest distance from a site of `loaded` to another (or its own image) or to site k.
   double nearest(const std::vector<std::size_t>& loaded, std::size_t k) const {
+    double d = spacing(loaded);
+    for (const std::size_t i : loaded) d = std::min(d, distance(i, k));
+    return d;
+  }
+  /// The nearest distance from a site of `loaded` to another or its own image.
+  double spacing(const std::vector<std::size_t>& loaded) const {
     double d = std::min(geometry_.Lx, geometry_.Ly);
     for (const std::size_t i : loaded) {
-      d = std::min(d, distance(i, k));
       for (const std::size_t j : loaded) {
         if (j != i) d = std::min(d, distance(i, j));
       }
@@ -689,6 +694,48 @@ std::optional<SmallSpotCount> SmallSpotLimit::counting(double X, std::size_t cap
   return SmallSpotCount{lo, steady};
 }
 
+std::vector<LoadCurveSample> SmallSpotLimit::samples(const std::vector<double>& loads, const std::vector<SmallSpotTouchdown>& touched) const {
+  std::vector<LoadCurveSample> out;
+  if (!cell_ || touched.size() != geometry_.sites.size()) return out;
+  // The sites below the tallest in the order they touch: the sites in contact at a load are
+  // the tallest and a first part of them (each state then starts from the last).
+  std::vector<std::size_t> order;
+  double answered = 0.0;
+  for (std::size_t k = 0; k < touched.size(); ++k) {
+    answered = std::isfinite(touched[k].X) ? std::max(answered, touched[k].X) : answered;
+    if (std::find(tallest_.begin(), tallest_.end(), k) == tallest_.end()) order.push_back(k);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return touched[i].X < touched[j].X; });
+  const std::size_t L = static_cast<std::size_t>(geometry_.levels());
+  SmallSpotCell::State last;
+  for (const double X : loads) {
+    if (!(X > 0.0)) break;
+    // The sites in contact by X (touched before it); one the limit leaves unanswered touches
+    // past the last it answered, so only after X where that lies past X.
+    std::vector<std::size_t> loaded = tallest_, open;
+    for (const std::size_t k : order) (touched[k].X < X ? loaded : open).push_back(k);
+    if (std::any_of(open.begin(), open.end(), [&](std::size_t k) { return !std::isfinite(touched[k].X); }) && !(answered > X)) break;
+    SmallSpotCell::State st = cell_->at(loaded, X, last.converged && last.a.size() <= static_cast<Eigen::Index>(loaded.size()) ? &last : nullptr);
+    if (!st.converged) break;
+    double reach = cell_->spacing(loaded);
+    for (const std::size_t k : open) reach = std::min(reach, cell_->nearest(loaded, k));
+    if (!(st.a.maxCoeff() <= kSmallSpotMaxRatio * reach)) break;
+    LoadCurveSample sample;
+    sample.X = X;
+    sample.level_load.assign(L, 0.0);
+    sample.level_area.assign(L, 0.0);
+    for (std::size_t i = 0; i < loaded.size(); ++i) {
+      const std::size_t level = static_cast<std::size_t>(geometry_.sites[loaded[i]].level);
+      const Eigen::Index I = static_cast<Eigen::Index>(i);
+      sample.level_load[level] += st.P(I);
+      sample.level_area[level] += std::numbers::pi * st.a(I) * st.a(I);
+    }
+    out.push_back(std::move(sample));
+    last = std::move(st);
+  }
+  return out;
+}
+
 std::vector<SmallSpotTouchdown> small_spot_touchdowns(const CellGeometry& geometry) { return SmallSpotLimit(geometry).touchdowns(); }
 
 std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
@@ -721,6 +768,87 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
     if (level > 0 && limit[k].X == curve.site_touchdown[k] && curve.level_touchdown[level] == curve.site_touchdown[k]) curve.level_small_spot[level] = 1;
   }
   return answered;
+}
+
+bool resolve_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
+  if (geometry.sites.size() != curve.sites() || curve.samples.empty() || !(curve.X_resolved > curve.X_first())) return false;
+  const SmallSpotLimit limit(geometry);
+  if (!limit.answers()) return false;
+  const std::vector<SmallSpotTouchdown> touched = limit.touchdowns();
+  // The limit's loads, from the geometry alone (so a curve built to any reach reads the same
+  // there): from a decade below the first touchdown past the tallest tips (or below the
+  // curve's first sample where none is), kSmallSpotSamplesPerDecade a decade on, and at
+  // every touchdown (the site joining there still without a spot); its states as far as it
+  // holds (a spot reaches kSmallSpotMaxRatio of its distances long before full contact).
+  double first = std::numeric_limits<double>::infinity();
+  for (const SmallSpotTouchdown& t : touched) {
+    if (t.X > 0.0 && t.X < first) first = t.X;
+  }
+  if (!std::isfinite(first)) first = curve.X_first();
+  const double X_low = 0.1 * first;
+  std::vector<double> loads;
+  for (int k = 0; k <= 16 * kSmallSpotSamplesPerDecade; ++k) loads.push_back(X_low * std::pow(10.0, static_cast<double>(k) / kSmallSpotSamplesPerDecade));
+  for (const SmallSpotTouchdown& t : touched) {
+    if (t.X > 0.0 && std::isfinite(t.X)) loads.push_back(t.X);
+  }
+  std::sort(loads.begin(), loads.end());
+  loads.erase(std::unique(loads.begin(), loads.end()), loads.end());
+  std::vector<LoadCurveSample> samples = limit.samples(loads, touched);
+  // Only where it holds up to the curve's resolution: the readings below X_resolved are then
+  // all the limit's, those past its reach the curve's resolved samples.
+  if (samples.empty() || samples.back().X < curve.X_resolved) return false;
+  // Refinement, as the curve's own: after a touchdown a new spot's area grows as a power of
+  // X - X* that the readings' interpolation does not follow, so an interval whose start lies
+  // within twice a touchdown is halved in log X until the readings meet the limit's state at
+  // its middle (each level's area to 1e-3 of itself, its load share to 1e-4; no grid's node
+  // enters, so every grid reads the same), at most LoadCurveOptions' 10 times.
+  const double node_area = 1e-12 * curve.cell_area;  // (rounding's floor)
+  for (int pass = 0; pass < 10; ++pass) {
+    LoadCurve reading = curve;
+    reading.samples = samples;
+    reading.pressure_monotone.assign(samples.size() - 1, 1);
+    reading.X_full = std::numeric_limits<double>::infinity();
+    // (The middles' states in one pass of the limit, each started from the last.)
+    std::vector<double> middles;
+    for (std::size_t k = 0; k + 1 < samples.size(); ++k) {
+      const double a = samples[k].X, b = samples[k + 1].X;
+      if (std::any_of(touched.begin(), touched.end(), [&](const SmallSpotTouchdown& t) { return t.X > 0.0 && t.X <= a && a <= 2.0 * t.X; })) {
+        middles.push_back(std::sqrt(a * b));
+      }
+    }
+    std::vector<LoadCurveSample> added;
+    for (LoadCurveSample& truth : limit.samples(middles, touched)) {
+      const CurveState read = reading.at(truth.X);
+      bool missed = false;
+      for (std::size_t level = 0; level < truth.level_area.size(); ++level) {
+        const double area = truth.level_area[level];
+        missed = missed || std::abs(read.level_area[level] - area) > 1e-3 * area + node_area ||
+                 std::abs(read.level_load[level] - truth.level_load[level]) > 1e-4 * truth.X * curve.cell_area;
+      }
+      if (missed) added.push_back(std::move(truth));
+    }
+    if (added.empty()) break;
+    samples.insert(samples.end(), std::make_move_iterator(added.begin()), std::make_move_iterator(added.end()));
+    std::sort(samples.begin(), samples.end(), [](const LoadCurveSample& x, const LoadCurveSample& y) { return x.X < y.X; });
+  }
+  // The curve past the limit's reach (its samples beyond the last the limit holds at), the
+  // limit's before: where the curve stopped within the reach, the limit's samples go on to
+  // the reach (they hold there), as a curve built further reads.
+  const double held = samples.back().X;
+  const auto kept = std::upper_bound(curve.samples.begin(), curve.samples.end(), held,
+                                     [](double x, const LoadCurveSample& s) { return x < s.X; });
+  const std::size_t dropped = static_cast<std::size_t>(kept - curve.samples.begin());
+  // (The limit's loads grow with X: no node unloads.)
+  std::vector<char> monotone(samples.size() - (kept == curve.samples.end() ? 1 : 0), 1);
+  if (kept != curve.samples.end()) {
+    monotone.insert(monotone.end(), curve.pressure_monotone.begin() + static_cast<std::ptrdiff_t>(dropped), curve.pressure_monotone.end());
+  }
+  samples.insert(samples.end(), kept, curve.samples.end());
+  curve.samples = std::move(samples);
+  curve.pressure_monotone = std::move(monotone);
+  curve.X_resolved = curve.X_first();
+  curve.X_small_spot = held;
+  return true;
 }
 
 }  // namespace punchsweep::model

@@ -128,6 +128,13 @@ class SmallSpotLimit {
   /// deepest (none there, or every drop), where every cap's count does not fall steadily with
   /// the drop, or no closing level was given: the contact solves answer there.
   std::optional<SmallSpotCount> counting(double X, std::size_t caps, int level) const;
+  /// The cell's states at increasing loads in the limit, given its touchdowns
+  /// (touchdowns()): each site in contact by X (touched before X) an isolated punch in the
+  /// others' field, its load and its spot's area summed by level (a load curve's samples),
+  /// up to the first load where the limit does not hold (a site it leaves unanswered might
+  /// have touched by then, a spot past kSmallSpotMaxRatio of its nearest distance, the state
+  /// not found), each state started from the last.
+  std::vector<LoadCurveSample> samples(const std::vector<double>& loads, const std::vector<SmallSpotTouchdown>& touched) const;
 
  private:
   struct Cell;
@@ -153,5 +160,21 @@ std::vector<SmallSpotTouchdown> small_spot_touchdowns(const CellGeometry& geomet
 /// levels' touchdowns with them; LoadCurve::level_small_spot says which levels. A site the
 /// curve finds hidden or never touching stays the curve's. Returns the sites answered.
 std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry);
+
+/// `curve` (of `geometry`, its touchdowns answered by answer_small_spots) from the limit
+/// wherever it holds, where it holds up to the curve's X_resolved: its samples up to the
+/// last load the limit holds at replaced by the limit's states (samples()), at loads from
+/// the geometry alone (a decade below the first touchdown past the tallest tips on,
+/// kSmallSpotSamplesPerDecade a decade, at every touchdown, and refined after each), and
+/// X_resolved then the first of them: the areas and loads of spots too small for the grid
+/// read as the limit's, as its touchdowns are, and past X_resolved too (there too it is the
+/// closer while it holds); the same on every grid and whatever the curve's reach (a curve
+/// stopped within the limit's reach goes on to it). Returns whether it did (the curve stays
+/// as it was where the limit stops short of X_resolved).
+bool resolve_small_spots(LoadCurve& curve, const CellGeometry& geometry);
+
+/// Samples a decade of load for resolve_small_spots (the curve's readings interpolate
+/// between them: log area linear in log X, or linear in X from a touchdown).
+constexpr int kSmallSpotSamplesPerDecade = 16;
 
 }  // namespace punchsweep::model
