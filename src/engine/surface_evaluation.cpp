@@ -989,6 +989,14 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     // tips snapped to that grid, its note the last grid's alone.
     const model::CellGeometry given = run.geometry;
     const std::vector<std::string> notes = run.inputs.notes;
+    // The small-spot limit's touchdowns of the given geometry (docs/model.md 17.6): they do
+    // not depend on the grid, so found once for every grid's curve.
+    std::optional<model::SmallSpotLimit> limit;
+    std::vector<model::SmallSpotTouchdown> limit_touchdowns;
+    if (!run.measured) {
+      limit.emplace(given);
+      limit_touchdowns = limit->touchdowns();
+    }
     bool cached = true;
     const auto curve_on = [&](int nodes) {
       run.geometry = given;
@@ -1008,7 +1016,7 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
       // from the small-spot limit where it holds (docs/model.md 17.6): the given tips, not
       // the grid's snapped ones.
       const std::vector<double> own = curve.level_touchdown;
-      if (!run.measured && model::answer_small_spots(curve, given) > 0) {
+      if (limit && model::answer_small_spots(curve, given, limit_touchdowns) > 0) {
         for (std::size_t level = 1; level < curve.level_small_spot.size(); ++level) {
           if (curve.level_small_spot[level] == 0) continue;
           std::ostringstream note;
@@ -1032,7 +1040,7 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
       // holds up to there (docs/model.md 17.6): the curve the same whatever load reads it (a
       // map's points and `surface` alike).
       const double unresolved = curve.X_resolved;
-      if (!run.measured && model::resolve_small_spots(curve, given)) {
+      if (limit && model::resolve_small_spots(curve, *limit, limit_touchdowns)) {
         std::ostringstream note;
         note.precision(6);
         note << "areas and loads below X = " << unresolved << " E0* (where the spots span too few of the " << grid.nx << " x " << grid.ny

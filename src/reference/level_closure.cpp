@@ -48,19 +48,9 @@ LevelClosure::LevelClosure(const model::CellGeometry& geometry, int level, const
   for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
     if (in_level(geometry, level, k)) offset_[k] = geometry.sites[k].drop - least;
   }
-  // The deepest exposed drop of the level's tallest cap: at each of the level's tips, the
-  // lowest of the other sites' surfaces there (every other site, each to its nearest image:
-  // the level's own sites are left out, so a locator's reach, which assumes them, does not
-  // apply), less the tip's offset.
-  const model::SurfaceLocator surface(geometry);
-  deepest_ = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
-    if (!in_level(geometry, level, k)) continue;
-    for (std::size_t j = 0; j < geometry.sites.size(); ++j) {
-      if (in_level(geometry, level, j)) continue;
-      deepest_ = std::min(deepest_, surface.surface(j, surface.distance(geometry.sites[k].x, geometry.sites[k].y, j)) - offset_[k]);
-    }
-  }
+  // The deepest exposed drop of the level's tallest cap (the level's own sites left out, so
+  // a locator's reach, which assumes them, does not apply).
+  deepest_ = model::deepest_exposed_drop(geometry, level);
   if (!(deepest_ > geometry.sites[reference_].drop) || !std::isfinite(deepest_)) {
     throw std::invalid_argument("level closure: level " + std::to_string(level) + " has no depth at which it is a punch of its own");
   }

@@ -132,7 +132,7 @@ TEST(SmallSpotTouchdown, a_curve_takes_the_limits_touchdowns_where_it_answers) {
   const std::vector<double> own = curve.level_touchdown;
   EXPECT_FALSE(model::touchdown_resolved(curve, 1));  // 32 nodes: the spots span too few
   const std::vector<model::SmallSpotTouchdown> limit = model::small_spot_touchdowns(g);
-  EXPECT_EQ(model::answer_small_spots(curve, g), 4u);
+  EXPECT_EQ(model::answer_small_spots(curve, g, limit), 4u);
   for (std::size_t k = 0; k < g.sites.size(); ++k) EXPECT_EQ(curve.site_touchdown[k], limit[k].X);
   for (std::size_t level = 1; level <= 2; ++level) {
     EXPECT_EQ(curve.level_small_spot[level], 1);
@@ -142,7 +142,7 @@ TEST(SmallSpotTouchdown, a_curve_takes_the_limits_touchdowns_where_it_answers) {
   }
   model::LoadCurve untouched = curve;
   untouched.site_touchdown[4] = untouched.site_touchdown[5] = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(model::answer_small_spots(untouched, g), 2u);
+  EXPECT_EQ(model::answer_small_spots(untouched, g, limit), 2u);
   EXPECT_TRUE(std::isinf(untouched.site_touchdown[4]) && std::isinf(untouched.level_touchdown[2]));
 }
 
@@ -186,8 +186,8 @@ TEST(SmallSpotTouchdown, caps_of_one_level_at_their_own_heights_touch_as_the_bou
   // own where both resolve the spots (past their X_resolved), at loads up to the top: each
   // level's area within twice the change from 128 to 256 nodes a pitch and 2e-3.
   model::LoadCurve coarse_curve = curves[0];
-  model::answer_small_spots(coarse_curve, g);
-  ASSERT_TRUE(model::resolve_small_spots(coarse_curve, g));
+  model::answer_small_spots(coarse_curve, g, limit);
+  ASSERT_TRUE(model::resolve_small_spots(coarse_curve, model::SmallSpotLimit(g), limit));
   EXPECT_EQ(coarse_curve.X_resolved, coarse_curve.X_first());
   int compared = 0;
   for (int step = 0; step <= 8; ++step) {
@@ -239,7 +239,8 @@ TEST(SmallSpotTouchdown, a_stopped_curve_takes_the_limits_touchdown_past_its_end
   const model::CellGeometry g = model::lattice_cell(model::LatticeKind::hexagonal, 3.0, model::Shape{2, 0.5}, {0.05});
   const reference::Cell cell = reference::make_cell(g, reference::lattice_grid(g, model::LatticeKind::hexagonal, 128));
   model::LoadCurve whole = reference::build_load_curve(g, cell, {});
-  ASSERT_GT(model::answer_small_spots(whole, g), 0u);
+  const std::vector<model::SmallSpotTouchdown> limit = model::small_spot_touchdowns(g);
+  ASSERT_GT(model::answer_small_spots(whole, g, limit), 0u);
   ASSERT_EQ(whole.level_small_spot[1], 1);
   reference::LoadCurveOptions short_of;
   short_of.X_reach = whole.X_first();
@@ -247,7 +248,7 @@ TEST(SmallSpotTouchdown, a_stopped_curve_takes_the_limits_touchdown_past_its_end
   ASSERT_LT(cut.X_last(), whole.level_touchdown[1]);
   ASSERT_TRUE(std::isinf(cut.level_touchdown[1]));
   EXPECT_FALSE(model::touchdown_resolved(cut, 1)) << "untouched below the curve's resolution";
-  model::answer_small_spots(cut, g);
+  model::answer_small_spots(cut, g, limit);
   EXPECT_EQ(cut.level_touchdown[1], whole.level_touchdown[1]);
   EXPECT_EQ(cut.level_small_spot[1], 1);
   EXPECT_TRUE(model::touchdown_resolved(cut, 1));

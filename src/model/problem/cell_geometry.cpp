@@ -160,6 +160,23 @@ std::size_t covered_site(const CellGeometry& geometry, const SurfaceLocator& sur
   return geometry.sites.size();
 }
 
+double deepest_exposed_drop(const CellGeometry& geometry, int level) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Site& site : geometry.sites) {
+    if (site.level == level) least = std::min(least, site.drop);
+  }
+  const SurfaceLocator surface(geometry);
+  double deepest = std::numeric_limits<double>::infinity();
+  for (const Site& tip : geometry.sites) {
+    if (tip.level != level) continue;
+    for (std::size_t j = 0; j < geometry.sites.size(); ++j) {
+      if (geometry.sites[j].level == level) continue;
+      deepest = std::min(deepest, surface.surface(j, surface.distance(tip.x, tip.y, j)) - (tip.drop - least));
+    }
+  }
+  return deepest;
+}
+
 namespace {
 
 /// Whether each site's image (x, y) -> image(x, y) is a site of the same shape, drop and

@@ -118,6 +118,13 @@ std::size_t covered_site(const CellGeometry& geometry, const SurfaceLocator& sur
 /// Whether site k's tip is on the texture's surface (covered_site's test for one site).
 bool tip_exposed(const CellGeometry& geometry, const SurfaceLocator& surface, std::size_t k, std::size_t* by = nullptr);
 
+/// The deepest drop of level `level`'s tallest site at which each of the level's tips still
+/// lies on the texture's surface, the level moving as one (each of its sites keeping its
+/// offset below the level's tallest): the least, over the level's tips, of the other sites'
+/// surfaces there (each to its nearest image; the level's own sites left out) less the tip's
+/// offset. +infinity where the level has no site or no other site reaches its tips.
+double deepest_exposed_drop(const CellGeometry& geometry, int level);
+
 /// Whether the sites, as a set, are even in x and in y about the cell's corner (0, 0): each
 /// site's mirror images (Lx - x, y) and (x, Ly - y), taken modulo the cell, are sites of the
 /// same shape, drop and level (positions within 1e-12 of the cell). Such a cell's fields

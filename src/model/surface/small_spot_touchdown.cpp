@@ -14,6 +14,14 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+/// The last touchdown the limit answered (0 where it answered none): a site it leaves
+/// unanswered touches past it, if at all.
+double last_answered(const std::vector<SmallSpotTouchdown>& touched) {
+  double last = 0.0;
+  for (const SmallSpotTouchdown& t : touched) last = std::isfinite(t.X) ? std::max(last, t.X) : last;
+  return last;
+}
+
 }  // namespace
 
 template <class Term>
@@ -391,7 +399,10 @@ SmallSpotLimit::SmallSpotLimit(const CellGeometry& geometry, int closing_level)
   if (tallest_.empty()) return;
   cell_ = std::make_shared<const Cell>(geometry_);
   // The other levels touch as they do whatever the closing level's drop: found once.
-  if (closing_level_ >= 1) others_ = touchdowns(closing_level_);
+  if (closing_level_ >= 1) {
+    others_ = touchdowns(closing_level_);
+    deepest_ = deepest_exposed_drop(geometry_, closing_level_);
+  }
 }
 
 namespace {
@@ -552,23 +563,15 @@ std::optional<double> SmallSpotLimit::level_closure(double X) const {
   }
   // Past the depth where a taller cap's surface covers one of the level's tips, the tip is
   // no punch of its own: the boundary elements answer there.
-  for (const std::size_t k : mine) {
-    const double offset = geometry_.sites[k].drop - least_drop;
-    for (std::size_t j = 0; j < geometry_.sites.size(); ++j) {
-      if (geometry_.sites[j].level == level) continue;
-      const double r = cell_->distance(j, k);
-      const Shape& shape = geometry_.sites[j].shape;
-      if (drop + offset >= shape.C * std::pow(r, shape.s) + geometry_.sites[j].drop) return std::nullopt;
-    }
-  }
+  if (!(drop < deepest_)) return std::nullopt;
   return drop;
 }
 
 std::optional<SmallSpotCount> SmallSpotLimit::counting(double X, std::size_t caps, int level) const {
   const int closing = closing_level_;
   if (!cell_ || closing < 1 || !(X > 0.0) || caps < 1) return std::nullopt;
-  // The closing level's caps below its tallest, and the deepest drop at which each of its
-  // tips still lies on the other levels' surfaces (reference::LevelClosure's).
+  // The closing level's caps below its tallest (each keeps its offset below it; the deepest
+  // drop at which its tips stay on the surface is the constructor's).
   double least_drop = std::numeric_limits<double>::infinity();
   std::size_t number = 0;  // of the caps counted
   for (const Site& site : geometry_.sites) {
@@ -576,16 +579,7 @@ std::optional<SmallSpotCount> SmallSpotLimit::counting(double X, std::size_t cap
     number += level == kEveryLevel || site.level == level ? 1 : 0;
   }
   if (caps > number) return std::nullopt;
-  const SurfaceLocator surface(geometry_);
-  double deepest = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < geometry_.sites.size(); ++k) {
-    if (geometry_.sites[k].level != closing) continue;
-    for (std::size_t j = 0; j < geometry_.sites.size(); ++j) {
-      if (geometry_.sites[j].level == closing) continue;
-      const double covered = surface.surface(j, surface.distance(geometry_.sites[k].x, geometry_.sites[k].y, j));
-      deepest = std::min(deepest, covered - (geometry_.sites[k].drop - least_drop));
-    }
-  }
+  double deepest = deepest_;
   deepest *= 1.0 - 1e-8;
   if (!(deepest > 0.0) || !std::isfinite(deepest)) return std::nullopt;
   // The cell with the level's tallest cap at `drop`, its fields the limit's own (they do not
@@ -644,8 +638,7 @@ std::optional<SmallSpotCount> SmallSpotLimit::counting(double X, std::size_t cap
   const auto count_at = [&](double drop) {
     move_to(drop);
     const std::vector<SmallSpotTouchdown> found = touchdowns_of(moved, cell, tallest_, -1, kEveryLevel, 0, X);
-    double answered = 0.0;
-    for (const SmallSpotTouchdown& t : found) answered = std::isfinite(t.X) ? std::max(answered, t.X) : answered;
+    const double answered = last_answered(found);
     Count c;
     for (std::size_t k = 0; k < moved.sites.size(); ++k) {
       if (found[k].X <= X) {
@@ -700,9 +693,8 @@ std::vector<LoadCurveSample> SmallSpotLimit::samples(const std::vector<double>& 
   // The sites below the tallest in the order they touch: the sites in contact at a load are
   // the tallest and a first part of them (each state then starts from the last).
   std::vector<std::size_t> order;
-  double answered = 0.0;
+  const double answered = last_answered(touched);
   for (std::size_t k = 0; k < touched.size(); ++k) {
-    answered = std::isfinite(touched[k].X) ? std::max(answered, touched[k].X) : answered;
     if (std::find(tallest_.begin(), tallest_.end(), k) == tallest_.end()) order.push_back(k);
   }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return touched[i].X < touched[j].X; });
@@ -738,11 +730,10 @@ std::vector<LoadCurveSample> SmallSpotLimit::samples(const std::vector<double>& 
 
 std::vector<SmallSpotTouchdown> small_spot_touchdowns(const CellGeometry& geometry) { return SmallSpotLimit(geometry).touchdowns(); }
 
-std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
+std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry, const std::vector<SmallSpotTouchdown>& limit) {
   curve.level_small_spot.assign(static_cast<std::size_t>(curve.levels()), 0);
   curve.site_small_spot.assign(curve.sites(), 0);
-  if (geometry.sites.size() != curve.sites()) return 0;
-  const std::vector<SmallSpotTouchdown> limit = SmallSpotLimit(geometry).touchdowns();
+  if (geometry.sites.size() != curve.sites() || limit.size() != curve.sites()) return 0;
   const bool stopped = !std::isfinite(curve.X_full);  // at its top, short of full contact
   const SurfaceLocator surface(geometry);
   std::size_t answered = 0;
@@ -770,11 +761,9 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
   return answered;
 }
 
-bool resolve_small_spots(LoadCurve& curve, const CellGeometry& geometry) {
-  if (geometry.sites.size() != curve.sites() || curve.samples.empty() || !(curve.X_resolved > curve.X_first())) return false;
-  const SmallSpotLimit limit(geometry);
+bool resolve_small_spots(LoadCurve& curve, const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched) {
+  if (touched.size() != curve.sites() || curve.samples.empty() || !(curve.X_resolved > curve.X_first())) return false;
   if (!limit.answers()) return false;
-  const std::vector<SmallSpotTouchdown> touched = limit.touchdowns();
   // The limit's loads, from the geometry alone (so a curve built to any reach reads the same
   // there): from a decade below the first touchdown past the tallest tips (or below the
   // curve's first sample where none is), kSmallSpotSamplesPerDecade a decade on, and at

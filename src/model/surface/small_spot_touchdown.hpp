@@ -143,6 +143,8 @@ class SmallSpotLimit {
   std::shared_ptr<const Cell> cell_;
   int closing_level_ = 0;
   std::vector<SmallSpotTouchdown> others_;  ///< touchdowns(closing_level_), where it is >= 1
+  /// deepest_exposed_drop of the closing level, where it is >= 1
+  double deepest_ = std::numeric_limits<double>::infinity();
 };
 
 /// Each site's touchdown in the limit: the sites touch in turn, each later one in the field
@@ -155,14 +157,14 @@ class SmallSpotLimit {
 std::vector<SmallSpotTouchdown> small_spot_touchdowns(const CellGeometry& geometry);
 
 /// `curve` (of `geometry`) with each site's touchdown taken from the limit wherever it holds
-/// (small_spot_touchdowns answers it), below the curve's X_resolved or above it (there too the
+/// (`limit`: small_spot_touchdowns(geometry), found once for every grid's curve), below the curve's X_resolved or above it (there too the
 /// limit is the closer, the grid's error falling only as the spots' nodes grow), and the
 /// levels' touchdowns with them; LoadCurve::level_small_spot says which levels. A site the
 /// curve finds hidden or never touching stays the curve's. Returns the sites answered.
-std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry);
+std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry, const std::vector<SmallSpotTouchdown>& limit);
 
-/// `curve` (of `geometry`, its touchdowns answered by answer_small_spots) from the limit
-/// wherever it holds, where it holds up to the curve's X_resolved: its samples up to the
+/// `curve` (of `limit`'s geometry, its touchdowns answered by answer_small_spots with
+/// `touched`, limit.touchdowns()) from the limit wherever it holds, where it holds up to the curve's X_resolved: its samples up to the
 /// last load the limit holds at replaced by the limit's states (samples()), at loads from
 /// the geometry alone (a decade below the first touchdown past the tallest tips on,
 /// kSmallSpotSamplesPerDecade a decade, at every touchdown, and refined after each), and
@@ -171,7 +173,7 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry);
 /// closer while it holds); the same on every grid and whatever the curve's reach (a curve
 /// stopped within the limit's reach goes on to it). Returns whether it did (the curve stays
 /// as it was where the limit stops short of X_resolved).
-bool resolve_small_spots(LoadCurve& curve, const CellGeometry& geometry);
+bool resolve_small_spots(LoadCurve& curve, const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched);
 
 /// Samples a decade of load for resolve_small_spots (the curve's readings interpolate
 /// between them: log area linear in log X, or linear in X from a touchdown).
