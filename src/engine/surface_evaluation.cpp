@@ -121,6 +121,13 @@ class CurveProgressLine {
 /// [kAutoMin, kAutoMaxNodes] (past it the snapshots below the curve's resolution are flagged).
 constexpr int kAutoMin = 64;
 constexpr double kAutoSpotRadius = 13.0;  // a spacing past the curve's first sample (12)
+/// --grid auto resolves the spots at this share of the small-spot limit's reach (where it
+/// answers the cell), so that the curve's resolved part starts within the reach (its
+/// first load at least a step of the limit's loads, a sixteenth of a decade, below it).
+constexpr double kAutoLimitHandOver = 0.5;
+/// --grid auto's least nodes a pitch where the small-spot limit reads every time's load (the
+/// curve is held to the grid of half of them).
+constexpr int kAutoLeast = 16;
 /// --grid auto's accuracy of an area fraction (the stated 1%), its error estimated as
 /// kAutoAreaMoveShare of its move from the grid of half the nodes.
 constexpr double kAutoAreaAccuracy = 1e-2;
@@ -587,14 +594,9 @@ SurfaceRun read_surface(const po::variables_map& given, const input::PointMateri
 
 namespace {
 
-/// --grid auto: nodes per pitch that give the tallest sites' spot, as an isolated punch's, a
-/// radius of kAutoSpotRadius spacings at the least positive load the times after 0 meet (t = 0
-/// alone where no later time is asked). The glassy spot at t = 0 can be far smaller than any
-/// later one (the study's TPE: 280 nodes a pitch for it, 88 from 1 s on); it does not drive the
-/// grid: where the grid taken does not resolve it, that snapshot is flagged below_resolution,
-/// while the touchdowns (t*) do not read it.
-int auto_grid_at(const SurfaceRun& run, double X);
-int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
+/// --grid auto: the least positive load the times after 0 meet (t = 0 alone where no later
+/// time is asked; +infinity where none is positive).
+double least_asked_load(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
   double X = std::numeric_limits<double>::infinity();
   const bool later = std::any_of(run.times.begin(), run.times.end(), [](double t) { return t > 0.0; });
   for (const double t : run.times) {
@@ -602,7 +604,56 @@ int auto_grid(const SurfaceRun& run, const model::CreepWeightedLoad& load) {
     const double x = t > 0.0 ? load(t) : load.initial();
     if (x > 0.0) X = std::min(X, x);
   }
-  return auto_grid_at(run, X);
+  return X;
+}
+
+/// SurfaceRun::small_spot_reach, found once (`limit` and its touchdowns `touched`: the given
+/// geometry's, where the caller has them; else made here).
+double small_spot_reach(SurfaceRun& run, const model::CreepWeightedLoad& load, const model::SmallSpotLimit* limit = nullptr,
+                        const std::vector<model::SmallSpotTouchdown>* touched = nullptr) {
+  if (!run.small_spot_reach) {
+    run.small_spot_reach = 0.0;
+    const double X = least_asked_load(run, load);
+    if (!run.measured && std::isfinite(X)) {
+      if (limit != nullptr && touched != nullptr) {
+        run.small_spot_reach = model::small_spot_reach(*limit, *touched, X);
+      } else {
+        const model::SmallSpotLimit own(run.geometry);
+        run.small_spot_reach = own.answers() ? model::small_spot_reach(own, own.touchdowns(), X) : 0.0;
+      }
+    }
+  }
+  return *run.small_spot_reach;
+}
+
+/// --grid auto: nodes per pitch that give the tallest sites' spot, as an isolated punch's, a
+/// radius of kAutoSpotRadius spacings at the least positive load the times after 0 meet (t = 0
+/// alone where no later time is asked). The glassy spot at t = 0 can be far smaller than any
+/// later one (the study's TPE: 280 nodes a pitch for it, 88 from 1 s on); it does not drive the
+/// grid: where the grid taken does not resolve it, that snapshot is flagged below_resolution,
+/// while the touchdowns (t*) do not read it. Nor do spots the small-spot limit answers: below
+/// half its reach (SurfaceRun::small_spot_reach) the grid need only resolve the spots at that
+/// load, where the curve hands over to the limit's states (docs/model.md 17.6), the
+/// touchdowns there being the limit's on every grid.
+int auto_grid_at(const SurfaceRun& run, double X);
+reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes);
+int auto_grid(SurfaceRun& run, const model::CreepWeightedLoad& load) {
+  const double X = least_asked_load(run, load), reach = small_spot_reach(run, load);
+  if (!(reach > 0.0) || !std::isfinite(X)) return auto_grid_at(run, X);
+  // The limit reads the loads asked below the hand-over, the curve those past it: the grid
+  // resolves the spots at the least load it reads (kAutoMin at least: its touchdowns are held
+  // to the grid of half the nodes), or none where every time's load is the limit's, and its
+  // resolved part (the curve's X_resolved) starts by the hand-over at the latest.
+  const double hand_over = kAutoLimitHandOver * reach;
+  double most = 0.0;
+  for (const double t : run.times) most = std::max(most, t > 0.0 ? load(t) : load.initial());
+  int n = most > hand_over ? auto_grid_at(run, std::max(X, hand_over)) : kAutoLeast;
+  const int resolved_spot = reference::LoadCurveOptions{}.resolved_spot_nodes;
+  while (n < kAutoMaxNodes &&
+         (reference::spot_load(run.geometry, curve_grid(run, n), resolved_spot) > hand_over || !reference::fft_friendly(n * run.supercell))) {
+    n += 4;
+  }
+  return n;
 }
 
 /// --grid auto's nodes a pitch for the least load X (kAutoMin where X is not positive).
@@ -622,7 +673,6 @@ int auto_grid_at(const SurfaceRun& run, double X) {
   return n;
 }
 
-reference::PeriodicGrid curve_grid(const SurfaceRun& run, int nodes);
 std::string budget_problem(const SurfaceRun& run, const reference::PeriodicGrid& grid);
 
 /// --grid auto: the curve on the grid auto_grid picks, held to the curve on half its nodes:
@@ -996,6 +1046,7 @@ void evaluate(SurfaceRun& run, bool progress, const MoreLoadPoints& also_held) {
     if (!run.measured) {
       limit.emplace(given);
       limit_touchdowns = limit->touchdowns();
+      if (run.grid_nodes == 0) small_spot_reach(run, load, &*limit, &limit_touchdowns);
     }
     bool cached = true;
     const auto curve_on = [&](int nodes) {
@@ -1123,7 +1174,7 @@ auto with_keywords(const input::Keywords& keywords, Use&& use) {
 /// The grids (nodes a pitch) the cell's curve is built on, refused as boundary_element_cell
 /// refuses (the scales, the budget) before anything is allocated: the one given (0 for a
 /// measured map's pixels), or --grid auto's pick and its half (at least).
-std::vector<int> cell_grids(const SurfaceRun& run) {
+std::vector<int> cell_grids(SurfaceRun& run) {
   if (const std::string problem = scale_problem(run); !problem.empty()) throw input::UsageError(problem);
   std::vector<int> grids{run.grid_nodes};
   if (run.grid_nodes == 0 && !run.measured) {
@@ -1351,7 +1402,7 @@ double estimated_curve_seconds(const reference::PeriodicGrid& grid, double caps)
 }
 
 SurfaceCheck check_surface(const input::Keywords& keywords) {
-  return with_keywords(keywords, [](const SurfaceRun& run) {
+  return with_keywords(keywords, [](SurfaceRun& run) {
     SurfaceCheck out{0.0, run.times.size()};
     // The tables need no cell; where they may not reach the lattice's dh (auto), the cell's
     // refusals come when it is built.

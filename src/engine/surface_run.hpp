@@ -59,6 +59,10 @@ struct SurfaceRun {
   /// --grid auto: per time, the estimated relative error of the area fraction on the grid
   /// taken (a third of its move from the coarser grid; empty where not held).
   std::vector<double> grid_area_error;
+  /// --grid auto: the load (E0*) up to which the small-spot limit answers the given
+  /// geometry's areas and loads (model::small_spot_reach; 0 where it does not take the
+  /// cell), found once: no grid need resolve the spots below half of it. Empty until asked.
+  std::optional<double> small_spot_reach;
   CurveSource curve_source = CurveSource::cell;  ///< asked; after evaluation tables or cell, what served
   model::LoadCurve curve;
   model::SurfaceHistory history;

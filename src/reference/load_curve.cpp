@@ -37,6 +37,19 @@ double march_step(int samples_per_decade) { return std::pow(10.0, 1.0 / samples_
 
 }  // namespace
 
+double spot_load(const model::CellGeometry& geometry, const PeriodicGrid& grid, int spot_nodes) {
+  // The reference tip: a tallest site (the first of the least drop), as the curve's.
+  std::size_t reference = 0;
+  for (std::size_t k = 0; k < geometry.sites.size(); ++k) {
+    if (geometry.sites[k].drop < geometry.sites[reference].drop) reference = k;
+  }
+  const double a = std::sqrt(spot_nodes * grid.cell_area() / std::numbers::pi);
+  const model::Site& tallest = geometry.sites[reference];
+  double count = 0.0;
+  for (const model::Site& site : geometry.sites) count += site.drop <= tallest.drop ? 1.0 : 0.0;
+  return model::load_coefficient(tallest.shape) * std::pow(a, tallest.shape.s + 1) * count / (geometry.Lx * geometry.Ly);
+}
+
 double march_end(double X_first, const LoadCurveOptions& options) {
   if (!std::isfinite(options.X_reach)) return options.X_top;
   const double step = march_step(options.samples_per_decade);
@@ -163,14 +176,7 @@ class CurveBuilder {
 
   /// The load at which each tallest site's spot, as an isolated punch's, covers
   /// `spot_nodes` nodes: P = K_P a^(s+1) per site.
-  double start_load(int spot_nodes) const {
-    const PeriodicGrid& g = cell_.grid;
-    const double a = std::sqrt(spot_nodes * g.cell_area() / std::numbers::pi);
-    const model::Site& tallest = geometry_.sites[reference_];
-    double count = 0.0;
-    for (const model::Site& site : geometry_.sites) count += site.drop <= tallest.drop ? 1.0 : 0.0;
-    return model::load_coefficient(tallest.shape) * std::pow(a, tallest.shape.s + 1) * count / curve_.cell_area;
-  }
+  double start_load(int spot_nodes) const { return spot_load(geometry_, cell_.grid, spot_nodes); }
 
   /// The cell at X from `start` (empty: the uniform field), retried from the uniform field
   /// where the warm start misses.

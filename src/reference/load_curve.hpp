@@ -89,6 +89,12 @@ double full_contact_load(const Cell& cell);
 /// the curve built with these options.
 double march_end(double X_first, const LoadCurveOptions& options);
 
+/// The load (E0*) at which each of `geometry`'s tallest sites' spots, as an isolated punch's
+/// sharing the cell's load with the others at their drop, covers `spot_nodes` nodes of
+/// `grid`: a curve's first sample (LoadCurveOptions::min_spot_nodes) and its X_resolved
+/// (resolved_spot_nodes) on that grid.
+double spot_load(const model::CellGeometry& geometry, const PeriodicGrid& grid, int spot_nodes);
+
 /// Where a curve's march stopped short of full contact: the pressure at its last sample
 /// (the next solve's start) and each site's h there (its gap's closure). With it the march
 /// goes on as if it had not stopped (extend_load_curve). Empty for a curve at full contact.

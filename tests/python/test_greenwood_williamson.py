@@ -19,12 +19,12 @@ import punchsweep
 K, SD = 8, 0.01  # an 8 x 8 supercell, heights of SD 0.01 R
 
 
-def mould(tmp_path, l, seed=1, pbar=None, times=(0, 0.5, 1, 2, 5)):
+def mould(tmp_path, l, seed=1, pbar=None, times=(0, 0.5, 1, 2, 5), grid=16):
     cell = tmp_path / f"one-{l}.cell"
     cell.write_text(f"[cell]\nLx = {l}\nLy = {l}\ns = 2\nC = 0.5\nsite = {l / 2}, {l / 2}, 0, 0\n")
     # (the same loads per cap at every pitch: the cell's load over its area)
     pbar = 1e-5 * (10.0 / l) ** 2 if pbar is None else pbar
-    return punchsweep.surface(cell=cell, supercell=K, scatter=f"normal:{SD}", seed=seed, T=2.5, pbar=pbar, grid=16,
+    return punchsweep.surface(cell=cell, supercell=K, scatter=f"normal:{SD}", seed=seed, T=2.5, pbar=pbar, grid=grid,
                               times=list(times))
 
 
@@ -90,6 +90,30 @@ def test_a_sparse_moulds_contact_area_is_greenwood_and_williamsons(tmp_path):
     drops = np.array([c["drop"] for c in result.cap_list])
     area = (K * 40.0) ** 2
     for X, mine in zip(result.series["X"], result.series["area_0"]):
+        load = lambda delta: 4.0 / 3.0 * np.sum(np.clip(delta - drops, 0.0, None) ** 1.5) - X * area  # noqa: E731
+        delta = scipy.optimize.brentq(load, 0.0, 1.0)
+        assert mine == pytest.approx(np.pi * np.sum(np.clip(delta - drops, 0.0, None)), rel=5e-3)
+
+
+def test_grid_auto_sizes_no_grid_for_the_spots_the_limit_reads(tmp_path):
+    """The sparse mould at l = 10 R under --grid auto (the default): every time's load lies
+    within the small-spot limit's reach, so no grid need resolve its spots (sized for them,
+    auto asked 256 and 512 nodes a pitch, 2048^2 and 4096^2 nodes, about 5200 s estimated
+    here). It takes the least grid whose resolved part starts within the reach (at most 32
+    nodes a pitch), every snapshot valid, each cap's X* and every series the same as on 16
+    nodes a pitch (the limit's on both) and the areas Greenwood and Williamson's within the
+    interaction's 0.5%."""
+    times = (0.0, 0.5, 1.0, 2.0, 5.0)
+    auto = mould(tmp_path, 10.0, times=times, grid="auto")
+    fixed = mould(tmp_path, 10.0, times=times)
+    assert auto["grid"][0] <= 32 * K and auto["curve"]["held_to_grid"] * 2 * K == auto["grid"][0]
+    assert all(auto.series["valid"])
+    for name in ("X", "area_fraction", "area_0", "touched_0"):
+        np.testing.assert_allclose(auto.series[name], fixed.series[name], rtol=1e-12, err_msg=name)
+    np.testing.assert_allclose([c["X_star"] for c in auto.cap_list], [c["X_star"] for c in fixed.cap_list], rtol=1e-12)
+    drops = np.array([c["drop"] for c in auto.cap_list])
+    area = (K * 10.0) ** 2
+    for X, mine in zip(auto.series["X"], auto.series["area_0"]):
         load = lambda delta: 4.0 / 3.0 * np.sum(np.clip(delta - drops, 0.0, None) ** 1.5) - X * area  # noqa: E731
         delta = scipy.optimize.brentq(load, 0.0, 1.0)
         assert mine == pytest.approx(np.pi * np.sum(np.clip(delta - drops, 0.0, None)), rel=5e-3)

@@ -761,19 +761,19 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry, c
   return answered;
 }
 
-bool resolve_small_spots(LoadCurve& curve, const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched) {
-  if (touched.size() != curve.sites() || curve.samples.empty() || !(curve.X_resolved > curve.X_first())) return false;
-  if (!limit.answers()) return false;
-  // The limit's loads, from the geometry alone (so a curve built to any reach reads the same
-  // there): from a decade below the first touchdown past the tallest tips (or below the
-  // curve's first sample where none is), kSmallSpotSamplesPerDecade a decade on, and at
-  // every touchdown (the site joining there still without a spot); its states as far as it
-  // holds (a spot reaches kSmallSpotMaxRatio of its distances long before full contact).
+namespace {
+
+/// resolve_small_spots' loads, from the geometry alone (so a curve built to any reach reads
+/// the same there): from a decade below the first touchdown past the tallest tips (or below
+/// `below` where none is), kSmallSpotSamplesPerDecade a decade on, and at every touchdown
+/// (the site joining there still without a spot). The limit holds over a first part of
+/// them (a spot reaches kSmallSpotMaxRatio of its distances long before full contact).
+std::vector<double> small_spot_loads(const std::vector<SmallSpotTouchdown>& touched, double below) {
   double first = std::numeric_limits<double>::infinity();
   for (const SmallSpotTouchdown& t : touched) {
     if (t.X > 0.0 && t.X < first) first = t.X;
   }
-  if (!std::isfinite(first)) first = curve.X_first();
+  if (!std::isfinite(first)) first = below;
   const double X_low = 0.1 * first;
   std::vector<double> loads;
   for (int k = 0; k <= 16 * kSmallSpotSamplesPerDecade; ++k) loads.push_back(X_low * std::pow(10.0, static_cast<double>(k) / kSmallSpotSamplesPerDecade));
@@ -782,6 +782,22 @@ bool resolve_small_spots(LoadCurve& curve, const SmallSpotLimit& limit, const st
   }
   std::sort(loads.begin(), loads.end());
   loads.erase(std::unique(loads.begin(), loads.end()), loads.end());
+  return loads;
+}
+
+}  // namespace
+
+double small_spot_reach(const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched, double below) {
+  if (!limit.answers() || !(below > 0.0)) return 0.0;
+  const std::vector<LoadCurveSample> held = limit.samples(small_spot_loads(touched, below), touched);
+  return held.empty() ? 0.0 : held.back().X;
+}
+
+bool resolve_small_spots(LoadCurve& curve, const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched) {
+  if (touched.size() != curve.sites() || curve.samples.empty() || !(curve.X_resolved > curve.X_first())) return false;
+  if (!limit.answers()) return false;
+  // The limit's loads (its states as far as it holds).
+  const std::vector<double> loads = small_spot_loads(touched, curve.X_first());
   std::vector<LoadCurveSample> samples = limit.samples(loads, touched);
   // Only where it holds up to the curve's resolution: the readings below X_resolved are then
   // all the limit's, those past its reach the curve's resolved samples.

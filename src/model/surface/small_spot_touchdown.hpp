@@ -175,6 +175,13 @@ std::size_t answer_small_spots(LoadCurve& curve, const CellGeometry& geometry, c
 /// as it was where the limit stops short of X_resolved).
 bool resolve_small_spots(LoadCurve& curve, const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched);
 
+/// The last load at which resolve_small_spots reads the limit's states of `limit`'s cell
+/// (`touched` its touchdowns), where the curve's first sample is `below` or any cell with a
+/// touchdown past the tallest tips (found from the geometry alone, as resolve_small_spots'
+/// loads are); 0 where the limit does not take the cell or holds at none of them. A grid
+/// that resolves the spots below it hands over to the limit's states there (--grid auto).
+double small_spot_reach(const SmallSpotLimit& limit, const std::vector<SmallSpotTouchdown>& touched, double below);
+
 /// Samples a decade of load for resolve_small_spots (the curve's readings interpolate
 /// between them: log area linear in log X, or linear in X from a touchdown).
 constexpr int kSmallSpotSamplesPerDecade = 16;
