@@ -174,6 +174,35 @@ TEST(SmallSpotTouchdown, the_square_lattices_areas_and_loads_are_the_periodic_mo
   EXPECT_GE(held, 60);
 }
 
+// The limit's states go on past a touchdown while its spots stay small: on random square
+// lattices whose level 1 touches at spot ratio below 0.15, the reach (the last load its
+// states hold at, small_spot_reach) lies past 1.2 X* (the spots grow to 0.2 only at about
+// (0.2 / 0.15)^(s+1) X*, 1.78 X* for s = 1). A load of the sampled decades that met X* to
+// rounding, just past it, once held level 1's site without a spot: the state there was not
+// found and the states stopped at X* (for the lattices where the rounding fell that way).
+TEST(SmallSpotTouchdown, the_limits_states_go_on_past_each_touchdown) {
+  test::use_shipped_tables();
+  std::mt19937_64 random(52);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int s = 1 + trial % 3;
+    const double l = 0.3 * std::pow(10.0, unit(random));
+    model::ContactProblem p = test::periodic_lattice(l, 0.0, s);
+    const model::PeriodicSolution& solution = model::periodic_solution(s);
+    p.dh = std::pow(10.0, -4.0 * unit(random)) * solution.delta_top() * model::PeriodicScales(p).h_unit;
+    const model::CellGeometry g = model::lattice_cell(model::LatticeKind::square, l, p.shape, {p.dh});
+    const model::SmallSpotLimit limit(g);
+    const std::vector<model::SmallSpotTouchdown> touched = limit.touchdowns();
+    if (!std::isfinite(touched[1].X) || !(touched[1].spot_ratio < 0.15)) continue;
+    ++checked;
+    const double reach = model::small_spot_reach(limit, touched, touched[1].X);
+    EXPECT_GT(reach, 1.2 * touched[1].X) << "l " << l << ", dh " << p.dh << ", s " << s << ", spot ratio " << touched[1].spot_ratio;
+  }
+  std::printf("%d lattices checked\n", checked);
+  EXPECT_GE(checked, 20);
+}
+
 // The study's mould (hexagonal, l = 200/60 R, level 1 2/60 R and level 2 5/60 R down, Hertz
 // caps): the boundary elements' closure of each level at the limit's X* (one contact solve
 // each, reference::LevelClosure) is the level's drop within the grids' own convergence: twice

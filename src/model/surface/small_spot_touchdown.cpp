@@ -13,6 +13,9 @@ namespace punchsweep::model {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+/// A site joins the sites in contact this far (relative) past its touchdown load: the
+/// touchdowns' joining probe, and the states read at loads.
+constexpr double kJoined = 1e-9;
 
 /// The last touchdown the limit answered (0 where it answered none): a site it leaves
 /// unanswered touches past it, if at all.
@@ -486,15 +489,36 @@ std::vector<SmallSpotTouchdown> touchdowns_of(const CellGeometry& geometry, cons
       at_hi = probe(hi);
     }
     if (!within(at_hi)) {
-      hi = bisect_boundary([&](double log_X) { return within(probe(log_X)); }, lo, hi, 0.0, 24).first;  // (to 5e-6 of the range in log X)
-      at_hi = probe(hi);
+      // The reach by bisection in log X (to 5e-6 of the range), stopped at the first load
+      // within it where a site has closed: the root then lies below it, bracketed (the
+      // reach is needed only where none closes before it).
+      double in = lo, out = hi;
+      bool closed = false;
+      for (int i = 0; i < 24 && !closed; ++i) {
+        const double mid = 0.5 * (in + out);
+        Probe p = probe(mid);
+        if (!within(p)) {
+          out = mid;
+        } else if (p.excess >= 0.0) {
+          hi = mid;
+          at_hi = std::move(p);
+          closed = true;
+        } else {
+          in = lo = mid;
+          open = p.excess;
+        }
+      }
+      if (!closed) {
+        hi = in;
+        at_hi = probe(hi);
+      }
     }
     if (!(at_hi.excess >= 0.0)) break;  // none closes within the reach
     const RootResult root = brent([&](double log_X) { return probe(log_X).excess; }, lo, hi, open, at_hi.excess, 1e-13);
     if (!root.converged) break;
     const double X = std::exp(root.x);
     // (A closure past its drop, found: +infinity is a state not found or a cone tilted off.)
-    const Probe joined = probe_at(X * (1.0 + 1e-9));
+    const Probe joined = probe_at(X * (1.0 + kJoined));
     const auto closed = [&](std::size_t i) { return joined.excesses[i] >= 0.0 && std::isfinite(joined.excesses[i]); };
     bool any = false;
     for (std::size_t i = 0; i < untouched.size(); ++i) {
@@ -702,10 +726,11 @@ std::vector<LoadCurveSample> SmallSpotLimit::samples(const std::vector<double>& 
   SmallSpotCell::State last;
   for (const double X : loads) {
     if (!(X > 0.0)) break;
-    // The sites in contact by X (touched before it); one the limit leaves unanswered touches
-    // past the last it answered, so only after X where that lies past X.
+    // The sites in contact by X (touched before it, by more than kJoined of its load: a site
+    // closing at X has no spot yet); one the limit leaves unanswered touches past the last
+    // it answered, so only after X where that lies past X.
     std::vector<std::size_t> loaded = tallest_, open;
-    for (const std::size_t k : order) (touched[k].X < X ? loaded : open).push_back(k);
+    for (const std::size_t k : order) (touched[k].X * (1.0 + kJoined) < X ? loaded : open).push_back(k);
     if (std::any_of(open.begin(), open.end(), [&](std::size_t k) { return !std::isfinite(touched[k].X); }) && !(answered > X)) break;
     SmallSpotCell::State st = cell_->at(loaded, X, last.converged && last.a.size() <= static_cast<Eigen::Index>(loaded.size()) ? &last : nullptr);
     if (!st.converged) break;
@@ -782,6 +807,15 @@ std::vector<double> small_spot_loads(const std::vector<SmallSpotTouchdown>& touc
   }
   std::sort(loads.begin(), loads.end());
   loads.erase(std::unique(loads.begin(), loads.end()), loads.end());
+  // (A load of the decades' within kJoined of a touchdown is the touchdown's: the decade that
+  // starts at a tenth of the first touchdown meets it again to rounding, and a state there
+  // just past it would hold a site without a spot.)
+  const auto at_touchdown = [&](double X) {
+    return std::any_of(touched.begin(), touched.end(), [&](const SmallSpotTouchdown& t) {
+      return t.X > 0.0 && std::isfinite(t.X) && X != t.X && std::abs(X - t.X) <= kJoined * t.X;
+    });
+  };
+  loads.erase(std::remove_if(loads.begin(), loads.end(), at_touchdown), loads.end());
   return loads;
 }
 

@@ -83,7 +83,8 @@ struct SmallSpotTouchdown {
 constexpr double kSmallSpotMaxRatio = 0.2;
 /// The limit answers cells of at most this many sites (a dense solve of the loads of those in
 /// contact per trial load, a round of trial loads per touchdown: the cost grows as the sites'
-/// fourth power, measured 0.2 s for 64 scattered caps, 2.3 s for 128, 20 s for 242; a height
+/// fourth power: a whole surface run of a scattered supercell took 0.21 s for 32 caps, 4.2 s
+/// for 128, 38 s for 242, its touchdowns and states; a height
 /// map's summits are the curve's).
 constexpr std::size_t kSmallSpotMaxSites = 256;
 
