@@ -207,8 +207,9 @@ def test_a_surface_map_never_writes_over_its_own_input(tmp_path):
     assert cell.read_text() == before
 
 
-@pytest.mark.parametrize("l, pbar, s", [(0.75, 1e-4, 3), (10.0, 0.01, 3)])
-def test_every_valid_snapshot_of_the_cell_curve_is_within_one_percent_of_the_tables(l, pbar, s):
+@pytest.mark.parametrize("l, pbar, s, dh", [(0.75, 1e-4, 3, None), (10.0, 0.01, 3, None),
+                                            (0.5038815361709749, 7.952411684214869e-05, 3, 3.506166669427113e-4)])
+def test_every_valid_snapshot_of_the_cell_curve_is_within_one_percent_of_the_tables(l, pbar, s, dh):
     """The probe's cell-curve areas past the stated 1% on valid snapshots (1.16% at pbar 1e-4,
     s = 3; 1.42% at l = 10 R, s = 3): under --grid auto a snapshot is valid only where its
     area fraction is within 1% of `point`'s (the tables), else flagged below_resolution with a
@@ -216,9 +217,15 @@ def test_every_valid_snapshot_of_the_cell_curve_is_within_one_percent_of_the_tab
     nodes a pitch, the areas at s = 3 were 1.1-1.2% off where they had moved 2.2% from the
     grid of half the nodes, which a third of the move left valid: the move's half is the
     estimate. Where the small-spot limit holds up to the curve's resolution it gives the
-    areas there, on every grid alike, and every snapshot here is valid.)"""
-    ends = point_json(l=l, dh=0, T=2.5, pbar=pbar, s=s)
-    dh = 0.5 * (ends["h_0"] + ends["h_inf"])
+    areas there, on every grid alike, and every snapshot here is valid. The third case, from
+    a random sweep: past level 1's touchdown, where the limit no longer holds, the areas on
+    the 104 nodes a pitch taken were 1.0-1.4% off, valid, after a move of 1.15% from 52
+    nodes, which do not resolve the spots there: a move from such a grid is not yet at the
+    grids' order, and its whole move now stands for the error, so those snapshots are
+    flagged.)"""
+    if dh is None:
+        ends = point_json(l=l, dh=0, T=2.5, pbar=pbar, s=s)
+        dh = 0.5 * (ends["h_0"] + ends["h_inf"])
     times = [0, 0.5, 1, 2, 5, 20]
     ref = punchsweep.point(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times)
     out = punchsweep.surface(l=l, dh=dh, T=2.5, pbar=pbar, s=s, times=times, curve="cell")
