@@ -33,6 +33,15 @@ def greenwood_williamson(drops, area):
     return np.array([4.0 / 3.0 * np.sum(np.clip(d - drops, 0.0, None) ** 1.5) / area for d in drops])
 
 
+def greenwood_williamson_area(caps, X, area):
+    """The contact area of independent Hertz caps under the cell's load X * area: sunk to one
+    depth delta below the tallest tip that carries it, each spot pi (delta - drop)."""
+    drops = np.array([c["drop"] for c in caps])
+    load = lambda delta: 4.0 / 3.0 * np.sum(np.clip(delta - drops, 0.0, None) ** 1.5) - X * area  # noqa: E731
+    delta = scipy.optimize.brentq(load, 0.0, 1.0)
+    return np.pi * np.sum(np.clip(delta - drops, 0.0, None))
+
+
 def deviations(result, l):
     caps = result.cap_list
     drops = np.array([c["drop"] for c in caps])
@@ -87,12 +96,8 @@ def test_a_sparse_moulds_contact_area_is_greenwood_and_williamsons(tmp_path):
     times = np.array([0.0, 0.5, 1.0, 2.0, 5.0])
     result = mould(tmp_path, 40.0, pbar=3e-7, times=times)
     assert all(result.series["valid"])
-    drops = np.array([c["drop"] for c in result.cap_list])
-    area = (K * 40.0) ** 2
     for X, mine in zip(result.series["X"], result.series["area_0"]):
-        load = lambda delta: 4.0 / 3.0 * np.sum(np.clip(delta - drops, 0.0, None) ** 1.5) - X * area  # noqa: E731
-        delta = scipy.optimize.brentq(load, 0.0, 1.0)
-        assert mine == pytest.approx(np.pi * np.sum(np.clip(delta - drops, 0.0, None)), rel=5e-3)
+        assert mine == pytest.approx(greenwood_williamson_area(result.cap_list, X, (K * 40.0) ** 2), rel=5e-3)
 
 
 def test_grid_auto_sizes_no_grid_for_the_spots_the_limit_reads(tmp_path):
@@ -111,9 +116,5 @@ def test_grid_auto_sizes_no_grid_for_the_spots_the_limit_reads(tmp_path):
     for name in ("X", "area_fraction", "area_0", "touched_0"):
         np.testing.assert_allclose(auto.series[name], fixed.series[name], rtol=1e-12, err_msg=name)
     np.testing.assert_allclose([c["X_star"] for c in auto.cap_list], [c["X_star"] for c in fixed.cap_list], rtol=1e-12)
-    drops = np.array([c["drop"] for c in auto.cap_list])
-    area = (K * 10.0) ** 2
     for X, mine in zip(auto.series["X"], auto.series["area_0"]):
-        load = lambda delta: 4.0 / 3.0 * np.sum(np.clip(delta - drops, 0.0, None) ** 1.5) - X * area  # noqa: E731
-        delta = scipy.optimize.brentq(load, 0.0, 1.0)
-        assert mine == pytest.approx(np.pi * np.sum(np.clip(delta - drops, 0.0, None)), rel=5e-3)
+        assert mine == pytest.approx(greenwood_williamson_area(auto.cap_list, X, (K * 10.0) ** 2), rel=5e-3)
