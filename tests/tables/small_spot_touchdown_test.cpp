@@ -51,6 +51,25 @@ TEST(SmallSpotTouchdown, the_periodic_field_meets_the_square_lattices_closed_for
   }
 }
 
+namespace {
+
+/// A random two-level square lattice of exponent s (what the random tests below draw): l
+/// log-uniform from l_low to l_low * l_ratio, then dh log-uniform over the four decades below
+/// the periodic tables' top.
+struct RandomLattice {
+  model::ContactProblem problem;
+  model::CellGeometry geometry;
+};
+RandomLattice random_square_lattice(std::mt19937_64& random, int s, double l_low, double l_ratio) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double l = l_low * std::pow(l_ratio, unit(random));
+  model::ContactProblem p = test::periodic_lattice(l, 0.0, s);
+  p.dh = std::pow(10.0, -4.0 * unit(random)) * model::periodic_solution(s).delta_top() * model::PeriodicScales(p).h_unit;
+  return {p, model::lattice_cell(model::LatticeKind::square, l, p.shape, {p.dh})};
+}
+
+}  // namespace
+
 // Random square lattices (s 1 to 3, l 0.3 to 3 R log-uniform, dh log-uniform over four
 // decades below the tables' top): the limit's X* of level 1 within 0.1 rho^5 + 1e-5 of the
 // periodic model's (the tables hold h to about 2.4e-6, docs/model.md 14.7; measured before
@@ -59,17 +78,12 @@ TEST(SmallSpotTouchdown, the_periodic_field_meets_the_square_lattices_closed_for
 TEST(SmallSpotTouchdown, the_square_lattice_touchdown_is_the_periodic_models) {
   test::use_shipped_tables();
   std::mt19937_64 random(50);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   int answered = 0;
   double worst = 0.0, worst_ratio = 0.0;
   for (int trial = 0; trial < 40; ++trial) {
     const int s = 1 + trial % 3;
-    const double l = 0.3 * std::pow(10.0, unit(random));
-    model::ContactProblem p = test::periodic_lattice(l, 0.0, s);
-    const model::PeriodicSolution& solution = model::periodic_solution(s);
-    p.dh = std::pow(10.0, -4.0 * unit(random)) * solution.delta_top() * model::PeriodicScales(p).h_unit;
-    const double expected = model::LocalizationParts(p).touchdowns()[1];
-    const model::CellGeometry g = model::lattice_cell(model::LatticeKind::square, l, p.shape, {p.dh});
+    const auto [p, g] = random_square_lattice(random, s, 0.3, 10.0);
+    const double l = p.l, expected = model::LocalizationParts(p).touchdowns()[1];
     const std::vector<model::SmallSpotTouchdown> limit = model::small_spot_touchdowns(g);
     ASSERT_EQ(limit.size(), 2u);
     EXPECT_EQ(limit[0].X, 0.0);
@@ -116,11 +130,10 @@ TEST(SmallSpotTouchdown, the_square_lattices_areas_and_loads_are_the_periodic_mo
   std::vector<Band> bands{{0.01}, {0.05}, {0.1}, {0.2}};
   for (int trial = 0; trial < 120; ++trial) {
     const int s = 1 + trial % 3;
-    const double l = 0.1 * std::pow(100.0, unit(random));
-    model::ContactProblem p = test::periodic_lattice(l, 0.0, s);
+    const auto [p, g] = random_square_lattice(random, s, 0.1, 100.0);
+    const double l = p.l;
     const model::PeriodicSolution& solution = model::periodic_solution(s);
     const model::PeriodicScales scales(p);
-    p.dh = std::pow(10.0, -4.0 * unit(random)) * solution.delta_top() * scales.h_unit;
     const double X = 1e-9 * std::pow(1e8, unit(random));
     // The periodic model's state at X.
     const double xi = X / scales.X_unit, delta = p.dh / scales.h_unit, xi_star = solution.touchdown(delta);
@@ -137,7 +150,6 @@ TEST(SmallSpotTouchdown, the_square_lattices_areas_and_loads_are_the_periodic_mo
       load[1] = scales.Q_unit * both.Q2;
       load[0] = cell_load - load[1];
     }
-    const model::CellGeometry g = model::lattice_cell(model::LatticeKind::square, l, p.shape, {p.dh});
     const model::SmallSpotLimit limit(g);
     const std::vector<model::LoadCurveSample> found = limit.samples({X}, limit.touchdowns());
     if (found.empty()) continue;  // past the limit's reach
@@ -183,15 +195,11 @@ TEST(SmallSpotTouchdown, the_square_lattices_areas_and_loads_are_the_periodic_mo
 TEST(SmallSpotTouchdown, the_limits_states_go_on_past_each_touchdown) {
   test::use_shipped_tables();
   std::mt19937_64 random(52);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   int checked = 0;
   for (int trial = 0; trial < 60; ++trial) {
     const int s = 1 + trial % 3;
-    const double l = 0.3 * std::pow(10.0, unit(random));
-    model::ContactProblem p = test::periodic_lattice(l, 0.0, s);
-    const model::PeriodicSolution& solution = model::periodic_solution(s);
-    p.dh = std::pow(10.0, -4.0 * unit(random)) * solution.delta_top() * model::PeriodicScales(p).h_unit;
-    const model::CellGeometry g = model::lattice_cell(model::LatticeKind::square, l, p.shape, {p.dh});
+    const auto [p, g] = random_square_lattice(random, s, 0.3, 10.0);
+    const double l = p.l;
     const model::SmallSpotLimit limit(g);
     const std::vector<model::SmallSpotTouchdown> touched = limit.touchdowns();
     if (!std::isfinite(touched[1].X) || !(touched[1].spot_ratio < 0.15)) continue;
